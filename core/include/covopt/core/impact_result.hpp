@@ -1,0 +1,120 @@
+#pragma once
+/// @file impact_result.hpp
+/// What an impact computation returns, whichever path computed it.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "covopt/core/impact_model.hpp"
+#include "covopt/core/scene.hpp"
+
+namespace covopt {
+
+/// The peak quantities of one impact. F, U, σ_c and e are non-decreasing in δ, so every
+/// maximum is reached at the maximum penetration δ_max (DESIGN.md §2).
+struct ImpactPeaks {
+  double max_penetration_m = 0.0;               ///< δ_max [m]
+  double peak_force_N = 0.0;                    ///< F(δ_max) [N]
+  double max_compressive_stress_Pa = 0.0;       ///< σ_c,max [Pa]
+  double max_tensile_stress_Pa = 0.0;           ///< σ_t,max = σ_c,max (1 - 2ν_t)/3 [Pa]
+  double max_energy_density_J_per_m2 = 0.0;     ///< e_A,max [J/m²]
+  Phase phase_at_max = Phase::kCoveringOnScalp;  ///< the phase δ_max lies in
+  /// The scalp reached full compression (δ_max > t1).
+  bool scalp_fully_compressed = false;
+  /// The covering reached full compression, the robot touching bone (δ_max in phase 3).
+  /// Without a covering: the scalp did (the bare robot touches bone).
+  bool fully_compressed = false;
+};
+
+/// One injury criterion judged against its limit.
+struct InjuryVerdict {
+  double value = 0.0;  ///< the model's peak (Pa for laceration, J/m² for contusion)
+  double limit = 0.0;  ///< the limit, same unit
+  double ratio = 0.0;  ///< value / limit [-]; <= 1 is safe
+  bool safe = true;    ///< ratio <= 1
+};
+
+/// Laceration (tensile stress) and contusion (energy density) verdicts for peaks.
+struct InjuryAssessment {
+  InjuryVerdict laceration;  ///< σ_t,max against the laceration limit [Pa]
+  InjuryVerdict contusion;   ///< e_A,max against the contusion limit [J/m²]
+  bool safe() const noexcept { return laceration.safe && contusion.safe; }
+};
+
+/// Judges peaks against limits.
+InjuryAssessment Assess(const ImpactPeaks& peaks, const InjuryLimits& limits = {}) noexcept;
+
+/// Which path produced a result.
+enum class ComputationMethod {
+  kExact,       ///< energy balance and quadrature (no integration)
+  kCvodeAdams,  ///< SUNDIALS CVODE, Adams-Moulton with fixed-point iteration
+  kCvodeBdf,    ///< SUNDIALS CVODE, BDF with Newton iteration and analytic Jacobian
+};
+/// "exact", "cvode-adams", "cvode-bdf".
+std::string_view ToString(ComputationMethod method) noexcept;
+
+/// Outcome of a computation. Numerical outcomes are values, not exceptions.
+enum class SolveStatus {
+  kSuccess,          ///< every requested quantity was computed
+  kStepLimit,        ///< the integrator hit the step limit before separation
+  kSolverFailure,    ///< the integrator returned an error (see message and raw code)
+  kEventMissed,      ///< separation/maximum compression was not located consistently
+};
+std::string_view ToString(SolveStatus status) noexcept;
+
+/// Counters of a time integration (all zero for the exact path).
+struct SolverStatistics {
+  long steps = 0;                 ///< internal integrator steps
+  long rhs_evaluations = 0;       ///< right-hand-side evaluations
+  long root_evaluations = 0;      ///< root-function evaluations
+  long jacobian_evaluations = 0;  ///< Jacobian evaluations (BDF/Newton only)
+  long nonlinear_iterations = 0;  ///< nonlinear solver iterations
+  long error_test_failures = 0;   ///< rejected steps (local error test)
+  long convergence_failures = 0;  ///< nonlinear solver convergence failures
+  long restarts = 0;              ///< re-initialisations at phase switches
+};
+
+/// One sample of the force/time history.
+struct HistorySample {
+  double time_s = 0.0;                          ///< since first contact [s]
+  double penetration_m = 0.0;                   ///< δ [m]
+  double penetration_rate_m_per_s = 0.0;        ///< δ' [m/s]
+  double force_N = 0.0;                         ///< F(δ) [N]
+  double compressive_stress_Pa = 0.0;           ///< σ_c(δ) [Pa]
+  double energy_density_J_per_m2 = 0.0;         ///< e, integrated by the solver [J/m²]
+};
+
+/// Everything one impact computation reports.
+struct ImpactResult {
+  ComputationMethod method = ComputationMethod::kExact;
+  SolveStatus status = SolveStatus::kSuccess;
+  /// Human-readable detail of a failure, including the integrator's own messages.
+  std::string message;
+  /// The backend's raw return code (CVODE flag), 0 for the exact path.
+  int raw_code = 0;
+
+  ImpactPeaks peaks;
+  /// Contact duration [s]: from first contact to separation; empty when not computed.
+  std::optional<double> contact_duration_s;
+  /// Relative speed at separation [m/s]; equals the impact speed (no dissipation).
+  std::optional<double> rebound_speed_m_per_s;
+  /// Time of maximum compression [s] (time path only).
+  std::optional<double> time_of_max_compression_s;
+
+  SolverStatistics statistics;
+  /// Sampled history, when requested (time path only).
+  std::vector<HistorySample> history;
+  /// Where the result leaves the model's domain of validity (DESIGN.md §5).
+  std::vector<std::string> warnings;
+
+  bool ok() const noexcept { return status == SolveStatus::kSuccess; }
+};
+
+/// Warnings on the model's validity for peaks of a model (DESIGN.md §5, item 5): the Hertz
+/// contact radius sqrt(x/c) of a phase active at δ_max is not smaller than the radii it
+/// touches (the paper's footnote 7), or the covering is fully compressed.
+std::vector<std::string> ValidityWarnings(const ImpactModel& model, const ImpactPeaks& peaks);
+
+}  // namespace covopt

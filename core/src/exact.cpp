@@ -1,0 +1,153 @@
+// The exact path of DESIGN.md §3: δ_max from energy balance, peaks, and the contact duration
+// by a singularity-free Gauss-Legendre quadrature.
+#include "covopt/core/exact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace covopt {
+namespace {
+
+/// Gauss-Legendre nodes and weights on [0, 1], computed once by Newton on P_N.
+template <int N>
+struct GaussLegendre {
+  std::array<double, N> node{};
+  std::array<double, N> weight{};
+  GaussLegendre() {
+    for (int i = 0; i < N; ++i) {
+      double x = std::cos(std::numbers::pi * (i + 0.75) / (N + 0.5));
+      double derivative = 0.0;
+      for (int iteration = 0; iteration < 100; ++iteration) {
+        double p0 = 1.0, p1 = x;
+        for (int k = 2; k <= N; ++k) {
+          const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+          p0 = p1;
+          p1 = p2;
+        }
+        derivative = N * (x * p1 - p0) / (x * x - 1.0);
+        const double step = p1 / derivative;
+        x -= step;
+        if (std::abs(step) < 1e-16) break;
+      }
+      node[i] = 0.5 * (1.0 - x);
+      weight[i] = 1.0 / ((1.0 - x * x) * derivative * derivative);  // (2/...)/2 on [0,1]
+    }
+  }
+};
+
+constexpr int kQuadratureOrder = 20;
+
+const GaussLegendre<kQuadratureOrder>& Quadrature() {
+  static const GaussLegendre<kQuadratureOrder> rule;
+  return rule;
+}
+
+/// Index of the segment containing δ_max: the last one whose start energy is below ½ m v0².
+std::size_t PeakSegment(const ImpactModel& model) noexcept {
+  std::size_t i = model.segment_count() - 1;
+  while (i > 0 && !(model.segment(i).energy_at_start_J < model.impact_energy_J())) --i;
+  return i;
+}
+
+/// Phase-local penetration x solving U = ½ m v0² inside segment `seg`.
+double SolveEnergyBalance(const ForceLawSegment& seg, double energy_gap_J) noexcept {
+  const double n = seg.exponent;
+  const double p = n + 1.0;
+  const double x0 = seg.start_m - seg.origin_m;
+  const double k_over_p = seg.stiffness / p;
+  if (seg.force_offset_N == 0.0 && x0 == 0.0) {
+    return std::pow(energy_gap_J / k_over_p, 1.0 / p);  // closed form
+  }
+  // g(x) = F_off (x - x0) + K/p (x^p - x0^p) - ΔE is increasing and convex for x >= x0:
+  // Newton started above the root descends monotonically onto it. Either term alone
+  // reaching ΔE bounds the root from above.
+  const double x0_pow_p = x0 > 0.0 ? std::pow(x0, p) : 0.0;
+  double x = std::pow(energy_gap_J / k_over_p + x0_pow_p, 1.0 / p);
+  if (seg.force_offset_N > 0.0) x = std::min(x, x0 + energy_gap_J / seg.force_offset_N);
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double x_pow_n = std::pow(x, n);
+    const double g = seg.force_offset_N * (x - x0) + k_over_p * (x_pow_n * x - x0_pow_p) -
+                     energy_gap_J;
+    const double slope = seg.force_offset_N + seg.stiffness * x_pow_n;
+    const double next = x - g / slope;
+    if (!(next < x)) break;  // converged: the monotone sequence stopped decreasing
+    x = std::max(next, x0);
+  }
+  return x;
+}
+
+}  // namespace
+
+ImpactPeaks ExactPeaks(const ImpactModel& model) noexcept {
+  const std::size_t i = PeakSegment(model);
+  const ForceLawSegment& seg = model.segment(i);
+  const double x = SolveEnergyBalance(seg, model.impact_energy_J() - seg.energy_at_start_J);
+  const double delta_max = seg.origin_m + x;
+  const ContactState state = model.StateInSegment(i, delta_max);
+
+  ImpactPeaks peaks;
+  peaks.max_penetration_m = delta_max;
+  peaks.peak_force_N = state.force_N;
+  peaks.max_compressive_stress_Pa = state.compressive_stress_Pa;
+  peaks.max_tensile_stress_Pa = model.TensileFromCompressive(state.compressive_stress_Pa);
+  peaks.max_energy_density_J_per_m2 = state.energy_density_J_per_m2;
+  peaks.phase_at_max = seg.phase;
+  peaks.scalp_fully_compressed = i > 0;
+  peaks.fully_compressed = seg.phase == Phase::kRobotOnBone;
+  return peaks;
+}
+
+double ExactContactDuration(const ImpactModel& model, const ImpactPeaks& peaks) noexcept {
+  // T/2 = ∫₀^δmax dδ / v(δ),  v = sqrt(2 (U(δ_max) - U(δ)) / m).  With δ = δ_max - s²:
+  // T/2 = ∫₀^√δmax 2s ds / v(δ_max - s²), smooth at s = 0. Pieces end at the switches
+  // s_j = sqrt(δ_max - t_j); each is mapped by s = a + (b - a) φ(u), φ = u²(3 - 2u).
+  const double delta_max = peaks.max_penetration_m;
+  const double two_over_mass = 2.0 / model.effective_mass_kg();
+  const std::size_t top = PeakSegment(model);
+  const auto& rule = Quadrature();
+
+  double half_duration = 0.0;
+  double s_lower = 0.0;  // piece start in s (toward δ_max)
+  // Energy from the top of segment j up to δ_max: U(δ_max) - U(end_j), accumulated downward.
+  double energy_above = 0.0;
+  for (std::size_t j = top + 1; j-- > 0;) {
+    const ForceLawSegment& seg = model.segment(j);
+    const double upper = (j == top) ? delta_max : seg.end_m;  // δ at the piece's s_lower
+    const double s_upper = std::sqrt(delta_max - seg.start_m);
+    const double width = s_upper - s_lower;
+    double piece = 0.0;
+    for (int q = 0; q < kQuadratureOrder; ++q) {
+      const double u = rule.node[q];
+      const double phi = u * u * (3.0 - 2.0 * u);
+      const double dphi = 6.0 * u * (1.0 - u);
+      const double s = s_lower + width * phi;
+      // Gap below `upper`: δ_max - s² = upper - gap.
+      const double gap = (s - s_lower) * (s + s_lower);
+      const double energy_gap =
+          energy_above + model.EnergyDifferenceInSegment(j, upper, gap);
+      piece += rule.weight[q] * dphi * 2.0 * s / std::sqrt(two_over_mass * energy_gap);
+    }
+    half_duration += width * piece;
+    energy_above += model.EnergyDifferenceInSegment(j, upper, upper - seg.start_m);
+    s_lower = s_upper;
+  }
+  return 2.0 * half_duration;
+}
+
+ImpactResult SolveExact(const ImpactModel& model, const ExactOptions& options) {
+  ImpactResult result;
+  result.method = ComputationMethod::kExact;
+  result.peaks = ExactPeaks(model);
+  if (options.compute_duration) {
+    result.contact_duration_s = ExactContactDuration(model, result.peaks);
+    result.time_of_max_compression_s = 0.5 * *result.contact_duration_s;
+  }
+  // No dissipation: the bodies separate at the impact speed (DESIGN.md §2).
+  result.rebound_speed_m_per_s = model.impact_speed_m_per_s();
+  result.warnings = ValidityWarnings(model, result.peaks);
+  return result;
+}
+
+}  // namespace covopt

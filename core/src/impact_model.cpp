@@ -1,0 +1,256 @@
+// The force law of DESIGN.md §2: validation of a Scene and construction of the segments.
+#include "covopt/core/impact_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "numeric_format.hpp"
+
+namespace covopt {
+namespace {
+
+using internal::FormatNumber;
+
+constexpr double kHertzPressureFactor = 3.0 / (2.0 * std::numbers::pi);  // k = 3/(2π)
+
+[[noreturn]] void Reject(const std::string& field, const std::string& requirement, double value) {
+  throw std::invalid_argument(field + " must be " + requirement + " (got " + FormatNumber(value) +
+                              ")");
+}
+
+/// finite and in (0, max] [unit]; `fixed_word` (e.g. "fixed") also admits +inf.
+void CheckPositive(const std::string& field, double value, double max, const char* unit,
+                   const char* infinite_word = nullptr) {
+  const std::string range = "in (0, " + FormatNumber(max) + "] " + unit +
+                            (infinite_word ? std::string(", or ") + infinite_word : std::string());
+  if (std::isnan(value)) Reject(field, range, value);
+  if (std::isinf(value) && value > 0 && infinite_word) return;
+  if (!(value > 0.0) || !(value <= max)) Reject(field, range, value);
+}
+
+void CheckPoisson(const std::string& field, double value) {
+  if (!(value > -1.0 && value <= 0.5)) Reject(field, "in (-1, 0.5]", value);
+}
+
+void CheckScene(const Scene& s) {
+  CheckPositive("robot.mass", s.robot.mass_kg, 1e6, "kg", "fixed (infinite)");
+  CheckPositive("robot.speed", s.robot.speed_m_per_s, 100.0, "m/s");
+  CheckPositive("robot.radius", s.robot.radius_m, 100.0, "m", "flat (infinite)");
+  CheckPositive("robot.modulus", s.robot.youngs_modulus_Pa, 1e13, "Pa");
+  CheckPoisson("robot.poisson", s.robot.poisson_ratio);
+
+  const double b_c = s.covering.thickness_m;
+  if (!(b_c >= 0.0 && b_c <= 1.0)) Reject("covering.thickness", "in [0, 1] m (0 = no covering)", b_c);
+  if (b_c > 0.0) {
+    CheckPositive("covering.modulus", s.covering.youngs_modulus_Pa, 1e13, "Pa");
+    CheckPoisson("covering.poisson", s.covering.poisson_ratio);
+  }
+
+  CheckPositive("head.mass", s.head.mass_kg, 1e6, "kg", "fixed (infinite)");
+  CheckPositive("head.radius", s.head.radius_m, 10.0, "m");
+  CheckPositive("scalp.modulus", s.scalp.youngs_modulus_Pa, 1e13, "Pa");
+  CheckPoisson("scalp.poisson", s.scalp.poisson_ratio);
+  CheckPositive("scalp.thickness", s.scalp.thickness_m, 1.0, "m");
+  if (!(s.scalp.thickness_m < s.head.radius_m)) {
+    throw std::invalid_argument("head.radius must be larger than scalp.thickness (" +
+                                FormatNumber(s.scalp.thickness_m) + " m) (got " +
+                                FormatNumber(s.head.radius_m) + " m)");
+  }
+  CheckPositive("skull.modulus", s.skull.youngs_modulus_Pa, 1e13, "Pa");
+  CheckPoisson("skull.poisson", s.skull.poisson_ratio);
+
+  if (std::isinf(s.robot.mass_kg) && std::isinf(s.head.mass_kg)) {
+    throw std::invalid_argument(
+        "robot.mass and head.mass are both fixed: at least one body must be free to move "
+        "(give a finite mass in (0, 1e+06] kg to one of them)");
+  }
+
+  const ModelConstants& m = s.model;
+  auto check_exponent = [](const char* field, double n) {
+    if (!(n >= 1.0 && n <= 5.0)) Reject(field, "in [1, 5]", n);
+  };
+  check_exponent("model.exponent_covering_scalp", m.exponent_covering_scalp);
+  check_exponent("model.exponent_covering_bone", m.exponent_covering_bone);
+  check_exponent("model.exponent_robot_bone", m.exponent_robot_bone);
+  CheckPoisson("model.tensile_poisson", m.tensile_poisson_ratio);
+  const double f = m.full_compression_fraction;
+  if (!(f > 0.0 && f <= 1.0)) Reject("model.full_compression_fraction", "in (0, 1]", f);
+  if (m.thresholds != ThresholdReading::kCumulative && m.thresholds != ThresholdReading::kLiteral) {
+    throw std::invalid_argument("model.thresholds must be cumulative or literal");
+  }
+}
+
+/// Generalised Hertz stiffness K = 4/3 ((1-ν1²)/E1 + (1-ν2²)/E2)⁻¹ c^(-1/2)  (eq. 3).
+double HertzStiffness(double e1, double nu1, double e2, double nu2, double curvature) {
+  const double compliance = (1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2;
+  return 4.0 / 3.0 / compliance / std::sqrt(curvature);
+}
+
+/// 1/R with 1/∞ = 0.
+double Inverse(double radius) { return std::isinf(radius) ? 0.0 : 1.0 / radius; }
+
+}  // namespace
+
+int PhaseNumber(Phase phase) noexcept {
+  switch (phase) {
+    case Phase::kCoveringOnScalp:
+    case Phase::kRobotOnScalp: return 1;
+    case Phase::kCoveringOnBone: return 2;
+    case Phase::kRobotOnBone: return 3;
+  }
+  return 0;
+}
+
+std::string_view ToString(Phase phase) noexcept {
+  switch (phase) {
+    case Phase::kCoveringOnScalp: return "covering on scalp";
+    case Phase::kRobotOnScalp: return "robot on scalp";
+    case Phase::kCoveringOnBone: return "covering on bone";
+    case Phase::kRobotOnBone: return "robot on bone";
+  }
+  return "unknown";
+}
+
+ImpactModel ImpactModel::FromScene(const Scene& scene) {
+  CheckScene(scene);
+  ImpactModel model;
+  model.scene_ = scene;
+  const Scene& s = model.scene_;
+  const ModelConstants& constants = s.model;
+
+  model.effective_mass_kg_ = 1.0 / (Inverse(s.robot.mass_kg) + Inverse(s.head.mass_kg));
+  model.impact_energy_J_ =
+      0.5 * model.effective_mass_kg_ * s.robot.speed_m_per_s * s.robot.speed_m_per_s;
+  model.tensile_factor_ = (1.0 - 2.0 * constants.tensile_poisson_ratio) / 3.0;
+
+  const bool covered = s.covering.thickness_m > 0.0;
+  const double r_robot = s.robot.radius_m;
+  const double r_cover = std::isinf(r_robot) ? r_robot : r_robot + s.covering.thickness_m;
+  const double r_scalp = s.head.radius_m;
+  const double r_bone = s.head.radius_m - s.scalp.thickness_m;
+  // The body touching the scalp: the covering, or the bare robot (DESIGN.md §2).
+  const double e_outer = covered ? s.covering.youngs_modulus_Pa : s.robot.youngs_modulus_Pa;
+  const double nu_outer = covered ? s.covering.poisson_ratio : s.robot.poisson_ratio;
+  const double r_outer = covered ? r_cover : r_robot;
+
+  const double c1 = Inverse(r_outer) + 1.0 / r_scalp;
+  const double c2 = Inverse(r_cover) + 1.0 / r_bone;
+  const double c3 = Inverse(r_robot) + 1.0 / r_bone;
+
+  const double t1 = constants.full_compression_fraction * s.scalp.thickness_m;
+  const double covering_travel = constants.full_compression_fraction * s.covering.thickness_m;
+
+  std::size_t count = 0;
+  auto add = [&](Phase phase, double start, double origin, double stiffness, double exponent,
+                 double curvature, double radius_a, double radius_b) {
+    ForceLawSegment seg;
+    seg.phase = phase;
+    seg.start_m = start;
+    seg.end_m = std::numeric_limits<double>::infinity();
+    seg.origin_m = origin;
+    seg.stiffness = stiffness;
+    seg.exponent = exponent;
+    seg.curvature_per_m = curvature;
+    seg.radius_a_m = radius_a;
+    seg.radius_b_m = radius_b;
+    if (count > 0) {
+      model.segments_[count - 1].end_m = start;
+      // Offsets: the previous law at this segment's origin (F, σ) and start (U, e).
+      // Cumulative: origin == start, so all four are continuous.
+      const ContactState at_origin = model.StateInSegment(count - 1, origin);
+      const ContactState at_start = model.StateInSegment(count - 1, start);
+      seg.force_offset_N = at_origin.force_N;
+      seg.stress_offset_Pa = at_origin.compressive_stress_Pa;
+      seg.energy_at_start_J = at_start.potential_energy_J;
+      seg.energy_density_at_start_J_per_m2 = at_start.energy_density_J_per_m2;
+    }
+    model.segments_[count++] = seg;
+    model.segment_count_ = count;
+  };
+
+  add(covered ? Phase::kCoveringOnScalp : Phase::kRobotOnScalp, 0.0, 0.0,
+      HertzStiffness(e_outer, nu_outer, s.scalp.youngs_modulus_Pa, s.scalp.poisson_ratio, c1),
+      constants.exponent_covering_scalp, c1, r_outer, r_scalp);
+
+  const double k3 = HertzStiffness(s.robot.youngs_modulus_Pa, s.robot.poisson_ratio,
+                                   s.skull.youngs_modulus_Pa, s.skull.poisson_ratio, c3);
+  if (!covered) {
+    add(Phase::kRobotOnBone, t1, t1, k3, constants.exponent_robot_bone, c3, r_robot, r_bone);
+    return model;
+  }
+
+  const double k2 = HertzStiffness(s.covering.youngs_modulus_Pa, s.covering.poisson_ratio,
+                                   s.skull.youngs_modulus_Pa, s.skull.poisson_ratio, c2);
+  const double t2 = constants.thresholds == ThresholdReading::kCumulative ? t1 + covering_travel
+                                                                          : covering_travel;
+  if (t2 > t1) {
+    add(Phase::kCoveringOnBone, t1, t1, k2, constants.exponent_covering_bone, c2, r_cover, r_bone);
+    add(Phase::kRobotOnBone, t2, t2, k3, constants.exponent_robot_bone, c3, r_robot, r_bone);
+  } else {
+    // Literal reading with 0.8 b_c <= 0.8 b_s: eq. (2)'s if-chain gives phase 1 up to b_sm,
+    // then phase 3 measured from b_cm with the offset F(b_cm) of phase 1.
+    add(Phase::kRobotOnBone, t1, t2, k3, constants.exponent_robot_bone, c3, r_robot, r_bone);
+  }
+  return model;
+}
+
+std::size_t ImpactModel::SegmentIndexAt(double penetration_m) const noexcept {
+  std::size_t i = 0;
+  while (i + 1 < segment_count_ && penetration_m > segments_[i].end_m) ++i;
+  return i;
+}
+
+ContactState ImpactModel::StateInSegment(std::size_t i, double penetration_m) const noexcept {
+  const ForceLawSegment& seg = segments_[i];
+  const double n = seg.exponent;
+  const double x = std::max(penetration_m - seg.origin_m, 0.0);
+  const double x0 = seg.start_m - seg.origin_m;  // > 0 only in the literal ill-ordered case
+  const double d = penetration_m - seg.start_m;
+  const double x_pow_nm1 = std::pow(x, n - 1.0);
+  const double x_pow_n = x_pow_nm1 * x;
+  const double kc = kHertzPressureFactor * seg.stiffness * seg.curvature_per_m;
+  ContactState state;
+  state.phase = seg.phase;
+  state.force_N = seg.force_offset_N + seg.stiffness * x_pow_n;
+  state.stiffness_N_per_m = n * seg.stiffness * x_pow_nm1;
+  state.compressive_stress_Pa = seg.stress_offset_Pa + kc * x_pow_nm1;
+  double u_local = seg.stiffness * x_pow_n * x / (n + 1.0);
+  double e_local = kc * x_pow_n / n;
+  if (x0 > 0.0) {
+    u_local -= seg.stiffness * std::pow(x0, n + 1.0) / (n + 1.0);
+    e_local -= kc * std::pow(x0, n) / n;
+  }
+  state.potential_energy_J = seg.energy_at_start_J + seg.force_offset_N * d + u_local;
+  state.energy_density_J_per_m2 =
+      seg.energy_density_at_start_J_per_m2 + seg.stress_offset_Pa * d + e_local;
+  return state;
+}
+
+ContactState ImpactModel::StateAt(double penetration_m) const noexcept {
+  if (!(penetration_m > 0.0)) {
+    ContactState none;
+    none.phase = segments_[0].phase;
+    return none;
+  }
+  return StateInSegment(SegmentIndexAt(penetration_m), penetration_m);
+}
+
+double ImpactModel::EnergyDifferenceInSegment(std::size_t i, double upper_penetration_m,
+                                              double gap_m) const noexcept {
+  const ForceLawSegment& seg = segments_[i];
+  const double p = seg.exponent + 1.0;
+  const double x_b = upper_penetration_m - seg.origin_m;
+  if (!(x_b > 0.0) || !(gap_m > 0.0)) return 0.0;
+  // x_b^p - x_a^p = -x_b^p expm1(p log1p(-d/x_b)), exact in relative terms for small d.
+  const double ratio = gap_m / x_b;
+  const double power_difference =
+      ratio >= 1.0 ? std::pow(x_b, p) : -std::pow(x_b, p) * std::expm1(p * std::log1p(-ratio));
+  return seg.force_offset_N * gap_m + seg.stiffness * power_difference / p;
+}
+
+}  // namespace covopt

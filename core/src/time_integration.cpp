@@ -1,0 +1,437 @@
+// The time path of DESIGN.md §3: CVODE with rootfinding and a restart at every phase switch.
+#include "covopt/core/time_integration.hpp"
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "numeric_format.hpp"
+
+namespace covopt {
+namespace {
+
+constexpr int kRootCount = 3;
+constexpr int kRootUpperSwitch = 0;  // δ - end of the current segment, crossing upward
+constexpr int kRootLowerSwitch = 1;  // δ - start of the current segment, crossing downward
+constexpr int kRootTurn = 2;         // δ' = 0 going down: maximum compression
+constexpr long kWholeLaw = -1;       // segment index meaning "the full piecewise law"
+
+/// What the C callbacks see: the model and where the integration is.
+struct RunState {
+  const ImpactModel* model = nullptr;
+  long segment = 0;  // index into the law, or kWholeLaw when not restarting at switches
+  double inverse_mass = 0.0;
+  std::string* log = nullptr;
+};
+
+/// F and σ_c at δ, with the current segment's formula (continued beyond its ends).
+ContactState Law(const RunState& run, double delta) noexcept {
+  if (run.segment == kWholeLaw) return run.model->StateAt(delta);
+  if (run.segment == 0 && !(delta > 0.0)) return ContactState{};  // free flight
+  return run.model->StateInSegment(static_cast<std::size_t>(run.segment), delta);
+}
+
+int RightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) {
+  const auto& run = *static_cast<const RunState*>(user_data);
+  const sunrealtype* state = N_VGetArrayPointer(y);
+  sunrealtype* rate = N_VGetArrayPointer(ydot);
+  const ContactState contact = Law(run, state[0]);
+  rate[0] = state[1];
+  rate[1] = -contact.force_N * run.inverse_mass;
+  rate[2] = contact.compressive_stress_Pa * state[1];
+  return std::isfinite(rate[1]) && std::isfinite(rate[2]) ? 0 : 1;  // 1: recoverable
+}
+
+int RootFunctions(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user_data) {
+  const auto& run = *static_cast<const RunState*>(user_data);
+  const sunrealtype* state = N_VGetArrayPointer(y);
+  double lower = 0.0;
+  double upper = std::numeric_limits<double>::infinity();
+  if (run.segment != kWholeLaw) {
+    const ForceLawSegment& seg = run.model->segment(static_cast<std::size_t>(run.segment));
+    lower = seg.start_m;
+    upper = seg.end_m;
+  }
+  g[kRootUpperSwitch] = std::isinf(upper) ? -1.0 : state[0] - upper;
+  g[kRootLowerSwitch] = state[0] - lower;
+  g[kRootTurn] = state[1];
+  return 0;
+}
+
+/// Analytic Jacobian of (δ', -F/m, σ δ') for the BDF/Newton variant. dσ/dδ is unbounded
+/// at a phase start (x^(n-2)); the phase-local penetration is floored so Newton's matrix
+/// stays finite (it only needs to be approximate).
+int Jacobian(sunrealtype /*t*/, N_Vector y, N_Vector /*fy*/, SUNMatrix jac, void* user_data,
+             N_Vector, N_Vector, N_Vector) {
+  const auto& run = *static_cast<const RunState*>(user_data);
+  const sunrealtype* state = N_VGetArrayPointer(y);
+  const double delta = state[0];
+  const ContactState contact = Law(run, delta);
+  double stress_slope = 0.0;
+  if (delta > 0.0) {
+    const std::size_t i = run.segment == kWholeLaw ? run.model->SegmentIndexAt(delta)
+                                                   : static_cast<std::size_t>(run.segment);
+    const ForceLawSegment& seg = run.model->segment(i);
+    const double x = std::max(delta - seg.origin_m, 1e-9 * std::max(seg.start_m, 1e-6));
+    stress_slope = 3.0 / (2.0 * std::numbers::pi) * seg.stiffness * seg.curvature_per_m *
+                   (seg.exponent - 1.0) * std::pow(x, seg.exponent - 2.0);
+  }
+  SM_ELEMENT_D(jac, 0, 0) = 0.0;
+  SM_ELEMENT_D(jac, 0, 1) = 1.0;
+  SM_ELEMENT_D(jac, 0, 2) = 0.0;
+  SM_ELEMENT_D(jac, 1, 0) = -contact.stiffness_N_per_m * run.inverse_mass;
+  SM_ELEMENT_D(jac, 1, 1) = 0.0;
+  SM_ELEMENT_D(jac, 1, 2) = 0.0;
+  SM_ELEMENT_D(jac, 2, 0) = stress_slope * state[1];
+  SM_ELEMENT_D(jac, 2, 1) = contact.compressive_stress_Pa;
+  SM_ELEMENT_D(jac, 2, 2) = 0.0;
+  return 0;
+}
+
+/// The opening of a phase entered upward at x = 0 with speed v > 0. The solution is
+/// singular there (x^n with non-integer n: an order-q method needs steps ~ 0.1 t for many
+/// decades of t), so the first stretch τ* is taken from the phase's series solution
+///     x(τ) = v τ - a τ² - b τ^(n+2),   a = F_off/(2m),   b = K v^n / (m (n+1)(n+2)),
+/// whose first neglected terms are c1 τ^(n+3) and c2 τ^(2n+3) with
+///     c1 = (K/m) n v^(n-1) a / ((n+2)(n+3)),   c2 = (K/m) n v^(n-1) b / ((2n+2)(2n+3)).
+/// τ* keeps both (and their τ-derivatives in v) below a twentieth of the local tolerance,
+/// and the opening short of the segment's end. CVODE integrates everything after τ*.
+struct PhaseOpening {
+  double duration_s = 0.0;
+  double x_m = 0.0;
+  double v_m_per_s = 0.0;
+};
+
+PhaseOpening OpenPhase(const ForceLawSegment& seg, double v, double inverse_mass, double tol_x,
+                       double tol_v) {
+  const double n = seg.exponent;
+  const double a = 0.5 * seg.force_offset_N * inverse_mass;
+  const double kv = seg.stiffness * std::pow(v, n) * inverse_mass;  // (K/m) v^n
+  const double b = kv / ((n + 1.0) * (n + 2.0));
+  const double common = seg.stiffness * inverse_mass * n * std::pow(v, n - 1.0);
+  const double c1 = common * a / ((n + 2.0) * (n + 3.0));
+  const double c2 = common * b / ((2.0 * n + 2.0) * (2.0 * n + 3.0));
+  constexpr double kShare = 0.05;
+  double tau = std::pow(kShare * tol_x / c2, 1.0 / (2.0 * n + 3.0));
+  tau = std::min(tau, std::pow(kShare * tol_v / ((2.0 * n + 3.0) * c2), 1.0 / (2.0 * n + 2.0)));
+  if (c1 > 0.0) {
+    tau = std::min(tau, std::pow(kShare * tol_x / c1, 1.0 / (n + 3.0)));
+    tau = std::min(tau, std::pow(kShare * tol_v / ((n + 3.0) * c1), 1.0 / (n + 2.0)));
+  }
+  const double room = 0.25 * (seg.end_m - seg.start_m);  // +inf for the last segment
+  PhaseOpening opening;
+  for (int halving = 0; halving < 60; ++halving, tau *= 0.5) {
+    const double x = v * tau - a * tau * tau - b * std::pow(tau, n + 2.0);
+    const double rate = v - 2.0 * a * tau - (n + 2.0) * b * std::pow(tau, n + 1.0);
+    if (x > 0.0 && x <= room && rate >= 0.5 * v) {
+      opening = {tau, x, rate};
+      break;
+    }
+  }
+  return opening;
+}
+
+void CaptureMessage(int error_code, const char* module, const char* function, char* message,
+                    void* user_data) {
+  auto* log = static_cast<std::string*>(user_data);
+  if (!log) return;
+  if (!log->empty()) log->append("; ");
+  log->append(error_code == CV_WARNING ? "warning" : "error");
+  log->append(" in ").append(module ? module : "?").append("::").append(function ? function : "?");
+  log->append(": ").append(message ? message : "");
+}
+
+/// CVODE's name of a return flag (the C string is malloc'ed by CVODE).
+std::string FlagName(int flag) {
+  char* name = CVodeGetReturnFlagName(flag);
+  std::string text = name ? name : "unknown flag";
+  std::free(name);
+  return text + " (" + std::to_string(flag) + ")";
+}
+
+void ValidateOptions(const TimeIntegrationOptions& o) {
+  using internal::FormatNumber;
+  if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
+    throw std::invalid_argument("rtol must be in [1e-14, 1e-2] (got " +
+                                FormatNumber(o.relative_tolerance) + ")");
+  }
+  if (!(o.absolute_tolerance == 0.0 ||
+        (o.absolute_tolerance > 0.0 && o.absolute_tolerance <= 1e-2))) {
+    throw std::invalid_argument("atol must be in (0, 1e-2], or 0 for atol = rtol (got " +
+                                FormatNumber(o.absolute_tolerance) + ")");
+  }
+  if (o.max_steps < 10) {
+    throw std::invalid_argument("max_steps must be >= 10 (got " + std::to_string(o.max_steps) +
+                                ")");
+  }
+  if (o.method != CvodeMethod::kAdams && o.method != CvodeMethod::kBdf) {
+    throw std::invalid_argument("method must be adams or bdf");
+  }
+}
+
+}  // namespace
+
+/// CVODE memory, vectors and solvers, created once per method and reused.
+struct TimeIntegrator::Workspace {
+  SUNContext context = nullptr;
+  N_Vector state = nullptr;
+  N_Vector absolute_tolerances = nullptr;
+  void* cvode[2] = {nullptr, nullptr};  // [Adams, BDF]
+  SUNNonlinearSolver fixed_point = nullptr;
+  SUNMatrix matrix = nullptr;
+  SUNLinearSolver linear_solver = nullptr;
+  RunState run;
+  std::string log;
+
+  Workspace() {
+    if (SUNContext_Create(nullptr, &context) != 0) throw std::runtime_error("SUNContext_Create failed");
+    state = N_VNew_Serial(3, context);
+    absolute_tolerances = N_VNew_Serial(3, context);
+    if (!state || !absolute_tolerances) throw std::runtime_error("N_VNew_Serial failed");
+    // Fused vector operations: one call instead of q+1 for the Adams history updates.
+    N_VEnableFusedOps_Serial(state, SUNTRUE);
+  }
+  ~Workspace() {
+    for (void*& mem : cvode) {
+      if (mem) CVodeFree(&mem);
+    }
+    if (fixed_point) SUNNonlinSolFree(fixed_point);
+    if (linear_solver) SUNLinSolFree(linear_solver);
+    if (matrix) SUNMatDestroy(matrix);
+    if (absolute_tolerances) N_VDestroy(absolute_tolerances);
+    if (state) N_VDestroy(state);
+    if (context) SUNContext_Free(&context);
+  }
+  Workspace(const Workspace&) = delete;
+  Workspace& operator=(const Workspace&) = delete;
+
+  /// The CVODE memory of a method, created and configured on first use.
+  void* Memory(CvodeMethod method) {
+    const int k = method == CvodeMethod::kAdams ? 0 : 1;
+    if (cvode[k]) return cvode[k];
+    void* mem = CVodeCreate(method == CvodeMethod::kAdams ? CV_ADAMS : CV_BDF, context);
+    if (!mem) throw std::runtime_error("CVodeCreate failed");
+    cvode[k] = mem;
+    CVodeSetErrHandlerFn(mem, CaptureMessage, &log);
+    N_VConst(0.0, state);
+    if (CVodeInit(mem, RightHandSide, 0.0, state) != CV_SUCCESS) {
+      throw std::runtime_error("CVodeInit failed: " + log);
+    }
+    CVodeSetUserData(mem, &run);
+    CVodeRootInit(mem, kRootCount, RootFunctions);
+    int directions[kRootCount] = {+1, -1, -1};
+    CVodeSetRootDirection(mem, directions);
+    CVodeSetNoInactiveRootWarn(mem);
+    CVodeSetMaxHnilWarns(mem, -1);
+    if (method == CvodeMethod::kAdams) {
+      fixed_point = SUNNonlinSol_FixedPoint(state, 0, context);
+      CVodeSetNonlinearSolver(mem, fixed_point);
+    } else {
+      matrix = SUNDenseMatrix(3, 3, context);
+      linear_solver = SUNLinSol_Dense(state, matrix, context);
+      CVodeSetLinearSolver(mem, linear_solver, matrix);
+      CVodeSetJacFn(mem, Jacobian);
+    }
+    return mem;
+  }
+};
+
+namespace {
+
+void AddStatistics(void* mem, CvodeMethod method, SolverStatistics& stats) {
+  long steps = 0, rhs = 0, roots = 0, iterations = 0, error_fails = 0, convergence_fails = 0;
+  CVodeGetNumSteps(mem, &steps);
+  CVodeGetNumRhsEvals(mem, &rhs);
+  CVodeGetNumGEvals(mem, &roots);
+  CVodeGetNumNonlinSolvIters(mem, &iterations);
+  CVodeGetNumErrTestFails(mem, &error_fails);
+  CVodeGetNumNonlinSolvConvFails(mem, &convergence_fails);
+  stats.steps += steps;
+  stats.rhs_evaluations += rhs;
+  stats.root_evaluations += roots;
+  stats.nonlinear_iterations += iterations;
+  stats.error_test_failures += error_fails;
+  stats.convergence_failures += convergence_fails;
+  if (method == CvodeMethod::kBdf) {
+    long jacobians = 0, ls_rhs = 0;
+    CVodeGetNumJacEvals(mem, &jacobians);
+    CVodeGetNumLinRhsEvals(mem, &ls_rhs);
+    stats.jacobian_evaluations += jacobians;
+    stats.rhs_evaluations += ls_rhs;
+  }
+}
+
+}  // namespace
+
+TimeIntegrator::TimeIntegrator() : workspace_(std::make_unique<Workspace>()) {}
+TimeIntegrator::~TimeIntegrator() = default;
+TimeIntegrator::TimeIntegrator(TimeIntegrator&&) noexcept = default;
+TimeIntegrator& TimeIntegrator::operator=(TimeIntegrator&&) noexcept = default;
+
+ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
+                                      const TimeIntegrationOptions& options) {
+  ValidateOptions(options);
+  Workspace& ws = *workspace_;
+  ws.log.clear();
+  void* mem = ws.Memory(options.method);
+
+  ImpactResult result;
+  result.method = options.method == CvodeMethod::kAdams ? ComputationMethod::kCvodeAdams
+                                                        : ComputationMethod::kCvodeBdf;
+  RunState& run = ws.run;
+  run.model = &model;
+  run.segment = options.restart_at_phase_switches ? 0 : kWholeLaw;
+  run.inverse_mass = 1.0 / model.effective_mass_kg();
+  run.log = &ws.log;
+
+  // Natural scales: L from phase 1 alone (an upper estimate of δ_max), v0, and the energy
+  // density phase 1 would reach at L. The absolute tolerances are relative to them.
+  const ForceLawSegment& first = model.segment(0);
+  const double v0 = model.impact_speed_m_per_s();
+  const double p1 = first.exponent + 1.0;
+  const double length_scale = std::pow(p1 * model.impact_energy_J() / first.stiffness, 1.0 / p1);
+  const double energy_density_scale = 3.0 / (2.0 * std::numbers::pi) * first.stiffness *
+                                      first.curvature_per_m * std::pow(length_scale, first.exponent) /
+                                      first.exponent;
+  const double time_scale = length_scale / v0;
+  const double atol =
+      options.absolute_tolerance > 0.0 ? options.absolute_tolerance : options.relative_tolerance;
+  sunrealtype* tolerance = N_VGetArrayPointer(ws.absolute_tolerances);
+  tolerance[0] = atol * length_scale;
+  tolerance[1] = atol * v0;
+  tolerance[2] = atol * energy_density_scale;
+
+  sunrealtype* y = N_VGetArrayPointer(ws.state);
+  y[0] = 0.0;
+  y[1] = v0;
+  y[2] = 0.0;
+  double t = 0.0;
+
+  auto record = [&](double time) {
+    if (!options.record_history) return;
+    const ContactState contact = model.StateAt(y[0]);
+    result.history.push_back(
+        {time, y[0], y[1], contact.force_N, contact.compressive_stress_Pa, y[2]});
+  };
+  // Re-initialise at a phase switch. An upward entry (x = 0 of the new phase's law) first
+  // takes the phase's series opening; CVODE starts after it with a step a tenth of it.
+  auto restart = [&](bool upward) {
+    double first_step = 0.0;  // 0: CVODE estimates (downward entries are smooth)
+    if (upward && run.segment != kWholeLaw && y[1] > 0.0) {
+      const std::size_t j = static_cast<std::size_t>(run.segment);
+      const ForceLawSegment& seg = model.segment(j);
+      if (seg.origin_m == seg.start_m) {
+        const double tol_x = tolerance[0] + options.relative_tolerance * std::abs(y[0]);
+        const double tol_v = tolerance[1] + options.relative_tolerance * std::abs(y[1]);
+        const PhaseOpening opening = OpenPhase(seg, y[1], run.inverse_mass, tol_x, tol_v);
+        if (opening.duration_s > 0.0) {
+          t += opening.duration_s;
+          y[0] = seg.start_m + opening.x_m;
+          y[1] = opening.v_m_per_s;
+          y[2] = model.StateInSegment(j, y[0]).energy_density_J_per_m2;
+          first_step = 0.1 * opening.duration_s;
+          record(t);
+        }
+      }
+    }
+    int flag = CVodeReInit(mem, t, ws.state);
+    if (flag == CV_SUCCESS) flag = CVodeSetInitStep(mem, first_step);
+    return flag;
+  };
+  auto fail = [&](SolveStatus status, int code, const std::string& what) {
+    result.status = status;
+    result.raw_code = code;
+    result.message = what;
+    if (!ws.log.empty()) result.message += " (CVODE: " + ws.log + ")";
+  };
+
+  record(0.0);
+  int flag = restart(true);
+  if (flag == CV_SUCCESS) {
+    flag = CVodeSVtolerances(mem, options.relative_tolerance, ws.absolute_tolerances);
+  }
+  bool at_max = false;
+  bool separated = false;
+  long steps_taken = 0;
+  const double horizon = 1e3 * time_scale;  // only orients CVODE's first step (one-step mode)
+
+  while (flag >= 0 && !separated) {
+    flag = CVode(mem, t + horizon, ws.state, &t, CV_ONE_STEP);
+    if (flag == CV_SUCCESS) {
+      record(t);
+      if (++steps_taken >= options.max_steps) break;
+      continue;
+    }
+    if (flag != CV_ROOT_RETURN) break;
+    int found[kRootCount] = {0, 0, 0};
+    CVodeGetRootInfo(mem, found);
+    record(t);
+    if (found[kRootTurn] && !at_max) {
+      at_max = true;
+      const ContactState contact = model.StateAt(y[0]);
+      result.peaks.max_penetration_m = y[0];
+      result.peaks.peak_force_N = contact.force_N;
+      result.peaks.max_compressive_stress_Pa = contact.compressive_stress_Pa;
+      result.peaks.max_tensile_stress_Pa = model.TensileFromCompressive(contact.compressive_stress_Pa);
+      result.peaks.max_energy_density_J_per_m2 = y[2];
+      result.peaks.phase_at_max = contact.phase;
+      const std::size_t i = model.SegmentIndexAt(y[0]);
+      result.peaks.scalp_fully_compressed = i > 0;
+      result.peaks.fully_compressed = contact.phase == Phase::kRobotOnBone;
+      result.time_of_max_compression_s = t;
+      continue;  // the law is smooth here: no restart
+    }
+    if (found[kRootLowerSwitch] && at_max) {
+      if (run.segment == 0 || run.segment == kWholeLaw) {
+        separated = true;
+        result.contact_duration_s = t;
+        result.rebound_speed_m_per_s = -y[1];
+        break;
+      }
+      --run.segment;
+      AddStatistics(mem, options.method, result.statistics);
+      ++result.statistics.restarts;
+      flag = restart(false);
+      continue;
+    }
+    if (found[kRootUpperSwitch] && !at_max) {
+      ++run.segment;
+      AddStatistics(mem, options.method, result.statistics);
+      ++result.statistics.restarts;
+      flag = restart(true);
+      continue;
+    }
+  }
+  AddStatistics(mem, options.method, result.statistics);
+
+  if (flag < 0) {
+    fail(flag == CV_TOO_MUCH_WORK ? SolveStatus::kStepLimit : SolveStatus::kSolverFailure, flag,
+         "CVODE returned " + FlagName(flag));
+  } else if (!separated && steps_taken >= options.max_steps) {
+    fail(SolveStatus::kStepLimit, CV_TOO_MUCH_WORK,
+         "step limit of " + std::to_string(options.max_steps) + " steps reached before separation");
+  } else if (!separated || !at_max) {
+    fail(SolveStatus::kEventMissed, flag, "the integration ended without locating maximum compression and separation");
+  }
+  if (result.ok()) result.warnings = ValidityWarnings(model, result.peaks);
+  run.model = nullptr;
+  return result;
+}
+
+ImpactResult SimulateImpact(const ImpactModel& model, const TimeIntegrationOptions& options) {
+  thread_local TimeIntegrator integrator;
+  return integrator.Simulate(model, options);
+}
+
+}  // namespace covopt

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs covopt's build and test dependencies from Debian bookworm's packages.
+# Idempotent: packages that are already installed are left alone, and apt is not
+# touched at all when nothing is missing. Run as root (or with sudo available).
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libsundials-dev        # CVODE / ARKODE time integration
+  libeigen3-dev          # small dense linear algebra
+  catch2                 # unit tests (v2.13)
+  libcli11-dev           # command-line parsing
+  libtomlplusplus-dev    # scene and catalog files
+  nlohmann-json3-dev     # --json output
+  libfmt-dev             # formatting
+  libbenchmark-dev       # bench/ (Google Benchmark)
+  gnuplot-nox            # --plot charts
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
