@@ -1,0 +1,56 @@
+#include "app.hpp"
+
+#include <exception>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "simulate.hpp"
+
+#ifndef COVOPT_VERSION
+#define COVOPT_VERSION "unknown"
+#endif
+
+namespace covopt::cli {
+
+int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CLI::App app{"covopt: design the soft covering of a collaborative robot so that a blunt "
+               "hit on a human head causes no laceration or contusion (Park et al. 2011).",
+               "covopt"};
+  app.set_version_flag("--version", std::string("covopt ") + COVOPT_VERSION);
+  app.require_subcommand(0, 1);
+  app.get_formatter()->column_width(34);
+  app.footer("Run 'covopt SUBCOMMAND --help' for a subcommand's options.\n"
+             "Exit codes: 0 done; 1 computation or output failed; 2 bad input.");
+
+  SimulateOptions simulate_options;
+  CLI::App* simulate = SetupSimulate(app, simulate_options);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
+      app.exit(e, out, err);  // --help, --help-all, --version
+      out.flush();
+      return 0;
+    }
+    fmt::print(err, "covopt: error: {}\nRun 'covopt --help' or 'covopt simulate --help'.\n",
+               e.what());
+    return 2;
+  }
+
+  try {
+    if (simulate->parsed()) return RunSimulate(simulate_options, out, err);
+  } catch (const std::exception& e) {
+    fmt::print(err, "covopt: internal error: {}\n", e.what());
+    return 1;
+  }
+
+  err << app.help();
+  fmt::print(err, "covopt: error: no subcommand given\n");
+  return 2;
+}
+
+}  // namespace covopt::cli

@@ -1,0 +1,287 @@
+#include "output.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "errors.hpp"
+#include "quantity.hpp"
+#include "scene_fields.hpp"
+
+namespace covopt::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// A number, or null when it is not finite (JSON has no NaN or Infinity).
+Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
+Json Number(const std::optional<double>& value) {
+  return value ? Number(*value) : Json(nullptr);
+}
+/// A mass or radius that may be infinite: the word the CLI accepts for it.
+Json MaybeInfinite(double value, std::string_view word) {
+  if (std::isinf(value) && value > 0) return Json(word);
+  return Number(value);
+}
+
+std::string_view YesNo(bool b) { return b ? "yes" : "no"; }
+std::string_view SafeWord(bool safe) { return safe ? "SAFE" : "UNSAFE"; }
+
+std::string Mass(double kg) { return FormatQuantity(kg, QuantityKind::kMass); }
+std::string Length(double m) { return FormatQuantity(m, QuantityKind::kLength); }
+std::string Modulus(double pa) { return FormatQuantity(pa, QuantityKind::kModulus); }
+
+/// One "label   value unit" row; only the ASCII label is padded.
+void Row(std::ostream& out, std::string_view label, std::string_view value) {
+  fmt::print(out, "  {:<24} {}\n", label, value);
+}
+
+}  // namespace
+
+std::string SceneHeadline(const Scene& scene) {
+  std::string covering =
+      scene.covering.thickness_m > 0.0
+          ? fmt::format("covering {}, {}", Length(scene.covering.thickness_m),
+                        Modulus(scene.covering.youngs_modulus_Pa))
+          : std::string("no covering");
+  return fmt::format("{} at {:g} m/s, R {}; {}; head {}", Mass(scene.robot.mass_kg),
+                     scene.robot.speed_m_per_s, Length(scene.robot.radius_m), covering,
+                     Mass(scene.head.mass_kg));
+}
+
+void PrintTable(std::ostream& out, const SimulationReport& report) {
+  const Scene& s = report.scene;
+  const ImpactResult& r = report.result;
+  const ImpactPeaks& p = r.peaks;
+
+  // Scene: two lines.
+  const std::string covering =
+      s.covering.thickness_m > 0.0
+          ? fmt::format("covering {}, E {}, ν {:g}", Length(s.covering.thickness_m),
+                        Modulus(s.covering.youngs_modulus_Pa), s.covering.poisson_ratio)
+          : std::string("no covering");
+  fmt::print(out, "Scene   robot {} at {:g} m/s, R {}, E {}, ν {:g}; {}\n", Mass(s.robot.mass_kg),
+             s.robot.speed_m_per_s, Length(s.robot.radius_m), Modulus(s.robot.youngs_modulus_Pa),
+             s.robot.poisson_ratio, covering);
+  fmt::print(out,
+             "        head {}, R {}; scalp {}, E {}, ν {:g}; skull E {}, ν {:g}; {} thresholds\n",
+             Mass(s.head.mass_kg), Length(s.head.radius_m), Length(s.scalp.thickness_m),
+             Modulus(s.scalp.youngs_modulus_Pa), s.scalp.poisson_ratio,
+             Modulus(s.skull.youngs_modulus_Pa), s.skull.poisson_ratio,
+             ThresholdsName(s.model.thresholds));
+
+  fmt::print(out, "\nPeaks\n");
+  Row(out, "max penetration", fmt::format("{:.6g} mm", p.max_penetration_m * 1e3));
+  Row(out, "peak force", fmt::format("{:.6g} N", p.peak_force_N));
+  if (r.contact_duration_s) {
+    Row(out, "contact duration", fmt::format("{:.6g} ms", *r.contact_duration_s * 1e3));
+  }
+  if (r.time_of_max_compression_s) {
+    Row(out, "time of max compression",
+        fmt::format("{:.6g} ms", *r.time_of_max_compression_s * 1e3));
+  }
+  Row(out, "max compressive stress", fmt::format("{:.6g} MPa", p.max_compressive_stress_Pa / 1e6));
+  Row(out, "max tensile stress", fmt::format("{:.6g} MPa", p.max_tensile_stress_Pa / 1e6));
+  Row(out, "max energy density",
+      fmt::format("{:.6g} J/cm²", p.max_energy_density_J_per_m2 / 1e4));
+  if (r.rebound_speed_m_per_s) {
+    Row(out, "rebound speed", fmt::format("{:.6g} m/s", *r.rebound_speed_m_per_s));
+  }
+  Row(out, "phase at max",
+      fmt::format("{} ({})", PhaseNumber(p.phase_at_max), ToString(p.phase_at_max)));
+  Row(out, "scalp fully compressed", YesNo(p.scalp_fully_compressed));
+  Row(out, "fully compressed", YesNo(p.fully_compressed));
+
+  const InjuryVerdict& lac = report.assessment.laceration;
+  const InjuryVerdict& con = report.assessment.contusion;
+  fmt::print(out, "\nVerdicts\n");
+  fmt::print(out, "  {:<12} {:<7} tensile stress {:.6g} MPa, limit {:g} MPa, ratio {:.4g}\n",
+             "laceration", SafeWord(lac.safe), lac.value / 1e6, lac.limit / 1e6, lac.ratio);
+  fmt::print(out, "  {:<12} {:<7} energy density {:.6g} J/cm², limit {:g} J/cm², ratio {:.4g}\n",
+             "contusion", SafeWord(con.safe), con.value / 1e4, con.limit / 1e4, con.ratio);
+  fmt::print(out, "  {:<12} {}\n", "overall", SafeWord(report.assessment.safe()));
+
+  fmt::print(out, "\nMethod  {}", ToString(r.method));
+  if (report.time_options) {
+    const TimeIntegrationOptions& o = *report.time_options;
+    fmt::print(out, ", rtol {:g}, atol {:g}", o.relative_tolerance,
+               o.absolute_tolerance > 0.0 ? o.absolute_tolerance : o.relative_tolerance);
+    const SolverStatistics& st = r.statistics;
+    fmt::print(out, "\nSolver  {}: {} steps, {} rhs evaluations, {} root evaluations, "
+                    "{} Jacobian evaluations,\n        {} nonlinear iterations, "
+                    "{} error-test failures, {} convergence failures, {} restarts",
+               ToString(r.status), st.steps, st.rhs_evaluations, st.root_evaluations,
+               st.jacobian_evaluations, st.nonlinear_iterations, st.error_test_failures,
+               st.convergence_failures, st.restarts);
+    if (!r.history.empty()) fmt::print(out, "; {} history samples", r.history.size());
+  } else {
+    fmt::print(out, " (energy balance and quadrature, no time integration)");
+  }
+  fmt::print(out, "\n");
+
+  if (r.warnings.empty()) {
+    fmt::print(out, "\nWarnings: none\n");
+  } else {
+    fmt::print(out, "\nWarnings\n");
+    for (const std::string& warning : r.warnings) fmt::print(out, "  - {}\n", warning);
+  }
+}
+
+Json SceneToJson(const Scene& s) {
+  Json j;
+  j["robot"] = {{"mass_kg", MaybeInfinite(s.robot.mass_kg, "fixed")},
+                {"speed_m_per_s", Number(s.robot.speed_m_per_s)},
+                {"radius_m", MaybeInfinite(s.robot.radius_m, "flat")},
+                {"youngs_modulus_Pa", Number(s.robot.youngs_modulus_Pa)},
+                {"poisson_ratio", Number(s.robot.poisson_ratio)}};
+  j["covering"] = {{"youngs_modulus_Pa", Number(s.covering.youngs_modulus_Pa)},
+                   {"poisson_ratio", Number(s.covering.poisson_ratio)},
+                   {"thickness_m", Number(s.covering.thickness_m)}};
+  j["head"] = {{"mass_kg", MaybeInfinite(s.head.mass_kg, "fixed")},
+               {"radius_m", Number(s.head.radius_m)}};
+  j["scalp"] = {{"youngs_modulus_Pa", Number(s.scalp.youngs_modulus_Pa)},
+                {"poisson_ratio", Number(s.scalp.poisson_ratio)},
+                {"thickness_m", Number(s.scalp.thickness_m)}};
+  j["skull"] = {{"youngs_modulus_Pa", Number(s.skull.youngs_modulus_Pa)},
+                {"poisson_ratio", Number(s.skull.poisson_ratio)}};
+  j["model"] = {{"thresholds", ThresholdsName(s.model.thresholds)},
+                {"exponent_covering_scalp", Number(s.model.exponent_covering_scalp)},
+                {"exponent_covering_bone", Number(s.model.exponent_covering_bone)},
+                {"exponent_robot_bone", Number(s.model.exponent_robot_bone)},
+                {"tensile_poisson_ratio", Number(s.model.tensile_poisson_ratio)},
+                {"full_compression_fraction", Number(s.model.full_compression_fraction)}};
+  return j;
+}
+
+Json ToJson(const SimulationReport& report) {
+  const ImpactResult& r = report.result;
+  const ImpactPeaks& p = r.peaks;
+  const InjuryVerdict& lac = report.assessment.laceration;
+  const InjuryVerdict& con = report.assessment.contusion;
+
+  Json j;
+  j["max_penetration_m"] = Number(p.max_penetration_m);
+  j["peak_force_N"] = Number(p.peak_force_N);
+  j["contact_duration_s"] = Number(r.contact_duration_s);
+  j["time_of_max_compression_s"] = Number(r.time_of_max_compression_s);
+  j["max_compressive_stress_Pa"] = Number(p.max_compressive_stress_Pa);
+  j["max_tensile_stress_Pa"] = Number(p.max_tensile_stress_Pa);
+  j["max_energy_density_J_per_m2"] = Number(p.max_energy_density_J_per_m2);
+  j["rebound_speed_m_per_s"] = Number(r.rebound_speed_m_per_s);
+  j["phase_at_max"] = PhaseNumber(p.phase_at_max);
+  j["phase_at_max_name"] = ToString(p.phase_at_max);
+  j["scalp_fully_compressed"] = p.scalp_fully_compressed;
+  j["fully_compressed"] = p.fully_compressed;
+  j["laceration"] = {{"value_Pa", Number(lac.value)},
+                     {"limit_Pa", Number(lac.limit)},
+                     {"ratio", Number(lac.ratio)},
+                     {"safe", lac.safe}};
+  j["contusion"] = {{"value_J_per_m2", Number(con.value)},
+                    {"limit_J_per_m2", Number(con.limit)},
+                    {"ratio", Number(con.ratio)},
+                    {"safe", con.safe}};
+  j["safe"] = report.assessment.safe();
+  j["method"] = ToString(r.method);
+
+  const SolverStatistics& st = r.statistics;
+  Json solver = {{"status", ToString(r.status)},
+                 {"message", r.message},
+                 {"raw_code", r.raw_code},
+                 {"steps", st.steps},
+                 {"rhs_evaluations", st.rhs_evaluations},
+                 {"root_evaluations", st.root_evaluations},
+                 {"jacobian_evaluations", st.jacobian_evaluations},
+                 {"nonlinear_iterations", st.nonlinear_iterations},
+                 {"error_test_failures", st.error_test_failures},
+                 {"convergence_failures", st.convergence_failures},
+                 {"restarts", st.restarts}};
+  if (report.time_options) {
+    const TimeIntegrationOptions& o = *report.time_options;
+    solver["relative_tolerance"] = Number(o.relative_tolerance);
+    solver["absolute_tolerance"] =
+        Number(o.absolute_tolerance > 0.0 ? o.absolute_tolerance : o.relative_tolerance);
+    solver["history_samples"] = r.history.size();
+  }
+  j["solver"] = std::move(solver);
+  j["scene"] = SceneToJson(report.scene);
+  j["warnings"] = r.warnings;
+  return j;
+}
+
+std::string HistoryCsv(const std::vector<HistorySample>& history) {
+  const auto field = [](double v) { return std::isfinite(v) ? fmt::format("{}", v) : std::string(); };
+  std::string csv(kHistoryCsvHeader);
+  csv += '\n';
+  for (const HistorySample& h : history) {
+    csv += fmt::format("{},{},{},{},{},{}\n", field(h.time_s), field(h.penetration_m),
+                       field(h.penetration_rate_m_per_s), field(h.force_N),
+                       field(h.compressive_stress_Pa), field(h.energy_density_J_per_m2));
+  }
+  return csv;
+}
+
+void WriteFileAtomically(const std::filesystem::path& path, std::string_view content) {
+  const std::string target = path.string();
+  if (!path.has_filename()) {
+    throw OutputError(fmt::format("cannot write '{}': not a file name", target));
+  }
+  const std::filesystem::path directory =
+      path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  std::string temp =
+      (directory / fmt::format(".{}.tmp-XXXXXX", path.filename().string())).string();
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) {
+    throw OutputError(fmt::format("cannot write '{}': {}", target, std::strerror(errno)));
+  }
+
+  // Write, give the file the permissions a plain open() would (mkstemp makes 0600), flush
+  // to disk, close; on any failure remove the temporary and report the step.
+  const char* failed_step = nullptr;
+  int error = 0;
+  const char* data = content.data();
+  std::size_t left = content.size();
+  while (left > 0 && failed_step == nullptr) {
+    const ssize_t n = ::write(fd, data, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      failed_step = "write";
+      error = errno;
+    } else {
+      data += n;
+      left -= static_cast<std::size_t>(n);
+    }
+  }
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  if (failed_step == nullptr && ::fchmod(fd, 0666 & ~mask) != 0) {
+    failed_step = "chmod";
+    error = errno;
+  }
+  if (failed_step == nullptr && ::fsync(fd) != 0) {
+    failed_step = "fsync";
+    error = errno;
+  }
+  if (::close(fd) != 0 && failed_step == nullptr) {
+    failed_step = "close";
+    error = errno;
+  }
+  if (failed_step == nullptr && ::rename(temp.c_str(), target.c_str()) != 0) {
+    failed_step = "rename";
+    error = errno;
+  }
+  if (failed_step != nullptr) {
+    ::unlink(temp.c_str());
+    throw OutputError(
+        fmt::format("cannot write '{}': {}: {}", target, failed_step, std::strerror(error)));
+  }
+}
+
+}  // namespace covopt::cli

@@ -1,0 +1,59 @@
+#pragma once
+/// @file output.hpp
+/// What `covopt simulate` prints and writes: the readable table, the JSON object, the
+/// history CSV, and an atomic file writer. Physics comes from covopt::core only; this file
+/// formats it.
+
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "covopt/core/impact_result.hpp"
+#include "covopt/core/scene.hpp"
+#include "covopt/core/time_integration.hpp"
+
+namespace covopt::cli {
+
+/// One finished computation with everything needed to report it.
+struct SimulationReport {
+  Scene scene;                   ///< the resolved scene (defaults, file, flags)
+  ImpactResult result;           ///< from SolveExact or SimulateImpact
+  InjuryAssessment assessment;   ///< Assess(result.peaks)
+  /// The integrator's options when the time path ran; empty for the exact path.
+  std::optional<TimeIntegrationOptions> time_options;
+};
+
+/// The scene in one short line, for titles: "10 kg at 2 m/s, R 15 mm; covering 15 mm,
+/// 27.6 MPa; head 4.5 kg".
+std::string SceneHeadline(const Scene& scene);
+
+/// The readable report: scene, peaks, verdicts, method and solver, warnings.
+void PrintTable(std::ostream& out, const SimulationReport& report);
+
+/// Every resolved scene input in SI; fixed masses are "fixed", a flat radius is "flat".
+nlohmann::ordered_json SceneToJson(const Scene& scene);
+
+/// The report as one JSON object, values in SI, keys carrying the unit
+/// (max_penetration_m, peak_force_N, ...); missing or non-finite values are null.
+nlohmann::ordered_json ToJson(const SimulationReport& report);
+
+/// The CSV header of a history file.
+inline constexpr std::string_view kHistoryCsvHeader =
+    "time_s,penetration_m,penetration_rate_m_per_s,force_N,compressive_stress_Pa,"
+    "energy_density_J_per_m2";
+
+/// The history as CSV text: kHistoryCsvHeader, then one row per sample (shortest
+/// round-trip decimal numbers; a non-finite value is an empty field).
+std::string HistoryCsv(const std::vector<HistorySample>& history);
+
+/// Writes `content` to `path` atomically: a temporary file in the same directory, flushed,
+/// then renamed over `path`. A reader sees the old file or the whole new one.
+/// @throws OutputError naming the file and the system's reason.
+void WriteFileAtomically(const std::filesystem::path& path, std::string_view content);
+
+}  // namespace covopt::cli

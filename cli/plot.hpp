@@ -1,0 +1,42 @@
+#pragma once
+/// @file plot.hpp
+/// The force/stress chart of `covopt simulate --plot`, drawn by gnuplot.
+///
+/// The history goes into a gnuplot script as an inline data block; gnuplot runs as a child
+/// process (no shell) with its output captured, writes to a temporary file next to the
+/// target, which is then renamed over it. PNG uses the pngcairo terminal (gnuplot-nox has
+/// it), SVG the svg terminal.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "output.hpp"
+
+namespace covopt::cli {
+
+enum class PlotFormat { kPng, kSvg };
+
+/// The format for a file name's extension (.png or .svg, any case); empty otherwise.
+std::optional<PlotFormat> PlotFormatFor(const std::filesystem::path& path);
+
+/// The first executable file called `name` in the directories of $PATH.
+std::optional<std::filesystem::path> FindOnPath(std::string_view name);
+
+/// The message when gnuplot is missing.
+inline constexpr std::string_view kGnuplotMissing =
+    "gnuplot not found on PATH; install gnuplot-nox or drop --plot";
+
+/// The gnuplot script that draws force [N] (left axis) and compressive stress [MPa] (right
+/// axis) against time [ms] from report.result.history into `output_path`.
+std::string GnuplotScript(const SimulationReport& report, PlotFormat format,
+                          const std::string& output_path);
+
+/// Draws the chart into `path`.
+/// @throws OutputError when gnuplot is missing or fails (with its messages), or the file
+///         cannot be written.
+void PlotHistory(const std::filesystem::path& path, const SimulationReport& report,
+                 PlotFormat format);
+
+}  // namespace covopt::cli

@@ -1,0 +1,299 @@
+#include "simulate.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "covopt/core/exact.hpp"
+#include "covopt/core/impact_model.hpp"
+#include "errors.hpp"
+#include "output.hpp"
+#include "quantity.hpp"
+#include "scene_fields.hpp"
+#include "scene_file.hpp"
+
+namespace covopt::cli {
+namespace {
+
+std::string_view TypeName(QuantityKind kind) {
+  switch (kind) {
+    case QuantityKind::kMass: return "MASS";
+    case QuantityKind::kLength: return "LENGTH";
+    case QuantityKind::kSpeed: return "SPEED";
+    case QuantityKind::kModulus: return "MODULUS";
+    case QuantityKind::kDimensionless: return "RATIO";
+  }
+  return "VALUE";
+}
+
+constexpr std::string_view kFooter = R"(Values take a unit: 10kg, 2m/s, 15mm, "15 mm", 27.6MPa, 6.5GPa, 0.3.
+A bare number is SI. Units: mass kg, g, t ('fixed' for an immovable body);
+length m, cm, mm, um ('flat' for the robot radius); speed m/s, mm/s, cm/s,
+km/h; modulus Pa, kPa, MPa, GPa, N/m2, N/mm2; Poisson ratios and tolerances
+are plain numbers. Unset values come from --scene, else the paper's scene.
+
+Exit codes: 0 done; 1 the computation failed or an output could not be
+written (e.g. gnuplot missing); 2 bad input.)";
+
+}  // namespace
+
+CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
+  CLI::App* sub = app.add_subcommand(
+      "simulate", "Compute one impact: peak force, stresses, energy density and the "
+                  "laceration/contusion verdicts");
+  sub->footer(std::string(kFooter));
+
+  sub->add_option("--scene", options.scene_file,
+                  "TOML scene file; flags override it (see cli/examples/paper_scene.toml)")
+      ->type_name("FILE.toml");
+
+  const Scene defaults;
+  for (const SceneField& field : SceneFields()) {
+    Scene scene = defaults;
+    const std::string key = field.dotted_name();
+    sub->add_option_function<std::string>(
+           std::string(field.flag),
+           [&options, key](const std::string& value) { options.scene_values[key] = value; },
+           fmt::format("{} (default {})", field.help,
+                       FormatQuantity(field.field(scene), field.spec.kind)))
+        ->type_name(std::string(TypeName(field.spec.kind)))
+        ->group("Scene");
+  }
+  sub->add_option("--thresholds", options.thresholds,
+                  "phase thresholds: cumulative (default) or literal (the paper's text)")
+      ->check(CLI::IsMember({"cumulative", "literal"}))
+      ->group("Scene");
+
+  sub->add_option("--method", options.method,
+                  "exact (energy balance; default) or cvode (time integration; default "
+                  "with --history/--plot)")
+      ->check(CLI::IsMember({"exact", "cvode"}))
+      ->group("Computation");
+  sub->add_option("--cvode-method", options.cvode_method,
+                  "CVODE family: adams (default) or bdf")
+      ->check(CLI::IsMember({"adams", "bdf"}))
+      ->group("Computation");
+  sub->add_option("--rtol", options.rtol,
+                  fmt::format("CVODE relative tolerance (default {:g})",
+                              TimeIntegrationOptions{}.relative_tolerance))
+      ->type_name("RATIO")
+      ->group("Computation");
+  sub->add_option("--atol", options.atol,
+                  "CVODE absolute tolerance, scaled per component (default: rtol)")
+      ->type_name("RATIO")
+      ->group("Computation");
+
+  sub->add_option("--max-steps", options.max_steps,
+                  fmt::format("CVODE limit on internal steps; reaching it fails the run "
+                              "(default {})",
+                              TimeIntegrationOptions{}.max_steps))
+      ->type_name("N")
+      ->group("Computation");
+
+  sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")
+      ->group("Output");
+  sub->add_option("--history", options.history_file,
+                  "write the time history as CSV (uses the time path)")
+      ->type_name("FILE.csv")
+      ->group("Output");
+  sub->add_option("--plot", options.plot_file,
+                  "draw force and stress against time with gnuplot (uses the time path)")
+      ->type_name("FILE.png|FILE.svg")
+      ->group("Output");
+  return sub;
+}
+
+SimulationPlan ResolveSimulation(const SimulateOptions& options) {
+  SimulationPlan plan;
+
+  // The scene: defaults, then the file, then the flags.
+  if (options.scene_file) {
+    for (std::string& name : ApplySceneFile(*options.scene_file, plan.scene)) {
+      plan.sources[std::move(name)] = *options.scene_file;
+    }
+  }
+  for (const SceneField& field : SceneFields()) {
+    const auto typed = options.scene_values.find(field.dotted_name());
+    if (typed != options.scene_values.end()) {
+      field.field(plan.scene) = ParseQuantity(typed->second, field.spec, field.flag);
+      plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, typed->second);
+    }
+  }
+  for (const auto& [key, value] : options.scene_values) {
+    const auto fields = SceneFields();
+    if (std::none_of(fields.begin(), fields.end(),
+                     [&](const SceneField& f) { return f.dotted_name() == key; })) {
+      throw InputError(fmt::format("unknown scene field '{}' (got '{}')", key, value));
+    }
+  }
+  if (options.thresholds) {
+    plan.scene.model.thresholds = ParseThresholds(*options.thresholds, "--thresholds");
+    plan.sources["model.thresholds"] = fmt::format("--thresholds '{}'", *options.thresholds);
+  }
+
+  // Outputs.
+  plan.json = options.json;
+  if (options.history_file) {
+    if (options.history_file->empty()) throw InputError("--history: empty file name");
+    plan.history_file = options.history_file;
+  }
+  if (options.plot_file) {
+    const auto format = PlotFormatFor(*options.plot_file);
+    if (!format) {
+      throw InputError(fmt::format("--plot: cannot tell the format of '{}'; name the file "
+                                   "*.png or *.svg",
+                                   *options.plot_file));
+    }
+    plan.plot_file = options.plot_file;
+    plan.plot_format = *format;
+  }
+
+  // The computation path.
+  const bool needs_history = plan.history_file || plan.plot_file;
+  bool time_path = needs_history;
+  if (options.method) {
+    if (*options.method == "cvode") {
+      time_path = true;
+    } else if (*options.method == "exact") {
+      if (needs_history) {
+        throw InputError(fmt::format(
+            "--method exact computes no time history, which {} needs; drop --method exact "
+            "(cvode is the default then) or give --method cvode",
+            plan.history_file ? "--history" : "--plot"));
+      }
+    } else {
+      throw InputError(
+          fmt::format("--method: expected 'exact' or 'cvode' (got '{}')", *options.method));
+    }
+  }
+  if (!time_path) {
+    for (const auto& [flag, given] : {std::pair{"--cvode-method", options.cvode_method.has_value()},
+                                      std::pair{"--rtol", options.rtol.has_value()},
+                                      std::pair{"--atol", options.atol.has_value()},
+                                      std::pair{"--max-steps", options.max_steps.has_value()}}) {
+      if (given) {
+        throw InputError(fmt::format(
+            "{} applies to the time path only; add --method cvode", flag));
+      }
+    }
+    return plan;
+  }
+
+  TimeIntegrationOptions time;
+  if (options.cvode_method) {
+    if (*options.cvode_method == "adams") {
+      time.method = CvodeMethod::kAdams;
+    } else if (*options.cvode_method == "bdf") {
+      time.method = CvodeMethod::kBdf;
+    } else {
+      throw InputError(fmt::format("--cvode-method: expected 'adams' or 'bdf' (got '{}')",
+                                   *options.cvode_method));
+    }
+  }
+  const QuantitySpec tolerance{QuantityKind::kDimensionless};
+  if (options.rtol) time.relative_tolerance = ParseQuantity(*options.rtol, tolerance, "--rtol");
+  if (options.atol) {
+    time.absolute_tolerance = ParseQuantity(*options.atol, tolerance, "--atol");
+    // The library reads 0 as "default: rtol", so an explicit 0 must not get through.
+    if (!(time.absolute_tolerance > 0.0)) {
+      throw InputError(fmt::format("--atol must be > 0 (got '{}')", *options.atol));
+    }
+  }
+  if (options.max_steps) time.max_steps = *options.max_steps;  // range: the library's
+  time.record_history = needs_history;
+  plan.time_options = time;
+  return plan;
+}
+
+std::string AttributeError(const std::string& message, const SimulationPlan& plan) {
+  const auto is_name_char = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.';
+  };
+  std::vector<std::pair<std::size_t, std::string>> origins;  // by position in the message
+  for (const auto& [name, source] : plan.sources) {
+    // The field name as a whole word of the message.
+    for (std::size_t at = message.find(name); at != std::string::npos;
+         at = message.find(name, at + 1)) {
+      const std::size_t end = at + name.size();
+      if ((at == 0 || !is_name_char(message[at - 1])) &&
+          (end == message.size() || !is_name_char(message[end]) ||
+           (message[end] == '.' && (end + 1 == message.size() || message[end + 1] == ' ')))) {
+        origins.emplace_back(at, fmt::format("{} from {}", name, source));
+        break;
+      }
+    }
+  }
+  if (origins.empty()) return message;
+  std::sort(origins.begin(), origins.end());
+  std::string attributed = message + " (";
+  for (std::size_t i = 0; i < origins.size(); ++i) {
+    if (i > 0) attributed += "; ";
+    attributed += origins[i].second;
+  }
+  return attributed + ")";
+}
+
+int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream& err) {
+  const auto bad_input = [&err](std::string_view message) {
+    fmt::print(err, "covopt simulate: error: {}\n", message);
+    return 2;
+  };
+  const auto failed = [&err](std::string_view message) {
+    fmt::print(err, "covopt simulate: error: {}\n", message);
+    return 1;
+  };
+
+  SimulationPlan plan;
+  std::optional<ImpactModel> model;
+  SimulationReport report;
+  try {
+    plan = ResolveSimulation(options);
+  } catch (const InputError& e) {
+    return bad_input(e.what());
+  }
+  try {
+    model.emplace(ImpactModel::FromScene(plan.scene));
+  } catch (const std::invalid_argument& e) {  // the library's range checks
+    return bad_input(AttributeError(e.what(), plan));
+  }
+  try {
+    report.scene = plan.scene;
+    report.time_options = plan.time_options;
+    report.result = plan.time_options ? SimulateImpact(*model, *plan.time_options)
+                                      : SolveExact(*model);
+  } catch (const std::invalid_argument& e) {  // the integrator's option checks
+    return bad_input(e.what());
+  }
+
+  const ImpactResult& result = report.result;
+  if (!result.ok()) {
+    return failed(fmt::format("the computation failed: {} ({}, code {}){}{}", ToString(result.status),
+                              ToString(result.method), result.raw_code,
+                              result.message.empty() ? "" : ": ", result.message));
+  }
+  report.assessment = Assess(result.peaks);
+
+  try {
+    // Check for gnuplot before writing anything, so that a missing tool leaves no files.
+    if (plan.plot_file && !FindOnPath("gnuplot")) return failed(kGnuplotMissing);
+    if (plan.history_file) WriteFileAtomically(*plan.history_file, HistoryCsv(result.history));
+    if (plan.plot_file) PlotHistory(*plan.plot_file, report, plan.plot_format);
+  } catch (const OutputError& e) {
+    return failed(e.what());
+  }
+
+  if (plan.json) {
+    out << ToJson(report).dump(2) << '\n';
+  } else {
+    PrintTable(out, report);
+  }
+  out.flush();
+  return 0;
+}
+
+}  // namespace covopt::cli

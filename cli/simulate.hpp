@@ -1,0 +1,80 @@
+#pragma once
+/// @file simulate.hpp
+/// `covopt simulate`: one impact, its peaks and the injury verdicts.
+///
+/// The scene is Scene{} (the paper's), then the --scene file, then the flags. The exact
+/// path answers unless a history or a plot is asked for, which needs the time path
+/// (CVODE). Exit codes: 0 done, 1 the computation or an output failed, 2 bad input (one
+/// message on stderr, nothing on stdout).
+
+#include <map>
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "covopt/core/scene.hpp"
+#include "covopt/core/time_integration.hpp"
+#include "plot.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace covopt::cli {
+
+/// The options of `covopt simulate`, as typed. Values are read (units, ranges) by
+/// ResolveSimulation, so that every message can name its flag.
+struct SimulateOptions {
+  /// --scene FILE.toml: read before the flags, which override it.
+  std::optional<std::string> scene_file;
+  /// Scene flags as typed, by field name ("robot.mass" -> "10kg"); see SceneFields().
+  std::map<std::string, std::string, std::less<>> scene_values;
+  /// --thresholds cumulative|literal.
+  std::optional<std::string> thresholds;
+  /// --method exact|cvode. Default: exact, or cvode when --history or --plot is given.
+  std::optional<std::string> method;
+  /// --cvode-method adams|bdf. Default: adams.
+  std::optional<std::string> cvode_method;
+  /// --rtol, --atol: CVODE's relative and absolute tolerances [-]. Default: the library's.
+  std::optional<std::string> rtol;
+  std::optional<std::string> atol;
+  /// --max-steps N: CVODE's limit on internal steps in total. Default: the library's.
+  std::optional<long> max_steps;
+  /// --json: print one JSON object instead of the table.
+  bool json = false;
+  /// --history FILE.csv: write the time history (needs the time path).
+  std::optional<std::string> history_file;
+  /// --plot FILE.png|FILE.svg: draw force and stress against time with gnuplot.
+  std::optional<std::string> plot_file;
+};
+
+/// What the options resolve to: a scene and how to compute and report it.
+struct SimulationPlan {
+  Scene scene;
+  /// Where each non-default scene field came from, by field name:
+  /// "robot.mass" -> "--robot-mass '10kg'" or "scene.toml".
+  std::map<std::string, std::string, std::less<>> sources;
+  /// Set when the time path runs; empty for the exact path.
+  std::optional<TimeIntegrationOptions> time_options;
+  std::optional<std::string> history_file;
+  std::optional<std::string> plot_file;
+  PlotFormat plot_format = PlotFormat::kPng;
+  bool json = false;
+};
+
+/// Adds the `simulate` subcommand to `app`, storing what is typed into `options`, which
+/// must outlive the parse.
+CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options);
+
+/// Reads every value and checks how the options combine (ranges are left to the library).
+/// @throws InputError naming the flag or the scene-file field.
+SimulationPlan ResolveSimulation(const SimulateOptions& options);
+
+/// Adds to a library message that names scene fields ("robot.mass must be ...") where the
+/// user set them: "... (robot.mass from --robot-mass '-10kg')".
+std::string AttributeError(const std::string& message, const SimulationPlan& plan);
+
+/// Runs the subcommand; returns the exit code (0, 1 or 2).
+int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace covopt::cli
