@@ -51,6 +51,10 @@ std::vector<NamedScene> GeneratedScenes() {
     s.robot.radius_m = 0.08;
   });
   add("literal thresholds", [](Scene& s) { s.model.thresholds = ThresholdReading::kLiteral; });
+  add("literal thresholds, ill-ordered (the force jumps at t1)", [](Scene& s) {
+    s.model.thresholds = ThresholdReading::kLiteral;
+    s.covering.thickness_m = 0.001;
+  });
   return scenes;
 }
 
