@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fmt/ostream.h>
 
 #include "covopt/core/exact.hpp"
@@ -124,11 +125,14 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
       plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, typed->second);
     }
   }
-  for (const auto& [key, value] : options.scene_values) {
-    const auto fields = SceneFields();
+  // Only SetupSimulate fills scene_values, with known names; a caller building the options
+  // by hand gets told.
+  const auto fields = SceneFields();
+  for (const auto& typed : options.scene_values) {
     if (std::none_of(fields.begin(), fields.end(),
-                     [&](const SceneField& f) { return f.dotted_name() == key; })) {
-      throw InputError(fmt::format("unknown scene field '{}' (got '{}')", key, value));
+                     [&](const SceneField& f) { return f.dotted_name() == typed.first; })) {
+      throw InputError(
+          fmt::format("unknown scene field '{}' (got '{}')", typed.first, typed.second));
     }
   }
   if (options.thresholds) {
@@ -210,6 +214,25 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
   return plan;
 }
 
+std::vector<std::string> InputWarnings(const SimulationPlan& plan) {
+  std::vector<std::string> warnings;
+  if (!(plan.scene.covering.thickness_m > 0.0)) {
+    std::vector<std::string> ignored;
+    for (const char* name : {"covering.modulus", "covering.poisson"}) {
+      const auto source = plan.sources.find(name);
+      if (source != plan.sources.end()) {
+        ignored.push_back(fmt::format("{} (from {})", name, source->second));
+      }
+    }
+    if (!ignored.empty()) {
+      warnings.push_back(fmt::format("no covering (covering.thickness = 0), so {} {} ignored",
+                                     fmt::join(ignored, " and "),
+                                     ignored.size() == 1 ? "is" : "are"));
+    }
+  }
+  return warnings;
+}
+
 std::string AttributeError(const std::string& message, const SimulationPlan& plan) {
   const auto is_name_char = [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.';
@@ -277,6 +300,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
                               result.message.empty() ? "" : ": ", result.message));
   }
   report.assessment = Assess(result.peaks);
+  for (const std::string& warning : InputWarnings(plan)) report.result.warnings.push_back(warning);
 
   try {
     // Check for gnuplot before writing anything, so that a missing tool leaves no files.
@@ -293,6 +317,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
     PrintTable(out, report);
   }
   out.flush();
+  if (!out) return failed("cannot write the results to standard output");
   return 0;
 }
 

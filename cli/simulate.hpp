@@ -11,6 +11,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "covopt/core/scene.hpp"
 #include "covopt/core/time_integration.hpp"
@@ -69,6 +70,10 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options);
 /// Reads every value and checks how the options combine (ranges are left to the library).
 /// @throws InputError naming the flag or the scene-file field.
 SimulationPlan ResolveSimulation(const SimulateOptions& options);
+
+/// Warnings about the input itself, beside the library's about the result: values the
+/// user set that the model ignores (a covering modulus without a covering).
+std::vector<std::string> InputWarnings(const SimulationPlan& plan);
 
 /// Adds to a library message that names scene fields ("robot.mass must be ...") where the
 /// user set them: "... (robot.mass from --robot-mass '-10kg')".

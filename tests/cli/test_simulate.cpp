@@ -162,6 +162,20 @@ TEST_CASE("simulate --json reports exactly what SolveExact computes for the same
   }
 }
 
+TEST_CASE("a covering modulus given without a covering is reported as ignored", "[run]") {
+  const CliRun run = Run({"simulate", "--json", "--covering-thickness", "0",
+                          "--covering-modulus", "1GPa"});
+  REQUIRE(run.exit_code == 0);
+  const Json json = Json::parse(run.out);
+  REQUIRE(json["warnings"].size() == 1);
+  CHECK_THAT(json["warnings"][0].get<std::string>(),
+             Contains("covering.modulus") && Contains("--covering-modulus '1GPa'") &&
+                 Contains("ignored"));
+  // The default covering modulus, not set by the user, is not worth a warning.
+  CHECK(Json::parse(Run({"simulate", "--json", "--covering-thickness", "0"}).out)["warnings"]
+            .empty());
+}
+
 TEST_CASE("the JSON never contains NaN or Infinity", "[run][json]") {
   const CliRun run = Run({"simulate", "--json", "--robot-mass", "fixed", "--robot-radius", "flat"});
   REQUIRE(run.exit_code == 0);
