@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -108,20 +109,27 @@ int Jacobian(sunrealtype /*t*/, N_Vector y, N_Vector /*fy*/, SUNMatrix jac, void
 /// τ* keeps both (and their τ-derivatives in v) below a twentieth of the local tolerance,
 /// and the opening short of the segment's end. CVODE integrates everything after τ*.
 struct PhaseOpening {
-  double duration_s = 0.0;
-  double x_m = 0.0;
-  double v_m_per_s = 0.0;
+  double duration_s = 0.0;  ///< τ*; 0 when no opening could be taken
+  double v = 0.0, a = 0.0, b = 0.0, n = 1.0;
+  /// Phase-local penetration x [m] and its rate [m/s] at τ in [0, τ*].
+  std::pair<double, double> At(double tau) const {
+    const double tau_pow = std::pow(tau, n + 1.0);
+    return {v * tau - a * tau * tau - b * tau_pow * tau,
+            v - 2.0 * a * tau - (n + 2.0) * b * tau_pow};
+  }
 };
 
 PhaseOpening OpenPhase(const ForceLawSegment& seg, double v, double inverse_mass, double tol_x,
                        double tol_v) {
+  PhaseOpening opening;
   const double n = seg.exponent;
-  const double a = 0.5 * seg.force_offset_N * inverse_mass;
-  const double kv = seg.stiffness * std::pow(v, n) * inverse_mass;  // (K/m) v^n
-  const double b = kv / ((n + 1.0) * (n + 2.0));
+  opening.v = v;
+  opening.n = n;
+  opening.a = 0.5 * seg.force_offset_N * inverse_mass;
+  opening.b = seg.stiffness * std::pow(v, n) * inverse_mass / ((n + 1.0) * (n + 2.0));
   const double common = seg.stiffness * inverse_mass * n * std::pow(v, n - 1.0);
-  const double c1 = common * a / ((n + 2.0) * (n + 3.0));
-  const double c2 = common * b / ((2.0 * n + 2.0) * (2.0 * n + 3.0));
+  const double c1 = common * opening.a / ((n + 2.0) * (n + 3.0));
+  const double c2 = common * opening.b / ((2.0 * n + 2.0) * (2.0 * n + 3.0));
   constexpr double kShare = 0.05;
   double tau = std::pow(kShare * tol_x / c2, 1.0 / (2.0 * n + 3.0));
   tau = std::min(tau, std::pow(kShare * tol_v / ((2.0 * n + 3.0) * c2), 1.0 / (2.0 * n + 2.0)));
@@ -130,12 +138,10 @@ PhaseOpening OpenPhase(const ForceLawSegment& seg, double v, double inverse_mass
     tau = std::min(tau, std::pow(kShare * tol_v / ((n + 3.0) * c1), 1.0 / (n + 2.0)));
   }
   const double room = 0.25 * (seg.end_m - seg.start_m);  // +inf for the last segment
-  PhaseOpening opening;
   for (int halving = 0; halving < 60; ++halving, tau *= 0.5) {
-    const double x = v * tau - a * tau * tau - b * std::pow(tau, n + 2.0);
-    const double rate = v - 2.0 * a * tau - (n + 2.0) * b * std::pow(tau, n + 1.0);
+    const auto [x, rate] = opening.At(tau);
     if (x > 0.0 && x <= room && rate >= 0.5 * v) {
-      opening = {tau, x, rate};
+      opening.duration_s = tau;
       break;
     }
   }
@@ -171,6 +177,10 @@ void ValidateOptions(const TimeIntegrationOptions& o) {
     throw std::invalid_argument("atol must be in (0, 1e-2], or 0 for atol = rtol (got " +
                                 FormatNumber(o.absolute_tolerance) + ")");
   }
+  if (!(o.history_max_interval_s >= 0.0 && std::isfinite(o.history_max_interval_s))) {
+    throw std::invalid_argument("history_max_interval_s must be >= 0 s (got " +
+                                FormatNumber(o.history_max_interval_s) + ")");
+  }
   if (o.max_steps < 10) {
     throw std::invalid_argument("max_steps must be >= 10 (got " + std::to_string(o.max_steps) +
                                 ")");
@@ -187,6 +197,7 @@ struct TimeIntegrator::Workspace {
   SUNContext context = nullptr;
   N_Vector state = nullptr;
   N_Vector absolute_tolerances = nullptr;
+  N_Vector dense_output = nullptr;
   void* cvode[2] = {nullptr, nullptr};  // [Adams, BDF]
   SUNNonlinearSolver fixed_point = nullptr;
   SUNMatrix matrix = nullptr;
@@ -198,7 +209,8 @@ struct TimeIntegrator::Workspace {
     if (SUNContext_Create(nullptr, &context) != 0) throw std::runtime_error("SUNContext_Create failed");
     state = N_VNew_Serial(3, context);
     absolute_tolerances = N_VNew_Serial(3, context);
-    if (!state || !absolute_tolerances) throw std::runtime_error("N_VNew_Serial failed");
+    dense_output = N_VNew_Serial(3, context);
+    if (!state || !absolute_tolerances || !dense_output) throw std::runtime_error("N_VNew_Serial failed");
     // Fused vector operations: one call instead of q+1 for the Adams history updates.
     N_VEnableFusedOps_Serial(state, SUNTRUE);
   }
@@ -210,6 +222,7 @@ struct TimeIntegrator::Workspace {
     if (linear_solver) SUNLinSolFree(linear_solver);
     if (matrix) SUNMatDestroy(matrix);
     if (absolute_tolerances) N_VDestroy(absolute_tolerances);
+    if (dense_output) N_VDestroy(dense_output);
     if (state) N_VDestroy(state);
     if (context) SUNContext_Free(&context);
   }
@@ -318,11 +331,27 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
   y[2] = 0.0;
   double t = 0.0;
 
-  auto record = [&](double time) {
-    if (!options.record_history) return;
-    const ContactState contact = model.StateAt(y[0]);
+  auto push_sample = [&](double time, const sunrealtype* state) {
+    const ContactState contact = model.StateAt(state[0]);
     result.history.push_back(
-        {time, y[0], y[1], contact.force_N, contact.compressive_stress_Pa, y[2]});
+        {time, state[0], state[1], contact.force_N, contact.compressive_stress_Pa, state[2]});
+  };
+  // Records y at `time`; after a CVODE step (`interpolate`), first fills the gap since the
+  // last sample with dense output, which is valid inside the step just taken.
+  auto record = [&](double time, bool interpolate = false) {
+    if (!options.record_history) return;
+    const double interval = options.history_max_interval_s;
+    if (interpolate && interval > 0.0 && !result.history.empty()) {
+      const double last = result.history.back().time_s;
+      const int gaps = static_cast<int>(std::ceil((time - last) / interval));
+      for (int k = 1; k < gaps; ++k) {
+        const double tk = last + (time - last) * k / gaps;
+        if (CVodeGetDky(mem, tk, 0, ws.dense_output) == CV_SUCCESS) {
+          push_sample(tk, N_VGetArrayPointer(ws.dense_output));
+        }
+      }
+    }
+    push_sample(time, y);
   };
   // Re-initialise at a phase switch. An upward entry (x = 0 of the new phase's law) first
   // takes the phase's series opening; CVODE starts after it with a step a tenth of it.
@@ -336,10 +365,24 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
         const double tol_v = tolerance[1] + options.relative_tolerance * std::abs(y[1]);
         const PhaseOpening opening = OpenPhase(seg, y[1], run.inverse_mass, tol_x, tol_v);
         if (opening.duration_s > 0.0) {
-          t += opening.duration_s;
-          y[0] = seg.start_m + opening.x_m;
-          y[1] = opening.v_m_per_s;
-          y[2] = model.StateInSegment(j, y[0]).energy_density_J_per_m2;
+          const double t_start = t;
+          auto set_state = [&](double tau) {
+            const auto [x, rate] = opening.At(tau);
+            y[0] = seg.start_m + x;
+            y[1] = rate;
+            y[2] = model.StateInSegment(j, y[0]).energy_density_J_per_m2;
+          };
+          const double interval = options.history_max_interval_s;
+          if (options.record_history && interval > 0.0) {  // the opening, sampled
+            const int gaps = static_cast<int>(std::ceil(opening.duration_s / interval));
+            for (int k = 1; k < gaps; ++k) {
+              const double tau = opening.duration_s * k / gaps;
+              set_state(tau);
+              push_sample(t_start + tau, y);
+            }
+          }
+          set_state(opening.duration_s);
+          t = t_start + opening.duration_s;
           first_step = 0.1 * opening.duration_s;
           record(t);
         }
@@ -369,14 +412,14 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
   while (flag >= 0 && !separated) {
     flag = CVode(mem, t + horizon, ws.state, &t, CV_ONE_STEP);
     if (flag == CV_SUCCESS) {
-      record(t);
+      record(t, true);
       if (++steps_taken >= options.max_steps) break;
       continue;
     }
     if (flag != CV_ROOT_RETURN) break;
     int found[kRootCount] = {0, 0, 0};
     CVodeGetRootInfo(mem, found);
-    record(t);
+    record(t, true);
     if (found[kRootTurn] && !at_max) {
       at_max = true;
       const ContactState contact = model.StateAt(y[0]);

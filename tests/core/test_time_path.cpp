@@ -143,3 +143,25 @@ TEST_CASE("Without restarts the kinks cost accuracy but the run still completes"
   const ImpactResult exact = SolveExact(model);
   CHECK(RelativeError(through.peaks.max_penetration_m, exact.peaks.max_penetration_m) < 1e-4);
 }
+
+TEST_CASE("Dense output fills the history to the requested spacing", "[time]") {
+  const ImpactModel model = ImpactModel::FromScene(PaperScene(0.015, 27.6e6, 0.22));
+  const double duration = *SolveExact(model).contact_duration_s;
+  TimeIntegrationOptions options;
+  options.record_history = true;
+  options.history_max_interval_s = duration / 300.0;
+  const ImpactResult result = SimulateImpact(model, options);
+  REQUIRE(result.ok());
+  CHECK(result.history.size() >= 300);
+  for (std::size_t i = 1; i < result.history.size(); ++i) {
+    const HistorySample& sample = result.history[i];
+    CHECK(sample.time_s > result.history[i - 1].time_s);
+    CHECK(sample.time_s - result.history[i - 1].time_s <= options.history_max_interval_s * (1 + 1e-9));
+    // Interpolated states stay on the law: e(δ) from the state matches the law's e.
+    CHECK(std::abs(sample.energy_density_J_per_m2 -
+                   model.StateAt(sample.penetration_m).energy_density_J_per_m2) <
+          1e-5 * result.peaks.max_energy_density_J_per_m2);
+  }
+  options.history_max_interval_s = -1.0;
+  CHECK_THROWS_WITH(SimulateImpact(model, options), Catch::Contains("history_max_interval_s"));
+}

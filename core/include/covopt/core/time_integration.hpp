@@ -46,6 +46,10 @@ struct TimeIntegrationOptions {
   bool restart_at_phase_switches = true;
   /// Record every internal step (and each event) into ImpactResult::history.
   bool record_history = false;
+  /// With record_history: also insert samples interpolated by CVODE's dense output
+  /// (CVodeGetDky) so that no two samples are further apart than this [s]; 0 = internal
+  /// steps and events only. Smooth charts without tightening the tolerance.
+  double history_max_interval_s = 0.0;
   /// Give up after this many internal steps in total (SolveStatus::kStepLimit), >= 10.
   long max_steps = 200000;
 };
