@@ -5,4 +5,5 @@
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
+#include "covopt/core/sensitivity.hpp"
 #include "covopt/core/time_integration.hpp"

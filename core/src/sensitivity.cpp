@@ -1,0 +1,139 @@
+// Analytic design derivatives of the exact peaks (see sensitivity.hpp for the method).
+#include "covopt/core/sensitivity.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "covopt/core/exact.hpp"
+
+namespace covopt {
+namespace {
+
+constexpr double kHertzPressureFactor = 3.0 / (2.0 * std::numbers::pi);
+
+/// Derivatives of one segment's parameters and offsets with respect to θ.
+struct SegmentDerivatives {
+  double stiffness = 0.0;       // dK
+  double curvature = 0.0;       // dc
+  double start = 0.0;           // d start
+  double origin = 0.0;          // d origin
+  double force_offset = 0.0;    // dF_off
+  double stress_offset = 0.0;   // dσ_off
+  double energy_start = 0.0;    // dU(start)
+  double density_start = 0.0;   // de(start)
+};
+
+/// ∂F, ∂σ, ∂U, ∂e with respect to θ at fixed δ, inside segment `seg`.
+struct Partials {
+  double force = 0.0, stress = 0.0, energy = 0.0, density = 0.0;
+};
+
+/// x^p for x >= 0, with 0^p = 0 for p > 0 (and 1 for p == 0).
+double Power(double x, double p) { return x > 0.0 ? std::pow(x, p) : (p == 0.0 ? 1.0 : 0.0); }
+
+Partials PartialsAt(const ForceLawSegment& seg, const SegmentDerivatives& d, double delta) {
+  const double n = seg.exponent;
+  const double k = seg.stiffness;
+  const double kc = kHertzPressureFactor * k * seg.curvature_per_m;
+  const double dkc = kHertzPressureFactor * (d.stiffness * seg.curvature_per_m + k * d.curvature);
+  const double x = std::max(delta - seg.origin_m, 0.0);
+  const double x0 = seg.start_m - seg.origin_m;
+  const double dx = -d.origin;
+  const double dx0 = d.start - d.origin;
+  const double travel = delta - seg.start_m;
+  // The σ term has x^(n-2): infinite at x = 0 unless the origin does not move.
+  const double stress_slope_term =
+      dx == 0.0 ? 0.0 : kc * (n - 1.0) * Power(x, n - 2.0) * dx;
+  Partials p;
+  p.force = d.force_offset + d.stiffness * Power(x, n) + k * n * Power(x, n - 1.0) * dx;
+  p.stress = d.stress_offset + dkc * Power(x, n - 1.0) + stress_slope_term;
+  p.energy = d.energy_start + d.force_offset * travel - seg.force_offset_N * d.start +
+             d.stiffness * (Power(x, n + 1.0) - Power(x0, n + 1.0)) / (n + 1.0) +
+             k * (Power(x, n) * dx - Power(x0, n) * dx0);
+  p.density = d.density_start + d.stress_offset * travel - seg.stress_offset_Pa * d.start +
+              dkc * (Power(x, n) - Power(x0, n)) / n +
+              kc * (Power(x, n - 1.0) * dx - Power(x0, n - 1.0) * dx0);
+  return p;
+}
+
+/// dσ/dδ inside a segment at δ (infinite at the origin for n < 2).
+double StressSlope(const ForceLawSegment& seg, double delta) {
+  const double x = delta - seg.origin_m;
+  return kHertzPressureFactor * seg.stiffness * seg.curvature_per_m * (seg.exponent - 1.0) *
+         std::pow(x, seg.exponent - 2.0);
+}
+
+enum class Design { kModulus, kThickness };
+
+/// dK, dc, d start, d origin of segment j with respect to one design parameter.
+SegmentDerivatives PrimitiveDerivatives(const ImpactModel& model, std::size_t j, Design design) {
+  const Scene& scene = model.scene();
+  const ForceLawSegment& seg = model.segment(j);
+  SegmentDerivatives d;
+  const bool covering_material = seg.phase == Phase::kCoveringOnScalp || seg.phase == Phase::kCoveringOnBone;
+  if (covering_material) {
+    if (design == Design::kModulus) {
+      // K = 4/3 / (C sqrt(c)),  C ∋ (1 - ν_c²)/E_c  =>  dK/dE_c = (3/4) K² sqrt(c) (1 - ν_c²)/E_c².
+      const double e_c = scene.covering.youngs_modulus_Pa;
+      const double nu_c = scene.covering.poisson_ratio;
+      d.stiffness = 0.75 * seg.stiffness * seg.stiffness * std::sqrt(seg.curvature_per_m) *
+                    (1.0 - nu_c * nu_c) / (e_c * e_c);
+    } else if (!std::isinf(scene.robot.radius_m)) {
+      const double r_c = scene.robot.radius_m + scene.covering.thickness_m;
+      d.curvature = -1.0 / (r_c * r_c);  // c = 1/R_c + ...,  R_c = R_r + b_c
+      d.stiffness = -0.5 * seg.stiffness / seg.curvature_per_m * d.curvature;
+    }
+  }
+  if (seg.phase == Phase::kRobotOnBone && design == Design::kThickness) {
+    const double f = scene.model.full_compression_fraction;
+    d.origin = f;  // t2 = t1 + f b_c (cumulative) or f b_c (literal)
+    d.start = seg.start_m == seg.origin_m ? f : 0.0;  // ill-ordered literal: starts at t1
+  }
+  return d;
+}
+
+PeakDerivatives Differentiate(const ImpactModel& model, const ImpactPeaks& peaks, Design design) {
+  const double delta_max = peaks.max_penetration_m;
+  const std::size_t top = model.SegmentIndexAt(delta_max);
+  SegmentDerivatives d = PrimitiveDerivatives(model, 0, design);
+  for (std::size_t j = 0; j < top; ++j) {
+    const ForceLawSegment& seg = model.segment(j);
+    const ForceLawSegment& next = model.segment(j + 1);
+    SegmentDerivatives following = PrimitiveDerivatives(model, j + 1, design);
+    const Partials at_origin = PartialsAt(seg, d, next.origin_m);
+    const Partials at_start = PartialsAt(seg, d, next.start_m);
+    const ContactState state_origin = model.StateInSegment(j, next.origin_m);
+    const ContactState state_start = model.StateInSegment(j, next.start_m);
+    following.force_offset = at_origin.force + state_origin.stiffness_N_per_m * following.origin;
+    following.stress_offset = at_origin.stress + StressSlope(seg, next.origin_m) * following.origin;
+    following.energy_start = at_start.energy + state_start.force_N * following.start;
+    following.density_start =
+        at_start.density + state_start.compressive_stress_Pa * following.start;
+    d = following;
+  }
+  const ForceLawSegment& seg = model.segment(top);
+  const Partials p = PartialsAt(seg, d, delta_max);
+  const ContactState state = model.StateInSegment(top, delta_max);
+  PeakDerivatives out;
+  out.max_penetration = -p.energy / state.force_N;
+  out.peak_force = p.force + state.stiffness_N_per_m * out.max_penetration;
+  out.max_compressive_stress = p.stress + StressSlope(seg, delta_max) * out.max_penetration;
+  out.max_tensile_stress = model.TensileFromCompressive(out.max_compressive_stress);
+  out.max_energy_density = p.density + state.compressive_stress_Pa * out.max_penetration;
+  return out;
+}
+
+}  // namespace
+
+PeakSensitivities ExactPeakSensitivities(const ImpactModel& model, const ImpactPeaks& peaks) {
+  if (!model.has_covering()) {
+    throw std::invalid_argument(
+        "design sensitivities need a covering (covering.thickness > 0): b_c -> 0 is a "
+        "discontinuity of the model");
+  }
+  return {Differentiate(model, peaks, Design::kModulus),
+          Differentiate(model, peaks, Design::kThickness)};
+}
+
+}  // namespace covopt
