@@ -15,6 +15,8 @@ packages=(
   libfmt-dev             # formatting
   libbenchmark-dev       # bench/ (Google Benchmark)
   gnuplot-nox            # --plot charts
+  libnlopt-cxx-dev       # optimiser: global search (NLopt 2.7)
+  coinor-libipopt-dev    # optimiser: local refinement (Ipopt 3.11+, pkg-config ipopt)
 )
 
 missing=()
