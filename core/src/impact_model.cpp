@@ -23,17 +23,19 @@ constexpr double kHertzPressureFactor = 3.0 / (2.0 * std::numbers::pi);  // k = 
                               ")");
 }
 
-/// finite and in (0, max] [unit]; `fixed_word` (e.g. "fixed") also admits +inf.
-void CheckPositive(const std::string& field, double value, double max, const char* unit,
+/// finite and in (0, max] [unit]; `infinite_word` (e.g. "fixed") also admits +inf.
+/// The message is only built on failure: validation runs in every optimiser evaluation.
+void CheckPositive(const char* field, double value, double max, const char* unit,
                    const char* infinite_word = nullptr) {
-  const std::string range = "in (0, " + FormatNumber(max) + "] " + unit +
-                            (infinite_word ? std::string(", or ") + infinite_word : std::string());
-  if (std::isnan(value)) Reject(field, range, value);
   if (std::isinf(value) && value > 0 && infinite_word) return;
-  if (!(value > 0.0) || !(value <= max)) Reject(field, range, value);
+  if (value > 0.0 && value <= max) return;  // false for NaN
+  Reject(field,
+         "in (0, " + FormatNumber(max) + "] " + unit +
+             (infinite_word ? std::string(", or ") + infinite_word : std::string()),
+         value);
 }
 
-void CheckPoisson(const std::string& field, double value) {
+void CheckPoisson(const char* field, double value) {
   if (!(value > -1.0 && value <= 0.5)) Reject(field, "in (-1, 0.5]", value);
 }
 
