@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <covopt/core.hpp>
+#include <covopt/optim/covering_design.hpp>
 
 namespace {
 
@@ -65,6 +66,55 @@ BENCHMARK(BM_Cvode)
     ->ArgsProduct({{0, 1}, {0, 1}, {6, 8, 10}})
     ->ArgNames({"bare", "bdf", "rtol_exp"})
     ->Unit(benchmark::kMicrosecond);
+
+void BM_OracleWithGradient(benchmark::State& state) {
+  const covopt::optim::CoveringOracle oracle(covopt::Scene{}, 0.25);
+  covopt::optim::RatioGradient gradient;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(oracle.Score({13e6, 0.0142}, gradient).contusion_ratio);
+  }
+}
+BENCHMARK(BM_OracleWithGradient);
+
+void BM_OracleWithoutGradient(benchmark::State& state) {
+  const covopt::optim::CoveringOracle oracle(covopt::Scene{}, 0.25);
+  for (auto _ : state) benchmark::DoNotOptimize(oracle.Score({13e6, 0.0142}).contusion_ratio);
+}
+BENCHMARK(BM_OracleWithoutGradient);
+
+/// The paper's Table IV materials: the search `covopt optimize` runs, without the CLI.
+void BM_FindThinnestSafeCovering(benchmark::State& state) {
+  const std::vector<covopt::optim::CandidateMaterial> materials = {
+      {"polystyrene 27.6", 27.6e6, 0.22}, {"polystyrene 48.3", 48.3e6, 0.25},
+      {"polyurethane 62.1", 62.1e6, 0.20}, {"polyurethane 137.9", 137.9e6, 0.29}};
+  covopt::optim::DesignOptions options;
+  options.local_polish = state.range(0) != 0;
+  long evaluations = 0;
+  for (auto _ : state) {
+    const auto result = covopt::optim::FindThinnestSafeCovering(covopt::Scene{}, materials, options);
+    evaluations = result.evaluations;
+    benchmark::DoNotOptimize(result.continuous.score.design.thickness_m);
+  }
+  state.counters["evaluations"] = static_cast<double>(evaluations);
+}
+BENCHMARK(BM_FindThinnestSafeCovering)->Arg(1)->Arg(0)->ArgNames({"ipopt"})->Unit(benchmark::kMillisecond);
+
+/// 200 x 200 map over (E_c, b_c) with the exact path.
+void BM_DesignMap200x200(benchmark::State& state) {
+  covopt::Scene scene;
+  for (auto _ : state) {
+    double sum = 0.0;
+    for (int i = 0; i < 200; ++i) {
+      scene.covering.youngs_modulus_Pa = std::pow(10.0, 5.0 + 4.0 * i / 199.0);
+      for (int j = 0; j < 200; ++j) {
+        scene.covering.thickness_m = 0.05 * (j + 1) / 200.0;
+        sum += covopt::ExactPeaks(covopt::ImpactModel::FromScene(scene)).max_energy_density_J_per_m2;
+      }
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+}
+BENCHMARK(BM_DesignMap200x200)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
