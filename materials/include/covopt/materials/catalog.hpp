@@ -1,0 +1,133 @@
+#pragma once
+/// @file catalog.hpp
+/// The covering-material catalog: the built-in one (materials/data/catalog.toml, compiled
+/// into the library, so no file is needed at run time), user catalog files in the same
+/// TOML format, lookup by name, "did you mean" suggestions and range filters.
+///
+/// A catalog file is a list of [[material]] tables with these keys (SI units, in the
+/// key names):
+///
+///     name               string, required, unique ignoring case
+///     family             string, required ("foam", "elastomer", ...)
+///     youngs_modulus_Pa  number, required, > 0 and <= 1e12
+///     poisson_ratio      number in (-1, 0.5), or "unknown"; optional (absent = unknown)
+///     density_kg_per_m3  number, > 0 and <= 1e5; optional (absent = unknown)
+///     modulus_basis      "compressive" | "tensile" | "bending" | "fitted" | "as-printed"
+///                        | "hardness", required
+///     source             string, required: a URL or a citation
+///     note               string, optional: how E was derived
+///
+/// Any other key, or a top-level key other than `material`, is an error.
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "covopt/materials/material.hpp"
+
+namespace covopt::materials {
+
+/// A catalog that cannot be read or is not valid. what() is one line that starts with
+/// "file:line:column: " where the file says where (and only the file name for a file
+/// that cannot be read), names the offending key, and says what is allowed, e.g.
+///
+///     mine.toml:7:17: material 'soft foam': poisson_ratio must be in (-1, 0.5) or
+///     "unknown" (got 0.5)
+class CatalogError : public std::runtime_error {
+ public:
+  CatalogError(const std::string& message, std::string location, std::string key);
+  /// "file:line:column" (or "file" alone), empty for entries added in code.
+  const std::string& location() const noexcept { return location_; }
+  /// The offending key ("poisson_ratio", "name", ...), empty for syntax and file errors.
+  const std::string& key() const noexcept { return key_; }
+
+ private:
+  std::string location_;
+  std::string key_;
+};
+
+/// A closed interval [min, max]; an empty bound is unbounded on that side.
+struct Range {
+  std::optional<double> min;
+  std::optional<double> max;
+  /// True when neither bound is set.
+  bool unbounded() const noexcept { return !min && !max; }
+  /// min <= value <= max for the bounds that are set.
+  bool Contains(double value) const noexcept;
+};
+
+/// What Catalog::Filter keeps: every condition that is set must hold.
+struct MaterialFilter {
+  Range youngs_modulus_Pa;   ///< E [Pa]
+  Range poisson_ratio;       ///< ν [-]
+  Range density_kg_per_m3;   ///< density [kg/m³]
+  /// Families to keep, compared ignoring case; empty keeps every family.
+  std::vector<std::string> families;
+  /// Bases of E to keep; empty keeps every basis.
+  std::vector<ModulusBasis> bases;
+  /// Keep names that contain this text, ignoring case; empty keeps every name.
+  std::string name_contains;
+  /// Whether an entry whose ν (or density) is unknown passes a bounded ν (or density)
+  /// range. Default false: a value that is not known is not known to be in range.
+  bool include_unknown = false;
+};
+
+/// An ordered list of materials with unique names (ignoring case). Value type.
+class Catalog {
+ public:
+  /// An empty catalog.
+  Catalog() = default;
+
+  /// The catalog shipped with covopt (materials/data/catalog.toml, embedded at build
+  /// time), parsed on the first call (thread-safe) and kept for the process's lifetime.
+  /// Copy it to extend it: `Catalog mine = Catalog::BuiltIn(); mine.Add(...)`.
+  /// @throws CatalogError only if the shipped file is invalid (a build defect).
+  static const Catalog& BuiltIn();
+
+  /// Reads a catalog file.
+  /// @throws CatalogError if the file cannot be read or is not a valid catalog.
+  static Catalog FromTomlFile(const std::filesystem::path& path);
+
+  /// Reads catalog text; `source_name` names it in messages and origins (usually the
+  /// file name).
+  /// @throws CatalogError naming source_name:line:column, the key and what is allowed.
+  static Catalog FromTomlString(std::string_view toml_text, std::string_view source_name);
+
+  /// Appends every entry of `other`, in order. All or nothing.
+  /// @throws CatalogError if a name is already present (ignoring case); the message
+  ///         names both places.
+  void Add(const Catalog& other);
+
+  /// Appends one entry after validating it as a file entry would be.
+  /// @throws CatalogError naming the key and what is allowed, or a duplicate name.
+  void Add(Material material);
+
+  /// The entry with this name, compared ignoring ASCII case; nullptr if none. The pointer
+  /// is valid until the catalog is changed or destroyed.
+  const Material* Find(std::string_view name) const noexcept;
+
+  /// Names that `name` was probably meant to be, best first, at most `max_count`:
+  /// names within a small edit distance (ignoring case), and names that contain every
+  /// word of `name` ("polystyrene" -> both polystyrene foams). Empty if nothing is close.
+  std::vector<std::string> Suggest(std::string_view name, std::size_t max_count = 3) const;
+
+  /// The entries that pass `filter`, in catalog order.
+  std::vector<const Material*> Filter(const MaterialFilter& filter) const;
+
+  /// The distinct families, in order of first appearance.
+  std::vector<std::string> families() const;
+
+  /// Every entry, in the order they were loaded or added.
+  const std::vector<Material>& materials() const noexcept { return materials_; }
+  std::size_t size() const noexcept { return materials_.size(); }
+  bool empty() const noexcept { return materials_.empty(); }
+
+ private:
+  std::vector<Material> materials_;
+};
+
+}  // namespace covopt::materials

@@ -1,0 +1,70 @@
+#pragma once
+/// @file material.hpp
+/// One covering material of the catalog: its elastic constants in SI units, how the
+/// modulus was obtained, and where the numbers come from.
+///
+/// Foams and elastomers are nonlinear: a compressive secant modulus, a bending modulus and
+/// a tensile modulus of the same foam can differ several-fold. Every entry therefore
+/// carries the basis of its E, and a note saying how it was derived where it was (e.g. a
+/// secant from a stress at a strain).
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace covopt::materials {
+
+/// The Poisson ratio used for a material whose ν is unknown: 0.25, the paper's Fig. 9 and
+/// Table III value (shared DESIGN.md §1). Consumers that fall back on it should say so
+/// ("ν unknown, 0.25 assumed").
+inline constexpr double kDefaultPoissonRatio = 0.25;
+
+/// How the Young's modulus of an entry was obtained.
+enum class ModulusBasis {
+  kCompressive,  ///< "compressive": compression test, usually a secant over a strain range
+  kTensile,      ///< "tensile": tension test
+  kBending,      ///< "bending": flexural (e.g. 3-point bending) test
+  kFitted,       ///< "fitted": identified by fitting an impact model to measured forces
+  kAsPrinted,    ///< "as-printed": the source states E without saying how it was measured
+  kHardness,     ///< "hardness": estimated from a Shore hardness by an empirical correlation
+};
+
+/// The catalog spelling: "compressive", "tensile", "bending", "fitted", "as-printed",
+/// "hardness".
+std::string_view ToString(ModulusBasis basis) noexcept;
+
+/// One line for people, e.g. "compression test (secant or tangent modulus)".
+std::string_view Describe(ModulusBasis basis) noexcept;
+
+/// Reads the catalog spelling (exactly as ToString writes it); empty if unknown.
+std::optional<ModulusBasis> ParseModulusBasis(std::string_view text) noexcept;
+
+/// One catalog entry. Plain data; Catalog validates entries when it loads or adds them.
+struct Material {
+  /// Unique within a catalog, compared ignoring case, e.g. "polystyrene foam 27.6".
+  std::string name;
+  /// A coarse group for filtering: "foam", "elastomer", "padding", "thermoplastic", ...
+  std::string family;
+  /// Young's modulus E [Pa], > 0 and <= 1e12.
+  double youngs_modulus_Pa = 0.0;
+  /// Poisson ratio ν [-], in (-1, 0.5); empty when the source gives none (use
+  /// PoissonRatioOrDefault and say that the default was used).
+  std::optional<double> poisson_ratio;
+  /// Density [kg/m³], > 0; empty when the source gives none.
+  std::optional<double> density_kg_per_m3;
+  /// How E was obtained.
+  ModulusBasis modulus_basis = ModulusBasis::kAsPrinted;
+  /// Where the numbers come from: a URL or a citation.
+  std::string source;
+  /// How E was derived (strain range, representative value of a range, conversions);
+  /// may be empty.
+  std::string note;
+  /// Where the entry was defined, "file:line:column" of its [[material]] header; empty
+  /// for entries added in code.
+  std::string origin;
+};
+
+/// ν of the material, or kDefaultPoissonRatio when it is unknown.
+double PoissonRatioOrDefault(const Material& material) noexcept;
+
+}  // namespace covopt::materials

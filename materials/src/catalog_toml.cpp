@@ -1,0 +1,341 @@
+// Reading catalogs from TOML (toml++, private to this file): the built-in one and users'.
+// Every error names source:line:column, the key, and what is allowed.
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "builtin_catalog.hpp"
+#include "covopt/materials/catalog.hpp"
+#include "text.hpp"
+#include "validation.hpp"
+
+namespace covopt::materials {
+namespace {
+
+using internal::FormatNumber;
+
+constexpr std::array<std::string_view, 8> kKeys{
+    internal::kKeyName,    internal::kKeyFamily, internal::kKeyModulus, internal::kKeyPoisson,
+    internal::kKeyDensity, internal::kKeyBasis,  internal::kKeySource,  internal::kKeyNote};
+constexpr std::string_view kRequiredKeys =
+    "name, family, youngs_modulus_Pa, modulus_basis, source";
+
+/// Keys people are likely to write for ours, beyond typos.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 16> kKeyAliases{{
+    {"e", internal::kKeyModulus},
+    {"modulus", internal::kKeyModulus},
+    {"young", internal::kKeyModulus},
+    {"youngs_modulus", internal::kKeyModulus},
+    {"elastic_modulus", internal::kKeyModulus},
+    {"nu", internal::kKeyPoisson},
+    {"poisson", internal::kKeyPoisson},
+    {"rho", internal::kKeyDensity},
+    {"density", internal::kKeyDensity},
+    {"basis", internal::kKeyBasis},
+    {"reference", internal::kKeySource},
+    {"ref", internal::kKeySource},
+    {"url", internal::kKeySource},
+    {"citation", internal::kKeySource},
+    {"notes", internal::kKeyNote},
+    {"comment", internal::kKeyNote},
+}};
+
+std::string Where(std::string_view source, const toml::source_position& position) {
+  return std::string(source) + ":" + std::to_string(position.line) + ":" +
+         std::to_string(position.column);
+}
+
+std::string_view TypeName(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a floating-point number";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::date: return "a date";
+    case toml::node_type::time: return "a time";
+    case toml::node_type::date_time: return "a date-time";
+    case toml::node_type::none: break;
+  }
+  return "nothing";
+}
+
+/// What the user wrote, for messages: a string in quotes, a number as a number.
+std::string Shown(const toml::node& node) {
+  if (const auto* s = node.as_string()) return "\"" + s->get() + "\"";
+  if (const auto* i = node.as_integer()) return std::to_string(i->get());
+  if (const auto* f = node.as_floating_point()) return FormatNumber(f->get());
+  return std::string(TypeName(node));
+}
+
+std::optional<double> AsNumber(const toml::node& node) {
+  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
+  if (const auto* f = node.as_floating_point()) return f->get();
+  return std::nullopt;
+}
+
+/// The key `unknown` was probably meant to be, if any.
+std::optional<std::string_view> KeySuggestion(std::string_view unknown) {
+  const std::string lower = internal::Lower(unknown);
+  for (const auto& [alias, key] : kKeyAliases) {
+    if (lower == alias) return key;
+  }
+  const std::vector<std::string_view> keys(kKeys.begin(), kKeys.end());
+  if (auto closest = internal::Closest(unknown, keys)) return closest;
+  if (lower.size() >= 3) {
+    for (const std::string_view key : kKeys) {
+      if (internal::Lower(key).find(lower) != std::string::npos) return key;
+    }
+  }
+  return std::nullopt;
+}
+
+std::string KeyList() {
+  std::string list;
+  for (const std::string_view key : kKeys) {
+    if (!list.empty()) list += ", ";
+    list += key;
+  }
+  return list;
+}
+
+/// Reads the [[material]] table number `index` (1-based) of `source`.
+class EntryReader {
+ public:
+  EntryReader(const toml::table& table, std::string_view source, std::size_t index)
+      : table_(table), source_(source), label_("material #" + std::to_string(index)) {}
+
+  Material Read() {
+    RejectUnknownKeys();
+    Material m;
+    m.origin = Where(source_, table_.source().begin);
+    m.name = RequiredText(internal::kKeyName, true);
+    label_ = "material '" + m.name + "'";
+    m.family = RequiredText(internal::kKeyFamily, false);
+    m.youngs_modulus_Pa = ReadModulus();
+    m.poisson_ratio = ReadPoisson();
+    m.density_kg_per_m3 = ReadDensity();
+    m.modulus_basis = ReadBasis();
+    m.source = RequiredText(internal::kKeySource, false);
+    if (const toml::node* note = table_.get(internal::kKeyNote)) {
+      if (!note->is_string()) Fail(*note, internal::kKeyNote, "must be a string, got " + Shown(*note));
+      m.note = note->as_string()->get();
+    }
+    return m;
+  }
+
+ private:
+  [[noreturn]] void Fail(const toml::node& node, std::string_view key, const std::string& problem) {
+    const std::string where = Where(source_, node.source().begin);
+    throw CatalogError(where + ": " + label_ + ": " + std::string(key) + " " + problem, where,
+                       std::string(key));
+  }
+
+  [[noreturn]] void Missing(std::string_view key) {
+    const std::string where = Where(source_, table_.source().begin);
+    throw CatalogError(where + ": " + label_ + " has no '" + std::string(key) +
+                           "' (required keys: " + std::string(kRequiredKeys) + ")",
+                       where, std::string(key));
+  }
+
+  /// The first unknown key in file order is reported.
+  void RejectUnknownKeys() {
+    const toml::key* first = nullptr;
+    for (const auto& [key, node] : table_) {
+      if (std::find(kKeys.begin(), kKeys.end(), key.str()) != kKeys.end()) continue;
+      const auto& at = key.source().begin;
+      if (first == nullptr || at.line < first->source().begin.line ||
+          (at.line == first->source().begin.line && at.column < first->source().begin.column)) {
+        first = &key;
+      }
+    }
+    if (first == nullptr) return;
+    const std::string where = Where(source_, first->source().begin);
+    const auto suggestion = KeySuggestion(first->str());
+    throw CatalogError(
+        where + ": " + label_ + ": unknown key '" + std::string(first->str()) + "'; " +
+            (suggestion ? "did you mean '" + std::string(*suggestion) + "'?"
+                        : "the keys are " + KeyList()),
+        where, std::string(first->str()));
+  }
+
+  std::string RequiredText(std::string_view key, bool is_name) {
+    const toml::node* node = table_.get(key);
+    if (node == nullptr) Missing(key);
+    if (!node->is_string()) Fail(*node, key, "must be a string, got " + Shown(*node));
+    std::string text = node->as_string()->get();
+    if (auto problem = internal::TextProblem(text, is_name)) Fail(*node, key, *problem);
+    return text;
+  }
+
+  double ReadModulus() {
+    const std::string_view key = internal::kKeyModulus;
+    const toml::node* node = table_.get(key);
+    if (node == nullptr) Missing(key);
+    const auto value = AsNumber(*node);
+    if (!value) {
+      Fail(*node, key,
+           "must be a number in Pa, e.g. 27.6e6 for 27.6 MPa (got " + Shown(*node) + ")");
+    }
+    if (auto problem = internal::ModulusProblem(*value)) Fail(*node, key, *problem);
+    return *value;
+  }
+
+  std::optional<double> ReadPoisson() {
+    const std::string_view key = internal::kKeyPoisson;
+    const toml::node* node = table_.get(key);
+    if (node == nullptr) return std::nullopt;
+    if (const auto* text = node->as_string(); text != nullptr && text->get() == "unknown") {
+      return std::nullopt;
+    }
+    const auto value = AsNumber(*node);
+    if (!value) {
+      Fail(*node, key, "must be a number in (-1, 0.5), or \"unknown\" (got " + Shown(*node) + ")");
+    }
+    if (auto problem = internal::PoissonProblem(*value)) Fail(*node, key, *problem);
+    return value;
+  }
+
+  std::optional<double> ReadDensity() {
+    const std::string_view key = internal::kKeyDensity;
+    const toml::node* node = table_.get(key);
+    if (node == nullptr) return std::nullopt;
+    const auto value = AsNumber(*node);
+    if (!value) {
+      Fail(*node, key, "must be a number in kg/m³; leave it out if unknown (got " +
+                           Shown(*node) + ")");
+    }
+    if (auto problem = internal::DensityProblem(*value)) Fail(*node, key, *problem);
+    return value;
+  }
+
+  ModulusBasis ReadBasis() {
+    const std::string_view key = internal::kKeyBasis;
+    const toml::node* node = table_.get(key);
+    if (node == nullptr) Missing(key);
+    std::vector<std::string> names;
+    std::vector<std::string_view> views;
+    for (const ModulusBasis b : {ModulusBasis::kCompressive, ModulusBasis::kTensile,
+                                 ModulusBasis::kBending, ModulusBasis::kFitted,
+                                 ModulusBasis::kAsPrinted, ModulusBasis::kHardness}) {
+      names.emplace_back(ToString(b));
+      views.push_back(ToString(b));
+    }
+    const std::string allowed = "must be " + internal::JoinAlternatives(names, false);
+    if (!node->is_string()) Fail(*node, key, allowed + " (got " + Shown(*node) + ")");
+    const std::string& text = node->as_string()->get();
+    if (const auto basis = ParseModulusBasis(text)) return *basis;
+    const auto near = internal::Closest(text, views);
+    Fail(*node, key,
+         allowed + " (got " + Shown(*node) + ")" +
+             (near ? "; did you mean '" + std::string(*near) + "'?" : std::string()));
+  }
+
+  const toml::table& table_;
+  std::string_view source_;
+  std::string label_;
+};
+
+}  // namespace
+
+Catalog Catalog::FromTomlString(std::string_view toml_text, std::string_view source_name) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, source_name);
+  } catch (const toml::parse_error& e) {
+    const std::string where = Where(source_name, e.source().begin);
+    throw CatalogError(where + ": TOML syntax error: " + std::string(e.description()), where, "");
+  }
+
+  for (const auto& [key, node] : root) {
+    if (key.str() == "material") continue;
+    const std::string where = Where(source_name, key.source().begin);
+    std::string hint;
+    if (std::find(kKeys.begin(), kKeys.end(), key.str()) != kKeys.end()) {
+      hint = "; put it under a [[material]] header";
+    } else if (internal::Closest(key.str(), {"material"}) ||
+               internal::Lower(key.str()).find("material") != std::string::npos) {
+      hint = "; did you mean 'material' (each entry starts with [[material]])?";
+    } else {
+      hint = "; a catalog is a list of [[material]] tables";
+    }
+    throw CatalogError(where + ": unknown top-level key '" + std::string(key.str()) + "'" + hint,
+                       where, std::string(key.str()));
+  }
+
+  Catalog catalog;
+  const toml::node* entries = root.get("material");
+  if (entries == nullptr) return catalog;  // an empty catalog
+  const std::string where = Where(source_name, entries->source().begin);
+  if (entries->is_table()) {
+    throw CatalogError(where + ": 'material' must be a list of tables: write [[material]] "
+                               "(double brackets), not [material]",
+                       where, "material");
+  }
+  if (!entries->is_array()) {
+    throw CatalogError(where + ": 'material' must be a list of [[material]] tables, got " +
+                           std::string(TypeName(*entries)),
+                       where, "material");
+  }
+
+  std::unordered_map<std::string, const Material*> seen;  // lower-case name -> entry
+  std::size_t index = 0;
+  for (const toml::node& entry : *entries->as_array()) {
+    ++index;
+    if (!entry.is_table()) {
+      const std::string at = Where(source_name, entry.source().begin);
+      throw CatalogError(at + ": material #" + std::to_string(index) +
+                             " must be a table ([[material]]), got " +
+                             std::string(TypeName(entry)),
+                         at, "material");
+    }
+    Material material = EntryReader(*entry.as_table(), source_name, index).Read();
+    if (const Material* existing = catalog.Find(material.name)) {
+      const toml::node* name_node = entry.as_table()->get(internal::kKeyName);
+      const std::string at = Where(source_name, name_node->source().begin);
+      throw CatalogError(at + ": duplicate material name '" + material.name +
+                             "': already defined at " + existing->origin +
+                             (existing->name != material.name ? " as '" + existing->name + "'"
+                                                              : std::string()) +
+                             " (names are compared ignoring case)",
+                         at, std::string(internal::kKeyName));
+    }
+    catalog.materials_.push_back(std::move(material));
+  }
+  return catalog;
+}
+
+Catalog Catalog::FromTomlFile(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw CatalogError("cannot read catalog file '" + name + "': it is a directory", name, "");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw CatalogError("cannot read catalog file '" + name + "': " + std::strerror(errno), name,
+                       "");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw CatalogError("cannot read catalog file '" + name + "'", name, "");
+  return FromTomlString(text.str(), name);
+}
+
+const Catalog& Catalog::BuiltIn() {
+  static const Catalog built_in =
+      FromTomlString(internal::kBuiltInCatalogToml, internal::kBuiltInCatalogName);
+  return built_in;
+}
+
+}  // namespace covopt::materials

@@ -1,0 +1,50 @@
+#include "covopt/materials/material.hpp"
+
+#include <array>
+#include <utility>
+
+namespace covopt::materials {
+namespace {
+
+constexpr std::array<std::pair<ModulusBasis, std::string_view>, 6> kBasisNames{{
+    {ModulusBasis::kCompressive, "compressive"},
+    {ModulusBasis::kTensile, "tensile"},
+    {ModulusBasis::kBending, "bending"},
+    {ModulusBasis::kFitted, "fitted"},
+    {ModulusBasis::kAsPrinted, "as-printed"},
+    {ModulusBasis::kHardness, "hardness"},
+}};
+
+}  // namespace
+
+std::string_view ToString(ModulusBasis basis) noexcept {
+  for (const auto& [value, name] : kBasisNames) {
+    if (value == basis) return name;
+  }
+  return "unknown";
+}
+
+std::string_view Describe(ModulusBasis basis) noexcept {
+  switch (basis) {
+    case ModulusBasis::kCompressive: return "compression test (secant or tangent modulus)";
+    case ModulusBasis::kTensile: return "tension test";
+    case ModulusBasis::kBending: return "flexural (bending) test";
+    case ModulusBasis::kFitted: return "fitted: identified from measured impact forces";
+    case ModulusBasis::kAsPrinted: return "as printed: the source does not say how E was measured";
+    case ModulusBasis::kHardness: return "estimated from Shore hardness by an empirical correlation";
+  }
+  return "unknown";
+}
+
+std::optional<ModulusBasis> ParseModulusBasis(std::string_view text) noexcept {
+  for (const auto& [value, name] : kBasisNames) {
+    if (name == text) return value;
+  }
+  return std::nullopt;
+}
+
+double PoissonRatioOrDefault(const Material& material) noexcept {
+  return material.poisson_ratio.value_or(kDefaultPoissonRatio);
+}
+
+}  // namespace covopt::materials

@@ -1,0 +1,63 @@
+#include "validation.hpp"
+
+#include <cmath>
+
+#include "text.hpp"
+
+namespace covopt::materials::internal {
+
+std::optional<std::string> ModulusProblem(double youngs_modulus_Pa) {
+  if (std::isfinite(youngs_modulus_Pa) && youngs_modulus_Pa > 0.0 &&
+      youngs_modulus_Pa <= kMaxModulus_Pa) {
+    return std::nullopt;
+  }
+  return "must be > 0 and <= 1e12 (Pa) (got " + FormatNumber(youngs_modulus_Pa) + ")";
+}
+
+std::optional<std::string> PoissonProblem(double poisson_ratio) {
+  if (std::isfinite(poisson_ratio) && poisson_ratio > -1.0 && poisson_ratio < 0.5) {
+    return std::nullopt;
+  }
+  return "must be in (-1, 0.5), or \"unknown\" (got " + FormatNumber(poisson_ratio) + ")";
+}
+
+std::optional<std::string> DensityProblem(double density_kg_per_m3) {
+  if (std::isfinite(density_kg_per_m3) && density_kg_per_m3 > 0.0 &&
+      density_kg_per_m3 <= kMaxDensity_kg_per_m3) {
+    return std::nullopt;
+  }
+  return "must be > 0 and <= 1e5 (kg/m³) (got " + FormatNumber(density_kg_per_m3) + ")";
+}
+
+std::optional<std::string> TextProblem(std::string_view text, bool is_name) {
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    return std::string("must not be empty");
+  }
+  if (is_name && (text.front() == ' ' || text.back() == ' ' || text.front() == '\t' ||
+                  text.back() == '\t')) {
+    return "must not start or end with a space (got \"" + std::string(text) + "\")";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::pair<std::string, std::string>> FirstProblem(const Material& m) {
+  using Problem = std::pair<std::string, std::string>;
+  if (auto p = TextProblem(m.name, true)) return Problem(kKeyName, *p);
+  if (auto p = TextProblem(m.family, false)) return Problem(kKeyFamily, *p);
+  if (auto p = ModulusProblem(m.youngs_modulus_Pa)) return Problem(kKeyModulus, *p);
+  if (m.poisson_ratio) {
+    if (auto p = PoissonProblem(*m.poisson_ratio)) return Problem(kKeyPoisson, *p);
+  }
+  if (m.density_kg_per_m3) {
+    if (auto p = DensityProblem(*m.density_kg_per_m3)) return Problem(kKeyDensity, *p);
+  }
+  if (ToString(m.modulus_basis) == "unknown") {
+    return Problem(kKeyBasis, "is not a known basis");
+  }
+  if (auto p = TextProblem(m.source, false)) return Problem(kKeySource, *p);
+  return std::nullopt;
+}
+
+std::string Describe(const Material& material) { return "material '" + material.name + "'"; }
+
+}  // namespace covopt::materials::internal

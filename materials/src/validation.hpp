@@ -1,0 +1,42 @@
+#pragma once
+// The value rules of a catalog entry (private), shared by the TOML loader (which knows
+// where each value is) and Catalog::Add(Material) (which does not).
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "covopt/materials/material.hpp"
+
+namespace covopt::materials::internal {
+
+inline constexpr double kMaxModulus_Pa = 1e12;
+inline constexpr double kMaxDensity_kg_per_m3 = 1e5;
+
+/// The keys of an entry, in the order of the file format's documentation.
+inline constexpr std::string_view kKeyName = "name";
+inline constexpr std::string_view kKeyFamily = "family";
+inline constexpr std::string_view kKeyModulus = "youngs_modulus_Pa";
+inline constexpr std::string_view kKeyPoisson = "poisson_ratio";
+inline constexpr std::string_view kKeyDensity = "density_kg_per_m3";
+inline constexpr std::string_view kKeyBasis = "modulus_basis";
+inline constexpr std::string_view kKeySource = "source";
+inline constexpr std::string_view kKeyNote = "note";
+
+/// What is wrong with a value, phrased to follow the key ("must be > 0 ... (got -1)"), or
+/// nothing if it is fine.
+std::optional<std::string> ModulusProblem(double youngs_modulus_Pa);
+std::optional<std::string> PoissonProblem(double poisson_ratio);
+std::optional<std::string> DensityProblem(double density_kg_per_m3);
+/// Required text (name, family, source): not empty or blank; a name must also not start
+/// or end with a space, since names are looked up exactly (ignoring case).
+std::optional<std::string> TextProblem(std::string_view text, bool is_name);
+
+/// The first rule a whole entry breaks, as {key, problem}; nothing if it is valid.
+std::optional<std::pair<std::string, std::string>> FirstProblem(const Material& material);
+
+/// "material 'NAME'" for messages.
+std::string Describe(const Material& material);
+
+}  // namespace covopt::materials::internal

@@ -1,0 +1,312 @@
+// Catalog files that are wrong. Every error must be a CatalogError whose message starts
+// with "file:line:column:" pointing at the offending value (or key, or [[material]] header
+// for a missing key), names the key, and says what is allowed. These tests check malformed
+// TOML, unknown keys (with "did you mean"), missing required keys, wrong types, values out
+// of range (E <= 0, E too large or not finite, nu >= 0.5 or <= -1, density <= 0), unknown
+// modulus bases, duplicate names within a file and across catalogs (both places named),
+// files that cannot be read, and entries added in code.
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <catch2/catch.hpp>
+#include <unistd.h>
+
+#include "covopt/materials.hpp"
+
+using covopt::materials::Catalog;
+using covopt::materials::CatalogError;
+using covopt::materials::Material;
+using covopt::materials::ModulusBasis;
+using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
+
+namespace {
+
+/// A valid entry, line by line; tests replace or drop lines.
+const std::string kGood = R"([[material]]
+name = "soft foam"
+family = "foam"
+youngs_modulus_Pa = 2.5e6
+poisson_ratio = 0.3
+density_kg_per_m3 = 30
+modulus_basis = "compressive"
+source = "a datasheet"
+note = "secant over 0-10 % strain"
+)";
+
+/// The CatalogError that loading `text` as "mine.toml" throws; fails the test if none.
+CatalogError ErrorFor(const std::string& text) {
+  try {
+    Catalog::FromTomlString(text, "mine.toml");
+  } catch (const CatalogError& e) {
+    return e;
+  }
+  FAIL("no CatalogError for:\n" << text);
+  throw;  // unreachable
+}
+
+/// kGood with the line starting with `key =` replaced by `line` (dropped if empty).
+std::string With(const std::string& key, const std::string& line) {
+  std::string text = kGood;
+  const auto at = text.find("\n" + key + " = ");
+  REQUIRE(at != std::string::npos);
+  const auto end = text.find('\n', at + 1);
+  text.replace(at + 1, end - at, line.empty() ? "" : line + "\n");
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("the valid sample loads with every field", "[errors]") {
+  const Catalog catalog = Catalog::FromTomlString(kGood, "mine.toml");
+  REQUIRE(catalog.size() == 1);
+  const Material& m = catalog.materials()[0];
+  CHECK(m.name == "soft foam");
+  CHECK(m.family == "foam");
+  CHECK(m.youngs_modulus_Pa == 2.5e6);
+  CHECK(m.poisson_ratio == 0.3);
+  CHECK(m.density_kg_per_m3 == 30.0);
+  CHECK(m.modulus_basis == ModulusBasis::kCompressive);
+  CHECK(m.source == "a datasheet");
+  CHECK(m.note == "secant over 0-10 % strain");
+  CHECK(m.origin == "mine.toml:1:1");
+}
+
+TEST_CASE("an empty file is an empty catalog", "[errors]") {
+  CHECK(Catalog::FromTomlString("", "mine.toml").empty());
+  CHECK(Catalog::FromTomlString("# nothing yet\n", "mine.toml").empty());
+}
+
+TEST_CASE("malformed TOML gives file, line and column", "[errors]") {
+  const CatalogError e = ErrorFor("[[material]]\nname = \"a\nfamily = \"foam\"\n");
+  CHECK_THAT(e.what(), StartsWith("mine.toml:2:") && Contains("TOML syntax error"));
+  CHECK(e.location().rfind("mine.toml:2:", 0) == 0);
+  CHECK(e.key().empty());
+
+  const CatalogError unclosed = ErrorFor(kGood + "[[material]\n");
+  CHECK_THAT(unclosed.what(), StartsWith("mine.toml:10:") && Contains("TOML syntax error"));
+}
+
+TEST_CASE("an unknown key is named with its position and a suggestion", "[errors]") {
+  SECTION("a typo") {
+    const CatalogError e = ErrorFor(With("density_kg_per_m3", "density_kg_per_m = 30"));
+    CHECK_THAT(e.what(), StartsWith("mine.toml:6:1: material #1: unknown key 'density_kg_per_m'") &&
+                             Contains("did you mean 'density_kg_per_m3'?"));
+    CHECK(e.key() == "density_kg_per_m");
+  }
+  SECTION("a common other name") {
+    CHECK_THAT(ErrorFor(With("youngs_modulus_Pa", "E = 2.5e6")).what(),
+               StartsWith("mine.toml:4:1:") && Contains("unknown key 'E'") &&
+                   Contains("did you mean 'youngs_modulus_Pa'?"));
+    CHECK_THAT(ErrorFor(With("poisson_ratio", "nu = 0.3")).what(),
+               Contains("did you mean 'poisson_ratio'?"));
+    CHECK_THAT(ErrorFor(With("density_kg_per_m3", "density = 30")).what(),
+               Contains("did you mean 'density_kg_per_m3'?"));
+  }
+  SECTION("nothing close: the keys are listed") {
+    CHECK_THAT(ErrorFor(kGood + "colour = \"blue\"\n").what(),
+               StartsWith("mine.toml:10:1:") && Contains("unknown key 'colour'") &&
+                   Contains("the keys are name, family, youngs_modulus_Pa"));
+  }
+  SECTION("the first unknown key in the file is reported") {
+    CHECK_THAT(ErrorFor(With("name", "zzz = 1\nname = \"x\"") + "aaa = 2\n").what(),
+               Contains("unknown key 'zzz'"));
+  }
+  SECTION("a top-level key") {
+    CHECK_THAT(ErrorFor("materials = 1\n").what(),
+               StartsWith("mine.toml:1:1: unknown top-level key 'materials'") &&
+                   Contains("did you mean 'material'"));
+    CHECK_THAT(ErrorFor("name = \"x\"\n" + kGood).what(),
+               StartsWith("mine.toml:1:1:") && Contains("put it under a [[material]] header"));
+  }
+  SECTION("a single [material] table instead of [[material]]") {
+    CHECK_THAT(ErrorFor("[material]\nname = \"x\"\n").what(),
+               StartsWith("mine.toml:1:") && Contains("write [[material]]"));
+  }
+}
+
+TEST_CASE("a missing required key points at the entry's header", "[errors]") {
+  for (const char* key : {"name", "family", "youngs_modulus_Pa", "modulus_basis", "source"}) {
+    CAPTURE(key);
+    const CatalogError e = ErrorFor("\n\n" + With(key, ""));
+    CHECK_THAT(e.what(), StartsWith("mine.toml:3:1: material ") &&
+                             Contains(std::string("has no '") + key + "'") &&
+                             Contains("required keys: name, family, youngs_modulus_Pa"));
+    CHECK(e.key() == key);
+  }
+  // Once the name is known, the message uses it.
+  CHECK_THAT(ErrorFor(With("source", "")).what(), Contains("material 'soft foam' has no 'source'"));
+  // Optional keys may be left out: nu and density are then unknown.
+  const Catalog catalog = Catalog::FromTomlString(With("note", ""), "mine.toml");
+  CHECK(catalog.materials()[0].note.empty());
+  const Material m = Catalog::FromTomlString(With("poisson_ratio", ""), "mine.toml").materials()[0];
+  CHECK_FALSE(m.poisson_ratio.has_value());
+  CHECK_FALSE(Catalog::FromTomlString(With("density_kg_per_m3", ""), "mine.toml")
+                  .materials()[0]
+                  .density_kg_per_m3.has_value());
+}
+
+TEST_CASE("poisson_ratio may be \"unknown\"", "[errors]") {
+  const Catalog catalog =
+      Catalog::FromTomlString(With("poisson_ratio", "poisson_ratio = \"unknown\""), "mine.toml");
+  CHECK_FALSE(catalog.materials()[0].poisson_ratio.has_value());
+  CHECK_THAT(ErrorFor(With("poisson_ratio", "poisson_ratio = \"unknwn\"")).what(),
+             StartsWith("mine.toml:5:17: material 'soft foam': poisson_ratio") &&
+                 Contains("or \"unknown\""));
+}
+
+TEST_CASE("values out of range are errors at the value, with the allowed range", "[errors]") {
+  struct Case {
+    const char* key;
+    const char* line;
+    const char* expected;
+  };
+  const auto c = GENERATE(values<Case>({
+      {"youngs_modulus_Pa", "youngs_modulus_Pa = 0", "mine.toml:4:21: material 'soft foam': youngs_modulus_Pa must be > 0 and <= 1e12 (Pa) (got 0)"},
+      {"youngs_modulus_Pa", "youngs_modulus_Pa = -2.5e6", "youngs_modulus_Pa must be > 0 and <= 1e12 (Pa) (got -2500000)"},
+      {"youngs_modulus_Pa", "youngs_modulus_Pa = 2e12", "(got 2e+12)"},
+      {"youngs_modulus_Pa", "youngs_modulus_Pa = inf", "youngs_modulus_Pa must be > 0"},
+      {"youngs_modulus_Pa", "youngs_modulus_Pa = nan", "youngs_modulus_Pa must be > 0"},
+      {"poisson_ratio", "poisson_ratio = 0.5", "mine.toml:5:17: material 'soft foam': poisson_ratio must be in (-1, 0.5), or \"unknown\" (got 0.5)"},
+      {"poisson_ratio", "poisson_ratio = 0.7", "poisson_ratio must be in (-1, 0.5)"},
+      {"poisson_ratio", "poisson_ratio = -1", "poisson_ratio must be in (-1, 0.5), or \"unknown\" (got -1)"},
+      {"density_kg_per_m3", "density_kg_per_m3 = 0", "mine.toml:6:21: material 'soft foam': density_kg_per_m3 must be > 0 and <= 1e5 (kg/m³) (got 0)"},
+      {"density_kg_per_m3", "density_kg_per_m3 = -30", "density_kg_per_m3 must be > 0"},
+  }));
+  CAPTURE(c.line);
+  const CatalogError e = ErrorFor(With(c.key, c.line));
+  CHECK_THAT(e.what(), Contains(c.expected));
+  CHECK_THAT(e.what(), StartsWith("mine.toml:"));
+  CHECK(e.key() == c.key);
+}
+
+TEST_CASE("values of the wrong type are errors that show what to write", "[errors]") {
+  CHECK_THAT(ErrorFor(With("youngs_modulus_Pa", "youngs_modulus_Pa = \"2.5 MPa\"")).what(),
+             StartsWith("mine.toml:4:21:") &&
+                 Contains("youngs_modulus_Pa must be a number in Pa, e.g. 27.6e6 for 27.6 MPa "
+                          "(got \"2.5 MPa\")"));
+  CHECK_THAT(ErrorFor(With("name", "name = 42")).what(),
+             StartsWith("mine.toml:2:8: material #1: name must be a string, got 42"));
+  CHECK_THAT(ErrorFor(With("name", "name = \"\"")).what(), Contains("name must not be empty"));
+  CHECK_THAT(ErrorFor(With("name", "name = \" soft\"")).what(),
+             Contains("must not start or end with a space"));
+  CHECK_THAT(ErrorFor(With("family", "family = \"  \"")).what(),
+             Contains("family must not be empty"));
+  CHECK_THAT(ErrorFor(With("density_kg_per_m3", "density_kg_per_m3 = \"unknown\"")).what(),
+             Contains("density_kg_per_m3 must be a number in kg/m³; leave it out if unknown"));
+  CHECK_THAT(ErrorFor(With("note", "note = 3")).what(), Contains("note must be a string"));
+  CHECK_THAT(ErrorFor("material = 3\n").what(),
+             StartsWith("mine.toml:1:") && Contains("must be a list of [[material]] tables"));
+  CHECK_THAT(ErrorFor("material = [1]\n").what(),
+             Contains("material #1 must be a table"));
+}
+
+TEST_CASE("an unknown modulus basis lists the bases and suggests one", "[errors]") {
+  const CatalogError e = ErrorFor(With("modulus_basis", "modulus_basis = \"compresive\""));
+  CHECK_THAT(e.what(),
+             StartsWith("mine.toml:7:17: material 'soft foam': modulus_basis must be "
+                        "compressive, tensile, bending, fitted, as-printed or hardness "
+                        "(got \"compresive\"); did you mean 'compressive'?"));
+  CHECK(e.key() == "modulus_basis");
+}
+
+TEST_CASE("duplicate names in one file are errors naming both places", "[errors]") {
+  const std::string second = With("name", "name = \"Soft Foam\"");
+  const CatalogError e = ErrorFor(kGood + "\n" + second);
+  CHECK_THAT(e.what(), StartsWith("mine.toml:12:8: duplicate material name 'Soft Foam': "
+                                  "already defined at mine.toml:1:1 as 'soft foam'") &&
+                           Contains("ignoring case"));
+  CHECK(e.key() == "name");
+}
+
+TEST_CASE("adding a catalog with a name already present names both places", "[errors]") {
+  Catalog catalog = Catalog::BuiltIn();
+  const std::size_t before = catalog.size();
+  const Catalog mine = Catalog::FromTomlString(
+      kGood + "\n" + With("name", "name = \"EPS GEOFOAM EPS15\""), "mine.toml");
+  try {
+    catalog.Add(mine);
+    FAIL("no error");
+  } catch (const CatalogError& e) {
+    CHECK_THAT(e.what(), StartsWith("mine.toml:11:1: duplicate material name 'EPS GEOFOAM EPS15'") &&
+                             Contains("already defined at built-in catalog.toml:") &&
+                             Contains("as 'EPS geofoam EPS15'"));
+  }
+  CHECK(catalog.size() == before);  // all or nothing
+  catalog.Add(Catalog::FromTomlString(kGood, "mine.toml"));
+  CHECK(catalog.size() == before + 1);
+  CHECK(catalog.Find("soft foam") != nullptr);
+}
+
+TEST_CASE("entries added in code are validated like file entries", "[errors]") {
+  Catalog catalog;
+  Material m;
+  m.name = "gel pad";
+  m.family = "elastomer";
+  m.youngs_modulus_Pa = 0.2e6;
+  m.modulus_basis = ModulusBasis::kTensile;
+  m.source = "own measurement";
+  catalog.Add(m);
+  CHECK(catalog.size() == 1);
+
+  const auto error_for = [&](Material bad) -> std::string {
+    try {
+      Catalog().Add(std::move(bad));
+    } catch (const CatalogError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  Material bad = m;
+  bad.poisson_ratio = 0.5;
+  CHECK_THAT(error_for(bad), StartsWith("material 'gel pad': poisson_ratio must be in (-1, 0.5)"));
+  bad = m;
+  bad.youngs_modulus_Pa = -1.0;
+  CHECK_THAT(error_for(bad), Contains("youngs_modulus_Pa must be > 0"));
+  bad = m;
+  bad.source.clear();
+  CHECK_THAT(error_for(bad), Contains("source must not be empty"));
+  bad = m;
+  bad.name = "";
+  CHECK_THAT(error_for(bad), StartsWith("material: name must not be empty"));
+
+  bad = m;
+  bad.name = "GEL PAD";
+  try {
+    catalog.Add(bad);
+    FAIL("no error");
+  } catch (const CatalogError& e) {
+    CHECK_THAT(e.what(), StartsWith("duplicate material name 'GEL PAD': already defined at "
+                                    "(added in code) as 'gel pad'"));
+  }
+}
+
+TEST_CASE("a catalog file that cannot be read is an error naming it", "[errors]") {
+  const auto missing = std::filesystem::temp_directory_path() / "covopt-no-such-catalog.toml";
+  try {
+    Catalog::FromTomlFile(missing);
+    FAIL("no error");
+  } catch (const CatalogError& e) {
+    CHECK_THAT(e.what(), StartsWith("cannot read catalog file '" + missing.string() + "'") &&
+                             Contains("No such file"));
+  }
+  try {
+    Catalog::FromTomlFile(std::filesystem::temp_directory_path());
+    FAIL("no error");
+  } catch (const CatalogError& e) {
+    CHECK_THAT(e.what(), Contains("it is a directory"));
+  }
+  // A real file names itself in every location.
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("covopt-test-catalog-" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(path) << With("poisson_ratio", "poisson_ratio = 0.6");
+  try {
+    Catalog::FromTomlFile(path);
+    FAIL("no error");
+  } catch (const CatalogError& e) {
+    CHECK_THAT(e.what(), StartsWith(path.string() + ":5:17: "));
+  }
+  std::filesystem::remove(path);
+}
