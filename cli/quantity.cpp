@@ -46,6 +46,12 @@ constexpr std::array kUnits{
     Unit{"N/mm2", QuantityKind::kModulus, 1e6, true},
     Unit{"N/m\u00b2", QuantityKind::kModulus, 1.0, false},
     Unit{"N/mm\u00b2", QuantityKind::kModulus, 1e6, false},
+    Unit{"kg/m3", QuantityKind::kDensity, 1.0, true},
+    Unit{"g/cm3", QuantityKind::kDensity, 1e3, true},
+    Unit{"kg/m\u00b3", QuantityKind::kDensity, 1.0, false},
+    Unit{"kg/m^3", QuantityKind::kDensity, 1.0, false},
+    Unit{"g/cm\u00b3", QuantityKind::kDensity, 1e3, false},
+    Unit{"g/cm^3", QuantityKind::kDensity, 1e3, false},
 };
 
 constexpr std::string_view kSpaces = " \t";
@@ -80,6 +86,7 @@ std::string_view Example(QuantityKind kind) {
     case QuantityKind::kLength: return "15mm";
     case QuantityKind::kSpeed: return "2m/s";
     case QuantityKind::kModulus: return "27.6MPa";
+    case QuantityKind::kDensity: return "50kg/m3";
     case QuantityKind::kDimensionless: return "0.3";
   }
   return "";
@@ -103,6 +110,7 @@ std::string_view Describe(QuantityKind kind) noexcept {
     case QuantityKind::kLength: return "a length";
     case QuantityKind::kSpeed: return "a speed";
     case QuantityKind::kModulus: return "a modulus or pressure";
+    case QuantityKind::kDensity: return "a density";
     case QuantityKind::kDimensionless: return "dimensionless";
   }
   return "unknown";
@@ -137,6 +145,7 @@ std::string FormatQuantity(double si_value, QuantityKind kind) {
       if (magnitude >= 1e3) return fmt::format("{:g} kPa", si_value / 1e3);
       return fmt::format("{:g} Pa", si_value);
     }
+    case QuantityKind::kDensity: return fmt::format("{:g} kg/m³", si_value);
     case QuantityKind::kDimensionless: return fmt::format("{:g}", si_value);
   }
   return fmt::format("{:g}", si_value);

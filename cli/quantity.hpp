@@ -11,6 +11,7 @@
 ///     length     m, cm, mm, um, µm
 ///     speed      m/s, mm/s, cm/s, km/h
 ///     modulus    Pa, kPa, MPa, GPa, N/m2, N/mm2  (also N/m², N/mm²)
+///     density    kg/m3, g/cm3  (also kg/m³, kg/m^3, g/cm³, g/cm^3)
 ///     dimensionless (Poisson ratios, tolerances): a plain number
 ///
 /// Non-finite numbers (nan, inf, overflow) are rejected here; range checks are the
@@ -22,7 +23,7 @@
 namespace covopt::cli {
 
 /// What a value measures; decides which units fit.
-enum class QuantityKind { kMass, kLength, kSpeed, kModulus, kDimensionless };
+enum class QuantityKind { kMass, kLength, kSpeed, kModulus, kDensity, kDimensionless };
 
 /// How to read one value.
 struct QuantitySpec {
@@ -37,14 +38,14 @@ struct QuantitySpec {
 ///         "--speed: unit 'kg' is not a speed; use m/s, mm/s, cm/s or km/h (got '2kg')".
 double ParseQuantity(std::string_view text, const QuantitySpec& spec, std::string_view name);
 
-/// "a mass", "a length", "a speed", "a modulus or pressure", "dimensionless".
+/// "a mass", "a length", "a speed", "a modulus or pressure", "a density", "dimensionless".
 std::string_view Describe(QuantityKind kind) noexcept;
 
 /// The units that fit a kind, for messages and help: "kg, g or t"; "" for dimensionless.
 std::string UnitList(QuantityKind kind);
 
 /// An SI value for people, in a form ParseQuantity reads back (6 significant digits):
-/// "10 kg", "fixed", "15 mm", "flat", "2 m/s", "27.6 MPa", "6.5 GPa", "0.3".
+/// "10 kg", "fixed", "15 mm", "flat", "2 m/s", "27.6 MPa", "6.5 GPa", "50 kg/m³", "0.3".
 /// Lengths are shown in mm, moduli in the largest of Pa/kPa/MPa/GPa not above the value.
 std::string FormatQuantity(double si_value, QuantityKind kind);
 

@@ -27,6 +27,7 @@ std::string_view TypeName(QuantityKind kind) {
     case QuantityKind::kLength: return "LENGTH";
     case QuantityKind::kSpeed: return "SPEED";
     case QuantityKind::kModulus: return "MODULUS";
+    case QuantityKind::kDensity: return "DENSITY";
     case QuantityKind::kDimensionless: return "RATIO";
   }
   return "VALUE";

@@ -28,6 +28,7 @@ constexpr QuantitySpec kRadius{QuantityKind::kLength, false, true};
 constexpr QuantitySpec kSpeed{QuantityKind::kSpeed};
 constexpr QuantitySpec kModulus{QuantityKind::kModulus};
 constexpr QuantitySpec kRatio{QuantityKind::kDimensionless};
+constexpr QuantitySpec kDensity{QuantityKind::kDensity};
 
 /// The message ParseQuantity throws for `text`, or "" if it accepts it.
 std::string ErrorFor(const std::string& text, const QuantitySpec& spec,
@@ -69,6 +70,12 @@ TEST_CASE("every unit of every kind converts to SI", "[quantity]") {
       {"5N/m2", kModulus, 5.0},
       {"2N/mm2", kModulus, 2e6},
       {"2N/mm\u00b2", kModulus, 2e6},
+      {"50kg/m3", kDensity, 50.0},
+      {"50 kg/m\u00b3", kDensity, 50.0},
+      {"50kg/m^3", kDensity, 50.0},
+      {"1.05g/cm3", kDensity, 1050.0},
+      {"1.05g/cm\u00b3", kDensity, 1050.0},
+      {"0.03g/cm^3", kDensity, 30.0},
       {"0.3", kRatio, 0.3},
   }));
   CAPTURE(c.text);
@@ -116,6 +123,10 @@ TEST_CASE("a unit of the wrong kind names the kind and lists the units that fit"
   CHECK_THAT(ErrorFor("27.6mm", kModulus, "--covering-modulus"),
              Contains("is not a modulus or pressure") &&
                  Contains("Pa, kPa, MPa, GPa, N/m2 or N/mm2"));
+  CHECK(ErrorFor("50kg", kDensity, "--density") ==
+        "--density: unit 'kg' is not a density; use kg/m3 or g/cm3 (got '50kg')");
+  CHECK_THAT(ErrorFor("50kg/m3", kModulus, "--modulus"), Contains("is not a modulus or pressure"));
+  CHECK_THAT(ErrorFor("50KG/M3", kDensity, "--density"), Contains("did you mean 'kg/m3'?"));
   CHECK_THAT(ErrorFor("0.3MPa", kRatio, "--robot-poisson"),
              Contains("--robot-poisson") && Contains("dimensionless") &&
                  Contains("plain number"));
@@ -165,9 +176,11 @@ TEST_CASE("formatted quantities read back to the same value", "[quantity]") {
   CHECK(FormatQuantity(0.015, QuantityKind::kLength) == "15 mm");
   CHECK(FormatQuantity(27.6e6, QuantityKind::kModulus) == "27.6 MPa");
   CHECK(FormatQuantity(70e9, QuantityKind::kModulus) == "70 GPa");
+  CHECK(FormatQuantity(38.4, QuantityKind::kDensity) == "38.4 kg/m³");
   for (const auto& [value, spec] : {std::pair{4.5, kMass}, std::pair{0.003, kLength},
                                     std::pair{2.0, kSpeed}, std::pair{16.7e6, kModulus},
-                                    std::pair{0.42, kRatio}, std::pair{covopt::kFlat, kRadius}}) {
+                                    std::pair{0.42, kRatio}, std::pair{covopt::kFlat, kRadius},
+                                    std::pair{28.8, kDensity}}) {
     CHECK(ParseQuantity(FormatQuantity(value, spec.kind), spec, "x") == Approx(value));
   }
 }
