@@ -29,8 +29,8 @@ std::string_view Describe(ModulusBasis basis) noexcept {
     case ModulusBasis::kCompressive: return "compression test (secant or tangent modulus)";
     case ModulusBasis::kTensile: return "tension test";
     case ModulusBasis::kBending: return "flexural (bending) test";
-    case ModulusBasis::kFitted: return "fitted: identified from measured impact forces";
-    case ModulusBasis::kAsPrinted: return "as printed: the source does not say how E was measured";
+    case ModulusBasis::kFitted: return "identified by fitting an impact model to measured forces";
+    case ModulusBasis::kAsPrinted: return "stated by the source without its test method";
     case ModulusBasis::kHardness: return "estimated from Shore hardness by an empirical correlation";
   }
   return "unknown";

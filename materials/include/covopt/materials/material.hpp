@@ -33,7 +33,7 @@ enum class ModulusBasis {
 /// "hardness".
 std::string_view ToString(ModulusBasis basis) noexcept;
 
-/// One line for people, e.g. "compression test (secant or tangent modulus)".
+/// What the basis means, for people, e.g. "compression test (secant or tangent modulus)".
 std::string_view Describe(ModulusBasis basis) noexcept;
 
 /// Reads the catalog spelling (exactly as ToString writes it); empty if unknown.
