@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "materials_command.hpp"
 #include "simulate.hpp"
 
 #ifndef COVOPT_VERSION
@@ -27,6 +28,8 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
 
   SimulateOptions simulate_options;
   CLI::App* simulate = SetupSimulate(app, simulate_options);
+  MaterialsOptions materials_options;
+  CLI::App* materials = SetupMaterials(app, materials_options);
 
   try {
     app.parse(argc, argv);
@@ -43,6 +46,7 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
 
   try {
     if (simulate->parsed()) return RunSimulate(simulate_options, out, err);
+    if (materials->parsed()) return RunMaterials(materials_options, out, err);
   } catch (const std::exception& e) {
     fmt::print(err, "covopt: internal error: {}\n", e.what());
     return 1;

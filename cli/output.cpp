@@ -65,8 +65,12 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
   // Scene: two lines.
   const std::string covering =
       s.covering.thickness_m > 0.0
-          ? fmt::format("covering {}, E {}, ν {:g}", Length(s.covering.thickness_m),
-                        Modulus(s.covering.youngs_modulus_Pa), s.covering.poisson_ratio)
+          ? fmt::format("covering {}{}, E {}, ν {:g}{}", Length(s.covering.thickness_m),
+                        report.covering_material
+                            ? fmt::format(" '{}'", *report.covering_material)
+                            : std::string(),
+                        Modulus(s.covering.youngs_modulus_Pa), s.covering.poisson_ratio,
+                        report.covering_poisson_assumed ? " (assumed)" : "")
           : std::string("no covering");
   fmt::print(out, "Scene   robot {} at {:g} m/s, R {}, E {}, ν {:g}; {}\n", Mass(s.robot.mass_kg),
              s.robot.speed_m_per_s, Length(s.robot.radius_m), Modulus(s.robot.youngs_modulus_Pa),
@@ -212,6 +216,8 @@ Json ToJson(const SimulationReport& report) {
   }
   j["solver"] = std::move(solver);
   j["scene"] = SceneToJson(report.scene);
+  j["scene"]["covering"]["material"] =
+      report.covering_material ? Json(*report.covering_material) : Json(nullptr);
   j["warnings"] = r.warnings;
   return j;
 }

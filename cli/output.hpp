@@ -26,6 +26,10 @@ struct SimulationReport {
   InjuryAssessment assessment;   ///< Assess(result.peaks)
   /// The integrator's options when the time path ran; empty for the exact path.
   std::optional<TimeIntegrationOptions> time_options;
+  /// The catalog material of the covering (simulate --material), if any.
+  std::optional<std::string> covering_material;
+  /// The material's ν is unknown in the catalog and the default was used.
+  bool covering_poisson_assumed = false;
 };
 
 /// The scene in one short line, for titles: "10 kg at 2 m/s, R 15 mm; covering 15 mm,
@@ -40,6 +44,7 @@ nlohmann::ordered_json SceneToJson(const Scene& scene);
 
 /// The report as one JSON object, values in SI, keys carrying the unit
 /// (max_penetration_m, peak_force_N, ...); missing or non-finite values are null.
+/// scene.covering.material is the catalog material's name, or null.
 nlohmann::ordered_json ToJson(const SimulationReport& report);
 
 /// The CSV header of a history file.

@@ -12,6 +12,7 @@
 
 #include "covopt/core/exact.hpp"
 #include "covopt/core/impact_model.hpp"
+#include "covopt/materials/catalog.hpp"
 #include "errors.hpp"
 #include "output.hpp"
 #include "quantity.hpp"
@@ -38,9 +39,35 @@ A bare number is SI. Units: mass kg, g, t ('fixed' for an immovable body);
 length m, cm, mm, um ('flat' for the robot radius); speed m/s, mm/s, cm/s,
 km/h; modulus Pa, kPa, MPa, GPa, N/m2, N/mm2; Poisson ratios and tolerances
 are plain numbers. Unset values come from --scene, else the paper's scene.
+--material NAME takes the covering's E and ν from the catalog (built-in, plus
+--catalog files); it overrides --scene and excludes --covering-modulus/-poisson.
 
 Exit codes: 0 done; 1 the computation failed or an output could not be
 written (e.g. gnuplot missing); 2 bad input.)";
+
+/// Sets the covering's E and ν from the --material entry (after the scene file, before the
+/// flags, which may not set them too).
+void ApplyMaterial(const SimulateOptions& options, SimulationPlan& plan) {
+  for (const auto& [name, flag] : {std::pair{"covering.modulus", "--covering-modulus"},
+                                   std::pair{"covering.poisson", "--covering-poisson"}}) {
+    if (options.scene_values.count(name) != 0) {
+      throw InputError(fmt::format("--material '{}' sets the covering's modulus and Poisson "
+                                   "ratio; give either --material or {}, not both",
+                                   *options.material, flag));
+    }
+  }
+  const materials::Catalog catalog = LoadCatalog(options.catalog);
+  const materials::Material* material = catalog.Find(*options.material);
+  if (material == nullptr) {
+    throw InputError("--material: " + NoSuchMaterial(catalog, *options.material));
+  }
+  plan.scene.covering.youngs_modulus_Pa = material->youngs_modulus_Pa;
+  plan.scene.covering.poisson_ratio = materials::PoissonRatioOrDefault(*material);
+  const std::string source = fmt::format("--material '{}'", material->name);
+  plan.sources["covering.modulus"] = source;
+  plan.sources["covering.poisson"] = source;
+  plan.covering_material = *material;
+}
 
 }  // namespace
 
@@ -70,6 +97,12 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
                   "phase thresholds: cumulative (default) or literal (the paper's text)")
       ->check(CLI::IsMember({"cumulative", "literal"}))
       ->group("Scene");
+  sub->add_option("--material", options.material,
+                  "covering modulus and Poisson ratio from the material catalog (see 'covopt "
+                  "materials list'); ν unknown there: 0.25, with a warning")
+      ->type_name("NAME")
+      ->group("Scene");
+  AddCatalogOptions(*sub, options.catalog);
 
   sub->add_option("--method", options.method,
                   "exact (energy balance; default) or cvode (time integration; default "
@@ -118,6 +151,12 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     for (std::string& name : ApplySceneFile(*options.scene_file, plan.scene)) {
       plan.sources[std::move(name)] = *options.scene_file;
     }
+  }
+  if (options.material) {
+    ApplyMaterial(options, plan);
+  } else if (options.catalog.given()) {
+    throw InputError(fmt::format("{} applies only with --material NAME",
+                                 options.catalog.files.empty() ? "--no-builtin" : "--catalog"));
   }
   for (const SceneField& field : SceneFields()) {
     const auto typed = options.scene_values.find(field.dotted_name());
@@ -217,7 +256,21 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
 
 std::vector<std::string> InputWarnings(const SimulationPlan& plan) {
   std::vector<std::string> warnings;
-  if (!(plan.scene.covering.thickness_m > 0.0)) {
+  const bool covered = plan.scene.covering.thickness_m > 0.0;
+  if (plan.covering_material) {
+    const materials::Material& material = *plan.covering_material;
+    if (!covered) {
+      warnings.push_back(fmt::format(
+          "no covering (covering.thickness = 0), so --material '{}' is ignored", material.name));
+      return warnings;
+    }
+    if (!material.poisson_ratio) {
+      warnings.push_back(fmt::format(
+          "the catalog gives no Poisson ratio for '{}': ν unknown, {:g} assumed", material.name,
+          materials::kDefaultPoissonRatio));
+    }
+  }
+  if (!covered) {
     std::vector<std::string> ignored;
     for (const char* name : {"covering.modulus", "covering.poisson"}) {
       const auto source = plan.sources.find(name);
@@ -287,6 +340,10 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
   }
   try {
     report.scene = plan.scene;
+    if (plan.covering_material) {
+      report.covering_material = plan.covering_material->name;
+      report.covering_poisson_assumed = !plan.covering_material->poisson_ratio.has_value();
+    }
     report.time_options = plan.time_options;
     if (report.time_options && report.time_options->record_history) {
       // Smooth charts: at least ~400 samples over the contact, by CVODE's dense output. The

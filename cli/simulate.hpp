@@ -15,6 +15,8 @@
 
 #include "covopt/core/scene.hpp"
 #include "covopt/core/time_integration.hpp"
+#include "covopt/materials/material.hpp"
+#include "materials_command.hpp"
 #include "plot.hpp"
 
 namespace CLI {
@@ -32,6 +34,12 @@ struct SimulateOptions {
   std::map<std::string, std::string, std::less<>> scene_values;
   /// --thresholds cumulative|literal.
   std::optional<std::string> thresholds;
+  /// --material NAME: the covering's modulus and Poisson ratio from the material catalog
+  /// (ν unknown there: 0.25, with a warning). Overrides the scene file; combined with
+  /// --covering-modulus or --covering-poisson it is bad input.
+  std::optional<std::string> material;
+  /// --catalog FILE (repeatable), --no-builtin: the catalog --material looks in.
+  CatalogOptions catalog;
   /// --method exact|cvode. Default: exact, or cvode when --history or --plot is given.
   std::optional<std::string> method;
   /// --cvode-method adams|bdf. Default: adams.
@@ -55,6 +63,8 @@ struct SimulationPlan {
   /// Where each non-default scene field came from, by field name:
   /// "robot.mass" -> "--robot-mass '10kg'" or "scene.toml".
   std::map<std::string, std::string, std::less<>> sources;
+  /// The catalog entry the covering's E and ν come from (--material), if any.
+  std::optional<materials::Material> covering_material;
   /// Set when the time path runs; empty for the exact path.
   std::optional<TimeIntegrationOptions> time_options;
   std::optional<std::string> history_file;
@@ -72,7 +82,8 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options);
 SimulationPlan ResolveSimulation(const SimulateOptions& options);
 
 /// Warnings about the input itself, beside the library's about the result: values the
-/// user set that the model ignores (a covering modulus without a covering).
+/// user set that the model ignores (a covering modulus or material without a covering),
+/// and a catalog material without a Poisson ratio ("ν unknown, 0.25 assumed").
 std::vector<std::string> InputWarnings(const SimulationPlan& plan);
 
 /// Adds to a library message that names scene fields ("robot.mass must be ...") where the

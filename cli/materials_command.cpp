@@ -1,0 +1,456 @@
+#include "materials_command.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstddef>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+#include <fmt/ranges.h>
+
+#include "covopt/materials/material.hpp"
+#include "errors.hpp"
+
+namespace covopt::cli {
+namespace {
+
+using materials::Catalog;
+using materials::Material;
+using Json = nlohmann::ordered_json;
+
+constexpr std::string_view kSpaces = " \t";
+
+std::string_view Trim(std::string_view s) {
+  const auto first = s.find_first_not_of(kSpaces);
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(kSpaces) - first + 1);
+}
+
+std::string Quoted(const std::vector<std::string>& words) {
+  std::string joined;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (i > 0) joined += (i + 1 == words.size()) ? " or " : ", ";
+    joined += "'" + words[i] + "'";
+  }
+  return joined;
+}
+
+constexpr std::array kBases{materials::ModulusBasis::kCompressive, materials::ModulusBasis::kTensile,
+                            materials::ModulusBasis::kBending,     materials::ModulusBasis::kFitted,
+                            materials::ModulusBasis::kAsPrinted,   materials::ModulusBasis::kHardness};
+
+std::vector<std::string> BasisNames() {
+  std::vector<std::string> names;
+  for (const auto basis : kBases) names.emplace_back(materials::ToString(basis));
+  return names;
+}
+
+std::string ModulusText(double pa) { return FormatQuantity(pa, QuantityKind::kModulus); }
+
+std::string PoissonText(const Material& m) {
+  return m.poisson_ratio ? fmt::format("{:g}", *m.poisson_ratio) : std::string("–");
+}
+
+std::string DensityText(const Material& m) {
+  return m.density_kg_per_m3 ? fmt::format("{:g}", *m.density_kg_per_m3) : std::string("–");
+}
+
+/// The materials as a table, one row each, and a closing line.
+void PrintMaterialTable(std::ostream& out, const std::vector<const Material*>& rows,
+                        std::string_view closing) {
+  std::size_t name_width = 4;
+  std::size_t family_width = 6;
+  for (const Material* m : rows) {
+    name_width = std::max(name_width, m->name.size());
+    family_width = std::max(family_width, m->family.size());
+  }
+  fmt::print(out, "{:<{}}  {:<{}}  {:>10}  {:>5}  {:>9}  {}\n", "name", name_width, "family",
+             family_width, "E", "ν", "ρ [kg/m³]", "E basis");
+  bool unknown = false;
+  for (const Material* m : rows) {
+    fmt::print(out, "{:<{}}  {:<{}}  {:>10}  {:>5}  {:>9}  {}\n", m->name, name_width, m->family,
+               family_width, ModulusText(m->youngs_modulus_Pa), PoissonText(*m), DensityText(*m),
+               materials::ToString(m->modulus_basis));
+    unknown = unknown || !m->poisson_ratio || !m->density_kg_per_m3;
+  }
+  fmt::print(out, "\n{}\n", closing);
+  if (unknown) {
+    fmt::print(out, "– = not given by the source; where ν is needed, {:g} is assumed.\n",
+               materials::kDefaultPoissonRatio);
+  }
+  fmt::print(out, "Sources, notes and how E was obtained: covopt materials show NAME\n");
+}
+
+/// `text` broken at spaces into lines of at most `width` characters (longer words, such
+/// as URLs, stay whole).
+std::vector<std::string> Wrap(std::string_view text, std::size_t width) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t space = text.find(' ', at);
+    const std::string_view word =
+        text.substr(at, space == std::string_view::npos ? std::string_view::npos : space - at);
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      lines.push_back(line);
+      line.clear();
+    }
+    if (!word.empty()) {
+      if (!line.empty()) line += ' ';
+      line += word;
+    }
+    if (space == std::string_view::npos) break;
+    at = space + 1;
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+void ShowRow(std::ostream& out, std::string_view label, std::string_view value) {
+  const std::vector<std::string> lines = Wrap(value, 76);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    fmt::print(out, "  {:<16} {}\n", i == 0 ? label : "", lines[i]);
+  }
+  if (lines.empty()) fmt::print(out, "  {}\n", label);
+}
+
+void PrintMaterial(std::ostream& out, const Material& m) {
+  fmt::print(out, "{}\n", m.name);
+  ShowRow(out, "family", m.family);
+  ShowRow(out, "Young's modulus", fmt::format("{} ({:.10g} Pa)", ModulusText(m.youngs_modulus_Pa),
+                                               m.youngs_modulus_Pa));
+  ShowRow(out, "E basis", fmt::format("{}: {}", materials::ToString(m.modulus_basis),
+                                      materials::Describe(m.modulus_basis)));
+  ShowRow(out, "Poisson ratio",
+          m.poisson_ratio ? fmt::format("{:g}", *m.poisson_ratio)
+                          : fmt::format("unknown ({:g} is assumed where one is needed)",
+                                        materials::kDefaultPoissonRatio));
+  ShowRow(out, "density", m.density_kg_per_m3
+                              ? FormatQuantity(*m.density_kg_per_m3, QuantityKind::kDensity)
+                              : std::string("unknown"));
+  ShowRow(out, "source", m.source);
+  if (!m.note.empty()) ShowRow(out, "note", m.note);
+  if (!m.origin.empty()) ShowRow(out, "defined at", m.origin);
+}
+
+std::string CatalogDescription(const CatalogOptions& options) {
+  std::vector<std::string> parts;
+  if (!options.no_builtin) parts.emplace_back("the built-in catalog");
+  for (const std::string& file : options.files) parts.push_back(file);
+  std::string joined;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (i > 0) joined += (i + 1 == parts.size()) ? " and " : ", ";
+    joined += parts[i];
+  }
+  return joined;
+}
+
+std::string Plural(std::size_t n, std::string_view word) {
+  return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s");
+}
+
+/// The filter `find`'s options describe, checked against the catalog (families).
+materials::MaterialFilter ResolveFilter(const MaterialsOptions& o, const Catalog& catalog) {
+  materials::MaterialFilter filter;
+  if (o.modulus) {
+    filter.youngs_modulus_Pa = ParseRange(*o.modulus, {QuantityKind::kModulus}, "--modulus");
+  }
+  if (o.poisson) {
+    filter.poisson_ratio = ParseRange(*o.poisson, {QuantityKind::kDimensionless}, "--poisson");
+  }
+  if (o.density) {
+    filter.density_kg_per_m3 = ParseRange(*o.density, {QuantityKind::kDensity}, "--density");
+  }
+  const std::vector<std::string> families = catalog.families();
+  for (const std::string& family : o.families) {
+    const bool known = std::any_of(families.begin(), families.end(), [&](const std::string& f) {
+      return f.size() == family.size() &&
+             std::equal(f.begin(), f.end(), family.begin(), [](char a, char b) {
+               return std::tolower(static_cast<unsigned char>(a)) ==
+                      std::tolower(static_cast<unsigned char>(b));
+             });
+    });
+    if (!known) {
+      throw InputError(fmt::format("--family: no family '{}' in the catalog; the families are {}",
+                                   family, Quoted(families)));
+    }
+    filter.families.push_back(family);
+  }
+  for (const std::string& basis : o.bases) {
+    const auto parsed = materials::ParseModulusBasis(basis);
+    if (!parsed) {
+      throw InputError(fmt::format("--basis: expected {} (got '{}')", Quoted(BasisNames()), basis));
+    }
+    filter.bases.push_back(*parsed);
+  }
+  if (o.name_contains) filter.name_contains = *o.name_contains;
+  filter.include_unknown = o.include_unknown;
+  return filter;
+}
+
+/// What the filter asks for, in words, for the closing line.
+std::string DescribeFilter(const MaterialsOptions& o) {
+  std::vector<std::string> parts;
+  if (o.modulus) parts.push_back("E " + *o.modulus);
+  if (o.poisson) parts.push_back("ν " + *o.poisson);
+  if (o.density) parts.push_back("ρ " + *o.density);
+  if (!o.families.empty()) parts.push_back("family " + fmt::format("{}", fmt::join(o.families, "|")));
+  if (!o.bases.empty()) parts.push_back("basis " + fmt::format("{}", fmt::join(o.bases, "|")));
+  if (o.name_contains) parts.push_back("name contains '" + *o.name_contains + "'");
+  if (parts.empty()) return "no conditions";
+  return fmt::format("{}", fmt::join(parts, ", "));
+}
+
+Json ToJsonArray(const std::vector<const Material*>& rows) {
+  Json array = Json::array();
+  for (const Material* m : rows) array.push_back(MaterialToJson(*m));
+  return array;
+}
+
+}  // namespace
+
+void AddCatalogOptions(CLI::App& command, CatalogOptions& options) {
+  command
+      .add_option("--catalog", options.files,
+                  "a catalog file (TOML, the format of materials/data/catalog.toml) added to "
+                  "the built-in catalog; repeatable")
+      ->type_name("FILE.toml")
+      ->allow_extra_args(false)
+      ->group("Catalog");
+  command
+      .add_flag("--no-builtin", options.no_builtin,
+                "use only the --catalog files, not the built-in catalog")
+      ->group("Catalog");
+}
+
+materials::Catalog LoadCatalog(const CatalogOptions& options) {
+  if (options.no_builtin && options.files.empty()) {
+    throw InputError("--no-builtin leaves no catalog; add --catalog FILE");
+  }
+  try {
+    Catalog catalog = options.no_builtin ? Catalog() : Catalog::BuiltIn();
+    for (const std::string& file : options.files) catalog.Add(Catalog::FromTomlFile(file));
+    return catalog;
+  } catch (const materials::CatalogError& e) {
+    throw InputError(e.what());
+  }
+}
+
+std::string NoSuchMaterial(const materials::Catalog& catalog, std::string_view name) {
+  const std::vector<std::string> suggestions = catalog.Suggest(name);
+  if (suggestions.empty()) {
+    return fmt::format("no material '{}' in the catalog; run 'covopt materials list' for the "
+                       "names",
+                       name);
+  }
+  return fmt::format("no material '{}' in the catalog; did you mean {}?", name,
+                     Quoted(suggestions));
+}
+
+materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
+                            std::string_view name) {
+  const std::string_view s = Trim(text);
+  const auto fail = [&](std::string_view problem) {
+    throw InputError(fmt::format("{}: {} (got '{}')", name, problem, text));
+  };
+  const std::string example =
+      spec.kind == QuantityKind::kModulus   ? "10MPa..100MPa"
+      : spec.kind == QuantityKind::kDensity ? "20kg/m3..60kg/m3"
+                                            : "0.2..0.3";
+  const auto dots = s.find("..");
+  if (dots == std::string_view::npos) {
+    fail(fmt::format("expected a range LO..HI, LO.. or ..HI, e.g. {}", example));
+  }
+  const std::string_view low = Trim(s.substr(0, dots));
+  const std::string_view high = Trim(s.substr(dots + 2));
+  if (low.empty() && high.empty()) fail(fmt::format("give at least one end, e.g. {}", example));
+  if ((!high.empty() && high.front() == '.') || (!low.empty() && low.back() == '.')) {
+    fail(fmt::format("malformed range; write LO..HI, e.g. {}", example));
+  }
+
+  materials::Range range;
+  if (!low.empty()) range.min = ParseQuantity(low, spec, name);
+  if (!high.empty()) range.max = ParseQuantity(high, spec, name);
+
+  if (spec.kind != QuantityKind::kDimensionless && !low.empty() && !high.empty()) {
+    const auto bare = [](std::string_view end) {
+      const char c = end.back();
+      return (c >= '0' && c <= '9') || c == '.';
+    };
+    const bool low_bare = bare(low) && *range.min != 0.0;
+    const bool high_bare = bare(high) && *range.max != 0.0;
+    if ((low_bare && !bare(high)) || (high_bare && !bare(low))) {
+      fail(fmt::format("give the unit on both ends, e.g. {}; a bare number is SI", example));
+    }
+  }
+  if (range.min && range.max && *range.min > *range.max) {
+    fail("the lower end is above the upper end");
+  }
+  return range;
+}
+
+Json MaterialToJson(const Material& m) {
+  Json j;
+  j["name"] = m.name;
+  j["family"] = m.family;
+  j["youngs_modulus_Pa"] = m.youngs_modulus_Pa;
+  j["poisson_ratio"] = m.poisson_ratio ? Json(*m.poisson_ratio) : Json(nullptr);
+  j["density_kg_per_m3"] = m.density_kg_per_m3 ? Json(*m.density_kg_per_m3) : Json(nullptr);
+  j["modulus_basis"] = materials::ToString(m.modulus_basis);
+  j["source"] = m.source;
+  j["note"] = m.note.empty() ? Json(nullptr) : Json(m.note);
+  j["defined_at"] = m.origin.empty() ? Json(nullptr) : Json(m.origin);
+  return j;
+}
+
+CLI::App* SetupMaterials(CLI::App& app, MaterialsOptions& options) {
+  CLI::App* materials = app.add_subcommand(
+      "materials", "The covering-material catalog: list, show or find materials");
+  materials->require_subcommand(1);
+  materials->footer(
+      "The built-in catalog holds sourced foams, elastomers and paddings, among them the\n"
+      "paper's Table IV coverings. Every entry states how its E was obtained (compressive,\n"
+      "tensile, bending, fitted, as-printed, hardness): compare like with like.\n"
+      "Exit codes: 0 done; 2 bad input.");
+
+  CLI::App* list = materials->add_subcommand("list", "List every material: name, family, E, ν, "
+                                                     "density and the basis of E");
+  list->add_flag("--json", options.json, "print a JSON array of objects (SI units)");
+  AddCatalogOptions(*list, options.catalog);
+  list->callback([&options] { options.action = MaterialsAction::kList; });
+
+  CLI::App* show = materials->add_subcommand(
+      "show", "Show one material with its source and how its E was obtained");
+  // The name may come as one quoted argument or as several words.
+  show->add_option_function<std::vector<std::string>>(
+          "name",
+          [&options](const std::vector<std::string>& words) {
+            options.name.clear();
+            for (const std::string& word : words) {
+              if (!options.name.empty()) options.name += ' ';
+              options.name += word;
+            }
+          },
+          "the material's name, ignoring case, e.g. \"polystyrene foam 27.6\"")
+      ->type_name("NAME")
+      ->required();
+  show->add_flag("--json", options.json, "print the material as one JSON object (SI units)");
+  AddCatalogOptions(*show, options.catalog);
+  show->callback([&options] { options.action = MaterialsAction::kShow; });
+
+  CLI::App* find = materials->add_subcommand(
+      "find", "Find materials by ranges of E, ν and density, by family, basis or name");
+  find->add_option("--modulus", options.modulus,
+                   "Young's modulus range, e.g. 10MPa..100MPa, 10MPa.. or ..100MPa")
+      ->type_name("LO..HI")
+      ->group("Filters");
+  find->add_option("--poisson", options.poisson, "Poisson ratio range, e.g. 0.2..0.3")
+      ->type_name("LO..HI")
+      ->group("Filters");
+  find->add_option("--density", options.density,
+                   "density range in kg/m3 or g/cm3, e.g. ..60kg/m3")
+      ->type_name("LO..HI")
+      ->group("Filters");
+  find->add_option("--family", options.families,
+                   "keep this family (foam, elastomer, padding, ...); repeatable: any of them")
+      ->type_name("FAMILY")
+      ->allow_extra_args(false)
+      ->group("Filters");
+  find->add_option("--basis", options.bases,
+                   "keep this basis of E (compressive, tensile, bending, fitted, as-printed, "
+                   "hardness); repeatable")
+      ->type_name("BASIS")
+      ->allow_extra_args(false)
+      ->group("Filters");
+  find->add_option("--name", options.name_contains, "keep names containing TEXT (ignoring case)")
+      ->type_name("TEXT")
+      ->group("Filters");
+  find->add_flag("--include-unknown", options.include_unknown,
+                 "let materials whose ν or density is unknown pass a --poisson or --density "
+                 "range (by default they are left out)")
+      ->group("Filters");
+  find->add_flag("--json", options.json, "print a JSON array of objects (SI units)");
+  AddCatalogOptions(*find, options.catalog);
+  find->footer("Ranges are closed; a bare number is SI (Pa, kg/m³). Units: Pa, kPa, MPa, GPa;\n"
+               "kg/m3, g/cm3. Exit codes: 0 done (also when nothing matches); 2 bad input.");
+  find->callback([&options] { options.action = MaterialsAction::kFind; });
+  return materials;
+}
+
+int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostream& err) {
+  const std::string_view command = options.action == MaterialsAction::kShow   ? "show"
+                                   : options.action == MaterialsAction::kFind ? "find"
+                                                                              : "list";
+  const auto bad_input = [&](std::string_view message) {
+    fmt::print(err, "covopt materials {}: error: {}\n", command, message);
+    return 2;
+  };
+
+  Catalog catalog;
+  try {
+    catalog = LoadCatalog(options.catalog);
+  } catch (const InputError& e) {
+    return bad_input(e.what());
+  }
+  const std::string where = CatalogDescription(options.catalog);
+
+  switch (options.action) {
+    case MaterialsAction::kNone:
+      return bad_input("no subcommand given; use list, show or find");
+    case MaterialsAction::kList: {
+      std::vector<const Material*> rows;
+      for (const Material& m : catalog.materials()) rows.push_back(&m);
+      if (options.json) {
+        out << ToJsonArray(rows).dump(2) << '\n';
+      } else {
+        PrintMaterialTable(out, rows, fmt::format("{} ({}).", Plural(rows.size(), "material"), where));
+      }
+      break;
+    }
+    case MaterialsAction::kShow: {
+      const Material* m = catalog.Find(Trim(options.name));
+      if (m == nullptr) return bad_input(NoSuchMaterial(catalog, Trim(options.name)));
+      if (options.json) {
+        out << MaterialToJson(*m).dump(2) << '\n';
+      } else {
+        PrintMaterial(out, *m);
+      }
+      break;
+    }
+    case MaterialsAction::kFind: {
+      materials::MaterialFilter filter;
+      try {
+        filter = ResolveFilter(options, catalog);
+      } catch (const InputError& e) {
+        return bad_input(e.what());
+      }
+      const std::vector<const Material*> rows = catalog.Filter(filter);
+      if (options.json) {
+        out << ToJsonArray(rows).dump(2) << '\n';
+      } else if (rows.empty()) {
+        fmt::print(out, "No material of {} ({}) matches {}.\n", where,
+                   Plural(catalog.size(), "material"), DescribeFilter(options));
+      } else {
+        PrintMaterialTable(out, rows,
+                           fmt::format("{} of {} match {} ({}).", rows.size(),
+                                       Plural(catalog.size(), "material"),
+                                       DescribeFilter(options), where));
+      }
+      break;
+    }
+  }
+  out.flush();
+  if (!out) {
+    fmt::print(err, "covopt materials {}: error: cannot write to standard output\n", command);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace covopt::cli
