@@ -148,7 +148,7 @@ TEST_CASE("a missing required key points at the entry's header", "[errors]") {
                   .density_kg_per_m3.has_value());
 }
 
-TEST_CASE("poisson_ratio may be \"unknown\"", "[errors]") {
+TEST_CASE("poisson_ratio may be the string unknown", "[errors]") {
   const Catalog catalog =
       Catalog::FromTomlString(With("poisson_ratio", "poisson_ratio = \"unknown\""), "mine.toml");
   CHECK_FALSE(catalog.materials()[0].poisson_ratio.has_value());
