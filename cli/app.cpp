@@ -8,6 +8,7 @@
 #include <fmt/ostream.h>
 
 #include "materials_command.hpp"
+#include "optimize.hpp"
 #include "simulate.hpp"
 
 #ifndef COVOPT_VERSION
@@ -30,6 +31,8 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   CLI::App* simulate = SetupSimulate(app, simulate_options);
   MaterialsOptions materials_options;
   CLI::App* materials = SetupMaterials(app, materials_options);
+  OptimizeOptions optimize_options;
+  CLI::App* optimize = SetupOptimize(app, optimize_options);
 
   try {
     app.parse(argc, argv);
@@ -47,6 +50,7 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   try {
     if (simulate->parsed()) return RunSimulate(simulate_options, out, err);
     if (materials->parsed()) return RunMaterials(materials_options, out, err);
+    if (optimize->parsed()) return RunOptimize(optimize_options, out, err);
   } catch (const std::exception& e) {
     fmt::print(err, "covopt: internal error: {}\n", e.what());
     return 1;

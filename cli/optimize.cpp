@@ -1,0 +1,506 @@
+#include "optimize.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+
+#include "covopt/core/impact_model.hpp"
+#include "covopt/materials/catalog.hpp"
+#include "covopt/optim/covering_design.hpp"
+#include "errors.hpp"
+#include "output.hpp"
+#include "quantity.hpp"
+#include "scene_fields.hpp"
+#include "scene_file.hpp"
+
+namespace covopt::cli {
+namespace {
+
+using nlohmann::ordered_json;
+using optim::CandidateMaterial;
+using optim::CandidateOutcome;
+using optim::DesignOptions;
+using optim::DesignScore;
+using optim::DesignVerdict;
+
+constexpr std::string_view kFooter = R"(Values take a unit as in 'covopt simulate' (10kg, 2m/s, 15mm, 27.6MPa).
+The covering is what this command designs: its flags are not taken here.
+Without --thickness: the thinnest covering keeping laceration and contusion
+below their limits divided by --safety-factor, over E_c (log scale) and b_c,
+then every catalog material's own thinnest safe thickness, rounded up to
+--thickness-step. With --thickness: the least injury at that thickness.
+
+Exit codes: 0 an answer (also "no material is safe"); 1 the search failed;
+2 bad input.)";
+
+struct Resolved {
+  Scene scene;
+  DesignOptions design;
+  std::optional<double> thickness_m;
+  std::vector<CandidateMaterial> candidates;
+  std::map<std::string, std::string, std::less<>> families;  // name -> family
+  std::vector<std::string> warnings;
+  int runners_up = 8;
+};
+
+double Parse(const std::optional<std::string>& text, QuantityKind kind, std::string_view flag,
+             double fallback) {
+  return text ? ParseQuantity(*text, QuantitySpec{kind}, flag) : fallback;
+}
+
+bool IsCoveringField(const SceneField& field) { return field.table == "covering"; }
+
+Resolved Resolve(const OptimizeOptions& o) {
+  Resolved r;
+  if (o.scene_file) {
+    for (const std::string& name : ApplySceneFile(*o.scene_file, r.scene)) {
+      if (name.rfind("covering.", 0) == 0) {
+        r.warnings.push_back(fmt::format("{} in {} is ignored: the covering is what optimize designs",
+                                         name, *o.scene_file));
+      }
+    }
+  }
+  for (const SceneField& field : SceneFields()) {
+    const auto typed = o.scene_values.find(field.dotted_name());
+    if (typed != o.scene_values.end()) {
+      field.field(r.scene) = ParseQuantity(typed->second, field.spec, field.flag);
+    }
+  }
+  if (o.thresholds) r.scene.model.thresholds = ParseThresholds(*o.thresholds, "--thresholds");
+
+  DesignOptions& d = r.design;
+  d.space.max_thickness_m = Parse(o.max_thickness, QuantityKind::kLength, "--max-thickness", d.space.max_thickness_m);
+  d.space.min_modulus_Pa = Parse(o.min_modulus, QuantityKind::kModulus, "--min-modulus", d.space.min_modulus_Pa);
+  d.space.max_modulus_Pa = Parse(o.max_modulus, QuantityKind::kModulus, "--max-modulus", d.space.max_modulus_Pa);
+  d.safety_factor = Parse(o.safety_factor, QuantityKind::kDimensionless, "--safety-factor", d.safety_factor);
+  d.covering_poisson_ratio =
+      Parse(o.covering_poisson, QuantityKind::kDimensionless, "--covering-poisson", d.covering_poisson_ratio);
+  d.thickness_step_m = Parse(o.thickness_step, QuantityKind::kLength, "--thickness-step", d.thickness_step_m);
+  // Range checks with the flag's name (the library would name its own fields).
+  auto require = [](bool ok, const std::string& message) {
+    if (!ok) throw InputError(message);
+  };
+  require(d.space.max_thickness_m > d.space.min_thickness_m && d.space.max_thickness_m <= 1.0,
+          fmt::format("--max-thickness must be in (0.1 mm, 1 m] (got '{}')", o.max_thickness.value_or("")));
+  require(d.space.min_modulus_Pa > 0 && d.space.max_modulus_Pa > d.space.min_modulus_Pa &&
+              d.space.max_modulus_Pa <= 1e13,
+          fmt::format("--min-modulus/--max-modulus must satisfy 0 < min < max <= 1e13 Pa (got {} Pa, {} Pa)",
+                      d.space.min_modulus_Pa, d.space.max_modulus_Pa));
+  require(d.safety_factor >= 1.0 && d.safety_factor <= 100.0,
+          fmt::format("--safety-factor must be in [1, 100] (got '{}')", o.safety_factor.value_or("")));
+  require(d.covering_poisson_ratio > -1.0 && d.covering_poisson_ratio <= 0.5,
+          fmt::format("--covering-poisson must be in (-1, 0.5] (got '{}')", o.covering_poisson.value_or("")));
+  require(d.thickness_step_m >= 0.0 && d.thickness_step_m <= 0.01,
+          fmt::format("--thickness-step must be in [0, 10 mm] (got '{}')", o.thickness_step.value_or("")));
+  if (o.thickness) {
+    r.thickness_m = ParseQuantity(*o.thickness, QuantitySpec{QuantityKind::kLength}, "--thickness");
+    require(*r.thickness_m > 0.0 && *r.thickness_m <= 1.0,
+            fmt::format("--thickness must be in (0, 1 m] (got '{}'); for no covering use "
+                        "'covopt simulate --covering-thickness 0'",
+                        *o.thickness));
+  }
+  if (o.global_algorithm) {
+    const std::string& g = *o.global_algorithm;
+    if (g == "direct-l") d.global_algorithm = optim::NloptAlgorithm::kDirectL;
+    else if (g == "isres") d.global_algorithm = optim::NloptAlgorithm::kIsres;
+    else if (g == "mlsl") d.global_algorithm = optim::NloptAlgorithm::kMlsl;
+    else throw InputError(fmt::format("--global: expected direct-l, isres or mlsl (got '{}')", g));
+  }
+  if (o.seed) d.seed = *o.seed;
+  if (o.runners_up) {
+    require(*o.runners_up >= 0, fmt::format("--top must be >= 0 (got {})", *o.runners_up));
+    r.runners_up = *o.runners_up;
+  }
+
+  // The candidates: the built-in catalog, plus --catalog, filtered.
+  materials::Catalog catalog = materials::Catalog::BuiltIn();
+  if (o.catalog_file) {
+    try {
+      catalog.Add(materials::Catalog::FromTomlFile(*o.catalog_file));
+    } catch (const materials::CatalogError& e) {
+      throw InputError(fmt::format("--catalog: {}", e.what()));
+    }
+  }
+  std::vector<const materials::Material*> chosen;
+  if (!o.materials.empty()) {
+    for (const std::string& name : o.materials) {
+      const materials::Material* m = catalog.Find(name);
+      if (!m) {
+        const auto suggestions = catalog.Suggest(name);
+        throw InputError(fmt::format("--material: no material '{}' in the catalog{}", name,
+                                     suggestions.empty() ? std::string("; see 'covopt materials list'")
+                                                         : fmt::format("; did you mean '{}'?", suggestions.front())));
+      }
+      chosen.push_back(m);
+    }
+  } else {
+    for (const materials::Material& m : catalog.materials()) chosen.push_back(&m);
+  }
+  if (!o.families.empty()) {
+    const auto known = catalog.families();
+    for (const std::string& family : o.families) {
+      if (std::none_of(known.begin(), known.end(), [&](const std::string& k) {
+            return std::equal(k.begin(), k.end(), family.begin(), family.end(),
+                              [](char a, char b) { return std::tolower(a) == std::tolower(b); });
+          })) {
+        throw InputError(fmt::format("--family: no family '{}' in the catalog (families: {})", family,
+                                     fmt::join(known, ", ")));
+      }
+    }
+    materials::MaterialFilter filter;
+    filter.families = o.families;
+    const auto kept = catalog.Filter(filter);
+    std::erase_if(chosen, [&](const materials::Material* m) {
+      return std::find(kept.begin(), kept.end(), m) == kept.end();
+    });
+  }
+  for (const materials::Material* m : chosen) {
+    CandidateMaterial c;
+    c.name = m->name;
+    c.youngs_modulus_Pa = m->youngs_modulus_Pa;
+    c.poisson_assumed = !m->poisson_ratio.has_value();
+    c.poisson_ratio = m->poisson_ratio.value_or(materials::kDefaultPoissonRatio);
+    r.families[m->name] = m->family;
+    r.candidates.push_back(c);
+  }
+  return r;
+}
+
+std::string Percent(double fraction) { return fmt::format("{:.1f} %", 100.0 * fraction); }
+std::string Mm(double metres) { return fmt::format("{:.2f} mm", metres * 1e3); }
+std::string MPa(double pascals) { return fmt::format("{:.3g} MPa", pascals * 1e-6); }
+
+ordered_json SolverJson(const optim::SolverReport& r) {
+  if (r.backend.empty()) return nullptr;
+  return {{"backend", r.backend},
+          {"termination", optim::ToString(r.termination)},
+          {"raw_code", r.raw_code},
+          {"raw_name", r.raw_name},
+          {"objective_evaluations", r.objective_evaluations},
+          {"constraint_evaluations", r.constraint_evaluations},
+          {"failed_evaluations", r.failed_evaluations},
+          {"seconds", r.seconds}};
+}
+
+ordered_json ScoreJson(const DesignScore& s) {
+  return {{"laceration_ratio", s.laceration_ratio},
+          {"contusion_ratio", s.contusion_ratio},
+          {"max_tensile_stress_Pa", s.peaks.max_tensile_stress_Pa},
+          {"max_energy_density_J_per_m2", s.peaks.max_energy_density_J_per_m2},
+          {"fully_compressed", s.peaks.fully_compressed}};
+}
+
+ordered_json Nullable(const std::optional<double>& v) { return v ? ordered_json(*v) : ordered_json(nullptr); }
+
+ordered_json CandidateJson(const CandidateOutcome& c, const Resolved& r) {
+  ordered_json j = {{"material", c.material.name},
+                    {"family", r.families.count(c.material.name) ? r.families.at(c.material.name) : ""},
+                    {"youngs_modulus_Pa", c.material.youngs_modulus_Pa},
+                    {"poisson_ratio", c.material.poisson_ratio},
+                    {"poisson_assumed", c.material.poisson_assumed},
+                    {"min_safe_thickness_m", Nullable(c.min_safe_thickness_m)},
+                    {"thickness_m", Nullable(c.recommended_thickness_m)},
+                    {"evaluated_thickness_m", c.score.design.thickness_m},
+                    {"safe", c.safe},
+                    {"margin", c.margin}};
+  j.update(ScoreJson(c.score));
+  return j;
+}
+
+/// The sentence that answers the user's question.
+std::string Headline(DesignVerdict verdict, const std::vector<CandidateOutcome>& candidates,
+                     const std::optional<std::size_t>& recommendation, const DesignScore& continuous,
+                     bool continuous_feasible, double max_thickness, std::optional<double> thickness) {
+  switch (verdict) {
+    case DesignVerdict::kBareRobotSafe:
+      return "The bare robot is already safe in this scene: no covering is needed.";
+    case DesignVerdict::kCoveringFound: {
+      const CandidateOutcome& best = candidates[*recommendation];
+      return fmt::format("Recommended: {} at {}.", best.material.name,
+                         Mm(*best.recommended_thickness_m));
+    }
+    case DesignVerdict::kNoSafeMaterial:
+      return thickness
+                 ? fmt::format("No catalog material is safe at {}; a covering of {} would be.",
+                               Mm(*thickness), MPa(continuous.design.youngs_modulus_Pa))
+                 : fmt::format("No catalog material is safe within {}; the continuous optimum "
+                               "({}, {}) would be.",
+                               Mm(max_thickness), MPa(continuous.design.youngs_modulus_Pa),
+                               Mm(continuous.design.thickness_m));
+    case DesignVerdict::kNothingSafe:
+      break;
+  }
+  (void)continuous_feasible;
+  const std::string best = candidates.empty()
+                               ? std::string()
+                               : fmt::format(" The least unsafe material is {} (worst ratio {:.3f}).",
+                                             candidates.front().material.name,
+                                             candidates.front().score.worst_ratio());
+  return thickness ? fmt::format("Nothing is safe at {}: even the best modulus ({}) leaves a worst ratio of {:.3f}.{}",
+                                 Mm(*thickness), MPa(continuous.design.youngs_modulus_Pa),
+                                 continuous.worst_ratio(), best)
+                   : fmt::format("Nothing is safe within {}: no modulus in the search range meets both limits.{}",
+                                 Mm(max_thickness), best);
+}
+
+void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& candidates, int rows,
+                     double safety_factor) {
+  if (candidates.empty() || rows == 0) return;
+  fmt::print(out, "\n  {:<3} {:<28} {:>9} {:>6} {:>10} {:>11} {:>10} {:>8}\n", "#", "material", "E [MPa]",
+             "ν", "thickness", "laceration", "contusion", "margin");
+  int shown = 0;
+  for (const CandidateOutcome& c : candidates) {
+    if (shown == rows) break;
+    const std::string thickness = c.recommended_thickness_m
+                                      ? Mm(*c.recommended_thickness_m)
+                                      : fmt::format("> {}", Mm(c.score.design.thickness_m));
+    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>6} {:>10} {:>11.3f} {:>10.3f} {:>8}\n", ++shown,
+               c.material.name.substr(0, 28), c.material.youngs_modulus_Pa * 1e-6,
+               fmt::format("{:.2f}{}", c.material.poisson_ratio, c.material.poisson_assumed ? "*" : ""),
+               thickness, c.score.laceration_ratio, c.score.contusion_ratio, Percent(c.margin));
+  }
+  if (static_cast<int>(candidates.size()) > shown) {
+    fmt::print(out, "  ... {} more (--top N, or --json for all)\n", candidates.size() - shown);
+  }
+  (void)safety_factor;
+}
+
+}  // namespace
+
+CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
+  CLI::App* sub = app.add_subcommand(
+      "optimize", "Find the covering (real material and thickness) that prevents laceration and "
+                  "contusion, with its margin");
+  sub->footer(std::string(kFooter));
+  sub->add_option("--scene", options.scene_file, "TOML scene file; flags override it")->type_name("FILE.toml");
+  for (const SceneField& field : SceneFields()) {
+    if (IsCoveringField(field)) continue;
+    const std::string key = field.dotted_name();
+    sub->add_option_function<std::string>(
+           std::string(field.flag), [&options, key](const std::string& v) { options.scene_values[key] = v; },
+           std::string(field.help))
+        ->type_name("VALUE")
+        ->group("Scene");
+  }
+  sub->add_option("--thresholds", options.thresholds, "phase thresholds: cumulative (default) or literal")
+      ->check(CLI::IsMember({"cumulative", "literal"}))
+      ->group("Scene");
+  sub->add_option("--max-thickness", options.max_thickness, "thickest covering considered (default 50 mm)")
+      ->type_name("LENGTH")->group("Design");
+  sub->add_option("--min-modulus", options.min_modulus, "softest covering of the continuous search (default 0.1 MPa)")
+      ->type_name("MODULUS")->group("Design");
+  sub->add_option("--max-modulus", options.max_modulus, "stiffest covering of the continuous search (default 1 GPa)")
+      ->type_name("MODULUS")->group("Design");
+  sub->add_option("--safety-factor", options.safety_factor, "ratios must stay <= 1/factor (default 1)")
+      ->type_name("X")->group("Design");
+  sub->add_option("--thickness", options.thickness, "fixed thickness: find the least injury there instead")
+      ->type_name("LENGTH")->group("Design");
+  sub->add_option("--covering-poisson", options.covering_poisson, "ν of the continuous design (default 0.25)")
+      ->type_name("RATIO")->group("Design");
+  sub->add_option("--thickness-step", options.thickness_step,
+                  "round recommended thicknesses up to a multiple of this (default 0.5 mm; 0 = exact)")
+      ->type_name("LENGTH")->group("Design");
+  sub->add_option("--catalog", options.catalog_file, "a catalog file whose materials are added to the built-in ones")
+      ->type_name("FILE.toml")->group("Materials");
+  sub->add_option("--family", options.families, "only materials of this family (repeatable)")
+      ->type_name("NAME")->group("Materials");
+  sub->add_option("--material", options.materials, "only this catalog material (repeatable)")
+      ->type_name("NAME")->group("Materials");
+  sub->add_option("--global", options.global_algorithm, "global search: direct-l (default), isres or mlsl")
+      ->group("Solver");
+  sub->add_option("--seed", options.seed, "seed of the stochastic global searches")->group("Solver");
+  sub->add_option("--top", options.runners_up, "rows of the candidate table (default 8)")->group("Output");
+  sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the report")->group("Output");
+  return sub;
+}
+
+int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream& err) {
+  auto bad_input = [&](const std::string& message) {
+    fmt::print(err, "covopt optimize: error: {}\n", message);
+    return 2;
+  };
+  Resolved r;
+  try {
+    r = Resolve(options);
+    Scene bare = r.scene;
+    bare.covering.thickness_m = 0.0;
+    (void)ImpactModel::FromScene(bare);  // scene range checks, naming the field
+  } catch (const std::invalid_argument& e) {  // InputError and the library's checks
+    return bad_input(e.what());
+  }
+
+  const double sf = r.design.safety_factor;
+  ordered_json j;
+  std::string headline;
+  std::vector<CandidateOutcome> candidates;
+  optim::ContinuousOptimum continuous;
+  DesignScore bare;
+  DesignVerdict verdict{};
+  std::optional<std::size_t> recommendation;
+  long evaluations = 0;
+  double seconds = 0.0;
+  try {
+    if (r.thickness_m) {
+      const auto result = optim::MinimizeInjuryAtThickness(r.scene, *r.thickness_m, r.candidates, r.design);
+      candidates = result.candidates;
+      continuous = result.continuous;
+      bare = result.bare_robot;
+      verdict = result.verdict;
+      recommendation = result.recommendation;
+      evaluations = result.evaluations;
+      seconds = result.seconds;
+    } else {
+      const auto result = optim::FindThinnestSafeCovering(r.scene, r.candidates, r.design);
+      candidates = result.candidates;
+      continuous = result.continuous;
+      bare = result.bare_robot;
+      verdict = result.verdict;
+      recommendation = result.recommendation;
+      evaluations = result.evaluations;
+      seconds = result.seconds;
+    }
+  } catch (const std::invalid_argument& e) {
+    return bad_input(e.what());
+  }
+  const optim::SolverReport& global = continuous.global;
+  const bool global_usable = global.termination == optim::Termination::kConverged ||
+                             global.termination == optim::Termination::kEvaluationLimit ||
+                             global.termination == optim::Termination::kTimeLimit ||
+                             global.termination == optim::Termination::kRoundoffLimited;
+  if (!global_usable) {
+    fmt::print(err,
+               "covopt optimize: the global search failed: {} ({} code {} {}); no fallback is "
+               "available\n",
+               optim::ToString(global.termination), global.backend, global.raw_code, global.raw_name);
+    return 1;
+  }
+  headline = Headline(verdict, candidates, recommendation, continuous.score, continuous.feasible,
+                      r.design.space.max_thickness_m, r.thickness_m);
+  const bool from_ipopt = continuous.source == "ipopt";
+  const optim::Termination termination = from_ipopt ? continuous.local.termination : global.termination;
+
+  if (options.json) {
+    j["problem"] = r.thickness_m ? "least-injury-at-thickness" : "thinnest-safe-covering";
+    j["verdict"] = optim::ToString(verdict);
+    j["summary"] = headline;
+    if (recommendation) {
+      const CandidateOutcome& c = candidates[*recommendation];
+      ordered_json rec = {{"material", c.material.name},
+                          {"family", r.families[c.material.name]},
+                          {"thickness_m", *c.recommended_thickness_m},
+                          {"min_safe_thickness_m", Nullable(c.min_safe_thickness_m)},
+                          {"youngs_modulus_Pa", c.material.youngs_modulus_Pa},
+                          {"poisson_ratio", c.material.poisson_ratio},
+                          {"poisson_assumed", c.material.poisson_assumed},
+                          {"laceration_ratio", c.score.laceration_ratio},
+                          {"contusion_ratio", c.score.contusion_ratio},
+                          {"margin", c.margin},
+                          {"safe", c.safe}};
+      j["recommendation"] = rec;
+    } else {
+      j["recommendation"] = nullptr;
+    }
+    j["continuous_optimum"] = {{"youngs_modulus_Pa", continuous.score.design.youngs_modulus_Pa},
+                               {"thickness_m", continuous.score.design.thickness_m},
+                               {"poisson_ratio", continuous.score.poisson_ratio},
+                               {"laceration_ratio", continuous.score.laceration_ratio},
+                               {"contusion_ratio", continuous.score.contusion_ratio},
+                               {"safe", continuous.score.safe(sf)},
+                               {"fully_compressed", continuous.score.peaks.fully_compressed},
+                               {"source", continuous.source}};
+    j["bare_robot"] = {{"laceration_ratio", bare.laceration_ratio},
+                       {"contusion_ratio", bare.contusion_ratio},
+                       {"safe", bare.safe(sf)}};
+    ordered_json list = ordered_json::array();
+    for (const CandidateOutcome& c : candidates) list.push_back(CandidateJson(c, r));
+    j["candidates"] = list;
+    j["solver"] = {{"termination", optim::ToString(termination)},
+                   {"evaluations", evaluations},
+                   {"seconds", seconds},
+                   {"global", SolverJson(global)},
+                   {"local", SolverJson(continuous.local)}};
+    j["safety_factor"] = sf;
+    j["limits"] = {{"laceration_Pa", r.design.limits.laceration_tensile_stress_Pa},
+                   {"contusion_J_per_m2", r.design.limits.contusion_energy_density_J_per_m2}};
+    j["design_space"] = {{"min_modulus_Pa", r.design.space.min_modulus_Pa},
+                         {"max_modulus_Pa", r.design.space.max_modulus_Pa},
+                         {"min_thickness_m", r.design.space.min_thickness_m},
+                         {"max_thickness_m", r.design.space.max_thickness_m},
+                         {"thickness_step_m", r.design.thickness_step_m}};
+    if (r.thickness_m) j["thickness_m"] = *r.thickness_m;
+    Scene shown = r.scene;
+    shown.covering.thickness_m = 0.0;
+    ordered_json scene = SceneToJson(shown);
+    scene.erase("covering");
+    j["scene"] = scene;
+    j["warnings"] = r.warnings;
+    out << j.dump(2) << '\n';
+    return 0;
+  }
+
+  Scene shown = r.scene;
+  shown.covering.thickness_m = 0.0;
+  std::string headline_scene = SceneHeadline(shown);
+  if (const auto at = headline_scene.find("no covering"); at != std::string::npos) {
+    headline_scene.replace(at, 11, "covering to be designed");
+  }
+  fmt::print(out, "Scene   {}\n", headline_scene);
+  fmt::print(out, "Limits  laceration {} MPa, contusion {} J/cm², safety factor {:g}{}\n",
+             r.design.limits.laceration_tensile_stress_Pa * 1e-6,
+             r.design.limits.contusion_energy_density_J_per_m2 * 1e-4, sf,
+             r.thickness_m ? fmt::format("; thickness fixed at {}", Mm(*r.thickness_m))
+                           : fmt::format("; thickness up to {}", Mm(r.design.space.max_thickness_m)));
+  fmt::print(out, "\n{}\n", headline);
+  if (recommendation) {
+    const CandidateOutcome& c = candidates[*recommendation];
+    fmt::print(out, "  {} ({}), E {}, ν {:.2f}{}\n", c.material.name, r.families[c.material.name],
+               MPa(c.material.youngs_modulus_Pa), c.material.poisson_ratio,
+               c.material.poisson_assumed ? " (ν unknown, 0.25 assumed)" : "");
+    fmt::print(out, "  laceration ratio {:.3f}, contusion ratio {:.3f}: margin {} of the limit{}\n",
+               c.score.laceration_ratio, c.score.contusion_ratio, Percent(c.margin),
+               sf > 1 ? " divided by the safety factor" : "");
+    if (c.min_safe_thickness_m && !r.thickness_m) {
+      fmt::print(out, "  thinnest safe thickness {}, rounded up to {}\n", Mm(*c.min_safe_thickness_m),
+                 Mm(*c.recommended_thickness_m));
+    }
+  }
+  fmt::print(out, "\nBare robot      laceration ratio {:.3f}, contusion ratio {:.3f}: {}\n", bare.laceration_ratio,
+             bare.contusion_ratio, bare.safe(sf) ? "safe" : "UNSAFE");
+  fmt::print(out, "Continuous {}  E_c* = {}, b_c* = {} (ν {:.2f}): laceration {:.3f}, contusion {:.3f}{}\n",
+             r.thickness_m ? "best " : "optimum", MPa(continuous.score.design.youngs_modulus_Pa),
+             Mm(continuous.score.design.thickness_m), continuous.score.poisson_ratio,
+             continuous.score.laceration_ratio, continuous.score.contusion_ratio,
+             continuous.score.safe(sf) ? "" : " (not safe)");
+  if (recommendation && !r.thickness_m) {
+    const CandidateOutcome& c = candidates[*recommendation];
+    fmt::print(out, "                the recommendation is {:.2f}x its modulus and {} thicker\n",
+               c.material.youngs_modulus_Pa / continuous.score.design.youngs_modulus_Pa,
+               Mm(*c.recommended_thickness_m - continuous.score.design.thickness_m));
+  }
+  fmt::print(out, "\nCandidates ({}){}", r.thickness_m ? "by margin at this thickness" : "by thinnest safe thickness",
+             candidates.empty() ? ": none (the catalog filter left nothing)\n" : "");
+  PrintCandidates(out, candidates, r.runners_up, sf);
+  if (std::any_of(candidates.begin(), candidates.end(), [](const CandidateOutcome& c) { return c.material.poisson_assumed; })) {
+    fmt::print(out, "  * ν unknown for this material: 0.25 assumed\n");
+  }
+  fmt::print(out, "\nSolver  global {}: {} ({} evaluations); local {}; {} exact-path evaluations, {:.1f} ms\n",
+             global.backend, optim::ToString(global.termination), global.objective_evaluations,
+             continuous.local.backend.empty()
+                 ? std::string("not run")
+                 : fmt::format("{}: {} ({}), kept: {}", continuous.local.backend,
+                               optim::ToString(continuous.local.termination), continuous.local.raw_name,
+                               continuous.source),
+             evaluations, seconds * 1e3);
+  for (const std::string& w : r.warnings) fmt::print(out, "Warning: {}\n", w);
+  return 0;
+}
+
+}  // namespace covopt::cli

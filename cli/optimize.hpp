@@ -1,0 +1,51 @@
+#pragma once
+/// @file optimize.hpp
+/// `covopt optimize`: which real covering material, how thick, and with what margin.
+///
+/// The scene (without covering) comes from Scene{}, --scene and the scene flags as in
+/// `covopt simulate`. Problem (a), the default: the thinnest covering that keeps the
+/// laceration and contusion ratios <= 1/safety factor, continuous (E_c, b_c) and snapped to
+/// every catalog material. Problem (b), with --thickness: the covering with the least injury
+/// at that thickness. Exit codes: 0 an answer (including "nothing is safe"), 1 the search
+/// failed, 2 bad input.
+
+#include <map>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace covopt::cli {
+
+/// The options of `covopt optimize`, as typed (read and checked by RunOptimize).
+struct OptimizeOptions {
+  std::optional<std::string> scene_file;
+  /// Scene flags by field name ("robot.mass" -> "10kg"); the covering's are not offered.
+  std::map<std::string, std::string, std::less<>> scene_values;
+  std::optional<std::string> thresholds;
+  std::optional<std::string> max_thickness;     ///< --max-thickness (default 50 mm)
+  std::optional<std::string> min_modulus;       ///< --min-modulus (default 0.1 MPa)
+  std::optional<std::string> max_modulus;       ///< --max-modulus (default 1 GPa)
+  std::optional<std::string> safety_factor;     ///< --safety-factor (default 1)
+  std::optional<std::string> thickness;         ///< --thickness: problem (b)
+  std::optional<std::string> covering_poisson;  ///< ν of the continuous design (0.25)
+  std::optional<std::string> thickness_step;    ///< --thickness-step (default 0.5 mm)
+  std::optional<std::string> catalog_file;      ///< --catalog: added to the built-in one
+  std::vector<std::string> families;            ///< --family (repeatable)
+  std::vector<std::string> materials;           ///< --material (repeatable): only these
+  std::optional<std::string> global_algorithm;  ///< --global direct-l|isres|mlsl
+  std::optional<unsigned long> seed;            ///< --seed
+  std::optional<int> runners_up;                ///< --top N rows in the table (default 8)
+  bool json = false;
+};
+
+CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options);
+
+/// Runs the subcommand; returns the exit code (0, 1 or 2).
+int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace covopt::cli
