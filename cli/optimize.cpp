@@ -252,15 +252,17 @@ std::string Headline(DesignVerdict verdict, const std::vector<CandidateOutcome>&
 }
 
 void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& candidates, int rows,
-                     double safety_factor) {
+                     bool fixed_thickness) {
   if (candidates.empty() || rows == 0) return;
   fmt::print(out, "\n  {:<3} {:<28} {:>9} {:>6} {:>10} {:>11} {:>10} {:>8}\n", "#", "material", "E [MPa]",
              "ν", "thickness", "laceration", "contusion", "margin");
   int shown = 0;
   for (const CandidateOutcome& c : candidates) {
     if (shown == rows) break;
-    const std::string thickness = c.recommended_thickness_m
-                                      ? Mm(*c.recommended_thickness_m)
+    // Problem (b) evaluates every material at the given thickness; problem (a) shows the
+    // thinnest safe one, or "> max" when none is safe within the bound.
+    const std::string thickness = c.recommended_thickness_m || fixed_thickness
+                                      ? Mm(c.score.design.thickness_m)
                                       : fmt::format("> {}", Mm(c.score.design.thickness_m));
     fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>6} {:>10} {:>11.3f} {:>10.3f} {:>8}\n", ++shown,
                c.material.name.substr(0, 28), c.material.youngs_modulus_Pa * 1e-6,
@@ -270,7 +272,6 @@ void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& can
   if (static_cast<int>(candidates.size()) > shown) {
     fmt::print(out, "  ... {} more (--top N, or --json for all)\n", candidates.size() - shown);
   }
-  (void)safety_factor;
 }
 
 }  // namespace
@@ -384,6 +385,18 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   }
   headline = Headline(verdict, candidates, recommendation, continuous.score, continuous.feasible,
                       r.design.space.max_thickness_m, r.thickness_m);
+  // DESIGN.md §5.3: say when a design works only with the covering bottomed out.
+  if (recommendation && candidates[*recommendation].score.peaks.fully_compressed) {
+    r.warnings.push_back(fmt::format(
+        "the recommended covering is fully compressed at the peak (the robot reaches the bone "
+        "through it): its margin rests on the stiff robot-bone phase of the model; a thicker "
+        "covering is more robust"));
+  }
+  if (continuous.score.peaks.fully_compressed) {
+    r.warnings.push_back(
+        "the continuous optimum is fully compressed at the peak (the robot reaches the bone "
+        "through the covering)");
+  }
   const bool from_ipopt = continuous.source == "ipopt";
   const optim::Termination termination = from_ipopt ? continuous.local.termination : global.termination;
 
@@ -403,7 +416,8 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                           {"laceration_ratio", c.score.laceration_ratio},
                           {"contusion_ratio", c.score.contusion_ratio},
                           {"margin", c.margin},
-                          {"safe", c.safe}};
+                          {"safe", c.safe},
+                          {"fully_compressed", c.score.peaks.fully_compressed}};
       j["recommendation"] = rec;
     } else {
       j["recommendation"] = nullptr;
@@ -487,7 +501,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   }
   fmt::print(out, "\nCandidates ({}){}", r.thickness_m ? "by margin at this thickness" : "by thinnest safe thickness",
              candidates.empty() ? ": none (the catalog filter left nothing)\n" : "");
-  PrintCandidates(out, candidates, r.runners_up, sf);
+  PrintCandidates(out, candidates, r.runners_up, r.thickness_m.has_value());
   if (std::any_of(candidates.begin(), candidates.end(), [](const CandidateOutcome& c) { return c.material.poisson_assumed; })) {
     fmt::print(out, "  * ν unknown for this material: 0.25 assumed\n");
   }
