@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include <covopt/optim/covering_design.hpp>
@@ -177,4 +178,23 @@ TEST_CASE("Bad design options are rejected naming the option", "[design]") {
   Scene broken;
   broken.robot.speed_m_per_s = -1;
   CHECK_THROWS_WITH(FindThinnestSafeCovering(broken, {}), Catch::Contains("robot.speed"));
+}
+
+TEST_CASE("Design searches run concurrently from several threads with identical results", "[design]") {
+  const std::vector<CandidateMaterial> materials = TableIv();
+  const ThinnestSafeCovering reference = FindThinnestSafeCovering(Scene{}, materials);
+  ThinnestSafeCovering results[2];
+  std::thread a([&] { results[0] = FindThinnestSafeCovering(Scene{}, materials); });
+  std::thread b([&] { results[1] = FindThinnestSafeCovering(Scene{}, materials); });
+  a.join();
+  b.join();
+  for (const ThinnestSafeCovering& r : results) {
+    CHECK(r.continuous.score.design.thickness_m == reference.continuous.score.design.thickness_m);
+    CHECK(r.continuous.score.design.youngs_modulus_Pa == reference.continuous.score.design.youngs_modulus_Pa);
+    REQUIRE(r.candidates.size() == reference.candidates.size());
+    for (std::size_t i = 0; i < r.candidates.size(); ++i) {
+      CHECK(r.candidates[i].material.name == reference.candidates[i].material.name);
+      CHECK(r.candidates[i].min_safe_thickness_m == reference.candidates[i].min_safe_thickness_m);
+    }
+  }
 }
