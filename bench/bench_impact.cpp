@@ -51,7 +51,7 @@ BENCHMARK(BM_ExactPeaksAndDuration)->Arg(0)->Arg(1)->ArgNames({"bare"});
 void BM_Cvode(benchmark::State& state) {
   const auto& model = Model(static_cast<int>(state.range(0)));
   covopt::TimeIntegrationOptions options;
-  options.method = state.range(1) == 0 ? covopt::CvodeMethod::kAdams : covopt::CvodeMethod::kBdf;
+  options.method = state.range(1) == 0 ? covopt::ComputationMethod::kCvodeAdams : covopt::ComputationMethod::kCvodeBdf;
   options.relative_tolerance = std::pow(10.0, -static_cast<double>(state.range(2)));
   covopt::TimeIntegrator integrator;
   long steps = 0;

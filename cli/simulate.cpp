@@ -231,9 +231,9 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
   TimeIntegrationOptions time;
   if (options.cvode_method) {
     if (*options.cvode_method == "adams") {
-      time.method = CvodeMethod::kAdams;
+      time.method = ComputationMethod::kCvodeAdams;
     } else if (*options.cvode_method == "bdf") {
-      time.method = CvodeMethod::kBdf;
+      time.method = ComputationMethod::kCvodeBdf;
     } else {
       throw InputError(fmt::format("--cvode-method: expected 'adams' or 'bdf' (got '{}')",
                                    *options.cvode_method));

@@ -39,8 +39,29 @@ std::string_view ToString(ComputationMethod method) noexcept {
     case ComputationMethod::kExact: return "exact";
     case ComputationMethod::kCvodeAdams: return "cvode-adams";
     case ComputationMethod::kCvodeBdf: return "cvode-bdf";
+    case ComputationMethod::kArkodeErk32: return "arkode-erk32";
+    case ComputationMethod::kArkodeErk54: return "arkode-erk54";
+    case ComputationMethod::kArkodeErk65: return "arkode-erk65";
+    case ComputationMethod::kArkodeErk87: return "arkode-erk87";
+    case ComputationMethod::kArkodeSdirk43: return "arkode-sdirk43";
+    case ComputationMethod::kArkodeEsdirk54: return "arkode-esdirk54";
   }
   return "unknown";
+}
+
+std::vector<ComputationMethod> TimeIntegrationMethods() {
+  return {ComputationMethod::kCvodeAdams,    ComputationMethod::kCvodeBdf,
+          ComputationMethod::kArkodeErk32,   ComputationMethod::kArkodeErk54,
+          ComputationMethod::kArkodeErk65,   ComputationMethod::kArkodeErk87,
+          ComputationMethod::kArkodeSdirk43, ComputationMethod::kArkodeEsdirk54};
+}
+
+std::optional<ComputationMethod> ParseComputationMethod(std::string_view name) noexcept {
+  if (name == ToString(ComputationMethod::kExact)) return ComputationMethod::kExact;
+  for (ComputationMethod method : TimeIntegrationMethods()) {
+    if (name == ToString(method)) return method;
+  }
+  return std::nullopt;
 }
 
 std::string_view ToString(SolveStatus status) noexcept {

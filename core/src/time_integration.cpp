@@ -1,40 +1,27 @@
-// The time path of DESIGN.md §3: CVODE with rootfinding and a restart at every phase switch.
+// The time path of DESIGN.md §3: a SUNDIALS integrator (CVODE or ARKODE) with rootfinding and
+// a restart at every phase switch.
 #include "covopt/core/time_integration.hpp"
 
-#include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
-#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <utility>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "numeric_format.hpp"
+#include "stepper.hpp"
 
 namespace covopt {
+namespace internal {
 namespace {
-
-constexpr int kRootCount = 3;
-constexpr int kRootUpperSwitch = 0;  // δ - end of the current segment, crossing upward
-constexpr int kRootLowerSwitch = 1;  // δ - start of the current segment, crossing downward
-constexpr int kRootTurn = 2;         // δ' = 0 going down: maximum compression
-constexpr long kWholeLaw = -1;       // segment index meaning "the full piecewise law"
-
-/// What the C callbacks see: the model and where the integration is.
-struct RunState {
-  const ImpactModel* model = nullptr;
-  long segment = 0;  // index into the law, or kWholeLaw when not restarting at switches
-  double inverse_mass = 0.0;
-  std::string* log = nullptr;
-};
 
 /// F and σ_c at δ, with the current segment's formula (continued beyond its ends).
 ContactState Law(const RunState& run, double delta) noexcept {
@@ -42,6 +29,8 @@ ContactState Law(const RunState& run, double delta) noexcept {
   if (run.segment == 0 && !(delta > 0.0)) return ContactState{};  // free flight
   return run.model->StateInSegment(static_cast<std::size_t>(run.segment), delta);
 }
+
+}  // namespace
 
 int RightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) {
   const auto& run = *static_cast<const RunState*>(user_data);
@@ -100,6 +89,20 @@ int Jacobian(sunrealtype /*t*/, N_Vector y, N_Vector /*fy*/, SUNMatrix jac, void
   return 0;
 }
 
+void CaptureMessage(int error_code, const char* module, const char* function, char* message,
+                    void* user_data) {
+  auto* log = static_cast<std::string*>(user_data);
+  if (!log) return;
+  if (!log->empty()) log->append("; ");
+  log->append(error_code > 0 ? "warning" : "error");  // CV_WARNING = ARK_WARNING = 99
+  log->append(" in ").append(module ? module : "?").append("::").append(function ? function : "?");
+  log->append(": ").append(message ? message : "");
+}
+
+}  // namespace internal
+
+namespace {
+
 /// The opening of a phase entered upward at x = 0 with speed v > 0. The solution is
 /// singular there (x^n with non-integer n: an order-q method needs steps ~ 0.1 t for many
 /// decades of t), so the first stretch τ* is taken from the phase's series solution
@@ -148,24 +151,6 @@ PhaseOpening OpenPhase(const ForceLawSegment& seg, double v, double inverse_mass
   return opening;
 }
 
-void CaptureMessage(int error_code, const char* module, const char* function, char* message,
-                    void* user_data) {
-  auto* log = static_cast<std::string*>(user_data);
-  if (!log) return;
-  if (!log->empty()) log->append("; ");
-  log->append(error_code == CV_WARNING ? "warning" : "error");
-  log->append(" in ").append(module ? module : "?").append("::").append(function ? function : "?");
-  log->append(": ").append(message ? message : "");
-}
-
-/// CVODE's name of a return flag (the C string is malloc'ed by CVODE).
-std::string FlagName(int flag) {
-  char* name = CVodeGetReturnFlagName(flag);
-  std::string text = name ? name : "unknown flag";
-  std::free(name);
-  return text + " (" + std::to_string(flag) + ")";
-}
-
 void ValidateOptions(const TimeIntegrationOptions& o) {
   using internal::FormatNumber;
   if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
@@ -185,24 +170,23 @@ void ValidateOptions(const TimeIntegrationOptions& o) {
     throw std::invalid_argument("max_steps must be >= 10 (got " + std::to_string(o.max_steps) +
                                 ")");
   }
-  if (o.method != CvodeMethod::kAdams && o.method != CvodeMethod::kBdf) {
-    throw std::invalid_argument("method must be adams or bdf");
+  if (o.method == ComputationMethod::kExact || ToString(o.method) == "unknown") {
+    throw std::invalid_argument("method must be a time-integration method (got " +
+                                std::string(ToString(o.method)) + ")");
   }
 }
 
 }  // namespace
 
-/// CVODE memory, vectors and solvers, created once per method and reused.
+/// The SUNDIALS context, vectors and one integrator per method, created on first use and
+/// reused for every run.
 struct TimeIntegrator::Workspace {
   SUNContext context = nullptr;
   N_Vector state = nullptr;
   N_Vector absolute_tolerances = nullptr;
   N_Vector dense_output = nullptr;
-  void* cvode[2] = {nullptr, nullptr};  // [Adams, BDF]
-  SUNNonlinearSolver fixed_point = nullptr;
-  SUNMatrix matrix = nullptr;
-  SUNLinearSolver linear_solver = nullptr;
-  RunState run;
+  std::array<std::unique_ptr<internal::Stepper>, 16> steppers;  // by ComputationMethod
+  internal::RunState run;
   std::string log;
 
   Workspace() {
@@ -215,12 +199,7 @@ struct TimeIntegrator::Workspace {
     N_VEnableFusedOps_Serial(state, SUNTRUE);
   }
   ~Workspace() {
-    for (void*& mem : cvode) {
-      if (mem) CVodeFree(&mem);
-    }
-    if (fixed_point) SUNNonlinSolFree(fixed_point);
-    if (linear_solver) SUNLinSolFree(linear_solver);
-    if (matrix) SUNMatDestroy(matrix);
+    for (auto& stepper : steppers) stepper.reset();  // before the context they use
     if (absolute_tolerances) N_VDestroy(absolute_tolerances);
     if (dense_output) N_VDestroy(dense_output);
     if (state) N_VDestroy(state);
@@ -229,63 +208,17 @@ struct TimeIntegrator::Workspace {
   Workspace(const Workspace&) = delete;
   Workspace& operator=(const Workspace&) = delete;
 
-  /// The CVODE memory of a method, created and configured on first use.
-  void* Memory(CvodeMethod method) {
-    const int k = method == CvodeMethod::kAdams ? 0 : 1;
-    if (cvode[k]) return cvode[k];
-    void* mem = CVodeCreate(method == CvodeMethod::kAdams ? CV_ADAMS : CV_BDF, context);
-    if (!mem) throw std::runtime_error("CVodeCreate failed");
-    cvode[k] = mem;
-    CVodeSetErrHandlerFn(mem, CaptureMessage, &log);
-    N_VConst(0.0, state);
-    if (CVodeInit(mem, RightHandSide, 0.0, state) != CV_SUCCESS) {
-      throw std::runtime_error("CVodeInit failed: " + log);
+  internal::Stepper& StepperFor(ComputationMethod method) {
+    auto& slot = steppers[static_cast<std::size_t>(method)];
+    if (!slot) {
+      const internal::StepperResources resources{context, state, &run, &log};
+      const bool cvode = method == ComputationMethod::kCvodeAdams || method == ComputationMethod::kCvodeBdf;
+      slot = cvode ? internal::MakeCvodeStepper(method, resources)
+                   : internal::MakeArkodeStepper(method, resources);
     }
-    CVodeSetUserData(mem, &run);
-    CVodeRootInit(mem, kRootCount, RootFunctions);
-    int directions[kRootCount] = {+1, -1, -1};
-    CVodeSetRootDirection(mem, directions);
-    CVodeSetNoInactiveRootWarn(mem);
-    CVodeSetMaxHnilWarns(mem, -1);
-    if (method == CvodeMethod::kAdams) {
-      fixed_point = SUNNonlinSol_FixedPoint(state, 0, context);
-      CVodeSetNonlinearSolver(mem, fixed_point);
-    } else {
-      matrix = SUNDenseMatrix(3, 3, context);
-      linear_solver = SUNLinSol_Dense(state, matrix, context);
-      CVodeSetLinearSolver(mem, linear_solver, matrix);
-      CVodeSetJacFn(mem, Jacobian);
-    }
-    return mem;
+    return *slot;
   }
 };
-
-namespace {
-
-void AddStatistics(void* mem, CvodeMethod method, SolverStatistics& stats) {
-  long steps = 0, rhs = 0, roots = 0, iterations = 0, error_fails = 0, convergence_fails = 0;
-  CVodeGetNumSteps(mem, &steps);
-  CVodeGetNumRhsEvals(mem, &rhs);
-  CVodeGetNumGEvals(mem, &roots);
-  CVodeGetNumNonlinSolvIters(mem, &iterations);
-  CVodeGetNumErrTestFails(mem, &error_fails);
-  CVodeGetNumNonlinSolvConvFails(mem, &convergence_fails);
-  stats.steps += steps;
-  stats.rhs_evaluations += rhs;
-  stats.root_evaluations += roots;
-  stats.nonlinear_iterations += iterations;
-  stats.error_test_failures += error_fails;
-  stats.convergence_failures += convergence_fails;
-  if (method == CvodeMethod::kBdf) {
-    long jacobians = 0, ls_rhs = 0;
-    CVodeGetNumJacEvals(mem, &jacobians);
-    CVodeGetNumLinRhsEvals(mem, &ls_rhs);
-    stats.jacobian_evaluations += jacobians;
-    stats.rhs_evaluations += ls_rhs;
-  }
-}
-
-}  // namespace
 
 TimeIntegrator::TimeIntegrator() : workspace_(std::make_unique<Workspace>()) {}
 TimeIntegrator::~TimeIntegrator() = default;
@@ -297,16 +230,14 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
   ValidateOptions(options);
   Workspace& ws = *workspace_;
   ws.log.clear();
-  void* mem = ws.Memory(options.method);
+  internal::Stepper& stepper = ws.StepperFor(options.method);
 
   ImpactResult result;
-  result.method = options.method == CvodeMethod::kAdams ? ComputationMethod::kCvodeAdams
-                                                        : ComputationMethod::kCvodeBdf;
-  RunState& run = ws.run;
+  result.method = options.method;
+  internal::RunState& run = ws.run;
   run.model = &model;
-  run.segment = options.restart_at_phase_switches ? 0 : kWholeLaw;
+  run.segment = options.restart_at_phase_switches ? 0 : internal::kWholeLaw;
   run.inverse_mass = 1.0 / model.effective_mass_kg();
-  run.log = &ws.log;
 
   // Natural scales: L from phase 1 alone (an upper estimate of δ_max), v0, and the energy
   // density phase 1 would reach at L. The absolute tolerances are relative to them.
@@ -346,7 +277,7 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
       const int gaps = static_cast<int>(std::ceil((time - last) / interval));
       for (int k = 1; k < gaps; ++k) {
         const double tk = last + (time - last) * k / gaps;
-        if (CVodeGetDky(mem, tk, 0, ws.dense_output) == CV_SUCCESS) {
+        if (stepper.Interpolate(tk, ws.dense_output) == internal::kStepTaken) {
           push_sample(tk, N_VGetArrayPointer(ws.dense_output));
         }
       }
@@ -357,7 +288,7 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
   // takes the phase's series opening; CVODE starts after it with a step a tenth of it.
   auto restart = [&](bool upward) {
     double first_step = 0.0;  // 0: CVODE estimates (downward entries are smooth)
-    if (upward && run.segment != kWholeLaw && y[1] > 0.0) {
+    if (upward && run.segment != internal::kWholeLaw && y[1] > 0.0) {
       const std::size_t j = static_cast<std::size_t>(run.segment);
       const ForceLawSegment& seg = model.segment(j);
       if (seg.origin_m == seg.start_m) {
@@ -388,21 +319,21 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
         }
       }
     }
-    int flag = CVodeReInit(mem, t, ws.state);
-    if (flag == CV_SUCCESS) flag = CVodeSetInitStep(mem, first_step);
+    int flag = stepper.ReInit(t, ws.state);
+    if (flag == internal::kStepTaken) flag = stepper.SetInitStep(first_step);
     return flag;
   };
   auto fail = [&](SolveStatus status, int code, const std::string& what) {
     result.status = status;
     result.raw_code = code;
     result.message = what;
-    if (!ws.log.empty()) result.message += " (CVODE: " + ws.log + ")";
+    if (!ws.log.empty()) result.message += " (SUNDIALS: " + ws.log + ")";
   };
 
   record(0.0);
   int flag = restart(true);
-  if (flag == CV_SUCCESS) {
-    flag = CVodeSVtolerances(mem, options.relative_tolerance, ws.absolute_tolerances);
+  if (flag == internal::kStepTaken) {
+    flag = stepper.SetTolerances(options.relative_tolerance, ws.absolute_tolerances);
   }
   bool at_max = false;
   bool separated = false;
@@ -410,17 +341,17 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
   const double horizon = 1e3 * time_scale;  // only orients CVODE's first step (one-step mode)
 
   while (flag >= 0 && !separated) {
-    flag = CVode(mem, t + horizon, ws.state, &t, CV_ONE_STEP);
-    if (flag == CV_SUCCESS) {
+    flag = stepper.Step(t + horizon, ws.state, &t);
+    if (flag == internal::kStepTaken) {
       record(t, true);
       if (++steps_taken >= options.max_steps) break;
       continue;
     }
-    if (flag != CV_ROOT_RETURN) break;
-    int found[kRootCount] = {0, 0, 0};
-    CVodeGetRootInfo(mem, found);
+    if (flag != internal::kRootFound) break;
+    int found[internal::kRootCount] = {0, 0, 0};
+    stepper.RootInfo(found);
     record(t, true);
-    if (found[kRootTurn] && !at_max) {
+    if (found[internal::kRootTurn] && !at_max) {
       at_max = true;
       const ContactState contact = model.StateAt(y[0]);
       result.peaks.max_penetration_m = y[0];
@@ -435,34 +366,34 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
       result.time_of_max_compression_s = t;
       continue;  // the law is smooth here: no restart
     }
-    if (found[kRootLowerSwitch] && at_max) {
-      if (run.segment == 0 || run.segment == kWholeLaw) {
+    if (found[internal::kRootLowerSwitch] && at_max) {
+      if (run.segment == 0 || run.segment == internal::kWholeLaw) {
         separated = true;
         result.contact_duration_s = t;
         result.rebound_speed_m_per_s = -y[1];
         break;
       }
       --run.segment;
-      AddStatistics(mem, options.method, result.statistics);
+      stepper.AddStatistics(result.statistics);
       ++result.statistics.restarts;
       flag = restart(false);
       continue;
     }
-    if (found[kRootUpperSwitch] && !at_max) {
+    if (found[internal::kRootUpperSwitch] && !at_max) {
       ++run.segment;
-      AddStatistics(mem, options.method, result.statistics);
+      stepper.AddStatistics(result.statistics);
       ++result.statistics.restarts;
       flag = restart(true);
       continue;
     }
   }
-  AddStatistics(mem, options.method, result.statistics);
+  stepper.AddStatistics(result.statistics);
 
   if (flag < 0) {
-    fail(flag == CV_TOO_MUCH_WORK ? SolveStatus::kStepLimit : SolveStatus::kSolverFailure, flag,
-         "CVODE returned " + FlagName(flag));
+    fail(flag == internal::kTooMuchWork ? SolveStatus::kStepLimit : SolveStatus::kSolverFailure, flag,
+         std::string(ToString(options.method)) + " returned " + stepper.FlagName(flag));
   } else if (!separated && steps_taken >= options.max_steps) {
-    fail(SolveStatus::kStepLimit, CV_TOO_MUCH_WORK,
+    fail(SolveStatus::kStepLimit, internal::kTooMuchWork,
          "step limit of " + std::to_string(options.max_steps) + " steps reached before separation");
   } else if (!separated || !at_max) {
     fail(SolveStatus::kEventMissed, flag, "the integration ended without locating maximum compression and separation");

@@ -210,7 +210,7 @@ TEST_CASE("simulate --method cvode reports what SimulateImpact computes with the
                           "1e-9", "--cvode-method", "bdf"});
   REQUIRE(run.exit_code == 0);
   covopt::TimeIntegrationOptions options;
-  options.method = covopt::CvodeMethod::kBdf;
+  options.method = covopt::ComputationMethod::kCvodeBdf;
   options.relative_tolerance = 1e-8;
   options.absolute_tolerance = 1e-9;
   const auto result = covopt::SimulateImpact(covopt::ImpactModel::FromScene({}), options);

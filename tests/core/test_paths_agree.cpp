@@ -58,14 +58,14 @@ std::vector<NamedScene> GeneratedScenes() {
   return scenes;
 }
 
-void CheckAgreement(const NamedScene& named, CvodeMethod method, double rtol, double limit) {
+void CheckAgreement(const NamedScene& named, ComputationMethod method, double rtol, double limit) {
   const ImpactModel model = ImpactModel::FromScene(named.scene);
   const ImpactResult exact = SolveExact(model);
   TimeIntegrationOptions options;
   options.method = method;
   if (rtol > 0) options.relative_tolerance = rtol;
   const ImpactResult simulated = SimulateImpact(model, options);
-  INFO(named.name << ", " << (method == CvodeMethod::kAdams ? "Adams" : "BDF") << ", rtol "
+  INFO(named.name << ", " << (method == ComputationMethod::kCvodeAdams ? "Adams" : "BDF") << ", rtol "
                   << options.relative_tolerance << ": " << simulated.message);
   REQUIRE(simulated.ok());
   REQUIRE(simulated.contact_duration_s.has_value());
@@ -85,11 +85,11 @@ void CheckAgreement(const NamedScene& named, CvodeMethod method, double rtol, do
 }  // namespace
 
 TEST_CASE("Time path agrees with the exact path to 1e-6 at default tolerances", "[agree]") {
-  const auto method = GENERATE(CvodeMethod::kAdams, CvodeMethod::kBdf);
+  const auto method = GENERATE(ComputationMethod::kCvodeAdams, ComputationMethod::kCvodeBdf);
   for (const NamedScene& named : GeneratedScenes()) CheckAgreement(named, method, 0.0, 1e-6);
 }
 
 TEST_CASE("Time path agrees with the exact path to 1e-9 at tight tolerances", "[agree]") {
-  const auto method = GENERATE(CvodeMethod::kAdams, CvodeMethod::kBdf);
+  const auto method = GENERATE(ComputationMethod::kCvodeAdams, ComputationMethod::kCvodeBdf);
   for (const NamedScene& named : GeneratedScenes()) CheckAgreement(named, method, 1e-12, 1e-9);
 }

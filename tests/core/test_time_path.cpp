@@ -73,7 +73,7 @@ TEST_CASE("Statistics are reported", "[time]") {
   CHECK(result.statistics.root_evaluations > 0);
   CHECK(result.statistics.jacobian_evaluations == 0);  // Adams: fixed point, no Jacobian
   TimeIntegrationOptions bdf;
-  bdf.method = CvodeMethod::kBdf;
+  bdf.method = ComputationMethod::kCvodeBdf;
   const ImpactResult newton = SimulateImpact(ImpactModel::FromScene(PaperScene(0.015)), bdf);
   CHECK(newton.method == ComputationMethod::kCvodeBdf);
   CHECK(newton.statistics.jacobian_evaluations > 0);
@@ -86,7 +86,7 @@ TEST_CASE("A reused workspace gives bit-identical results", "[time]") {
   const ImpactResult first = integrator.Simulate(a);
   (void)integrator.Simulate(b);
   TimeIntegrationOptions bdf;
-  bdf.method = CvodeMethod::kBdf;
+  bdf.method = ComputationMethod::kCvodeBdf;
   (void)integrator.Simulate(b, bdf);
   const ImpactResult again = integrator.Simulate(a);
   CHECK(again.peaks.max_penetration_m == first.peaks.max_penetration_m);

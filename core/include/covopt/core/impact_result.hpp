@@ -46,14 +46,25 @@ struct InjuryAssessment {
 /// Judges peaks against limits.
 InjuryAssessment Assess(const ImpactPeaks& peaks, const InjuryLimits& limits = {}) noexcept;
 
-/// Which path produced a result.
+/// Which path produced a result: the exact path, or one SUNDIALS integrator.
 enum class ComputationMethod {
-  kExact,       ///< energy balance and quadrature (no integration)
-  kCvodeAdams,  ///< SUNDIALS CVODE, Adams-Moulton with fixed-point iteration
-  kCvodeBdf,    ///< SUNDIALS CVODE, BDF with Newton iteration and analytic Jacobian
+  kExact,           ///< energy balance and quadrature (no integration)
+  kCvodeAdams,      ///< CVODE, Adams-Moulton (orders 1-12) with fixed-point iteration
+  kCvodeBdf,        ///< CVODE, BDF (orders 1-5), Newton with the analytic Jacobian
+  kArkodeErk32,     ///< ARKODE explicit RK, Bogacki-Shampine 3(2)
+  kArkodeErk54,     ///< ARKODE explicit RK, Dormand-Prince 5(4)
+  kArkodeErk65,     ///< ARKODE explicit RK, Verner 6(5)
+  kArkodeErk87,     ///< ARKODE explicit RK, Fehlberg 8(7)
+  kArkodeSdirk43,   ///< ARKODE diagonally implicit RK, SDIRK 4(3) (5 stages), Newton
+  kArkodeEsdirk54,  ///< ARKODE diagonally implicit RK, ARK5(4)8L[2]SA ESDIRK, Newton
 };
-/// "exact", "cvode-adams", "cvode-bdf".
+/// "exact", "cvode-adams", "cvode-bdf", "arkode-erk32", "arkode-erk54", "arkode-erk65",
+/// "arkode-erk87", "arkode-sdirk43", "arkode-esdirk54".
 std::string_view ToString(ComputationMethod method) noexcept;
+/// The inverse of ToString; empty for an unknown name.
+std::optional<ComputationMethod> ParseComputationMethod(std::string_view name) noexcept;
+/// Every time-integration method, in the order above.
+std::vector<ComputationMethod> TimeIntegrationMethods();
 
 /// Outcome of a computation. Numerical outcomes are values, not exceptions.
 enum class SolveStatus {

@@ -22,19 +22,12 @@
 
 namespace covopt {
 
-/// The linear multistep family CVODE uses.
-enum class CvodeMethod {
-  /// Adams-Moulton (orders 1-12) with fixed-point iteration: no Jacobian, no linear solve.
-  /// The problem is not stiff, so this is the default (faster by measurement, see bench/).
-  kAdams,
-  /// BDF (orders 1-5) with Newton iteration on a dense 3x3 analytic Jacobian.
-  kBdf,
-};
-
 /// Options of the time path. Defaults deliver peaks and duration within 1e-6 relative of
 /// the exact path on the test scenes (tests/core/test_paths_agree.cpp).
 struct TimeIntegrationOptions {
-  CvodeMethod method = CvodeMethod::kAdams;
+  /// The integrator (any ComputationMethod but kExact). CVODE Adams is the default: the
+  /// problem is not stiff, and it is the fastest at equal accuracy (bench/, docs/).
+  ComputationMethod method = ComputationMethod::kCvodeAdams;
   /// Relative tolerance of CVODE's local error test [-], in [1e-14, 1e-2].
   double relative_tolerance = 1e-8;
   /// Absolute tolerance [-], in (0, 1e-2], made dimensional per component by the scene's

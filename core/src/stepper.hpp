@@ -1,0 +1,73 @@
+#pragma once
+// Private: one SUNDIALS integrator (CVODE or ARKODE's ARKStep) behind the few calls the
+// event loop of time_integration.cpp needs. Both packages share their return-code
+// conventions (0 success, 2 root found, negative failure; -1 too much work).
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
+
+#include <memory>
+#include <string>
+
+#include "covopt/core/impact_model.hpp"
+#include "covopt/core/impact_result.hpp"
+
+namespace covopt::internal {
+
+inline constexpr int kRootCount = 3;
+inline constexpr int kRootUpperSwitch = 0;  // δ - end of the current segment, crossing upward
+inline constexpr int kRootLowerSwitch = 1;  // δ - start of the current segment, crossing downward
+inline constexpr int kRootTurn = 2;         // δ' = 0 going down: maximum compression
+inline constexpr long kWholeLaw = -1;       // segment index meaning "the full piecewise law"
+inline constexpr int kStepTaken = 0;        // CV_SUCCESS == ARK_SUCCESS
+inline constexpr int kRootFound = 2;        // CV_ROOT_RETURN == ARK_ROOT_RETURN
+inline constexpr int kTooMuchWork = -1;     // CV_TOO_MUCH_WORK == ARK_TOO_MUCH_WORK
+
+/// What the C callbacks see: the model and where the integration is.
+struct RunState {
+  const ImpactModel* model = nullptr;
+  long segment = 0;  // index into the law, or kWholeLaw when not restarting at switches
+  double inverse_mass = 0.0;
+};
+
+// The callbacks, shared by every integrator (same C signatures in CVODE and ARKODE).
+int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data);
+int RootFunctions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data);
+int Jacobian(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix jac, void* user_data, N_Vector,
+             N_Vector, N_Vector);
+void CaptureMessage(int error_code, const char* module, const char* function, char* message,
+                    void* user_data);
+
+/// One configured integrator. Created once per method and workspace, re-initialised for every
+/// run and at every phase switch.
+class Stepper {
+ public:
+  virtual ~Stepper() = default;
+  /// Restart at (t0, y0) with the same right-hand side; the step history is dropped.
+  virtual int ReInit(double t0, N_Vector y0) = 0;
+  virtual int SetTolerances(double relative, N_Vector absolute) = 0;
+  /// First step of the next integration interval; 0 lets the integrator estimate it.
+  virtual int SetInitStep(double step) = 0;
+  /// One internal step towards tout (one-step mode); y and t receive the new state.
+  virtual int Step(double tout, N_Vector y, double* t) = 0;
+  virtual void RootInfo(int* found) = 0;
+  /// The dense-output state at time t inside the last step.
+  virtual int Interpolate(double t, N_Vector out) = 0;
+  /// Adds this interval's counters (they are reset by ReInit).
+  virtual void AddStatistics(SolverStatistics& stats) = 0;
+  virtual std::string FlagName(int flag) = 0;
+};
+
+/// Shared SUNDIALS objects a stepper is built on.
+struct StepperResources {
+  SUNContext context = nullptr;
+  N_Vector state = nullptr;  // template for the integrator's vectors
+  RunState* run = nullptr;
+  std::string* log = nullptr;
+};
+
+std::unique_ptr<Stepper> MakeCvodeStepper(ComputationMethod method, const StepperResources& r);
+std::unique_ptr<Stepper> MakeArkodeStepper(ComputationMethod method, const StepperResources& r);
+
+}  // namespace covopt::internal

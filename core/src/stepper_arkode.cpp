@@ -1,0 +1,179 @@
+// ARKODE: explicit RK tables with ERKStep (the lean explicit module), diagonally implicit RK
+// with ARKStep and Newton on the analytic Jacobian.
+#include <arkode/arkode_arkstep.h>
+#include <arkode/arkode_erkstep.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "stepper.hpp"
+
+namespace covopt::internal {
+namespace {
+
+bool IsImplicit(ComputationMethod method) {
+  return method == ComputationMethod::kArkodeSdirk43 || method == ComputationMethod::kArkodeEsdirk54;
+}
+
+ARKODE_ERKTableID ExplicitTable(ComputationMethod method) {
+  switch (method) {
+    case ComputationMethod::kArkodeErk32: return ARKODE_BOGACKI_SHAMPINE_4_2_3;
+    case ComputationMethod::kArkodeErk54: return ARKODE_DORMAND_PRINCE_7_4_5;
+    case ComputationMethod::kArkodeErk65: return ARKODE_VERNER_8_5_6;
+    case ComputationMethod::kArkodeErk87: return ARKODE_FEHLBERG_13_7_8;
+    default: return ARKODE_ERK_NONE;
+  }
+}
+
+ARKODE_DIRKTableID ImplicitTable(ComputationMethod method) {
+  switch (method) {
+    case ComputationMethod::kArkodeSdirk43: return ARKODE_SDIRK_5_3_4;
+    case ComputationMethod::kArkodeEsdirk54: return ARKODE_ARK548L2SA_DIRK_8_4_5;
+    default: return ARKODE_DIRK_NONE;
+  }
+}
+
+class ArkodeStepper final : public Stepper {
+ public:
+  ArkodeStepper(ComputationMethod method, const StepperResources& r) : implicit_(IsImplicit(method)) {
+    N_VConst(0.0, r.state);
+    fe_ = implicit_ ? nullptr : RightHandSide;
+    fi_ = implicit_ ? RightHandSide : nullptr;
+    mem_ = ARKStepCreate(fe_, fi_, 0.0, r.state, r.context);
+    if (!mem_) throw std::runtime_error("ARKStepCreate failed");
+    ARKStepSetErrHandlerFn(mem_, CaptureMessage, r.log);
+    ARKStepSetUserData(mem_, r.run);
+    if (ARKStepSetTableNum(mem_, ImplicitTable(method), ExplicitTable(method)) != ARK_SUCCESS) {
+      throw std::runtime_error("ARKStepSetTableNum failed: " + *r.log);
+    }
+    ARKStepRootInit(mem_, kRootCount, RootFunctions);
+    int directions[kRootCount] = {+1, -1, -1};
+    ARKStepSetRootDirection(mem_, directions);
+    ARKStepSetNoInactiveRootWarn(mem_);
+    ARKStepSetMaxHnilWarns(mem_, -1);
+    if (implicit_) {
+      matrix_ = SUNDenseMatrix(3, 3, r.context);
+      linear_solver_ = SUNLinSol_Dense(r.state, matrix_, r.context);
+      ARKStepSetLinearSolver(mem_, linear_solver_, matrix_);
+      ARKStepSetJacFn(mem_, Jacobian);
+    }
+  }
+  ~ArkodeStepper() override {
+    ARKStepFree(&mem_);
+    if (linear_solver_) SUNLinSolFree(linear_solver_);
+    if (matrix_) SUNMatDestroy(matrix_);
+  }
+  ArkodeStepper(const ArkodeStepper&) = delete;
+  ArkodeStepper& operator=(const ArkodeStepper&) = delete;
+
+  int ReInit(double t0, N_Vector y0) override { return ARKStepReInit(mem_, fe_, fi_, t0, y0); }
+  int SetTolerances(double relative, N_Vector absolute) override {
+    return ARKStepSVtolerances(mem_, relative, absolute);
+  }
+  int SetInitStep(double step) override { return ARKStepSetInitStep(mem_, step); }
+  int Step(double tout, N_Vector y, double* t) override {
+    return ARKStepEvolve(mem_, tout, y, t, ARK_ONE_STEP);
+  }
+  void RootInfo(int* found) override { ARKStepGetRootInfo(mem_, found); }
+  int Interpolate(double t, N_Vector out) override { return ARKStepGetDky(mem_, t, 0, out); }
+  void AddStatistics(SolverStatistics& stats) override {
+    long steps = 0, fe = 0, fi = 0, roots = 0, error_fails = 0;
+    ARKStepGetNumSteps(mem_, &steps);
+    ARKStepGetNumRhsEvals(mem_, &fe, &fi);
+    ARKStepGetNumGEvals(mem_, &roots);
+    ARKStepGetNumErrTestFails(mem_, &error_fails);
+    stats.steps += steps;
+    stats.rhs_evaluations += fe + fi;
+    stats.root_evaluations += roots;
+    stats.error_test_failures += error_fails;
+    if (implicit_) {
+      long iterations = 0, convergence_fails = 0, jacobians = 0, ls_rhs = 0;
+      ARKStepGetNumNonlinSolvIters(mem_, &iterations);
+      ARKStepGetNumNonlinSolvConvFails(mem_, &convergence_fails);
+      ARKStepGetNumJacEvals(mem_, &jacobians);
+      ARKStepGetNumLinRhsEvals(mem_, &ls_rhs);
+      stats.nonlinear_iterations += iterations;
+      stats.convergence_failures += convergence_fails;
+      stats.jacobian_evaluations += jacobians;
+      stats.rhs_evaluations += ls_rhs;
+    }
+  }
+  std::string FlagName(int flag) override {
+    char* name = ARKStepGetReturnFlagName(flag);  // malloc'ed by ARKODE
+    std::string text = name ? name : "unknown flag";
+    std::free(name);
+    return text + " (" + std::to_string(flag) + ")";
+  }
+
+ private:
+  bool implicit_ = false;
+  ARKRhsFn fe_ = nullptr;
+  ARKRhsFn fi_ = nullptr;
+  void* mem_ = nullptr;
+  SUNMatrix matrix_ = nullptr;
+  SUNLinearSolver linear_solver_ = nullptr;
+};
+
+class ErkStepper final : public Stepper {
+ public:
+  ErkStepper(ComputationMethod method, const StepperResources& r) {
+    N_VConst(0.0, r.state);
+    mem_ = ERKStepCreate(RightHandSide, 0.0, r.state, r.context);
+    if (!mem_) throw std::runtime_error("ERKStepCreate failed");
+    ERKStepSetErrHandlerFn(mem_, CaptureMessage, r.log);
+    ERKStepSetUserData(mem_, r.run);
+    if (ERKStepSetTableNum(mem_, ExplicitTable(method)) != ARK_SUCCESS) {
+      throw std::runtime_error("ERKStepSetTableNum failed: " + *r.log);
+    }
+    ERKStepRootInit(mem_, kRootCount, RootFunctions);
+    int directions[kRootCount] = {+1, -1, -1};
+    ERKStepSetRootDirection(mem_, directions);
+    ERKStepSetNoInactiveRootWarn(mem_);
+    ERKStepSetMaxHnilWarns(mem_, -1);
+  }
+  ~ErkStepper() override { ERKStepFree(&mem_); }
+  ErkStepper(const ErkStepper&) = delete;
+  ErkStepper& operator=(const ErkStepper&) = delete;
+
+  int ReInit(double t0, N_Vector y0) override { return ERKStepReInit(mem_, RightHandSide, t0, y0); }
+  int SetTolerances(double relative, N_Vector absolute) override {
+    return ERKStepSVtolerances(mem_, relative, absolute);
+  }
+  int SetInitStep(double step) override { return ERKStepSetInitStep(mem_, step); }
+  int Step(double tout, N_Vector y, double* t) override {
+    return ERKStepEvolve(mem_, tout, y, t, ARK_ONE_STEP);
+  }
+  void RootInfo(int* found) override { ERKStepGetRootInfo(mem_, found); }
+  int Interpolate(double t, N_Vector out) override { return ERKStepGetDky(mem_, t, 0, out); }
+  void AddStatistics(SolverStatistics& stats) override {
+    long steps = 0, rhs = 0, roots = 0, error_fails = 0;
+    ERKStepGetNumSteps(mem_, &steps);
+    ERKStepGetNumRhsEvals(mem_, &rhs);
+    ERKStepGetNumGEvals(mem_, &roots);
+    ERKStepGetNumErrTestFails(mem_, &error_fails);
+    stats.steps += steps;
+    stats.rhs_evaluations += rhs;
+    stats.root_evaluations += roots;
+    stats.error_test_failures += error_fails;
+  }
+  std::string FlagName(int flag) override {
+    char* name = ERKStepGetReturnFlagName(flag);  // malloc'ed by ARKODE
+    std::string text = name ? name : "unknown flag";
+    std::free(name);
+    return text + " (" + std::to_string(flag) + ")";
+  }
+
+ private:
+  void* mem_ = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<Stepper> MakeArkodeStepper(ComputationMethod method, const StepperResources& r) {
+  if (IsImplicit(method)) return std::make_unique<ArkodeStepper>(method, r);
+  return std::make_unique<ErkStepper>(method, r);
+}
+
+}  // namespace covopt::internal
