@@ -1,0 +1,43 @@
+// libFuzzer target: the scene-file parser (cli/scene_file.cpp), then the model on what it
+// accepts. Bad input must end in covopt::cli::InputError (scene file) or
+// std::invalid_argument (ImpactModel::FromScene); a scene that validates must give finite,
+// positive exact peaks and contact duration. Anything else (a crash, a sanitizer report,
+// another exception, a NaN) is a finding.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <stdexcept>
+#include <string_view>
+
+#include "covopt/core/exact.hpp"
+#include "covopt/core/impact_model.hpp"
+#include "covopt/core/impact_result.hpp"
+#include "covopt/core/scene.hpp"
+#include "errors.hpp"
+#include "scene_file.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  covopt::Scene scene;
+  try {
+    covopt::cli::ApplySceneToml(text, "fuzz.toml", scene);
+  } catch (const covopt::cli::InputError&) {
+    return 0;
+  }
+  try {
+    const covopt::ImpactModel model = covopt::ImpactModel::FromScene(scene);
+    const covopt::ImpactResult result = covopt::SolveExact(model);
+    const covopt::ImpactPeaks& peaks = result.peaks;
+    if (!result.ok() || !std::isfinite(peaks.max_penetration_m) ||
+        !std::isfinite(peaks.peak_force_N) || !std::isfinite(peaks.max_tensile_stress_Pa) ||
+        !std::isfinite(peaks.max_energy_density_J_per_m2) ||
+        !(peaks.max_penetration_m > 0.0) ||
+        (result.contact_duration_s && !(std::isfinite(*result.contact_duration_s) &&
+                                        *result.contact_duration_s > 0.0))) {
+      std::abort();  // a validated scene gave a non-finite or empty result
+    }
+  } catch (const std::invalid_argument&) {
+  }
+  return 0;
+}
