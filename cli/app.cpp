@@ -10,6 +10,7 @@
 #include "materials_command.hpp"
 #include "optimize.hpp"
 #include "simulate.hpp"
+#include "sweep.hpp"
 
 #ifndef COVOPT_VERSION
 #define COVOPT_VERSION "unknown"
@@ -33,6 +34,8 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   CLI::App* materials = SetupMaterials(app, materials_options);
   OptimizeOptions optimize_options;
   CLI::App* optimize = SetupOptimize(app, optimize_options);
+  SweepOptions sweep_options;
+  CLI::App* sweep = SetupSweep(app, sweep_options);
 
   try {
     app.parse(argc, argv);
@@ -51,6 +54,7 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     if (simulate->parsed()) return RunSimulate(simulate_options, out, err);
     if (materials->parsed()) return RunMaterials(materials_options, out, err);
     if (optimize->parsed()) return RunOptimize(optimize_options, out, err);
+    if (sweep->parsed()) return RunSweep(sweep_options, out, err);
   } catch (const std::exception& e) {
     fmt::print(err, "covopt: internal error: {}\n", e.what());
     return 1;

@@ -179,12 +179,22 @@ std::string GnuplotScript(const SimulationReport& report, PlotFormat format,
   return s;
 }
 
+std::string GnuplotQuoted(std::string_view text) { return SingleQuoted(text); }
+
 void PlotHistory(const std::filesystem::path& path, const SimulationReport& report,
                  PlotFormat format) {
-  const std::string target = path.string();
   if (report.result.history.empty()) {
-    throw OutputError(fmt::format("cannot plot '{}': the result has no history", target));
+    throw OutputError(
+        fmt::format("cannot plot '{}': the result has no history", path.string()));
   }
+  RunGnuplot(path, [&](const std::string& output_path) {
+    return GnuplotScript(report, format, output_path);
+  });
+}
+
+void RunGnuplot(const std::filesystem::path& path,
+                const std::function<std::string(const std::string& output_path)>& make_script) {
+  const std::string target = path.string();
   if (!FindOnPath("gnuplot")) throw OutputError(std::string(kGnuplotMissing));
 
   const std::filesystem::path directory =
@@ -197,7 +207,7 @@ void PlotHistory(const std::filesystem::path& path, const SimulationReport& repo
   TempFile log(temp_directory, "covopt-gnuplot-log-");
   {
     std::ofstream out(script.path(), std::ios::binary);
-    out << GnuplotScript(report, format, output.path());
+    out << make_script(output.path());
     if (!out.flush()) {
       throw OutputError(fmt::format("cannot write the gnuplot script '{}'", script.path()));
     }

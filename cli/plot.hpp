@@ -8,6 +8,7 @@
 /// it), SVG the svg terminal.
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,6 +33,16 @@ inline constexpr std::string_view kGnuplotMissing =
 /// axis) against time [ms] from report.result.history into `output_path`.
 std::string GnuplotScript(const SimulationReport& report, PlotFormat format,
                           const std::string& output_path);
+
+/// Runs the gnuplot script `make_script(temporary_output)` and renames the temporary
+/// output (next to `path`) over `path` once gnuplot has drawn it: any chart, atomically.
+/// @throws OutputError when gnuplot is missing or fails (with its messages), or the file
+///         cannot be written.
+void RunGnuplot(const std::filesystem::path& path,
+                const std::function<std::string(const std::string& output_path)>& make_script);
+
+/// A gnuplot single-quoted string (a quote doubled), for titles, labels and file names.
+std::string GnuplotQuoted(std::string_view text);
 
 /// Draws the chart into `path`.
 /// @throws OutputError when gnuplot is missing or fails (with its messages), or the file

@@ -2,6 +2,7 @@
 /// @file core.hpp
 /// Everything of covopt::core: scene, force law, exact path, time path.
 #include "covopt/core/exact.hpp"
+#include "covopt/core/grid.hpp"
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"

@@ -1,0 +1,774 @@
+#include "sweep.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+#include <fmt/ranges.h>
+
+#include "covopt/core/impact_model.hpp"
+#include "errors.hpp"
+#include "materials_command.hpp"
+#include "output.hpp"
+#include "plot.hpp"
+#include "quantity.hpp"
+
+namespace covopt::cli {
+namespace {
+
+constexpr std::size_t kDefaultCount = 50;
+constexpr int kMaxThreads = 4096;
+
+constexpr std::string_view kFooter = R"(An axis is NAME=LO..HI[:lin|:log][:N] (N values, default 50, linear unless
+:log) or NAME=V1,V2,... (the values as listed; a mass may be 'fixed', the
+robot radius 'flat'). NAME is a scene flag without its dashes: robot-mass,
+speed, robot-radius, robot-modulus, robot-poisson, covering-modulus,
+covering-poisson, covering-thickness, head-mass, head-radius, scalp-modulus,
+scalp-poisson, scalp-thickness, skull-modulus, skull-poisson (or its scene-file
+name, e.g. robot.speed). Values take units as the scene flags do; a bare number
+is SI, so write 0..50mm or 1mm..50mm, not 1..50mm.
+
+Every point is solved on the exact path (as 'covopt simulate'), on all cores.
+A point whose scene is outside the model's input range is 'invalid' in the CSV,
+with the library's message; the others carry the numeric keys of 'simulate
+--json'. Without --csv, stdout gets a summary; '--csv -' prints the CSV instead.
+
+Exit codes: 0 done (also with invalid points); 1 an output could not be written
+(e.g. gnuplot missing); 2 bad input.)";
+
+std::string_view TypeName(QuantityKind kind) {
+  switch (kind) {
+    case QuantityKind::kMass: return "MASS";
+    case QuantityKind::kLength: return "LENGTH";
+    case QuantityKind::kSpeed: return "SPEED";
+    case QuantityKind::kModulus: return "MODULUS";
+    case QuantityKind::kDensity: return "DENSITY";
+    case QuantityKind::kDimensionless: return "RATIO";
+  }
+  return "VALUE";
+}
+
+std::string_view Trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+/// The flag without its dashes: "--robot-mass" -> "robot-mass".
+std::string_view AxisName(const SceneField& field) {
+  std::string_view flag = field.flag;
+  while (!flag.empty() && flag.front() == '-') flag.remove_prefix(1);
+  return flag;
+}
+
+std::string AxisNames() {
+  std::string names;
+  for (const SceneField& field : SceneFields()) {
+    if (!names.empty()) names += ", ";
+    names += AxisName(field);
+  }
+  return names;
+}
+
+const SceneField* FindField(std::string_view name) {
+  for (const SceneField& field : SceneFields()) {
+    if (AxisName(field) == name || field.dotted_name() == name) return &field;
+  }
+  return nullptr;
+}
+
+/// An axis value for the CSV: SI, or the word for an infinite mass/radius.
+std::string AxisValueText(const SweepAxis& axis, double value) {
+  if (std::isinf(value) && value > 0) {
+    return axis.field->spec.allow_flat ? "flat" : "fixed";
+  }
+  return fmt::format("{}", value);
+}
+
+/// A CSV text field: quoted, with inner quotes doubled; empty stays empty.
+std::string CsvText(std::string_view text) {
+  if (text.empty()) return {};
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += (c == '\n' || c == '\r') ? ' ' : c;
+  }
+  return quoted + "\"";
+}
+
+double WorstRatio(const GridPointResult& p) {
+  return std::max(p.assessment.laceration.ratio, p.assessment.contusion.ratio);
+}
+
+/// The result columns and how each is read; the names are the keys of simulate --json
+/// (cli/output.cpp ToJson), which tests/cli/test_sweep.cpp checks.
+struct ResultColumn {
+  std::string_view name;
+  double (*value)(const GridPointResult&);
+};
+double Optional(const std::optional<double>& v) {
+  return v ? *v : std::numeric_limits<double>::quiet_NaN();
+}
+// clang-format off
+const std::array kResultColumns{
+  ResultColumn{"max_penetration_m", [](const GridPointResult& p) { return p.result->peaks.max_penetration_m; }},
+  ResultColumn{"peak_force_N", [](const GridPointResult& p) { return p.result->peaks.peak_force_N; }},
+  ResultColumn{"contact_duration_s", [](const GridPointResult& p) { return Optional(p.result->contact_duration_s); }},
+  ResultColumn{"time_of_max_compression_s", [](const GridPointResult& p) { return Optional(p.result->time_of_max_compression_s); }},
+  ResultColumn{"max_compressive_stress_Pa", [](const GridPointResult& p) { return p.result->peaks.max_compressive_stress_Pa; }},
+  ResultColumn{"max_tensile_stress_Pa", [](const GridPointResult& p) { return p.result->peaks.max_tensile_stress_Pa; }},
+  ResultColumn{"max_energy_density_J_per_m2", [](const GridPointResult& p) { return p.result->peaks.max_energy_density_J_per_m2; }},
+  ResultColumn{"rebound_speed_m_per_s", [](const GridPointResult& p) { return Optional(p.result->rebound_speed_m_per_s); }},
+  ResultColumn{"phase_at_max", [](const GridPointResult& p) { return static_cast<double>(PhaseNumber(p.result->peaks.phase_at_max)); }},
+  ResultColumn{"scalp_fully_compressed", [](const GridPointResult& p) { return p.result->peaks.scalp_fully_compressed ? 1.0 : 0.0; }},
+  ResultColumn{"fully_compressed", [](const GridPointResult& p) { return p.result->peaks.fully_compressed ? 1.0 : 0.0; }},
+  ResultColumn{"safe", [](const GridPointResult& p) { return p.assessment.safe() ? 1.0 : 0.0; }},
+  ResultColumn{"laceration_ratio", [](const GridPointResult& p) { return p.assessment.laceration.ratio; }},
+  ResultColumn{"contusion_ratio", [](const GridPointResult& p) { return p.assessment.contusion.ratio; }},
+  ResultColumn{"worst_ratio", [](const GridPointResult& p) { return WorstRatio(p); }},
+};
+// clang-format on
+const std::array<std::string_view, kResultColumns.size()> kResultColumnNames = [] {
+  std::array<std::string_view, kResultColumns.size()> names{};
+  for (std::size_t i = 0; i < names.size(); ++i) names[i] = kResultColumns[i].name;
+  return names;
+}();
+
+/// How a kind is shown on a chart axis: SI value / scale, in unit.
+struct DisplayUnit {
+  double scale;
+  std::string_view unit;
+};
+DisplayUnit DisplayFor(QuantityKind kind) {
+  switch (kind) {
+    case QuantityKind::kMass: return {1.0, "kg"};
+    case QuantityKind::kLength: return {1e-3, "mm"};
+    case QuantityKind::kSpeed: return {1.0, "m/s"};
+    case QuantityKind::kModulus: return {1e6, "MPa"};
+    case QuantityKind::kDensity: return {1.0, "kg/m³"};
+    case QuantityKind::kDimensionless: return {1.0, ""};
+  }
+  return {1.0, ""};
+}
+
+std::string AxisLabel(const SweepAxis& axis) {
+  const DisplayUnit unit = DisplayFor(axis.field->spec.kind);
+  return unit.unit.empty() ? axis.name : fmt::format("{} [{}]", axis.name, unit.unit);
+}
+
+std::string Display(const SweepAxis& axis, double si) {
+  return FormatQuantity(si, axis.field->spec.kind);
+}
+
+/// One number for a gnuplot data block; NaN marks a point gnuplot must skip.
+std::string PlotNumber(double v) { return std::isfinite(v) ? fmt::format("{}", v) : "NaN"; }
+
+std::string Terminal(PlotFormat format, int width, int height) {
+  if (format == PlotFormat::kPng) {
+    return fmt::format("set terminal pngcairo size {},{} font 'sans,11' noenhanced\n", width,
+                       height);
+  }
+  return fmt::format(
+      "set terminal svg size {},{} dynamic font 'sans,11' noenhanced background rgb 'white'\n",
+      width, height);
+}
+
+struct PlotInput {
+  const SweepAxis* x = nullptr;
+  const SweepAxis* y = nullptr;
+  std::span<const GridPointResult> points;
+  std::string headline;
+  PlotFormat format = PlotFormat::kPng;
+};
+
+const GridPointResult& At(const PlotInput& in, std::size_t ix, std::size_t iy) {
+  const std::size_t ny = in.y ? in.y->values.size() : 1;
+  return in.points[ix * ny + iy];
+}
+
+/// The 2-D map: worst ratio in colour, the ratio-1 contours of laceration and contusion.
+std::string MapScript(const PlotInput& in, const std::string& output) {
+  const SweepAxis& x = *in.x;
+  const SweepAxis& y = *in.y;
+  const double sx = DisplayFor(x.field->spec.kind).scale;
+  const double sy = DisplayFor(y.field->spec.kind).scale;
+  std::size_t invalid = 0;
+  bool lac_below = false, lac_above = false, con_below = false, con_above = false;
+  for (const GridPointResult& p : in.points) {
+    if (!p.valid()) {
+      ++invalid;
+      continue;
+    }
+    (p.assessment.laceration.ratio <= 1.0 ? lac_below : lac_above) = true;
+    (p.assessment.contusion.ratio <= 1.0 ? con_below : con_above) = true;
+  }
+  std::vector<std::string> notes;
+  if (!(lac_below && lac_above)) {
+    notes.push_back(lac_above ? "laceration ratio > 1 everywhere" : "laceration ratio <= 1 everywhere");
+  }
+  if (!(con_below && con_above)) {
+    notes.push_back(con_above ? "contusion ratio > 1 everywhere" : "contusion ratio <= 1 everywhere");
+  }
+  if (invalid > 0) notes.push_back(fmt::format("{} invalid points left blank", invalid));
+
+  std::string s = "set encoding utf8\n";
+  s += Terminal(in.format, 1000, 800);
+  s += fmt::format("set output {}\n", GnuplotQuoted(output));
+  std::string title = fmt::format(
+      "covopt sweep: worst injury ratio max(laceration, contusion)\\nother values: {}",
+      in.headline);
+  if (!notes.empty()) title += "\\n" + fmt::format("{}", fmt::join(notes, "; "));
+  s += fmt::format("set title \"{}\"\n", title);
+  s += fmt::format("set xlabel {}\nset ylabel {}\n", GnuplotQuoted(AxisLabel(x)),
+                   GnuplotQuoted(AxisLabel(y)));
+  s += "set cblabel 'worst ratio (1 = at a limit; above 2 shown as 2)'\n";
+  if (x.log) s += "set logscale x\n";
+  if (y.log) s += "set logscale y\n";
+  // The axis ranges: the finite values of each axis.
+  const auto range = [](const SweepAxis& a, double scale) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const double v : a.values) {
+      if (std::isfinite(v)) {
+        lo = std::min(lo, v / scale);
+        hi = std::max(hi, v / scale);
+      }
+    }
+    return std::pair{lo, hi};
+  };
+  const auto [x0, x1] = range(x, sx);
+  const auto [y0, y1] = range(y, sy);
+  s += fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", x0, x1, y0, y1);
+  s += "set cbrange [0:2]\n";
+  s += "set palette defined (0 '#1a7f3c', 0.5 '#8fd18b', 0.98 '#f4f1bb', 1.02 '#fdd49e', "
+       "1.5 '#f0793d', 2 '#a50f15')\n";
+  s += "$grid << EOD\n";
+  for (std::size_t ix = 0; ix < x.values.size(); ++ix) {
+    if (!std::isfinite(x.values[ix])) continue;
+    for (std::size_t iy = 0; iy < y.values.size(); ++iy) {
+      if (!std::isfinite(y.values[iy])) continue;
+      const GridPointResult& p = At(in, ix, iy);
+      const bool ok = p.valid();
+      s += fmt::format("{} {} {} {} {}\n", x.values[ix] / sx, y.values[iy] / sy,
+                       PlotNumber(ok ? p.assessment.laceration.ratio : NAN),
+                       PlotNumber(ok ? p.assessment.contusion.ratio : NAN),
+                       PlotNumber(ok ? WorstRatio(p) : NAN));
+    }
+    s += "\n";
+  }
+  s += "EOD\n";
+  // The limit contours, traced by gnuplot into data blocks.
+  s += "set contour base\nset cntrparam levels discrete 1\nunset surface\n";
+  s += "set table $lac\nsplot $grid using 1:2:3 notitle\nunset table\n";
+  s += "set table $con\nsplot $grid using 1:2:4 notitle\nunset table\n";
+  s += "unset contour\nset surface\n";
+  s += "set view map\nset pm3d explicit at b\n";
+  s += "set bmargin 6\nset key at screen 0.5, screen 0.05 center center horizontal maxrows 1 width 2\n";
+  s += "set grid front linecolor rgb '#888888'\n";
+  s += "splot $grid using 1:2:5 with pm3d notitle, \\\n"
+       "      $lac using 1:2:(0) with lines linewidth 2.5 linecolor rgb '#1f5fa8' "
+       "title 'laceration limit (ratio 1)', \\\n"
+       "      $con using 1:2:(0) with lines linewidth 2.5 dashtype 2 linecolor rgb '#000000' "
+       "title 'contusion limit (ratio 1)'\n";
+  s += "unset output\n";
+  return s;
+}
+
+/// Line families: laceration and contusion ratio against the long axis, one line per
+/// value of the short axis (or one line without a second axis).
+std::string FamiliesScript(const PlotInput& in, const std::string& output) {
+  // along: the horizontal axis; family: one line per value (may be absent).
+  const bool families_on_y = in.y == nullptr || in.y->values.size() <= kMaxFamilies;
+  const SweepAxis& along = families_on_y ? *in.x : *in.y;
+  const SweepAxis* family = families_on_y ? in.y : in.x;
+  const double scale = DisplayFor(along.field->spec.kind).scale;
+  const std::size_t lines = family ? family->values.size() : 1;
+
+  std::string s = "set encoding utf8\n";
+  s += Terminal(in.format, 1000, 900);
+  s += fmt::format("set output {}\n", GnuplotQuoted(output));
+  s += "$data << EOD\n";
+  for (std::size_t line = 0; line < lines; ++line) {
+    for (std::size_t i = 0; i < along.values.size(); ++i) {
+      if (!std::isfinite(along.values[i])) continue;
+      const GridPointResult& p =
+          families_on_y ? At(in, i, in.y ? line : 0) : At(in, line, i);
+      const bool ok = p.valid();
+      s += fmt::format("{} {} {}\n", along.values[i] / scale,
+                       PlotNumber(ok ? p.assessment.laceration.ratio : NAN),
+                       PlotNumber(ok ? p.assessment.contusion.ratio : NAN));
+    }
+    s += "\n\n";
+  }
+  s += "EOD\n";
+  const std::array<std::string_view, kMaxFamilies> colours{
+      "#1f5fa8", "#c0392b", "#2e8b57", "#8e44ad", "#d68910", "#17a2b8", "#555555", "#e84393"};
+  const auto clauses = [&](int column) {
+    std::string c;
+    for (std::size_t line = 0; line < lines; ++line) {
+      const std::string title =
+          family ? fmt::format("{} {}", family->name, Display(*family, family->values[line]))
+                 : std::string("covopt");
+      c += fmt::format(
+          "$data index {} using 1:{} with linespoints linewidth 2 pointtype 7 "
+          "pointsize 0.4 linecolor rgb '{}' title {}, ",
+          line, column, colours[line % colours.size()], GnuplotQuoted(title));
+    }
+    return c + "1 with lines dashtype 2 linewidth 1.5 linecolor rgb '#000000' title 'limit'\n";
+  };
+
+  s += fmt::format("set multiplot layout 2,1 title \"covopt sweep: injury ratios against {}\\n"
+                   "other values: {}\"\n",
+                   along.name, in.headline);
+  if (along.log) s += "set logscale x\n";
+  s += fmt::format("set xlabel {}\n", GnuplotQuoted(AxisLabel(along)));
+  s += "set grid linecolor rgb '#dddddd'\nset key outside right top\nset yrange [0:*]\n";
+  s += "set ylabel 'laceration ratio (tensile stress / 1 MPa)'\n";
+  s += "plot " + clauses(2);
+  s += "set ylabel 'contusion ratio (energy density / 2.52 J/cm²)'\n";
+  s += "plot " + clauses(3);
+  s += "unset multiplot\nunset output\n";
+  return s;
+}
+
+/// "0.1 MPa .. 1 GPa, 200 values, log" or "3 values: 1 kg, 5 kg, fixed".
+std::string DescribeAxis(const SweepAxis& axis) {
+  const auto& v = axis.values;
+  if (axis.spec.find("..") != std::string::npos) {
+    return fmt::format("{} .. {}, {} values{}", Display(axis, v.front()), Display(axis, v.back()),
+                       v.size(), axis.log ? ", log" : "");
+  }
+  std::vector<std::string> shown;
+  for (std::size_t i = 0; i < v.size() && i < 6; ++i) shown.push_back(Display(axis, v[i]));
+  if (v.size() > 6) shown.push_back("...");
+  return fmt::format("{} value{}: {}", v.size(), v.size() == 1 ? "" : "s",
+                     fmt::join(shown, ", "));
+}
+
+std::string PointName(const SweepAxis& x, const SweepAxis* y, std::size_t index) {
+  const std::size_t ny = y ? y->values.size() : 1;
+  std::string name = fmt::format("{} {}", x.name, Display(x, x.values[index / ny]));
+  if (y) name += fmt::format(", {} {}", y->name, Display(*y, y->values[index % ny]));
+  return name;
+}
+
+/// A progress bar on a terminal, drawn only once the sweep has run for a while.
+class ProgressBar {
+ public:
+  explicit ProgressBar(bool enabled) : enabled_(enabled) {}
+  ~ProgressBar() { Finish(); }
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
+
+  void Update(std::size_t done, std::size_t total) {
+    if (!enabled_ || total == 0) return;
+    const auto now = Clock::now();
+    if (now - start_ < std::chrono::milliseconds(300)) return;
+    if (drawn_ && now - last_ < std::chrono::milliseconds(100) && done < total) return;
+    last_ = now;
+    drawn_ = true;
+    constexpr int kWidth = 40;
+    const double fraction = static_cast<double>(done) / static_cast<double>(total);
+    const int filled = static_cast<int>(fraction * kWidth);
+    fmt::print(stderr, "\rsweep [{}{}] {:3.0f} % {}/{}", std::string(filled, '#'),
+               std::string(kWidth - filled, ' '), 100.0 * fraction, done, total);
+    std::fflush(stderr);
+  }
+  void Finish() {
+    if (drawn_) {
+      fmt::print(stderr, "\r\033[K");
+      std::fflush(stderr);
+      drawn_ = false;
+    }
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool enabled_;
+  bool drawn_ = false;
+  Clock::time_point start_ = Clock::now();
+  Clock::time_point last_ = start_;
+};
+
+}  // namespace
+
+SweepAxis ParseSweepAxis(std::string_view text, std::string_view flag) {
+  const auto fail = [&](const std::string& problem) -> void {
+    throw InputError(fmt::format("{}: {} (got '{}')", flag, problem, text));
+  };
+  const std::size_t eq = text.find('=');
+  if (eq == std::string_view::npos) {
+    fail("expected NAME=LO..HI[:lin|:log][:N] or NAME=V1,V2,..., e.g. "
+         "covering-thickness=0..50mm:101");
+  }
+  const std::string_view name = Trim(text.substr(0, eq));
+  const std::string_view spec = Trim(text.substr(eq + 1));
+  SweepAxis axis;
+  axis.field = FindField(name);
+  if (axis.field == nullptr) {
+    fail(fmt::format("unknown quantity '{}'; the quantities are {}", name, AxisNames()));
+  }
+  axis.name = std::string(AxisName(*axis.field));
+  axis.spec = std::string(spec);
+  const QuantitySpec& quantity = axis.field->spec;
+  if (spec.empty()) fail(fmt::format("no values after '{}='", name));
+
+  if (spec.find("..") == std::string_view::npos) {
+    // A list of values.
+    std::string_view rest = spec;
+    while (true) {
+      const std::size_t comma = rest.find(',');
+      const std::string_view item = Trim(rest.substr(0, comma));
+      if (item.empty()) fail("empty value in the list");
+      axis.values.push_back(ParseQuantity(item, quantity, flag));
+      if (axis.values.size() > kMaxAxisValues) {
+        fail(fmt::format("more than {} values", kMaxAxisValues));
+      }
+      if (comma == std::string_view::npos) break;
+      rest.remove_prefix(comma + 1);
+    }
+    return axis;
+  }
+
+  // A range LO..HI with options.
+  std::size_t colon = spec.find(':');
+  const std::string_view range_text = Trim(spec.substr(0, colon));
+  std::size_t count = kDefaultCount;
+  bool count_given = false, spacing_given = false;
+  while (colon != std::string_view::npos) {
+    const std::size_t next = spec.find(':', colon + 1);
+    const std::string_view option = Trim(spec.substr(colon + 1, next == std::string_view::npos
+                                                                    ? std::string_view::npos
+                                                                    : next - colon - 1));
+    colon = next;
+    if (option == "lin" || option == "log") {
+      if (spacing_given) fail("give the spacing (lin or log) once");
+      spacing_given = true;
+      axis.log = option == "log";
+      continue;
+    }
+    std::size_t n = 0;
+    const auto [end, ec] = std::from_chars(option.data(), option.data() + option.size(), n);
+    if (ec != std::errc() || end != option.data() + option.size() || option.empty()) {
+      fail(fmt::format("after the range, expected ':lin', ':log' or a count ':N', not ':{}'",
+                       option));
+    }
+    if (count_given) fail("give the count :N once");
+    count_given = true;
+    if (n < 2 || n > kMaxAxisValues) {
+      fail(fmt::format("the count after ':' must be in 2..{}", kMaxAxisValues));
+    }
+    count = n;
+  }
+  const materials::Range range = ParseRange(range_text, quantity, flag);
+  if (!range.min || !range.max) fail("a sweep range needs both ends, LO..HI");
+  const double lo = *range.min, hi = *range.max;
+  if (!std::isfinite(lo) || !std::isfinite(hi)) {
+    fail("a range needs finite ends; list 'fixed' or 'flat' as a value instead, e.g. "
+         "robot-mass=5kg,10kg,fixed");
+  }
+  if (!(lo < hi)) fail("the range's low end must be below its high end");
+  if (axis.log && !(lo > 0.0)) fail("a :log range needs a low end above 0");
+  axis.values.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double k = static_cast<double>(i), n = static_cast<double>(count - 1);
+    axis.values[i] =
+        axis.log ? std::pow(10.0, std::log10(lo) + (std::log10(hi) - std::log10(lo)) * k / n)
+                 : lo + (hi - lo) * k / n;
+  }
+  axis.values.front() = lo;
+  axis.values.back() = hi;
+  return axis;
+}
+
+std::span<const std::string_view> SweepResultColumns() noexcept { return kResultColumnNames; }
+
+std::string SweepCsv(const SweepAxis& x, const SweepAxis* y,
+                     std::span<const GridPointResult> points) {
+  std::string csv = x.name;
+  if (y) csv += "," + y->name;
+  csv += ",status";
+  for (const ResultColumn& column : kResultColumns) {
+    csv += ',';
+    csv += column.name;
+  }
+  csv += ",warnings,error\n";
+  const std::size_t ny = y ? y->values.size() : 1;
+  csv.reserve(csv.size() + points.size() * 320);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const GridPointResult& p = points[i];
+    csv += AxisValueText(x, x.values[i / ny]);
+    if (y) {
+      csv += ',';
+      csv += AxisValueText(*y, y->values[i % ny]);
+    }
+    csv += p.valid() ? ",ok" : ",invalid";
+    for (const ResultColumn& column : kResultColumns) {
+      csv += ',';
+      if (!p.valid()) continue;
+      const double v = column.value(p);
+      if (std::isfinite(v)) fmt::format_to(std::back_inserter(csv), "{}", v);
+    }
+    csv += ',';
+    if (p.valid()) csv += CsvText(fmt::format("{}", fmt::join(p.result->warnings, " | ")));
+    csv += ',';
+    csv += CsvText(p.error);
+    csv += '\n';
+  }
+  return csv;
+}
+
+CLI::App* SetupSweep(CLI::App& app, SweepOptions& options) {
+  CLI::App* sub = app.add_subcommand(
+      "sweep", "Sweep one or two scene quantities over a grid (exact path, all cores): CSV of "
+               "every point, and a map or line chart of the injury ratios");
+  sub->footer(std::string(kFooter));
+  sub->add_option("--x", options.x, "first swept quantity, e.g. covering-modulus=0.1MPa..1GPa:log:200")
+      ->type_name("NAME=SPEC")
+      ->required()
+      ->group("Sweep");
+  sub->add_option("--y", options.y, "second swept quantity, e.g. covering-thickness=0..50mm:200")
+      ->type_name("NAME=SPEC")
+      ->group("Sweep");
+  sub->add_option("--threads", options.threads,
+                  "worker threads (default: all cores); results do not depend on it")
+      ->type_name("N")
+      ->group("Sweep");
+
+  sub->add_option("--scene", options.scene.scene_file, "TOML scene file; flags override it")
+      ->type_name("FILE.toml")
+      ->group("Scene");
+  const Scene defaults;
+  SimulateOptions& scene_options = options.scene;
+  for (const SceneField& field : SceneFields()) {
+    Scene scene = defaults;
+    const std::string key = field.dotted_name();
+    sub->add_option_function<std::string>(
+           std::string(field.flag),
+           [&scene_options, key](const std::string& value) {
+             scene_options.scene_values[key] = value;
+           },
+           fmt::format("{} (default {})", field.help,
+                       FormatQuantity(field.field(scene), field.spec.kind)))
+        ->type_name(std::string(TypeName(field.spec.kind)))
+        ->group("Scene");
+  }
+  sub->add_option("--thresholds", options.scene.thresholds,
+                  "phase thresholds: cumulative (default) or literal (the paper's text)")
+      ->check(CLI::IsMember({"cumulative", "literal"}))
+      ->group("Scene");
+  sub->add_option("--material", options.scene.material,
+                  "covering modulus and Poisson ratio from the material catalog")
+      ->type_name("NAME")
+      ->group("Scene");
+  AddCatalogOptions(*sub, options.scene.catalog);
+
+  sub->add_option("--csv", options.csv_file,
+                  "write one row per point (SI units); '-' prints it on stdout instead of the "
+                  "summary")
+      ->type_name("FILE.csv|-")
+      ->group("Output");
+  sub->add_option("--plot", options.plot_file,
+                  "chart with gnuplot: worst-ratio map with both limit contours, or line "
+                  "families when an axis has at most 8 values")
+      ->type_name("FILE.png|FILE.svg")
+      ->group("Output");
+  sub->add_flag("--no-progress", options.no_progress,
+                "no progress bar (it is shown only on a terminal, for long sweeps)")
+      ->group("Output");
+  return sub;
+}
+
+int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) {
+  const auto bad_input = [&err](std::string_view message) {
+    fmt::print(err, "covopt sweep: error: {}\n", message);
+    return 2;
+  };
+  const auto failed = [&err](std::string_view message) {
+    fmt::print(err, "covopt sweep: error: {}\n", message);
+    return 1;
+  };
+
+  // Axes, scene and outputs.
+  SweepAxis x;
+  std::optional<SweepAxis> y;
+  SimulationPlan plan;
+  std::optional<PlotFormat> plot_format;
+  unsigned threads = 0;
+  try {
+    x = ParseSweepAxis(options.x, "--x");
+    if (options.y) {
+      y = ParseSweepAxis(*options.y, "--y");
+      if (y->field == x.field) {
+        throw InputError(fmt::format("--y: {} is already swept by --x (got '{}')", y->name,
+                                     *options.y));
+      }
+    }
+    if (x.values.size() * (y ? y->values.size() : 1) > kMaxSweepPoints) {
+      throw InputError(fmt::format("the grid has {} x {} = {} points; at most {} are allowed",
+                                   x.values.size(), y->values.size(),
+                                   x.values.size() * y->values.size(), kMaxSweepPoints));
+    }
+    for (const SweepAxis* axis : {&x, y ? &*y : nullptr}) {
+      if (axis == nullptr) continue;
+      const std::string key = axis->field->dotted_name();
+      const auto typed = options.scene.scene_values.find(key);
+      if (typed != options.scene.scene_values.end()) {
+        throw InputError(fmt::format("{} '{}' sets {}, which {} sweeps; give it one way",
+                                     axis->field->flag, typed->second, key,
+                                     axis == &x ? "--x" : "--y"));
+      }
+      if (options.scene.material &&
+          (key == "covering.modulus" || key == "covering.poisson")) {
+        throw InputError(fmt::format("--material '{}' sets {}, which {} sweeps; give it one way",
+                                     *options.scene.material, key, axis == &x ? "--x" : "--y"));
+      }
+    }
+    plan = ResolveSimulation(options.scene);
+    if (options.threads) {
+      if (*options.threads < 1 || *options.threads > kMaxThreads) {
+        throw InputError(
+            fmt::format("--threads must be in 1..{} (got {})", kMaxThreads, *options.threads));
+      }
+      threads = static_cast<unsigned>(*options.threads);
+    }
+    if (options.csv_file && options.csv_file->empty()) throw InputError("--csv: empty file name");
+    if (options.plot_file) {
+      plot_format = PlotFormatFor(*options.plot_file);
+      if (!plot_format) {
+        throw InputError(fmt::format(
+            "--plot: cannot tell the format of '{}'; name the file *.png or *.svg",
+            *options.plot_file));
+      }
+    }
+  } catch (const InputError& e) {
+    return bad_input(e.what());
+  }
+  const SweepAxis* y_axis = y ? &*y : nullptr;
+
+  // The grid, x varying slowest.
+  const std::size_t ny = y ? y->values.size() : 1;
+  std::vector<Scene> scenes(x.values.size() * ny, plan.scene);
+  for (std::size_t ix = 0; ix < x.values.size(); ++ix) {
+    for (std::size_t iy = 0; iy < ny; ++iy) {
+      Scene& scene = scenes[ix * ny + iy];
+      x.field->field(scene) = x.values[ix];
+      if (y) y->field->field(scene) = y->values[iy];
+    }
+  }
+
+  const bool terminal =
+      !options.no_progress && &err == &std::cerr && ::isatty(STDERR_FILENO) == 1;
+  ProgressBar bar(terminal);
+  GridOptions grid;
+  grid.threads = threads;
+  grid.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<GridPointResult> points = SolveExactGrid(scenes, grid);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  bar.Finish();
+  const unsigned used_threads =
+      threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+
+  // Outputs.
+  const bool csv_to_stdout = options.csv_file && *options.csv_file == "-";
+  std::vector<std::string> written;
+  try {
+    if (plot_format && !FindOnPath("gnuplot")) return failed(kGnuplotMissing);
+    if (options.csv_file && !csv_to_stdout) {
+      WriteFileAtomically(*options.csv_file, SweepCsv(x, y_axis, points));
+      written.push_back(*options.csv_file);
+    }
+    if (plot_format) {
+      PlotInput input;
+      input.x = &x;
+      input.y = y_axis;
+      input.points = points;
+      input.headline = SceneHeadline(plan.scene);
+      input.format = *plot_format;
+      const bool map = y && x.values.size() > kMaxFamilies && y->values.size() > kMaxFamilies;
+      RunGnuplot(*options.plot_file, [&](const std::string& output_path) {
+        return map ? MapScript(input, output_path) : FamiliesScript(input, output_path);
+      });
+      written.push_back(*options.plot_file);
+    }
+  } catch (const OutputError& e) {
+    return failed(e.what());
+  }
+
+  if (csv_to_stdout) {
+    out << SweepCsv(x, y_axis, points);
+  } else {
+    // The summary.
+    std::size_t valid = 0, safe = 0, lacerating = 0, contusing = 0, warned = 0;
+    std::optional<std::size_t> first_invalid, first_warned, best, worst;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const GridPointResult& p = points[i];
+      if (!p.valid()) {
+        if (!first_invalid) first_invalid = i;
+        continue;
+      }
+      ++valid;
+      if (p.assessment.safe()) ++safe;
+      if (!p.assessment.laceration.safe) ++lacerating;
+      if (!p.assessment.contusion.safe) ++contusing;
+      if (!p.result->warnings.empty()) {
+        ++warned;
+        if (!first_warned) first_warned = i;
+      }
+      if (!best || WorstRatio(p) < WorstRatio(points[*best])) best = i;
+      if (!worst || WorstRatio(p) > WorstRatio(points[*worst])) worst = i;
+    }
+    const auto percent = [&](std::size_t n) {
+      return valid == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(valid);
+    };
+    fmt::print(out, "Sweep   {}: {}\n", x.name, DescribeAxis(x));
+    if (y) fmt::print(out, "        {}: {}\n", y->name, DescribeAxis(*y));
+    fmt::print(out, "Scene   {} (swept values replaced)\n", SceneHeadline(plan.scene));
+    fmt::print(out, "Points  {} in {:.3g} s on {} thread{}: {} valid, {} invalid\n",
+               points.size(), seconds, used_threads, used_threads == 1 ? "" : "s", valid,
+               points.size() - valid);
+    if (valid > 0) {
+      fmt::print(out, "Safe    {} ({:.1f} %); laceration ratio > 1 at {} ({:.1f} %), contusion "
+                      "ratio > 1 at {} ({:.1f} %)\n",
+                 safe, percent(safe), lacerating, percent(lacerating), contusing,
+                 percent(contusing));
+      for (const auto& [label, index] : {std::pair{"Least", *best}, std::pair{"Most", *worst}}) {
+        const GridPointResult& p = points[index];
+        fmt::print(out, "{:<7} worst ratio {:.4g} at {} (laceration {:.4g}, contusion {:.4g})\n",
+                   label, WorstRatio(p), PointName(x, y_axis, index),
+                   p.assessment.laceration.ratio, p.assessment.contusion.ratio);
+      }
+    }
+    if (first_invalid) {
+      fmt::print(out, "Invalid {} point{} outside the model's input range, e.g. at {}: {}\n",
+                 points.size() - valid, points.size() - valid == 1 ? "" : "s",
+                 PointName(x, y_axis, *first_invalid), points[*first_invalid].error);
+    }
+    if (first_warned) {
+      fmt::print(out, "Warned  {} point{} with validity warnings, e.g. at {}: {}\n", warned,
+                 warned == 1 ? "" : "s", PointName(x, y_axis, *first_warned),
+                 points[*first_warned].result->warnings.front());
+    }
+    for (const std::string& warning : InputWarnings(plan)) {
+      fmt::print(out, "Note    {}\n", warning);
+    }
+    if (!written.empty()) fmt::print(out, "Wrote   {}\n", fmt::join(written, ", "));
+  }
+  out.flush();
+  if (!out) return failed("cannot write the results to standard output");
+  return 0;
+}
+
+}  // namespace covopt::cli

@@ -1,0 +1,98 @@
+#pragma once
+/// @file sweep.hpp
+/// `covopt sweep`: the exact path over a grid of one or two scene quantities.
+///
+///     covopt sweep --x covering-modulus=0.1MPa..1GPa:log:200 --y covering-thickness=0..50mm:200
+///                  [scene flags] [--scene FILE] [--material NAME] [--threads N]
+///                  [--csv FILE|-] [--plot FILE.png|FILE.svg]
+///
+/// An axis is NAME=LO..HI[:lin|:log][:N] (N points, default 50, linear by default) or
+/// NAME=V1,V2,... (the values as listed; masses may be 'fixed', the robot radius 'flat').
+/// NAME is a scene flag without its dashes (speed, robot-mass, covering-thickness, ...) or
+/// its scene-file name (robot.speed). Values take units as the scene flags do; a bare
+/// number is SI, and a bare nonzero number with a unit on the other end is refused
+/// ("10..100MPa" would mean 10 Pa to 100 MPa). Every other quantity comes from the scene
+/// flags, --scene and --material exactly as in `covopt simulate`.
+///
+/// Each point is solved on the exact path on all cores; a point whose scene is outside
+/// the model's input range is reported as invalid with the library's message (never NaN).
+/// Exit codes: 0 done (also when some points are invalid), 1 an output could not be
+/// written, 2 bad input.
+
+#include <cstddef>
+#include <optional>
+#include <ostream>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "covopt/core/grid.hpp"
+#include "scene_fields.hpp"
+#include "simulate.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace covopt::cli {
+
+/// The options of `covopt sweep`, as typed.
+struct SweepOptions {
+  /// --x NAME=SPEC: the first swept quantity (required).
+  std::string x;
+  /// --y NAME=SPEC: the second swept quantity, if any.
+  std::optional<std::string> y;
+  /// The scene: --scene, the scene flags, --thresholds, --material, --catalog/--no-builtin,
+  /// read as `covopt simulate` reads them (the other members stay unset).
+  SimulateOptions scene;
+  /// --threads N: worker threads, 1..4096. Default: the hardware's concurrency.
+  std::optional<int> threads;
+  /// --csv FILE: one row per point; "-" writes it to stdout instead of the summary.
+  std::optional<std::string> csv_file;
+  /// --plot FILE.png|FILE.svg: the worst-ratio map with both limit contours, or line
+  /// families of the two ratios when an axis has at most kMaxFamilies values.
+  std::optional<std::string> plot_file;
+  /// --no-progress: no progress bar even on a terminal.
+  bool no_progress = false;
+};
+
+/// One swept quantity.
+struct SweepAxis {
+  const SceneField* field = nullptr;  ///< the scene field it sets
+  std::string name;                   ///< the flag without dashes: "covering-modulus"
+  std::vector<double> values;         ///< SI; kFixed/kFlat where listed as 'fixed'/'flat'
+  bool log = false;                   ///< a :log range (drawn on a log axis)
+  std::string spec;                   ///< as typed after '='
+};
+
+/// An axis with at most this many values is drawn as a family of lines.
+inline constexpr std::size_t kMaxFamilies = 8;
+/// Limits on the grid: values per axis and points in total.
+inline constexpr std::size_t kMaxAxisValues = 100000;
+inline constexpr std::size_t kMaxSweepPoints = 1000000;
+
+/// Reads "NAME=SPEC".
+/// @param flag "--x" or "--y", for messages.
+/// @throws InputError naming the flag, the value and what is allowed.
+SweepAxis ParseSweepAxis(std::string_view text, std::string_view flag);
+
+/// The result columns of the CSV after the swept quantities and `status`, in order: the
+/// numeric top-level keys of `simulate --json` (booleans as 0/1), then laceration_ratio,
+/// contusion_ratio, worst_ratio.
+std::span<const std::string_view> SweepResultColumns() noexcept;
+
+/// The CSV text: header `<x name>[,<y name>],status,<result columns>,warnings,error`, then
+/// one row per point, x varying slowest. status is "ok" or "invalid"; an invalid point has
+/// empty result fields and the library's message in `error`; `warnings` holds the
+/// validity warnings joined by " | ". Numbers are SI, shortest round-trip decimals.
+std::string SweepCsv(const SweepAxis& x, const SweepAxis* y,
+                     std::span<const GridPointResult> points);
+
+/// Adds the `sweep` subcommand to `app`, storing what is typed into `options`.
+CLI::App* SetupSweep(CLI::App& app, SweepOptions& options);
+
+/// Runs the subcommand; returns the exit code (0, 1 or 2).
+int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace covopt::cli
