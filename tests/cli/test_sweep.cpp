@@ -1,0 +1,330 @@
+// `covopt sweep` end to end, in-process: the CSV has one row per point with the swept
+// quantities and the numeric keys of `simulate --json` (checked against simulate's own JSON,
+// key by key and value by value at the same scene); physical trends hold along an axis;
+// the results do not depend on the number of threads; invalid scenes are reported as such,
+// never as NaN; charts are drawn; bad axis specs are exit 2 naming the flag and the value.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <covopt/core/exact.hpp>
+#include <covopt/core/grid.hpp>
+#include <covopt/core/impact_model.hpp>
+
+#include "cli_test_support.hpp"
+#include "plot.hpp"
+#include "sweep.hpp"
+
+using Catch::Matchers::Contains;
+using covopt::cli::testing::ReadFile;
+using covopt::cli::testing::Run;
+using covopt::cli::testing::TempDir;
+using nlohmann::json;
+
+namespace {
+
+/// One CSV record split into fields; "..." fields may hold commas and doubled quotes.
+std::vector<std::string> SplitCsvLine(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+
+  std::size_t Column(const std::string& name) const {
+    const auto it = std::find(header.begin(), header.end(), name);
+    REQUIRE(it != header.end());
+    return static_cast<std::size_t>(it - header.begin());
+  }
+  double Number(std::size_t row, const std::string& name) const {
+    return std::stod(rows.at(row).at(Column(name)));
+  }
+};
+
+Csv ParseCsv(const std::string& text) {
+  Csv csv;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    const std::string line = text.substr(start, end - start);
+    start = end == std::string::npos ? text.size() : end + 1;
+    if (csv.header.empty()) {
+      csv.header = SplitCsvLine(line);
+    } else {
+      csv.rows.push_back(SplitCsvLine(line));
+    }
+  }
+  return csv;
+}
+
+/// `covopt sweep ARGS --csv -`, checked to succeed, parsed.
+Csv SweepCsv(std::vector<std::string> args) {
+  args.insert(args.begin(), "sweep");
+  args.insert(args.end(), {"--csv", "-"});
+  const auto run = Run(args);
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  return ParseCsv(run.out);
+}
+
+}  // namespace
+
+TEST_CASE("sweep CSV has the swept quantities, status, the result columns and one row per point",
+          "[sweep]") {
+  const Csv csv = SweepCsv({"--x", "speed=1m/s..3m/s:5", "--y", "covering-thickness=5mm,10mm,20mm"});
+  std::vector<std::string> expected = {"speed", "covering-thickness", "status"};
+  for (const auto column : covopt::cli::SweepResultColumns()) expected.emplace_back(column);
+  expected.insert(expected.end(), {"warnings", "error"});
+  CHECK(csv.header == expected);
+  REQUIRE(csv.rows.size() == 15);
+  for (const auto& row : csv.rows) CHECK(row.size() == expected.size());
+  // x varies slowest; values in SI.
+  CHECK(csv.Number(0, "speed") == 1.0);
+  CHECK(csv.Number(14, "speed") == 3.0);
+  CHECK(csv.Number(0, "covering-thickness") == Approx(0.005));
+  CHECK(csv.Number(1, "covering-thickness") == Approx(0.010));
+  CHECK(csv.Number(3, "speed") == 1.5);
+  CHECK(csv.Number(3, "covering-thickness") == Approx(0.005));
+}
+
+TEST_CASE("sweep result columns are the numeric keys of simulate --json plus the ratios",
+          "[sweep]") {
+  const auto run = Run({"simulate", "--json"});
+  REQUIRE(run.exit_code == 0);
+  const json j = json::parse(run.out);
+  std::set<std::string> numeric_keys;
+  for (const auto& [key, value] : j.items()) {
+    if (value.is_number() || value.is_boolean()) numeric_keys.insert(key);
+  }
+  std::set<std::string> columns;
+  for (const auto column : covopt::cli::SweepResultColumns()) columns.emplace(column);
+  std::set<std::string> expected = numeric_keys;
+  expected.insert({"laceration_ratio", "contusion_ratio", "worst_ratio"});
+  CHECK(columns == expected);
+}
+
+TEST_CASE("a sweep point agrees exactly with simulate --json at the same scene", "[sweep]") {
+  // speed = 1 + (3 - 1) * 2/4 = 2 m/s exactly at the middle point.
+  const Csv csv = SweepCsv({"--x", "speed=1m/s..3m/s:5", "--robot-mass", "5kg",
+                            "--covering-modulus", "12MPa"});
+  REQUIRE(csv.Number(2, "speed") == 2.0);
+  const auto run = Run({"simulate", "--json", "--speed", "2m/s", "--robot-mass", "5kg",
+                        "--covering-modulus", "12MPa"});
+  REQUIRE(run.exit_code == 0);
+  const json j = json::parse(run.out);
+  for (const auto column : covopt::cli::SweepResultColumns()) {
+    const std::string key(column);
+    INFO(key);
+    const double value = csv.Number(2, key);
+    if (key == "laceration_ratio") {
+      CHECK(value == j["laceration"]["ratio"].get<double>());
+    } else if (key == "contusion_ratio") {
+      CHECK(value == j["contusion"]["ratio"].get<double>());
+    } else if (key == "worst_ratio") {
+      CHECK(value == std::max(j["laceration"]["ratio"].get<double>(),
+                              j["contusion"]["ratio"].get<double>()));
+    } else if (j[key].is_boolean()) {
+      CHECK(value == (j[key].get<bool>() ? 1.0 : 0.0));
+    } else {
+      CHECK(value == j[key].get<double>());
+    }
+  }
+  CHECK(csv.rows[2][csv.Column("status")] == "ok");
+}
+
+TEST_CASE("along speed, peaks and ratios rise and the contact gets shorter", "[sweep]") {
+  // A stiffening force law (exponents > 1, stiffer phases later): more energy means a deeper
+  // penetration, so every peak grows with speed, and a hardening spring rebounds sooner.
+  const Csv csv = SweepCsv({"--x", "speed=0.1m/s..5m/s:40"});
+  for (std::size_t i = 1; i < csv.rows.size(); ++i) {
+    INFO("row " << i);
+    for (const char* key : {"max_penetration_m", "peak_force_N", "max_compressive_stress_Pa",
+                            "max_energy_density_J_per_m2", "laceration_ratio", "contusion_ratio"}) {
+      CHECK(csv.Number(i, key) > csv.Number(i - 1, key));
+    }
+    CHECK(csv.Number(i, "contact_duration_s") < csv.Number(i - 1, "contact_duration_s"));
+    // No dissipation: the rebound speed is the impact speed.
+    CHECK(csv.Number(i, "rebound_speed_m_per_s") == csv.Number(i, "speed"));
+  }
+}
+
+TEST_CASE("along the robot mass, the peak force rises (the effective mass grows)", "[sweep]") {
+  const Csv csv = SweepCsv({"--x", "robot-mass=0.5kg,1kg,2kg,5kg,10kg,50kg,fixed"});
+  REQUIRE(csv.rows.size() == 7);
+  CHECK(csv.rows[6][0] == "fixed");
+  for (std::size_t i = 1; i < csv.rows.size(); ++i) {
+    CHECK(csv.Number(i, "peak_force_N") > csv.Number(i - 1, "peak_force_N"));
+  }
+}
+
+TEST_CASE("sweep results are identical whatever the number of threads", "[sweep]") {
+  const std::vector<std::string> axes = {"--x", "covering-modulus=1MPa..300MPa:log:23", "--y",
+                                         "covering-thickness=0..40mm:29"};
+  auto one = axes, two = axes, three = axes;
+  one.insert(one.end(), {"--threads", "1"});
+  two.insert(two.end(), {"--threads", "2"});
+  three.insert(three.end(), {"--threads", "3"});
+  const Csv a = SweepCsv(one);
+  const Csv b = SweepCsv(two);
+  const Csv c = SweepCsv(three);
+  CHECK(a.rows.size() == 23u * 29u);
+  CHECK(a.rows == b.rows);
+  CHECK(a.rows == c.rows);
+}
+
+TEST_CASE("SolveExactGrid matches SolveExact point by point on any number of threads", "[sweep]") {
+  std::vector<covopt::Scene> scenes;
+  for (int i = 0; i < 300; ++i) {
+    covopt::Scene s;
+    s.robot.speed_m_per_s = 0.1 + 0.02 * i;
+    s.covering.thickness_m = (i % 7) * 0.004;
+    if (i % 50 == 0) s.head.radius_m = 0.001;  // smaller than the scalp: invalid
+    scenes.push_back(s);
+  }
+  std::vector<std::size_t> progress;
+  covopt::GridOptions options;
+  options.threads = 1;
+  options.progress = [&](std::size_t done, std::size_t total) {
+    CHECK(total == scenes.size());
+    progress.push_back(done);
+  };
+  const auto serial = covopt::SolveExactGrid(scenes, options);
+  REQUIRE(!progress.empty());
+  CHECK(progress.back() == scenes.size());
+  CHECK(std::is_sorted(progress.begin(), progress.end()));
+  options.threads = 4;
+  options.progress = nullptr;
+  const auto parallel = covopt::SolveExactGrid(scenes, options);
+  REQUIRE(serial.size() == scenes.size());
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    INFO("point " << i);
+    REQUIRE(serial[i].valid() == (i % 50 != 0));
+    REQUIRE(parallel[i].valid() == serial[i].valid());
+    if (!serial[i].valid()) {
+      CHECK_THAT(serial[i].error, Contains("head.radius"));
+      CHECK(parallel[i].error == serial[i].error);
+      continue;
+    }
+    const auto direct = covopt::SolveExact(covopt::ImpactModel::FromScene(scenes[i]));
+    CHECK(serial[i].result->peaks.peak_force_N == direct.peaks.peak_force_N);
+    CHECK(parallel[i].result->peaks.max_energy_density_J_per_m2 ==
+          direct.peaks.max_energy_density_J_per_m2);
+    CHECK(parallel[i].result->contact_duration_s == direct.contact_duration_s);
+    CHECK(parallel[i].assessment.contusion.ratio == serial[i].assessment.contusion.ratio);
+  }
+}
+
+TEST_CASE("invalid scenes in a sweep are reported by name, never as NaN", "[sweep]") {
+  const auto run = Run({"sweep", "--x", "head-radius=0..100mm:11", "--csv", "-"});
+  REQUIRE(run.exit_code == 0);
+  const Csv csv = ParseCsv(run.out);
+  REQUIRE(csv.rows.size() == 11);
+  CHECK(csv.rows[0][csv.Column("status")] == "invalid");
+  CHECK_THAT(csv.rows[0][csv.Column("error")], Contains("head.radius"));
+  CHECK(csv.rows[0][csv.Column("peak_force_N")].empty());
+  CHECK(csv.rows[5][csv.Column("status")] == "ok");
+  std::string lower = run.out;
+  std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+  CHECK(lower.find("nan") == std::string::npos);
+  CHECK(lower.find("inf") == std::string::npos);
+
+  const auto summary = Run({"sweep", "--x", "head-radius=0..100mm:11"});
+  REQUIRE(summary.exit_code == 0);
+  CHECK_THAT(summary.out, Contains("1 invalid"));
+  CHECK_THAT(summary.out, Contains("head.radius"));
+}
+
+TEST_CASE("sweep writes the CSV file and draws a map or line families", "[sweep][plot]") {
+  TempDir dir;
+  const auto csv_path = dir / "grid.csv";
+  const auto map_path = dir / "map.png";
+  auto run = Run({"sweep", "--x", "covering-modulus=1MPa..100MPa:log:12", "--y",
+                  "covering-thickness=5mm..40mm:10", "--csv", csv_path.string(), "--plot",
+                  map_path.string()});
+  if (!covopt::cli::FindOnPath("gnuplot")) {
+    WARN("gnuplot is not on PATH; skipping the plot checks");
+    CHECK(run.exit_code == 1);
+    return;
+  }
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  CHECK(ParseCsv(ReadFile(csv_path)).rows.size() == 120);
+  CHECK(ReadFile(map_path).substr(1, 3) == "PNG");
+  CHECK_THAT(run.out, Contains("Wrote"));
+
+  const auto lines_path = dir / "lines.svg";
+  run = Run({"sweep", "--x", "speed=0.5m/s..3m/s:20", "--y", "robot-mass=2kg,10kg",
+             "--plot", lines_path.string()});
+  REQUIRE(run.exit_code == 0);
+  const std::string svg = ReadFile(lines_path);
+  CHECK_THAT(svg, Contains("<svg"));
+  CHECK_THAT(svg, Contains("robot-mass 2 kg"));
+}
+
+TEST_CASE("bad sweep specs are exit 2 naming the flag, the value and what is allowed",
+          "[sweep]") {
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{"--x", "foo=1..2"}, "--x: unknown quantity 'foo'; the quantities are robot-mass, speed"},
+      {{"--x", "speed"}, "--x: expected NAME=LO..HI"},
+      {{"--x", "speed=1m/s..2kg"}, "not a speed"},
+      {{"--x", "speed=2m/s..1m/s"}, "--x: the lower end is above the upper end"},
+      {{"--x", "speed=1m/s..1m/s"}, "--x: the range's low end must be below its high end"},
+      {{"--x", "speed=1m/s..2m/s:1"}, "count after ':' must be in 2..100000"},
+      {{"--x", "speed=1m/s..2m/s:abc"}, "expected ':lin', ':log' or a count ':N', not ':abc'"},
+      {{"--x", "covering-modulus=0..1GPa:log"}, "a :log range needs a low end above 0"},
+      {{"--x", "covering-modulus=1..2MPa"}, "--x: give the unit on both ends"},
+      {{"--x", "robot-mass=1kg..fixed"}, "finite ends"},
+      {{"--x", "speed=1m/s,,2m/s"}, "empty value"},
+      {{"--x", "speed=1m/s..2m/s", "--speed", "3m/s"}, "--speed '3m/s' sets robot.speed, which --x sweeps"},
+      {{"--x", "speed=1m/s..2m/s", "--y", "speed=1m/s..3m/s"}, "--y: speed is already swept by --x"},
+      {{"--x", "covering-modulus=1MPa..2MPa", "--material", "polystyrene foam 27.6"},
+       "--material 'polystyrene foam 27.6' sets covering.modulus"},
+      {{"--x", "speed=1m/s..2m/s", "--threads", "0"}, "--threads must be in 1..4096 (got 0)"},
+      {{"--x", "speed=1m/s..2m/s", "--plot", "chart.pdf"}, "--plot: cannot tell the format"},
+      {{"--x", "speed=1m/s..2m/s:1000", "--y", "covering-thickness=0..1mm:1001"}, "at most 1000000"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args = {"sweep"};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const auto run = Run(args);
+    INFO(run.err);
+    CHECK(run.exit_code == 2);
+    CHECK(run.out.empty());
+    CHECK_THAT(run.err, Contains(c.message));
+  }
+  // The value is quoted back.
+  const auto run = Run({"sweep", "--x", "speed=1m/s..2m/s:abc"});
+  CHECK_THAT(run.err, Contains("(got 'speed=1m/s..2m/s:abc')"));
+}
