@@ -11,6 +11,7 @@
 #include "optimize.hpp"
 #include "simulate.hpp"
 #include "sweep.hpp"
+#include "workprecision.hpp"
 
 #ifndef COVOPT_VERSION
 #define COVOPT_VERSION "unknown"
@@ -36,6 +37,8 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   CLI::App* optimize = SetupOptimize(app, optimize_options);
   SweepOptions sweep_options;
   CLI::App* sweep = SetupSweep(app, sweep_options);
+  WorkPrecisionOptions workprecision_options;
+  CLI::App* workprecision = SetupWorkPrecision(app, workprecision_options);
 
   try {
     app.parse(argc, argv);
@@ -55,6 +58,7 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     if (materials->parsed()) return RunMaterials(materials_options, out, err);
     if (optimize->parsed()) return RunOptimize(optimize_options, out, err);
     if (sweep->parsed()) return RunSweep(sweep_options, out, err);
+    if (workprecision->parsed()) return RunWorkPrecision(workprecision_options, out, err);
   } catch (const std::exception& e) {
     fmt::print(err, "covopt: internal error: {}\n", e.what());
     return 1;

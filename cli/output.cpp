@@ -125,6 +125,7 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
                ToString(r.status), st.steps, st.rhs_evaluations, st.root_evaluations,
                st.jacobian_evaluations, st.nonlinear_iterations, st.error_test_failures,
                st.convergence_failures, st.restarts);
+    if (r.energy_residual) fmt::print(out, ";\n        energy residual {:.2g} (self-check)", *r.energy_residual);
     if (!r.history.empty()) fmt::print(out, "; {} history samples", r.history.size());
   } else {
     fmt::print(out, " (energy balance and quadrature, no time integration)");
@@ -213,6 +214,7 @@ Json ToJson(const SimulationReport& report) {
     solver["absolute_tolerance"] =
         Number(o.absolute_tolerance > 0.0 ? o.absolute_tolerance : o.relative_tolerance);
     solver["history_samples"] = r.history.size();
+    if (r.energy_residual) solver["energy_residual"] = Number(*r.energy_residual);
   }
   j["solver"] = std::move(solver);
   j["scene"] = SceneToJson(report.scene);

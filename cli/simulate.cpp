@@ -45,6 +45,19 @@ are plain numbers. Unset values come from --scene, else the paper's scene.
 Exit codes: 0 done; 1 the computation failed or an output could not be
 written (e.g. gnuplot missing); 2 bad input.)";
 
+}  // namespace
+
+std::string IntegratorNames() {
+  std::string names;
+  for (const ComputationMethod method : TimeIntegrationMethods()) {
+    if (!names.empty()) names += ", ";
+    names += ToString(method);
+  }
+  return names;
+}
+
+namespace {
+
 /// Sets the covering's E and ν from the --material entry (after the scene file, before the
 /// flags, which may not set them too).
 void ApplyMaterial(const SimulateOptions& options, SimulationPlan& plan) {
@@ -71,12 +84,8 @@ void ApplyMaterial(const SimulateOptions& options, SimulationPlan& plan) {
 
 }  // namespace
 
-CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "simulate", "Compute one impact: peak force, stresses, energy density and the "
-                  "laceration/contusion verdicts");
-  sub->footer(std::string(kFooter));
-
+void AddSceneOptions(CLI::App& sub_app, SimulateOptions& options) {
+  CLI::App* sub = &sub_app;
   sub->add_option("--scene", options.scene_file,
                   "TOML scene file; flags override it (see cli/examples/paper_scene.toml)")
       ->type_name("FILE.toml");
@@ -103,28 +112,38 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
       ->type_name("NAME")
       ->group("Scene");
   AddCatalogOptions(*sub, options.catalog);
+}
+
+CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
+  CLI::App* sub = app.add_subcommand(
+      "simulate", "Compute one impact: peak force, stresses, energy density and the "
+                  "laceration/contusion verdicts");
+  sub->footer(std::string(kFooter));
+  AddSceneOptions(*sub, options);
 
   sub->add_option("--method", options.method,
-                  "exact (energy balance; default) or cvode (time integration; default "
-                  "with --history/--plot)")
-      ->check(CLI::IsMember({"exact", "cvode"}))
+                  "exact (energy balance; default), cvode (CVODE, see --cvode-method), or "
+                  "one integrator: " + IntegratorNames() + fmt::format(". --history/--plot "
+                  "need a time path: {} unless given",
+                  ToString(TimeIntegrationOptions{}.method)))
+      ->type_name("METHOD")
       ->group("Computation");
   sub->add_option("--cvode-method", options.cvode_method,
                   "CVODE family: adams (default) or bdf")
       ->check(CLI::IsMember({"adams", "bdf"}))
       ->group("Computation");
   sub->add_option("--rtol", options.rtol,
-                  fmt::format("CVODE relative tolerance (default {:g})",
+                  fmt::format("time-path relative tolerance (default {:g})",
                               TimeIntegrationOptions{}.relative_tolerance))
       ->type_name("RATIO")
       ->group("Computation");
   sub->add_option("--atol", options.atol,
-                  "CVODE absolute tolerance, scaled per component (default: rtol)")
+                  "time-path absolute tolerance, scaled per component (default: rtol)")
       ->type_name("RATIO")
       ->group("Computation");
 
   sub->add_option("--max-steps", options.max_steps,
-                  fmt::format("CVODE limit on internal steps; reaching it fails the run "
+                  fmt::format("time-path limit on internal steps; reaching it fails the run "
                               "(default {})",
                               TimeIntegrationOptions{}.max_steps))
       ->type_name("N")
@@ -200,9 +219,14 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
   // The computation path.
   const bool needs_history = plan.history_file || plan.plot_file;
   bool time_path = needs_history;
+  std::optional<ComputationMethod> integrator;
   if (options.method) {
     if (*options.method == "cvode") {
       time_path = true;
+    } else if (const auto named = ParseComputationMethod(*options.method);
+               named && *named != ComputationMethod::kExact) {
+      time_path = true;
+      integrator = named;
     } else if (*options.method == "exact") {
       if (needs_history) {
         throw InputError(fmt::format(
@@ -211,8 +235,8 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
             plan.history_file ? "--history" : "--plot"));
       }
     } else {
-      throw InputError(
-          fmt::format("--method: expected 'exact' or 'cvode' (got '{}')", *options.method));
+      throw InputError(fmt::format("--method: expected exact, cvode or one of {} (got '{}')",
+                                   IntegratorNames(), *options.method));
     }
   }
   if (!time_path) {
@@ -229,6 +253,16 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
   }
 
   TimeIntegrationOptions time;
+  if (integrator) {
+    if (options.cvode_method) {
+      throw InputError(fmt::format("--cvode-method applies with --method cvode, not with "
+                                   "--method {}",
+                                   *options.method));
+    }
+    time.method = *integrator;
+  } else if (options.method && *options.method == "cvode") {
+    time.method = ComputationMethod::kCvodeAdams;  // CVODE's default family here
+  }
   if (options.cvode_method) {
     if (*options.cvode_method == "adams") {
       time.method = ComputationMethod::kCvodeAdams;

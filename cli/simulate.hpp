@@ -40,7 +40,9 @@ struct SimulateOptions {
   std::optional<std::string> material;
   /// --catalog FILE (repeatable), --no-builtin: the catalog --material looks in.
   CatalogOptions catalog;
-  /// --method exact|cvode. Default: exact, or cvode when --history or --plot is given.
+  /// --method exact|cvode|<integrator> (cvode-adams, arkode-erk54, ...: see
+  /// TimeIntegrationMethods()). Default: exact, or the library's default integrator
+  /// (TimeIntegrationOptions::method) when --history or --plot is given.
   std::optional<std::string> method;
   /// --cvode-method adams|bdf. Default: adams.
   std::optional<std::string> cvode_method;
@@ -72,6 +74,14 @@ struct SimulationPlan {
   PlotFormat plot_format = PlotFormat::kPng;
   bool json = false;
 };
+
+/// Adds the scene options every scene-taking subcommand shares to `sub`: --scene, the scene
+/// fields (--robot-mass ...), --thresholds, --material, --catalog/--no-builtin. They fill
+/// `options` (which must outlive the parse); ResolveSimulation reads them.
+void AddSceneOptions(CLI::App& sub, SimulateOptions& options);
+
+/// "cvode-adams, cvode-bdf, arkode-erk32, ...": every time-integration method's name.
+std::string IntegratorNames();
 
 /// Adds the `simulate` subcommand to `app`, storing what is typed into `options`, which
 /// must outlive the parse.

@@ -74,7 +74,7 @@ TEST_CASE("simulate --history writes the CSV header and one row per history samp
   const CliRun run = Run({"simulate", "--history", csv.string(), "--json"});
   REQUIRE(run.exit_code == 0);
   const auto json = nlohmann::json::parse(run.out);
-  CHECK(json["method"] == "cvode-adams");  // a history makes cvode the default
+  CHECK(json["method"] == "arkode-erk54");  // a history makes the time path (its default) run
 
   const auto lines = Lines(ReadFile(csv));
   REQUIRE(lines.size() > 10);
@@ -148,7 +148,7 @@ TEST_CASE("simulate --plot draws a PNG with gnuplot", "[outputs][plot]") {
   const CliRun run = Run({"simulate", "--history", csv.string(), "--plot", png.string()});
   CAPTURE(run.err);
   REQUIRE(run.exit_code == 0);
-  CHECK_THAT(run.out, Contains("Method  cvode-adams"));
+  CHECK_THAT(run.out, Contains("Method  arkode-erk54"));
   const std::string bytes = ReadFile(png);
   REQUIRE(bytes.size() > 1000);
   CHECK(bytes.substr(0, 8) == std::string("\x89PNG\r\n\x1a\n", 8));

@@ -1,8 +1,9 @@
 // The two paths agree: on generated scenes spanning no covering, thin (fully compressed) and
 // thick coverings, flat and curved robots, fixed head, fixed robot, slow and fast impacts,
-// soft and very stiff coverings, the CVODE time path reproduces the exact path's δ_max,
+// soft and very stiff coverings, the time path reproduces the exact path's δ_max,
 // F_max, σ_c,max, σ_t,max, e_A,max and contact duration within 1e-6 relative at the default
-// tolerances and within 1e-9 at tight ones, with both CVODE methods.
+// tolerances and within 1e-9 at tight ones, with the default ARKODE Dormand-Prince 5(4) and
+// both CVODE methods.
 #include <catch2/catch.hpp>
 
 #include <string>
@@ -65,7 +66,7 @@ void CheckAgreement(const NamedScene& named, ComputationMethod method, double rt
   options.method = method;
   if (rtol > 0) options.relative_tolerance = rtol;
   const ImpactResult simulated = SimulateImpact(model, options);
-  INFO(named.name << ", " << (method == ComputationMethod::kCvodeAdams ? "Adams" : "BDF") << ", rtol "
+  INFO(named.name << ", " << ToString(method) << ", rtol "
                   << options.relative_tolerance << ": " << simulated.message);
   REQUIRE(simulated.ok());
   REQUIRE(simulated.contact_duration_s.has_value());
@@ -85,11 +86,13 @@ void CheckAgreement(const NamedScene& named, ComputationMethod method, double rt
 }  // namespace
 
 TEST_CASE("Time path agrees with the exact path to 1e-6 at default tolerances", "[agree]") {
-  const auto method = GENERATE(ComputationMethod::kCvodeAdams, ComputationMethod::kCvodeBdf);
+  const auto method = GENERATE(ComputationMethod::kArkodeErk54, ComputationMethod::kCvodeAdams,
+                               ComputationMethod::kCvodeBdf);
   for (const NamedScene& named : GeneratedScenes()) CheckAgreement(named, method, 0.0, 1e-6);
 }
 
 TEST_CASE("Time path agrees with the exact path to 1e-9 at tight tolerances", "[agree]") {
-  const auto method = GENERATE(ComputationMethod::kCvodeAdams, ComputationMethod::kCvodeBdf);
+  const auto method = GENERATE(ComputationMethod::kArkodeErk54, ComputationMethod::kCvodeAdams,
+                               ComputationMethod::kCvodeBdf);
   for (const NamedScene& named : GeneratedScenes()) CheckAgreement(named, method, 1e-12, 1e-9);
 }
