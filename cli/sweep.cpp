@@ -184,7 +184,38 @@ std::string Terminal(PlotFormat format, int width, int height) {
       width, height);
 }
 
+/// How a result column is shown on a chart: value / scale, in unit.
+struct ColumnDisplay {
+  double scale;
+  std::string_view unit;
+};
+ColumnDisplay DisplayFor(std::string_view column) {
+  const auto ends = [&](std::string_view suffix) {
+    return column.size() >= suffix.size() && column.substr(column.size() - suffix.size()) == suffix;
+  };
+  if (ends("_Pa")) return {1e6, "MPa"};
+  if (ends("_J_per_m2")) return {1e4, "J/cm²"};
+  if (ends("_m_per_s")) return {1.0, "m/s"};
+  if (ends("_m")) return {1e-3, "mm"};
+  if (ends("_s")) return {1e-3, "ms"};
+  if (ends("_N")) return {1.0, "N"};
+  return {1.0, ""};
+}
+
+const ResultColumn* FindColumn(std::string_view name) {
+  for (const ResultColumn& column : kResultColumns) {
+    if (column.name == name) return &column;
+  }
+  return nullptr;
+}
+
+std::string ColumnLabel(const ResultColumn& column) {
+  const ColumnDisplay d = DisplayFor(column.name);
+  return d.unit.empty() ? std::string(column.name) : fmt::format("{} [{}]", column.name, d.unit);
+}
+
 struct PlotInput {
+  const ResultColumn* quantity = nullptr;  ///< --plot-quantity; null: the injury ratios
   const SweepAxis* x = nullptr;
   const SweepAxis* y = nullptr;
   std::span<const GridPointResult> points;
@@ -226,13 +257,19 @@ std::string MapScript(const PlotInput& in, const std::string& output) {
   s += Terminal(in.format, 1000, 800);
   s += fmt::format("set output {}\n", GnuplotQuoted(output));
   std::string title = fmt::format(
-      "covopt sweep: worst injury ratio max(laceration, contusion)\\nother values: {}",
+      "covopt sweep: {}\\nother values: {}",
+      in.quantity ? fmt::format("{} with the injury limits", in.quantity->name)
+                  : std::string("worst injury ratio max(laceration, contusion)"),
       in.headline);
   if (!notes.empty()) title += "\\n" + fmt::format("{}", fmt::join(notes, "; "));
   s += fmt::format("set title \"{}\"\n", title);
   s += fmt::format("set xlabel {}\nset ylabel {}\n", GnuplotQuoted(AxisLabel(x)),
                    GnuplotQuoted(AxisLabel(y)));
-  s += "set cblabel 'worst ratio (1 = at a limit; above 2 shown as 2)'\n";
+  if (in.quantity) {
+    s += fmt::format("set cblabel {}\n", GnuplotQuoted(ColumnLabel(*in.quantity)));
+  } else {
+    s += "set cblabel 'worst ratio (1 = at a limit; above 2 shown as 2)'\n";
+  }
   if (x.log) s += "set logscale x\n";
   if (y.log) s += "set logscale y\n";
   // The axis ranges: the finite values of each axis.
@@ -249,9 +286,14 @@ std::string MapScript(const PlotInput& in, const std::string& output) {
   const auto [x0, x1] = range(x, sx);
   const auto [y0, y1] = range(y, sy);
   s += fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", x0, x1, y0, y1);
-  s += "set cbrange [0:2]\n";
-  s += "set palette defined (0 '#1a7f3c', 0.5 '#8fd18b', 0.98 '#f4f1bb', 1.02 '#fdd49e', "
-       "1.5 '#f0793d', 2 '#a50f15')\n";
+  if (in.quantity) {
+    s += "set palette defined (0 '#f7fbff', 0.35 '#9ecae1', 0.7 '#3182bd', 1 '#08306b')\n";
+  } else {
+    s += "set cbrange [0:2]\n";
+    s += "set palette defined (0 '#1a7f3c', 0.5 '#8fd18b', 0.98 '#f4f1bb', 1.02 '#fdd49e', "
+         "1.5 '#f0793d', 2 '#a50f15')\n";
+  }
+  const double qscale = in.quantity ? DisplayFor(in.quantity->name).scale : 1.0;
   s += "$grid << EOD\n";
   for (std::size_t ix = 0; ix < x.values.size(); ++ix) {
     if (!std::isfinite(x.values[ix])) continue;
@@ -262,7 +304,8 @@ std::string MapScript(const PlotInput& in, const std::string& output) {
       s += fmt::format("{} {} {} {} {}\n", x.values[ix] / sx, y.values[iy] / sy,
                        PlotNumber(ok ? p.assessment.laceration.ratio : NAN),
                        PlotNumber(ok ? p.assessment.contusion.ratio : NAN),
-                       PlotNumber(ok ? WorstRatio(p) : NAN));
+                       PlotNumber(ok ? (in.quantity ? in.quantity->value(p) / qscale : WorstRatio(p))
+                                     : NAN));
     }
     s += "\n";
   }
@@ -293,9 +336,10 @@ std::string FamiliesScript(const PlotInput& in, const std::string& output) {
   const SweepAxis* family = families_on_y ? in.y : in.x;
   const double scale = DisplayFor(along.field->spec.kind).scale;
   const std::size_t lines = family ? family->values.size() : 1;
+  const double qscale = in.quantity ? DisplayFor(in.quantity->name).scale : 1.0;
 
   std::string s = "set encoding utf8\n";
-  s += Terminal(in.format, 1000, 900);
+  s += Terminal(in.format, 1000, in.quantity ? 650 : 900);
   s += fmt::format("set output {}\n", GnuplotQuoted(output));
   s += "$data << EOD\n";
   for (std::size_t line = 0; line < lines; ++line) {
@@ -304,16 +348,17 @@ std::string FamiliesScript(const PlotInput& in, const std::string& output) {
       const GridPointResult& p =
           families_on_y ? At(in, i, in.y ? line : 0) : At(in, line, i);
       const bool ok = p.valid();
-      s += fmt::format("{} {} {}\n", along.values[i] / scale,
+      s += fmt::format("{} {} {} {}\n", along.values[i] / scale,
                        PlotNumber(ok ? p.assessment.laceration.ratio : NAN),
-                       PlotNumber(ok ? p.assessment.contusion.ratio : NAN));
+                       PlotNumber(ok ? p.assessment.contusion.ratio : NAN),
+                       PlotNumber(ok && in.quantity ? in.quantity->value(p) / qscale : NAN));
     }
     s += "\n\n";
   }
   s += "EOD\n";
   const std::array<std::string_view, kMaxFamilies> colours{
       "#1f5fa8", "#c0392b", "#2e8b57", "#8e44ad", "#d68910", "#17a2b8", "#555555", "#e84393"};
-  const auto clauses = [&](int column) {
+  const auto clauses = [&](int column, bool limit) {
     std::string c;
     for (std::size_t line = 0; line < lines; ++line) {
       const std::string title =
@@ -324,19 +369,32 @@ std::string FamiliesScript(const PlotInput& in, const std::string& output) {
           "pointsize 0.4 linecolor rgb '{}' title {}, ",
           line, column, colours[line % colours.size()], GnuplotQuoted(title));
     }
+    if (!limit) {
+      c.resize(c.size() - 2);  // the last ", "
+      return c + "\n";
+    }
     return c + "1 with lines dashtype 2 linewidth 1.5 linecolor rgb '#000000' title 'limit'\n";
   };
 
-  s += fmt::format("set multiplot layout 2,1 title \"covopt sweep: injury ratios against {}\\n"
-                   "other values: {}\"\n",
-                   along.name, in.headline);
   if (along.log) s += "set logscale x\n";
   s += fmt::format("set xlabel {}\n", GnuplotQuoted(AxisLabel(along)));
   s += "set grid linecolor rgb '#dddddd'\nset key outside right top\nset yrange [0:*]\n";
+  if (in.quantity) {
+    const bool ratio = in.quantity->name.find("ratio") != std::string_view::npos;
+    s += fmt::format("set title \"covopt sweep: {} against {}\\nother values: {}\"\n",
+                     in.quantity->name, along.name, in.headline);
+    s += fmt::format("set ylabel {}\n", GnuplotQuoted(ColumnLabel(*in.quantity)));
+    s += "plot " + clauses(4, ratio);
+    s += "unset output\n";
+    return s;
+  }
+  s += fmt::format("set multiplot layout 2,1 title \"covopt sweep: injury ratios against {}\\n"
+                   "other values: {}\"\n",
+                   along.name, in.headline);
   s += "set ylabel 'laceration ratio (tensile stress / 1 MPa)'\n";
-  s += "plot " + clauses(2);
+  s += "plot " + clauses(2, true);
   s += "set ylabel 'contusion ratio (energy density / 2.52 J/cm²)'\n";
-  s += "plot " + clauses(3);
+  s += "plot " + clauses(3, true);
   s += "unset multiplot\nunset output\n";
   return s;
 }
@@ -583,6 +641,11 @@ CLI::App* SetupSweep(CLI::App& app, SweepOptions& options) {
                   "families when an axis has at most 8 values")
       ->type_name("FILE.png|FILE.svg")
       ->group("Output");
+  sub->add_option("--plot-quantity", options.plot_quantity,
+                  "what the chart shows instead of the injury ratios: a CSV result column, "
+                  "e.g. max_compressive_stress_Pa, peak_force_N, contact_duration_s")
+      ->type_name("COLUMN")
+      ->group("Output");
   sub->add_flag("--no-progress", options.no_progress,
                 "no progress bar (it is shown only on a terminal, for long sweeps)")
       ->group("Output");
@@ -605,6 +668,7 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
   SimulationPlan plan;
   std::optional<PlotFormat> plot_format;
   unsigned threads = 0;
+  const ResultColumn* quantity = nullptr;
   try {
     x = ParseSweepAxis(options.x, "--x");
     if (options.y) {
@@ -643,6 +707,15 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
       threads = static_cast<unsigned>(*options.threads);
     }
     if (options.csv_file && options.csv_file->empty()) throw InputError("--csv: empty file name");
+    if (options.plot_quantity) {
+      quantity = FindColumn(*options.plot_quantity);
+      if (quantity == nullptr) {
+        throw InputError(fmt::format("--plot-quantity: no result column '{}'; the columns are {}",
+                                     *options.plot_quantity,
+                                     fmt::join(kResultColumnNames, ", ")));
+      }
+      if (!options.plot_file) throw InputError("--plot-quantity applies only with --plot FILE");
+    }
     if (options.plot_file) {
       plot_format = PlotFormatFor(*options.plot_file);
       if (!plot_format) {
@@ -692,6 +765,7 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     }
     if (plot_format) {
       PlotInput input;
+      input.quantity = quantity;
       input.x = &x;
       input.y = y_axis;
       input.points = points;

@@ -53,6 +53,9 @@ struct SweepOptions {
   /// --plot FILE.png|FILE.svg: the worst-ratio map with both limit contours, or line
   /// families of the two ratios when an axis has at most kMaxFamilies values.
   std::optional<std::string> plot_file;
+  /// --plot-quantity COLUMN: chart this result column (e.g. max_compressive_stress_Pa)
+  /// instead of the injury ratios; the map keeps the two limit contours.
+  std::optional<std::string> plot_quantity;
   /// --no-progress: no progress bar even on a terminal.
   bool no_progress = false;
 };

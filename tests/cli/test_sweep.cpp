@@ -287,6 +287,12 @@ TEST_CASE("sweep writes the CSV file and draws a map or line families", "[sweep]
   const std::string svg = ReadFile(lines_path);
   CHECK_THAT(svg, Contains("<svg"));
   CHECK_THAT(svg, Contains("robot-mass 2 kg"));
+
+  const auto stress_path = dir / "stress.svg";
+  run = Run({"sweep", "--x", "speed=0.5m/s..3m/s:20", "--plot", stress_path.string(),
+             "--plot-quantity", "max_compressive_stress_Pa"});
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(ReadFile(stress_path), Contains("max_compressive_stress_Pa [MPa]"));
 }
 
 TEST_CASE("bad sweep specs are exit 2 naming the flag, the value and what is allowed",
@@ -314,6 +320,9 @@ TEST_CASE("bad sweep specs are exit 2 naming the flag, the value and what is all
       {{"--x", "speed=1m/s..2m/s", "--threads", "0"}, "--threads must be in 1..4096 (got 0)"},
       {{"--x", "speed=1m/s..2m/s", "--plot", "chart.pdf"}, "--plot: cannot tell the format"},
       {{"--x", "speed=1m/s..2m/s:1000", "--y", "covering-thickness=0..1mm:1001"}, "at most 1000000"},
+      {{"--x", "speed=1m/s..2m/s", "--plot", "a.png", "--plot-quantity", "force"},
+       "--plot-quantity: no result column 'force'; the columns are max_penetration_m"},
+      {{"--x", "speed=1m/s..2m/s", "--plot-quantity", "peak_force_N"}, "only with --plot"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args = {"sweep"};
