@@ -9,6 +9,7 @@
 
 #include "materials_command.hpp"
 #include "optimize.hpp"
+#include "parse_errors.hpp"
 #include "simulate.hpp"
 #include "sweep.hpp"
 #include "workprecision.hpp"
@@ -48,8 +49,10 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
       out.flush();
       return 0;
     }
-    fmt::print(err, "covopt: error: {}\nRun 'covopt --help' or 'covopt simulate --help'.\n",
-               e.what());
+    // One line naming the subcommand, the flag, the value and what is allowed.
+    const CLI::App* sub = ActiveSubcommand(app);
+    fmt::print(err, "covopt{}{}: error: {}\n", sub ? " " : "", sub ? sub->get_name() : "",
+               DescribeParseError(app, e));
     return 2;
   }
 

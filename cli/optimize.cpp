@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -54,6 +56,18 @@ struct Resolved {
 double Parse(const std::optional<std::string>& text, QuantityKind kind, std::string_view flag,
              double fallback) {
   return text ? ParseQuantity(*text, QuantitySpec{kind}, flag) : fallback;
+}
+
+/// A whole number in [min, max] as typed after `flag` (no sign for min >= 0, no unit).
+unsigned long long ParseCount(const std::string& text, std::string_view flag, unsigned long long min,
+                              unsigned long long max) {
+  unsigned long long value = 0;
+  const char* const end = text.data() + text.size();
+  const auto [stop, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || stop != end || value < min || value > max) {
+    throw InputError(fmt::format("{}: expected a whole number in [{}, {}] (got '{}')", flag, min, max, text));
+  }
+  return value;
 }
 
 bool IsCoveringField(const SceneField& field) { return field.table == "covering"; }
@@ -114,11 +128,9 @@ Resolved Resolve(const OptimizeOptions& o) {
     else if (g == "mlsl") d.global_algorithm = optim::NloptAlgorithm::kMlsl;
     else throw InputError(fmt::format("--global: expected direct-l, isres or mlsl (got '{}')", g));
   }
-  if (o.seed) d.seed = *o.seed;
-  if (o.runners_up) {
-    require(*o.runners_up >= 0, fmt::format("--top must be >= 0 (got {})", *o.runners_up));
-    r.runners_up = *o.runners_up;
-  }
+  if (o.seed) d.seed = ParseCount(*o.seed, "--seed", 0, std::numeric_limits<unsigned long>::max());
+  if (o.runners_up) r.runners_up = static_cast<int>(ParseCount(*o.runners_up, "--top", 0, 1000000));
+  if (o.threads) d.threads = static_cast<int>(ParseCount(*o.threads, "--threads", 1, 256));
 
   // The candidates: the built-in catalog, plus --catalog, filtered.
   materials::Catalog catalog = materials::Catalog::BuiltIn();
@@ -317,8 +329,11 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
       ->type_name("NAME")->group("Materials");
   sub->add_option("--global", options.global_algorithm, "global search: direct-l (default), isres or mlsl")
       ->group("Solver");
-  sub->add_option("--seed", options.seed, "seed of the stochastic global searches")->group("Solver");
-  sub->add_option("--top", options.runners_up, "rows of the candidate table (default 8)")->group("Output");
+  sub->add_option("--seed", options.seed, "seed of the stochastic global searches")->type_name("N")->group("Solver");
+  sub->add_option("--threads", options.threads,
+                  "threads of the per-material catalog snap, 1-256 (default 1); the answer does not depend on it")
+      ->type_name("N")->group("Solver");
+  sub->add_option("--top", options.runners_up, "rows of the candidate table (default 8)")->type_name("N")->group("Output");
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the report")->group("Output");
   return sub;
 }

@@ -38,8 +38,9 @@ struct OptimizeOptions {
   std::vector<std::string> families;            ///< --family (repeatable)
   std::vector<std::string> materials;           ///< --material (repeatable): only these
   std::optional<std::string> global_algorithm;  ///< --global direct-l|isres|mlsl
-  std::optional<unsigned long> seed;            ///< --seed
-  std::optional<int> runners_up;                ///< --top N rows in the table (default 8)
+  std::optional<std::string> seed;              ///< --seed: a whole number
+  std::optional<std::string> runners_up;        ///< --top N rows in the table (default 8)
+  std::optional<std::string> threads;           ///< --threads N of the catalog snap (default 1)
   bool json = false;
 };
 

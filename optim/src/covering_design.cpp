@@ -4,9 +4,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
@@ -47,6 +50,8 @@ void ValidateOptions(const DesignOptions& o) {
                                           std::to_string(o.global_evaluations) + ")");
   Require(o.thickness_scan_points >= 10, "thickness scan points must be >= 10");
   Require(o.thickness_resolution_m > 0, "thickness resolution must be > 0 m");
+  Require(o.threads >= 1 && o.threads <= 256,
+          "threads must be in [1, 256] (got " + std::to_string(o.threads) + ")");
   Require(std::isfinite(o.thickness_step_m) && o.thickness_step_m >= 0,
           "thickness step must be >= 0 m (got " + Number(o.thickness_step_m) + ")");
 }
@@ -242,6 +247,40 @@ CandidateOutcome SnapMaterial(const CoveringOracle& oracle, const CandidateMater
   return outcome;
 }
 
+/// SnapMaterial for every material, on options.threads threads; outcome i is material i's,
+/// whatever the thread count (each thread writes only its own slots). The first exception
+/// thrown by any thread is rethrown here after all have joined.
+std::vector<CandidateOutcome> SnapMaterials(const CoveringOracle& oracle,
+                                            std::span<const CandidateMaterial> materials,
+                                            const DesignOptions& o) {
+  std::vector<CandidateOutcome> outcomes(materials.size());
+  const std::size_t threads =
+      std::min<std::size_t>(static_cast<std::size_t>(o.threads), materials.size());
+  if (threads <= 1) {
+    for (std::size_t i = 0; i < materials.size(); ++i) outcomes[i] = SnapMaterial(oracle, materials[i], o);
+    return outcomes;
+  }
+  std::vector<std::exception_ptr> errors(threads);
+  std::vector<std::thread> pool;
+  pool.reserve(threads);
+  for (std::size_t t = 0; t < threads; ++t) {
+    pool.emplace_back([&, t] {
+      try {
+        for (std::size_t i = t; i < materials.size(); i += threads) {
+          outcomes[i] = SnapMaterial(oracle, materials[i], o);
+        }
+      } catch (...) {
+        errors[t] = std::current_exception();
+      }
+    });
+  }
+  for (std::thread& thread : pool) thread.join();
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+  return outcomes;
+}
+
 /// Nudges a design that meets the constraints only to solver tolerance onto the safe side.
 DesignScore MakeStrictlySafe(const CoveringOracle& oracle, DesignScore score, double sf, double max_b) {
   for (int k = 0; k < 40 && !score.safe(sf) && score.margin(sf) > -1e-6; ++k) {
@@ -386,9 +425,7 @@ ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
   }
 
   // Snap to each material, rank.
-  for (const CandidateMaterial& material : materials) {
-    out.candidates.push_back(SnapMaterial(oracle, material, options));
-  }
+  out.candidates = SnapMaterials(oracle, materials, options);
   std::stable_sort(out.candidates.begin(), out.candidates.end(),
                    [](const CandidateOutcome& a, const CandidateOutcome& b) {
                      if (a.safe != b.safe) return a.safe;

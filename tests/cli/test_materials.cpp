@@ -171,7 +171,7 @@ TEST_CASE("materials show of a name not in the catalog is exit 2 with a suggesti
   CheckBadInput({"materials", "show", "unobtainium"},
                 "no material 'unobtainium' in the catalog; run 'covopt materials list'");
   CheckBadInput({"materials", "show"}, "name is required");
-  CheckBadInput({"materials"}, "covopt: error:");
+  CheckBadInput({"materials"}, "covopt materials: error: A subcommand is required");
 }
 
 TEST_CASE("materials find returns what Catalog::Filter returns", "[materials][find]") {

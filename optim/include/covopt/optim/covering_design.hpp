@@ -125,6 +125,10 @@ struct DesignOptions {
   /// thickness range, then bisects to thickness_resolution_m.
   int thickness_scan_points = 250;
   double thickness_resolution_m = 1e-6;
+  /// Threads of the catalog snap (each material is independent), in [1, 256]. The outcomes
+  /// are assembled in the materials' order before ranking, so the result is bit-identical
+  /// for any thread count.
+  int threads = 1;
   /// The recommended thickness is rounded up to a multiple of this [m] (0 = not rounded),
   /// as sold; the rounded thickness is checked safe again.
   double thickness_step_m = 0.5e-3;
