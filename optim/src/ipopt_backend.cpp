@@ -169,19 +169,31 @@ SolveResult SolveWithIpopt(const Problem& problem, std::span<const double> x0,
   {
     std::lock_guard<std::mutex> lock(IpoptMutex());
     Ipopt::SmartPtr<TnlpAdapter> nlp = new TnlpAdapter(problem, x0, guard);
-    Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
+    // No console journal at all: Ipopt reports a rejected option on its console as soon as
+    // it is set (before print_level applies), and the library never prints.
+    Ipopt::SmartPtr<Ipopt::IpoptApplication> app =
+        new Ipopt::IpoptApplication(/*create_console_out=*/false);
     app->RethrowNonIpoptException(false);
     Ipopt::SmartPtr<Ipopt::OptionsList> o = app->Options();
-    o->SetIntegerValue("print_level", 0);
-    o->SetStringValue("sb", "yes");  // no banner
-    o->SetNumericValue("tol", options.tolerance);
-    o->SetNumericValue("constr_viol_tol", options.constraint_tolerance);
-    o->SetIntegerValue("max_iter", options.max_iterations);
-    o->SetNumericValue("max_cpu_time", options.max_seconds);
-    if (options.limited_memory_hessian) o->SetStringValue("hessian_approximation", "limited-memory");
-    o->SetStringValue("derivative_test", options.derivative_test);
-    status = app->Initialize("");  // "" : read no ipopt.opt from the working directory
-    if (status == Ipopt::Solve_Succeeded) status = app->OptimizeTNLP(nlp);
+    // Every option must be accepted: an ignored one (say a tolerance <= 0) would silently
+    // run Ipopt with its default instead. A rejected option is Ipopt's Invalid_Option.
+    bool accepted = o->SetIntegerValue("print_level", 0);
+    accepted = o->SetStringValue("sb", "yes") && accepted;  // no banner
+    accepted = o->SetNumericValue("tol", options.tolerance) && accepted;
+    accepted = o->SetNumericValue("constr_viol_tol", options.constraint_tolerance) && accepted;
+    accepted = o->SetIntegerValue("max_iter", options.max_iterations) && accepted;
+    accepted = o->SetNumericValue("max_cpu_time", options.max_seconds) && accepted;
+    if (options.limited_memory_hessian) {
+      accepted = o->SetStringValue("hessian_approximation", "limited-memory") && accepted;
+    }
+    accepted = options.derivative_test != nullptr &&
+               o->SetStringValue("derivative_test", options.derivative_test) && accepted;
+    if (accepted) {
+      status = app->Initialize("");  // "" : read no ipopt.opt from the working directory
+      if (status == Ipopt::Solve_Succeeded) status = app->OptimizeTNLP(nlp);
+    } else {
+      status = Ipopt::Invalid_Option;
+    }
     solution = nlp->solution();
   }
   guard.RethrowIfAny();

@@ -37,7 +37,7 @@ std::string_view ToString(ThresholdReading reading) noexcept;
 struct RobotSpec {
   /// Reflected mass in the impact direction [kg], > 0; kFixed for an immovable plate.
   double mass_kg = 10.0;
-  /// Relative approach speed at first contact [m/s], > 0.
+  /// Relative approach speed at first contact [m/s], in [1e-6, 100].
   double speed_m_per_s = 2.0;
   /// Radius of curvature of the robot surface under the covering [m], > 0; kFlat if flat.
   double radius_m = 0.015;

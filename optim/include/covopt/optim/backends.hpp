@@ -55,8 +55,9 @@ struct IpoptOptions {
   const char* derivative_test = "none";
 };
 
-/// Runs Ipopt from x0 with exact first derivatives, silently (print_level 0, no options
-/// file read). Ipopt is serialised by a process-wide mutex: its MUMPS linear solver is not
+/// Runs Ipopt from x0 with exact first derivatives, silently (no console output at all, no
+/// options file read). An option Ipopt rejects (e.g. a tolerance <= 0) is not ignored: the
+/// solve ends at once with Termination::kInvalidProblem and raw name "Invalid_Option". Ipopt is serialised by a process-wide mutex: its MUMPS linear solver is not
 /// thread-safe.
 SolveResult SolveWithIpopt(const Problem& problem, std::span<const double> x0,
                            const IpoptOptions& options = {});
