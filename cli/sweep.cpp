@@ -257,7 +257,7 @@ std::string MapScript(const PlotInput& in, const std::string& output) {
   s += Terminal(in.format, 1000, 800);
   s += fmt::format("set output {}\n", GnuplotQuoted(output));
   std::string title = fmt::format(
-      "covopt sweep: {}\\nother values: {}",
+      "covopt sweep: {}\\nscene: {}",
       in.quantity ? fmt::format("{} with the injury limits", in.quantity->name)
                   : std::string("worst injury ratio max(laceration, contusion)"),
       in.headline);
@@ -381,7 +381,7 @@ std::string FamiliesScript(const PlotInput& in, const std::string& output) {
   s += "set grid linecolor rgb '#dddddd'\nset key outside right top\nset yrange [0:*]\n";
   if (in.quantity) {
     const bool ratio = in.quantity->name.find("ratio") != std::string_view::npos;
-    s += fmt::format("set title \"covopt sweep: {} against {}\\nother values: {}\"\n",
+    s += fmt::format("set title \"covopt sweep: {} against {}\\nscene: {}\"\n",
                      in.quantity->name, along.name, in.headline);
     s += fmt::format("set ylabel {}\n", GnuplotQuoted(ColumnLabel(*in.quantity)));
     s += "plot " + clauses(4, ratio);
@@ -389,7 +389,7 @@ std::string FamiliesScript(const PlotInput& in, const std::string& output) {
     return s;
   }
   s += fmt::format("set multiplot layout 2,1 title \"covopt sweep: injury ratios against {}\\n"
-                   "other values: {}\"\n",
+                   "scene: {}\"\n",
                    along.name, in.headline);
   s += "set ylabel 'laceration ratio (tensile stress / 1 MPa)'\n";
   s += "plot " + clauses(2, true);
@@ -769,7 +769,8 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
       input.x = &x;
       input.y = y_axis;
       input.points = points;
-      input.headline = SceneHeadline(plan.scene);
+      input.headline = fmt::format("{}; swept: {}{}", SceneHeadline(plan.scene), x.name,
+                                   y ? " and " + y->name : std::string());
       input.format = *plot_format;
       const bool map = y && x.values.size() > kMaxFamilies && y->values.size() > kMaxFamilies;
       RunGnuplot(*options.plot_file, [&](const std::string& output_path) {
