@@ -147,16 +147,16 @@ std::string ChartHeader(PlotFormat format, const std::string& output_path,
                         const std::string& title) {
   std::string s = "set encoding utf8\n";
   if (format == PlotFormat::kPng) {
-    s += "set terminal pngcairo size 1200,750 font 'sans,11' noenhanced\n";
+    s += "set terminal pngcairo size 1100,900 font 'sans,11' noenhanced\n";
   } else {
-    s += "set terminal svg size 1200,750 dynamic font 'sans,11' noenhanced "
+    s += "set terminal svg size 1100,900 dynamic font 'sans,11' noenhanced "
          "background rgb 'white'\n";
   }
   s += fmt::format("set output {}\n", GnuplotQuoted(output_path));
   s += fmt::format("set title {}\n", GnuplotQuoted(title));
   s += "set logscale xy\nset format x '%.0e'\nset format y '%g'\n";
   s += "set grid xtics ytics mxtics mytics linecolor rgb '#e5e5e5'\n";
-  s += "set key outside right top vertical spacing 1.1\n";
+  s += "set key below horizontal maxcols 3 spacing 1.1 width -2\n";
   return s;
 }
 
