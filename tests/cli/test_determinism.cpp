@@ -78,3 +78,25 @@ TEST_CASE("only wall time is masked before comparing", "[determinism]") {
   CHECK(WithoutWallTime(R"({"seconds": 1.5e-05, "x": 1.5e-05})") == R"({"seconds": 0, "x": 1.5e-05})");
   CHECK(WithoutWallTime(R"({"max_seconds": 2})") == R"({"max_seconds": 2})");
 }
+
+TEST_CASE("sweep --csv - is bit-identical on repeated runs and on 1 or 2 threads",
+          "[determinism]") {
+  // covopt sweep prints CSV, not JSON, and has no wall-time column: compared as is.
+  const std::vector<std::string> axes = {"sweep", "--csv", "-", "--x",
+                                         "covering-modulus=1MPa..300MPa:log:9", "--y",
+                                         "speed=0.5m/s..4m/s:7"};
+  auto csv = [](std::vector<std::string> args) {
+    const CliRun run = Run(args);
+    INFO("stderr: " << run.err);
+    REQUIRE(run.exit_code == 0);
+    REQUIRE(run.out.size() > 100);
+    return run.out;
+  };
+  auto one = axes, two = axes;
+  one.insert(one.end(), {"--threads", "1"});
+  two.insert(two.end(), {"--threads", "2"});
+  const std::string a = csv(one);
+  CHECK(a == csv(one));
+  CHECK(a == csv(two));
+  CHECK(csv(two) == csv(two));
+}
