@@ -316,7 +316,7 @@ std::string MapScript(const PlotInput& in, const std::string& output) {
   s += "set table $con\nsplot $grid using 1:2:4 notitle\nunset table\n";
   s += "unset contour\nset surface\n";
   s += "set view map\nset pm3d explicit at b\n";
-  s += "set bmargin 6\nset key at screen 0.5, screen 0.05 center center horizontal maxrows 1 width 2\n";
+  s += "set tmargin 5\nset bmargin 6\nset key at screen 0.5, screen 0.05 center center horizontal maxrows 1 width 2\n";
   s += "set grid front linecolor rgb '#888888'\n";
   s += "splot $grid using 1:2:5 with pm3d notitle, \\\n"
        "      $lac using 1:2:(0) with lines linewidth 2.5 linecolor rgb '#1f5fa8' "
@@ -769,7 +769,7 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
       input.x = &x;
       input.y = y_axis;
       input.points = points;
-      input.headline = fmt::format("{}; swept: {}{}", SceneHeadline(plan.scene), x.name,
+      input.headline = fmt::format("{}\\nswept: {}{}", SceneHeadline(plan.scene), x.name,
                                    y ? " and " + y->name : std::string());
       input.format = *plot_format;
       const bool map = y && x.values.size() > kMaxFamilies && y->values.size() > kMaxFamilies;
