@@ -37,7 +37,7 @@ json() {
     $1 == b { inside = 1; next }
     inside && $1 == k { v = $2; sub(/,$/, "", v); print v; exit }' "$1"
 }
-fmt() { awk -v v="$1" -v s="$2" 'BEGIN { printf("%.4g\n", v * s) }'; }
+fmt() { awk -v v="$1" -v s="$2" 'BEGIN { printf("%.6g\n", v * s) }'; }
 # row LABEL CSV: peak force, duration, penetration, stress, ratios of a one-point CSV.
 row() {
   printf '%-34s F %8.1f N  T %6.2f ms  delta %6.2f mm  sigma_c %7.3f MPa  lac %.3f  con %.3f  fully_compressed %s  warnings: %s\n' \
