@@ -166,6 +166,17 @@ Json SceneToJson(const Scene& s) {
   return j;
 }
 
+Json StatisticsToJson(const SolverStatistics& st) {
+  return Json{{"steps", st.steps},
+              {"rhs_evaluations", st.rhs_evaluations},
+              {"root_evaluations", st.root_evaluations},
+              {"jacobian_evaluations", st.jacobian_evaluations},
+              {"nonlinear_iterations", st.nonlinear_iterations},
+              {"error_test_failures", st.error_test_failures},
+              {"convergence_failures", st.convergence_failures},
+              {"restarts", st.restarts}};
+}
+
 Json ToJson(const SimulationReport& report) {
   const ImpactResult& r = report.result;
   const ImpactPeaks& p = r.peaks;
@@ -196,18 +207,8 @@ Json ToJson(const SimulationReport& report) {
   j["safe"] = report.assessment.safe();
   j["method"] = ToString(r.method);
 
-  const SolverStatistics& st = r.statistics;
-  Json solver = {{"status", ToString(r.status)},
-                 {"message", r.message},
-                 {"raw_code", r.raw_code},
-                 {"steps", st.steps},
-                 {"rhs_evaluations", st.rhs_evaluations},
-                 {"root_evaluations", st.root_evaluations},
-                 {"jacobian_evaluations", st.jacobian_evaluations},
-                 {"nonlinear_iterations", st.nonlinear_iterations},
-                 {"error_test_failures", st.error_test_failures},
-                 {"convergence_failures", st.convergence_failures},
-                 {"restarts", st.restarts}};
+  Json solver = {{"status", ToString(r.status)}, {"message", r.message}, {"raw_code", r.raw_code}};
+  solver.update(StatisticsToJson(r.statistics));
   if (report.time_options) {
     const TimeIntegrationOptions& o = *report.time_options;
     solver["relative_tolerance"] = Number(o.relative_tolerance);

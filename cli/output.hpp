@@ -42,6 +42,11 @@ void PrintTable(std::ostream& out, const SimulationReport& report);
 /// Every resolved scene input in SI; fixed masses are "fixed", a flat radius is "flat".
 nlohmann::ordered_json SceneToJson(const Scene& scene);
 
+/// The integrator's counters as JSON: steps, rhs_evaluations, root_evaluations,
+/// jacobian_evaluations, nonlinear_iterations, error_test_failures, convergence_failures,
+/// restarts.
+nlohmann::ordered_json StatisticsToJson(const SolverStatistics& statistics);
+
 /// The report as one JSON object, values in SI, keys carrying the unit
 /// (max_penetration_m, peak_force_N, ...); missing or non-finite values are null.
 /// scene.covering.material is the catalog material's name, or null.

@@ -298,30 +298,23 @@ void PrintStudy(std::ostream& out, const std::vector<WorkPrecisionPoint>& points
 }
 
 Json PointJson(const WorkPrecisionPoint& p) {
-  const SolverStatistics& st = p.statistics;
-  return Json{{"method", ToString(p.method)},
-              {"restart_at_phase_switches", p.restart},
-              {"relative_tolerance", JsonNumber(p.relative_tolerance)},
-              {"status", ToString(p.status)},
-              {"message", p.message},
-              {"worst_error", JsonNumber(p.worst_error)},
-              {"error_max_penetration", JsonNumber(p.error_max_penetration)},
-              {"error_peak_force", JsonNumber(p.error_peak_force)},
-              {"error_max_compressive_stress", JsonNumber(p.error_max_compressive_stress)},
-              {"error_max_energy_density", JsonNumber(p.error_max_energy_density)},
-              {"error_contact_duration", JsonNumber(p.error_contact_duration)},
-              {"energy_residual", p.energy_residual ? JsonNumber(*p.energy_residual) : Json(nullptr)},
-              {"seconds_per_impact", JsonNumber(p.seconds_per_impact)},
-              {"timed_runs", p.timed_runs},
-              {"steps", st.steps},
-              {"rhs_evaluations", st.rhs_evaluations},
-              {"root_evaluations", st.root_evaluations},
-              {"jacobian_evaluations", st.jacobian_evaluations},
-              {"nonlinear_iterations", st.nonlinear_iterations},
-              {"error_test_failures", st.error_test_failures},
-              {"convergence_failures", st.convergence_failures},
-              {"restarts", st.restarts},
-              {"warnings", p.warning_count}};
+  Json j{{"method", ToString(p.method)},
+         {"restart_at_phase_switches", p.restart},
+         {"relative_tolerance", JsonNumber(p.relative_tolerance)},
+         {"status", ToString(p.status)},
+         {"message", p.message},
+         {"worst_error", JsonNumber(p.worst_error)},
+         {"error_max_penetration", JsonNumber(p.error_max_penetration)},
+         {"error_peak_force", JsonNumber(p.error_peak_force)},
+         {"error_max_compressive_stress", JsonNumber(p.error_max_compressive_stress)},
+         {"error_max_energy_density", JsonNumber(p.error_max_energy_density)},
+         {"error_contact_duration", JsonNumber(p.error_contact_duration)},
+         {"energy_residual", p.energy_residual ? JsonNumber(*p.energy_residual) : Json(nullptr)},
+         {"seconds_per_impact", JsonNumber(p.seconds_per_impact)},
+         {"timed_runs", p.timed_runs}};
+  j.update(StatisticsToJson(p.statistics));
+  j["warnings"] = p.warning_count;
+  return j;
 }
 
 std::vector<ComputationMethod> ResolveMethods(const std::vector<std::string>& names) {

@@ -24,18 +24,12 @@
 using covopt::cli::testing::CliRun;
 using covopt::cli::testing::ReadFile;
 using covopt::cli::testing::Run;
+using covopt::cli::testing::SplitLines;
 using covopt::cli::testing::TempDir;
 using Catch::Matchers::Contains;
 using Catch::Matchers::StartsWith;
 
 namespace {
-
-std::vector<std::string> Lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
 
 std::vector<double> Columns(const std::string& row) {
   std::vector<double> values;
@@ -76,7 +70,7 @@ TEST_CASE("simulate --history writes the CSV header and one row per history samp
   const auto json = nlohmann::json::parse(run.out);
   CHECK(json["method"] == "arkode-erk54");  // a history makes the time path (its default) run
 
-  const auto lines = Lines(ReadFile(csv));
+  const auto lines = SplitLines(ReadFile(csv));
   REQUIRE(lines.size() > 10);
   CHECK(lines.front() == covopt::cli::kHistoryCsvHeader);
   CHECK(lines.front() ==
@@ -106,7 +100,7 @@ TEST_CASE("the history CSV has full-precision numbers that read back exactly", "
   options.record_history = true;
   const auto result = covopt::SimulateImpact(covopt::ImpactModel::FromScene({}), options);
   REQUIRE(result.ok());
-  const auto lines = Lines(covopt::cli::HistoryCsv(result.history));
+  const auto lines = SplitLines(covopt::cli::HistoryCsv(result.history));
   REQUIRE(lines.size() == result.history.size() + 1);
   for (std::size_t i = 0; i < result.history.size(); ++i) {
     const auto row = Columns(lines[i + 1]);
@@ -182,7 +176,7 @@ TEST_CASE("the gnuplot script labels both axes and carries the whole history", "
   CHECK_THAT(script, Contains("set terminal pngcairo") && Contains("set output '/tmp/it''s.png'") &&
                          Contains("set xlabel 'time [ms]'") && Contains("'force [N]'") &&
                          Contains("'compressive stress [MPa]'") && Contains("axes x1y2"));
-  const auto lines = Lines(script);
+  const auto lines = SplitLines(script);
   const auto begin = std::find(lines.begin(), lines.end(), "$history << EOD");
   const auto end = std::find(lines.begin(), lines.end(), "EOD");
   REQUIRE(begin != lines.end());

@@ -1,6 +1,9 @@
 #pragma once
 // Shared scene builders for the core tests.
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <covopt/core.hpp>
 
@@ -12,6 +15,20 @@ inline Scene PaperScene(double covering_thickness_m = 0.0, double covering_modul
   Scene scene;
   scene.covering = {covering_modulus_Pa, covering_poisson, covering_thickness_m};
   return scene;
+}
+
+/// A scene with a name for test messages.
+struct NamedScene {
+  std::string name;
+  Scene scene;
+};
+
+/// Appends `base` edited by `edit` (a callable taking Scene&) under `name`.
+template <class Edit>
+void AddVariant(std::vector<NamedScene>& scenes, const Scene& base, std::string name, Edit&& edit) {
+  Scene scene = base;
+  edit(scene);
+  scenes.push_back({std::move(name), scene});
 }
 
 inline double RelativeError(double value, double reference) {

@@ -12,24 +12,18 @@
 #include "test_helpers.hpp"
 
 using namespace covopt;
+using covopt::test::AddVariant;
+using covopt::test::NamedScene;
 using covopt::test::PaperScene;
 using covopt::test::RelativeError;
 
 namespace {
 
-struct NamedScene {
-  std::string name;
-  Scene scene;
-};
-
 /// The scenes where methods were seen to struggle.
 std::vector<NamedScene> StressScenes() {
   std::vector<NamedScene> scenes;
-  auto add = [&](std::string name, auto&& edit) {
-    Scene scene = PaperScene(0.015, 27.6e6, 0.25);
-    edit(scene);
-    scenes.push_back({std::move(name), scene});
-  };
+  const Scene base = PaperScene(0.015, 27.6e6, 0.25);
+  auto add = [&](std::string name, auto&& edit) { AddVariant(scenes, base, std::move(name), edit); };
   add("paper scene", [](Scene&) {});
   add("bare robot on bone", [](Scene& s) { s.covering.thickness_m = 0; });
   add("0.5 mm of 1 GPa, bottomed out", [](Scene& s) { s.covering = {1e9, 0.25, 0.5e-3}; });

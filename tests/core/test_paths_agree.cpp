@@ -12,23 +12,17 @@
 #include "test_helpers.hpp"
 
 using namespace covopt;
+using covopt::test::AddVariant;
+using covopt::test::NamedScene;
 using covopt::test::PaperScene;
 using covopt::test::RelativeError;
 
 namespace {
 
-struct NamedScene {
-  std::string name;
-  Scene scene;
-};
-
 std::vector<NamedScene> GeneratedScenes() {
   std::vector<NamedScene> scenes;
-  auto add = [&](std::string name, auto&& edit) {
-    Scene scene = PaperScene(0.015, 27.6e6, 0.22);
-    edit(scene);
-    scenes.push_back({std::move(name), scene});
-  };
+  const Scene base = PaperScene(0.015, 27.6e6, 0.22);
+  auto add = [&](std::string name, auto&& edit) { AddVariant(scenes, base, std::move(name), edit); };
   add("paper scene, 15 mm polystyrene", [](Scene&) {});
   add("no covering", [](Scene& s) { s.covering.thickness_m = 0; });
   add("thin, fully compressed covering", [](Scene& s) { s.covering.thickness_m = 0.002; });
