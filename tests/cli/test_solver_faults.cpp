@@ -177,3 +177,26 @@ TEST_CASE("a gnuplot that fails or is missing leaves the existing chart and no t
   CHECK(ReadFile(csv) == kGoodCsv);
   CHECK(Listing(dir.path()) == std::vector<std::string>{"h.csv", "p.png"});
 }
+
+TEST_CASE("sweep --csv: bad input and unwritable targets leave files untouched",
+          "[faults][cli][outputs]") {
+  TempDir dir;
+  const fs::path csv = dir.Write("s.csv", kGoodCsv);
+  // Bad input: nothing written, the old file intact.
+  const CliRun bad = Run({"sweep", "--x", "speed=1m/s..2kg", "--csv", csv.string()});
+  CHECK(bad.exit_code == 2);
+  CHECK(ReadFile(csv) == kGoodCsv);
+  // An unwritable target: exit 1, nothing created.
+  const fs::path missing = dir / "missing" / "s.csv";
+  const CliRun unwritable = Run({"sweep", "--x", "speed=1m/s..2m/s:3", "--csv", missing.string()});
+  CHECK(unwritable.exit_code == 1);
+  CHECK_THAT(unwritable.err, Contains("s.csv"));
+  CHECK(Listing(dir.path()) == std::vector<std::string>{"s.csv"});
+  // A good run replaces the file whole, with no temporary left behind.
+  const CliRun good = Run({"sweep", "--x", "speed=1m/s..2m/s:3", "--csv", csv.string()});
+  CAPTURE(good.err);
+  REQUIRE(good.exit_code == 0);
+  CHECK(ReadFile(csv) != kGoodCsv);
+  CHECK(ReadFile(csv).find("speed") != std::string::npos);
+  CHECK(Listing(dir.path()) == std::vector<std::string>{"s.csv"});
+}
