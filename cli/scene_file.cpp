@@ -16,27 +16,14 @@
 #include <toml++/toml.h>
 
 #include "errors.hpp"
+#include "parse_errors.hpp"
 #include "quantity.hpp"
 #include "scene_fields.hpp"
 
 namespace covopt::cli {
 namespace {
 
-/// Levenshtein distance, for "did you mean" suggestions.
-std::size_t EditDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
+using parse_errors_detail::EditDistance;
 
 /// The closest candidate, if it is close enough to be a likely typo.
 std::optional<std::string_view> Closest(std::string_view word,

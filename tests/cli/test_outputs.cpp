@@ -27,6 +27,7 @@ using covopt::cli::testing::Run;
 using covopt::cli::testing::SplitLines;
 using covopt::cli::testing::TempDir;
 using Catch::Matchers::Contains;
+using covopt::cli::testing::ScopedEnv;
 using Catch::Matchers::StartsWith;
 
 namespace {
@@ -37,28 +38,6 @@ std::vector<double> Columns(const std::string& row) {
   for (std::string cell; std::getline(in, cell, ',');) values.push_back(std::stod(cell));
   return values;
 }
-
-/// Sets an environment variable for the scope, restoring the old value after.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    ::setenv(name, value.c_str(), 1);
-  }
-  ~ScopedEnv() {
-    if (old_) {
-      ::setenv(name_, old_->c_str(), 1);
-    } else {
-      ::unsetenv(name_);
-    }
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
 
 }  // namespace
 

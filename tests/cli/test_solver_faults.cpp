@@ -23,30 +23,9 @@ using covopt::cli::testing::ReadFile;
 using covopt::cli::testing::Run;
 using covopt::cli::testing::TempDir;
 using Catch::Matchers::Contains;
+using covopt::cli::testing::ScopedEnv;
 
 namespace fs = std::filesystem;
-
-/// Sets an environment variable for the scope, restoring the old value after.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    ::setenv(name, value.c_str(), 1);
-  }
-  ~ScopedEnv() {
-    if (old_) {
-      ::setenv(name_, old_->c_str(), 1);
-    } else {
-      ::unsetenv(name_);
-    }
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
 
 /// The names in a directory, sorted.
 std::vector<std::string> Listing(const fs::path& directory) {
