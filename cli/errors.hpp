@@ -6,8 +6,11 @@
 ///     OutputError  the answer is fine but an output could not be written
 ///                  (history CSV, plot, gnuplot missing)              -> exit 1
 
+#include <ostream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 
 namespace covopt::cli {
 
@@ -21,6 +24,23 @@ class InputError : public std::invalid_argument {
 class OutputError : public std::runtime_error {
  public:
   explicit OutputError(const std::string& message) : std::runtime_error(message) {}
+};
+
+/// A subcommand's error exits: one line "covopt <command>: error: <message>" on `err`, and
+/// the exit code to return (BadInput 2, Failed 1).
+class CommandErrors {
+ public:
+  CommandErrors(std::ostream& err, std::string command) : err_(err), command_(std::move(command)) {}
+  int BadInput(std::string_view message) const { return Print(message, 2); }
+  int Failed(std::string_view message) const { return Print(message, 1); }
+
+ private:
+  int Print(std::string_view message, int exit_code) const {
+    err_ << "covopt " << command_ << ": error: " << message << '\n';
+    return exit_code;
+  }
+  std::ostream& err_;
+  std::string command_;
 };
 
 }  // namespace covopt::cli

@@ -387,22 +387,19 @@ int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostrea
   const std::string_view command = options.action == MaterialsAction::kShow   ? "show"
                                    : options.action == MaterialsAction::kFind ? "find"
                                                                               : "list";
-  const auto bad_input = [&](std::string_view message) {
-    fmt::print(err, "covopt materials {}: error: {}\n", command, message);
-    return 2;
-  };
+  const CommandErrors errors(err, std::string("materials ").append(command));
 
   Catalog catalog;
   try {
     catalog = LoadCatalog(options.catalog);
   } catch (const InputError& e) {
-    return bad_input(e.what());
+    return errors.BadInput(e.what());
   }
   const std::string where = CatalogDescription(options.catalog);
 
   switch (options.action) {
     case MaterialsAction::kNone:
-      return bad_input("no subcommand given; use list, show or find");
+      return errors.BadInput("no subcommand given; use list, show or find");
     case MaterialsAction::kList: {
       std::vector<const Material*> rows;
       for (const Material& m : catalog.materials()) rows.push_back(&m);
@@ -415,7 +412,7 @@ int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostrea
     }
     case MaterialsAction::kShow: {
       const Material* m = catalog.Find(Trim(options.name));
-      if (m == nullptr) return bad_input(NoSuchMaterial(catalog, Trim(options.name)));
+      if (m == nullptr) return errors.BadInput(NoSuchMaterial(catalog, Trim(options.name)));
       if (options.json) {
         out << MaterialToJson(*m).dump(2) << '\n';
       } else {
@@ -428,7 +425,7 @@ int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostrea
       try {
         filter = ResolveFilter(options, catalog);
       } catch (const InputError& e) {
-        return bad_input(e.what());
+        return errors.BadInput(e.what());
       }
       const std::vector<const Material*> rows = catalog.Filter(filter);
       if (options.json) {
@@ -446,10 +443,7 @@ int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostrea
     }
   }
   out.flush();
-  if (!out) {
-    fmt::print(err, "covopt materials {}: error: cannot write to standard output\n", command);
-    return 1;
-  }
+  if (!out) return errors.Failed("cannot write to standard output");
   return 0;
 }
 

@@ -339,10 +339,7 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
 }
 
 int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream& err) {
-  auto bad_input = [&](const std::string& message) {
-    fmt::print(err, "covopt optimize: error: {}\n", message);
-    return 2;
-  };
+  const CommandErrors errors(err, "optimize");
   Resolved r;
   try {
     r = Resolve(options);
@@ -350,7 +347,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     bare.covering.thickness_m = 0.0;
     (void)ImpactModel::FromScene(bare);  // scene range checks, naming the field
   } catch (const std::invalid_argument& e) {  // InputError and the library's checks
-    return bad_input(e.what());
+    return errors.BadInput(e.what());
   }
 
   const double sf = r.design.safety_factor;
@@ -384,7 +381,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
       seconds = result.seconds;
     }
   } catch (const std::invalid_argument& e) {
-    return bad_input(e.what());
+    return errors.BadInput(e.what());
   }
   const optim::SolverReport& global = continuous.global;
   const bool global_usable = global.termination == optim::Termination::kConverged ||

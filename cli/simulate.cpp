@@ -231,7 +231,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
       if (needs_history) {
         throw InputError(fmt::format(
             "--method exact computes no time history, which {} needs; drop --method exact "
-            "(cvode is the default then) or give --method cvode",
+            "(the default integrator runs then) or give a time-path method",
             plan.history_file ? "--history" : "--plot"));
       }
     } else {
@@ -350,14 +350,7 @@ std::string AttributeError(const std::string& message, const SimulationPlan& pla
 }
 
 int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream& err) {
-  const auto bad_input = [&err](std::string_view message) {
-    fmt::print(err, "covopt simulate: error: {}\n", message);
-    return 2;
-  };
-  const auto failed = [&err](std::string_view message) {
-    fmt::print(err, "covopt simulate: error: {}\n", message);
-    return 1;
-  };
+  const CommandErrors errors(err, "simulate");
 
   SimulationPlan plan;
   std::optional<ImpactModel> model;
@@ -365,12 +358,12 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
   try {
     plan = ResolveSimulation(options);
   } catch (const InputError& e) {
-    return bad_input(e.what());
+    return errors.BadInput(e.what());
   }
   try {
     model.emplace(ImpactModel::FromScene(plan.scene));
   } catch (const std::invalid_argument& e) {  // the library's range checks
-    return bad_input(AttributeError(e.what(), plan));
+    return errors.BadInput(AttributeError(e.what(), plan));
   }
   try {
     report.scene = plan.scene;
@@ -388,12 +381,12 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
     report.result = report.time_options ? SimulateImpact(*model, *report.time_options)
                                         : SolveExact(*model);
   } catch (const std::invalid_argument& e) {  // the integrator's option checks
-    return bad_input(e.what());
+    return errors.BadInput(e.what());
   }
 
   const ImpactResult& result = report.result;
   if (!result.ok()) {
-    return failed(fmt::format("the computation failed: {} ({}, code {}){}{}", ToString(result.status),
+    return errors.Failed(fmt::format("the computation failed: {} ({}, code {}){}{}", ToString(result.status),
                               ToString(result.method), result.raw_code,
                               result.message.empty() ? "" : ": ", result.message));
   }
@@ -402,11 +395,11 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
 
   try {
     // Check for gnuplot before writing anything, so that a missing tool leaves no files.
-    if (plan.plot_file && !FindOnPath("gnuplot")) return failed(kGnuplotMissing);
+    if (plan.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (plan.history_file) WriteFileAtomically(*plan.history_file, HistoryCsv(result.history));
     if (plan.plot_file) PlotHistory(*plan.plot_file, report, plan.plot_format);
   } catch (const OutputError& e) {
-    return failed(e.what());
+    return errors.Failed(e.what());
   }
 
   if (plan.json) {
@@ -415,7 +408,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
     PrintTable(out, report);
   }
   out.flush();
-  if (!out) return failed("cannot write the results to standard output");
+  if (!out) return errors.Failed("cannot write the results to standard output");
   return 0;
 }
 

@@ -653,14 +653,7 @@ CLI::App* SetupSweep(CLI::App& app, SweepOptions& options) {
 }
 
 int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) {
-  const auto bad_input = [&err](std::string_view message) {
-    fmt::print(err, "covopt sweep: error: {}\n", message);
-    return 2;
-  };
-  const auto failed = [&err](std::string_view message) {
-    fmt::print(err, "covopt sweep: error: {}\n", message);
-    return 1;
-  };
+  const CommandErrors errors(err, "sweep");
 
   // Axes, scene and outputs.
   SweepAxis x;
@@ -725,7 +718,7 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
       }
     }
   } catch (const InputError& e) {
-    return bad_input(e.what());
+    return errors.BadInput(e.what());
   }
   const SweepAxis* y_axis = y ? &*y : nullptr;
 
@@ -758,7 +751,7 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
   const bool csv_to_stdout = options.csv_file && *options.csv_file == "-";
   std::vector<std::string> written;
   try {
-    if (plot_format && !FindOnPath("gnuplot")) return failed(kGnuplotMissing);
+    if (plot_format && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (options.csv_file && !csv_to_stdout) {
       WriteFileAtomically(*options.csv_file, SweepCsv(x, y_axis, points));
       written.push_back(*options.csv_file);
@@ -779,7 +772,7 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
       written.push_back(*options.plot_file);
     }
   } catch (const OutputError& e) {
-    return failed(e.what());
+    return errors.Failed(e.what());
   }
 
   if (csv_to_stdout) {
@@ -842,7 +835,7 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     if (!written.empty()) fmt::print(out, "Wrote   {}\n", fmt::join(written, ", "));
   }
   out.flush();
-  if (!out) return failed("cannot write the results to standard output");
+  if (!out) return errors.Failed("cannot write the results to standard output");
   return 0;
 }
 

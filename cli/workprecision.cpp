@@ -32,20 +32,19 @@ double ThreadCpuSeconds() {
   return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
-/// Runs `compute` (once untimed to warm caches and workspaces, then `repeats` times, or
-/// automatically about 2 ms worth, at least 3) and returns the median time and the count.
+/// Runs `compute` `repeats` times, or automatically about 2 ms worth (at least 3) judged by
+/// `first_seconds`, the time of a run just made (which also warmed caches and workspaces),
+/// and returns the median time and the count.
 template <class Compute>
-std::pair<double, int> MedianCpuTime(Compute&& compute, int repeats) {
-  double start = ThreadCpuSeconds();
-  compute();
-  const double first = ThreadCpuSeconds() - start;
-  const int runs = repeats > 0 ? repeats
-                               : std::clamp(static_cast<int>(std::ceil(2e-3 / std::max(first, 1e-9))),
-                                            3, 301);
+std::pair<double, int> MedianCpuTime(Compute&& compute, double first_seconds, int repeats) {
+  const int runs =
+      repeats > 0 ? repeats
+                  : std::clamp(static_cast<int>(std::ceil(2e-3 / std::max(first_seconds, 1e-9))),
+                               3, 301);
   std::vector<double> times;
   times.reserve(static_cast<std::size_t>(runs));
   for (int i = 0; i < runs; ++i) {
-    start = ThreadCpuSeconds();
+    const double start = ThreadCpuSeconds();
     compute();
     times.push_back(ThreadCpuSeconds() - start);
   }
@@ -378,13 +377,16 @@ std::vector<double> ParseToleranceLadder(const std::string& text) {
 std::vector<WorkPrecisionPoint> MeasureWorkPrecision(const ImpactModel& model,
                                                      const WorkPrecisionPlan& plan) {
   std::vector<WorkPrecisionPoint> points;
+  double start = ThreadCpuSeconds();
   const ImpactResult exact = SolveExact(model);
+  const double exact_seconds = ThreadCpuSeconds() - start;
   {
     WorkPrecisionPoint reference;
     reference.status = exact.status;
     reference.message = exact.message;
     reference.warning_count = exact.warnings.size();
-    const auto [seconds, runs] = MedianCpuTime([&] { (void)SolveExact(model); }, plan.repeats);
+    const auto [seconds, runs] =
+        MedianCpuTime([&] { (void)SolveExact(model); }, exact_seconds, plan.repeats);
     reference.seconds_per_impact = seconds;
     reference.timed_runs = runs;
     points.push_back(reference);
@@ -397,7 +399,9 @@ std::vector<WorkPrecisionPoint> MeasureWorkPrecision(const ImpactModel& model,
         options.method = method;
         options.relative_tolerance = tolerance;
         options.restart_at_phase_switches = restart;
+        start = ThreadCpuSeconds();
         const ImpactResult result = integrator.Simulate(model, options);
+        const double first_seconds = ThreadCpuSeconds() - start;
         WorkPrecisionPoint point;
         point.method = method;
         point.restart = restart;
@@ -412,8 +416,8 @@ std::vector<WorkPrecisionPoint> MeasureWorkPrecision(const ImpactModel& model,
         } else {
           point.worst_error = std::numeric_limits<double>::quiet_NaN();
         }
-        const auto [seconds, runs] =
-            MedianCpuTime([&] { (void)integrator.Simulate(model, options); }, plan.repeats);
+        const auto [seconds, runs] = MedianCpuTime(
+            [&] { (void)integrator.Simulate(model, options); }, first_seconds, plan.repeats);
         point.seconds_per_impact = seconds;
         point.timed_runs = runs;
         points.push_back(std::move(point));
@@ -501,14 +505,7 @@ CLI::App* SetupWorkPrecision(CLI::App& app, WorkPrecisionOptions& options) {
 }
 
 int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std::ostream& err) {
-  const auto bad_input = [&](const std::string& message) {
-    fmt::print(err, "covopt workprecision: error: {}\n", message);
-    return 2;
-  };
-  const auto failed = [&](const std::string& message) {
-    fmt::print(err, "covopt workprecision: error: {}\n", message);
-    return 1;
-  };
+  const CommandErrors errors(err, "workprecision");
 
   SimulationPlan scene_plan;
   WorkPrecisionPlan plan;
@@ -540,18 +537,18 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
     }
     if (options.csv_file && options.csv_file->empty()) throw InputError("--csv: empty file name");
   } catch (const InputError& e) {
-    return bad_input(e.what());
+    return errors.BadInput(e.what());
   }
   try {
     model.emplace(ImpactModel::FromScene(scene_plan.scene));
   } catch (const std::invalid_argument& e) {
-    return bad_input(AttributeError(e.what(), scene_plan));
+    return errors.BadInput(AttributeError(e.what(), scene_plan));
   }
-  if (!charts.empty() && !FindOnPath("gnuplot")) return failed(std::string(kGnuplotMissing));
+  if (!charts.empty() && !FindOnPath("gnuplot")) return errors.Failed(std::string(kGnuplotMissing));
 
   const std::vector<WorkPrecisionPoint> points = MeasureWorkPrecision(*model, plan);
   if (points.front().status != SolveStatus::kSuccess) {
-    return failed("the exact path failed: " + points.front().message);
+    return errors.Failed("the exact path failed: " + points.front().message);
   }
 
   const std::string title = options.title ? *options.title : SceneHeadline(scene_plan.scene);
@@ -568,7 +565,7 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
       });
     }
   } catch (const OutputError& e) {
-    return failed(e.what());
+    return errors.Failed(e.what());
   }
 
   if (options.json) {
@@ -588,7 +585,7 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
     PrintStudy(out, points, scene_plan.scene);
   }
   out.flush();
-  if (!out) return failed("cannot write the results to standard output");
+  if (!out) return errors.Failed("cannot write the results to standard output");
   return 0;
 }
 

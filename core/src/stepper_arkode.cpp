@@ -35,17 +35,17 @@ ARKODE_DIRKTableID ImplicitTable(ComputationMethod method) {
   }
 }
 
-class ArkodeStepper final : public Stepper {
+/// A diagonally implicit table on ARKStep (the right-hand side is all implicit), Newton on
+/// the analytic Jacobian.
+class DirkStepper final : public Stepper {
  public:
-  ArkodeStepper(ComputationMethod method, const StepperResources& r) : implicit_(IsImplicit(method)) {
+  DirkStepper(ComputationMethod method, const StepperResources& r) {
     N_VConst(0.0, r.state);
-    fe_ = implicit_ ? nullptr : RightHandSide;
-    fi_ = implicit_ ? RightHandSide : nullptr;
-    mem_ = ARKStepCreate(fe_, fi_, 0.0, r.state, r.context);
+    mem_ = ARKStepCreate(nullptr, RightHandSide, 0.0, r.state, r.context);
     if (!mem_) throw std::runtime_error("ARKStepCreate failed");
     ARKStepSetErrHandlerFn(mem_, CaptureMessage, r.log);
     ARKStepSetUserData(mem_, r.run);
-    if (ARKStepSetTableNum(mem_, ImplicitTable(method), ExplicitTable(method)) != ARK_SUCCESS) {
+    if (ARKStepSetTableNum(mem_, ImplicitTable(method), ARKODE_ERK_NONE) != ARK_SUCCESS) {
       throw std::runtime_error("ARKStepSetTableNum failed: " + *r.log);
     }
     ARKStepRootInit(mem_, kRootCount, RootFunctions);
@@ -53,22 +53,22 @@ class ArkodeStepper final : public Stepper {
     ARKStepSetRootDirection(mem_, directions);
     ARKStepSetNoInactiveRootWarn(mem_);
     ARKStepSetMaxHnilWarns(mem_, -1);
-    if (implicit_) {
-      matrix_ = SUNDenseMatrix(3, 3, r.context);
-      linear_solver_ = SUNLinSol_Dense(r.state, matrix_, r.context);
-      ARKStepSetLinearSolver(mem_, linear_solver_, matrix_);
-      ARKStepSetJacFn(mem_, Jacobian);
-    }
+    matrix_ = SUNDenseMatrix(3, 3, r.context);
+    linear_solver_ = SUNLinSol_Dense(r.state, matrix_, r.context);
+    ARKStepSetLinearSolver(mem_, linear_solver_, matrix_);
+    ARKStepSetJacFn(mem_, Jacobian);
   }
-  ~ArkodeStepper() override {
+  ~DirkStepper() override {
     ARKStepFree(&mem_);
     if (linear_solver_) SUNLinSolFree(linear_solver_);
     if (matrix_) SUNMatDestroy(matrix_);
   }
-  ArkodeStepper(const ArkodeStepper&) = delete;
-  ArkodeStepper& operator=(const ArkodeStepper&) = delete;
+  DirkStepper(const DirkStepper&) = delete;
+  DirkStepper& operator=(const DirkStepper&) = delete;
 
-  int ReInit(double t0, N_Vector y0) override { return ARKStepReInit(mem_, fe_, fi_, t0, y0); }
+  int ReInit(double t0, N_Vector y0) override {
+    return ARKStepReInit(mem_, nullptr, RightHandSide, t0, y0);
+  }
   int SetTolerances(double relative, N_Vector absolute) override {
     return ARKStepSVtolerances(mem_, relative, absolute);
   }
@@ -88,17 +88,15 @@ class ArkodeStepper final : public Stepper {
     stats.rhs_evaluations += fe + fi;
     stats.root_evaluations += roots;
     stats.error_test_failures += error_fails;
-    if (implicit_) {
-      long iterations = 0, convergence_fails = 0, jacobians = 0, ls_rhs = 0;
-      ARKStepGetNumNonlinSolvIters(mem_, &iterations);
-      ARKStepGetNumNonlinSolvConvFails(mem_, &convergence_fails);
-      ARKStepGetNumJacEvals(mem_, &jacobians);
-      ARKStepGetNumLinRhsEvals(mem_, &ls_rhs);
-      stats.nonlinear_iterations += iterations;
-      stats.convergence_failures += convergence_fails;
-      stats.jacobian_evaluations += jacobians;
-      stats.rhs_evaluations += ls_rhs;
-    }
+    long iterations = 0, convergence_fails = 0, jacobians = 0, ls_rhs = 0;
+    ARKStepGetNumNonlinSolvIters(mem_, &iterations);
+    ARKStepGetNumNonlinSolvConvFails(mem_, &convergence_fails);
+    ARKStepGetNumJacEvals(mem_, &jacobians);
+    ARKStepGetNumLinRhsEvals(mem_, &ls_rhs);
+    stats.nonlinear_iterations += iterations;
+    stats.convergence_failures += convergence_fails;
+    stats.jacobian_evaluations += jacobians;
+    stats.rhs_evaluations += ls_rhs;
   }
   std::string FlagName(int flag) override {
     char* name = ARKStepGetReturnFlagName(flag);  // malloc'ed by ARKODE
@@ -108,14 +106,12 @@ class ArkodeStepper final : public Stepper {
   }
 
  private:
-  bool implicit_ = false;
-  ARKRhsFn fe_ = nullptr;
-  ARKRhsFn fi_ = nullptr;
   void* mem_ = nullptr;
   SUNMatrix matrix_ = nullptr;
   SUNLinearSolver linear_solver_ = nullptr;
 };
 
+/// An explicit table on ERKStep, the lean explicit module.
 class ErkStepper final : public Stepper {
  public:
   ErkStepper(ComputationMethod method, const StepperResources& r) {
@@ -172,7 +168,7 @@ class ErkStepper final : public Stepper {
 }  // namespace
 
 std::unique_ptr<Stepper> MakeArkodeStepper(ComputationMethod method, const StepperResources& r) {
-  if (IsImplicit(method)) return std::make_unique<ArkodeStepper>(method, r);
+  if (IsImplicit(method)) return std::make_unique<DirkStepper>(method, r);
   return std::make_unique<ErkStepper>(method, r);
 }
 

@@ -185,7 +185,10 @@ struct TimeIntegrator::Workspace {
   N_Vector state = nullptr;
   N_Vector absolute_tolerances = nullptr;
   N_Vector dense_output = nullptr;
-  std::array<std::unique_ptr<internal::Stepper>, 16> steppers;  // by ComputationMethod
+  // One slot per ComputationMethod value (the enum's last value is the largest).
+  static constexpr std::size_t kMethodSlots =
+      static_cast<std::size_t>(ComputationMethod::kArkodeEsdirk54) + 1;
+  std::array<std::unique_ptr<internal::Stepper>, kMethodSlots> steppers;
   internal::RunState run;
   std::string log;
 
