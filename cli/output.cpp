@@ -166,6 +166,8 @@ Json SceneToJson(const Scene& s) {
   return j;
 }
 
+Json JsonNumber(double value) { return Number(value); }
+
 Json StatisticsToJson(const SolverStatistics& st) {
   return Json{{"steps", st.steps},
               {"rhs_evaluations", st.rhs_evaluations},

@@ -42,6 +42,9 @@ void PrintTable(std::ostream& out, const SimulationReport& report);
 /// Every resolved scene input in SI; fixed masses are "fixed", a flat radius is "flat".
 nlohmann::ordered_json SceneToJson(const Scene& scene);
 
+/// A number for JSON, or null when it is not finite (JSON has no NaN or Infinity).
+nlohmann::ordered_json JsonNumber(double value);
+
 /// The integrator's counters as JSON: steps, rhs_evaluations, root_evaluations,
 /// jacobian_evaluations, nonlinear_iterations, error_test_failures, convergence_failures,
 /// restarts.

@@ -130,12 +130,7 @@ std::string GnuplotScript(const SimulationReport& report, PlotFormat format,
   const std::string red = "#c0392b";
   std::string s;
   s += "set encoding utf8\n";
-  if (format == PlotFormat::kPng) {
-    s += "set terminal pngcairo size 1100,650 font 'sans,11' noenhanced\n";
-  } else {
-    s += "set terminal svg size 1100,650 dynamic font 'sans,11' noenhanced "
-         "background rgb 'white'\n";
-  }
+  s += GnuplotTerminal(format, 1100, 650);
   s += fmt::format("set output {}\n", SingleQuoted(output_path));
   s += fmt::format(
       "set title {}\n",
@@ -180,6 +175,16 @@ std::string GnuplotScript(const SimulationReport& report, PlotFormat format,
 }
 
 std::string GnuplotQuoted(std::string_view text) { return SingleQuoted(text); }
+
+std::string GnuplotTerminal(PlotFormat format, int width, int height) {
+  if (format == PlotFormat::kPng) {
+    return fmt::format("set terminal pngcairo size {},{} font 'sans,11' noenhanced\n", width,
+                       height);
+  }
+  return fmt::format(
+      "set terminal svg size {},{} dynamic font 'sans,11' noenhanced background rgb 'white'\n",
+      width, height);
+}
 
 void PlotHistory(const std::filesystem::path& path, const SimulationReport& report,
                  PlotFormat format) {

@@ -41,6 +41,10 @@ std::string GnuplotScript(const SimulationReport& report, PlotFormat format,
 void RunGnuplot(const std::filesystem::path& path,
                 const std::function<std::string(const std::string& output_path)>& make_script);
 
+/// The `set terminal` line of a chart: pngcairo or svg (white background), `width` x
+/// `height` pixels, sans 11, no enhanced text.
+std::string GnuplotTerminal(PlotFormat format, int width, int height);
+
 /// A gnuplot single-quoted string (a quote doubled), for titles, labels and file names.
 std::string GnuplotQuoted(std::string_view text);
 

@@ -47,18 +47,6 @@ with the library's message; the others carry the numeric keys of 'simulate
 Exit codes: 0 done (also with invalid points); 1 an output could not be written
 (e.g. gnuplot missing); 2 bad input.)";
 
-std::string_view TypeName(QuantityKind kind) {
-  switch (kind) {
-    case QuantityKind::kMass: return "MASS";
-    case QuantityKind::kLength: return "LENGTH";
-    case QuantityKind::kSpeed: return "SPEED";
-    case QuantityKind::kModulus: return "MODULUS";
-    case QuantityKind::kDensity: return "DENSITY";
-    case QuantityKind::kDimensionless: return "RATIO";
-  }
-  return "VALUE";
-}
-
 std::string_view Trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
   while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
@@ -174,16 +162,6 @@ std::string Display(const SweepAxis& axis, double si) {
 /// One number for a gnuplot data block; NaN marks a point gnuplot must skip.
 std::string PlotNumber(double v) { return std::isfinite(v) ? fmt::format("{}", v) : "NaN"; }
 
-std::string Terminal(PlotFormat format, int width, int height) {
-  if (format == PlotFormat::kPng) {
-    return fmt::format("set terminal pngcairo size {},{} font 'sans,11' noenhanced\n", width,
-                       height);
-  }
-  return fmt::format(
-      "set terminal svg size {},{} dynamic font 'sans,11' noenhanced background rgb 'white'\n",
-      width, height);
-}
-
 /// How a result column is shown on a chart: value / scale, in unit.
 struct ColumnDisplay {
   double scale;
@@ -254,7 +232,7 @@ std::string MapScript(const PlotInput& in, const std::string& output) {
   if (invalid > 0) notes.push_back(fmt::format("{} invalid points left blank", invalid));
 
   std::string s = "set encoding utf8\n";
-  s += Terminal(in.format, 1000, 800);
+  s += GnuplotTerminal(in.format, 1000, 800);
   s += fmt::format("set output {}\n", GnuplotQuoted(output));
   std::string title = fmt::format(
       "covopt sweep: {}\\nscene: {}",
@@ -339,7 +317,7 @@ std::string FamiliesScript(const PlotInput& in, const std::string& output) {
   const double qscale = in.quantity ? DisplayFor(in.quantity->name).scale : 1.0;
 
   std::string s = "set encoding utf8\n";
-  s += Terminal(in.format, 1000, in.quantity ? 650 : 900);
+  s += GnuplotTerminal(in.format, 1000, in.quantity ? 650 : 900);
   s += fmt::format("set output {}\n", GnuplotQuoted(output));
   s += "$data << EOD\n";
   for (std::size_t line = 0; line < lines; ++line) {
@@ -603,33 +581,7 @@ CLI::App* SetupSweep(CLI::App& app, SweepOptions& options) {
       ->type_name("N")
       ->group("Sweep");
 
-  sub->add_option("--scene", options.scene.scene_file, "TOML scene file; flags override it")
-      ->type_name("FILE.toml")
-      ->group("Scene");
-  const Scene defaults;
-  SimulateOptions& scene_options = options.scene;
-  for (const SceneField& field : SceneFields()) {
-    Scene scene = defaults;
-    const std::string key = field.dotted_name();
-    sub->add_option_function<std::string>(
-           std::string(field.flag),
-           [&scene_options, key](const std::string& value) {
-             scene_options.scene_values[key] = value;
-           },
-           fmt::format("{} (default {})", field.help,
-                       FormatQuantity(field.field(scene), field.spec.kind)))
-        ->type_name(std::string(TypeName(field.spec.kind)))
-        ->group("Scene");
-  }
-  sub->add_option("--thresholds", options.scene.thresholds,
-                  "phase thresholds: cumulative (default) or literal (the paper's text)")
-      ->check(CLI::IsMember({"cumulative", "literal"}))
-      ->group("Scene");
-  sub->add_option("--material", options.scene.material,
-                  "covering modulus and Poisson ratio from the material catalog")
-      ->type_name("NAME")
-      ->group("Scene");
-  AddCatalogOptions(*sub, options.scene.catalog);
+  AddSceneOptions(*sub, options.scene);
 
   sub->add_option("--csv", options.csv_file,
                   "write one row per point (SI units); '-' prints it on stdout instead of the "

@@ -80,7 +80,6 @@ std::string SeriesName(ComputationMethod method, bool restart) {
 
 /// A number for CSV/JSON: shortest round-trip, empty/null when absent or not finite.
 std::string CsvNumber(double value) { return std::isfinite(value) ? fmt::format("{}", value) : ""; }
-Json JsonNumber(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
 
 /// The cheapest successful run whose worst error is at most `target`.
 const WorkPrecisionPoint* Cheapest(const std::vector<WorkPrecisionPoint>& points, double target) {
@@ -144,13 +143,7 @@ std::string_view ColorOf(ComputationMethod method) {
 
 std::string ChartHeader(PlotFormat format, const std::string& output_path,
                         const std::string& title) {
-  std::string s = "set encoding utf8\n";
-  if (format == PlotFormat::kPng) {
-    s += "set terminal pngcairo size 1100,900 font 'sans,11' noenhanced\n";
-  } else {
-    s += "set terminal svg size 1100,900 dynamic font 'sans,11' noenhanced "
-         "background rgb 'white'\n";
-  }
+  std::string s = "set encoding utf8\n" + GnuplotTerminal(format, 1100, 900);
   s += fmt::format("set output {}\n", GnuplotQuoted(output_path));
   s += fmt::format("set title {}\n", GnuplotQuoted(title));
   s += "set logscale xy\nset format x '%.0e'\nset format y '%g'\n";
