@@ -59,6 +59,9 @@ class Stepper {
   virtual std::string FlagName(int flag) = 0;
 };
 
+/// "NAME (flag)" from a return-flag name SUNDIALS malloc'ed (freed here; null: unknown).
+std::string TakeFlagName(char* malloced_name, int flag);
+
 /// Shared SUNDIALS objects a stepper is built on.
 struct StepperResources {
   SUNContext context = nullptr;

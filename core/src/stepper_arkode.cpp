@@ -5,7 +5,6 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
-#include <cstdlib>
 #include <stdexcept>
 
 #include "stepper.hpp"
@@ -98,12 +97,7 @@ class DirkStepper final : public Stepper {
     stats.jacobian_evaluations += jacobians;
     stats.rhs_evaluations += ls_rhs;
   }
-  std::string FlagName(int flag) override {
-    char* name = ARKStepGetReturnFlagName(flag);  // malloc'ed by ARKODE
-    std::string text = name ? name : "unknown flag";
-    std::free(name);
-    return text + " (" + std::to_string(flag) + ")";
-  }
+  std::string FlagName(int flag) override { return TakeFlagName(ARKStepGetReturnFlagName(flag), flag); }
 
  private:
   void* mem_ = nullptr;
@@ -154,12 +148,7 @@ class ErkStepper final : public Stepper {
     stats.root_evaluations += roots;
     stats.error_test_failures += error_fails;
   }
-  std::string FlagName(int flag) override {
-    char* name = ERKStepGetReturnFlagName(flag);  // malloc'ed by ARKODE
-    std::string text = name ? name : "unknown flag";
-    std::free(name);
-    return text + " (" + std::to_string(flag) + ")";
-  }
+  std::string FlagName(int flag) override { return TakeFlagName(ERKStepGetReturnFlagName(flag), flag); }
 
  private:
   void* mem_ = nullptr;

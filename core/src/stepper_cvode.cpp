@@ -4,7 +4,6 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
-#include <cstdlib>
 #include <stdexcept>
 
 #include "stepper.hpp"
@@ -77,12 +76,7 @@ class CvodeStepper final : public Stepper {
       stats.rhs_evaluations += ls_rhs;
     }
   }
-  std::string FlagName(int flag) override {
-    char* name = CVodeGetReturnFlagName(flag);  // malloc'ed by CVODE
-    std::string text = name ? name : "unknown flag";
-    std::free(name);
-    return text + " (" + std::to_string(flag) + ")";
-  }
+  std::string FlagName(int flag) override { return TakeFlagName(CVodeGetReturnFlagName(flag), flag); }
 
  private:
   bool bdf_ = false;

@@ -99,6 +99,12 @@ void CaptureMessage(int error_code, const char* module, const char* function, ch
   log->append(": ").append(message ? message : "");
 }
 
+std::string TakeFlagName(char* malloced_name, int flag) {
+  std::string text = malloced_name ? malloced_name : "unknown flag";
+  std::free(malloced_name);
+  return text + " (" + std::to_string(flag) + ")";
+}
+
 }  // namespace internal
 
 namespace {
