@@ -1,4 +1,4 @@
-// The exact path of DESIGN.md §3: δ_max from energy balance, peaks, and the contact duration
+// The exact path of docs/model.md §3: δ_max from energy balance, peaks, and the contact duration
 // by a singularity-free Gauss-Legendre quadrature.
 #include "covopt/core/exact.hpp"
 
@@ -84,19 +84,7 @@ ImpactPeaks ExactPeaks(const ImpactModel& model) noexcept {
   const std::size_t i = PeakSegment(model);
   const ForceLawSegment& seg = model.segment(i);
   const double x = SolveEnergyBalance(seg, model.impact_energy_J() - seg.energy_at_start_J);
-  const double delta_max = seg.origin_m + x;
-  const ContactState state = model.StateInSegment(i, delta_max);
-
-  ImpactPeaks peaks;
-  peaks.max_penetration_m = delta_max;
-  peaks.peak_force_N = state.force_N;
-  peaks.max_compressive_stress_Pa = state.compressive_stress_Pa;
-  peaks.max_tensile_stress_Pa = model.TensileFromCompressive(state.compressive_stress_Pa);
-  peaks.max_energy_density_J_per_m2 = state.energy_density_J_per_m2;
-  peaks.phase_at_max = seg.phase;
-  peaks.scalp_fully_compressed = i > 0;
-  peaks.fully_compressed = seg.phase == Phase::kRobotOnBone;
-  return peaks;
+  return PeaksAtMaxPenetration(model, i, seg.origin_m + x);
 }
 
 double ExactContactDuration(const ImpactModel& model, const ImpactPeaks& peaks) noexcept {
@@ -144,7 +132,7 @@ ImpactResult SolveExact(const ImpactModel& model, const ExactOptions& options) {
     result.contact_duration_s = ExactContactDuration(model, result.peaks);
     result.time_of_max_compression_s = 0.5 * *result.contact_duration_s;
   }
-  // No dissipation: the bodies separate at the impact speed (DESIGN.md §2).
+  // No dissipation: the bodies separate at the impact speed (docs/model.md §2).
   result.rebound_speed_m_per_s = model.impact_speed_m_per_s();
   result.warnings = ValidityWarnings(model, result.peaks);
   return result;

@@ -1,4 +1,4 @@
-// The force law of DESIGN.md §2: validation of a Scene and construction of the segments.
+// The force law of docs/model.md §2: validation of a Scene and construction of the segments.
 #include "covopt/core/impact_model.hpp"
 
 #include <algorithm>
@@ -140,7 +140,7 @@ ImpactModel ImpactModel::FromScene(const Scene& scene) {
   const double r_cover = std::isinf(r_robot) ? r_robot : r_robot + s.covering.thickness_m;
   const double r_scalp = s.head.radius_m;
   const double r_bone = s.head.radius_m - s.scalp.thickness_m;
-  // The body touching the scalp: the covering, or the bare robot (DESIGN.md §2).
+  // The body touching the scalp: the covering, or the bare robot (docs/model.md §2).
   const double e_outer = covered ? s.covering.youngs_modulus_Pa : s.robot.youngs_modulus_Pa;
   const double nu_outer = covered ? s.covering.poisson_ratio : s.robot.poisson_ratio;
   const double r_outer = covered ? r_cover : r_robot;
@@ -187,7 +187,11 @@ ImpactModel ImpactModel::FromScene(const Scene& scene) {
   const double k3 = HertzStiffness(s.robot.youngs_modulus_Pa, s.robot.poisson_ratio,
                                    s.skull.youngs_modulus_Pa, s.skull.poisson_ratio, c3);
   if (!covered) {
-    add(Phase::kRobotOnBone, t1, t1, k3, constants.exponent_robot_bone, c3, r_robot, r_bone);
+    // Cumulative: phase 3 continues phase 1 at t1. Literal: eq. (2)'s if-chain with
+    // b_cm = 0.8 b_c = 0 takes phase 3's law from δ > b_sm measured from 0, F = K_rb δ^n_rb
+    // (offset F(0) = 0): the force and stress drop at t1 in the paper's scene.
+    const double origin = constants.thresholds == ThresholdReading::kCumulative ? t1 : 0.0;
+    add(Phase::kRobotOnBone, t1, origin, k3, constants.exponent_robot_bone, c3, r_robot, r_bone);
     return model;
   }
 

@@ -4,7 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "covopt/core/exact.hpp"
 
 namespace covopt {
 namespace {
@@ -18,10 +23,31 @@ InjuryVerdict Judge(double value, double limit) noexcept {
   return verdict;
 }
 
-std::string Millimetres(double metres) {
+constexpr double kNearFullCompressionShare = 0.05;  // "within 5 % of full compression"
+
+/// Three significant digits and a unit, e.g. "10.7 kN".
+std::string Scaled(double value, double scale, const char* unit) {
   char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.3g mm", metres * 1e3);
+  std::snprintf(buffer, sizeof buffer, "%.3g %s", value / scale, unit);
   return buffer;
+}
+
+std::string Millimetres(double metres) { return Scaled(metres, 1e-3, "mm"); }
+std::string Force(double newtons) {
+  return newtons >= 1e3 ? Scaled(newtons, 1e3, "kN") : Scaled(newtons, 1.0, "N");
+}
+std::string Stress(double pascals) { return Scaled(pascals, 1e6, "MPa"); }
+std::string Modulus(double pascals) {
+  return pascals >= 1e9 ? Scaled(pascals, 1e9, "GPa") : Scaled(pascals, 1e6, "MPa");
+}
+std::string Percent(double fraction) { return Scaled(fraction, 0.01, "%"); }
+
+/// "peak force 10.7 kN, compressive stress 154 MPa (tensile 8.2 MPa), energy density 13.4 J/cm²".
+std::string PeakSummary(const ImpactModel& model, const ImpactPeaks& peaks) {
+  return "peak force " + Force(peaks.peak_force_N) + ", compressive stress " +
+         Stress(peaks.max_compressive_stress_Pa) + " (tensile " +
+         Stress(model.TensileFromCompressive(peaks.max_compressive_stress_Pa)) +
+         "), energy density " + Scaled(peaks.max_energy_density_J_per_m2, 1e4, "J/cm²");
 }
 
 }  // namespace
@@ -74,9 +100,51 @@ std::string_view ToString(SolveStatus status) noexcept {
   return "unknown";
 }
 
-std::vector<std::string> ValidityWarnings(const ImpactModel& model, const ImpactPeaks& peaks) {
-  std::vector<std::string> warnings;
+ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
+                                  double max_penetration_m) noexcept {
+  const ContactState state = model.StateInSegment(segment, max_penetration_m);
+  double force = state.force_N;
+  double stress = state.compressive_stress_Pa;
+  // The ends of the segments passed: where the literal law can drop. With cumulative
+  // thresholds each end equals the next segment's offset, which the value at δ_max adds a
+  // non-negative term to, so std::max keeps the value at δ_max bit for bit.
+  for (std::size_t j = 0; j < segment; ++j) {
+    const ContactState end = model.StateInSegment(j, model.segment(j).end_m);
+    force = std::max(force, end.force_N);
+    stress = std::max(stress, end.compressive_stress_Pa);
+  }
+  ImpactPeaks peaks;
+  peaks.max_penetration_m = max_penetration_m;
+  peaks.peak_force_N = force;
+  peaks.max_compressive_stress_Pa = stress;
+  peaks.max_tensile_stress_Pa = model.TensileFromCompressive(stress);
+  peaks.max_energy_density_J_per_m2 = state.energy_density_J_per_m2;
+  peaks.phase_at_max = model.segment(segment).phase;
+  peaks.scalp_fully_compressed = segment > 0;
+  peaks.fully_compressed = peaks.phase_at_max == Phase::kRobotOnBone;
+  peaks.full_compression_penetration_m = model.segment(model.segment_count() - 1).start_m;
+  return peaks;
+}
+
+std::string_view ToString(ValidityCode code) noexcept {
+  switch (code) {
+    case ValidityCode::kHertzValidity: return "hertz-validity";
+    case ValidityCode::kCoveringStifferThanScalp: return "covering-stiffer-than-scalp";
+    case ValidityCode::kNearFullCompression: return "near-full-compression";
+    case ValidityCode::kFullyCompressed: return "fully-compressed";
+    case ValidityCode::kLiteralThresholds: return "literal-thresholds";
+  }
+  return "unknown";
+}
+
+std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const ImpactPeaks& peaks) {
+  std::vector<ValidityWarning> warnings;
+  auto warn = [&](ValidityCode code, std::string message) {
+    warnings.push_back({code, std::move(message)});
+  };
+  const Scene& scene = model.scene();
   const double delta_max = peaks.max_penetration_m;
+
   for (std::size_t i = 0; i < model.segment_count(); ++i) {
     const ForceLawSegment& seg = model.segment(i);
     if (!(delta_max > seg.start_m)) break;
@@ -85,20 +153,115 @@ std::vector<std::string> ValidityWarnings(const ImpactModel& model, const Impact
     const double contact_radius = std::sqrt(x / seg.curvature_per_m);
     const double smallest_radius = std::min(seg.radius_a_m, seg.radius_b_m);
     if (contact_radius >= smallest_radius) {
-      warnings.push_back("outside Hertz validity: in phase " +
-                         std::to_string(PhaseNumber(seg.phase)) + " (" +
-                         std::string(ToString(seg.phase)) + ") the contact radius " +
-                         Millimetres(contact_radius) + " is not smaller than the radius " +
-                         Millimetres(smallest_radius) +
-                         " it presses on (paper footnote 7: eq. 4 needs non-sharp contact)");
+      warn(ValidityCode::kHertzValidity,
+           "outside Hertz validity: in phase " + std::to_string(PhaseNumber(seg.phase)) + " (" +
+               std::string(ToString(seg.phase)) + ") the contact radius " +
+               Millimetres(contact_radius) + " is not smaller than the radius " +
+               Millimetres(smallest_radius) +
+               " it presses on (paper footnote 7: eq. 4 needs non-sharp contact)");
     }
   }
+
+  if (model.has_covering() && scene.covering.youngs_modulus_Pa > scene.scalp.youngs_modulus_Pa) {
+    // The same outer geometry without a covering: a bare robot of radius R_r + b_c.
+    Scene bare_scene = scene;
+    bare_scene.covering.thickness_m = 0.0;
+    bare_scene.robot.radius_m = scene.robot.radius_m + scene.covering.thickness_m;  // ∞ stays ∞
+    std::optional<ImpactPeaks> bare;
+    try {
+      bare = ExactPeaks(ImpactModel::FromScene(bare_scene));
+    } catch (const std::invalid_argument&) {
+      // R_r + b_c beyond the model's radius range: no comparison to make.
+    }
+    if (bare && peaks.max_compressive_stress_Pa > bare->max_compressive_stress_Pa) {
+      const std::string radius = std::isinf(bare_scene.robot.radius_m)
+                                     ? std::string("a flat bare robot")
+                                     : "a bare robot of radius " +
+                                           Millimetres(bare_scene.robot.radius_m) +
+                                           " (R_r + b_c)";
+      warn(ValidityCode::kCoveringStifferThanScalp,
+           "covering stiffer than the scalp (E_c " + Modulus(scene.covering.youngs_modulus_Pa) +
+               " > E_s " + Modulus(scene.scalp.youngs_modulus_Pa) +
+               ") and worse than no covering: " + PeakSummary(model, peaks) + ", while " +
+               radius + ", the same outer shape without the covering, gives " +
+               PeakSummary(model, *bare) +
+               "; the layered stress law adds phase-wise Hertz pressures and overstates the "
+               "stress of a covering stiffer than the scalp (docs/model.md §5)");
+    }
+  }
+
+  if (model.has_covering() && peaks.phase_at_max == Phase::kCoveringOnBone) {
+    const ForceLawSegment& seg = model.segment(model.SegmentIndexAt(delta_max));
+    const double travel = seg.end_m - seg.start_m;  // t2 - t1
+    if (delta_max >= seg.end_m - kNearFullCompressionShare * travel) {
+      warn(ValidityCode::kNearFullCompression,
+           "the covering is within 5 % of full compression at the peak: δ_max " +
+               Millimetres(delta_max) + ", full compression at " + Millimetres(seg.end_m) +
+               " (" + Percent((delta_max - seg.start_m) / travel) +
+               " of phase 2's travel used); a little more impact energy bottoms it out and "
+               "the robot reaches the bone");
+    }
+  }
+
   if (model.has_covering() && peaks.fully_compressed) {
-    warnings.push_back(
-        "the covering is fully compressed: the robot reaches the bone through it (phase 3); "
-        "the stresses then depend on the stiff robot-bone contact");
+    warn(ValidityCode::kFullyCompressed,
+         "the covering is fully compressed: the robot reaches the bone through it (phase 3); "
+         "the stresses then depend on the stiff robot-bone contact");
+  }
+
+  if (scene.model.thresholds == ThresholdReading::kLiteral) {
+    const ModelConstants& constants = scene.model;
+    const double t1 = constants.full_compression_fraction * scene.scalp.thickness_m;
+    const double covering_travel = constants.full_compression_fraction * scene.covering.thickness_m;
+    const ForceLawSegment& last = model.segment(model.segment_count() - 1);
+    std::string what;
+    if (!model.has_covering()) {
+      what = "without a covering, phase 3 (robot on bone) takes over at 0.8 b_s = " +
+             Millimetres(t1) + " with its law measured from δ = 0 (F = K_rb δ^n_rb)";
+    } else if (last.origin_m == last.start_m) {
+      what = "phase 3 (robot on bone) starts at 0.8 b_c = " + Millimetres(covering_travel) +
+             " instead of 0.8 b_s + 0.8 b_c = " + Millimetres(t1 + covering_travel);
+    } else {
+      what = "0.8 b_c = " + Millimetres(covering_travel) + " is not beyond 0.8 b_s = " +
+             Millimetres(t1) + ", so phase 2 vanishes and phase 3 (robot on bone) takes over at " +
+             Millimetres(t1) + " with its law measured from " + Millimetres(covering_travel);
+    }
+    if (last.origin_m != last.start_m) {
+      const ContactState below = model.StateInSegment(model.segment_count() - 2, last.start_m);
+      const ContactState above = model.StateInSegment(model.segment_count() - 1, last.start_m);
+      what += ": the force jumps there from " + Force(below.force_N) + " to " +
+              Force(above.force_N);
+    }
+    Scene cumulative_scene = scene;
+    cumulative_scene.model.thresholds = ThresholdReading::kCumulative;
+    const ImpactPeaks cumulative = ExactPeaks(ImpactModel::FromScene(cumulative_scene));
+    std::string message =
+        "literal thresholds: the paper's eq. (2) read literally, not covopt's default "
+        "cumulative reading (docs/model.md §4); " +
+        what + ". Peaks: " + PeakSummary(model, peaks) + "; the default reading gives " +
+        PeakSummary(model, cumulative);
+    // A drop: the largest value over the contact lies at a switch before δ_max.
+    const ContactState at_max = model.StateAt(delta_max);
+    if (peaks.peak_force_N > at_max.force_N) {
+      message += ". The force dropped at a switch: F_max = " + Force(peaks.peak_force_N) +
+                 " is reached before δ_max, where F = " + Force(at_max.force_N);
+    }
+    if (peaks.max_compressive_stress_Pa > at_max.compressive_stress_Pa) {
+      message += ". The stress dropped at a switch: σ_c,max = " +
+                 Stress(peaks.max_compressive_stress_Pa) + " is reached before δ_max, where σ_c = " +
+                 Stress(at_max.compressive_stress_Pa);
+    }
+    warn(ValidityCode::kLiteralThresholds, std::move(message));
   }
   return warnings;
+}
+
+std::vector<std::string> ValidityWarnings(const ImpactModel& model, const ImpactPeaks& peaks) {
+  std::vector<std::string> messages;
+  for (ValidityWarning& warning : CheckValidity(model, peaks)) {
+    messages.push_back(std::move(warning.message));
+  }
+  return messages;
 }
 
 }  // namespace covopt

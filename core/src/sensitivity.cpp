@@ -1,6 +1,7 @@
 // Analytic design derivatives of the exact peaks (see sensitivity.hpp for the method).
 #include "covopt/core/sensitivity.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -93,14 +94,28 @@ SegmentDerivatives PrimitiveDerivatives(const ImpactModel& model, std::size_t j,
   return d;
 }
 
+/// A candidate for F_max or σ_c,max: its value and its derivative.
+struct Candidate {
+  double value = 0.0, derivative = 0.0;
+};
+
 PeakDerivatives Differentiate(const ImpactModel& model, const ImpactPeaks& peaks, Design design) {
   const double delta_max = peaks.max_penetration_m;
   const std::size_t top = model.SegmentIndexAt(delta_max);
   SegmentDerivatives d = PrimitiveDerivatives(model, 0, design);
+  // F and σ at the end of each segment passed (the literal law can drop after it), where
+  // PeaksAtMaxPenetration may find the maximum; the end moves with the next segment's start.
+  std::array<Candidate, 3> force_ends{}, stress_ends{};  // at most 3 segments, top <= 2
   for (std::size_t j = 0; j < top; ++j) {
     const ForceLawSegment& seg = model.segment(j);
     const ForceLawSegment& next = model.segment(j + 1);
     SegmentDerivatives following = PrimitiveDerivatives(model, j + 1, design);
+    const Partials at_end = PartialsAt(seg, d, seg.end_m);
+    const ContactState state_end = model.StateInSegment(j, seg.end_m);
+    force_ends[j] = {state_end.force_N,
+                     at_end.force + state_end.stiffness_N_per_m * following.start};
+    stress_ends[j] = {state_end.compressive_stress_Pa,
+                      at_end.stress + StressSlope(seg, seg.end_m) * following.start};
     const Partials at_origin = PartialsAt(seg, d, next.origin_m);
     const Partials at_start = PartialsAt(seg, d, next.start_m);
     const ContactState state_origin = model.StateInSegment(j, next.origin_m);
@@ -117,8 +132,18 @@ PeakDerivatives Differentiate(const ImpactModel& model, const ImpactPeaks& peaks
   const ContactState state = model.StateInSegment(top, delta_max);
   PeakDerivatives out;
   out.max_penetration = -p.energy / state.force_N;
-  out.peak_force = p.force + state.stiffness_N_per_m * out.max_penetration;
-  out.max_compressive_stress = p.stress + StressSlope(seg, delta_max) * out.max_penetration;
+  // The same choice as PeaksAtMaxPenetration: δ_max's value unless an end is larger.
+  auto largest = [top](Candidate at_max, const std::array<Candidate, 3>& ends) {
+    for (std::size_t j = 0; j < top; ++j) {
+      if (at_max.value < ends[j].value) at_max = ends[j];
+    }
+    return at_max.derivative;
+  };
+  out.peak_force = largest({state.force_N, p.force + state.stiffness_N_per_m * out.max_penetration},
+                           force_ends);
+  out.max_compressive_stress = largest(
+      {state.compressive_stress_Pa, p.stress + StressSlope(seg, delta_max) * out.max_penetration},
+      stress_ends);
   out.max_tensile_stress = model.TensileFromCompressive(out.max_compressive_stress);
   out.max_energy_density = p.density + state.compressive_stress_Pa * out.max_penetration;
   return out;

@@ -1,4 +1,4 @@
-// The time path of DESIGN.md §3: a SUNDIALS integrator (CVODE or ARKODE) with rootfinding and
+// The time path of docs/model.md §3: a SUNDIALS integrator (CVODE or ARKODE) with rootfinding and
 // a restart at every phase switch.
 #include "covopt/core/time_integration.hpp"
 
@@ -362,16 +362,10 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
     record(t, true);
     if (found[internal::kRootTurn] && !at_max) {
       at_max = true;
-      const ContactState contact = model.StateAt(y[0]);
-      result.peaks.max_penetration_m = y[0];
-      result.peaks.peak_force_N = contact.force_N;
-      result.peaks.max_compressive_stress_Pa = contact.compressive_stress_Pa;
-      result.peaks.max_tensile_stress_Pa = model.TensileFromCompressive(contact.compressive_stress_Pa);
+      // F and σ: the largest over the loading branch (the law at δ_max and at the switches
+      // passed), as on the exact path; e as integrated.
+      result.peaks = PeaksAtMaxPenetration(model, model.SegmentIndexAt(y[0]), y[0]);
       result.peaks.max_energy_density_J_per_m2 = y[2];
-      result.peaks.phase_at_max = contact.phase;
-      const std::size_t i = model.SegmentIndexAt(y[0]);
-      result.peaks.scalp_fully_compressed = i > 0;
-      result.peaks.fully_compressed = contact.phase == Phase::kRobotOnBone;
       result.time_of_max_compression_s = t;
       continue;  // the law is smooth here: no restart
     }

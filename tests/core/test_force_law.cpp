@@ -108,9 +108,13 @@ TEST_CASE("Literal thresholds put phase 3 at 0.8 b_c and make the force jump whe
   CHECK(ill.StateInSegment(1, t1).potential_energy_J ==
         Approx(ill.StateInSegment(0, t1).potential_energy_J).epsilon(1e-14));
 
+  // No covering (0.8 b_c = 0): phase 3 from t1, measured from 0 (test_literal_reading.cpp).
   Scene bare = PaperScene(0.0);
   bare.model.thresholds = ThresholdReading::kLiteral;
-  CHECK(ImpactModel::FromScene(bare).segment_count() == 2);  // no covering: same as cumulative
+  const ImpactModel bare_literal = ImpactModel::FromScene(bare);
+  REQUIRE(bare_literal.segment_count() == 2);
+  CHECK(bare_literal.segment(1).start_m == Approx(0.0024));
+  CHECK(bare_literal.segment(1).origin_m == 0.0);
 }
 
 TEST_CASE("The energy difference stays accurate for tiny gaps", "[law]") {

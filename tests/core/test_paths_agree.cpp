@@ -1,6 +1,7 @@
 // The two paths agree: on generated scenes spanning no covering, thin (fully compressed) and
 // thick coverings, flat and curved robots, fixed head, fixed robot, slow and fast impacts,
-// soft and very stiff coverings, the time path reproduces the exact path's δ_max,
+// soft and very stiff coverings, literal thresholds whose force drops at a switch (the peak
+// then lies before δ_max), the time path reproduces the exact path's δ_max,
 // F_max, σ_c,max, σ_t,max, e_A,max and contact duration within 1e-6 relative at the default
 // tolerances and within 1e-9 at tight ones, with the default ARKODE Dormand-Prince 5(4) and
 // both CVODE methods.
@@ -49,6 +50,17 @@ std::vector<NamedScene> GeneratedScenes() {
   add("literal thresholds, ill-ordered (the force jumps at t1)", [](Scene& s) {
     s.model.thresholds = ThresholdReading::kLiteral;
     s.covering.thickness_m = 0.001;
+  });
+  add("literal thresholds, the force drops at t1 (peak before δ_max)", [](Scene& s) {
+    s.model.thresholds = ThresholdReading::kLiteral;
+    s.scalp.thickness_m = 0.010;
+    s.covering = {100e6, 0.25, 0.0065};
+    s.robot.speed_m_per_s = 1.5;
+  });
+  add("literal thresholds, no covering (phase 3 from δ = 0, F and σ drop at t1)", [](Scene& s) {
+    s.model.thresholds = ThresholdReading::kLiteral;
+    s.covering.thickness_m = 0;
+    s.robot.speed_m_per_s = 0.3;
   });
   return scenes;
 }

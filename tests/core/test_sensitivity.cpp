@@ -1,6 +1,7 @@
 // Analytic design derivatives of the exact peaks match central finite differences, in every
 // phase the peak can lie in (covering on scalp, on bone, robot on bone), for curved and flat
-// robots and for both threshold readings.
+// robots and for both threshold readings, also where the literal reading's maximum lies at a
+// switch before δ_max.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -77,6 +78,29 @@ TEST_CASE("Design derivatives match finite differences in every phase", "[sensit
   CheckAgainstFiniteDifferences(literal, "literal thresholds");
   literal.covering.thickness_m = 0.002;
   CheckAgainstFiniteDifferences(literal, "literal thresholds, ill-ordered");
+  // F_max at t1, before the drop: its derivative is phase 1's at t1.
+  Scene drop = PaperScene(0.0065, 100e6, 0.25);
+  drop.scalp.thickness_m = 0.010;
+  drop.robot.speed_m_per_s = 1.5;
+  drop.model.thresholds = ThresholdReading::kLiteral;
+  const ImpactModel drop_model = ImpactModel::FromScene(drop);
+  const ImpactPeaks drop_peaks = ExactPeaks(drop_model);
+  REQUIRE(drop_peaks.peak_force_N > drop_model.StateAt(drop_peaks.max_penetration_m).force_N);
+  CheckAgainstFiniteDifferences(drop, "literal thresholds, force maximum before the drop");
+  // σ_c,max at t1 too: no covering is not differentiable in the design, so a 2.8 mm covering
+  // (0.8 b_c = 2.24 mm just below t1 = 2.4 mm: F and σ drop at t1) just past its drop.
+  Scene stress_drop = PaperScene(0.0028, 27.6e6, 0.25);
+  stress_drop.model.thresholds = ThresholdReading::kLiteral;
+  {  // the speed that takes δ_max to 1.05 t1: U(δ) = ½ m v²
+    const ImpactModel model = ImpactModel::FromScene(stress_drop);
+    stress_drop.robot.speed_m_per_s = std::sqrt(
+        2.0 * model.StateAt(1.05 * 0.0024).potential_energy_J / model.effective_mass_kg());
+  }
+  const ImpactModel stress_model = ImpactModel::FromScene(stress_drop);
+  const ImpactPeaks stress_peaks = ExactPeaks(stress_model);
+  REQUIRE(stress_peaks.max_compressive_stress_Pa >
+          stress_model.StateAt(stress_peaks.max_penetration_m).compressive_stress_Pa);
+  CheckAgainstFiniteDifferences(stress_drop, "literal thresholds, stress maximum before the drop");
 }
 
 TEST_CASE("Design derivatives need a covering", "[sensitivity]") {

@@ -1,6 +1,6 @@
 #pragma once
 /// @file exact.hpp
-/// The exact path (DESIGN.md §3): peaks from energy balance, duration by quadrature.
+/// The exact path (docs/model.md §3): peaks from energy balance, duration by quadrature.
 ///
 /// U(δ) is analytic and strictly increasing, so δ_max solves U(δ_max) = ½ m v0²: locate the
 /// segment from U at the switches, then solve inside it (closed form in a segment without a
@@ -19,7 +19,8 @@
 
 namespace covopt {
 
-/// Peaks only: δ_max, F_max, σ_c,max, σ_t,max, e_A,max. About 0.1 µs; allocation-free.
+/// Peaks only: δ_max, F_max, σ_c,max, σ_t,max, e_A,max (F and σ as their largest values over
+/// the loading branch, see ImpactPeaks). About 0.1 µs; allocation-free.
 ImpactPeaks ExactPeaks(const ImpactModel& model) noexcept;
 
 /// Contact duration T [s] for peaks previously computed by ExactPeaks(model).

@@ -1,6 +1,6 @@
 #pragma once
 /// @file impact_model.hpp
-/// The multi-layer Hertz contact law of Park et al. (2011) as DESIGN.md §2 reads it.
+/// The multi-layer Hertz contact law of Park et al. (2011) as docs/model.md §2 reads it.
 ///
 /// An ImpactModel is an immutable, validated value built from a Scene. It holds the law
 /// as up to three segments in the penetration δ [m]:
@@ -16,8 +16,11 @@
 ///
 /// and U = ∫F dδ [J], e = ∫σ dδ [J/m²] accumulate from 0. With the default cumulative
 /// thresholds origin == start and the offsets are the values reached at the segment start,
-/// so F, U, σ, e are continuous. The literal reading (ThresholdReading::kLiteral) can put
-/// phase 3's origin before its start; the force then jumps, as the paper's eq. (2) does.
+/// so F, U, σ, e are continuous and non-decreasing. The literal reading
+/// (ThresholdReading::kLiteral) can put phase 3's origin before its start (when
+/// 0.8 b_c <= 0.8 b_s, and always without a covering, where the origin is 0); F and σ then
+/// jump at the switch, up or down, as the paper's eq. (2) and (4) do, while U and e stay
+/// continuous and non-decreasing (docs/model.md §4).
 /// The model needs no more phases than the scene has: no covering gives two segments.
 
 #include <array>
@@ -90,7 +93,7 @@ class ImpactModel {
   bool has_covering() const noexcept { return scene_.covering.thickness_m > 0.0; }
 
   /// Number of segments of the law (2 without a covering or with an ill-ordered literal
-  /// law, 3 otherwise).
+  /// law, 3 otherwise). The last segment is always phase 3, robot on bone.
   std::size_t segment_count() const noexcept { return segment_count_; }
   const ForceLawSegment& segment(std::size_t i) const noexcept { return segments_[i]; }
   /// Index of the segment containing δ [m] (δ on a switch belongs to the lower segment;

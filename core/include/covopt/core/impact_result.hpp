@@ -2,6 +2,7 @@
 /// @file impact_result.hpp
 /// What an impact computation returns, whichever path computed it.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -12,21 +13,36 @@
 
 namespace covopt {
 
-/// The peak quantities of one impact. F, U, σ_c and e are non-decreasing in δ, so every
-/// maximum is reached at the maximum penetration δ_max (DESIGN.md §2).
+/// The peak quantities of one impact. F_max and σ_c,max are the largest values over the
+/// loading branch 0 <= δ <= δ_max. With the default cumulative thresholds F and σ_c are
+/// non-decreasing in δ, so they are the values at δ_max; the literal reading can drop them
+/// at a switch, and the maximum may then lie at a switch before δ_max. U and e are
+/// non-decreasing in every reading: e_A,max is e(δ_max) (docs/model.md §2, §4).
 struct ImpactPeaks {
   double max_penetration_m = 0.0;               ///< δ_max [m]
-  double peak_force_N = 0.0;                    ///< F(δ_max) [N]
-  double max_compressive_stress_Pa = 0.0;       ///< σ_c,max [Pa]
+  double peak_force_N = 0.0;                    ///< F_max = max F over [0, δ_max] [N]
+  double max_compressive_stress_Pa = 0.0;       ///< σ_c,max = max σ_c over [0, δ_max] [Pa]
   double max_tensile_stress_Pa = 0.0;           ///< σ_t,max = σ_c,max (1 - 2ν_t)/3 [Pa]
-  double max_energy_density_J_per_m2 = 0.0;     ///< e_A,max [J/m²]
+  double max_energy_density_J_per_m2 = 0.0;     ///< e_A,max = e(δ_max) [J/m²]
   Phase phase_at_max = Phase::kCoveringOnScalp;  ///< the phase δ_max lies in
   /// The scalp reached full compression (δ_max > t1).
   bool scalp_fully_compressed = false;
-  /// The covering reached full compression, the robot touching bone (δ_max in phase 3).
+  /// The covering reached full compression, the robot touching bone: δ_max lies in the
+  /// robot-on-bone segment (δ_max > full_compression_penetration_m).
   /// Without a covering: the scalp did (the bare robot touches bone).
   bool fully_compressed = false;
+  /// δ where the robot-on-bone segment (phase 3) begins [m]: t2 = 0.8 b_s + 0.8 b_c with
+  /// the default cumulative thresholds, max(0.8 b_c, 0.8 b_s) with the literal ones, and
+  /// t1 = 0.8 b_s without a covering. fully_compressed == (δ_max > this).
+  double full_compression_penetration_m = 0.0;
 };
+
+/// The peaks of a contact whose maximum penetration δ_max [m] lies in segment `segment` of
+/// `model`: F_max and σ_c,max as the largest of the law at δ_max and at the ends of the
+/// segments passed on the way (where the literal law can drop), e_A,max = e(δ_max), the
+/// phase and compression flags. Both computation paths build their peaks with it.
+ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
+                                  double max_penetration_m) noexcept;
 
 /// One injury criterion judged against its limit.
 struct InjuryVerdict {
@@ -127,15 +143,49 @@ struct ImpactResult {
   SolverStatistics statistics;
   /// Sampled history, when requested (time path only).
   std::vector<HistorySample> history;
-  /// Where the result leaves the model's domain of validity (DESIGN.md §5).
+  /// Where the result leaves the model's domain of validity (ValidityWarnings; docs/model.md
+  /// §5, §7), then the time path's own warnings (tolerance not kept), one message each.
   std::vector<std::string> warnings;
 
   bool ok() const noexcept { return status == SolveStatus::kSuccess; }
 };
 
-/// Warnings on the model's validity for peaks of a model (DESIGN.md §5, item 5): the Hertz
-/// contact radius sqrt(x/c) of a phase active at δ_max is not smaller than the radii it
-/// touches (the paper's footnote 7), or the covering is fully compressed.
+/// What a validity warning is about. Stable across versions: programs may match on it.
+enum class ValidityCode {
+  /// A phase's Hertz contact radius sqrt(x/c) is not smaller than a radius it touches
+  /// (the paper's footnote 7: eq. (4) needs non-sharp contact).
+  kHertzValidity,
+  /// The covering is stiffer than the scalp (E_c > E_s) and gives a higher σ_c,max than a
+  /// bare robot of the same outer radius R_r + b_c: the layered stress law, which adds
+  /// phase-wise Hertz pressures, overstates the stress of a stiff covering.
+  kCoveringStifferThanScalp,
+  /// δ_max lies in the last 5 % of the covering-on-bone segment (phase 2): not yet fully
+  /// compressed, but a little more energy bottoms the covering out.
+  kNearFullCompression,
+  /// The covering is fully compressed: δ_max lies in the robot-on-bone segment (phase 3).
+  kFullyCompressed,
+  /// The paper's literal threshold reading (ThresholdReading::kLiteral) is in use.
+  kLiteralThresholds,
+};
+/// "hertz-validity", "covering-stiffer-than-scalp", "near-full-compression",
+/// "fully-compressed", "literal-thresholds".
+std::string_view ToString(ValidityCode code) noexcept;
+
+/// One validity warning: a stable code and a message for people, with the numbers.
+struct ValidityWarning {
+  ValidityCode code = ValidityCode::kHertzValidity;
+  std::string message;
+};
+
+/// Where peaks of a model leave the model's domain (docs/model.md §5, §7), in the order of
+/// ValidityCode: Hertz validity (per phase reached), a covering stiffer than the scalp with
+/// a higher σ_c,max than a bare robot of radius R_r + b_c (both results given), a covering within
+/// 5 % of full compression (δ_max >= t2 - 0.05 (t2 - t1), δ_max <= t2), a fully compressed
+/// covering, and the literal threshold reading (what it changes against the default reading).
+/// The comparisons run the exact path on the comparison scene (~1 µs).
+std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const ImpactPeaks& peaks);
+
+/// The messages of CheckValidity, in its order (what ImpactResult::warnings starts with).
 std::vector<std::string> ValidityWarnings(const ImpactModel& model, const ImpactPeaks& peaks);
 
 }  // namespace covopt

@@ -26,7 +26,10 @@ enum class ThresholdReading {
   /// The paper's literal text: phase 3 starts at t2 = 0.8 b_c. Rejected by DESIGN.md §4
   /// (it contradicts the paper's own Sec. IV numbers) and kept for comparison. When
   /// 0.8 b_c < 0.8 b_s the if-chain of eq. (2) is ill-ordered: phase 2 vanishes and the
-  /// force jumps at t1, exactly as the literal equation says.
+  /// force jumps at t1, exactly as the literal equation says. Without a covering
+  /// (0.8 b_c = 0) phase 3's law is measured from δ = 0 from t1 on: F = K_rb δ^n_rb, a drop
+  /// in the paper's scene. The reported F_max and σ_c,max are then the largest over the
+  /// contact, not the values at δ_max.
   kLiteral,
 };
 

@@ -7,12 +7,16 @@
 ///     dδ_max/dθ = -(∂U/∂θ)|δ / F(δ_max)
 ///     dP/dθ     = (∂P/∂θ)|δ + P'(δ_max) dδ_max/dθ      for P = F, σ_c, e
 ///
+/// except where the literal reading's F_max or σ_c,max lies at a switch before δ_max: then
+/// it is the derivative of the law's value at that switch (which moves with the design only
+/// if the switch does).
+///
 /// The partials at fixed δ are propagated segment by segment: each segment's offsets
 /// (F_off, σ_off, U(start), e(start)) are the previous segment's values at its origin/start,
 /// and K, the curvature sum c and the thresholds depend on θ through E_c (K1, K2) and b_c
 /// (R_c = R_r + b_c in c1, c2; t2 = t1 + 0.8 b_c). Exact to rounding; tested against finite
 /// differences. Defined only for a scene with a covering (b_c > 0): b_c → 0⁺ is a
-/// discontinuity of the model (DESIGN.md §5.4).
+/// discontinuity of the model (docs/model.md §5).
 
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"

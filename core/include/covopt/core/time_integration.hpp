@@ -1,12 +1,13 @@
 #pragma once
 /// @file time_integration.hpp
-/// The time path (DESIGN.md §3): SUNDIALS integration (CVODE or ARKODE) of the impact with
+/// The time path (docs/model.md §3): SUNDIALS integration (CVODE or ARKODE) of the impact with
 /// events.
 ///
 /// State y = (δ, δ', e) with δ'' = -F(δ)/m and e' = σ_c(δ) δ', from δ = 0, δ' = v0.
 /// Root functions stop the integrator at every phase switch (δ = t1, t2, both ways), where
 /// it is re-initialised (CVodeReInit / ERKStepReInit) because the force is only C⁰ there; at maximum
-/// compression (δ' = 0 going down: δ_max, e_A,max, time of the peak); and at separation
+/// compression (δ' = 0 going down: δ_max, e_A,max, time of the peak; F_max and σ_c,max as
+/// the largest over the loading branch, PeaksAtMaxPenetration); and at separation
 /// (δ = 0 going down: duration and rebound speed). Inside a phase the right-hand side uses
 /// that phase's formula continued past its ends with the phase-local penetration clamped
 /// at 0, so an overshooting step never takes the pow of a negative base.
