@@ -258,7 +258,7 @@ plot for [ex in "15 17 19 26 27 31"] sprintf('$TMP/tab3_%s.hist', ex) every ::1 
 EOF
 say ""
 
-# ---- Domain of validity (DESIGN.md §5) -------------------------------------------------------
+# ---- Domain of validity (docs/model.md §5) --------------------------------------------------
 say "== Domain of validity: scenes outside it and what covopt says"
 point dom_sharp --x robot-radius=1mm --covering-thickness 0
 row "sharp edge, R_r 1 mm, no covering" "$TMP/dom_sharp.csv"

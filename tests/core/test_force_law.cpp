@@ -1,7 +1,7 @@
-// The force law of DESIGN.md §2: the check numbers of §6, continuity at the phase switches,
-// U' = F and e' = σ (the integrals really are integrals), the phase structure a scene needs
-// (two phases without a covering), the literal-threshold reading, and the cancellation-free
-// energy difference.
+// The force law of docs/model.md §2: the check numbers of its §8, continuity at the phase
+// switches, U' = F and e' = σ (the integrals really are integrals), the phase structure a scene
+// needs (two phases without a covering), the literal-threshold reading, and the
+// cancellation-free energy difference.
 #include <catch2/catch.hpp>
 
 #include "test_helpers.hpp"
@@ -10,7 +10,7 @@ using namespace covopt;
 using covopt::test::PaperScene;
 using covopt::test::RelativeError;
 
-TEST_CASE("DESIGN.md check numbers: no covering", "[law]") {
+TEST_CASE("docs/model.md check numbers: no covering", "[law]") {
   const ImpactModel model = ImpactModel::FromScene(PaperScene(0.0));
   CHECK(model.effective_mass_kg() == Approx(3.103448).epsilon(1e-6));
   REQUIRE(model.segment_count() == 2);
@@ -25,7 +25,7 @@ TEST_CASE("DESIGN.md check numbers: no covering", "[law]") {
   CHECK(at_t1.energy_density_J_per_m2 == Approx(3310.561).epsilon(1e-6));
 }
 
-TEST_CASE("DESIGN.md check numbers: 15 mm, 27.6 MPa, nu 0.22 covering", "[law]") {
+TEST_CASE("docs/model.md check numbers: 15 mm, 27.6 MPa, nu 0.22 covering", "[law]") {
   const ImpactModel model = ImpactModel::FromScene(PaperScene(0.015, 27.6e6, 0.22));
   REQUIRE(model.segment_count() == 3);
   CHECK(model.segment(0).stiffness == Approx(2.350318e6).epsilon(1e-6));

@@ -1,4 +1,4 @@
-// The paper's trends, as the model (DESIGN.md §2) reproduces them:
+// The paper's trends, as the model (docs/model.md §2) reproduces them:
 //  Fig. 6  stress grows with reflected mass and saturates;
 //  Fig. 7  stress falls with the robot radius, with little change above 0.1 m;
 //  Fig. 8  the covering's Poisson ratio changes the stress by only a few percent;

@@ -5,7 +5,7 @@
 //    is needed (e.g. the stress saturates no slower than the effective mass does);
 //  - the report's printed numbers: each must be the library's value rounded as printed, so
 //    the tolerance is half a unit of the last printed digit.
-// Scenes are the paper's (DESIGN.md §2), built here exactly as scripts/validation.sh passes
+// Scenes are the paper's (docs/model.md §2), built here exactly as scripts/validation.sh passes
 // them to covopt.
 #include <catch2/catch.hpp>
 

@@ -15,7 +15,7 @@
 namespace covopt::materials {
 
 /// The Poisson ratio used for a material whose ν is unknown: 0.25, the paper's Fig. 9 and
-/// Table III value (shared DESIGN.md §1). Consumers that fall back on it should say so
+/// Table III value (docs/model.md §1). Consumers that fall back on it should say so
 /// ("ν unknown, 0.25 assumed").
 inline constexpr double kDefaultPoissonRatio = 0.25;
 
