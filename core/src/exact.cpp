@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace covopt {
 namespace {
@@ -134,7 +135,9 @@ ImpactResult SolveExact(const ImpactModel& model, const ExactOptions& options) {
   }
   // No dissipation: the bodies separate at the impact speed (docs/model.md §2).
   result.rebound_speed_m_per_s = model.impact_speed_m_per_s();
-  result.warnings = ValidityWarnings(model, result.peaks);
+  for (ValidityWarning& warning : CheckValidity(model, result.peaks)) {
+    result.AddWarning(warning.code, std::move(warning.message));
+  }
   return result;
 }
 

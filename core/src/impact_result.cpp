@@ -133,8 +133,15 @@ std::string_view ToString(ValidityCode code) noexcept {
     case ValidityCode::kNearFullCompression: return "near-full-compression";
     case ValidityCode::kFullyCompressed: return "fully-compressed";
     case ValidityCode::kLiteralThresholds: return "literal-thresholds";
+    case ValidityCode::kToleranceNotKept: return "tolerance-not-kept";
+    case ValidityCode::kNoRestarts: return "no-restarts";
   }
   return "unknown";
+}
+
+void ImpactResult::AddWarning(ValidityCode code, std::string message) {
+  warnings.push_back(message);
+  coded_warnings.push_back({code, std::move(message)});
 }
 
 std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const ImpactPeaks& peaks) {

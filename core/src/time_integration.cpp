@@ -402,7 +402,9 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
     fail(SolveStatus::kEventMissed, flag, "the integration ended without locating maximum compression and separation");
   }
   if (result.ok()) {
-    result.warnings = ValidityWarnings(model, result.peaks);
+    for (ValidityWarning& warning : CheckValidity(model, result.peaks)) {
+      result.AddWarning(warning.code, std::move(warning.message));
+    }
     // The self-check: energy is conserved by the model, so its loss measures the error.
     const double energy = model.StateAt(result.peaks.max_penetration_m).potential_energy_J;
     const double residual = std::max(std::abs(energy / model.impact_energy_J() - 1.0),
@@ -410,7 +412,8 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
     result.energy_residual = residual;
     const double allowed = std::max(100.0 * options.relative_tolerance, 1e-9);
     if (!(residual <= allowed)) {
-      result.warnings.push_back(
+      result.AddWarning(
+          ValidityCode::kToleranceNotKept,
           "the time path did not keep its tolerance: energy residual " +
           internal::FormatNumber(residual) + " exceeds max(100 rtol, 1e-9) = " +
           internal::FormatNumber(allowed) + " (" + std::string(ToString(options.method)) +
@@ -418,7 +421,8 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
           "); the exact path is the reference for peaks");
     }
     if (!options.restart_at_phase_switches) {
-      result.warnings.push_back(
+      result.AddWarning(
+          ValidityCode::kNoRestarts,
           "integrated straight through the force law's C0 kinks (restart_at_phase_switches "
           "off): the local error test does not see them, so the error may exceed the "
           "tolerance (a numerics-study setting)");

@@ -221,3 +221,46 @@ TEST_CASE("The literal reading says it is not the default and what it changes", 
   CHECK_THAT(warning->message, Contains("The force dropped at a switch: F_max = 145 N"));
   CHECK_THAT(warning->message, Contains("The stress dropped at a switch: σ_c,max = 2.28 MPa"));
 }
+
+TEST_CASE("Results carry every warning with its code, in the order of the messages",
+          "[warnings]") {
+  const auto codes_of = [](const ImpactResult& r) {
+    std::vector<ValidityCode> codes;
+    for (const ValidityWarning& w : r.coded_warnings) codes.push_back(w.code);
+    return codes;
+  };
+  const auto messages_match = [](const ImpactResult& r) {
+    if (r.coded_warnings.size() != r.warnings.size()) return false;
+    for (std::size_t i = 0; i < r.warnings.size(); ++i) {
+      if (r.coded_warnings[i].message != r.warnings[i]) return false;
+    }
+    return true;
+  };
+  Scene scene = PaperScene(0.002, 1e9, 0.25);  // stiff, thin, fully compressed
+  scene.model.thresholds = ThresholdReading::kLiteral;
+  const ImpactModel model = ImpactModel::FromScene(scene);
+  const ImpactResult exact = SolveExact(model);
+  const std::vector<ValidityCode> expected = {ValidityCode::kCoveringStifferThanScalp,
+                                              ValidityCode::kFullyCompressed,
+                                              ValidityCode::kLiteralThresholds};
+  CHECK(codes_of(exact) == expected);
+  CHECK(messages_match(exact));
+  CHECK(exact.warnings == ValidityWarnings(model, exact.peaks));
+
+  // The time path adds its own, coded too.
+  TimeIntegrationOptions options;
+  options.restart_at_phase_switches = false;
+  const ImpactResult through = SimulateImpact(ImpactModel::FromScene(Scene{}), options);
+  REQUIRE(through.ok());
+  CHECK(Has(codes_of(through), ValidityCode::kNoRestarts));
+  CHECK(messages_match(through));
+  // SUNDIALS 6.4.1's "Verner 6(5)" table is third order: its energy residual gives it away.
+  options = {};
+  options.method = ComputationMethod::kArkodeErk65;
+  const ImpactResult loose = SimulateImpact(ImpactModel::FromScene(Scene{}), options);
+  REQUIRE(loose.ok());
+  CHECK(codes_of(loose) == std::vector<ValidityCode>{ValidityCode::kToleranceNotKept});
+  CHECK(messages_match(loose));
+  CHECK(ToString(ValidityCode::kToleranceNotKept) == "tolerance-not-kept");
+  CHECK(ToString(ValidityCode::kNoRestarts) == "no-restarts");
+}

@@ -116,6 +116,39 @@ struct HistorySample {
   double energy_density_J_per_m2 = 0.0;         ///< e, integrated by the solver [J/m²]
 };
 
+/// What a warning is about. Stable across versions: programs may match on it.
+enum class ValidityCode {
+  /// A phase's Hertz contact radius sqrt(x/c) is not smaller than a radius it touches
+  /// (the paper's footnote 7: eq. (4) needs non-sharp contact).
+  kHertzValidity,
+  /// The covering is stiffer than the scalp (E_c > E_s) and gives a higher σ_c,max than a
+  /// bare robot of the same outer radius R_r + b_c: the layered stress law, which adds
+  /// phase-wise Hertz pressures, overstates the stress of a stiff covering.
+  kCoveringStifferThanScalp,
+  /// δ_max lies in the last 5 % of the covering-on-bone segment (phase 2): not yet fully
+  /// compressed, but a little more energy bottoms the covering out.
+  kNearFullCompression,
+  /// The covering is fully compressed: δ_max lies in the robot-on-bone segment (phase 3).
+  kFullyCompressed,
+  /// The paper's literal threshold reading (ThresholdReading::kLiteral) is in use.
+  kLiteralThresholds,
+  /// Time path: the energy residual exceeds max(100 rtol, 1e-9); the integrator did not keep
+  /// its tolerance.
+  kToleranceNotKept,
+  /// Time path: integrated through the force law's C0 kinks without restarting
+  /// (TimeIntegrationOptions::restart_at_phase_switches off).
+  kNoRestarts,
+};
+/// "hertz-validity", "covering-stiffer-than-scalp", "near-full-compression",
+/// "fully-compressed", "literal-thresholds", "tolerance-not-kept", "no-restarts".
+std::string_view ToString(ValidityCode code) noexcept;
+
+/// One warning: a stable code and a message for people, with the numbers.
+struct ValidityWarning {
+  ValidityCode code = ValidityCode::kHertzValidity;
+  std::string message;
+};
+
 /// Everything one impact computation reports.
 struct ImpactResult {
   ComputationMethod method = ComputationMethod::kExact;
@@ -143,38 +176,18 @@ struct ImpactResult {
   SolverStatistics statistics;
   /// Sampled history, when requested (time path only).
   std::vector<HistorySample> history;
-  /// Where the result leaves the model's domain of validity (ValidityWarnings; docs/model.md
-  /// §5, §7), then the time path's own warnings (tolerance not kept), one message each.
+  /// Every warning on this result as a message for people: those of coded_warnings, in its
+  /// order; a caller may append its own (the CLI adds warnings on its input).
   std::vector<std::string> warnings;
+  /// The computation's warnings with their stable codes: where the result leaves the model's
+  /// domain (CheckValidity; docs/model.md §5, §7), then the time path's own (tolerance not
+  /// kept, no restarts). Same messages as the start of `warnings`.
+  std::vector<ValidityWarning> coded_warnings;
 
   bool ok() const noexcept { return status == SolveStatus::kSuccess; }
-};
 
-/// What a validity warning is about. Stable across versions: programs may match on it.
-enum class ValidityCode {
-  /// A phase's Hertz contact radius sqrt(x/c) is not smaller than a radius it touches
-  /// (the paper's footnote 7: eq. (4) needs non-sharp contact).
-  kHertzValidity,
-  /// The covering is stiffer than the scalp (E_c > E_s) and gives a higher σ_c,max than a
-  /// bare robot of the same outer radius R_r + b_c: the layered stress law, which adds
-  /// phase-wise Hertz pressures, overstates the stress of a stiff covering.
-  kCoveringStifferThanScalp,
-  /// δ_max lies in the last 5 % of the covering-on-bone segment (phase 2): not yet fully
-  /// compressed, but a little more energy bottoms the covering out.
-  kNearFullCompression,
-  /// The covering is fully compressed: δ_max lies in the robot-on-bone segment (phase 3).
-  kFullyCompressed,
-  /// The paper's literal threshold reading (ThresholdReading::kLiteral) is in use.
-  kLiteralThresholds,
-};
-/// "hertz-validity", "covering-stiffer-than-scalp", "near-full-compression",
-/// "fully-compressed", "literal-thresholds".
-std::string_view ToString(ValidityCode code) noexcept;
-
-/// One validity warning: a stable code and a message for people, with the numbers.
-struct ValidityWarning {
-  ValidityCode code = ValidityCode::kHertzValidity;
-  std::string message;
+  /// Appends a warning to both lists.
+  void AddWarning(ValidityCode code, std::string message);
 };
 
 /// Where peaks of a model leave the model's domain (docs/model.md §5, §7), in the order of
@@ -185,7 +198,7 @@ struct ValidityWarning {
 /// The comparisons run the exact path on the comparison scene (~1 µs).
 std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const ImpactPeaks& peaks);
 
-/// The messages of CheckValidity, in its order (what ImpactResult::warnings starts with).
+/// The messages of CheckValidity, in its order.
 std::vector<std::string> ValidityWarnings(const ImpactModel& model, const ImpactPeaks& peaks);
 
 }  // namespace covopt
