@@ -50,8 +50,8 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
       return 0;
     }
     // One line naming the subcommand, the flag, the value and what is allowed.
-    const CLI::App* sub = ActiveSubcommand(app);
-    fmt::print(err, "covopt{}{}: error: {}\n", sub ? " " : "", sub ? sub->get_name() : "",
+    const std::string command = ActiveCommandPath(app);
+    fmt::print(err, "covopt{}{}: error: {}\n", command.empty() ? "" : " ", command,
                DescribeParseError(app, e));
     return 2;
   }

@@ -5,6 +5,7 @@
 ///     covopt optimize: error: unknown option '--max-thicknes'; did you mean '--max-thickness'?
 ///     covopt simulate: error: --max-steps: expected a whole number (got '1e99')
 ///     covopt simulate: error: --speed: missing value; expected SPEED
+///     covopt simulate: error: --speed given twice ('1' and '2'); give it once
 ///
 /// Each names the subcommand being parsed (so the help hint points at the right one), the
 /// flag, the value and what is allowed. Header-only: used by app.cpp.
@@ -91,10 +92,27 @@ inline bool IsIntegerType(std::string_view type_name) {
 
 }  // namespace parse_errors_detail
 
-/// The subcommand CLI11 was parsing when `error` was thrown ("" for the top level).
+/// The innermost subcommand CLI11 was parsing when a parse error was thrown ("materials
+/// find" gives `find`); null for the top level.
 inline const CLI::App* ActiveSubcommand(const CLI::App& app) {
-  const auto parsed = app.get_subcommands();
-  return parsed.empty() ? nullptr : parsed.front();
+  const CLI::App* active = nullptr;
+  for (auto parsed = app.get_subcommands(); !parsed.empty();
+       parsed = parsed.front()->get_subcommands()) {
+    active = parsed.front();
+  }
+  return active;
+}
+
+/// The words that name the active subcommand after "covopt": "simulate", "materials find";
+/// empty for the top level.
+inline std::string ActiveCommandPath(const CLI::App& app) {
+  std::string path;
+  for (auto parsed = app.get_subcommands(); !parsed.empty();
+       parsed = parsed.front()->get_subcommands()) {
+    if (!path.empty()) path += ' ';
+    path += parsed.front()->get_name();
+  }
+  return path;
 }
 
 /// One line, without the "covopt X: error: " prefix, for a CLI11 parse error.
@@ -103,7 +121,8 @@ inline std::string DescribeParseError(const CLI::App& app, const CLI::ParseError
   const CLI::App* sub = ActiveSubcommand(app);
   const CLI::App& scope = sub ? *sub : app;
   const std::string what = error.what();
-  const std::string help = sub ? fmt::format("covopt {} --help", sub->get_name()) : "covopt --help";
+  const std::string help =
+      sub ? fmt::format("covopt {} --help", ActiveCommandPath(app)) : "covopt --help";
 
   if (dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr) {
     // "The following argument(s) was/were not expected: a b" (CLI11 lists them reversed).
@@ -138,6 +157,27 @@ inline std::string DescribeParseError(const CLI::App& app, const CLI::ParseError
                          d::IsIntegerType(type) ? std::string("a whole number")
                                                 : (type.empty() ? std::string("a valid value") : type),
                          value);
+    }
+  }
+  if (dynamic_cast<const CLI::ArgumentMismatch*>(&error) != nullptr) {
+    // "--speed: At Most 1 required but received 2": a single-value option given again. The
+    // option still holds what was typed, in order.
+    const auto colon = what.find(": ");
+    if (colon != std::string::npos && what.find("At Most 1 required", colon) != std::string::npos) {
+      const std::string name = what.substr(0, colon);
+      const CLI::Option* option = scope.get_option_no_throw(name);
+      if (option != nullptr && option->results().size() >= 2) {
+        const std::vector<std::string>& typed = option->results();
+        std::string values;
+        for (std::size_t i = 0; i < typed.size(); ++i) {
+          if (i > 0) values += i + 1 == typed.size() ? " and " : ", ";
+          values += fmt::format("'{}'", typed[i]);
+        }
+        return fmt::format("{} given {} ({}); give it once", name,
+                           typed.size() == 2 ? std::string("twice")
+                                             : fmt::format("{} times", typed.size()),
+                           values);
+      }
     }
   }
   if (dynamic_cast<const CLI::ArgumentMismatch*>(&error) != nullptr) {
