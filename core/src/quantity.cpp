@@ -252,6 +252,10 @@ void CheckBareNumber(double si_value, std::string_view typed, const QuantitySpec
   const std::string head = std::string(name) + " " + std::string(typed) +
                            ": a bare number is in " + std::string(SiUnitName(spec.kind)) + " (" +
                            FormatNumber(si_value) + " " + std::string(si_unit) + ")";
+  std::string likely_units;
+  for (const std::string_view likely : spec.likely_units) {
+    if (!likely.empty()) likely_units += std::string(likely_units.empty() ? "" : ", ") + std::string(likely);
+  }
   const auto spelled = [&](std::string_view unit) {
     return std::string(quote) + std::string(typed) + std::string(unit) + std::string(quote);
   };
@@ -269,7 +273,7 @@ void CheckBareNumber(double si_value, std::string_view typed, const QuantitySpec
       std::string(spec.what.empty() ? std::string_view("value") : spec.what) + " (" +
       FormatQuantity(spec.plausible_min, spec.kind) + " to " +
       FormatQuantity(spec.plausible_max, spec.kind) + "); write it with a unit, e.g. " +
-      std::string(quote) + std::string(Example(spec.kind)) + std::string(quote));
+      likely_units + " or " + std::string(si_unit));
 }
 
 double ParseQuantity(std::string_view text, const QuantitySpec& spec, std::string_view name) {

@@ -334,7 +334,7 @@ TEST_CASE("a bare number with no plausible reading says the range and asks for a
           "[quantity][plausible]") {
   CHECK(ErrorFor("2000", specs::kHeadRadius, "--head-radius") ==
         "--head-radius 2000: a bare number is in metres (2000 m), outside the plausible range "
-        "for the head radius (0 mm to 500 mm); write it with a unit, e.g. 15mm");
+        "for the head radius (0 mm to 500 mm); write it with a unit, e.g. mm, cm or m");
   CHECK_THAT(ErrorFor("1e20", specs::kCoveringModulus, "--max-modulus"),
              Contains("--max-modulus 1e20: a bare number is in pascals (1e+20 Pa), outside the "
                       "plausible range for the covering modulus (10 kPa to 1000 GPa)"));

@@ -89,7 +89,7 @@ double ParseQuantity(std::string_view text, const QuantitySpec& spec, std::strin
 ///         "<name> <typed>: a bare number is in metres (40 m); write 40mm or 40m", or, when no
 ///         likely unit gives a plausible value, "--head-radius 2000: a bare number is in
 ///         metres (2000 m), outside the plausible range for the head radius (0 mm to 500 mm);
-///         write it with a unit, e.g. 15mm".
+///         write it with a unit, e.g. mm, cm or m".
 void CheckBareNumber(double si_value, std::string_view typed, const QuantitySpec& spec,
                      std::string_view name, std::string_view quote = "");
 
