@@ -1,6 +1,7 @@
 // libFuzzer target: the material-catalog parser (materials/src/catalog_toml.cpp). Bad
 // input must end in covopt::materials::CatalogError; what parses must be a valid catalog
-// (finite E > 0, ν in (-1, 0.5)) whose names can be looked up.
+// (finite E > 0, ν in (-1, 0.5]) whose names can be looked up. Values may carry units
+// ("27.6MPa"), read by covopt::ParseQuantity.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -16,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         covopt::materials::Catalog::FromTomlString(text, "fuzz.toml");
     for (const covopt::materials::Material& m : catalog.materials()) {
       if (!(m.youngs_modulus_Pa > 0.0) || !std::isfinite(m.youngs_modulus_Pa)) std::abort();
-      if (m.poisson_ratio && !(*m.poisson_ratio > -1.0 && *m.poisson_ratio < 0.5)) std::abort();
+      if (m.poisson_ratio && !(*m.poisson_ratio > -1.0 && *m.poisson_ratio <= 0.5)) std::abort();
       if (catalog.Find(m.name) == nullptr) std::abort();
       (void)catalog.Suggest(m.name);
     }

@@ -5,7 +5,9 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -14,6 +16,7 @@
 #include <toml++/toml.h>
 
 #include "builtin_catalog.hpp"
+#include "covopt/core/quantity.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "text.hpp"
 #include "validation.hpp"
@@ -178,14 +181,32 @@ class EntryReader {
     return text;
   }
 
+  /// A number (SI, which must be plausible for `spec`) or a string with a unit, as in scene
+  /// files; empty for another type, which the caller reports.
+  std::optional<double> ReadQuantity(const toml::node& node, std::string_view key,
+                                     const QuantitySpec& spec) {
+    try {
+      if (const auto value = AsNumber(node)) {
+        CheckBareNumber(*value, Shown(node), spec, key, "\"");
+        return value;
+      }
+      if (const auto* text = node.as_string()) return ParseQuantity(text->get(), spec, key);
+    } catch (const std::invalid_argument& e) {
+      const std::string where = Where(source_, node.source().begin);
+      throw CatalogError(where + ": " + label_ + ": " + e.what(), where, std::string(key));
+    }
+    return std::nullopt;
+  }
+
   double ReadModulus() {
     const std::string_view key = internal::kKeyModulus;
     const toml::node* node = table_.get(key);
     if (node == nullptr) Missing(key);
-    const auto value = AsNumber(*node);
+    const auto value = ReadQuantity(*node, key, quantity_specs::kCoveringModulus);
     if (!value) {
       Fail(*node, key,
-           "must be a number in Pa, e.g. 27.6e6 for 27.6 MPa (got " + Shown(*node) + ")");
+           "must be a number in Pa or a string with a unit, e.g. 27.6e6 or \"27.6MPa\" (got " +
+               Shown(*node) + ")");
     }
     if (auto problem = internal::ModulusProblem(*value)) Fail(*node, key, *problem);
     return *value;
@@ -200,7 +221,7 @@ class EntryReader {
     }
     const auto value = AsNumber(*node);
     if (!value) {
-      Fail(*node, key, "must be a number in (-1, 0.5), or \"unknown\" (got " + Shown(*node) + ")");
+      Fail(*node, key, "must be a number in (-1, 0.5], or \"unknown\" (got " + Shown(*node) + ")");
     }
     if (auto problem = internal::PoissonProblem(*value)) Fail(*node, key, *problem);
     return value;
@@ -210,9 +231,13 @@ class EntryReader {
     const std::string_view key = internal::kKeyDensity;
     const toml::node* node = table_.get(key);
     if (node == nullptr) return std::nullopt;
-    const auto value = AsNumber(*node);
+    const auto* text = node->as_string();
+    const auto value = text != nullptr && text->get() == "unknown"
+                           ? std::nullopt
+                           : ReadQuantity(*node, key, quantity_specs::kMaterialDensity);
     if (!value) {
-      Fail(*node, key, "must be a number in kg/m³; leave it out if unknown (got " +
+      Fail(*node, key, "must be a number in kg/m³ or a string with a unit, e.g. 50 or "
+                       "\"0.05g/cm3\"; leave it out if unknown (got " +
                            Shown(*node) + ")");
     }
     if (auto problem = internal::DensityProblem(*value)) Fail(*node, key, *problem);

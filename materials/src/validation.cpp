@@ -15,10 +15,10 @@ std::optional<std::string> ModulusProblem(double youngs_modulus_Pa) {
 }
 
 std::optional<std::string> PoissonProblem(double poisson_ratio) {
-  if (std::isfinite(poisson_ratio) && poisson_ratio > -1.0 && poisson_ratio < 0.5) {
+  if (std::isfinite(poisson_ratio) && poisson_ratio > -1.0 && poisson_ratio <= 0.5) {
     return std::nullopt;
   }
-  return "must be in (-1, 0.5), or \"unknown\" (got " + FormatNumber(poisson_ratio) + ")";
+  return "must be in (-1, 0.5], or \"unknown\" (got " + FormatNumber(poisson_ratio) + ")";
 }
 
 std::optional<std::string> DensityProblem(double density_kg_per_m3) {

@@ -2,9 +2,10 @@
 // with "file:line:column:" pointing at the offending value (or key, or [[material]] header
 // for a missing key), names the key, and says what is allowed. These tests check malformed
 // TOML, unknown keys (with "did you mean"), missing required keys, wrong types, values out
-// of range (E <= 0, E too large or not finite, nu >= 0.5 or <= -1, density <= 0), unknown
-// modulus bases, duplicate names within a file and across catalogs (both places named),
-// files that cannot be read, and entries added in code.
+// of range (E <= 0, E too large or not finite, nu > 0.5 or <= -1, density <= 0), values with
+// units as in scene files (a bad unit, or a bare number implausible in SI: 27.6 for E is
+// 27.6 Pa), unknown modulus bases, duplicate names within a file and across catalogs (both
+// places named), files that cannot be read, and entries added in code.
 
 #include <filesystem>
 #include <fstream>
@@ -166,12 +167,12 @@ TEST_CASE("values out of range are errors at the value, with the allowed range",
   const auto c = GENERATE(values<Case>({
       {"youngs_modulus_Pa", "youngs_modulus_Pa = 0", "mine.toml:4:21: material 'soft foam': youngs_modulus_Pa must be > 0 and <= 1e12 (Pa) (got 0)"},
       {"youngs_modulus_Pa", "youngs_modulus_Pa = -2.5e6", "youngs_modulus_Pa must be > 0 and <= 1e12 (Pa) (got -2500000)"},
-      {"youngs_modulus_Pa", "youngs_modulus_Pa = 2e12", "(got 2e+12)"},
+      {"youngs_modulus_Pa", "youngs_modulus_Pa = \"2000 GPa\"", "(got 2e+12)"},
       {"youngs_modulus_Pa", "youngs_modulus_Pa = inf", "youngs_modulus_Pa must be > 0"},
       {"youngs_modulus_Pa", "youngs_modulus_Pa = nan", "youngs_modulus_Pa must be > 0"},
-      {"poisson_ratio", "poisson_ratio = 0.5", "mine.toml:5:17: material 'soft foam': poisson_ratio must be in (-1, 0.5), or \"unknown\" (got 0.5)"},
-      {"poisson_ratio", "poisson_ratio = 0.7", "poisson_ratio must be in (-1, 0.5)"},
-      {"poisson_ratio", "poisson_ratio = -1", "poisson_ratio must be in (-1, 0.5), or \"unknown\" (got -1)"},
+      {"poisson_ratio", "poisson_ratio = 0.51", "mine.toml:5:17: material 'soft foam': poisson_ratio must be in (-1, 0.5], or \"unknown\" (got 0.51)"},
+      {"poisson_ratio", "poisson_ratio = 0.7", "poisson_ratio must be in (-1, 0.5]"},
+      {"poisson_ratio", "poisson_ratio = -1", "poisson_ratio must be in (-1, 0.5], or \"unknown\" (got -1)"},
       {"density_kg_per_m3", "density_kg_per_m3 = 0", "mine.toml:6:21: material 'soft foam': density_kg_per_m3 must be > 0 and <= 1e5 (kg/m³) (got 0)"},
       {"density_kg_per_m3", "density_kg_per_m3 = -30", "density_kg_per_m3 must be > 0"},
   }));
@@ -182,11 +183,48 @@ TEST_CASE("values out of range are errors at the value, with the allowed range",
   CHECK(e.key() == c.key);
 }
 
+TEST_CASE("values may carry units, as in scene files", "[errors][units]") {
+  const auto load = [](const std::string& key, const std::string& line) {
+    return Catalog::FromTomlString(With(key, line), "mine.toml").materials().front();
+  };
+  CHECK(load("youngs_modulus_Pa", "youngs_modulus_Pa = \"27.6MPa\"").youngs_modulus_Pa == 27.6e6);
+  CHECK(load("youngs_modulus_Pa", "youngs_modulus_Pa = \"96.2 kPa\"").youngs_modulus_Pa == 96.2e3);
+  CHECK(load("youngs_modulus_Pa", "youngs_modulus_Pa = \"3.3GPa\"").youngs_modulus_Pa == 3.3e9);
+  CHECK(load("density_kg_per_m3", "density_kg_per_m3 = \"0.05 g/cm3\"").density_kg_per_m3 == 50.0);
+  CHECK(load("density_kg_per_m3", "density_kg_per_m3 = \"38.4kg/m3\"").density_kg_per_m3 == 38.4);
+  // ν = 0.5 (incompressible) is allowed, as in scenes: the range is (-1, 0.5].
+  CHECK(load("poisson_ratio", "poisson_ratio = 0.5").poisson_ratio == 0.5);
+}
+
+TEST_CASE("a bare number is SI and must be plausible, a unit must fit", "[errors][units]") {
+  CHECK(std::string(ErrorFor(With("youngs_modulus_Pa", "youngs_modulus_Pa = 27.6")).what()) ==
+        "mine.toml:4:21: material 'soft foam': youngs_modulus_Pa 27.6: a bare number is in "
+        "pascals (27.6 Pa); write \"27.6MPa\" or \"27.6Pa\"");
+  CHECK(std::string(ErrorFor(With("density_kg_per_m3", "density_kg_per_m3 = 1.05")).what()) ==
+        "mine.toml:6:21: material 'soft foam': density_kg_per_m3 1.05: a bare number is in "
+        "kilograms per cubic metre (1.05 kg/m3); write \"1.05g/cm3\" or \"1.05kg/m3\"");
+  const CatalogError unit = ErrorFor(With("youngs_modulus_Pa", "youngs_modulus_Pa = \"2 kg\""));
+  CHECK(std::string(unit.what()) ==
+        "mine.toml:4:21: material 'soft foam': youngs_modulus_Pa: unit 'kg' is not a modulus or "
+        "pressure; use Pa, kPa, MPa, GPa, N/m2 or N/mm2 (got '2 kg')");
+  CHECK(unit.key() == "youngs_modulus_Pa");
+  CHECK_THAT(ErrorFor(With("density_kg_per_m3", "density_kg_per_m3 = \"50 kg/m2\"")).what(),
+             StartsWith("mine.toml:6:21:") && Contains("unknown unit 'kg/m2' for a density"));
+  CHECK_THAT(ErrorFor(With("youngs_modulus_Pa", "youngs_modulus_Pa = \"-2MPa\"")).what(),
+             Contains("youngs_modulus_Pa must be > 0"));
+  // With a unit, the value is taken as written; only the catalog's range applies.
+  CHECK(Catalog::FromTomlString(With("youngs_modulus_Pa", "youngs_modulus_Pa = \"27.6Pa\""),
+                                "mine.toml")
+            .materials()
+            .front()
+            .youngs_modulus_Pa == 27.6);
+}
+
 TEST_CASE("values of the wrong type are errors that show what to write", "[errors]") {
-  CHECK_THAT(ErrorFor(With("youngs_modulus_Pa", "youngs_modulus_Pa = \"2.5 MPa\"")).what(),
+  CHECK_THAT(ErrorFor(With("youngs_modulus_Pa", "youngs_modulus_Pa = true")).what(),
              StartsWith("mine.toml:4:21:") &&
-                 Contains("youngs_modulus_Pa must be a number in Pa, e.g. 27.6e6 for 27.6 MPa "
-                          "(got \"2.5 MPa\")"));
+                 Contains("youngs_modulus_Pa must be a number in Pa or a string with a unit, "
+                          "e.g. 27.6e6 or \"27.6MPa\" (got a boolean)"));
   CHECK_THAT(ErrorFor(With("name", "name = 42")).what(),
              StartsWith("mine.toml:2:8: material #1: name must be a string, got 42"));
   CHECK_THAT(ErrorFor(With("name", "name = \"\"")).what(), Contains("name must not be empty"));
@@ -195,7 +233,8 @@ TEST_CASE("values of the wrong type are errors that show what to write", "[error
   CHECK_THAT(ErrorFor(With("family", "family = \"  \"")).what(),
              Contains("family must not be empty"));
   CHECK_THAT(ErrorFor(With("density_kg_per_m3", "density_kg_per_m3 = \"unknown\"")).what(),
-             Contains("density_kg_per_m3 must be a number in kg/m³; leave it out if unknown"));
+             Contains("density_kg_per_m3 must be a number in kg/m³ or a string with a unit") &&
+                 Contains("leave it out if unknown (got \"unknown\")"));
   CHECK_THAT(ErrorFor(With("note", "note = 3")).what(), Contains("note must be a string"));
   CHECK_THAT(ErrorFor("material = 3\n").what(),
              StartsWith("mine.toml:1:") && Contains("must be a list of [[material]] tables"));
@@ -260,8 +299,10 @@ TEST_CASE("entries added in code are validated like file entries", "[errors]") {
     return "";
   };
   Material bad = m;
-  bad.poisson_ratio = 0.5;
-  CHECK_THAT(error_for(bad), StartsWith("material 'gel pad': poisson_ratio must be in (-1, 0.5)"));
+  bad.poisson_ratio = 0.5;  // incompressible: allowed, as in scenes
+  CHECK(error_for(bad).empty());
+  bad.poisson_ratio = 0.55;
+  CHECK_THAT(error_for(bad), StartsWith("material 'gel pad': poisson_ratio must be in (-1, 0.5]"));
   bad = m;
   bad.youngs_modulus_Pa = -1.0;
   CHECK_THAT(error_for(bad), Contains("youngs_modulus_Pa must be > 0"));

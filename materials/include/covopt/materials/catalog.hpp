@@ -9,15 +9,20 @@
 ///
 ///     name               string, required, unique ignoring case
 ///     family             string, required ("foam", "elastomer", ...)
-///     youngs_modulus_Pa  number, required, > 0 and <= 1e12
-///     poisson_ratio      number in (-1, 0.5), or "unknown"; optional (absent = unknown)
-///     density_kg_per_m3  number, > 0 and <= 1e5; optional (absent = unknown)
+///     youngs_modulus_Pa  number (Pa) or a string with a unit ("27.6MPa"), required, > 0
+///                        and <= 1e12
+///     poisson_ratio      number in (-1, 0.5], or "unknown"; optional (absent = unknown)
+///     density_kg_per_m3  number (kg/m³) or a string with a unit ("0.05g/cm3"), > 0 and
+///                        <= 1e5; optional (absent = unknown)
 ///     modulus_basis      "compressive" | "tensile" | "bending" | "fitted" | "as-printed"
 ///                        | "hardness", required
 ///     source             string, required: a URL or a citation
 ///     note               string, optional: how E was derived
 ///
-/// Any other key, or a top-level key other than `material`, is an error.
+/// Values with units are read as in scene files (covopt/core/quantity.hpp): a bare number is
+/// SI and must be plausible for its quantity (youngs_modulus_Pa = 27.6 would be 27.6 Pa and
+/// is refused; write "27.6MPa"). Any other key, or a top-level key other than `material`, is
+/// an error.
 
 #include <cstddef>
 #include <filesystem>
@@ -35,8 +40,8 @@ namespace covopt::materials {
 /// "file:line:column: " where the file says where (and only the file name for a file
 /// that cannot be read), names the offending key, and says what is allowed, e.g.
 ///
-///     mine.toml:7:17: material 'soft foam': poisson_ratio must be in (-1, 0.5) or
-///     "unknown" (got 0.5)
+///     mine.toml:7:17: material 'soft foam': poisson_ratio must be in (-1, 0.5], or
+///     "unknown" (got 0.7)
 class CatalogError : public std::runtime_error {
  public:
   CatalogError(const std::string& message, std::string location, std::string key);

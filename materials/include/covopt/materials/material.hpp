@@ -47,7 +47,7 @@ struct Material {
   std::string family;
   /// Young's modulus E [Pa], > 0 and <= 1e12.
   double youngs_modulus_Pa = 0.0;
-  /// Poisson ratio ν [-], in (-1, 0.5); empty when the source gives none (use
+  /// Poisson ratio ν [-], in (-1, 0.5]; empty when the source gives none (use
   /// PoissonRatioOrDefault and say that the default was used).
   std::optional<double> poisson_ratio;
   /// Density [kg/m³], > 0; empty when the source gives none.
