@@ -274,9 +274,12 @@ materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
     fail(fmt::format("malformed range; write LO..HI, e.g. {}", example));
   }
 
+  // The ends' units first (a bare end beside one with a unit is the likelier slip), then, at
+  // the end, whether a bare end is plausible for the quantity.
+  const QuantitySpec units_only{spec.kind, spec.allow_fixed, spec.allow_flat};
   materials::Range range;
-  if (!low.empty()) range.min = ParseQuantity(low, spec, name);
-  if (!high.empty()) range.max = ParseQuantity(high, spec, name);
+  if (!low.empty()) range.min = ParseQuantity(low, units_only, name);
+  if (!high.empty()) range.max = ParseQuantity(high, units_only, name);
 
   if (spec.kind != QuantityKind::kDimensionless && !low.empty() && !high.empty()) {
     const auto bare = [](std::string_view end) {
@@ -292,6 +295,8 @@ materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
   if (range.min && range.max && *range.min > *range.max) {
     fail("the lower end is above the upper end");
   }
+  if (!low.empty()) ParseQuantity(low, spec, name);
+  if (!high.empty()) ParseQuantity(high, spec, name);
   return range;
 }
 

@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -76,75 +77,168 @@ std::vector<std::string_view> KeysOf(std::string_view table) {
   for (const SceneField& field : SceneFields()) {
     if (field.table == table) keys.push_back(field.key);
   }
+  if (table == "covering") keys.push_back("material");
   if (table == "model") keys.push_back("thresholds");
+  if (table == "limits") {
+    for (const LimitField& field : LimitFields()) keys.push_back(field.key);
+  }
   return keys;
 }
 
-/// Reads one numeric field: a TOML number (SI) or a string with a unit.
-double ReadQuantity(const toml::node& node, const SceneField& field, std::string_view source) {
-  const std::string name = field.dotted_name();
+/// A TOML number as the user wrote it, near enough: "40", "0.015", "2.76e+07".
+std::string NumberText(const toml::node& node) {
+  if (node.is_integer()) return std::to_string(**node.as_integer());
+  return fmt::format("{}", **node.as_floating_point());
+}
+
+/// What the user wrote, for messages: a string in quotes, a number as a number.
+std::string Shown(const toml::node& node) {
+  if (node.is_string()) return fmt::format("'{}'", **node.as_string());
+  return NumberText(node);
+}
+
+/// Reads one numeric value: a TOML number (SI, which must be plausible for `spec`) or a
+/// string with a unit. `example` shows a good value in the wrong-type message.
+double ReadQuantity(const toml::node& node, const QuantitySpec& spec, const std::string& name,
+                    std::string_view example, std::string_view source) {
   const std::string where = Where(source, node.source());
-  if (node.is_integer() || node.is_floating_point()) {
-    const double value = node.is_integer() ? static_cast<double>(**node.as_integer())
-                                           : **node.as_floating_point();
-    if (!std::isfinite(value)) {
-      throw InputError(fmt::format("{}: {}: not a finite number (got {})", where, name, value));
+  try {
+    if (node.is_integer() || node.is_floating_point()) {
+      const double value = node.is_integer() ? static_cast<double>(**node.as_integer())
+                                             : **node.as_floating_point();
+      if (!std::isfinite(value)) {
+        throw InputError(fmt::format("{}: not a finite number (got {})", name, value));
+      }
+      CheckBareNumber(value, NumberText(node), spec, name, "\"");
+      return value;
     }
-    return value;
+    if (node.is_string()) return ParseQuantity(**node.as_string(), spec, name);
+  } catch (const std::invalid_argument& e) {  // InputError, or the core's CheckBareNumber
+    throw InputError(fmt::format("{}: {}", where, e.what()));
   }
-  if (node.is_string()) {
+  throw InputError(fmt::format(
+      "{}: {}: expected a number (SI) or a string with a unit such as \"{}\", got {}", where,
+      name, example, TypeName(node)));
+}
+
+/// What one file sets, before it is applied: the scene (a copy) and the extras.
+struct Reading {
+  Scene scene;
+  SceneFileExtras extras;
+  std::vector<std::string> set_fields;
+  /// The first of covering.modulus / covering.poisson the file sets, for the clash with
+  /// covering.material.
+  std::optional<std::string> covering_elastic_field;
+  bool sets_covering_material = false;
+};
+
+[[noreturn]] void UnknownKey(std::string_view source, const toml::key& key,
+                             std::string_view table_name) {
+  const std::vector<std::string_view> keys = KeysOf(table_name);
+  const auto suggestion = Closest(key.str(), keys);
+  throw InputError(fmt::format(
+      "{}: unknown key '{}.{}'; {}", Where(source, key.source()), table_name, key.str(),
+      suggestion ? fmt::format("did you mean '{}.{}'?", table_name, *suggestion)
+                 : fmt::format("[{}] takes {}", table_name, JoinQuoted(keys))));
+}
+
+/// Refuses what only SceneFileExtras can hold when the caller gave none.
+[[noreturn]] void RefuseExtra(std::string_view where, std::string_view name) {
+  throw InputError(fmt::format("{}: {} is not read by this command; remove it", where, name));
+}
+
+void ApplyLimits(const toml::table& table, std::string_view source, bool extras_wanted,
+                 Reading& reading) {
+  const auto fields = LimitFields();
+  for (const auto& [key, node] : table) {
+    const std::string_view key_name = key.str();  // a structured binding is not captured
+    const auto field = std::find_if(fields.begin(), fields.end(),
+                                    [&](const LimitField& f) { return f.key == key_name; });
+    if (field == fields.end()) UnknownKey(source, key, "limits");
+    const std::string name = field->dotted_name();
+    const std::string where = Where(source, node.source());
+    if (!extras_wanted) RefuseExtra(where, name);
+    const double value = ReadQuantity(node, field->spec, name,
+                                      field->key == "laceration"  ? "1MPa"
+                                      : field->key == "contusion" ? "2.52J/cm2"
+                                                                  : "1.5",
+                                      source);
     try {
-      return ParseQuantity(**node.as_string(), field.spec, name);
+      CheckLimitValue(*field, value, name, Shown(node));
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: {}", where, e.what()));
     }
+    if (field->key == "laceration") reading.extras.laceration_limit_Pa = value;
+    if (field->key == "contusion") reading.extras.contusion_limit_J_per_m2 = value;
+    if (field->key == "safety_factor") reading.extras.safety_factor = value;
+    reading.set_fields.push_back(name);
   }
-  Scene defaults;
-  throw InputError(fmt::format(
-      "{}: {}: expected a number (SI) or a string with a unit such as \"{}\", got {}", where,
-      name, FormatQuantity(field.field(defaults), field.spec.kind), TypeName(node)));
 }
 
 void ApplyTable(std::string_view table_name, const toml::table& table, std::string_view source,
-                Scene& scene, std::vector<std::string>& set_fields) {
+                bool extras_wanted, Reading& reading) {
+  if (table_name == "limits") {
+    ApplyLimits(table, source, extras_wanted, reading);
+    return;
+  }
   const auto fields = SceneFields();
+  const Scene defaults;
   for (const auto& [key, node] : table) {
     const std::string_view key_name = key.str();
+    const std::string where = Where(source, node.source());
     if (table_name == "model" && key_name == "thresholds") {
-      const std::string where = Where(source, node.source());
       if (!node.is_string()) {
         throw InputError(fmt::format(
             "{}: model.thresholds: expected a string, \"cumulative\" or \"literal\", got {}",
             where, TypeName(node)));
       }
       try {
-        scene.model.thresholds = ParseThresholds(**node.as_string(), "model.thresholds");
-        set_fields.emplace_back("model.thresholds");
+        reading.scene.model.thresholds = ParseThresholds(**node.as_string(), "model.thresholds");
+        reading.set_fields.emplace_back("model.thresholds");
       } catch (const InputError& e) {
         throw InputError(fmt::format("{}: {}", where, e.what()));
       }
       continue;
     }
+    if (table_name == "covering" && key_name == "material") {
+      if (!extras_wanted) RefuseExtra(where, "covering.material");
+      if (!node.is_string()) {
+        throw InputError(fmt::format("{}: covering.material: expected a string, a catalog "
+                                     "material's name such as \"polystyrene foam 27.6\", got {}",
+                                     where, TypeName(node)));
+      }
+      const std::string& name = **node.as_string();
+      if (name.find_first_not_of(" \t") == std::string::npos) {
+        throw InputError(fmt::format("{}: covering.material: empty name; give a catalog "
+                                     "material's name (see 'covopt materials list')",
+                                     where));
+      }
+      reading.extras.covering_material = name;
+      reading.extras.covering_material_where = where;
+      reading.sets_covering_material = true;
+      reading.set_fields.emplace_back("covering.material");
+      continue;
+    }
     const auto field = std::find_if(fields.begin(), fields.end(), [&](const SceneField& f) {
       return f.table == table_name && f.key == key_name;
     });
-    if (field == fields.end()) {
-      const std::vector<std::string_view> keys = KeysOf(table_name);
-      const auto suggestion = Closest(key_name, keys);
-      throw InputError(fmt::format(
-          "{}: unknown key '{}.{}'; {}", Where(source, key.source()), table_name, key_name,
-          suggestion ? fmt::format("did you mean '{}.{}'?", table_name, *suggestion)
-                     : fmt::format("[{}] takes {}", table_name, JoinQuoted(keys))));
+    if (field == fields.end()) UnknownKey(source, key, table_name);
+    Scene example = defaults;
+    field->field(reading.scene) =
+        ReadQuantity(node, field->spec, field->dotted_name(),
+                     FormatQuantity(field->field(example), field->spec.kind), source);
+    reading.set_fields.push_back(field->dotted_name());
+    if (table_name == "covering" && (key_name == "modulus" || key_name == "poisson") &&
+        !reading.covering_elastic_field) {
+      reading.covering_elastic_field = field->dotted_name();
     }
-    field->field(scene) = ReadQuantity(node, *field, source);
-    set_fields.push_back(field->dotted_name());
   }
 }
 
 }  // namespace
 
 std::vector<std::string> ApplySceneToml(std::string_view toml_text, std::string_view source,
-                                        Scene& scene) {
+                                        Scene& scene, SceneFileExtras* extras) {
   toml::table root;
   try {
     root = toml::parse(toml_text, source);
@@ -153,9 +247,8 @@ std::vector<std::string> ApplySceneToml(std::string_view toml_text, std::string_
                                  e.description()));
   }
 
-  // Work on a copy so that a bad file leaves `scene` untouched.
-  Scene result = scene;
-  std::vector<std::string> set_fields;
+  // Work on copies so that a bad file leaves `scene` and `extras` untouched.
+  Reading reading{scene, extras ? *extras : SceneFileExtras{}, {}, std::nullopt, false};
   const auto tables = SceneTables();
   const std::vector<std::string_view> table_names(tables.begin(), tables.end());
   for (const auto& [key, node] : root) {
@@ -167,6 +260,11 @@ std::vector<std::string> ApplySceneToml(std::string_view toml_text, std::string_
         if (field.key == name) {
           hint = fmt::format("; put '{}' under a table such as [{}]", name, field.table);
           break;
+        }
+      }
+      for (const LimitField& field : LimitFields()) {
+        if (hint.empty() && field.key == name) {
+          hint = fmt::format("; put '{}' under [limits]", name);
         }
       }
       if (hint.empty()) {
@@ -181,13 +279,22 @@ std::vector<std::string> ApplySceneToml(std::string_view toml_text, std::string_
       throw InputError(fmt::format("{}: '{}' must be a table ([{}]), got {}",
                                    Where(source, node.source()), name, name, TypeName(node)));
     }
-    ApplyTable(name, *node.as_table(), source, result, set_fields);
+    ApplyTable(name, *node.as_table(), source, extras != nullptr, reading);
   }
-  scene = result;
-  return set_fields;
+  if (reading.sets_covering_material && reading.covering_elastic_field) {
+    throw InputError(fmt::format(
+        "{}: covering.material '{}' sets the covering's modulus and Poisson ratio; give "
+        "either covering.material or {}, not both",
+        reading.extras.covering_material_where, *reading.extras.covering_material,
+        *reading.covering_elastic_field));
+  }
+  scene = reading.scene;
+  if (extras) *extras = reading.extras;
+  return reading.set_fields;
 }
 
-std::vector<std::string> ApplySceneFile(const std::filesystem::path& path, Scene& scene) {
+std::vector<std::string> ApplySceneFile(const std::filesystem::path& path, Scene& scene,
+                                        SceneFileExtras* extras) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     throw InputError(fmt::format("cannot read scene file '{}': it is a directory", path.string()));
@@ -202,7 +309,7 @@ std::vector<std::string> ApplySceneFile(const std::filesystem::path& path, Scene
   if (in.bad()) {
     throw InputError(fmt::format("cannot read scene file '{}'", path.string()));
   }
-  return ApplySceneToml(text.str(), path.string(), scene);
+  return ApplySceneToml(text.str(), path.string(), scene, extras);
 }
 
 }  // namespace covopt::cli

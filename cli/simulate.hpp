@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/core/time_integration.hpp"
 #include "covopt/materials/material.hpp"
@@ -38,8 +39,16 @@ struct SimulateOptions {
   /// (ν unknown there: 0.25, with a warning). Overrides the scene file; combined with
   /// --covering-modulus or --covering-poisson it is bad input.
   std::optional<std::string> material;
-  /// --catalog FILE (repeatable), --no-builtin: the catalog --material looks in.
+  /// --catalog FILE (repeatable), --no-builtin: the catalog --material (or the scene
+  /// file's covering.material) looks in.
   CatalogOptions catalog;
+  /// --laceration-limit (a stress, e.g. "1MPa") and --contusion-limit (an energy density,
+  /// e.g. "2.52J/cm2"), as typed. Default: the scene file's [limits], else InjuryLimits{}.
+  std::optional<std::string> laceration_limit;
+  std::optional<std::string> contusion_limit;
+  /// --safety-factor (simulate only), in [1, 100]: each verdict is judged against its limit
+  /// divided by it. Default: the scene file's limits.safety_factor, else 1.
+  std::optional<std::string> safety_factor;
   /// --method exact|cvode|<integrator> (cvode-adams, arkode-erk54, ...: see
   /// TimeIntegrationMethods()). Default: exact, or the library's default integrator
   /// (TimeIntegrationOptions::method) when --history or --plot is given.
@@ -65,8 +74,18 @@ struct SimulationPlan {
   /// Where each non-default scene field came from, by field name:
   /// "robot.mass" -> "--robot-mass '10kg'" or "scene.toml".
   std::map<std::string, std::string, std::less<>> sources;
-  /// The catalog entry the covering's E and ν come from (--material), if any.
+  /// The catalog entry the covering's E and ν come from (--material, or the scene file's
+  /// covering.material), if any, and how messages name where it was chosen:
+  /// "--material 'NAME'" or "covering.material 'NAME' (scene.toml:12:12)".
   std::optional<materials::Material> covering_material;
+  std::string covering_material_source;
+  /// The injury limits: InjuryLimits{} (1 MPa, 2.52 J/cm²), then the scene file's [limits],
+  /// then --laceration-limit/--contusion-limit.
+  InjuryLimits limits;
+  /// The limits are divided by this [-], in [1, 100] (scene file's limits.safety_factor,
+  /// then --safety-factor). Ratios stay value/limit; a verdict is safe when
+  /// safety_factor * ratio <= 1.
+  double safety_factor = 1.0;
   /// Set when the time path runs; empty for the exact path.
   std::optional<TimeIntegrationOptions> time_options;
   std::optional<std::string> history_file;
@@ -76,8 +95,9 @@ struct SimulationPlan {
 };
 
 /// Adds the scene options every scene-taking subcommand shares to `sub`: --scene, the scene
-/// fields (--robot-mass ...), --thresholds, --material, --catalog/--no-builtin. They fill
-/// `options` (which must outlive the parse); ResolveSimulation reads them.
+/// fields (--robot-mass ...), --thresholds, --material, --catalog/--no-builtin,
+/// --laceration-limit and --contusion-limit. They fill `options` (which must outlive the
+/// parse); ResolveSimulation reads them.
 void AddSceneOptions(CLI::App& sub, SimulateOptions& options);
 
 /// "cvode-adams, cvode-bdf, arkode-erk32, ...": every time-integration method's name.
@@ -87,13 +107,20 @@ std::string IntegratorNames();
 /// must outlive the parse.
 CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options);
 
-/// Reads every value and checks how the options combine (ranges are left to the library).
+/// Reads every value and checks how the options combine (the scene's ranges are left to the
+/// library; limits and the safety factor are checked here).
 /// @throws InputError naming the flag or the scene-file field.
 SimulationPlan ResolveSimulation(const SimulateOptions& options);
 
+/// Judges peaks against the plan's limits: each ratio is value/limit, and a verdict is safe
+/// when plan.safety_factor * ratio <= 1 (the value is within the derated limit).
+InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const SimulationPlan& plan);
+
 /// Warnings about the input itself, beside the library's about the result: values the
 /// user set that the model ignores (a covering modulus or material without a covering),
-/// and a catalog material without a Poisson ratio ("ν unknown, 0.25 assumed").
+/// a catalog material without a Poisson ratio ("ν unknown, 0.25 assumed"), and a safety
+/// factor above 1 (the verdicts are then judged against the derated limits, which it
+/// states).
 std::vector<std::string> InputWarnings(const SimulationPlan& plan);
 
 /// Adds to a library message that names scene fields ("robot.mass must be ...") where the

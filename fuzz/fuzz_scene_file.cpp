@@ -1,5 +1,5 @@
-// libFuzzer target: the scene-file parser (cli/scene_file.cpp), then the model on what it
-// accepts. Bad input must end in covopt::cli::InputError (scene file) or
+// libFuzzer target: the scene-file parser (cli/scene_file.cpp, with its [limits] and
+// covering.material extras), then the model on what it accepts. Bad input must end in covopt::cli::InputError (scene file) or
 // std::invalid_argument (ImpactModel::FromScene); a scene that validates must give finite,
 // positive exact peaks and contact duration. Anything else (a crash, a sanitizer report,
 // another exception, a NaN) is a finding.
@@ -20,10 +20,18 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   covopt::Scene scene;
+  covopt::cli::SceneFileExtras extras;
   try {
-    covopt::cli::ApplySceneToml(text, "fuzz.toml", scene);
+    covopt::cli::ApplySceneToml(text, "fuzz.toml", scene, &extras);
   } catch (const covopt::cli::InputError&) {
     return 0;
+  }
+  // Limits that pass must be usable: positive and finite, the safety factor in [1, 100].
+  for (const auto& limit : {extras.laceration_limit_Pa, extras.contusion_limit_J_per_m2}) {
+    if (limit && !(std::isfinite(*limit) && *limit > 0.0)) std::abort();
+  }
+  if (extras.safety_factor && !(*extras.safety_factor >= 1.0 && *extras.safety_factor <= 100.0)) {
+    std::abort();
   }
   try {
     const covopt::ImpactModel model = covopt::ImpactModel::FromScene(scene);

@@ -1,8 +1,10 @@
 // Bad input through the real command line (issue 6): every flag of simulate, optimize and
 // materials with a missing, malformed, negative, zero, NaN, infinite, absurdly large or
-// wrong-unit value; unknown flags; broken scene files and catalogs. Each must give exit code
+// wrong-unit value, or a bare number that is implausible in SI (a unit slip: "--robot-radius
+// 40" is 40 m); unknown flags; broken scene files and catalogs. Each must give exit code
 // 2, nothing on stdout, and exactly one line on stderr that names the field or flag, repeats
 // the offending value, and says what is allowed.
+#include <charconv>
 #include <string>
 #include <vector>
 
@@ -57,8 +59,16 @@ std::string WithUnit(QuantityKind kind, const std::string& number) {
     case QuantityKind::kModulus: return number + "MPa";
     case QuantityKind::kDensity: return number + "kg/m3";
     case QuantityKind::kDimensionless: return number;
+    case QuantityKind::kEnergyDensity: return number + "J/m2";
   }
   return number;
+}
+
+/// The shortest text that reads back as `value`: "1000", "1e+15".
+std::string Shortest(double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
 }
 
 /// A unit of another kind than `kind`.
@@ -90,6 +100,13 @@ std::vector<BadCase> SceneFlagCases(const std::string& command) {
       cases.push_back({{command, flag, WithUnit(kind, "0")}, {name, "must be", "(got 0)"}});
     }
     if (ratio) cases.push_back({{command, flag, "0.6"}, {name, "(-1, 0.5]", "0.6"}});
+    // A bare number far beyond the plausible range (a unit slip): refused before the model
+    // sees it, naming the flag, the number, its SI reading and how to write it.
+    if (field.spec.has_plausible_range()) {
+      const std::string slip = Shortest(field.spec.plausible_max * 1000);
+      cases.push_back({{command, flag, slip},
+                       {flag + " " + slip + ": a bare number is in", "write "}});
+    }
     if (!field.spec.allow_fixed) cases.push_back({{command, flag, "fixed"}, {flag, "'fixed'"}});
     if (!field.spec.allow_flat) cases.push_back({{command, flag, "flat"}, {flag, "'flat'"}});
   }
@@ -143,6 +160,32 @@ TEST_CASE("simulate's other flags reject bad values", "[bad-input]") {
       {{"simulate", "--robot-mas", "2"}, {"'--robot-mas'", "did you mean '--robot-mass'?"}},
       {{"simulate", "2m/s"}, {"unexpected argument '2m/s'", "--speed 2m/s"}},
       {{"simulate", "--speed", "1", "--speed", "2"}, {"--speed"}},
+      {{"simulate", "--laceration-limit"}, {"--laceration-limit", "missing value"}},
+      {{"simulate", "--laceration-limit", "abc"}, {"--laceration-limit", "not a number", "'abc'"}},
+      {{"simulate", "--laceration-limit", "nan"}, {"--laceration-limit", "not a finite number"}},
+      {{"simulate", "--laceration-limit", "0"}, {"--laceration-limit", "> 0 Pa", "'0'"}},
+      {{"simulate", "--laceration-limit", "-1MPa"}, {"--laceration-limit", "> 0 Pa", "'-1MPa'"}},
+      {{"simulate", "--laceration-limit", "1"},
+       {"--laceration-limit 1: a bare number is in pascals (1 Pa); write 1MPa or 1Pa"}},
+      {{"simulate", "--laceration-limit", "1J/m2"}, {"--laceration-limit", "unit 'J/m2'", "MPa"}},
+      {{"simulate", "--contusion-limit", "2.52"},
+       {"--contusion-limit 2.52: a bare number is in joules per square metre (2.52 J/m2); write "
+        "2.52J/cm2 or 2.52J/m2"}},
+      {{"simulate", "--contusion-limit", "2.52MPa"}, {"--contusion-limit", "unit 'MPa'", "J/cm2"}},
+      {{"simulate", "--contusion-limit", "-inf"}, {"--contusion-limit", "not a finite number"}},
+      {{"simulate", "--contusion-limit", "0J/cm2"}, {"--contusion-limit", "> 0 J/m2", "'0J/cm2'"}},
+      {{"simulate", "--safety-factor", "0.5"}, {"--safety-factor", "[1, 100]", "'0.5'"}},
+      {{"simulate", "--safety-factor", "1e9"}, {"--safety-factor", "[1, 100]", "'1e9'"}},
+      {{"simulate", "--safety-factor", "2mm"}, {"--safety-factor", "'mm'", "plain number"}},
+      {{"simulate", "--safety-factor", "nan"}, {"--safety-factor", "not a finite number"}},
+      {{"sweep", "--x", "speed=1..2:3", "--laceration-limit", "1"},
+       {"--laceration-limit 1: a bare number is in pascals"}},
+      {{"sweep", "--x", "speed=1..2:3", "--contusion-limit", "-2J/cm2"},
+       {"--contusion-limit", "> 0 J/m2"}},
+      {{"sweep", "--x", "speed=1..2:3", "--safety-factor", "2"},
+       {"unknown option '--safety-factor'"}},
+      {{"sweep", "--x", "robot-radius=15..40"},
+       {"--x 15: a bare number is in metres (15 m); write 15mm or 15m"}},
       {{"frobnicate"}, {"frobnicate"}},
   };
   for (const BadCase& c : cases) CheckRejected(c);
@@ -158,7 +201,7 @@ TEST_CASE("optimize's design flags reject bad values", "[bad-input]") {
       {{"optimize", "--max-thickness"}, {"--max-thickness", "missing value"}},
       {{"optimize", "--min-modulus", "0"}, {"--min-modulus", "0 < min < max", "0 Pa"}},
       {{"optimize", "--min-modulus", "-1MPa"}, {"--min-modulus", "0 < min < max", "-1000000 Pa"}},
-      {{"optimize", "--max-modulus", "1e20"}, {"--max-modulus", "<= 1e13 Pa", "1e+20 Pa"}},
+      {{"optimize", "--max-modulus", "1e20Pa"}, {"--max-modulus", "<= 1e13 Pa", "1e+20 Pa"}},
       {{"optimize", "--min-modulus", "2GPa"}, {"--min-modulus", "min < max", "2000000000 Pa"}},
       {{"optimize", "--max-modulus", "2m/s"}, {"--max-modulus", "unit 'm/s'"}},
       {{"optimize", "--safety-factor", "0.5"}, {"--safety-factor", "[1, 100]", "'0.5'"}},
@@ -249,6 +292,11 @@ TEST_CASE("broken scene files are rejected with file:line:column and the key", "
       {"thresholds.toml", "[model]\nthresholds = \"strict\"\n", {"thresholds.toml:2:", "model.thresholds", "'strict'", "literal"}},
       {"thresholds_type.toml", "[model]\nthresholds = 1\n", {"model.thresholds", "expected a string", "an integer"}},
       {"poisson.toml", "[skull]\npoisson = 0.7\n", {"skull.poisson", "(-1, 0.5]", "0.7"}},
+      {"slip_radius.toml", "[robot]\nradius = 40\n",
+       {"slip_radius.toml:2:10: robot.radius 40: a bare number is in metres (40 m); write \"40mm\" or \"40m\""}},
+      {"slip_modulus.toml", "[skull]\nmodulus = 6.5\n",
+       {"slip_modulus.toml:2:11", "skull.modulus 6.5", "write \"6.5GPa\" or \"6.5Pa\""}},
+      {"slip_mass.toml", "[head]\nmass = 4500\n", {"head.mass 4500", "\"4500g\""}},
   };
   for (const FileCase& f : cases) {
     const auto path = dir.Write(f.name, f.text);
@@ -281,9 +329,8 @@ TEST_CASE("broken catalogs are rejected with file:line:column and the key", "[ba
        {"polystyrene foam 27.6", "ignoring case"}},
       {"missing.toml", "[[material]]\nname = \"soft\"\nfamily = \"foam\"\n", {"missing.toml:1:1", "'youngs_modulus_Pa'", "required"}},
       {"no_name.toml", "[[material]]\nfamily = \"foam\"\n", {"no_name.toml:1:1", "'name'"}},
-      {"nu_half.toml", entry + "poisson_ratio = 0.5\n", {"nu_half.toml:7:17", "poisson_ratio", "(-1, 0.5)", "0.5"}},
-      {"nu_big.toml", entry + "poisson_ratio = 0.7\n", {"poisson_ratio", "(-1, 0.5)", "0.7"}},
-      {"nu_nan.toml", entry + "poisson_ratio = nan\n", {"poisson_ratio", "(-1, 0.5)"}},
+      {"nu_big.toml", entry + "poisson_ratio = 0.7\n", {"nu_big.toml:7:17", "poisson_ratio", "(-1, 0.5]", "0.7"}},
+      {"nu_nan.toml", entry + "poisson_ratio = nan\n", {"poisson_ratio", "(-1, 0.5]"}},
       {"e_zero.toml",
        "[[material]]\nname = \"soft\"\nfamily = \"foam\"\nyoungs_modulus_Pa = 0\n"
        "modulus_basis = \"compressive\"\nsource = \"test\"\n",
@@ -296,10 +343,21 @@ TEST_CASE("broken catalogs are rejected with file:line:column and the key", "[ba
        "[[material]]\nname = \"soft\"\nfamily = \"foam\"\nyoungs_modulus_Pa = inf\n"
        "modulus_basis = \"compressive\"\nsource = \"test\"\n",
        {"youngs_modulus_Pa", "<= 1e12"}},
-      {"e_string.toml",
-       "[[material]]\nname = \"soft\"\nfamily = \"foam\"\nyoungs_modulus_Pa = \"2 MPa\"\n"
+      {"e_unit.toml",
+       "[[material]]\nname = \"soft\"\nfamily = \"foam\"\nyoungs_modulus_Pa = \"2 kg\"\n"
        "modulus_basis = \"compressive\"\nsource = \"test\"\n",
-       {"youngs_modulus_Pa", "must be a number in Pa", "\"2 MPa\""}},
+       {"e_unit.toml:4:21", "youngs_modulus_Pa", "unit 'kg' is not a modulus", "'2 kg'"}},
+      {"e_bare.toml",
+       "[[material]]\nname = \"soft\"\nfamily = \"foam\"\nyoungs_modulus_Pa = 27.6\n"
+       "modulus_basis = \"compressive\"\nsource = \"test\"\n",
+       {"e_bare.toml:4:21: material 'soft': youngs_modulus_Pa 27.6: a bare number is in pascals "
+        "(27.6 Pa); write \"27.6MPa\" or \"27.6Pa\""}},
+      {"e_bool.toml",
+       "[[material]]\nname = \"soft\"\nfamily = \"foam\"\nyoungs_modulus_Pa = true\n"
+       "modulus_basis = \"compressive\"\nsource = \"test\"\n",
+       {"youngs_modulus_Pa", "a string with a unit", "27.6MPa"}},
+      {"density_bare.toml", entry + "density_kg_per_m3 = 1.05\n",
+       {"density_kg_per_m3 1.05: a bare number is in kilograms per cubic metre", "\"1.05g/cm3\""}},
       {"density.toml", entry + "density_kg_per_m3 = -1\n", {"density_kg_per_m3", "> 0", "-1"}},
       {"unknown_key.toml", entry + "poisson = 0.3\n", {"unknown key 'poisson'", "did you mean 'poisson_ratio'?"}},
       {"basis.toml",

@@ -323,11 +323,11 @@ source = "elsewhere"
   CheckBadInput({"materials", "list", "--catalog", broken}, "TOML syntax error");
 
   const std::string bad_nu = dir.Write("nu.toml", "[[material]]\nname = \"x\"\nfamily = \"foam\"\n"
-                                                  "youngs_modulus_Pa = 1e6\npoisson_ratio = 0.5\n"
+                                                  "youngs_modulus_Pa = 1e6\npoisson_ratio = 0.51\n"
                                                   "modulus_basis = \"fitted\"\nsource = \"s\"\n")
                                  .string();
   CheckBadInput({"materials", "show", "x", "--catalog", bad_nu},
-                bad_nu + ":5:17: material 'x': poisson_ratio must be in (-1, 0.5)");
+                bad_nu + ":5:17: material 'x': poisson_ratio must be in (-1, 0.5]");
   CheckBadInput({"materials", "list", "--catalog", (dir / "missing.toml").string()},
                 "cannot read catalog file");
   CheckBadInput({"materials", "list", "--no-builtin"}, "--no-builtin leaves no catalog");

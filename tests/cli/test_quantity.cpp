@@ -1,186 +1,161 @@
-// The quantity parser reads what users type for a value ("10kg", "15 mm", "27.6MPa",
-// "fixed") into SI. These tests check every unit of every kind, the optional space, the
-// words fixed/flat only where they are allowed, and that every bad value (wrong unit,
-// malformed number, nan/inf, overflow, empty) is rejected with a message that names the
-// flag, shows the value, and for a wrong unit lists the units that fit.
+// The command line reads values with the library's parser (covopt/core/quantity.hpp, tested
+// in tests/core/test_quantity.cpp) through cli/quantity.hpp, which turns its errors into the
+// CLI's InputError (exit 2). These tests check that forwarding, that the scene flags, scene
+// files and limit flags use the named specs with their plausible ranges, and the regressions
+// of issue 10 through the real command line: `--robot-radius 40` and `--covering-thickness
+// 15` are refused as 40 m and 15 m, `40mm` and `40m` are taken as written; and that
+// cli/README.md's table of plausible ranges is the named specs'.
 
-#include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
-#include "covopt/core/scene.hpp"
+#include "cli_test_support.hpp"
 #include "errors.hpp"
 #include "quantity.hpp"
+#include "scene_fields.hpp"
 
-using covopt::cli::FormatQuantity;
 using covopt::cli::InputError;
 using covopt::cli::ParseQuantity;
 using covopt::cli::QuantityKind;
 using covopt::cli::QuantitySpec;
+using covopt::cli::testing::Run;
 using Catch::Matchers::Contains;
+namespace specs = covopt::quantity_specs;
 
-namespace {
-
-constexpr QuantitySpec kMass{QuantityKind::kMass, true, false};
-constexpr QuantitySpec kLength{QuantityKind::kLength};
-constexpr QuantitySpec kRadius{QuantityKind::kLength, false, true};
-constexpr QuantitySpec kSpeed{QuantityKind::kSpeed};
-constexpr QuantitySpec kModulus{QuantityKind::kModulus};
-constexpr QuantitySpec kRatio{QuantityKind::kDimensionless};
-constexpr QuantitySpec kDensity{QuantityKind::kDensity};
-
-/// The message ParseQuantity throws for `text`, or "" if it accepts it.
-std::string ErrorFor(const std::string& text, const QuantitySpec& spec,
-                     const std::string& name = "--value") {
-  try {
-    ParseQuantity(text, spec, name);
-  } catch (const InputError& e) {
-    return e.what();
+TEST_CASE("the CLI's ParseQuantity is the library's, throwing InputError", "[quantity]") {
+  CHECK(ParseQuantity("15 mm", specs::kCoveringThickness, "--covering-thickness") == 0.015);
+  CHECK_THROWS_AS(ParseQuantity("2kg", specs::kSpeed, "--speed"), InputError);
+  for (const auto& [text, spec] : {std::pair{"2kg", specs::kSpeed},
+                                   std::pair{"40", specs::kRobotRadius},
+                                   std::pair{"nan", specs::kHeadMass}}) {
+    std::string library;
+    try {
+      covopt::ParseQuantity(text, spec, "--flag");
+    } catch (const std::invalid_argument& e) {
+      library = e.what();
+    }
+    CAPTURE(text);
+    REQUIRE_FALSE(library.empty());
+    CHECK_THROWS_WITH(ParseQuantity(text, spec, "--flag"), library);
   }
-  return "";
 }
 
-}  // namespace
-
-TEST_CASE("every unit of every kind converts to SI", "[quantity]") {
-  struct Case {
-    const char* text;
-    QuantitySpec spec;
-    double si;
+TEST_CASE("every scene field reads bare numbers with its named spec", "[quantity]") {
+  const std::vector<std::pair<std::string, const QuantitySpec*>> expected = {
+      {"robot.mass", &specs::kRobotMass},           {"robot.speed", &specs::kSpeed},
+      {"robot.radius", &specs::kRobotRadius},       {"robot.modulus", &specs::kRobotModulus},
+      {"robot.poisson", &specs::kPoissonRatio},     {"covering.modulus", &specs::kCoveringModulus},
+      {"covering.poisson", &specs::kPoissonRatio},  {"covering.thickness", &specs::kCoveringThickness},
+      {"head.mass", &specs::kHeadMass},             {"head.radius", &specs::kHeadRadius},
+      {"scalp.modulus", &specs::kScalpModulus},     {"scalp.poisson", &specs::kPoissonRatio},
+      {"scalp.thickness", &specs::kScalpThickness}, {"skull.modulus", &specs::kSkullModulus},
+      {"skull.poisson", &specs::kPoissonRatio},
   };
-  const auto c = GENERATE(values<Case>({
-      {"10kg", kMass, 10.0},
-      {"4500g", kMass, 4.5},
-      {"0.01t", kMass, 10.0},
-      {"1.5m", kLength, 1.5},
-      {"8cm", kLength, 0.08},
-      {"15mm", kLength, 0.015},
-      {"300um", kLength, 300e-6},
-      {"300\u00b5m", kLength, 300e-6},
-      {"300\u03bcm", kLength, 300e-6},
-      {"2m/s", kSpeed, 2.0},
-      {"250mm/s", kSpeed, 0.25},
-      {"50cm/s", kSpeed, 0.5},
-      {"7.2km/h", kSpeed, 2.0},
-      {"1000Pa", kModulus, 1000.0},
-      {"16.7kPa", kModulus, 16.7e3},
-      {"27.6MPa", kModulus, 27.6e6},
-      {"6.5GPa", kModulus, 6.5e9},
-      {"5N/m2", kModulus, 5.0},
-      {"2N/mm2", kModulus, 2e6},
-      {"2N/mm\u00b2", kModulus, 2e6},
-      {"50kg/m3", kDensity, 50.0},
-      {"50 kg/m\u00b3", kDensity, 50.0},
-      {"50kg/m^3", kDensity, 50.0},
-      {"1.05g/cm3", kDensity, 1050.0},
-      {"1.05g/cm\u00b3", kDensity, 1050.0},
-      {"0.03g/cm^3", kDensity, 30.0},
-      {"0.3", kRatio, 0.3},
-  }));
-  CAPTURE(c.text);
-  CHECK(ParseQuantity(c.text, c.spec, "--value") == Approx(c.si).epsilon(1e-14));
+  const auto fields = covopt::cli::SceneFields();
+  REQUIRE(fields.size() == expected.size());
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    CAPTURE(expected[i].first);
+    CHECK(fields[i].dotted_name() == expected[i].first);
+    CHECK(fields[i].spec.kind == expected[i].second->kind);
+    CHECK(fields[i].spec.plausible_min == expected[i].second->plausible_min);
+    CHECK(fields[i].spec.plausible_max == expected[i].second->plausible_max);
+    CHECK(fields[i].spec.what == expected[i].second->what);
+  }
+  const auto limits = covopt::cli::LimitFields();
+  REQUIRE(limits.size() == 3);
+  CHECK(limits[0].dotted_name() == "limits.laceration");
+  CHECK(limits[0].spec.what == specs::kLacerationLimit.what);
+  CHECK(limits[1].dotted_name() == "limits.contusion");
+  CHECK(limits[1].spec.kind == QuantityKind::kEnergyDensity);
+  CHECK(limits[2].dotted_name() == "limits.safety_factor");
 }
 
-TEST_CASE("a bare number is SI and number formats follow from_chars", "[quantity]") {
-  CHECK(ParseQuantity("10", kMass, "--robot-mass") == 10.0);
-  CHECK(ParseQuantity("0.015", kLength, "--robot-radius") == 0.015);
-  CHECK(ParseQuantity("2.76e7", kModulus, "--covering-modulus") == 2.76e7);
-  CHECK(ParseQuantity("1E-3m", kLength, "--covering-thickness") == Approx(1e-3));
-  CHECK(ParseQuantity(".5", kRatio, "--robot-poisson") == 0.5);
-  CHECK(ParseQuantity("+2m/s", kSpeed, "--speed") == 2.0);
-  // Negative values are read; their range is the library's business.
-  CHECK(ParseQuantity("-10kg", kMass, "--robot-mass") == -10.0);
+TEST_CASE("limits must be positive and the safety factor in [1, 100]", "[quantity]") {
+  const auto limits = covopt::cli::LimitFields();
+  using covopt::cli::CheckLimitValue;
+  CHECK_NOTHROW(CheckLimitValue(limits[0], 1e6, "--laceration-limit", "'1MPa'"));
+  CHECK_THROWS_WITH(CheckLimitValue(limits[0], 0.0, "--laceration-limit", "'0'"),
+                    "--laceration-limit must be > 0 Pa (got '0')");
+  CHECK_THROWS_WITH(CheckLimitValue(limits[1], -1.0, "limits.contusion", "-1"),
+                    "limits.contusion must be > 0 J/m2 (got -1)");
+  CHECK_NOTHROW(CheckLimitValue(limits[2], 1.0, "--safety-factor", "'1'"));
+  CHECK_NOTHROW(CheckLimitValue(limits[2], 100.0, "--safety-factor", "'100'"));
+  CHECK_THROWS_WITH(CheckLimitValue(limits[2], 0.99, "--safety-factor", "'0.99'"),
+                    "--safety-factor must be in [1, 100] (got '0.99')");
+  CHECK_THROWS_AS(CheckLimitValue(limits[2], 101.0, "limits.safety_factor", "101"), InputError);
 }
 
-TEST_CASE("a space between number and unit, and around the value, is allowed", "[quantity]") {
-  CHECK(ParseQuantity("15 mm", kLength, "--covering-thickness") == Approx(0.015));
-  CHECK(ParseQuantity("  2 m/s ", kSpeed, "--speed") == 2.0);
-  CHECK(ParseQuantity("27.6\tMPa", kModulus, "--covering-modulus") == Approx(27.6e6));
+TEST_CASE("a bare robot radius or covering thickness in mm is refused on the command line",
+          "[quantity][run]") {
+  // Issue 10: --robot-radius 40 silently meant 40 m and turned an unsafe robot into "no
+  // covering needed"; --covering-thickness 15 was 15 m.
+  for (const std::string command : {"simulate", "sweep"}) {
+    std::vector<std::string> args = {command, "--robot-radius", "40"};
+    if (command == "sweep") args.insert(args.end(), {"--x", "speed=1..2:3"});
+    const auto run = Run(args);
+    CAPTURE(command);
+    CHECK(run.exit_code == 2);
+    CHECK(run.out.empty());
+    CHECK(run.err == "covopt " + command +
+                         ": error: --robot-radius 40: a bare number is in metres (40 m); write "
+                         "40mm or 40m\n");
+  }
+  const auto thick = Run({"simulate", "--covering-thickness", "15"});
+  CHECK(thick.exit_code == 2);
+  CHECK(thick.err == "covopt simulate: error: --covering-thickness 15: a bare number is in "
+                     "metres (15 m); write 15mm or 15m\n");
 }
 
-TEST_CASE("fixed and flat are infinite, and only where the spec allows them", "[quantity]") {
-  CHECK(ParseQuantity("fixed", kMass, "--head-mass") == covopt::kFixed);
-  CHECK(ParseQuantity("Fixed", kMass, "--head-mass") == covopt::kFixed);
-  CHECK(ParseQuantity("flat", kRadius, "--robot-radius") == covopt::kFlat);
-
-  CHECK_THAT(ErrorFor("flat", kLength, "--head-radius"),
-             Contains("--head-radius") && Contains("'flat' is only allowed for the robot radius"));
-  CHECK_THAT(ErrorFor("fixed", kSpeed, "--speed"),
-             Contains("--speed") && Contains("'fixed' is only allowed for a mass"));
-  CHECK_THAT(ErrorFor("flat", kMass, "--robot-mass"), Contains("--robot-mass"));
-  CHECK_THAT(ErrorFor("fixed", kRadius, "--robot-radius"), Contains("--robot-radius"));
+TEST_CASE("with a unit, the same numbers are taken as written", "[quantity][run]") {
+  const auto mm = Run({"simulate", "--robot-radius", "40mm", "--json"});
+  REQUIRE(mm.exit_code == 0);
+  CHECK(nlohmann::json::parse(mm.out)["scene"]["robot"]["radius_m"].get<double>() == 0.04);
+  // 40 m is within the model's range: the user said so.
+  const auto m = Run({"simulate", "--robot-radius", "40m", "--json"});
+  REQUIRE(m.exit_code == 0);
+  CHECK(nlohmann::json::parse(m.out)["scene"]["robot"]["radius_m"].get<double>() == 40.0);
+  // 15 m of covering is not: the model's own range answers.
+  const auto thick = Run({"simulate", "--covering-thickness", "15m"});
+  CHECK(thick.exit_code == 2);
+  CHECK_THAT(thick.err, Contains("covering.thickness must be in [0, 1] m"));
+  // A plausible bare number is SI.
+  const auto bare = Run({"simulate", "--robot-radius", "0.04", "--json"});
+  REQUIRE(bare.exit_code == 0);
+  CHECK(nlohmann::json::parse(bare.out)["scene"]["robot"]["radius_m"].get<double>() == 0.04);
 }
 
-TEST_CASE("a unit of the wrong kind names the kind and lists the units that fit",
+TEST_CASE("a sub-unit value reaches the JSON without float noise", "[quantity][run]") {
+  const auto run = Run({"simulate", "--covering-thickness", "18mm", "--json"});
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.out, Contains("\"thickness_m\": 0.018,") || Contains("\"thickness_m\": 0.018\n"));
+  CHECK_THAT(run.out, !Contains("0.018000000000000002"));
+}
+
+TEST_CASE("cli/README.md documents every plausible range as the named specs have it",
           "[quantity]") {
-  CHECK(ErrorFor("2kg", kSpeed, "--speed") ==
-        "--speed: unit 'kg' is not a speed; use m/s, mm/s, cm/s or km/h (got '2kg')");
-  CHECK_THAT(ErrorFor("15m/s", kLength, "--covering-thickness"),
-             Contains("unit 'm/s' is not a length") && Contains("m, cm, mm, um or µm"));
-  CHECK_THAT(ErrorFor("10mm", kMass, "--robot-mass"),
-             Contains("is not a mass") && Contains("kg, g or t"));
-  CHECK_THAT(ErrorFor("27.6mm", kModulus, "--covering-modulus"),
-             Contains("is not a modulus or pressure") &&
-                 Contains("Pa, kPa, MPa, GPa, N/m2 or N/mm2"));
-  CHECK(ErrorFor("50kg", kDensity, "--density") ==
-        "--density: unit 'kg' is not a density; use kg/m3 or g/cm3 (got '50kg')");
-  CHECK_THAT(ErrorFor("50kg/m3", kModulus, "--modulus"), Contains("is not a modulus or pressure"));
-  CHECK_THAT(ErrorFor("50KG/M3", kDensity, "--density"), Contains("did you mean 'kg/m3'?"));
-  CHECK_THAT(ErrorFor("0.3MPa", kRatio, "--robot-poisson"),
-             Contains("--robot-poisson") && Contains("dimensionless") &&
-                 Contains("plain number"));
-}
-
-TEST_CASE("an unknown unit is rejected, with a suggestion for a case slip", "[quantity]") {
-  CHECK_THAT(ErrorFor("2 furlongs", kSpeed, "--speed"),
-             Contains("--speed") && Contains("unknown unit 'furlongs'") &&
-                 Contains("m/s, mm/s, cm/s or km/h") && Contains("(got '2 furlongs')"));
-  CHECK_THAT(ErrorFor("27.6mpa", kModulus, "--covering-modulus"),
-             Contains("did you mean 'MPa'?"));
-  CHECK_THAT(ErrorFor("0.3 x", kRatio, "--skull-poisson"),
-             Contains("--skull-poisson") && Contains("plain number"));
-}
-
-TEST_CASE("malformed numbers are rejected naming the flag and the value", "[quantity]") {
-  for (const char* text : {"abc", "kg", "-", "1..5mm", "2,5m/s", "1.5.3", "0x10", "++2", "e5"}) {
-    CAPTURE(text);
-    const std::string message = ErrorFor(text, kLength, "--head-radius");
-    CHECK_THAT(message, Contains("--head-radius") && Contains(std::string("'") + text + "'"));
-  }
-  CHECK_THAT(ErrorFor("2,5", kRatio), Contains("use '.' as the decimal separator"));
-}
-
-TEST_CASE("nan, inf and overflowing values are rejected as not finite", "[quantity]") {
-  for (const char* text : {"nan", "NaN", "-nan", "inf", "-inf", "Infinity", "infm/s"}) {
-    CAPTURE(text);
-    CHECK_THAT(ErrorFor(text, kSpeed, "--speed"),
-               Contains("--speed") && Contains("not a finite number"));
-  }
-  CHECK_THAT(ErrorFor("1e999", kSpeed, "--speed"), Contains("out of range"));
-  // Finite as typed, infinite in SI.
-  CHECK_THAT(ErrorFor("1e300GPa", kModulus, "--skull-modulus"),
-             Contains("--skull-modulus") && Contains("out of range"));
-}
-
-TEST_CASE("an empty value is rejected with an example", "[quantity]") {
-  CHECK_THAT(ErrorFor("", kSpeed, "--speed"),
-             Contains("--speed: empty value") && Contains("2m/s"));
-  CHECK_THAT(ErrorFor("   ", kMass, "robot.mass"), Contains("robot.mass: empty value"));
-}
-
-TEST_CASE("formatted quantities read back to the same value", "[quantity]") {
-  CHECK(FormatQuantity(10.0, QuantityKind::kMass) == "10 kg");
-  CHECK(FormatQuantity(covopt::kFixed, QuantityKind::kMass) == "fixed");
-  CHECK(FormatQuantity(covopt::kFlat, QuantityKind::kLength) == "flat");
-  CHECK(FormatQuantity(0.015, QuantityKind::kLength) == "15 mm");
-  CHECK(FormatQuantity(27.6e6, QuantityKind::kModulus) == "27.6 MPa");
-  CHECK(FormatQuantity(70e9, QuantityKind::kModulus) == "70 GPa");
-  CHECK(FormatQuantity(38.4, QuantityKind::kDensity) == "38.4 kg/m³");
-  for (const auto& [value, spec] : {std::pair{4.5, kMass}, std::pair{0.003, kLength},
-                                    std::pair{2.0, kSpeed}, std::pair{16.7e6, kModulus},
-                                    std::pair{0.42, kRatio}, std::pair{covopt::kFlat, kRadius},
-                                    std::pair{28.8, kDensity}}) {
-    CHECK(ParseQuantity(FormatQuantity(value, spec.kind), spec, "x") == Approx(value));
+  std::ifstream in(COVOPT_CLI_EXAMPLES_DIR "/../README.md");
+  REQUIRE(in);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string readme = text.str();
+  for (const QuantitySpec* spec : specs::kWithPlausibleRange) {
+    CAPTURE(spec->what);
+    const std::size_t row = readme.find("\n| " + std::string(spec->what) + " | ");
+    REQUIRE(row != std::string::npos);
+    const std::string line = readme.substr(row + 1, readme.find('\n', row + 1) - row - 1);
+    std::string likely;
+    for (const std::string_view unit : spec->likely_units) {
+      if (unit.empty()) continue;
+      if (!likely.empty()) likely += ", ";
+      likely += unit;
+    }
+    CHECK_THAT(line, Contains("| " + covopt::FormatQuantity(spec->plausible_min, spec->kind) +
+                              " to " + covopt::FormatQuantity(spec->plausible_max, spec->kind) +
+                              " | " + likely + " |"));
   }
 }
