@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
 #include <exception>
 #include <numbers>
 #include <stdexcept>
@@ -19,6 +22,8 @@ namespace covopt::optim {
 namespace {
 
 constexpr double kLn10 = std::numbers::ln10;
+/// The continuous optimum's thickness is bisected to this [m].
+constexpr double kThicknessTolerance_m = 1e-11;
 
 std::string Number(double value) {
   char buffer[32];
@@ -49,6 +54,10 @@ void ValidateOptions(const DesignOptions& o) {
   Require(o.global_evaluations >= 10, "global evaluations must be >= 10 (got " +
                                           std::to_string(o.global_evaluations) + ")");
   Require(o.thickness_scan_points >= 10, "thickness scan points must be >= 10");
+  Require(o.bracket_thickness_points >= 4 && o.bracket_thickness_points <= 100000,
+          "bracket thickness points must be in [4, 100000] (got " + std::to_string(o.bracket_thickness_points) + ")");
+  Require(o.modulus_points_per_decade >= 2 && o.modulus_points_per_decade <= 10000,
+          "modulus points per decade must be in [2, 10000] (got " + std::to_string(o.modulus_points_per_decade) + ")");
   Require(o.thickness_resolution_m > 0, "thickness resolution must be > 0 m");
   Require(o.threads >= 1 && o.threads <= 256,
           "threads must be in [1, 256] (got " + std::to_string(o.threads) + ")");
@@ -58,7 +67,7 @@ void ValidateOptions(const DesignOptions& o) {
 
 /// Problem (a): x = (log10 E_c, b_c / b_max), both of order one (Ipopt is sensitive to
 /// scaling: with b_c in metres it reported local infeasibility from feasible basins);
-/// min b_c/b_max s.t. ln(SF r_i) <= 0.
+/// min b_c/b_max s.t. ln(SF r_i) <= 0 and, under the default criterion, ln(δ_max/t2) <= 0.
 class ThinnestProblem : public Problem {
  public:
   ThinnestProblem(const CoveringOracle& oracle, const DesignOptions& o)
@@ -66,32 +75,26 @@ class ThinnestProblem : public Problem {
         lower_{std::log10(o.space.min_modulus_Pa), o.space.min_thickness_m / o.space.max_thickness_m},
         upper_{std::log10(o.space.max_modulus_Pa), 1.0} {}
   std::size_t dimension() const override { return 2; }
-  std::size_t inequality_count() const override { return 2; }
+  std::size_t inequality_count() const override {
+    return o_.criterion() == DesignCriterion::kNoFullCompression ? 3 : 2;
+  }
   std::vector<double> lower_bounds() const override { return lower_; }
   std::vector<double> upper_bounds() const override { return upper_; }
-  /// The same problem on a box around `centre` (±half a decade in E_c, ×0.5..1.5 in b_c),
-  /// clipped to the design space: the local stage's trust region. Ipopt started on the whole
-  /// box can take a first quasi-Newton step of the full box width, into the bottomed-out
+  /// The same problem on a box around `centre` (±`log_width` decades in E_c, ×(1 ± `relative_width`)
+  /// in b_c), clipped to the design space: the local stage's trust region. Ipopt started on the
+  /// whole box can take a first quasi-Newton step of the full box width, into the bottomed-out
   /// basin near b_c -> 0, and report local infeasibility from there.
-  ThinnestProblem Around(std::span<const double> centre) const {
+  ThinnestProblem Around(std::span<const double> centre, double log_width, double relative_width) const {
     ThinnestProblem local(oracle_, o_);
-    local.lower_ = {std::max(lower_[0], centre[0] - 0.5), std::max(lower_[1], 0.5 * centre[1])};
-    local.upper_ = {std::min(upper_[0], centre[0] + 0.5), std::min(upper_[1], 1.5 * centre[1])};
+    local.lower_ = {std::max(lower_[0], centre[0] - log_width), std::max(lower_[1], (1 - relative_width) * centre[1])};
+    local.upper_ = {std::min(upper_[0], centre[0] + log_width), std::min(upper_[1], (1 + relative_width) * centre[1])};
     return local;
-  }
-  /// x lies on a bound of this box that is not a bound of the design space.
-  bool OnArtificialBound(std::span<const double> x, const ThinnestProblem& full) const {
-    for (int i = 0; i < 2; ++i) {
-      const double tolerance = 1e-7 * (upper_[i] - lower_[i]);
-      if ((x[i] - lower_[i] < tolerance && lower_[i] > full.lower_[i]) ||
-          (upper_[i] - x[i] < tolerance && upper_[i] < full.upper_[i])) {
-        return true;
-      }
-    }
-    return false;
   }
   CoveringDesign Design(std::span<const double> x) const {
     return {std::pow(10.0, x[0]), x[1] * o_.space.max_thickness_m};
+  }
+  std::vector<double> Point(const CoveringDesign& d) const {
+    return {std::log10(d.youngs_modulus_Pa), d.thickness_m / o_.space.max_thickness_m};
   }
   bool Objective(std::span<const double> x, double& value, std::span<double> g) const override {
     value = x[1];
@@ -106,12 +109,18 @@ class ThinnestProblem : public Problem {
     const DesignScore score = jac.empty() ? oracle_.Score(Design(x)) : oracle_.Score(Design(x), gradient);
     c[0] = std::log(o_.safety_factor * score.laceration_ratio);
     c[1] = std::log(o_.safety_factor * score.contusion_ratio);
+    const bool compression = inequality_count() == 3;
+    if (compression) c[2] = std::log(score.compression_ratio);
     if (!jac.empty()) {
       const double db_dx = o_.space.max_thickness_m;
       jac[0] = gradient.laceration[0] / score.laceration_ratio;
       jac[1] = gradient.laceration[1] * db_dx / score.laceration_ratio;
       jac[2] = gradient.contusion[0] / score.contusion_ratio;
       jac[3] = gradient.contusion[1] * db_dx / score.contusion_ratio;
+      if (compression) {
+        jac[4] = gradient.compression[0] / score.compression_ratio;
+        jac[5] = gradient.compression[1] * db_dx / score.compression_ratio;
+      }
     }
     return true;
   }
@@ -122,13 +131,15 @@ class ThinnestProblem : public Problem {
   std::vector<double> lower_, upper_;
 };
 
-/// Problem (b), global form: x = (log10 E_c); min ln(SF max(r_L, r_C)) at fixed b_c.
+/// Problem (b), global form: x = (log10 E_c) in [lower, log10 E_max];
+/// min ln(SF max(r_L, r_C)) at fixed b_c. The admissible moduli form one interval (δ_max falls
+/// as E_c grows), so the compression condition is the lower bound.
 class WorstRatioProblem : public Problem {
  public:
-  WorstRatioProblem(const CoveringOracle& oracle, const DesignOptions& o, double thickness)
-      : oracle_(oracle), o_(o), thickness_(thickness) {}
+  WorstRatioProblem(const CoveringOracle& oracle, const DesignOptions& o, double thickness, double lower)
+      : oracle_(oracle), o_(o), thickness_(thickness), lower_(lower) {}
   std::size_t dimension() const override { return 1; }
-  std::vector<double> lower_bounds() const override { return {std::log10(o_.space.min_modulus_Pa)}; }
+  std::vector<double> lower_bounds() const override { return {lower_}; }
   std::vector<double> upper_bounds() const override { return {std::log10(o_.space.max_modulus_Pa)}; }
   bool Objective(std::span<const double> x, double& value, std::span<double> g) const override {
     RatioGradient gradient;
@@ -147,16 +158,18 @@ class WorstRatioProblem : public Problem {
   const CoveringOracle& oracle_;
   const DesignOptions& o_;
   double thickness_;
+  double lower_;
 };
 
-/// Problem (b), smooth epigraph form for Ipopt: x = (log10 E_c, s); min s s.t. ln(SF r_i) <= s.
+/// Problem (b), smooth epigraph form for Ipopt: x = (log10 E_c, s); min s s.t. ln(SF r_i) <= s,
+/// log10 E_c in [lower, log10 E_max].
 class EpigraphProblem : public Problem {
  public:
-  EpigraphProblem(const CoveringOracle& oracle, const DesignOptions& o, double thickness)
-      : oracle_(oracle), o_(o), thickness_(thickness) {}
+  EpigraphProblem(const CoveringOracle& oracle, const DesignOptions& o, double thickness, double lower)
+      : oracle_(oracle), o_(o), thickness_(thickness), lower_(lower) {}
   std::size_t dimension() const override { return 2; }
   std::size_t inequality_count() const override { return 2; }
-  std::vector<double> lower_bounds() const override { return {std::log10(o_.space.min_modulus_Pa), -50.0}; }
+  std::vector<double> lower_bounds() const override { return {lower_, -50.0}; }
   std::vector<double> upper_bounds() const override { return {std::log10(o_.space.max_modulus_Pa), 50.0}; }
   bool Objective(std::span<const double> x, double& value, std::span<double> g) const override {
     value = x[1];
@@ -185,7 +198,178 @@ class EpigraphProblem : public Problem {
   const CoveringOracle& oracle_;
   const DesignOptions& o_;
   double thickness_;
+  double lower_;
 };
+
+/// The best modulus at one thickness, as the nested search finds it.
+struct ModulusChoice {
+  /// Some modulus in the box keeps the covering from full compression (always, for the
+  /// paper's criterion).
+  bool admissible_modulus_exists = true;
+  double lowest_admissible_log_modulus = 0.0;  ///< u_c = log10 of the softest such modulus
+  DesignScore score;                           ///< at the modulus of least worst ratio
+};
+
+/// The 1-D global search in u = log10 E_c at a fixed thickness (see the header: stage 2).
+class ModulusSearch {
+ public:
+  ModulusSearch(const CoveringOracle& oracle, const DesignOptions& o)
+      : oracle_(oracle), o_(o), lo_(std::log10(o.space.min_modulus_Pa)), hi_(std::log10(o.space.max_modulus_Pa)) {}
+
+  /// The admissible interval of moduli at `thickness_m`, and the least worst ratio on it.
+  /// With `screen` set, a thickness whose scanned worst ratio is far above the limit (x1.5)
+  /// is not refined: its sampled minimum already shows it inadmissible (the ratios change by
+  /// a few percent between scan points, which are 1/points_per_decade decades apart).
+  ModulusChoice Best(double thickness_m, bool screen = false) const {
+    ModulusChoice choice;
+    double lower = lo_;
+    if (o_.criterion() == DesignCriterion::kNoFullCompression) {
+      const DesignScore stiffest = At(hi_, thickness_m);
+      if (stiffest.peaks.fully_compressed) {
+        choice.admissible_modulus_exists = false;
+        choice.lowest_admissible_log_modulus = hi_;
+        choice.score = stiffest;
+        return choice;
+      }
+      if (At(lo_, thickness_m).peaks.fully_compressed) {
+        // δ_max falls as E_c grows (F rises with E_c at every δ): bisect the boundary.
+        double compressed = lo_, free = hi_;
+        while (free - compressed > kLogModulusTolerance) {
+          const double mid = 0.5 * (compressed + free);
+          (At(mid, thickness_m).peaks.fully_compressed ? compressed : free) = mid;
+        }
+        lower = free;
+      }
+    }
+    choice.lowest_admissible_log_modulus = lower;
+    choice.score = MinimizeWorst(thickness_m, lower, hi_, screen);
+    return choice;
+  }
+
+  /// min over u in [a, c] of the worst ratio: a uniform scan, then golden-section refinement
+  /// of the best local minima of the scan. Returns the best point evaluated.
+  DesignScore MinimizeWorst(double thickness_m, double a, double c, bool screen = false) const {
+    const int n = std::max(9, static_cast<int>(std::ceil(o_.modulus_points_per_decade * (c - a))) + 1);
+    std::vector<DesignScore> samples;
+    samples.reserve(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) samples.push_back(At(Grid(a, c, n, i), thickness_m));
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < samples.size(); ++i) {
+      if (samples[i].worst_ratio() < samples[best].worst_ratio()) best = i;
+    }
+    DesignScore result = samples[best];
+    if (screen && o_.safety_factor * result.worst_ratio() > kScreenFactor) return result;
+    // Local minima of the sampled sequence, best first; refine those close to the best.
+    std::vector<std::size_t> minima;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const double w = samples[i].worst_ratio();
+      const bool left = i == 0 || w <= samples[i - 1].worst_ratio();
+      const bool right = i + 1 == samples.size() || w <= samples[i + 1].worst_ratio();
+      if (left && right && w <= kRefineWithin * samples[best].worst_ratio()) minima.push_back(i);
+    }
+    std::stable_sort(minima.begin(), minima.end(), [&](std::size_t x, std::size_t y) {
+      return samples[x].worst_ratio() < samples[y].worst_ratio();
+    });
+    if (minima.size() > kMaxRefinedMinima) minima.resize(kMaxRefinedMinima);
+    for (std::size_t i : minima) {
+      const double left = Grid(a, c, n, i == 0 ? 0 : static_cast<int>(i) - 1);
+      const double right = Grid(a, c, n, std::min(n - 1, static_cast<int>(i) + 1));
+      const DesignScore refined = Golden(thickness_m, left, right);
+      if (refined.worst_ratio() < result.worst_ratio()) result = refined;
+    }
+    return result;
+  }
+
+ private:
+  static constexpr double kLogModulusTolerance = 1e-12;
+  static constexpr double kScreenFactor = 1.5;
+  static constexpr double kRefineWithin = 1.05;
+  static constexpr std::size_t kMaxRefinedMinima = 3;
+
+  static double Grid(double a, double c, int n, int i) {
+    return i == n - 1 ? c : a + (c - a) * i / (n - 1);
+  }
+  DesignScore At(double u, double thickness_m) const { return oracle_.Score({std::pow(10.0, u), thickness_m}); }
+
+  /// Golden-section search for the least worst ratio on [a, c]; the best point evaluated.
+  DesignScore Golden(double thickness_m, double a, double c) const {
+    constexpr double kInvPhi = 0.6180339887498949;
+    double x1 = c - kInvPhi * (c - a), x2 = a + kInvPhi * (c - a);
+    DesignScore s1 = At(x1, thickness_m), s2 = At(x2, thickness_m);
+    DesignScore best = s1.worst_ratio() <= s2.worst_ratio() ? s1 : s2;
+    while (c - a > kLogModulusTolerance) {
+      if (s1.worst_ratio() <= s2.worst_ratio()) {
+        c = x2;
+        x2 = x1;
+        s2 = s1;
+        x1 = c - kInvPhi * (c - a);
+        s1 = At(x1, thickness_m);
+        if (s1.worst_ratio() < best.worst_ratio()) best = s1;
+      } else {
+        a = x1;
+        x1 = x2;
+        s1 = s2;
+        x2 = a + kInvPhi * (c - a);
+        s2 = At(x2, thickness_m);
+        if (s2.worst_ratio() < best.worst_ratio()) best = s2;
+      }
+    }
+    return best;
+  }
+
+  const CoveringOracle& oracle_;
+  const DesignOptions& o_;
+  double lo_, hi_;
+};
+
+/// Admissible at this thickness: some modulus keeps the covering from full compression
+/// (criterion permitting) and the least worst ratio there is within the derated limits.
+bool Admissible(const ModulusChoice& choice, const DesignOptions& o) {
+  return choice.admissible_modulus_exists && choice.score.admissible(o.safety_factor, o.criterion());
+}
+
+/// Stage 2 of problem (a): the thinnest admissible thickness by a scan in b_c (from thin to
+/// thick) and bisection. `upper_bracket` (an admissible thickness from stage 1, if any) joins
+/// the grid. Empty when nothing in the box is admissible.
+std::optional<ModulusChoice> BracketThinnest(const ModulusSearch& search, const DesignOptions& o,
+                                             std::optional<double> upper_bracket) {
+  const DesignSpace& space = o.space;
+  std::vector<double> grid;
+  const int linear = std::max(2, o.bracket_thickness_points / 2);
+  const int geometric = std::max(2, o.bracket_thickness_points - linear);
+  for (int i = 0; i < linear; ++i) {
+    grid.push_back(space.min_thickness_m + (space.max_thickness_m - space.min_thickness_m) * i / (linear - 1));
+  }
+  for (int i = 0; i < geometric; ++i) {
+    grid.push_back(space.min_thickness_m * std::pow(space.max_thickness_m / space.min_thickness_m,
+                                                    static_cast<double>(i) / (geometric - 1)));
+  }
+  grid.front() = space.min_thickness_m;
+  grid.back() = space.max_thickness_m;
+  if (upper_bracket) grid.push_back(*upper_bracket);
+  std::sort(grid.begin(), grid.end());
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  grid.back() = std::min(grid.back(), space.max_thickness_m);
+
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    ModulusChoice choice = search.Best(grid[k], /*screen=*/true);
+    if (!Admissible(choice, o)) continue;
+    if (k == 0) return choice;
+    double inadmissible = grid[k - 1], admissible = grid[k];
+    while (admissible - inadmissible > kThicknessTolerance_m) {
+      const double mid = 0.5 * (inadmissible + admissible);
+      ModulusChoice at_mid = search.Best(mid);
+      if (Admissible(at_mid, o)) {
+        admissible = mid;
+        choice = at_mid;
+      } else {
+        inadmissible = mid;
+      }
+    }
+    return choice;
+  }
+  return std::nullopt;
+}
 
 NloptOptions GlobalOptions(const DesignOptions& o) {
   NloptOptions n;
@@ -197,26 +381,37 @@ NloptOptions GlobalOptions(const DesignOptions& o) {
   return n;
 }
 
-/// Thinnest safe thickness of one material: the first safe point of a scan, then bisection.
+/// A multiple of the thickness step, printed-clean: k × 0.5 mm is 0.018, not 0.018000000000000002.
+double StockThickness(double steps, double step_m) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.12g", steps * step_m);
+  return std::strtod(text, nullptr);
+}
+
+/// Thinnest admissible thickness of one material: the first admissible point of a scan, then
+/// bisection; then rounded up to stock.
 CandidateOutcome SnapMaterial(const CoveringOracle& oracle, const CandidateMaterial& material,
                               const DesignOptions& o) {
   const double sf = o.safety_factor;
+  const DesignCriterion criterion = o.criterion();
   const DesignSpace& space = o.space;
   auto score_at = [&](double b) {
     return oracle.ScoreMaterial({material.youngs_modulus_Pa, b}, material.poisson_ratio);
   };
+  auto admissible_at = [&](double b) { return score_at(b).admissible(sf, criterion); };
   CandidateOutcome outcome;
   outcome.material = material;
   const int points = o.thickness_scan_points;
-  double unsafe = 0.0, safe = 0.0;
+  double inadmissible = 0.0, admissible = 0.0;
   bool found = false;
   for (int k = 0; k < points && !found; ++k) {
-    const double b = space.min_thickness_m + (space.max_thickness_m - space.min_thickness_m) * k / (points - 1);
-    if (score_at(b).safe(sf)) {
+    const double b = k == points - 1 ? space.max_thickness_m
+                                     : space.min_thickness_m + (space.max_thickness_m - space.min_thickness_m) * k / (points - 1);
+    if (admissible_at(b)) {
       found = true;
-      safe = b;
+      admissible = b;
     } else {
-      unsafe = b;
+      inadmissible = b;
     }
   }
   if (!found) {
@@ -224,25 +419,31 @@ CandidateOutcome SnapMaterial(const CoveringOracle& oracle, const CandidateMater
     outcome.margin = outcome.score.margin(sf);
     return outcome;
   }
-  if (unsafe > 0.0) {
-    while (safe - unsafe > o.thickness_resolution_m) {
-      const double mid = 0.5 * (unsafe + safe);
-      (score_at(mid).safe(sf) ? safe : unsafe) = mid;
+  if (inadmissible > 0.0) {
+    while (admissible - inadmissible > o.thickness_resolution_m) {
+      const double mid = 0.5 * (inadmissible + admissible);
+      (admissible_at(mid) ? admissible : inadmissible) = mid;
     }
   }
-  outcome.min_safe_thickness_m = safe;
-  double recommended = safe;
+  outcome.min_safe_thickness_m = admissible;
+  double recommended = admissible;
   if (o.thickness_step_m > 0.0) {
-    recommended = std::ceil(safe / o.thickness_step_m - 1e-9) * o.thickness_step_m;
-    // Safety need not be monotone: step up until the rounded thickness is safe too.
-    while (recommended <= space.max_thickness_m + 1e-12 && !score_at(recommended).safe(sf)) {
-      recommended += o.thickness_step_m;
+    // The admissible set need not be an interval: step up until the stock thickness is
+    // admissible too.
+    double steps = std::ceil(admissible / o.thickness_step_m - 1e-9);
+    double stock = StockThickness(steps, o.thickness_step_m);
+    while (stock <= space.max_thickness_m * (1 + 1e-12) && !admissible_at(stock)) {
+      stock = StockThickness(++steps, o.thickness_step_m);
     }
-    if (recommended > space.max_thickness_m + 1e-12) recommended = safe;  // keep the exact one
+    if (stock > space.max_thickness_m * (1 + 1e-12)) {
+      outcome.stock_thickness_beyond_max_m = stock;  // keep the exact thickness instead
+    } else {
+      recommended = stock;
+    }
   }
   outcome.recommended_thickness_m = recommended;
   outcome.score = score_at(recommended);
-  outcome.safe = outcome.score.safe(sf);
+  outcome.safe = outcome.score.admissible(sf, criterion);
   outcome.margin = outcome.score.margin(sf);
   return outcome;
 }
@@ -281,17 +482,15 @@ std::vector<CandidateOutcome> SnapMaterials(const CoveringOracle& oracle,
   return outcomes;
 }
 
-/// Nudges a design that meets the constraints only to solver tolerance onto the safe side.
-DesignScore MakeStrictlySafe(const CoveringOracle& oracle, DesignScore score, double sf, double max_b) {
-  for (int k = 0; k < 40 && !score.safe(sf) && score.margin(sf) > -1e-6; ++k) {
-    CoveringDesign d = score.design;
-    d.thickness_m = std::min(max_b, d.thickness_m * (1.0 + 1e-9 * std::pow(2.0, k)));
-    score = oracle.Score(d);
-  }
-  return score;
-}
-
 }  // namespace
+
+const char* ToString(DesignCriterion criterion) noexcept {
+  switch (criterion) {
+    case DesignCriterion::kNoFullCompression: return "no-full-compression";
+    case DesignCriterion::kPaper: return "paper";
+  }
+  return "unknown";
+}
 
 const char* ToString(DesignVerdict verdict) noexcept {
   switch (verdict) {
@@ -314,6 +513,18 @@ CoveringOracle::CoveringOracle(const Scene& scene, double covering_poisson_ratio
           "injury limits must be > 0");
 }
 
+namespace {
+
+/// Fills the ratios of a score from its peaks.
+void Judge(DesignScore& score, const InjuryLimits& limits) {
+  const InjuryAssessment a = Assess(score.peaks, limits);
+  score.laceration_ratio = a.laceration.ratio;
+  score.contusion_ratio = a.contusion.ratio;
+  score.compression_ratio = score.bare() ? 0.0 : score.peaks.max_penetration_m / score.peaks.full_compression_penetration_m;
+}
+
+}  // namespace
+
 DesignScore CoveringOracle::ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const {
   ++evaluations_;
   Scene scene = scene_;
@@ -322,9 +533,7 @@ DesignScore CoveringOracle::ScoreMaterial(const CoveringDesign& design, double p
   score.design = design;
   score.poisson_ratio = poisson_ratio;
   score.peaks = ExactPeaks(ImpactModel::FromScene(scene));
-  const InjuryAssessment a = Assess(score.peaks, limits_);
-  score.laceration_ratio = a.laceration.ratio;
-  score.contusion_ratio = a.contusion.ratio;
+  Judge(score, limits_);
   return score;
 }
 
@@ -342,15 +551,24 @@ DesignScore CoveringOracle::Score(const CoveringDesign& design, RatioGradient& g
   score.design = design;
   score.poisson_ratio = scene.covering.poisson_ratio;
   score.peaks = ExactPeaks(model);
-  const InjuryAssessment a = Assess(score.peaks, limits_);
-  score.laceration_ratio = a.laceration.ratio;
-  score.contusion_ratio = a.contusion.ratio;
+  Judge(score, limits_);
   const PeakSensitivities s = ExactPeakSensitivities(model, score.peaks);
   const double per_log10 = design.youngs_modulus_Pa * kLn10;  // dE/du, u = log10 E
   gradient.laceration[0] = s.per_covering_modulus.max_tensile_stress * per_log10 / limits_.laceration_tensile_stress_Pa;
   gradient.laceration[1] = s.per_covering_thickness.max_tensile_stress / limits_.laceration_tensile_stress_Pa;
   gradient.contusion[0] = s.per_covering_modulus.max_energy_density * per_log10 / limits_.contusion_energy_density_J_per_m2;
   gradient.contusion[1] = s.per_covering_thickness.max_energy_density / limits_.contusion_energy_density_J_per_m2;
+  // compression ratio δ_max / t2: t2 moves with b_c by the full-compression fraction f
+  // (cumulative: t2 = t1 + f b_c; literal: t2 = max(f b_c, t1)); E_c does not move it.
+  const ModelConstants& constants = scene.model;
+  const double t1 = constants.full_compression_fraction * scene.scalp.thickness_m;
+  const double covering_travel = constants.full_compression_fraction * design.thickness_m;
+  const double dt2_db = (constants.thresholds == ThresholdReading::kCumulative || covering_travel > t1)
+                            ? constants.full_compression_fraction
+                            : 0.0;
+  const double t2 = score.peaks.full_compression_penetration_m;
+  gradient.compression[0] = s.per_covering_modulus.max_penetration * per_log10 / t2;
+  gradient.compression[1] = (s.per_covering_thickness.max_penetration - score.compression_ratio * dt2_db) / t2;
   return score;
 }
 
@@ -359,12 +577,35 @@ DesignScore CoveringOracle::ScoreBare() const {
   Scene scene = scene_;
   scene.covering.thickness_m = 0.0;
   DesignScore score;
+  score.design.thickness_m = 0.0;
   score.peaks = ExactPeaks(ImpactModel::FromScene(scene));
-  const InjuryAssessment a = Assess(score.peaks, limits_);
-  score.laceration_ratio = a.laceration.ratio;
-  score.contusion_ratio = a.contusion.ratio;
+  Judge(score, limits_);
   return score;
 }
+
+namespace {
+
+/// A SolverReport for covopt's own bracketed stage.
+SolverReport BracketReport(bool found, long evaluations, double seconds) {
+  SolverReport r;
+  r.backend = "covopt:bracket";
+  r.termination = found ? Termination::kConverged : Termination::kInfeasible;
+  r.raw_code = found ? 0 : 1;
+  r.raw_name = found ? "bracketed" : "no-admissible-design-in-box";
+  r.objective_evaluations = evaluations;
+  r.seconds = seconds;
+  return r;
+}
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string Ended(const SolverReport& r) {
+  return std::string(ToString(r.termination)) + (r.raw_name.empty() ? "" : " / " + r.raw_name);
+}
+
+}  // namespace
 
 ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
                                               std::span<const CandidateMaterial> materials,
@@ -373,54 +614,70 @@ ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
   ValidateOptions(options);
   const CoveringOracle oracle(scene, options.covering_poisson_ratio, options.limits);
   const double sf = options.safety_factor;
+  const DesignCriterion criterion = options.criterion();
   ThinnestSafeCovering out;
+  out.criterion = criterion;
   out.bare_robot = oracle.ScoreBare();
 
-  // Continuous optimum: global search, then Ipopt from its point.
+  // Stage 1: NLopt on the 2-D problem. Its point, re-checked on the exact path, is at most an
+  // upper bracket: nothing is reported from it unless stage 2 confirms it.
   const ThinnestProblem problem(oracle, options);
   const std::vector<double> lower = problem.lower_bounds(), upper = problem.upper_bounds();
   std::vector<double> start = {0.5 * (lower[0] + upper[0]), 0.5 * (lower[1] + upper[1])};
-  if (options.initial_design) {
-    start = {std::log10(options.initial_design->youngs_modulus_Pa),
-             options.initial_design->thickness_m / options.space.max_thickness_m};
-  }
+  if (options.initial_design) start = problem.Point(*options.initial_design);
   const SolveResult global = SolveWithNlopt(problem, start, GlobalOptions(options));
   out.continuous.global = global.report;
-  SolveResult chosen = global;
-  out.continuous.source = "global";
-  if (options.local_polish && global.is_usable()) {
-    // Ipopt in a trust region around the global point, re-centred while it ends on the
-    // region's (artificial) edge.
-    SolveResult local;
-    std::vector<double> centre = global.x;
-    for (int attempt = 0; attempt < 4; ++attempt) {
-      const ThinnestProblem region = problem.Around(centre);
-      local = SolveWithIpopt(region, centre, options.ipopt);
-      if (!local.is_usable() || !region.OnArtificialBound(local.x, problem)) break;
-      centre = local.x;
-    }
-    out.continuous.local = local.report;
-    const bool local_feasible = local.is_usable() && local.max_violation <= 1e-7;
-    const bool global_feasible = global.max_violation <= 1e-7;
-    if (local_feasible && (!global_feasible || local.x[1] <= global.x[1] + 1e-12)) {
-      chosen = local;
-      out.continuous.source = "ipopt";
-    } else {
-      out.continuous.source = std::string("global (ipopt ended ") + ToString(local.report.termination) +
-                              " / " + local.report.raw_name + "; its point was not better)";
-    }
+  std::optional<double> upper_bracket;
+  if (global.is_usable()) {
+    const DesignScore at_global = oracle.Score(problem.Design(global.x));
+    if (at_global.admissible(sf, criterion)) upper_bracket = at_global.design.thickness_m;
   }
-  DesignScore best = oracle.Score(problem.Design(chosen.x));
-  best = MakeStrictlySafe(oracle, best, sf, options.space.max_thickness_m);
-  out.continuous.score = best;
-  out.continuous.feasible = best.safe(sf);
-  if (!out.continuous.feasible) {
-    // Nothing meets the limits within the bound: report the least-injury design at the
-    // maximum thickness instead (problem b there).
+
+  // Stage 2: the nested bracketed search.
+  const auto bracket_started = std::chrono::steady_clock::now();
+  const long before_bracket = oracle.evaluations();
+  const ModulusSearch search(oracle, options);
+  const std::optional<ModulusChoice> bracketed = BracketThinnest(search, options, upper_bracket);
+  out.continuous.bracket = BracketReport(bracketed.has_value(), oracle.evaluations() - before_bracket,
+                                         SecondsSince(bracket_started));
+
+  if (bracketed) {
+    DesignScore best = bracketed->score;
+    out.continuous.source = "bracket";
+    // Stage 3: Ipopt from the bracketed optimum, kept only if admissible and not thicker.
+    if (options.local_polish) {
+      const std::vector<double> centre = problem.Point(best.design);
+      const ThinnestProblem region = problem.Around(centre, 0.25, 0.05);
+      const SolveResult local = SolveWithIpopt(region, centre, options.ipopt);
+      out.continuous.local = local.report;
+      bool kept = false;
+      if (local.is_usable()) {
+        const DesignScore polished = oracle.Score(problem.Design(local.x));
+        // Not thicker than the bracket, to the bracket's own resolution.
+        if (polished.admissible(sf, criterion) &&
+            polished.design.thickness_m <= best.design.thickness_m + kThicknessTolerance_m) {
+          best = polished;
+          kept = true;
+          out.continuous.source = "ipopt";
+        }
+      }
+      if (!kept) {
+        out.continuous.source = "bracket (ipopt ended " + Ended(local.report) +
+                                (local.is_usable() ? "; its point was not admissible or not thinner)" : ")");
+      }
+    }
+    out.continuous.score = best;
+    out.continuous.feasible = true;
+  } else {
+    // Nothing is admissible within the box: report the least-injury design at the maximum
+    // thickness instead (problem b there), marked infeasible.
     const LeastInjuryAtThickness fallback =
         MinimizeInjuryAtThickness(scene, options.space.max_thickness_m, {}, options);
     out.continuous.score = fallback.continuous.score;
-    out.continuous.source += "; infeasible: least injury at the maximum thickness reported";
+    out.continuous.local = fallback.continuous.local;
+    out.continuous.feasible = false;
+    out.continuous.source = "none admissible in the box: least injury at the maximum thickness (" +
+                            fallback.continuous.source + ")";
     out.evaluations += fallback.evaluations;
   }
 
@@ -445,7 +702,7 @@ ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
     out.verdict = out.continuous.feasible ? DesignVerdict::kNoSafeMaterial : DesignVerdict::kNothingSafe;
   }
   out.evaluations += oracle.evaluations();
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  out.seconds = SecondsSince(started);
   return out;
 }
 
@@ -458,45 +715,78 @@ LeastInjuryAtThickness MinimizeInjuryAtThickness(const Scene& scene, double thic
           "thickness must be in (0, 1] m (got " + Number(thickness_m) + ")");
   const CoveringOracle oracle(scene, options.covering_poisson_ratio, options.limits);
   const double sf = options.safety_factor;
+  const DesignCriterion criterion = options.criterion();
   LeastInjuryAtThickness out;
+  out.criterion = criterion;
   out.thickness_m = thickness_m;
   out.bare_robot = oracle.ScoreBare();
 
-  const WorstRatioProblem global_problem(oracle, options, thickness_m);
-  const double centre = 0.5 * (global_problem.lower_bounds()[0] + global_problem.upper_bounds()[0]);
+  // The nested search's 1-D stage: the admissible moduli [u_c, max] and the best among them.
+  const auto bracket_started = std::chrono::steady_clock::now();
+  const ModulusSearch search(oracle, options);
+  const ModulusChoice choice = search.Best(thickness_m);
+  DesignScore best = choice.score;
+  double lower = choice.lowest_admissible_log_modulus;
+  if (!choice.admissible_modulus_exists) {
+    // Every modulus bottoms out: the least injury regardless, said so.
+    out.continuous.every_modulus_fully_compressed = true;
+    lower = std::log10(options.space.min_modulus_Pa);
+    best = search.MinimizeWorst(thickness_m, lower, std::log10(options.space.max_modulus_Pa));
+  }
+  out.continuous.bracket = BracketReport(true, oracle.evaluations(), SecondsSince(bracket_started));
+  out.continuous.source = "bracket";
+  // A point from another stage must stay on the same side of the compression boundary.
+  auto compression_ok = [&](const DesignScore& score) {
+    return criterion == DesignCriterion::kPaper || out.continuous.every_modulus_fully_compressed ||
+           !score.peaks.fully_compressed;
+  };
+
+  // NLopt's global search on the same interval; its point is kept only if it is better.
+  const WorstRatioProblem global_problem(oracle, options, thickness_m, lower);
   NloptOptions global_options = GlobalOptions(options);
   global_options.max_evaluations = std::min<long>(options.global_evaluations, 400);  // 1-D
-  const SolveResult global = SolveWithNlopt(global_problem, std::vector<double>{centre}, global_options);
+  const std::vector<double> start{std::log10(best.design.youngs_modulus_Pa)};
+  const SolveResult global = SolveWithNlopt(global_problem, start, global_options);
   out.continuous.global = global.report;
-  double best_log_modulus = global.x.empty() ? centre : global.x[0];
-  out.continuous.source = "global";
-  if (options.local_polish && global.is_usable()) {
-    const EpigraphProblem epigraph(oracle, options, thickness_m);
-    const SolveResult local =
-        SolveWithIpopt(epigraph, std::vector<double>{global.x[0], global.objective + 1e-3}, options.ipopt);
-    out.continuous.local = local.report;
-    if (local.is_usable() && local.max_violation <= 1e-7 && local.objective <= global.objective + 1e-12) {
-      best_log_modulus = local.x[0];
-      out.continuous.source = "ipopt";
-    } else {
-      out.continuous.source = std::string("global (ipopt ended ") + ToString(local.report.termination) +
-                              " / " + local.report.raw_name + "; its point was not better)";
+  if (global.is_usable()) {
+    const DesignScore at_global = oracle.Score({std::pow(10.0, global.x[0]), thickness_m});
+    if (compression_ok(at_global) && at_global.worst_ratio() < best.worst_ratio()) {
+      best = at_global;
+      out.continuous.source = "global";
     }
   }
-  out.continuous.score = oracle.Score({std::pow(10.0, best_log_modulus), thickness_m});
-  out.continuous.feasible = true;
+  if (options.local_polish) {
+    const EpigraphProblem epigraph(oracle, options, thickness_m, lower);
+    const double u = std::log10(best.design.youngs_modulus_Pa);
+    const SolveResult local =
+        SolveWithIpopt(epigraph, std::vector<double>{u, std::log(sf * best.worst_ratio()) + 1e-3}, options.ipopt);
+    out.continuous.local = local.report;
+    bool kept = false;
+    if (local.is_usable()) {
+      const DesignScore polished = oracle.Score({std::pow(10.0, local.x[0]), thickness_m});
+      if (compression_ok(polished) && polished.worst_ratio() < best.worst_ratio()) {
+        best = polished;
+        kept = true;
+        out.continuous.source = "ipopt";
+      }
+    }
+    if (!kept) out.continuous.source += " (ipopt ended " + Ended(local.report) + "; its point was not better)";
+  }
+  out.continuous.score = best;
+  out.continuous.feasible = best.admissible(sf, criterion);
 
   for (const CandidateMaterial& material : materials) {
     CandidateOutcome outcome;
     outcome.material = material;
     outcome.score = oracle.ScoreMaterial({material.youngs_modulus_Pa, thickness_m}, material.poisson_ratio);
-    outcome.safe = outcome.score.safe(sf);
+    outcome.safe = outcome.score.admissible(sf, criterion);
     outcome.margin = outcome.score.margin(sf);
     if (outcome.safe) outcome.recommended_thickness_m = thickness_m;
     out.candidates.push_back(outcome);
   }
   std::stable_sort(out.candidates.begin(), out.candidates.end(),
                    [](const CandidateOutcome& a, const CandidateOutcome& b) {
+                     if (a.safe != b.safe) return a.safe;
                      if (a.margin != b.margin) return a.margin > b.margin;
                      return a.material.name < b.material.name;
                    });
@@ -504,10 +794,10 @@ LeastInjuryAtThickness MinimizeInjuryAtThickness(const Scene& scene, double thic
     out.verdict = DesignVerdict::kCoveringFound;
     out.recommendation = 0;
   } else {
-    out.verdict = out.continuous.score.safe(sf) ? DesignVerdict::kNoSafeMaterial : DesignVerdict::kNothingSafe;
+    out.verdict = out.continuous.feasible ? DesignVerdict::kNoSafeMaterial : DesignVerdict::kNothingSafe;
   }
   out.evaluations = oracle.evaluations();
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  out.seconds = SecondsSince(started);
   return out;
 }
 

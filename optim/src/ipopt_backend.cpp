@@ -181,6 +181,7 @@ SolveResult SolveWithIpopt(const Problem& problem, std::span<const double> x0,
     accepted = o->SetStringValue("sb", "yes") && accepted;  // no banner
     accepted = o->SetNumericValue("tol", options.tolerance) && accepted;
     accepted = o->SetNumericValue("constr_viol_tol", options.constraint_tolerance) && accepted;
+    accepted = o->SetNumericValue("bound_relax_factor", options.bound_relax_factor) && accepted;
     accepted = o->SetIntegerValue("max_iter", options.max_iterations) && accepted;
     accepted = o->SetNumericValue("max_cpu_time", options.max_seconds) && accepted;
     if (options.limited_memory_hessian) {

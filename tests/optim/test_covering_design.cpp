@@ -1,11 +1,15 @@
 // The covering design problems on the paper's scene (10 kg, 2 m/s, R_r 15 mm, free head):
-// the continuous thinnest safe covering is the same from every global algorithm, seed and
-// Ipopt starting point, and meets both limits; at 10 mm no E_c prevents contusion (Fig. 13);
+// the continuous thinnest admissible covering is the same from every global algorithm, seed
+// and Ipopt starting point, and meets both limits; the default criterion (no full
+// compression) against the paper's; at 10 mm no E_c prevents contusion (Fig. 13);
 // the ranking of the paper's Table IV materials is stable; the oracle's analytic gradient
 // matches finite differences; infeasibility is an answer; bad options are rejected.
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -32,7 +36,8 @@ TEST_CASE("The continuous thinnest safe covering is reproducible and meets both 
   DesignOptions reference_options;
   const ThinnestSafeCovering reference = FindThinnestSafeCovering(scene, {}, reference_options);
   REQUIRE(reference.continuous.feasible);
-  CHECK(reference.continuous.source == "ipopt");
+  CHECK(reference.continuous.source == "ipopt");  // the polish agrees with the bracket
+  CHECK(reference.continuous.bracket.termination == Termination::kConverged);
   const DesignScore& best = reference.continuous.score;
   CHECK(best.laceration_ratio <= 1.0);
   CHECK(best.contusion_ratio <= 1.0);
@@ -50,7 +55,7 @@ TEST_CASE("The continuous thinnest safe covering is reproducible and meets both 
       CHECK(run.continuous.score.design.thickness_m ==
             Approx(best.design.thickness_m).epsilon(1e-6));
       CHECK(run.continuous.score.design.youngs_modulus_Pa ==
-            Approx(best.design.youngs_modulus_Pa).epsilon(1e-3));  // flat in E (DESIGN §5.7)
+            Approx(best.design.youngs_modulus_Pa).epsilon(1e-3));  // flat in E (docs/model.md §5 item 7)
     }
   }
 }
@@ -73,9 +78,12 @@ TEST_CASE("The optimum does not depend on where the search starts", "[design]") 
   }
 }
 
-TEST_CASE("At 10 mm no modulus prevents contusion, at 15 mm one does (Fig. 13)", "[design]") {
+TEST_CASE("At 10 mm no modulus prevents contusion, at 15 mm one does (Fig. 13, paper criterion)", "[design]") {
   const Scene scene;
-  const LeastInjuryAtThickness at_10 = MinimizeInjuryAtThickness(scene, 0.010, TableIv());
+  DesignOptions paper;
+  paper.allow_full_compression = true;
+  const LeastInjuryAtThickness at_10 = MinimizeInjuryAtThickness(scene, 0.010, TableIv(), paper);
+  CHECK(at_10.criterion == DesignCriterion::kPaper);
   CHECK(at_10.continuous.score.laceration_ratio < 1.0);
   CHECK(at_10.continuous.score.contusion_ratio > 1.0);
   CHECK(at_10.verdict == DesignVerdict::kNothingSafe);
@@ -84,10 +92,111 @@ TEST_CASE("At 10 mm no modulus prevents contusion, at 15 mm one does (Fig. 13)",
   const CoveringOracle oracle(scene, 0.25);
   for (int i = 0; i <= 400; ++i) {
     const double modulus = std::pow(10.0, 5.0 + 4.0 * i / 400.0);
-    CHECK(oracle.Score({modulus, 0.010}).worst_ratio() >= at_10.continuous.score.worst_ratio() * (1 - 1e-9));
+    CHECK(oracle.Score({modulus, 0.010}).worst_ratio() >= at_10.continuous.score.worst_ratio() * (1 - 1e-12));
   }
-  const LeastInjuryAtThickness at_15 = MinimizeInjuryAtThickness(scene, 0.015, TableIv());
+  const LeastInjuryAtThickness at_15 = MinimizeInjuryAtThickness(scene, 0.015, TableIv(), paper);
   CHECK(at_15.continuous.score.safe(1.0));
+  CHECK(at_15.continuous.score.peaks.fully_compressed);  // safe only with the robot on bone
+}
+
+TEST_CASE("Under the default criterion the least injury at a thickness is over moduli that do not bottom out",
+          "[design]") {
+  const Scene scene;
+  const CoveringOracle oracle(scene, 0.25);
+  for (const double thickness : {0.010, 0.015, 0.016}) {
+    const LeastInjuryAtThickness at = MinimizeInjuryAtThickness(scene, thickness, TableIv());
+    INFO("b_c " << thickness);
+    CHECK(at.criterion == DesignCriterion::kNoFullCompression);
+    CHECK_FALSE(at.continuous.every_modulus_fully_compressed);
+    CHECK_FALSE(at.continuous.score.peaks.fully_compressed);
+    // Brute force: nothing on a fine grid of non-bottomed moduli beats it.
+    for (int i = 0; i <= 400; ++i) {
+      const DesignScore s = oracle.Score({std::pow(10.0, 5.0 + 4.0 * i / 400.0), thickness});
+      if (!s.peaks.fully_compressed) CHECK(s.worst_ratio() >= at.continuous.score.worst_ratio() * (1 - 1e-12));
+    }
+    // Paper's "larger than 15 mm": 15 mm is not enough once bottoming out is failure, 16 mm is.
+    CHECK(at.continuous.feasible == (thickness > 0.0151));
+  }
+  // 0.3 mm: no modulus up to 1 GPa keeps the covering from bottoming out; said so.
+  const LeastInjuryAtThickness thin = MinimizeInjuryAtThickness(scene, 0.0003, {});
+  CHECK(thin.continuous.every_modulus_fully_compressed);
+  CHECK_FALSE(thin.continuous.feasible);
+  CHECK(thin.verdict == DesignVerdict::kNothingSafe);
+}
+
+TEST_CASE("The default criterion moves the paper's optimum to a covering that does not bottom out", "[design]") {
+  const Scene scene;
+  DesignOptions paper;
+  paper.allow_full_compression = true;
+  const ThinnestSafeCovering old_optimum = FindThinnestSafeCovering(scene, {}, paper);
+  const ThinnestSafeCovering new_optimum = FindThinnestSafeCovering(scene, {});
+  REQUIRE(old_optimum.continuous.feasible);
+  REQUIRE(new_optimum.continuous.feasible);
+  CHECK(old_optimum.criterion == DesignCriterion::kPaper);
+  CHECK(new_optimum.criterion == DesignCriterion::kNoFullCompression);
+  // Paper's criterion: 14.2 mm at ~13 MPa, safe only with the robot on bone.
+  CHECK(old_optimum.continuous.score.design.thickness_m == Approx(14.23e-3).margin(0.01e-3));
+  CHECK(old_optimum.continuous.score.peaks.fully_compressed);
+  // Default: ~15.06 mm at ~16 MPa, at the edge of full compression and of contusion at once.
+  const DesignScore& best = new_optimum.continuous.score;
+  CHECK(best.design.thickness_m == Approx(15.06e-3).margin(0.01e-3));
+  CHECK(best.design.youngs_modulus_Pa == Approx(16.1e6).epsilon(0.01));
+  CHECK_FALSE(best.peaks.fully_compressed);
+  CHECK(best.compression_ratio == Approx(1.0).margin(1e-6));
+  CHECK(best.contusion_ratio == Approx(1.0).margin(1e-6));
+  CHECK(best.admissible(1.0, DesignCriterion::kNoFullCompression));
+  // Slightly thinner, no modulus is admissible: the optimum is sharp.
+  const CoveringOracle oracle(scene, 0.25);
+  for (int i = 0; i <= 400; ++i) {
+    const DesignScore s = oracle.Score({std::pow(10.0, 5.0 + 4.0 * i / 400.0), best.design.thickness_m - 1e-6});
+    CHECK_FALSE(s.admissible(1.0, DesignCriterion::kNoFullCompression));
+  }
+}
+
+TEST_CASE("A 2 kg robot is not made 'safe' by a thin covering that bottoms out at once", "[design]") {
+  Scene scene;
+  scene.robot.mass_kg = 2.0;
+  const std::vector<CandidateMaterial> sponge = {{"sponge", 1.5e6, 0.25}};
+  DesignOptions paper;
+  paper.allow_full_compression = true;
+  const ThinnestSafeCovering artefact = FindThinnestSafeCovering(scene, sponge, paper);
+  REQUIRE_FALSE(artefact.bare_robot.safe(1.0));  // contusion 1.30 without a covering
+  REQUIRE(artefact.recommendation.has_value());
+  // The paper's criterion takes the thinnest sliver: fully compressed, force above the bare robot's.
+  const CandidateOutcome& sliver = artefact.candidates[*artefact.recommendation];
+  CHECK(*sliver.recommended_thickness_m <= 0.5e-3);
+  CHECK(sliver.score.peaks.fully_compressed);
+  const ThinnestSafeCovering honest = FindThinnestSafeCovering(scene, sponge);
+  REQUIRE(honest.recommendation.has_value());
+  const CandidateOutcome& real = honest.candidates[*honest.recommendation];
+  CHECK_FALSE(real.score.peaks.fully_compressed);
+  CHECK(*real.recommended_thickness_m > 2e-3);
+  CHECK_FALSE(honest.continuous.score.peaks.fully_compressed);
+  CHECK(honest.continuous.score.design.thickness_m > 1e-3);
+}
+
+TEST_CASE("Stock rounding that would pass the maximum thickness keeps the exact thickness and says so",
+          "[design]") {
+  const std::vector<CandidateMaterial> foam = {{"foam", 10.3e6, 0.25}};
+  const ThinnestSafeCovering free = FindThinnestSafeCovering(Scene{}, foam);
+  REQUIRE(free.recommendation.has_value());
+  const double exact = *free.candidates[0].min_safe_thickness_m;
+  const double stock = *free.candidates[0].recommended_thickness_m;
+  REQUIRE(stock > exact);
+  // Stock thicknesses are clean multiples of the step (no 0.018000000000000002).
+  CHECK(std::abs(stock / 0.5e-3 - std::round(stock / 0.5e-3)) < 1e-12);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", stock);  // the decimal it is meant to be, exactly
+  CHECK(std::strtod(text, nullptr) == stock);
+  DesignOptions tight;
+  tight.space.max_thickness_m = 0.5 * (exact + stock);
+  const ThinnestSafeCovering capped = FindThinnestSafeCovering(Scene{}, foam, tight);
+  REQUIRE(capped.recommendation.has_value());
+  const CandidateOutcome& c = capped.candidates[0];
+  CHECK(*c.recommended_thickness_m == Approx(exact).margin(2e-6));
+  REQUIRE(c.stock_thickness_beyond_max_m.has_value());
+  CHECK(*c.stock_thickness_beyond_max_m == Approx(stock));
+  CHECK(c.safe);
 }
 
 TEST_CASE("The Table IV ranking is stable and polystyrene 27.6 MPa comes first", "[design]") {

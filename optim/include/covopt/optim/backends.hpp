@@ -47,6 +47,10 @@ SolveResult SolveWithNlopt(const Problem& problem, std::span<const double> x0,
 struct IpoptOptions {
   double tolerance = 1e-10;             ///< Ipopt "tol"
   double constraint_tolerance = 1e-10;  ///< Ipopt "constr_viol_tol"
+  /// Ipopt "bound_relax_factor": Ipopt relaxes bounds and inequalities by this relative
+  /// amount (its default 1e-8 lets a converged point violate a constraint by ~1e-8, which the
+  /// exact re-check of a design then rejects). 0: constraints as posed.
+  double bound_relax_factor = 0.0;
   int max_iterations = 200;             ///< Ipopt "max_iter"
   double max_seconds = 10.0;            ///< Ipopt "max_cpu_time"
   /// Ipopt's L-BFGS Hessian approximation (covopt provides first derivatives only).

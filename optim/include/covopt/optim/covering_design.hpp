@@ -3,17 +3,34 @@
 /// Covering design on top of the exact impact path: the oracle, the two design problems,
 /// and the snap of the continuous optimum to real materials.
 ///
-/// (a) Thinnest safe covering: minimise b_c subject to laceration and contusion ratios
-///     <= 1/safety_factor, over E_c (log-scaled) and b_c.
-/// (b) Least injury at a given thickness: minimise max(ratios) over E_c at fixed b_c.
+/// (a) Thinnest admissible covering: minimise b_c over E_c (log-scaled) and b_c such that
+///     the laceration and contusion ratios are <= 1/safety_factor and, under the default
+///     criterion, the covering is not fully compressed at the peak (docs/model.md §6).
+/// (b) Least injury at a given thickness: minimise max(ratios) over the admissible E_c at
+///     fixed b_c.
 ///
-/// Both run an NLopt global search first (the landscape is multimodal, DESIGN.md §5.7), then
-/// Ipopt from the global result with analytic gradients (core/sensitivity.hpp). "No covering"
-/// is its own candidate, never the b_c -> 0 limit of the search (DESIGN.md §5.4). Every
-/// catalog material gets its own thinnest safe thickness by a bracketed 1-D solve (a scan for
-/// the first safe thickness, then bisection: safety need not be monotone in b_c for stiff
-/// materials). Everything is a value: no printing, no shared state; safe to call from several
-/// threads (Ipopt runs are serialised inside the backend).
+/// The design criterion (docs/model.md §6). Default "no-full-compression": a covering is
+/// admissible when it is safe AND δ_max <= t2 (the robot never reaches the bone through
+/// it). With DesignOptions::allow_full_compression the paper's criterion (safety only)
+/// applies. The bare robot is always its own candidate, judged on safety alone; it is never
+/// the b_c -> 0 limit of the search (docs/model.md §5 item 4).
+///
+/// The continuous search of (a) has three stages, every one reported:
+///  1. global  NLopt (DIRECT-L by default) on the 2-D problem: an upper bracket for b_c*.
+///  2. bracket covopt's nested search, which does not depend on stage 1: b_c is scanned
+///     from thin to thick on a grid (linear and geometric points); at each b_c the best
+///     modulus is found by a 1-D global search in log10 E_c (the admissible moduli form
+///     one interval [u_c, max] because δ_max falls with E_c, u_c by bisection; a uniform
+///     scan of that interval, then golden-section refinement of its best local minima);
+///     the first admissible grid point is bisected against the one before it.
+///  3. local   Ipopt from the bracketed optimum with analytic gradients, in a small trust
+///     region; its point is kept only when an exact-path re-check finds it admissible and
+///     not thicker.
+/// A stage that fails is reported with its status and never supplies the answer. Every
+/// catalog material gets its own thinnest admissible thickness by a scan then bisection
+/// (the admissible set need not be an interval for one material). Everything is a value:
+/// no printing, no shared state; safe to call from several threads (Ipopt runs are
+/// serialised inside the backend).
 
 #include <atomic>
 #include <optional>
@@ -44,13 +61,25 @@ struct DesignSpace {
   double max_thickness_m = 0.05;   ///< 50 mm
 };
 
+/// Which designs count as acceptable (docs/model.md §6).
+enum class DesignCriterion {
+  kNoFullCompression,  ///< safe and the covering not fully compressed at the peak (default)
+  kPaper,              ///< safe (both injury ratios) only, as the paper designs
+};
+/// "no-full-compression" or "paper".
+const char* ToString(DesignCriterion criterion) noexcept;
+
 /// The injury ratios of one design.
 struct DesignScore {
-  CoveringDesign design;
+  CoveringDesign design;  ///< thickness 0: the bare robot
   double poisson_ratio = 0.25;
   ImpactPeaks peaks;
   double laceration_ratio = 0.0;  ///< σ_t,max / laceration limit
   double contusion_ratio = 0.0;   ///< e_A,max / contusion limit
+  /// δ_max over the penetration at which the covering is fully compressed [-]
+  /// (peaks.full_compression_penetration_m): > 1 means bottomed out. 0 for the bare robot.
+  double compression_ratio = 0.0;
+  bool bare() const noexcept { return design.thickness_m == 0.0; }
   double worst_ratio() const noexcept {
     return laceration_ratio > contusion_ratio ? laceration_ratio : contusion_ratio;
   }
@@ -59,12 +88,18 @@ struct DesignScore {
   /// 1 - safety_factor * worst ratio: >= 0 when safe, the fraction of the (derated) limit
   /// left over.
   double margin(double safety_factor) const noexcept { return 1.0 - safety_factor * worst_ratio(); }
+  /// Safe and, under kNoFullCompression, not fully compressed (the bare robot: safe).
+  bool admissible(double safety_factor, DesignCriterion criterion) const noexcept {
+    return safe(safety_factor) &&
+           (criterion == DesignCriterion::kPaper || bare() || !peaks.fully_compressed);
+  }
 };
 
 /// d(ratio)/d(log10 E_c) and d(ratio)/d(b_c) [1/m].
 struct RatioGradient {
   double laceration[2] = {0.0, 0.0};
   double contusion[2] = {0.0, 0.0};
+  double compression[2] = {0.0, 0.0};  ///< of DesignScore::compression_ratio
 };
 
 /// The exact path as an objective/constraint oracle over covering designs.
@@ -105,9 +140,15 @@ struct CandidateMaterial {
 /// Options of the design searches. Defaults: the bounds, DIRECT-L then Ipopt.
 struct DesignOptions {
   DesignSpace space;
+  /// false (default): a covering fully compressed at the peak is not admissible, however low
+  /// its ratios (criterion "no-full-compression"). true: the paper's criterion, safety only.
+  bool allow_full_compression = false;
+  DesignCriterion criterion() const noexcept {
+    return allow_full_compression ? DesignCriterion::kPaper : DesignCriterion::kNoFullCompression;
+  }
   /// Ratios must be <= 1/safety_factor (>= 1).
   double safety_factor = 1.0;
-  /// ν_c of the continuous design (DESIGN.md §1: 0.25 where none is given).
+  /// ν_c of the continuous design (docs/model.md §1: 0.25 where none is given).
   double covering_poisson_ratio = 0.25;
   InjuryLimits limits;
   /// Global stage. DIRECT-L by default: deterministic, and on this 2-D box it finds the
@@ -118,7 +159,14 @@ struct DesignOptions {
   /// Where the global stage starts (ISRES, MLSL use it; DIRECT-L samples the box from its
   /// centre regardless). Empty: the centre of the design space.
   std::optional<CoveringDesign> initial_design;
-  /// Local stage: Ipopt from the global result, with analytic gradients.
+  /// Bracketed stage: grid points in b_c (half linear, half geometric over the thickness
+  /// range) and points per decade of the uniform scan in log10 E_c at each b_c. An
+  /// admissible window of b_c narrower than the grid spacing before the first admissible
+  /// grid point, or a basin in log10 E_c narrower than the scan spacing, is what this stage
+  /// could miss; the brute-force tests check that the defaults do not.
+  int bracket_thickness_points = 120;
+  int modulus_points_per_decade = 20;
+  /// Local stage: Ipopt from the bracketed result, with analytic gradients.
   bool local_polish = true;
   IpoptOptions ipopt;
   /// Catalog snap: the scan for the first safe thickness uses this many points over the
@@ -139,10 +187,14 @@ struct ContinuousOptimum {
   /// A design meeting the constraints was found (problem a) / always true for problem b.
   bool feasible = false;
   DesignScore score;
-  SolverReport global;  ///< NLopt stage
-  SolverReport local;   ///< Ipopt stage (backend empty when not run)
-  /// Which stage's point was kept and why ("ipopt", or "global: ipopt ended with ...").
+  SolverReport global;   ///< NLopt stage
+  SolverReport bracket;  ///< covopt's nested bracketed search ("covopt:bracket")
+  SolverReport local;    ///< Ipopt stage (backend empty when not run)
+  /// Which stage's point was kept and why ("ipopt", "bracket (ipopt ended ...)", ...).
   std::string source;
+  /// Problem (b) only: no modulus in the search box keeps the covering from full
+  /// compression at this thickness (the score is then the least-injury modulus regardless).
+  bool every_modulus_fully_compressed = false;
 };
 
 /// One catalog material's outcome.
@@ -150,12 +202,16 @@ struct CandidateOutcome {
   CandidateMaterial material;
   /// Thinnest safe thickness [m] (to the resolution); empty when none within the bound.
   std::optional<double> min_safe_thickness_m;
-  /// min_safe_thickness rounded up to the thickness step and confirmed safe [m].
+  /// min_safe_thickness rounded up to the thickness step and confirmed admissible [m].
   std::optional<double> recommended_thickness_m;
+  /// The stock thickness (the next admissible multiple of the step) that would have passed
+  /// the maximum thickness [m]; the exact thinnest admissible thickness is then recommended.
+  std::optional<double> stock_thickness_beyond_max_m;
   /// Score at the recommended thickness (problem a), at the given thickness (problem b), or at
   /// the maximum thickness when the material is not safe within the bound.
   DesignScore score;
   double margin = 0.0;  ///< score.margin(safety_factor)
+  /// Admissible under the options' criterion (safe, and not fully compressed by default).
   bool safe = false;
 };
 
@@ -171,6 +227,7 @@ const char* ToString(DesignVerdict verdict) noexcept;
 /// Problem (a): the thinnest safe covering.
 struct ThinnestSafeCovering {
   DesignVerdict verdict = DesignVerdict::kNothingSafe;
+  DesignCriterion criterion = DesignCriterion::kNoFullCompression;
   DesignScore bare_robot;  ///< the scene without covering
   ContinuousOptimum continuous;
   /// Safe materials by recommended thickness (thinnest first), ties by margin; then the
@@ -185,6 +242,7 @@ struct ThinnestSafeCovering {
 /// Problem (b): the least injury at a given thickness.
 struct LeastInjuryAtThickness {
   DesignVerdict verdict = DesignVerdict::kNothingSafe;
+  DesignCriterion criterion = DesignCriterion::kNoFullCompression;
   double thickness_m = 0.0;
   DesignScore bare_robot;
   ContinuousOptimum continuous;  ///< the E_c minimising the worst ratio at this thickness
