@@ -1,5 +1,7 @@
 #include "output.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -11,6 +13,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include "errors.hpp"
 #include "quantity.hpp"
@@ -46,15 +49,74 @@ void Row(std::ostream& out, std::string_view label, std::string_view value) {
 
 }  // namespace
 
-std::string SceneHeadline(const Scene& scene) {
-  std::string covering =
-      scene.covering.thickness_m > 0.0
-          ? fmt::format("covering {}, {}", Length(scene.covering.thickness_m),
-                        Modulus(scene.covering.youngs_modulus_Pa))
-          : std::string("no covering");
-  return fmt::format("{} at {:g} m/s, R {}; {}; head {}", Mass(scene.robot.mass_kg),
-                     scene.robot.speed_m_per_s, Length(scene.robot.radius_m), covering,
-                     Mass(scene.head.mass_kg));
+std::string SceneHeadline(const Scene& scene, std::span<const std::string_view> omitted_fields) {
+  const auto shown = [&](std::string_view field) {
+    return std::find(omitted_fields.begin(), omitted_fields.end(), field) == omitted_fields.end();
+  };
+  // Which body moves: the speed belongs to the one that is not fixed. A swept mass may be
+  // fixed at some points only, so then neither is called fixed.
+  const bool robot_fixed = shown("robot.mass") && std::isinf(scene.robot.mass_kg);
+  const bool head_fixed = shown("head.mass") && std::isinf(scene.head.mass_kg);
+  const std::string speed =
+      shown("robot.speed") ? fmt::format("{:g} m/s", scene.robot.speed_m_per_s) : std::string();
+
+  std::vector<std::string> parts;
+  std::string robot = robot_fixed            ? std::string("fixed robot")
+                      : shown("robot.mass") ? Mass(scene.robot.mass_kg)
+                                             : std::string("robot");
+  if (!robot_fixed && !speed.empty()) robot += " at " + speed;
+  if (shown("robot.radius")) robot += ", R " + Length(scene.robot.radius_m);
+  parts.push_back(robot);
+
+  const bool show_thickness = shown("covering.thickness");
+  const bool show_modulus = shown("covering.modulus");
+  if (show_thickness && !(scene.covering.thickness_m > 0.0)) {
+    parts.emplace_back("no covering");
+  } else if (show_thickness && show_modulus) {
+    parts.push_back(fmt::format("covering {}, {}", Length(scene.covering.thickness_m),
+                                Modulus(scene.covering.youngs_modulus_Pa)));
+  } else if (show_thickness) {
+    parts.push_back(fmt::format("covering {}", Length(scene.covering.thickness_m)));
+  } else if (show_modulus) {
+    parts.push_back(fmt::format("covering {}", Modulus(scene.covering.youngs_modulus_Pa)));
+  }
+
+  std::string head = head_fixed           ? std::string("head fixed")
+                     : shown("head.mass") ? "head " + Mass(scene.head.mass_kg)
+                                          : std::string("head");
+  if (robot_fixed && !head_fixed) {
+    head += speed.empty() ? " dropped onto it" : " dropped onto it at " + speed;
+  } else if (head_fixed && !robot_fixed) {
+    head += ", hit by the robot";
+  }
+  if (head != "head") parts.push_back(head);
+  return fmt::format("{}", fmt::join(parts, "; "));
+}
+
+std::vector<std::string> SceneDetailsBeyondHeadline(const Scene& scene,
+                                                    std::span<const std::string_view> omitted_fields) {
+  constexpr std::array<std::string_view, 6> kInHeadline{"robot.mass",         "robot.speed",
+                                                        "robot.radius",       "covering.modulus",
+                                                        "covering.thickness", "head.mass"};
+  const Scene defaults;
+  std::vector<std::string> details;
+  for (const SceneField& field : SceneFields()) {
+    const std::string name = field.dotted_name();
+    if (std::find(kInHeadline.begin(), kInHeadline.end(), name) != kInHeadline.end() ||
+        std::find(omitted_fields.begin(), omitted_fields.end(), name) != omitted_fields.end()) {
+      continue;
+    }
+    Scene copy = scene, reference = defaults;
+    const double value = field.field(copy);
+    if (value == field.field(reference)) continue;
+    std::string_view flag = field.flag;
+    while (!flag.empty() && flag.front() == '-') flag.remove_prefix(1);
+    details.push_back(fmt::format("{} {}", flag, FormatQuantity(value, field.spec.kind)));
+  }
+  if (scene.model.thresholds != defaults.model.thresholds) {
+    details.push_back(fmt::format("{} thresholds", ThresholdsName(scene.model.thresholds)));
+  }
+  return details;
 }
 
 void PrintTable(std::ostream& out, const SimulationReport& report) {
@@ -72,12 +134,22 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
                         Modulus(s.covering.youngs_modulus_Pa), s.covering.poisson_ratio,
                         report.covering_poisson_assumed ? " (assumed)" : "")
           : std::string("no covering");
-  fmt::print(out, "Scene   robot {} at {:g} m/s, R {}, E {}, ν {:g}; {}\n", Mass(s.robot.mass_kg),
-             s.robot.speed_m_per_s, Length(s.robot.radius_m), Modulus(s.robot.youngs_modulus_Pa),
-             s.robot.poisson_ratio, covering);
+  // The speed belongs to the body that moves: a fixed robot has the head dropped onto it.
+  const bool robot_fixed = std::isinf(s.robot.mass_kg);
+  const bool head_fixed = std::isinf(s.head.mass_kg);
+  const std::string robot =
+      robot_fixed ? std::string("fixed robot")
+                  : fmt::format("robot {} at {:g} m/s", Mass(s.robot.mass_kg), s.robot.speed_m_per_s);
+  const std::string head =
+      head_fixed    ? std::string(robot_fixed ? "head fixed" : "head fixed (hit by the robot)")
+      : robot_fixed ? fmt::format("head {} dropped onto the robot at {:g} m/s", Mass(s.head.mass_kg),
+                                  s.robot.speed_m_per_s)
+                    : fmt::format("head {}", Mass(s.head.mass_kg));
+  fmt::print(out, "Scene   {}, R {}, E {}, ν {:g}; {}\n", robot, Length(s.robot.radius_m),
+             Modulus(s.robot.youngs_modulus_Pa), s.robot.poisson_ratio, covering);
   fmt::print(out,
-             "        head {}, R {}; scalp {}, E {}, ν {:g}; skull E {}, ν {:g}; {} thresholds\n",
-             Mass(s.head.mass_kg), Length(s.head.radius_m), Length(s.scalp.thickness_m),
+             "        {}, R {}; scalp {}, E {}, ν {:g}; skull E {}, ν {:g}; {} thresholds\n",
+             head, Length(s.head.radius_m), Length(s.scalp.thickness_m),
              Modulus(s.scalp.youngs_modulus_Pa), s.scalp.poisson_ratio,
              Modulus(s.skull.youngs_modulus_Pa), s.skull.poisson_ratio,
              ThresholdsName(s.model.thresholds));
@@ -227,14 +299,16 @@ Json ToJson(const SimulationReport& report) {
   return j;
 }
 
-std::string HistoryCsv(const std::vector<HistorySample>& history) {
+std::string HistoryCsv(const ImpactModel& model, const std::vector<HistorySample>& history) {
   const auto field = [](double v) { return std::isfinite(v) ? fmt::format("{}", v) : std::string(); };
   std::string csv(kHistoryCsvHeader);
   csv += '\n';
   for (const HistorySample& h : history) {
-    csv += fmt::format("{},{},{},{},{},{}\n", field(h.time_s), field(h.penetration_m),
+    csv += fmt::format("{},{},{},{},{},{},{}\n", field(h.time_s), field(h.penetration_m),
                        field(h.penetration_rate_m_per_s), field(h.force_N),
-                       field(h.compressive_stress_Pa), field(h.energy_density_J_per_m2));
+                       field(h.compressive_stress_Pa),
+                       field(model.TensileFromCompressive(h.compressive_stress_Pa)),
+                       field(h.energy_density_J_per_m2));
   }
   return csv;
 }

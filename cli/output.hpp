@@ -7,12 +7,14 @@
 #include <filesystem>
 #include <optional>
 #include <ostream>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/core/time_integration.hpp"
@@ -30,11 +32,24 @@ struct SimulationReport {
   std::optional<std::string> covering_material;
   /// The material's ν is unknown in the catalog and the default was used.
   bool covering_poisson_assumed = false;
+  /// The verdicts are safe when safety_factor x ratio <= 1, i.e. within the derated limits
+  /// limit / safety_factor [-]; 1 = the limits themselves. The chart draws the derated limits.
+  double safety_factor = 1.0;
 };
 
 /// The scene in one short line, for titles: "10 kg at 2 m/s, R 15 mm; covering 15 mm,
-/// 27.6 MPa; head 4.5 kg".
-std::string SceneHeadline(const Scene& scene);
+/// 27.6 MPa; head 4.5 kg". The speed [m/s] goes with the body that moves: a fixed robot
+/// reads "fixed robot, R 15 mm; ...; head 4.5 kg dropped onto it at 2.2 m/s", a fixed head
+/// "...; head fixed, hit by the robot". Fields named in `omitted_fields` (dotted names:
+/// robot.mass, robot.speed, robot.radius, covering.thickness, covering.modulus, head.mass)
+/// are left out, e.g. the swept ones of a sweep chart; a body whose mass is omitted is
+/// called neither fixed nor free.
+std::string SceneHeadline(const Scene& scene, std::span<const std::string_view> omitted_fields = {});
+
+/// The scene inputs SceneHeadline does not show that differ from the paper's scene
+/// (Scene{}), skipping `omitted_fields`: {"scalp-thickness 4 mm", "literal thresholds"}.
+std::vector<std::string> SceneDetailsBeyondHeadline(
+    const Scene& scene, std::span<const std::string_view> omitted_fields = {});
 
 /// The readable report: scene, peaks, verdicts, method and solver, warnings.
 void PrintTable(std::ostream& out, const SimulationReport& report);
@@ -58,11 +73,13 @@ nlohmann::ordered_json ToJson(const SimulationReport& report);
 /// The CSV header of a history file.
 inline constexpr std::string_view kHistoryCsvHeader =
     "time_s,penetration_m,penetration_rate_m_per_s,force_N,compressive_stress_Pa,"
-    "energy_density_J_per_m2";
+    "tensile_stress_Pa,energy_density_J_per_m2";
 
 /// The history as CSV text: kHistoryCsvHeader, then one row per sample (shortest
-/// round-trip decimal numbers; a non-finite value is an empty field).
-std::string HistoryCsv(const std::vector<HistorySample>& history);
+/// round-trip decimal numbers; a non-finite value is an empty field). tensile_stress_Pa is
+/// σ_t = σ_c (1 - 2ν_t)/3 from the sample's compressive stress
+/// (model.TensileFromCompressive), the stress the laceration limit judges.
+std::string HistoryCsv(const ImpactModel& model, const std::vector<HistorySample>& history);
 
 /// Writes `content` to `path` atomically: a temporary file in the same directory, flushed,
 /// then renamed over `path`. A reader sees the old file or the whole new one.

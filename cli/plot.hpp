@@ -1,6 +1,6 @@
 #pragma once
 /// @file plot.hpp
-/// The force/stress chart of `covopt simulate --plot`, drawn by gnuplot.
+/// The force/stress/energy-density chart of `covopt simulate --plot`, drawn by gnuplot.
 ///
 /// The history goes into a gnuplot script as an inline data block; gnuplot runs as a child
 /// process (no shell) with its output captured, writes to a temporary file next to the
@@ -29,8 +29,13 @@ std::optional<std::filesystem::path> FindOnPath(std::string_view name);
 inline constexpr std::string_view kGnuplotMissing =
     "gnuplot not found on PATH; install gnuplot-nox or drop --plot";
 
-/// The gnuplot script that draws force [N] (left axis) and compressive stress [MPa] (right
-/// axis) against time [ms] from report.result.history into `output_path`.
+/// The gnuplot script of `simulate --plot`, two panels against time [ms] from
+/// report.result.history, into `output_path`: force [N] (left axis) and tensile stress
+/// σ_t = σ_c (1 - 2ν_t)/3 [MPa] (right axis, labelled with the factor back to the
+/// compressive stress) with the laceration limit as a line on the tensile axis; below,
+/// energy density [J/cm²] with the contusion limit. The limits are report.assessment's;
+/// with report.safety_factor > 1 the derated limits (limit / factor) are drawn too.
+/// @throws std::invalid_argument for a scene the model rejects.
 std::string GnuplotScript(const SimulationReport& report, PlotFormat format,
                           const std::string& output_path);
 

@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "covopt/core/exact.hpp"
@@ -544,7 +545,11 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
     return errors.Failed("the exact path failed: " + points.front().message);
   }
 
-  const std::string title = options.title ? *options.title : SceneHeadline(scene_plan.scene);
+  std::string title = options.title ? *options.title : SceneHeadline(scene_plan.scene);
+  if (const auto details = SceneDetailsBeyondHeadline(scene_plan.scene);
+      !options.title && !details.empty()) {
+    title += fmt::format("; {}", fmt::join(details, ", "));
+  }
   try {
     if (options.csv_file) WriteFileAtomically(*options.csv_file, WorkPrecisionCsv(points));
     if (options.plot_file) {
