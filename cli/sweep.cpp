@@ -32,12 +32,14 @@ constexpr int kMaxThreads = 4096;
 
 constexpr std::string_view kFooter = R"(An axis is NAME=LO..HI[:lin|:log][:N] (N values, default 50, linear unless
 :log) or NAME=V1,V2,... (the values as listed; a mass may be 'fixed', the
-robot radius 'flat'). NAME is a scene flag without its dashes: robot-mass,
-speed, robot-radius, robot-modulus, robot-poisson, covering-modulus,
-covering-poisson, covering-thickness, head-mass, head-radius, scalp-modulus,
-scalp-poisson, scalp-thickness, skull-modulus, skull-poisson (or its scene-file
-name, e.g. robot.speed). Values take units as the scene flags do; a bare number
-is SI, so write 0..50mm or 1mm..50mm, not 1..50mm.
+robot radius 'flat'); a list may mix ranges and values, e.g.
+robot-radius=2mm..500mm:log:10,flat (charts draw the values sorted). NAME is
+a scene flag without its dashes: robot-mass, speed, robot-radius,
+robot-modulus, robot-poisson, covering-modulus, covering-poisson,
+covering-thickness, head-mass, head-radius, scalp-modulus, scalp-poisson,
+scalp-thickness, skull-modulus, skull-poisson (or its scene-file name, e.g.
+robot.speed). Values take units as the scene flags do; a bare number is SI,
+so write 0..50mm or 1mm..50mm, not 1..50mm.
 
 Every point is solved on the exact path (as 'covopt simulate'), on all cores.
 A point whose scene is outside the model's input range is 'invalid' in the CSV,
@@ -146,6 +148,7 @@ DisplayUnit DisplayFor(QuantityKind kind) {
     case QuantityKind::kModulus: return {1e6, "MPa"};
     case QuantityKind::kDensity: return {1.0, "kg/m³"};
     case QuantityKind::kDimensionless: return {1.0, ""};
+    case QuantityKind::kEnergyDensity: return {1e4, "J/cm²"};
   }
   return {1.0, ""};
 }
@@ -197,116 +200,208 @@ struct PlotInput {
   const SweepAxis* x = nullptr;
   const SweepAxis* y = nullptr;
   std::span<const GridPointResult> points;
-  std::string headline;
+  std::span<const Scene> scenes;  ///< the points' scenes, in the same order
+  std::string scene_line;         ///< the quantities not swept, one line
+  /// A point is safe when safety_factor x ratio <= 1: the limit lines sit at ratio
+  /// 1/safety_factor (the derated limits).
+  double safety_factor = 1.0;
   PlotFormat format = PlotFormat::kPng;
 };
 
-const GridPointResult& At(const PlotInput& in, std::size_t ix, std::size_t iy) {
+std::size_t PointIndex(const PlotInput& in, std::size_t ix, std::size_t iy) {
   const std::size_t ny = in.y ? in.y->values.size() : 1;
-  return in.points[ix * ny + iy];
+  return ix * ny + iy;
+}
+const GridPointResult& At(const PlotInput& in, std::size_t ix, std::size_t iy) {
+  return in.points[PointIndex(in, ix, iy)];
 }
 
-/// The 2-D map: worst ratio in colour, the ratio-1 contours of laceration and contusion.
+/// The indices of an axis's finite values in ascending order of value, each value once:
+/// the order a chart draws them in (a mixed list is typed in any order).
+std::vector<std::size_t> ChartOrder(const SweepAxis& axis) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < axis.values.size(); ++i) {
+    if (std::isfinite(axis.values[i])) order.push_back(i);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return axis.values[a] < axis.values[b]; });
+  order.erase(std::unique(order.begin(), order.end(),
+                          [&](std::size_t a, std::size_t b) {
+                            return axis.values[a] == axis.values[b];
+                          }),
+              order.end());
+  return order;
+}
+
+/// δ_max over the penetration at which the robot reaches bone through everything soft
+/// (the start of the robot-on-bone phase: t2, or t1 without a covering) [-]. Above 1 the
+/// point is fully compressed (ImpactPeaks::fully_compressed); 1 is the boundary. NaN for
+/// an invalid point.
+double CompressionRatio(const Scene& scene, const GridPointResult& p) {
+  if (!p.valid()) return std::numeric_limits<double>::quiet_NaN();
+  const ImpactModel model = ImpactModel::FromScene(scene);
+  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+    if (model.segment(i).phase == Phase::kRobotOnBone && model.segment(i).start_m > 0.0) {
+      return p.result->peaks.max_penetration_m / model.segment(i).start_m;
+    }
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+/// The gnuplot title: `lines` joined by gnuplot's line breaks.
+std::string TitleText(const std::vector<std::string>& lines) {
+  return fmt::format("{}", fmt::join(lines, "\\n"));
+}
+
+/// The 2-D map: worst ratio in colour, the ratio-1 contours of laceration and contusion,
+/// and the full-compression boundary (δ_max = t2: beyond it the robot reaches bone
+/// through the covering).
 std::string MapScript(const PlotInput& in, const std::string& output) {
   const SweepAxis& x = *in.x;
   const SweepAxis& y = *in.y;
   const double sx = DisplayFor(x.field->spec.kind).scale;
   const double sy = DisplayFor(y.field->spec.kind).scale;
+  const std::vector<std::size_t> x_order = ChartOrder(x);
+  const std::vector<std::size_t> y_order = ChartOrder(y);
   std::size_t invalid = 0;
   bool lac_below = false, lac_above = false, con_below = false, con_above = false;
-  for (const GridPointResult& p : in.points) {
+  bool full_below = false, full_above = false;
+  const double at_limit = 1.0 / in.safety_factor;  // the ratio at the (derated) limit
+  for (std::size_t i = 0; i < in.points.size(); ++i) {
+    const GridPointResult& p = in.points[i];
     if (!p.valid()) {
       ++invalid;
       continue;
     }
-    (p.assessment.laceration.ratio <= 1.0 ? lac_below : lac_above) = true;
-    (p.assessment.contusion.ratio <= 1.0 ? con_below : con_above) = true;
+    (p.assessment.laceration.ratio <= at_limit ? lac_below : lac_above) = true;
+    (p.assessment.contusion.ratio <= at_limit ? con_below : con_above) = true;
+    (p.result->peaks.fully_compressed ? full_above : full_below) = true;
   }
   std::vector<std::string> notes;
   if (!(lac_below && lac_above)) {
-    notes.push_back(lac_above ? "laceration ratio > 1 everywhere" : "laceration ratio <= 1 everywhere");
+    notes.push_back(fmt::format("laceration ratio {} {:.4g} everywhere", lac_above ? ">" : "<=",
+                                at_limit));
   }
   if (!(con_below && con_above)) {
-    notes.push_back(con_above ? "contusion ratio > 1 everywhere" : "contusion ratio <= 1 everywhere");
+    notes.push_back(fmt::format("contusion ratio {} {:.4g} everywhere", con_above ? ">" : "<=",
+                                at_limit));
+  }
+  if (!(full_below && full_above)) {
+    notes.push_back(full_above ? "fully compressed everywhere" : "never fully compressed");
   }
   if (invalid > 0) notes.push_back(fmt::format("{} invalid points left blank", invalid));
 
+  std::vector<std::string> title{
+      fmt::format("covopt sweep: {} over {} and {}",
+                  in.quantity ? fmt::format("{} with the injury limits", in.quantity->name)
+                              : std::string("worst injury ratio max(laceration, contusion)"),
+                  x.name, y.name),
+      "scene: " + in.scene_line};
+  if (!notes.empty()) title.push_back(fmt::format("{}", fmt::join(notes, "; ")));
+
   std::string s = "set encoding utf8\n";
-  s += GnuplotTerminal(in.format, 1000, 800);
+  s += GnuplotTerminal(in.format, 1000, 820);
   s += fmt::format("set output {}\n", GnuplotQuoted(output));
-  std::string title = fmt::format(
-      "covopt sweep: {}\\nscene: {}",
-      in.quantity ? fmt::format("{} with the injury limits", in.quantity->name)
-                  : std::string("worst injury ratio max(laceration, contusion)"),
-      in.headline);
-  if (!notes.empty()) title += "\\n" + fmt::format("{}", fmt::join(notes, "; "));
-  s += fmt::format("set title \"{}\"\n", title);
+  // gnuplot grows a title downwards onto the plot: lift it by a line per extra line.
+  s += fmt::format("set title \"{}\" offset 0, {}\n", TitleText(title), title.size() - 1);
   s += fmt::format("set xlabel {}\nset ylabel {}\n", GnuplotQuoted(AxisLabel(x)),
                    GnuplotQuoted(AxisLabel(y)));
   if (in.quantity) {
     s += fmt::format("set cblabel {}\n", GnuplotQuoted(ColumnLabel(*in.quantity)));
-  } else {
+  } else if (in.safety_factor == 1.0) {
     s += "set cblabel 'worst ratio (1 = at a limit; above 2 shown as 2)'\n";
+  } else {
+    s += fmt::format("set cblabel 'worst ratio ({:.4g} = at a limit / safety factor {:g}; above "
+                     "{:.4g} shown as {:.4g})'\n",
+                     at_limit, in.safety_factor, 2.0 * at_limit, 2.0 * at_limit);
   }
   if (x.log) s += "set logscale x\n";
   if (y.log) s += "set logscale y\n";
   // The axis ranges: the finite values of each axis.
-  const auto range = [](const SweepAxis& a, double scale) {
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const double v : a.values) {
-      if (std::isfinite(v)) {
-        lo = std::min(lo, v / scale);
-        hi = std::max(hi, v / scale);
-      }
-    }
-    return std::pair{lo, hi};
-  };
-  const auto [x0, x1] = range(x, sx);
-  const auto [y0, y1] = range(y, sy);
-  s += fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", x0, x1, y0, y1);
+  if (!x_order.empty() && !y_order.empty()) {
+    s += fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", x.values[x_order.front()] / sx,
+                     x.values[x_order.back()] / sx, y.values[y_order.front()] / sy,
+                     y.values[y_order.back()] / sy);
+  }
   if (in.quantity) {
     s += "set palette defined (0 '#f7fbff', 0.35 '#9ecae1', 0.7 '#3182bd', 1 '#08306b')\n";
   } else {
-    s += "set cbrange [0:2]\n";
+    s += fmt::format("set cbrange [0:{}]\n", 2.0 * at_limit);
     s += "set palette defined (0 '#1a7f3c', 0.5 '#8fd18b', 0.98 '#f4f1bb', 1.02 '#fdd49e', "
          "1.5 '#f0793d', 2 '#a50f15')\n";
   }
   const double qscale = in.quantity ? DisplayFor(in.quantity->name).scale : 1.0;
+  // Columns: x, y, laceration ratio, contusion ratio, the coloured value, compression ratio.
   s += "$grid << EOD\n";
-  for (std::size_t ix = 0; ix < x.values.size(); ++ix) {
-    if (!std::isfinite(x.values[ix])) continue;
-    for (std::size_t iy = 0; iy < y.values.size(); ++iy) {
-      if (!std::isfinite(y.values[iy])) continue;
+  for (const std::size_t ix : x_order) {
+    for (const std::size_t iy : y_order) {
       const GridPointResult& p = At(in, ix, iy);
       const bool ok = p.valid();
-      s += fmt::format("{} {} {} {} {}\n", x.values[ix] / sx, y.values[iy] / sy,
+      s += fmt::format("{} {} {} {} {} {}\n", x.values[ix] / sx, y.values[iy] / sy,
                        PlotNumber(ok ? p.assessment.laceration.ratio : NAN),
                        PlotNumber(ok ? p.assessment.contusion.ratio : NAN),
                        PlotNumber(ok ? (in.quantity ? in.quantity->value(p) / qscale : WorstRatio(p))
-                                     : NAN));
+                                     : NAN),
+                       PlotNumber(CompressionRatio(in.scenes[PointIndex(in, ix, iy)], p)));
     }
     s += "\n";
   }
   s += "EOD\n";
-  // The limit contours, traced by gnuplot into data blocks.
-  s += "set contour base\nset cntrparam levels discrete 1\nunset surface\n";
+  // Dots on the fully compressed side, on a coarse subgrid (about 25 x 25) so the colours
+  // stay readable. An empty block still gives the key entry.
+  s += "$stipple << EOD\n";
+  const std::size_t x_step = std::max<std::size_t>(1, x_order.size() / 25);
+  const std::size_t y_step = std::max<std::size_t>(1, y_order.size() / 25);
+  bool stippled = false;
+  for (std::size_t i = 0; i < x_order.size(); i += x_step) {
+    for (std::size_t j = 0; j < y_order.size(); j += y_step) {
+      const GridPointResult& p = At(in, x_order[i], y_order[j]);
+      if (p.valid() && p.result->peaks.fully_compressed) {
+        s += fmt::format("{} {}\n", x.values[x_order[i]] / sx, y.values[y_order[j]] / sy);
+        stippled = true;
+      }
+    }
+  }
+  if (!stippled) s += "NaN NaN\n";
+  s += "EOD\n";
+  // The limit contours and the full-compression boundary, traced by gnuplot into data blocks.
+  s += fmt::format("set contour base\nset cntrparam levels discrete {}\nunset surface\n",
+                   at_limit);
   s += "set table $lac\nsplot $grid using 1:2:3 notitle\nunset table\n";
   s += "set table $con\nsplot $grid using 1:2:4 notitle\nunset table\n";
+  s += "set cntrparam levels discrete 1\n";
+  s += "set table $full\nsplot $grid using 1:2:6 notitle\nunset table\n";
   s += "unset contour\nset surface\n";
   s += "set view map\nset pm3d explicit at b\n";
-  s += "set tmargin 5\nset bmargin 6\nset key at screen 0.5, screen 0.05 center center horizontal maxrows 1 width 2\n";
+  // Room for the title lines above the plot, and for the key below the axis label.
+  s += fmt::format("set tmargin at screen {}\nset bmargin 6.5\n",
+                   1.0 - 0.025 * (static_cast<double>(title.size()) + 1.5));
+  s += "set key at screen 0.5, screen 0.05 center center horizontal maxrows 2 width 0 "
+       "samplen 4\n";
   s += "set grid front linecolor rgb '#888888'\n";
-  s += "splot $grid using 1:2:5 with pm3d notitle, \\\n"
-       "      $lac using 1:2:(0) with lines linewidth 2.5 linecolor rgb '#1f5fa8' "
-       "title 'laceration limit (ratio 1)', \\\n"
-       "      $con using 1:2:(0) with lines linewidth 2.5 dashtype 2 linecolor rgb '#000000' "
-       "title 'contusion limit (ratio 1)'\n";
+  // "limit (ratio 1)", or with a safety factor "limit / 1.5 (ratio 0.6667)".
+  const std::string limit_text =
+      in.safety_factor == 1.0
+          ? std::string("limit (ratio 1)")
+          : fmt::format("limit / {:g} (ratio {:.4g})", in.safety_factor, at_limit);
+  s += fmt::format(
+      "splot $grid using 1:2:5 with pm3d notitle, \\\n"
+      "      $lac using 1:2:(0) with lines linewidth 2.5 linecolor rgb '#1f5fa8' "
+      "title 'laceration {0}', \\\n"
+      "      $con using 1:2:(0) with lines linewidth 2.5 dashtype 2 linecolor rgb '#000000' "
+      "title 'contusion {0}', \\\n",
+      limit_text);
+  s += "      $full using 1:2:(0) with lines linewidth 3 dashtype (10,4,2,4) linecolor rgb "
+       "'#6c3483' title 'full-compression boundary (δ_max = t2)', \\\n"
+       "      $stipple using 1:2:(0) with points pointtype 7 pointsize 0.3 linecolor rgb "
+       "'#4a235a' title 'fully compressed (dots): the robot reaches bone'\n";
   s += "unset output\n";
   return s;
 }
 
 /// Line families: laceration and contusion ratio against the long axis, one line per
-/// value of the short axis (or one line without a second axis).
+/// value of the short axis (or one line without a second axis); the points where the
+/// covering is fully compressed are ringed.
 std::string FamiliesScript(const PlotInput& in, const std::string& output) {
   // along: the horizontal axis; family: one line per value (may be absent).
   const bool families_on_y = in.y == nullptr || in.y->values.size() <= kMaxFamilies;
@@ -315,21 +410,26 @@ std::string FamiliesScript(const PlotInput& in, const std::string& output) {
   const double scale = DisplayFor(along.field->spec.kind).scale;
   const std::size_t lines = family ? family->values.size() : 1;
   const double qscale = in.quantity ? DisplayFor(in.quantity->name).scale : 1.0;
+  const std::vector<std::size_t> along_order = ChartOrder(along);
 
   std::string s = "set encoding utf8\n";
   s += GnuplotTerminal(in.format, 1000, in.quantity ? 650 : 900);
   s += fmt::format("set output {}\n", GnuplotQuoted(output));
+  // Columns: along, laceration ratio, contusion ratio, quantity, fully compressed (0/1).
   s += "$data << EOD\n";
+  bool any_fully_compressed = false;
   for (std::size_t line = 0; line < lines; ++line) {
-    for (std::size_t i = 0; i < along.values.size(); ++i) {
-      if (!std::isfinite(along.values[i])) continue;
+    for (const std::size_t i : along_order) {
       const GridPointResult& p =
           families_on_y ? At(in, i, in.y ? line : 0) : At(in, line, i);
       const bool ok = p.valid();
-      s += fmt::format("{} {} {} {}\n", along.values[i] / scale,
+      const bool full = ok && p.result->peaks.fully_compressed;
+      any_fully_compressed = any_fully_compressed || full;
+      s += fmt::format("{} {} {} {} {}\n", along.values[i] / scale,
                        PlotNumber(ok ? p.assessment.laceration.ratio : NAN),
                        PlotNumber(ok ? p.assessment.contusion.ratio : NAN),
-                       PlotNumber(ok && in.quantity ? in.quantity->value(p) / qscale : NAN));
+                       PlotNumber(ok && in.quantity ? in.quantity->value(p) / qscale : NAN),
+                       full ? 1 : 0);
     }
     s += "\n\n";
   }
@@ -347,46 +447,84 @@ std::string FamiliesScript(const PlotInput& in, const std::string& output) {
           "pointsize 0.4 linecolor rgb '{}' title {}, ",
           line, column, colours[line % colours.size()], GnuplotQuoted(title));
     }
+    if (any_fully_compressed) {
+      c += fmt::format(
+          "$data using 1:($5 > 0.5 ? ${} : NaN) with points pointtype 6 pointsize 1.3 "
+          "linewidth 1.5 linecolor rgb '#000000' title 'fully compressed (δ_max > t2)', ",
+          column);
+    }
     if (!limit) {
       c.resize(c.size() - 2);  // the last ", "
       return c + "\n";
     }
-    return c + "1 with lines dashtype 2 linewidth 1.5 linecolor rgb '#000000' title 'limit'\n";
+    return c + fmt::format("{} with lines dashtype 2 linewidth 1.5 linecolor rgb '#000000' "
+                           "title {}\n",
+                           1.0 / in.safety_factor,
+                           GnuplotQuoted(in.safety_factor == 1.0
+                                             ? std::string("limit")
+                                             : fmt::format("limit / {:g}", in.safety_factor)));
   };
 
   if (along.log) s += "set logscale x\n";
   s += fmt::format("set xlabel {}\n", GnuplotQuoted(AxisLabel(along)));
   s += "set grid linecolor rgb '#dddddd'\nset key outside right top\nset yrange [0:*]\n";
+  const std::string against =
+      family ? fmt::format("against {}, one line per {}", along.name, family->name)
+             : fmt::format("against {}", along.name);
+  std::vector<std::string> title{"", "scene: " + in.scene_line};
+  if (std::any_of(along.values.begin(), along.values.end(),
+                  [](double v) { return !std::isfinite(v); })) {
+    title.push_back(fmt::format("{} {} not on the axis (see the CSV)", along.name,
+                                along.field->spec.allow_flat ? "flat" : "fixed"));
+  }
+  s += "set autoscale xfix\n";
   if (in.quantity) {
     const bool ratio = in.quantity->name.find("ratio") != std::string_view::npos;
-    s += fmt::format("set title \"covopt sweep: {} against {}\\nscene: {}\"\n",
-                     in.quantity->name, along.name, in.headline);
+    title.front() = fmt::format("covopt sweep: {} {}", in.quantity->name, against);
+    s += fmt::format("set title \"{}\"\n", TitleText(title));
     s += fmt::format("set ylabel {}\n", GnuplotQuoted(ColumnLabel(*in.quantity)));
     s += "plot " + clauses(4, ratio);
     s += "unset output\n";
     return s;
   }
-  s += fmt::format("set multiplot layout 2,1 title \"covopt sweep: injury ratios against {}\\n"
-                   "scene: {}\"\n",
-                   along.name, in.headline);
-  s += "set ylabel 'laceration ratio (tensile stress / 1 MPa)'\n";
+  title.front() = fmt::format("covopt sweep: injury ratios {}", against);
+  s += fmt::format("set multiplot layout 2,1 title \"{}\"\n", TitleText(title));
+  // The limits the ratios are taken against (every point has the same).
+  InjuryAssessment limits = Assess(ImpactPeaks{});
+  for (const GridPointResult& p : in.points) {
+    if (p.valid()) {
+      limits = p.assessment;
+      break;
+    }
+  }
+  s += fmt::format("set ylabel 'laceration ratio (tensile stress / {:g} MPa)'\n",
+                   limits.laceration.limit / 1e6);
   s += "plot " + clauses(2, true);
-  s += "set ylabel 'contusion ratio (energy density / 2.52 J/cm²)'\n";
+  s += fmt::format("set ylabel 'contusion ratio (energy density / {:g} J/cm²)'\n",
+                   limits.contusion.limit / 1e4);
   s += "plot " + clauses(3, true);
   s += "unset multiplot\nunset output\n";
   return s;
 }
 
-/// "0.1 MPa .. 1 GPa, 200 values, log" or "3 values: 1 kg, 5 kg, fixed".
+/// "0.1 MPa .. 1 GPa, 200 values, log", "3 values: 1 kg, 5 kg, fixed" or, for a mixed
+/// list, "11 values: 2 mm .. 500 mm (10, log), flat".
 std::string DescribeAxis(const SweepAxis& axis) {
   const auto& v = axis.values;
-  if (axis.spec.find("..") != std::string::npos) {
+  const auto& parts = axis.parts;
+  if (parts.size() == 1 && parts.front().range) {
     return fmt::format("{} .. {}, {} values{}", Display(axis, v.front()), Display(axis, v.back()),
-                       v.size(), axis.log ? ", log" : "");
+                       v.size(), parts.front().log ? ", log" : "");
   }
   std::vector<std::string> shown;
-  for (std::size_t i = 0; i < v.size() && i < 6; ++i) shown.push_back(Display(axis, v[i]));
-  if (v.size() > 6) shown.push_back("...");
+  for (std::size_t i = 0; i < parts.size() && i < 6; ++i) {
+    const SweepAxisPart& part = parts[i];
+    shown.push_back(part.range ? fmt::format("{} .. {} ({}{})", Display(axis, part.low),
+                                             Display(axis, part.high), part.count,
+                                             part.log ? ", log" : "")
+                               : Display(axis, part.low));
+  }
+  if (parts.size() > 6) shown.push_back("...");
   return fmt::format("{} value{}: {}", v.size(), v.size() == 1 ? "" : "s",
                      fmt::join(shown, ", "));
 }
@@ -444,8 +582,8 @@ SweepAxis ParseSweepAxis(std::string_view text, std::string_view flag) {
   };
   const std::size_t eq = text.find('=');
   if (eq == std::string_view::npos) {
-    fail("expected NAME=LO..HI[:lin|:log][:N] or NAME=V1,V2,..., e.g. "
-         "covering-thickness=0..50mm:101");
+    fail("expected NAME=LO..HI[:lin|:log][:N] or NAME=V1,V2,... (items may mix ranges and "
+         "values), e.g. covering-thickness=0..50mm:101");
   }
   const std::string_view name = Trim(text.substr(0, eq));
   const std::string_view spec = Trim(text.substr(eq + 1));
@@ -459,71 +597,98 @@ SweepAxis ParseSweepAxis(std::string_view text, std::string_view flag) {
   const QuantitySpec& quantity = axis.field->spec;
   if (spec.empty()) fail(fmt::format("no values after '{}='", name));
 
-  if (spec.find("..") == std::string_view::npos) {
-    // A list of values.
-    std::string_view rest = spec;
-    while (true) {
-      const std::size_t comma = rest.find(',');
-      const std::string_view item = Trim(rest.substr(0, comma));
-      if (item.empty()) fail("empty value in the list");
-      axis.values.push_back(ParseQuantity(item, quantity, flag));
-      if (axis.values.size() > kMaxAxisValues) {
+  // A value's own message names the item; in a list, also say where it is.
+  const auto in_spec = [&](const auto& parse) {
+    try {
+      return parse();
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("{} in '{}'", e.what(), text));
+    }
+  };
+
+  // A range LO..HI[:lin|:log][:N], appended to the values.
+  const auto add_range = [&](std::string_view item) {
+    SweepAxisPart part;
+    part.range = true;
+    part.count = kDefaultCount;
+    std::size_t colon = item.find(':');
+    const std::string_view range_text = Trim(item.substr(0, colon));
+    bool count_given = false, spacing_given = false;
+    while (colon != std::string_view::npos) {
+      const std::size_t next = item.find(':', colon + 1);
+      const std::string_view option = Trim(item.substr(
+          colon + 1, next == std::string_view::npos ? std::string_view::npos : next - colon - 1));
+      colon = next;
+      if (option == "lin" || option == "log") {
+        if (spacing_given) fail("give the spacing (lin or log) once per range");
+        spacing_given = true;
+        part.log = option == "log";
+        continue;
+      }
+      std::size_t n = 0;
+      const auto [end, ec] = std::from_chars(option.data(), option.data() + option.size(), n);
+      if (ec != std::errc() || end != option.data() + option.size() || option.empty()) {
+        fail(fmt::format("after the range, expected ':lin', ':log' or a count ':N', not ':{}'",
+                         option));
+      }
+      if (count_given) fail("give the count :N once per range");
+      count_given = true;
+      if (n < 2 || n > kMaxAxisValues) {
+        fail(fmt::format("the count after ':' must be in 2..{}", kMaxAxisValues));
+      }
+      part.count = n;
+    }
+    const materials::Range range = in_spec([&] { return ParseRange(range_text, quantity, flag); });
+    if (!range.min || !range.max) fail("a sweep range needs both ends, LO..HI");
+    const double lo = *range.min, hi = *range.max;
+    if (!std::isfinite(lo) || !std::isfinite(hi)) {
+      fail("a range needs finite ends; list 'fixed' or 'flat' as a value instead, e.g. "
+           "robot-mass=5kg..50kg:10,fixed");
+    }
+    if (!(lo < hi)) fail("the range's low end must be below its high end");
+    if (part.log && !(lo > 0.0)) fail("a :log range needs a low end above 0");
+    if (axis.values.size() + part.count > kMaxAxisValues) {
+      fail(fmt::format("more than {} values", kMaxAxisValues));
+    }
+    part.low = lo;
+    part.high = hi;
+    const std::size_t first = axis.values.size();
+    for (std::size_t i = 0; i < part.count; ++i) {
+      const double k = static_cast<double>(i), n = static_cast<double>(part.count - 1);
+      axis.values.push_back(
+          part.log ? std::pow(10.0, std::log10(lo) + (std::log10(hi) - std::log10(lo)) * k / n)
+                   : lo + (hi - lo) * k / n);
+    }
+    axis.values[first] = lo;
+    axis.values.back() = hi;
+    axis.parts.push_back(part);
+  };
+
+  // A comma list whose items are ranges or single values; one range alone is the old form.
+  std::string_view rest = spec;
+  while (true) {
+    const std::size_t comma = rest.find(',');
+    const std::string_view item = Trim(rest.substr(0, comma));
+    if (item.empty()) fail("empty value in the list");
+    if (item.find("..") != std::string_view::npos) {
+      add_range(item);
+    } else {
+      if (axis.values.size() + 1 > kMaxAxisValues) {
         fail(fmt::format("more than {} values", kMaxAxisValues));
       }
-      if (comma == std::string_view::npos) break;
-      rest.remove_prefix(comma + 1);
+      const double value = in_spec([&] { return ParseQuantity(item, quantity, flag); });
+      axis.values.push_back(value);
+      axis.parts.push_back(SweepAxisPart{value, value, 1, false, false});
     }
-    return axis;
+    if (comma == std::string_view::npos) break;
+    rest.remove_prefix(comma + 1);
   }
-
-  // A range LO..HI with options.
-  std::size_t colon = spec.find(':');
-  const std::string_view range_text = Trim(spec.substr(0, colon));
-  std::size_t count = kDefaultCount;
-  bool count_given = false, spacing_given = false;
-  while (colon != std::string_view::npos) {
-    const std::size_t next = spec.find(':', colon + 1);
-    const std::string_view option = Trim(spec.substr(colon + 1, next == std::string_view::npos
-                                                                    ? std::string_view::npos
-                                                                    : next - colon - 1));
-    colon = next;
-    if (option == "lin" || option == "log") {
-      if (spacing_given) fail("give the spacing (lin or log) once");
-      spacing_given = true;
-      axis.log = option == "log";
-      continue;
-    }
-    std::size_t n = 0;
-    const auto [end, ec] = std::from_chars(option.data(), option.data() + option.size(), n);
-    if (ec != std::errc() || end != option.data() + option.size() || option.empty()) {
-      fail(fmt::format("after the range, expected ':lin', ':log' or a count ':N', not ':{}'",
-                       option));
-    }
-    if (count_given) fail("give the count :N once");
-    count_given = true;
-    if (n < 2 || n > kMaxAxisValues) {
-      fail(fmt::format("the count after ':' must be in 2..{}", kMaxAxisValues));
-    }
-    count = n;
-  }
-  const materials::Range range = ParseRange(range_text, quantity, flag);
-  if (!range.min || !range.max) fail("a sweep range needs both ends, LO..HI");
-  const double lo = *range.min, hi = *range.max;
-  if (!std::isfinite(lo) || !std::isfinite(hi)) {
-    fail("a range needs finite ends; list 'fixed' or 'flat' as a value instead, e.g. "
-         "robot-mass=5kg,10kg,fixed");
-  }
-  if (!(lo < hi)) fail("the range's low end must be below its high end");
-  if (axis.log && !(lo > 0.0)) fail("a :log range needs a low end above 0");
-  axis.values.resize(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    const double k = static_cast<double>(i), n = static_cast<double>(count - 1);
-    axis.values[i] =
-        axis.log ? std::pow(10.0, std::log10(lo) + (std::log10(hi) - std::log10(lo)) * k / n)
-                 : lo + (hi - lo) * k / n;
-  }
-  axis.values.front() = lo;
-  axis.values.back() = hi;
+  // A log axis when a range asked for it and every finite value can sit on it.
+  const bool any_log = std::any_of(axis.parts.begin(), axis.parts.end(),
+                                   [](const SweepAxisPart& p) { return p.log; });
+  const bool all_positive = std::all_of(axis.values.begin(), axis.values.end(),
+                                        [](double v) { return !std::isfinite(v) || v > 0.0; });
+  axis.log = any_log && all_positive;
   return axis;
 }
 
@@ -589,8 +754,9 @@ CLI::App* SetupSweep(CLI::App& app, SweepOptions& options) {
       ->type_name("FILE.csv|-")
       ->group("Output");
   sub->add_option("--plot", options.plot_file,
-                  "chart with gnuplot: worst-ratio map with both limit contours, or line "
-                  "families when an axis has at most 8 values")
+                  "chart with gnuplot: worst-ratio map with both limit contours and the "
+                  "full-compression boundary, or line families when an axis has at most 8 "
+                  "values")
       ->type_name("FILE.png|FILE.svg")
       ->group("Output");
   sub->add_option("--plot-quantity", options.plot_quantity,
@@ -692,12 +858,26 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
   grid.threads = threads;
   grid.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<GridPointResult> points = SolveExactGrid(scenes, grid);
+  std::vector<GridPointResult> points = SolveExactGrid(scenes, grid);
+  // The grid judges against the default limits; the plan's (flags, scene file) rule.
+  for (GridPointResult& point : points) {
+    if (point.valid()) point.assessment = JudgeInjuries(point.result->peaks, plan);
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   bar.Finish();
   const unsigned used_threads =
       threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+
+  // The scene without the swept quantities, for the summary and the chart titles.
+  std::vector<std::string_view> swept_fields;
+  std::vector<std::string> swept_names{x.field->dotted_name()};
+  if (y) swept_names.push_back(y->field->dotted_name());
+  for (const std::string& name : swept_names) swept_fields.push_back(name);
+  std::string scene_line = SceneHeadline(plan.scene, swept_fields);
+  if (const auto details = SceneDetailsBeyondHeadline(plan.scene, swept_fields); !details.empty()) {
+    scene_line += fmt::format("; {}", fmt::join(details, ", "));
+  }
 
   // Outputs.
   const bool csv_to_stdout = options.csv_file && *options.csv_file == "-";
@@ -714,8 +894,9 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
       input.x = &x;
       input.y = y_axis;
       input.points = points;
-      input.headline = fmt::format("{}\\nswept: {}{}", SceneHeadline(plan.scene), x.name,
-                                   y ? " and " + y->name : std::string());
+      input.scenes = scenes;
+      input.scene_line = scene_line;
+      input.safety_factor = plan.safety_factor;
       input.format = *plot_format;
       const bool map = y && x.values.size() > kMaxFamilies && y->values.size() > kMaxFamilies;
       RunGnuplot(*options.plot_file, [&](const std::string& output_path) {
@@ -732,6 +913,9 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
   } else {
     // The summary.
     std::size_t valid = 0, safe = 0, lacerating = 0, contusing = 0, warned = 0;
+    // The design criterion: safe, and a covering not fully compressed (a bare robot has no
+    // covering to bottom out, so safe is enough for it).
+    std::size_t covered = 0, bottomed = 0, admissible = 0;
     std::optional<std::size_t> first_invalid, first_warned, best, worst;
     for (std::size_t i = 0; i < points.size(); ++i) {
       const GridPointResult& p = points[i];
@@ -741,6 +925,11 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
       }
       ++valid;
       if (p.assessment.safe()) ++safe;
+      const bool has_covering = scenes[i].covering.thickness_m > 0.0;
+      const bool bottomed_out = has_covering && p.result->peaks.fully_compressed;
+      if (has_covering) ++covered;
+      if (bottomed_out) ++bottomed;
+      if (p.assessment.safe() && !bottomed_out) ++admissible;
       if (!p.assessment.laceration.safe) ++lacerating;
       if (!p.assessment.contusion.safe) ++contusing;
       if (!p.result->warnings.empty()) {
@@ -755,15 +944,23 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     };
     fmt::print(out, "Sweep   {}: {}\n", x.name, DescribeAxis(x));
     if (y) fmt::print(out, "        {}: {}\n", y->name, DescribeAxis(*y));
-    fmt::print(out, "Scene   {} (swept values replaced)\n", SceneHeadline(plan.scene));
+    fmt::print(out, "Scene   {}\n", scene_line);
     fmt::print(out, "Points  {} in {:.3g} s on {} thread{}: {} valid, {} invalid\n",
                points.size(), seconds, used_threads, used_threads == 1 ? "" : "s", valid,
                points.size() - valid);
     if (valid > 0) {
-      fmt::print(out, "Safe    {} ({:.1f} %); laceration ratio > 1 at {} ({:.1f} %), contusion "
-                      "ratio > 1 at {} ({:.1f} %)\n",
-                 safe, percent(safe), lacerating, percent(lacerating), contusing,
-                 percent(contusing));
+      // With a safety factor s, a ratio above 1/s is unsafe (InputWarnings says so).
+      fmt::print(out, "Safe    {} ({:.1f} %); laceration ratio > {:.4g} at {} ({:.1f} %), "
+                      "contusion ratio > {:.4g} at {} ({:.1f} %)\n",
+                 safe, percent(safe), 1.0 / plan.safety_factor, lacerating, percent(lacerating),
+                 1.0 / plan.safety_factor, contusing, percent(contusing));
+      if (covered > 0) {
+        fmt::print(out, "Full    covering fully compressed at {} of {} covered points ({:.1f} %); "
+                        "safe and not fully compressed at {} ({:.1f} %)\n",
+                   bottomed, covered,
+                   100.0 * static_cast<double>(bottomed) / static_cast<double>(covered),
+                   admissible, percent(admissible));
+      }
       for (const auto& [label, index] : {std::pair{"Least", *best}, std::pair{"Most", *worst}}) {
         const GridPointResult& p = points[index];
         fmt::print(out, "{:<7} worst ratio {:.4g} at {} (laceration {:.4g}, contusion {:.4g})\n",

@@ -6,8 +6,9 @@
 ///                  [scene flags] [--scene FILE] [--material NAME] [--threads N]
 ///                  [--csv FILE|-] [--plot FILE.png|FILE.svg]
 ///
-/// An axis is NAME=LO..HI[:lin|:log][:N] (N points, default 50, linear by default) or
-/// NAME=V1,V2,... (the values as listed; masses may be 'fixed', the robot radius 'flat').
+/// An axis is NAME=LO..HI[:lin|:log][:N] (N points, default 50, linear by default),
+/// NAME=V1,V2,... (the values as listed; masses may be 'fixed', the robot radius 'flat'), or
+/// a comma list mixing both: robot-radius=2mm..500mm:log:10,flat.
 /// NAME is a scene flag without its dashes (speed, robot-mass, covering-thickness, ...) or
 /// its scene-file name (robot.speed). Values take units as the scene flags do; a bare
 /// number is SI, and a bare nonzero number with a unit on the other end is refused
@@ -50,8 +51,10 @@ struct SweepOptions {
   std::optional<int> threads;
   /// --csv FILE: one row per point; "-" writes it to stdout instead of the summary.
   std::optional<std::string> csv_file;
-  /// --plot FILE.png|FILE.svg: the worst-ratio map with both limit contours, or line
-  /// families of the two ratios when an axis has at most kMaxFamilies values.
+  /// --plot FILE.png|FILE.svg: the worst-ratio map with both limit contours and the
+  /// full-compression boundary (δ_max = t2, the fully compressed side dotted), or line
+  /// families of the two ratios (fully compressed points ringed) when an axis has at most
+  /// kMaxFamilies values. Titles name the scene's quantities that are not swept.
   std::optional<std::string> plot_file;
   /// --plot-quantity COLUMN: chart this result column (e.g. max_compressive_stress_Pa)
   /// instead of the injury ratios; the map keeps the two limit contours.
@@ -60,13 +63,26 @@ struct SweepOptions {
   bool no_progress = false;
 };
 
+/// One item of an axis spec: a range LO..HI of `count` values, or a single value.
+struct SweepAxisPart {
+  double low = 0.0;        ///< SI; the value itself for a single value
+  double high = 0.0;       ///< SI; equals `low` for a single value
+  std::size_t count = 1;   ///< values the item gives (1 for a single value)
+  bool log = false;        ///< a :log range
+  bool range = false;      ///< LO..HI rather than a single value
+};
+
 /// One swept quantity.
 struct SweepAxis {
   const SceneField* field = nullptr;  ///< the scene field it sets
   std::string name;                   ///< the flag without dashes: "covering-modulus"
-  std::vector<double> values;         ///< SI; kFixed/kFlat where listed as 'fixed'/'flat'
-  bool log = false;                   ///< a :log range (drawn on a log axis)
-  std::string spec;                   ///< as typed after '='
+  /// SI, in the order typed (each range expanded in place); kFixed/kFlat where listed as
+  /// 'fixed'/'flat'. Charts draw them sorted; the CSV keeps this order.
+  std::vector<double> values;
+  /// Drawn on a log axis: some range is :log and every finite value is above 0.
+  bool log = false;
+  std::vector<SweepAxisPart> parts;  ///< the items of the spec, in order
+  std::string spec;                  ///< as typed after '='
 };
 
 /// An axis with at most this many values is drawn as a family of lines.

@@ -9,8 +9,10 @@
 #include <cmath>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <covopt/core/exact.hpp>
@@ -336,4 +338,147 @@ TEST_CASE("bad sweep specs are exit 2 naming the flag, the value and what is all
   // The value is quoted back.
   const auto run = Run({"sweep", "--x", "speed=1m/s..2m/s:abc"});
   CHECK_THAT(run.err, Contains("(got 'speed=1m/s..2m/s:abc')"));
+}
+
+TEST_CASE("a sweep axis may mix ranges and listed values", "[sweep]") {
+  using covopt::cli::ParseSweepAxis;
+  // The issue's example: ten log-spaced radii, then a flat robot.
+  const auto radius = ParseSweepAxis("robot-radius=2mm..500mm:log:10,flat", "--x");
+  REQUIRE(radius.values.size() == 11);
+  CHECK(radius.values.front() == Approx(0.002));
+  CHECK(radius.values[9] == Approx(0.5));
+  CHECK(std::isinf(radius.values.back()));
+  for (std::size_t i = 1; i < 9; ++i) {  // equal ratios: log spacing
+    CHECK(radius.values[i + 1] / radius.values[i] == Approx(radius.values[1] / radius.values[0]));
+  }
+  CHECK(radius.log);
+  REQUIRE(radius.parts.size() == 2);
+  CHECK(radius.parts[0].range);
+  CHECK(radius.parts[0].count == 10);
+  CHECK_FALSE(radius.parts[1].range);
+
+  // Values and ranges in any order, each range expanded in place.
+  const auto speed = ParseSweepAxis("speed=0.5m/s, 1m/s..2m/s:3 ,3m/s", "--x");
+  CHECK(speed.values == std::vector<double>{0.5, 1.0, 1.5, 2.0, 3.0});
+  CHECK_FALSE(speed.log);
+
+  // A log axis only when every finite value can sit on one.
+  CHECK_FALSE(ParseSweepAxis("covering-thickness=0,1mm..50mm:log:5", "--y").log);
+  CHECK(ParseSweepAxis("covering-thickness=1mm..50mm:log:5,0.5mm", "--y").log);
+  // The old forms are unchanged.
+  CHECK(ParseSweepAxis("speed=1m/s..3m/s:5", "--x").values.size() == 5);
+  CHECK(ParseSweepAxis("speed=1m/s..3m/s", "--x").values.size() == 50);
+  CHECK(ParseSweepAxis("robot-mass=1kg,fixed", "--x").values.size() == 2);
+
+  // End to end: one CSV row per value, in the order typed; the summary describes the items.
+  const Csv csv = SweepCsv({"--x", "robot-radius=2mm..500mm:log:10,flat"});
+  REQUIRE(csv.rows.size() == 11);
+  CHECK(csv.rows.back()[0] == "flat");
+  CHECK(csv.Number(0, "robot-radius") == Approx(0.002));
+  const auto summary = Run({"sweep", "--x", "robot-radius=2mm..500mm:log:10,flat"});
+  REQUIRE(summary.exit_code == 0);
+  CHECK_THAT(summary.out, Contains("robot-radius: 11 values: 2 mm .. 500 mm (10, log), flat"));
+
+  // Mistakes in one item are named like those of a whole spec.
+  for (const auto& [spec, message] : std::vector<std::pair<std::string, std::string>>{
+           {"robot-radius=2mm..500mm:log:10,,flat", "empty value in the list"},
+           {"speed=1m/s..2m/s:1,3m/s", "count after ':' must be in 2..100000"},
+           {"speed=1m/s..2m/s:lin:log,3m/s", "give the spacing (lin or log) once per range"},
+           {"speed=3m/s,2m/s..1m/s", "lower end is above the upper end"},
+           {"robot-radius=0..5mm:log,flat", "a :log range needs a low end above 0"},
+           {"speed=1m/s,2m/s:5", "--x"},
+       }) {
+    const auto run = Run({"sweep", "--x", spec});
+    INFO(spec << ": " << run.err);
+    CHECK(run.exit_code == 2);
+    CHECK(run.out.empty());
+    CHECK_THAT(run.err, Contains(message) && Contains("'" + spec + "'"));
+  }
+}
+
+TEST_CASE("the sweep CSV's fully_compressed column is the robot reaching bone (δ_max > t2)",
+          "[sweep]") {
+  // With the cumulative thresholds the robot reaches bone past t2 = 0.8 b_s + 0.8 b_c.
+  const Csv csv = SweepCsv({"--x", "covering-modulus=0.3MPa..300MPa:log:9", "--y",
+                            "covering-thickness=2mm..40mm:9"});
+  std::size_t compressed = 0, not_compressed = 0;
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    const double t2 = 0.8 * 0.003 + 0.8 * csv.Number(i, "covering-thickness");
+    const bool beyond = csv.Number(i, "max_penetration_m") > t2;
+    CHECK(csv.Number(i, "fully_compressed") == (beyond ? 1.0 : 0.0));
+    (beyond ? compressed : not_compressed) += 1;
+  }
+  CHECK(compressed > 0);  // both sides of the boundary are on this grid
+  CHECK(not_compressed > 0);
+
+  // The summary counts them, and counts the designs a user may take: safe and not fully
+  // compressed.
+  const auto summary = Run({"sweep", "--x", "covering-modulus=0.3MPa..300MPa:log:9", "--y",
+                            "covering-thickness=2mm..40mm:9"});
+  REQUIRE(summary.exit_code == 0);
+  std::size_t admissible = 0;
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    if (csv.Number(i, "safe") == 1.0 && csv.Number(i, "fully_compressed") == 0.0) ++admissible;
+  }
+  CHECK_THAT(summary.out,
+             Contains(fmt::format("covering fully compressed at {} of 81 covered points",
+                                  compressed)) &&
+                 Contains(fmt::format("safe and not fully compressed at {} (", admissible)));
+}
+
+TEST_CASE("sweep charts name only the quantities not swept and draw the full-compression "
+          "boundary",
+          "[sweep][plot]") {
+  if (!covopt::cli::FindOnPath("gnuplot")) {
+    WARN("gnuplot is not on PATH; skipping the plot checks");
+    return;
+  }
+  TempDir dir;
+  const auto map_path = dir / "map.svg";
+  auto run = Run({"sweep", "--x", "covering-modulus=0.3MPa..300MPa:log:20", "--y",
+                  "covering-thickness=2mm..40mm:20", "--plot", map_path.string()});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  std::string svg = ReadFile(map_path);
+  // The scene line has the robot and the head, not the covering that is swept.
+  CHECK_THAT(svg, Contains("scene: 10 kg at 2 m/s, R 15 mm; head 4.5 kg"));
+  CHECK_THAT(svg, !Contains("27.6 MPa") && !Contains("covering 15 mm"));
+  CHECK_THAT(run.out, Contains("Scene   10 kg at 2 m/s, R 15 mm; head 4.5 kg\n"));
+  // Both limits and the full-compression boundary are in the key.
+  CHECK_THAT(svg, Contains("laceration limit (ratio 1)") && Contains("contusion limit (ratio 1)") &&
+                      Contains("full-compression boundary (δ_max = t2)") &&
+                      Contains("fully compressed (dots)"));
+  CHECK_THAT(svg, !Contains("never fully compressed") && !Contains("fully compressed everywhere"));
+
+  // A grid that never bottoms out says so in the title; the speed is swept, so the title
+  // leaves it out, and a non-default input beyond the headline is named.
+  const auto soft_path = dir / "soft.svg";
+  run = Run({"sweep", "--x", "speed=0.2m/s..0.5m/s:10", "--y", "covering-thickness=30mm..40mm:10",
+             "--scalp-thickness", "4mm", "--plot", soft_path.string()});
+  REQUIRE(run.exit_code == 0);
+  svg = ReadFile(soft_path);
+  CHECK_THAT(svg, Contains("never fully compressed"));
+  CHECK_THAT(svg, Contains("scene: 10 kg, R 15 mm; covering 27.6 MPa; head 4.5 kg; "
+                           "scalp-thickness 4 mm"));
+  CHECK_THAT(svg, !Contains("m/s;"));
+
+  // Line families: the swept family and axis are not in the scene line either.
+  const auto lines_path = dir / "lines.svg";
+  run = Run({"sweep", "--x", "speed=0.5m/s..3m/s:20", "--y", "robot-mass=2kg,10kg,fixed",
+             "--plot", lines_path.string()});
+  REQUIRE(run.exit_code == 0);
+  svg = ReadFile(lines_path);
+  CHECK_THAT(svg, Contains("scene: robot, R 15 mm; covering 15 mm, 27.6 MPa; head 4.5 kg"));
+  CHECK_THAT(svg, Contains("fully compressed (δ_max &gt; t2)") || Contains("fully compressed (δ_max > t2)"));
+
+  // With a safety factor the limit lines sit at the derated limits, and say so.
+  const auto scene = dir.Write("sf.toml", "[limits]\nsafety_factor = 1.5\n");
+  const auto derated_path = dir / "derated.svg";
+  run = Run({"sweep", "--scene", scene.string(), "--x", "covering-modulus=0.3MPa..300MPa:log:20",
+             "--y", "covering-thickness=2mm..40mm:20", "--plot", derated_path.string()});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  svg = ReadFile(derated_path);
+  CHECK_THAT(svg, Contains("laceration limit / 1.5 (ratio 0.6667)") &&
+                      Contains("contusion limit / 1.5 (ratio 0.6667)"));
 }
