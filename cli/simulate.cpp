@@ -30,15 +30,19 @@ std::string_view TypeName(QuantityKind kind) {
     case QuantityKind::kModulus: return "MODULUS";
     case QuantityKind::kDensity: return "DENSITY";
     case QuantityKind::kDimensionless: return "RATIO";
+    case QuantityKind::kEnergyDensity: return "ENERGY_DENSITY";
   }
   return "VALUE";
 }
 
 constexpr std::string_view kFooter = R"(Values take a unit: 10kg, 2m/s, 15mm, "15 mm", 27.6MPa, 6.5GPa, 0.3.
-A bare number is SI. Units: mass kg, g, t ('fixed' for an immovable body);
-length m, cm, mm, um ('flat' for the robot radius); speed m/s, mm/s, cm/s,
-km/h; modulus Pa, kPa, MPa, GPa, N/m2, N/mm2; Poisson ratios and tolerances
-are plain numbers. Unset values come from --scene, else the paper's scene.
+A bare number is SI, and must be plausible: --robot-radius 40 would be 40 m
+and is refused (write 40mm, or 40m if you mean it). Units: mass kg, g, t
+('fixed' for an immovable body); length m, cm, mm, um ('flat' for the robot
+radius); speed m/s, mm/s, cm/s, km/h; modulus and stress Pa, kPa, MPa, GPa,
+N/m2, N/mm2; energy density J/m2, J/cm2, kJ/m2; Poisson ratios, tolerances and
+the safety factor are plain numbers. Unset values come from --scene, else the
+paper's scene (limits 1 MPa and 2.52 J/cm2, safety factor 1).
 --material NAME takes the covering's E and ν from the catalog (built-in, plus
 --catalog files); it overrides --scene and excludes --covering-modulus/-poisson.
 
@@ -58,28 +62,65 @@ std::string IntegratorNames() {
 
 namespace {
 
-/// Sets the covering's E and ν from the --material entry (after the scene file, before the
-/// flags, which may not set them too).
-void ApplyMaterial(const SimulateOptions& options, SimulationPlan& plan) {
-  for (const auto& [name, flag] : {std::pair{"covering.modulus", "--covering-modulus"},
-                                   std::pair{"covering.poisson", "--covering-poisson"}}) {
-    if (options.scene_values.count(name) != 0) {
-      throw InputError(fmt::format("--material '{}' sets the covering's modulus and Poisson "
-                                   "ratio; give either --material or {}, not both",
-                                   *options.material, flag));
+/// Sets the covering's E and ν from a catalog entry: --material NAME, else the scene file's
+/// covering.material (after the file's values, before the flags, which may not set E or ν
+/// too).
+void ApplyMaterial(const SimulateOptions& options, const SceneFileExtras& extras,
+                   SimulationPlan& plan) {
+  const bool from_flag = options.material.has_value();
+  const std::string& name = from_flag ? *options.material : *extras.covering_material;
+  const std::string chosen =
+      from_flag ? fmt::format("--material '{}'", name)
+                : fmt::format("covering.material '{}' ({})", name, extras.covering_material_where);
+  for (const auto& [field, flag] : {std::pair{"covering.modulus", "--covering-modulus"},
+                                    std::pair{"covering.poisson", "--covering-poisson"}}) {
+    if (options.scene_values.count(field) != 0) {
+      throw InputError(fmt::format("{} sets the covering's modulus and Poisson ratio; give "
+                                   "either {} or {}, not both",
+                                   chosen, from_flag ? "--material" : "covering.material", flag));
     }
   }
   const materials::Catalog catalog = LoadCatalog(options.catalog);
-  const materials::Material* material = catalog.Find(*options.material);
+  const materials::Material* material = catalog.Find(name);
   if (material == nullptr) {
-    throw InputError("--material: " + NoSuchMaterial(catalog, *options.material));
+    throw InputError(from_flag ? "--material: " + NoSuchMaterial(catalog, name)
+                               : fmt::format("{}: covering.material: {}",
+                                             extras.covering_material_where,
+                                             NoSuchMaterial(catalog, name)));
   }
   plan.scene.covering.youngs_modulus_Pa = material->youngs_modulus_Pa;
   plan.scene.covering.poisson_ratio = materials::PoissonRatioOrDefault(*material);
-  const std::string source = fmt::format("--material '{}'", material->name);
-  plan.sources["covering.modulus"] = source;
-  plan.sources["covering.poisson"] = source;
+  plan.covering_material_source =
+      from_flag ? fmt::format("--material '{}'", material->name)
+                : fmt::format("covering.material '{}' ({})", material->name,
+                              extras.covering_material_where);
+  plan.sources["covering.modulus"] = plan.covering_material_source;
+  plan.sources["covering.poisson"] = plan.covering_material_source;
   plan.covering_material = *material;
+}
+
+/// The injury limits and the safety factor: defaults, the scene file's [limits], the flags.
+void ApplyLimits(const SimulateOptions& options, const SceneFileExtras& extras,
+                 SimulationPlan& plan) {
+  if (extras.laceration_limit_Pa) {
+    plan.limits.laceration_tensile_stress_Pa = *extras.laceration_limit_Pa;
+  }
+  if (extras.contusion_limit_J_per_m2) {
+    plan.limits.contusion_energy_density_J_per_m2 = *extras.contusion_limit_J_per_m2;
+  }
+  if (extras.safety_factor) plan.safety_factor = *extras.safety_factor;
+  for (const LimitField& field : LimitFields()) {
+    const std::optional<std::string>& typed = field.key == "laceration"  ? options.laceration_limit
+                                              : field.key == "contusion" ? options.contusion_limit
+                                                                         : options.safety_factor;
+    if (!typed) continue;
+    const double value = ParseQuantity(*typed, field.spec, field.flag);
+    CheckLimitValue(field, value, field.flag, fmt::format("'{}'", *typed));
+    if (field.key == "laceration") plan.limits.laceration_tensile_stress_Pa = value;
+    if (field.key == "contusion") plan.limits.contusion_energy_density_J_per_m2 = value;
+    if (field.key == "safety_factor") plan.safety_factor = value;
+    plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, *typed);
+  }
 }
 
 }  // namespace
@@ -112,6 +153,18 @@ void AddSceneOptions(CLI::App& sub_app, SimulateOptions& options) {
       ->type_name("NAME")
       ->group("Scene");
   AddCatalogOptions(*sub, options.catalog);
+  for (const LimitField& field : LimitFields()) {
+    if (field.key == "safety_factor") continue;  // simulate's own; sweep shows the ratios
+    const InjuryLimits defaults;
+    const double value = field.key == "laceration" ? defaults.laceration_tensile_stress_Pa
+                                                   : defaults.contusion_energy_density_J_per_m2;
+    sub->add_option(std::string(field.flag),
+                    field.key == "laceration" ? options.laceration_limit : options.contusion_limit,
+                    fmt::format("{} (default {})", field.help,
+                                FormatQuantity(value, field.spec.kind)))
+        ->type_name(field.key == "laceration" ? "STRESS" : "ENERGY_DENSITY")
+        ->group("Limits");
+  }
 }
 
 CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
@@ -120,6 +173,11 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
                   "laceration/contusion verdicts");
   sub->footer(std::string(kFooter));
   AddSceneOptions(*sub, options);
+  sub->add_option("--safety-factor", options.safety_factor,
+                  "judge each verdict against its limit divided by this factor, 1-100 "
+                  "(default 1)")
+      ->type_name("RATIO")
+      ->group("Limits");
 
   sub->add_option("--method", options.method,
                   "exact (energy balance; default), cvode (CVODE, see --cvode-method), or "
@@ -166,17 +224,20 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
   SimulationPlan plan;
 
   // The scene: defaults, then the file, then the flags.
+  SceneFileExtras extras;
   if (options.scene_file) {
-    for (std::string& name : ApplySceneFile(*options.scene_file, plan.scene)) {
+    for (std::string& name : ApplySceneFile(*options.scene_file, plan.scene, &extras)) {
       plan.sources[std::move(name)] = *options.scene_file;
     }
   }
-  if (options.material) {
-    ApplyMaterial(options, plan);
+  if (options.material || extras.covering_material) {
+    ApplyMaterial(options, extras, plan);
   } else if (options.catalog.given()) {
-    throw InputError(fmt::format("{} applies only with --material NAME",
+    throw InputError(fmt::format("{} applies only with --material NAME (or a scene file's "
+                                 "covering.material)",
                                  options.catalog.files.empty() ? "--no-builtin" : "--catalog"));
   }
+  ApplyLimits(options, extras, plan);
   for (const SceneField& field : SceneFields()) {
     const auto typed = options.scene_values.find(field.dotted_name());
     if (typed != options.scene_values.end()) {
@@ -273,7 +334,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
                                    *options.cvode_method));
     }
   }
-  const QuantitySpec tolerance{QuantityKind::kDimensionless};
+  const QuantitySpec& tolerance = quantity_specs::kTolerance;
   if (options.rtol) time.relative_tolerance = ParseQuantity(*options.rtol, tolerance, "--rtol");
   if (options.atol) {
     time.absolute_tolerance = ParseQuantity(*options.atol, tolerance, "--atol");
@@ -288,14 +349,37 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
   return plan;
 }
 
+InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const SimulationPlan& plan) {
+  InjuryAssessment assessment = Assess(peaks, plan.limits);
+  for (InjuryVerdict* verdict : {&assessment.laceration, &assessment.contusion}) {
+    verdict->safe = plan.safety_factor * verdict->ratio <= 1.0;
+  }
+  return assessment;
+}
+
 std::vector<std::string> InputWarnings(const SimulationPlan& plan) {
   std::vector<std::string> warnings;
+  if (plan.safety_factor != 1.0) {
+    const auto source = plan.sources.find("limits.safety_factor");
+    warnings.push_back(fmt::format(
+        "safety factor {:g}{}: each verdict is judged against its limit divided by {:g}, "
+        "laceration {} and contusion {} (the ratios are to the limits themselves; safe needs "
+        "a ratio <= {:.4g})",
+        plan.safety_factor,
+        source == plan.sources.end() ? "" : fmt::format(" (from {})", source->second),
+        plan.safety_factor,
+        FormatQuantity(plan.limits.laceration_tensile_stress_Pa / plan.safety_factor,
+                       QuantityKind::kModulus),
+        FormatQuantity(plan.limits.contusion_energy_density_J_per_m2 / plan.safety_factor,
+                       QuantityKind::kEnergyDensity),
+        1.0 / plan.safety_factor));
+  }
   const bool covered = plan.scene.covering.thickness_m > 0.0;
   if (plan.covering_material) {
     const materials::Material& material = *plan.covering_material;
     if (!covered) {
-      warnings.push_back(fmt::format(
-          "no covering (covering.thickness = 0), so --material '{}' is ignored", material.name));
+      warnings.push_back(fmt::format("no covering (covering.thickness = 0), so {} is ignored",
+                                     plan.covering_material_source));
       return warnings;
     }
     if (!material.poisson_ratio) {
@@ -390,20 +474,30 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
                               ToString(result.method), result.raw_code,
                               result.message.empty() ? "" : ": ", result.message));
   }
-  report.assessment = Assess(result.peaks);
+  report.assessment = JudgeInjuries(result.peaks, plan);
+  report.safety_factor = plan.safety_factor;
+  report.safety_factor = plan.safety_factor;
   for (const std::string& warning : InputWarnings(plan)) report.result.warnings.push_back(warning);
 
   try {
     // Check for gnuplot before writing anything, so that a missing tool leaves no files.
     if (plan.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
-    if (plan.history_file) WriteFileAtomically(*plan.history_file, HistoryCsv(result.history));
+    if (plan.history_file) WriteFileAtomically(*plan.history_file, HistoryCsv(*model, result.history));
     if (plan.plot_file) PlotHistory(*plan.plot_file, report, plan.plot_format);
   } catch (const OutputError& e) {
     return errors.Failed(e.what());
   }
 
   if (plan.json) {
-    out << ToJson(report).dump(2) << '\n';
+    nlohmann::ordered_json json = ToJson(report);
+    // The limits stay the limits; the derated ones and the factor join each verdict.
+    json["laceration"]["derated_limit_Pa"] =
+        JsonNumber(plan.limits.laceration_tensile_stress_Pa / plan.safety_factor);
+    json["laceration"]["safety_factor"] = plan.safety_factor;
+    json["contusion"]["derated_limit_J_per_m2"] =
+        JsonNumber(plan.limits.contusion_energy_density_J_per_m2 / plan.safety_factor);
+    json["contusion"]["safety_factor"] = plan.safety_factor;
+    out << json.dump(2) << '\n';
   } else {
     PrintTable(out, report);
   }

@@ -229,7 +229,7 @@ TEST_CASE("optimize's design flags reject bad values", "[bad-input]") {
       {{"optimize", "--threads", "two"}, {"--threads", "[1, 256]", "'two'"}},
       {{"optimize", "--material", "polystyrene"}, {"--material", "'polystyrene'", "did you mean"}},
       {{"optimize", "--family", "metal"}, {"--family", "'metal'", "foam"}},
-      {{"optimize", "--catalog", "/nonexistent.toml"}, {"--catalog", "/nonexistent.toml", "No such file"}},
+      {{"optimize", "--catalog", "/nonexistent.toml"}, {"/nonexistent.toml", "No such file"}},
       {{"optimize", "--thresholds", "strict"}, {"--thresholds", "strict", "literal"}},
       {{"optimize", "--covering-thickness", "1mm"},
        {"unknown option '--covering-thickness'", "did you mean '--thickness'?"}},
