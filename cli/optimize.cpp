@@ -15,9 +15,12 @@
 #include <nlohmann/json.hpp>
 
 #include "covopt/core/impact_model.hpp"
+#include "covopt/core/impact_result.hpp"
+#include "covopt/core/quantity.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/optim/covering_design.hpp"
 #include "errors.hpp"
+#include "materials_command.hpp"
 #include "output.hpp"
 #include "quantity.hpp"
 #include "scene_fields.hpp"
@@ -53,9 +56,9 @@ struct Resolved {
   int runners_up = 8;
 };
 
-double Parse(const std::optional<std::string>& text, QuantityKind kind, std::string_view flag,
+double Parse(const std::optional<std::string>& text, const QuantitySpec& spec, std::string_view flag,
              double fallback) {
-  return text ? ParseQuantity(*text, QuantitySpec{kind}, flag) : fallback;
+  return text ? ParseQuantity(*text, spec, flag) : fallback;
 }
 
 /// A whole number in [min, max] as typed after `flag` (no sign for min >= 0, no unit).
@@ -74,13 +77,18 @@ bool IsCoveringField(const SceneField& field) { return field.table == "covering"
 
 Resolved Resolve(const OptimizeOptions& o) {
   Resolved r;
+  DesignOptions& d = r.design;
   if (o.scene_file) {
-    for (const std::string& name : ApplySceneFile(*o.scene_file, r.scene)) {
+    SceneFileExtras extras;
+    for (const std::string& name : ApplySceneFile(*o.scene_file, r.scene, &extras)) {
       if (name.rfind("covering.", 0) == 0) {
         r.warnings.push_back(fmt::format("{} in {} is ignored: the covering is what optimize designs",
                                          name, *o.scene_file));
       }
     }
+    if (extras.laceration_limit_Pa) d.limits.laceration_tensile_stress_Pa = *extras.laceration_limit_Pa;
+    if (extras.contusion_limit_J_per_m2) d.limits.contusion_energy_density_J_per_m2 = *extras.contusion_limit_J_per_m2;
+    if (extras.safety_factor) d.safety_factor = *extras.safety_factor;
   }
   for (const SceneField& field : SceneFields()) {
     const auto typed = o.scene_values.find(field.dotted_name());
@@ -90,14 +98,18 @@ Resolved Resolve(const OptimizeOptions& o) {
   }
   if (o.thresholds) r.scene.model.thresholds = ParseThresholds(*o.thresholds, "--thresholds");
 
-  DesignOptions& d = r.design;
-  d.space.max_thickness_m = Parse(o.max_thickness, QuantityKind::kLength, "--max-thickness", d.space.max_thickness_m);
-  d.space.min_modulus_Pa = Parse(o.min_modulus, QuantityKind::kModulus, "--min-modulus", d.space.min_modulus_Pa);
-  d.space.max_modulus_Pa = Parse(o.max_modulus, QuantityKind::kModulus, "--max-modulus", d.space.max_modulus_Pa);
-  d.safety_factor = Parse(o.safety_factor, QuantityKind::kDimensionless, "--safety-factor", d.safety_factor);
-  d.covering_poisson_ratio =
-      Parse(o.covering_poisson, QuantityKind::kDimensionless, "--covering-poisson", d.covering_poisson_ratio);
-  d.thickness_step_m = Parse(o.thickness_step, QuantityKind::kLength, "--thickness-step", d.thickness_step_m);
+  namespace specs = covopt::quantity_specs;
+  d.allow_full_compression = o.allow_full_compression;
+  d.space.max_thickness_m = Parse(o.max_thickness, specs::kCoveringThickness, "--max-thickness", d.space.max_thickness_m);
+  d.space.min_modulus_Pa = Parse(o.min_modulus, specs::kCoveringModulus, "--min-modulus", d.space.min_modulus_Pa);
+  d.space.max_modulus_Pa = Parse(o.max_modulus, specs::kCoveringModulus, "--max-modulus", d.space.max_modulus_Pa);
+  d.safety_factor = Parse(o.safety_factor, specs::kSafetyFactor, "--safety-factor", d.safety_factor);
+  d.covering_poisson_ratio = Parse(o.covering_poisson, specs::kPoissonRatio, "--covering-poisson", d.covering_poisson_ratio);
+  d.thickness_step_m = Parse(o.thickness_step, specs::kThicknessStep, "--thickness-step", d.thickness_step_m);
+  d.limits.laceration_tensile_stress_Pa =
+      Parse(o.laceration_limit, specs::kLacerationLimit, "--laceration-limit", d.limits.laceration_tensile_stress_Pa);
+  d.limits.contusion_energy_density_J_per_m2 =
+      Parse(o.contusion_limit, specs::kContusionLimit, "--contusion-limit", d.limits.contusion_energy_density_J_per_m2);
   // Range checks with the flag's name (the library would name its own fields).
   auto require = [](bool ok, const std::string& message) {
     if (!ok) throw InputError(message);
@@ -109,13 +121,17 @@ Resolved Resolve(const OptimizeOptions& o) {
           fmt::format("--min-modulus/--max-modulus must satisfy 0 < min < max <= 1e13 Pa (got {} Pa, {} Pa)",
                       d.space.min_modulus_Pa, d.space.max_modulus_Pa));
   require(d.safety_factor >= 1.0 && d.safety_factor <= 100.0,
-          fmt::format("--safety-factor must be in [1, 100] (got '{}')", o.safety_factor.value_or("")));
+          fmt::format("--safety-factor must be in [1, 100] (got '{}')", o.safety_factor.value_or(fmt::format("{}", d.safety_factor))));
   require(d.covering_poisson_ratio > -1.0 && d.covering_poisson_ratio <= 0.5,
           fmt::format("--covering-poisson must be in (-1, 0.5] (got '{}')", o.covering_poisson.value_or("")));
   require(d.thickness_step_m >= 0.0 && d.thickness_step_m <= 0.01,
           fmt::format("--thickness-step must be in [0, 10 mm] (got '{}')", o.thickness_step.value_or("")));
+  require(d.limits.laceration_tensile_stress_Pa > 0.0 && d.limits.laceration_tensile_stress_Pa <= 1e9,
+          fmt::format("--laceration-limit must be in (0, 1 GPa] (got '{}')", o.laceration_limit.value_or("")));
+  require(d.limits.contusion_energy_density_J_per_m2 > 0.0 && d.limits.contusion_energy_density_J_per_m2 <= 1e7,
+          fmt::format("--contusion-limit must be in (0, 1000 J/cm²] (got '{}')", o.contusion_limit.value_or("")));
   if (o.thickness) {
-    r.thickness_m = ParseQuantity(*o.thickness, QuantitySpec{QuantityKind::kLength}, "--thickness");
+    r.thickness_m = ParseQuantity(*o.thickness, specs::kCoveringThickness, "--thickness");
     require(*r.thickness_m > 0.0 && *r.thickness_m <= 1.0,
             fmt::format("--thickness must be in (0, 1 m] (got '{}'); for no covering use "
                         "'covopt simulate --covering-thickness 0'",
@@ -132,25 +148,20 @@ Resolved Resolve(const OptimizeOptions& o) {
   if (o.runners_up) r.runners_up = static_cast<int>(ParseCount(*o.runners_up, "--top", 0, 1000000));
   if (o.threads) d.threads = static_cast<int>(ParseCount(*o.threads, "--threads", 1, 256));
 
-  // The candidates: the built-in catalog, plus --catalog, filtered.
-  materials::Catalog catalog = materials::Catalog::BuiltIn();
-  if (o.catalog_file) {
+  // The candidates: the built-in catalog and --catalog files (or only those, --no-builtin), filtered.
+  const materials::Catalog catalog = [&] {
     try {
-      catalog.Add(materials::Catalog::FromTomlFile(*o.catalog_file));
-    } catch (const materials::CatalogError& e) {
-      throw InputError(fmt::format("--catalog: {}", e.what()));
+      return LoadCatalog(o.catalog);
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      throw InputError(what.rfind("--", 0) == 0 ? what : "--catalog: " + what);
     }
-  }
+  }();
   std::vector<const materials::Material*> chosen;
   if (!o.materials.empty()) {
     for (const std::string& name : o.materials) {
       const materials::Material* m = catalog.Find(name);
-      if (!m) {
-        const auto suggestions = catalog.Suggest(name);
-        throw InputError(fmt::format("--material: no material '{}' in the catalog{}", name,
-                                     suggestions.empty() ? std::string("; see 'covopt materials list'")
-                                                         : fmt::format("; did you mean '{}'?", suggestions.front())));
-      }
+      if (!m) throw InputError(fmt::format("--material: {}", NoSuchMaterial(catalog, name)));
       chosen.push_back(m);
     }
   } else {
@@ -207,7 +218,8 @@ ordered_json ScoreJson(const DesignScore& s) {
           {"contusion_ratio", s.contusion_ratio},
           {"max_tensile_stress_Pa", s.peaks.max_tensile_stress_Pa},
           {"max_energy_density_J_per_m2", s.peaks.max_energy_density_J_per_m2},
-          {"fully_compressed", s.peaks.fully_compressed}};
+          {"fully_compressed", s.peaks.fully_compressed},
+          {"compression_ratio", s.compression_ratio}};
 }
 
 ordered_json Nullable(const std::optional<double>& v) { return v ? ordered_json(*v) : ordered_json(nullptr); }
@@ -221,6 +233,7 @@ ordered_json CandidateJson(const CandidateOutcome& c, const Resolved& r) {
                     {"min_safe_thickness_m", Nullable(c.min_safe_thickness_m)},
                     {"thickness_m", Nullable(c.recommended_thickness_m)},
                     {"evaluated_thickness_m", c.score.design.thickness_m},
+                    {"stock_thickness_beyond_max_m", Nullable(c.stock_thickness_beyond_max_m)},
                     {"safe", c.safe},
                     {"margin", c.margin}};
   j.update(ScoreJson(c.score));
@@ -229,61 +242,79 @@ ordered_json CandidateJson(const CandidateOutcome& c, const Resolved& r) {
 
 /// The sentence that answers the user's question.
 std::string Headline(DesignVerdict verdict, const std::vector<CandidateOutcome>& candidates,
-                     const std::optional<std::size_t>& recommendation, const DesignScore& continuous,
-                     bool continuous_feasible, double max_thickness, std::optional<double> thickness) {
+                     const std::optional<std::size_t>& recommendation, const optim::ContinuousOptimum& continuous,
+                     double max_thickness, std::optional<double> thickness) {
+  const DesignScore& best = continuous.score;
   switch (verdict) {
     case DesignVerdict::kBareRobotSafe:
       return "The bare robot is already safe in this scene: no covering is needed.";
     case DesignVerdict::kCoveringFound: {
-      const CandidateOutcome& best = candidates[*recommendation];
-      return fmt::format("Recommended: {} at {}.", best.material.name,
-                         Mm(*best.recommended_thickness_m));
+      const CandidateOutcome& c = candidates[*recommendation];
+      return fmt::format("Recommended: {} at {}.", c.material.name, Mm(*c.recommended_thickness_m));
     }
     case DesignVerdict::kNoSafeMaterial:
       return thickness
-                 ? fmt::format("No catalog material is safe at {}; a covering of {} would be.",
-                               Mm(*thickness), MPa(continuous.design.youngs_modulus_Pa))
-                 : fmt::format("No catalog material is safe within {}; the continuous optimum "
+                 ? fmt::format("No catalog material is admissible at {}; a covering of {} would be.",
+                               Mm(*thickness), MPa(best.design.youngs_modulus_Pa))
+                 : fmt::format("No catalog material is admissible within {}; the continuous optimum "
                                "({}, {}) would be.",
-                               Mm(max_thickness), MPa(continuous.design.youngs_modulus_Pa),
-                               Mm(continuous.design.thickness_m));
+                               Mm(max_thickness), MPa(best.design.youngs_modulus_Pa), Mm(best.design.thickness_m));
     case DesignVerdict::kNothingSafe:
       break;
   }
-  (void)continuous_feasible;
-  const std::string best = candidates.empty()
-                               ? std::string()
-                               : fmt::format(" The least unsafe material is {} (worst ratio {:.3f}).",
-                                             candidates.front().material.name,
-                                             candidates.front().score.worst_ratio());
-  return thickness ? fmt::format("Nothing is safe at {}: even the best modulus ({}) leaves a worst ratio of {:.3f}.{}",
-                                 Mm(*thickness), MPa(continuous.design.youngs_modulus_Pa),
-                                 continuous.worst_ratio(), best)
-                   : fmt::format("Nothing is safe within {}: no modulus in the search range meets both limits.{}",
-                                 Mm(max_thickness), best);
+  const std::string least =
+      candidates.empty() ? std::string()
+                         : fmt::format(" The least unsafe material is {} (worst ratio {:.3f}{}).",
+                                       candidates.front().material.name, candidates.front().score.worst_ratio(),
+                                       candidates.front().score.peaks.fully_compressed ? ", fully compressed" : "");
+  if (thickness && continuous.every_modulus_fully_compressed) {
+    return fmt::format("Nothing is admissible at {}: every modulus up to the search's maximum is fully "
+                       "compressed at the peak (the robot reaches the bone through the covering).{}",
+                       Mm(*thickness), least);
+  }
+  return thickness ? fmt::format("Nothing is admissible at {}: even the best modulus ({}) leaves a worst ratio of {:.3f}.{}",
+                                 Mm(*thickness), MPa(best.design.youngs_modulus_Pa), best.worst_ratio(), least)
+                   : fmt::format("Nothing is admissible within {}: no modulus in the search range meets the "
+                                 "criterion at any thickness.{}",
+                                 Mm(max_thickness), least);
 }
 
+/// Prints the first `rows` candidates (none for 0) and the ν footnote when a shown row needs it.
 void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& candidates, int rows,
                      bool fixed_thickness) {
-  if (candidates.empty() || rows == 0) return;
-  fmt::print(out, "\n  {:<3} {:<28} {:>9} {:>6} {:>10} {:>11} {:>10} {:>8}\n", "#", "material", "E [MPa]",
-             "ν", "thickness", "laceration", "contusion", "margin");
-  int shown = 0;
-  for (const CandidateOutcome& c : candidates) {
-    if (shown == rows) break;
+  const int shown = std::min<int>(rows, static_cast<int>(candidates.size()));
+  if (shown > 0) {
+    fmt::print(out, "  {:<3} {:<28} {:>9} {:>6} {:>10} {:>11} {:>10} {:>8}\n", "#", "material", "E [MPa]", "ν",
+               "thickness", "laceration", "contusion", "margin");
+  }
+  bool assumed_shown = false;
+  for (int i = 0; i < shown; ++i) {
+    const CandidateOutcome& c = candidates[static_cast<std::size_t>(i)];
     // Problem (b) evaluates every material at the given thickness; problem (a) shows the
-    // thinnest safe one, or "> max" when none is safe within the bound.
+    // thinnest admissible one, or "> max" when none is admissible within the bound.
     const std::string thickness = c.recommended_thickness_m || fixed_thickness
                                       ? Mm(c.score.design.thickness_m)
                                       : fmt::format("> {}", Mm(c.score.design.thickness_m));
-    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>6} {:>10} {:>11.3f} {:>10.3f} {:>8}\n", ++shown,
+    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>6} {:>10} {:>11.3f} {:>10.3f} {:>8}{}\n", i + 1,
                c.material.name.substr(0, 28), c.material.youngs_modulus_Pa * 1e-6,
                fmt::format("{:.2f}{}", c.material.poisson_ratio, c.material.poisson_assumed ? "*" : ""),
-               thickness, c.score.laceration_ratio, c.score.contusion_ratio, Percent(c.margin));
+               thickness, c.score.laceration_ratio, c.score.contusion_ratio, Percent(c.margin),
+               c.score.peaks.fully_compressed ? "  fully compressed" : "");
+    assumed_shown = assumed_shown || c.material.poisson_assumed;
   }
   if (static_cast<int>(candidates.size()) > shown) {
-    fmt::print(out, "  ... {} more (--top N, or --json for all)\n", candidates.size() - shown);
+    fmt::print(out, "  ... {} {} (--top N, or --json for all)\n", candidates.size() - shown,
+               shown > 0 ? "more" : "candidates");
   }
+  if (assumed_shown) fmt::print(out, "  * ν unknown for this material: 0.25 assumed\n");
+}
+
+/// "the covering is compressed to 94 % of its travel at the peak" and the like.
+std::string CompressionWords(const DesignScore& s) {
+  if (s.bare()) return "";
+  if (s.peaks.fully_compressed) return "fully compressed at the peak";
+  if (s.compression_ratio > 0.9995) return "at the edge of full compression at the peak";
+  return fmt::format("{:.0f} % of the way to full compression at the peak", 100.0 * s.compression_ratio);
 }
 
 }  // namespace
@@ -314,6 +345,16 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
       ->type_name("MODULUS")->group("Design");
   sub->add_option("--safety-factor", options.safety_factor, "ratios must stay <= 1/factor (default 1)")
       ->type_name("X")->group("Design");
+  sub->add_flag("--allow-full-compression", options.allow_full_compression,
+                "the paper's criterion: a covering fully compressed at the peak may count as safe "
+                "(default: it may not, the robot must never reach bone through it)")
+      ->group("Design");
+  sub->add_option("--laceration-limit", options.laceration_limit,
+                  "tensile stress that lacerates the scalp (default 1MPa)")
+      ->type_name("STRESS")->group("Design");
+  sub->add_option("--contusion-limit", options.contusion_limit,
+                  "energy density that bruises (default 2.52J/cm2)")
+      ->type_name("ENERGY/AREA")->group("Design");
   sub->add_option("--thickness", options.thickness, "fixed thickness: find the least injury there instead")
       ->type_name("LENGTH")->group("Design");
   sub->add_option("--covering-poisson", options.covering_poisson, "ν of the continuous design (default 0.25)")
@@ -321,8 +362,7 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
   sub->add_option("--thickness-step", options.thickness_step,
                   "round recommended thicknesses up to a multiple of this (default 0.5 mm; 0 = exact)")
       ->type_name("LENGTH")->group("Design");
-  sub->add_option("--catalog", options.catalog_file, "a catalog file whose materials are added to the built-in ones")
-      ->type_name("FILE.toml")->group("Materials");
+  AddCatalogOptions(*sub, options.catalog);
   sub->add_option("--family", options.families, "only materials of this family (repeatable)")
       ->type_name("NAME")->group("Materials");
   sub->add_option("--material", options.materials, "only this catalog material (repeatable)")
@@ -389,39 +429,61 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                              global.termination == optim::Termination::kTimeLimit ||
                              global.termination == optim::Termination::kRoundoffLimited;
   if (!global_usable) {
-    fmt::print(err,
-               "covopt optimize: the global search failed: {} ({} code {} {}); no fallback is "
-               "available\n",
-               optim::ToString(global.termination), global.backend, global.raw_code, global.raw_name);
-    return 1;
+    // Not an error: stage 1 only brackets; the nested search answers on its own.
+    r.warnings.push_back(fmt::format("the global stage failed: {} ({} code {} {}); its point was not used, the "
+                                     "bracketed search answered alone",
+                                     optim::ToString(global.termination), global.backend, global.raw_code,
+                                     global.raw_name));
   }
-  headline = Headline(verdict, candidates, recommendation, continuous.score, continuous.feasible,
-                      r.design.space.max_thickness_m, r.thickness_m);
-  // DESIGN.md §5.3: say when a design works only with the covering bottomed out.
-  if (recommendation && candidates[*recommendation].score.peaks.fully_compressed) {
-    r.warnings.push_back(fmt::format(
-        "the recommended covering is fully compressed at the peak (the robot reaches the bone "
-        "through it): its margin rests on the stiff robot-bone phase of the model; a thicker "
-        "covering is more robust"));
+  const optim::SolverReport& local = continuous.local;
+  if (!local.backend.empty() && local.termination != optim::Termination::kConverged &&
+      local.termination != optim::Termination::kAcceptable) {
+    r.warnings.push_back(fmt::format("the local polish failed: {} ({} code {} {}); the bracketed search's point "
+                                     "is reported",
+                                     optim::ToString(local.termination), local.backend, local.raw_code, local.raw_name));
   }
-  if (continuous.score.peaks.fully_compressed) {
+  const optim::DesignCriterion criterion = r.design.criterion();
+  const bool bare_safe = bare.safe(sf);
+  headline = Headline(verdict, candidates, recommendation, continuous, r.design.space.max_thickness_m, r.thickness_m);
+  std::optional<CandidateOutcome> recommended;
+  if (recommendation) recommended = candidates[*recommendation];
+  if (recommended) {
+    // docs/model.md §5: a design that works only with the covering bottomed out (paper's criterion).
+    if (recommended->score.peaks.fully_compressed) {
+      r.warnings.push_back(
+          "the recommended covering is fully compressed at the peak (the robot reaches the bone through it): "
+          "its margin rests on the stiff robot-bone phase of the model; without --allow-full-compression it "
+          "would not be admissible");
+    }
+    // Where the recommended design leaves the model's domain (core's validity checks).
+    Scene covered = r.scene;
+    covered.covering = {recommended->material.youngs_modulus_Pa, recommended->material.poisson_ratio,
+                        *recommended->recommended_thickness_m};
+    for (const std::string& w : ValidityWarnings(ImpactModel::FromScene(covered), recommended->score.peaks)) {
+      if (w.find("fully compressed") == std::string::npos) r.warnings.push_back("recommended covering: " + w);
+    }
+  }
+  if (!bare_safe && continuous.score.peaks.fully_compressed) {
     r.warnings.push_back(
-        "the continuous optimum is fully compressed at the peak (the robot reaches the bone "
-        "through the covering)");
+        "the continuous optimum is fully compressed at the peak (the robot reaches the bone through the covering)");
   }
   const bool from_ipopt = continuous.source == "ipopt";
-  const optim::Termination termination = from_ipopt ? continuous.local.termination : global.termination;
+  const optim::Termination termination = from_ipopt ? local.termination : continuous.bracket.termination;
+  const double laceration_limit = r.design.limits.laceration_tensile_stress_Pa;
+  const double contusion_limit = r.design.limits.contusion_energy_density_J_per_m2;
 
   if (options.json) {
     j["problem"] = r.thickness_m ? "least-injury-at-thickness" : "thinnest-safe-covering";
+    j["criterion"] = optim::ToString(criterion);
     j["verdict"] = optim::ToString(verdict);
     j["summary"] = headline;
-    if (recommendation) {
-      const CandidateOutcome& c = candidates[*recommendation];
+    if (recommended) {
+      const CandidateOutcome& c = *recommended;
       ordered_json rec = {{"material", c.material.name},
                           {"family", r.families[c.material.name]},
                           {"thickness_m", *c.recommended_thickness_m},
                           {"min_safe_thickness_m", Nullable(c.min_safe_thickness_m)},
+                          {"stock_thickness_beyond_max_m", Nullable(c.stock_thickness_beyond_max_m)},
                           {"youngs_modulus_Pa", c.material.youngs_modulus_Pa},
                           {"poisson_ratio", c.material.poisson_ratio},
                           {"poisson_assumed", c.material.poisson_assumed},
@@ -429,7 +491,8 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                           {"contusion_ratio", c.score.contusion_ratio},
                           {"margin", c.margin},
                           {"safe", c.safe},
-                          {"fully_compressed", c.score.peaks.fully_compressed}};
+                          {"fully_compressed", c.score.peaks.fully_compressed},
+                          {"compression_ratio", c.score.compression_ratio}};
       j["recommendation"] = rec;
     } else {
       j["recommendation"] = nullptr;
@@ -440,11 +503,15 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                                {"laceration_ratio", continuous.score.laceration_ratio},
                                {"contusion_ratio", continuous.score.contusion_ratio},
                                {"safe", continuous.score.safe(sf)},
+                               {"admissible", continuous.score.admissible(sf, criterion)},
                                {"fully_compressed", continuous.score.peaks.fully_compressed},
+                               {"compression_ratio", continuous.score.compression_ratio},
+                               {"every_modulus_fully_compressed", continuous.every_modulus_fully_compressed},
+                               {"needed", !bare_safe},
                                {"source", continuous.source}};
     j["bare_robot"] = {{"laceration_ratio", bare.laceration_ratio},
                        {"contusion_ratio", bare.contusion_ratio},
-                       {"safe", bare.safe(sf)}};
+                       {"safe", bare_safe}};
     ordered_json list = ordered_json::array();
     for (const CandidateOutcome& c : candidates) list.push_back(CandidateJson(c, r));
     j["candidates"] = list;
@@ -452,10 +519,13 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                    {"evaluations", evaluations},
                    {"seconds", seconds},
                    {"global", SolverJson(global)},
-                   {"local", SolverJson(continuous.local)}};
+                   {"bracket", SolverJson(continuous.bracket)},
+                   {"local", SolverJson(local)}};
     j["safety_factor"] = sf;
-    j["limits"] = {{"laceration_Pa", r.design.limits.laceration_tensile_stress_Pa},
-                   {"contusion_J_per_m2", r.design.limits.contusion_energy_density_J_per_m2}};
+    j["limits"] = {{"laceration_Pa", laceration_limit},
+                   {"contusion_J_per_m2", contusion_limit},
+                   {"derated_laceration_Pa", laceration_limit / sf},
+                   {"derated_contusion_J_per_m2", contusion_limit / sf}};
     j["design_space"] = {{"min_modulus_Pa", r.design.space.min_modulus_Pa},
                          {"max_modulus_Pa", r.design.space.max_modulus_Pa},
                          {"min_thickness_m", r.design.space.min_thickness_m},
@@ -478,53 +548,77 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   if (const auto at = headline_scene.find("no covering"); at != std::string::npos) {
     headline_scene.replace(at, 11, "covering to be designed");
   }
-  fmt::print(out, "Scene   {}\n", headline_scene);
-  fmt::print(out, "Limits  laceration {} MPa, contusion {} J/cm², safety factor {:g}{}\n",
-             r.design.limits.laceration_tensile_stress_Pa * 1e-6,
-             r.design.limits.contusion_energy_density_J_per_m2 * 1e-4, sf,
+  fmt::print(out, "Scene      {}\n", headline_scene);
+  fmt::print(out, "Limits     laceration {:g} MPa, contusion {:g} J/cm², safety factor {:g}{}{}\n", laceration_limit * 1e-6,
+             contusion_limit * 1e-4, sf,
+             sf > 1 ? fmt::format(": designed to {:.4g} MPa and {:.4g} J/cm²", laceration_limit * 1e-6 / sf,
+                                  contusion_limit * 1e-4 / sf)
+                    : std::string(),
              r.thickness_m ? fmt::format("; thickness fixed at {}", Mm(*r.thickness_m))
                            : fmt::format("; thickness up to {}", Mm(r.design.space.max_thickness_m)));
+  fmt::print(out, "Criterion  {}\n",
+             criterion == optim::DesignCriterion::kNoFullCompression
+                 ? "safe, and the covering not fully compressed at the peak (the robot never reaches bone "
+                   "through it); --allow-full-compression for the paper's"
+                 : "the paper's: safe (both ratios within the limits), even if the covering is fully compressed "
+                   "at the peak");
   fmt::print(out, "\n{}\n", headline);
-  if (recommendation) {
-    const CandidateOutcome& c = candidates[*recommendation];
+  if (recommended) {
+    const CandidateOutcome& c = *recommended;
     fmt::print(out, "  {} ({}), E {}, ν {:.2f}{}\n", c.material.name, r.families[c.material.name],
                MPa(c.material.youngs_modulus_Pa), c.material.poisson_ratio,
                c.material.poisson_assumed ? " (ν unknown, 0.25 assumed)" : "");
-    fmt::print(out, "  laceration ratio {:.3f}, contusion ratio {:.3f}: margin {} of the limit{}\n",
+    fmt::print(out, "  laceration ratio {:.3f}, contusion ratio {:.3f}: margin {} of the {}; {}\n",
                c.score.laceration_ratio, c.score.contusion_ratio, Percent(c.margin),
-               sf > 1 ? " divided by the safety factor" : "");
+               sf > 1 ? "derated limit" : "limit", CompressionWords(c.score));
     if (c.min_safe_thickness_m && !r.thickness_m) {
-      fmt::print(out, "  thinnest safe thickness {}, rounded up to {}\n", Mm(*c.min_safe_thickness_m),
-                 Mm(*c.recommended_thickness_m));
+      if (c.stock_thickness_beyond_max_m) {
+        fmt::print(out,
+                   "  thinnest admissible thickness {}; rounding up to stock ({}) would pass the maximum {}, "
+                   "so {} is recommended (cut to size)\n",
+                   Mm(*c.min_safe_thickness_m), Mm(*c.stock_thickness_beyond_max_m),
+                   Mm(r.design.space.max_thickness_m), Mm(*c.recommended_thickness_m));
+      } else if (*c.recommended_thickness_m > *c.min_safe_thickness_m) {
+        fmt::print(out, "  thinnest admissible thickness {}, rounded up to {} (a multiple of {})\n",
+                   Mm(*c.min_safe_thickness_m), Mm(*c.recommended_thickness_m), Mm(r.design.thickness_step_m));
+      } else {
+        fmt::print(out, "  thinnest admissible thickness {}\n", Mm(*c.min_safe_thickness_m));
+      }
     }
   }
-  fmt::print(out, "\nBare robot      laceration ratio {:.3f}, contusion ratio {:.3f}: {}\n", bare.laceration_ratio,
-             bare.contusion_ratio, bare.safe(sf) ? "safe" : "UNSAFE");
-  fmt::print(out, "Continuous {}  E_c* = {}, b_c* = {} (ν {:.2f}): laceration {:.3f}, contusion {:.3f}{}\n",
-             r.thickness_m ? "best " : "optimum", MPa(continuous.score.design.youngs_modulus_Pa),
-             Mm(continuous.score.design.thickness_m), continuous.score.poisson_ratio,
-             continuous.score.laceration_ratio, continuous.score.contusion_ratio,
-             continuous.score.safe(sf) ? "" : " (not safe)");
-  if (recommendation && !r.thickness_m) {
-    const CandidateOutcome& c = candidates[*recommendation];
-    fmt::print(out, "                the recommendation is {:.2f}x its modulus and {} thicker\n",
-               c.material.youngs_modulus_Pa / continuous.score.design.youngs_modulus_Pa,
-               Mm(*c.recommended_thickness_m - continuous.score.design.thickness_m));
+  fmt::print(out, "\nBare robot          laceration ratio {:.3f}, contusion ratio {:.3f}: {}\n", bare.laceration_ratio,
+             bare.contusion_ratio, bare_safe ? "safe" : "UNSAFE");
+  if (bare_safe && !r.thickness_m) {
+    fmt::print(out, "Continuous optimum  none needed: the bare robot is safe\n");
+  } else {
+    const DesignScore& best = continuous.score;
+    fmt::print(out, "Continuous {}  E_c* = {}, b_c* = {} (ν {:.2f}): laceration {:.3f}, contusion {:.3f}, {}{}\n",
+               r.thickness_m ? "best    " : "optimum", MPa(best.design.youngs_modulus_Pa), Mm(best.design.thickness_m),
+               best.poisson_ratio, best.laceration_ratio, best.contusion_ratio, CompressionWords(best),
+               best.admissible(sf, criterion) ? "" : " (not admissible)");
+    if (recommended && !r.thickness_m && continuous.feasible) {
+      const CandidateOutcome& c = *recommended;
+      const double extra = *c.recommended_thickness_m - best.design.thickness_m;
+      fmt::print(out, "                    the recommendation is {:.2f}x its modulus and {} {}\n",
+                 c.material.youngs_modulus_Pa / best.design.youngs_modulus_Pa, Mm(std::abs(extra)),
+                 extra >= 0 ? "thicker" : "thinner");
+    }
   }
-  fmt::print(out, "\nCandidates ({}){}", r.thickness_m ? "by margin at this thickness" : "by thinnest safe thickness",
-             candidates.empty() ? ": none (the catalog filter left nothing)\n" : "");
+  fmt::print(out, "\nCandidates ({})\n",
+             candidates.empty() ? "none: the catalog filter left nothing"
+             : r.thickness_m    ? "admissible first, then by margin at this thickness"
+                                : "admissible first, by stock thickness then margin; then the rest by margin at the "
+                                  "maximum thickness");
   PrintCandidates(out, candidates, r.runners_up, r.thickness_m.has_value());
-  if (std::any_of(candidates.begin(), candidates.end(), [](const CandidateOutcome& c) { return c.material.poisson_assumed; })) {
-    fmt::print(out, "  * ν unknown for this material: 0.25 assumed\n");
-  }
-  fmt::print(out, "\nSolver  global {}: {} ({} evaluations); local {}; {} exact-path evaluations, {:.1f} ms\n",
+  fmt::print(out, "\nSolver  global {}: {} ({} evaluations); bracket: {} ({} evaluations); local {}; {} exact-path "
+                  "evaluations, {:.1f} ms\n",
              global.backend, optim::ToString(global.termination), global.objective_evaluations,
-             continuous.local.backend.empty()
-                 ? std::string("not run")
-                 : fmt::format("{}: {} ({}), kept: {}", continuous.local.backend,
-                               optim::ToString(continuous.local.termination), continuous.local.raw_name,
-                               continuous.source),
+             optim::ToString(continuous.bracket.termination), continuous.bracket.objective_evaluations,
+             local.backend.empty() ? std::string("not run")
+                                   : fmt::format("{}: {} ({})", local.backend, optim::ToString(local.termination),
+                                                 local.raw_name),
              evaluations, seconds * 1e3);
+  fmt::print(out, "        kept: {}\n", continuous.source);
   for (const std::string& w : r.warnings) fmt::print(out, "Warning: {}\n", w);
   return 0;
 }

@@ -3,9 +3,9 @@
 /// `covopt optimize`: which real covering material, how thick, and with what margin.
 ///
 /// The scene (without covering) comes from Scene{}, --scene and the scene flags as in
-/// `covopt simulate`. Problem (a), the default: the thinnest covering that keeps the
-/// laceration and contusion ratios <= 1/safety factor, continuous (E_c, b_c) and snapped to
-/// every catalog material. Problem (b), with --thickness: the covering with the least injury
+/// `covopt simulate`. Problem (a), the default: the thinnest admissible covering — the
+/// laceration and contusion ratios <= 1/safety factor and (default criterion) the covering not
+/// fully compressed at the peak — continuous (E_c, b_c) and snapped to every catalog material. Problem (b), with --thickness: the covering with the least injury
 /// at that thickness. Exit codes: 0 an answer (including "nothing is safe"), 1 the search
 /// failed, 2 bad input.
 
@@ -14,6 +14,8 @@
 #include <ostream>
 #include <string>
 #include <vector>
+
+#include "materials_command.hpp"
 
 namespace CLI {
 class App;
@@ -30,11 +32,16 @@ struct OptimizeOptions {
   std::optional<std::string> max_thickness;     ///< --max-thickness (default 50 mm)
   std::optional<std::string> min_modulus;       ///< --min-modulus (default 0.1 MPa)
   std::optional<std::string> max_modulus;       ///< --max-modulus (default 1 GPa)
-  std::optional<std::string> safety_factor;     ///< --safety-factor (default 1)
+  std::optional<std::string> safety_factor;     ///< --safety-factor (default 1, or the scene file's)
+  std::optional<std::string> laceration_limit;  ///< --laceration-limit (default 1 MPa)
+  std::optional<std::string> contusion_limit;   ///< --contusion-limit (default 2.52 J/cm²)
+  /// --allow-full-compression: the paper's criterion (safety only) instead of the default
+  /// "no-full-compression" (safe and the covering not fully compressed at the peak).
+  bool allow_full_compression = false;
   std::optional<std::string> thickness;         ///< --thickness: problem (b)
   std::optional<std::string> covering_poisson;  ///< ν of the continuous design (0.25)
   std::optional<std::string> thickness_step;    ///< --thickness-step (default 0.5 mm)
-  std::optional<std::string> catalog_file;      ///< --catalog: added to the built-in one
+  CatalogOptions catalog;                       ///< --catalog FILE (repeatable), --no-builtin
   std::vector<std::string> families;            ///< --family (repeatable)
   std::vector<std::string> materials;           ///< --material (repeatable): only these
   std::optional<std::string> global_algorithm;  ///< --global direct-l|isres|mlsl

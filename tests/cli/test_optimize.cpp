@@ -2,8 +2,13 @@
 // JSON matches the library's own answer for the same inputs (no hard-coded numbers), the
 // paper's four materials rank as the library ranks them, --thickness switches to the
 // least-injury problem, infeasible scenes are answers (exit 0), and bad input is exit 2 with
-// one message naming the flag and nothing on stdout.
+// one message naming the flag and nothing on stdout. The issue-10 regressions: the design
+// criterion (a 2 kg robot is not "saved" by a bottomed-out sliver), the scenes the old global
+// stage missed, stock rounding past the maximum, derated limits, --top 0, the table's order,
+// float noise, limits from flags and scene files, several catalogs.
 #include <catch2/catch.hpp>
+
+#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -95,10 +100,13 @@ TEST_CASE("an impossible scene is an answer with exit 0", "[optimize]") {
   const auto run = Run({"optimize", "--speed", "8m/s"});
   INFO(run.err);
   CHECK(run.exit_code == 0);
-  CHECK_THAT(run.out, Catch::Contains("Nothing is safe"));
+  CHECK_THAT(run.out, Catch::Contains("Nothing is admissible"));
   const auto gentle = Run({"optimize", "--speed", "0.2m/s"});
   CHECK(gentle.exit_code == 0);
   CHECK_THAT(gentle.out, Catch::Contains("no covering is needed"));
+  // No continuous optimum is presented as a design when none is needed.
+  CHECK_THAT(gentle.out, Catch::Contains("Continuous optimum  none needed: the bare robot is safe"));
+  CHECK_THAT(gentle.out, !Catch::Contains("E_c* ="));
 }
 
 TEST_CASE("optimize rejects bad input with exit 2, naming the flag", "[optimize]") {
@@ -117,6 +125,12 @@ TEST_CASE("optimize rejects bad input with exit 2, naming the flag", "[optimize]
       {{"optimize", "--speed", "-2m/s"}, "robot.speed"},
       {{"optimize", "--catalog", "/no/such/file.toml"}, "--catalog"},
       {{"optimize", "--covering-thickness", "15mm"}, "covering-thickness"},
+      {{"optimize", "--robot-radius", "40"}, "--robot-radius 40: a bare number is in metres (40 m); write 40mm or 40m"},
+      {{"optimize", "--max-thickness", "15"}, "--max-thickness"},
+      {{"optimize", "--thickness", "15"}, "--thickness"},
+      {{"optimize", "--laceration-limit", "-1MPa"}, "--laceration-limit"},
+      {{"optimize", "--contusion-limit", "2.52kg"}, "--contusion-limit"},
+      {{"optimize", "--no-builtin"}, "--catalog"},
   };
   for (const Case& c : cases) {
     const auto run = Run(c.args);
@@ -125,4 +139,138 @@ TEST_CASE("optimize rejects bad input with exit 2, naming the flag", "[optimize]
     CHECK(run.out.empty());
     CHECK_THAT(run.err, Catch::Contains(c.mention));
   }
+}
+
+namespace {
+
+json OptimizeJson(std::vector<std::string> args) {
+  args.insert(args.begin(), {"optimize", "--json"});
+  const auto run = Run(args);
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  return json::parse(run.out);
+}
+
+}  // namespace
+
+TEST_CASE("optimize never recommends a covering that bottoms out unless asked to (2 kg robot)", "[optimize]") {
+  const json strict = OptimizeJson({"--robot-mass", "2kg"});
+  CHECK(strict["criterion"] == "no-full-compression");
+  CHECK(strict["bare_robot"]["safe"] == false);
+  REQUIRE(strict["recommendation"].is_object());
+  CHECK(strict["recommendation"]["fully_compressed"] == false);
+  CHECK(strict["recommendation"]["thickness_m"].get<double>() > 2e-3);
+  CHECK(strict["continuous_optimum"]["fully_compressed"] == false);
+  for (const json& c : strict["candidates"]) {
+    if (c["safe"] == true) CHECK(c["fully_compressed"] == false);
+  }
+  // The paper's criterion takes the 0.5 mm sliver of sponge rubber that is fully compressed.
+  const json paper = OptimizeJson({"--robot-mass", "2kg", "--allow-full-compression"});
+  CHECK(paper["criterion"] == "paper");
+  CHECK(paper["recommendation"]["thickness_m"].get<double>() <= 0.5e-3);
+  CHECK(paper["recommendation"]["fully_compressed"] == true);
+  CHECK(paper["continuous_optimum"]["fully_compressed"] == true);
+  // With at most 0.3 mm nothing is admissible by default (the paper's criterion took 0.10 mm).
+  const json thin = OptimizeJson({"--robot-mass", "2kg", "--max-thickness", "0.3mm"});
+  CHECK(thin["recommendation"].is_null());
+  CHECK(thin["verdict"] == "nothing-safe");
+  CHECK(thin["continuous_optimum"]["admissible"] == false);
+}
+
+TEST_CASE("optimize names its criterion in the table and moves the paper's optimum past 15 mm", "[optimize]") {
+  const auto run = Run({"optimize"});
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.out, Catch::Contains("Criterion  safe, and the covering not fully compressed at the peak"));
+  const auto paper = Run({"optimize", "--allow-full-compression"});
+  CHECK_THAT(paper.out, Catch::Contains("Criterion  the paper's"));
+  const json j = OptimizeJson({});
+  CHECK(j["continuous_optimum"]["thickness_m"].get<double>() == Approx(15.06e-3).margin(0.01e-3));
+  CHECK(j["continuous_optimum"]["youngs_modulus_Pa"].get<double>() == Approx(16.1e6).epsilon(0.01));
+  const json p = OptimizeJson({"--allow-full-compression"});
+  CHECK(p["continuous_optimum"]["thickness_m"].get<double>() == Approx(14.23e-3).margin(0.01e-3));
+  // --thickness uses the same criterion: at 15 mm nothing is admissible, for the paper it is.
+  CHECK(OptimizeJson({"--thickness", "15mm"})["continuous_optimum"]["admissible"] == false);
+  CHECK(OptimizeJson({"--thickness", "15mm", "--allow-full-compression"})["continuous_optimum"]["admissible"] == true);
+}
+
+TEST_CASE("optimize finds the thin designs the old global stage missed", "[optimize]") {
+  struct Case {
+    std::vector<std::string> args;
+    double thickness_m;
+  };
+  for (const Case& c : {Case{{"--robot-mass", "2.576", "--speed", "1.45657", "--robot-radius", "13.548mm", "--safety-factor", "1.5"}, 6.79e-3},
+                        Case{{"--robot-mass", "18.372", "--speed", "1.14464", "--robot-radius", "10.744mm"}, 6.61e-3},
+                        Case{{"--robot-mass", "3.19", "--speed", "2.46155", "--robot-radius", "26.31mm"}, 9.97e-3}}) {
+    std::vector<std::string> args = c.args;
+    args.push_back("--allow-full-compression");
+    const json j = OptimizeJson(args);
+    INFO(j["continuous_optimum"].dump());
+    CHECK(j["continuous_optimum"]["thickness_m"].get<double>() == Approx(c.thickness_m).margin(0.01e-3));
+    CHECK(j["continuous_optimum"]["admissible"] == true);
+    CHECK(j["solver"]["bracket"]["termination"] == "converged");
+  }
+}
+
+TEST_CASE("optimize says what it does with stock rounding, safety factors and the candidate table", "[optimize]") {
+  // The recommendation's exact thickness lies just under 16 mm: a 15.8 mm maximum forbids the stock 16 mm.
+  const json free = OptimizeJson({"--material", "XPS Foamular 250"});
+  const double exact = free["recommendation"]["min_safe_thickness_m"].get<double>();
+  CHECK(free["recommendation"]["thickness_m"].get<double>() == 0.016);  // no float noise
+  CHECK_THAT(json(free["recommendation"]["thickness_m"]).dump(), Catch::Equals("0.016"));
+  const std::string max = std::to_string((exact + 0.016) / 2 * 1e3) + "mm";
+  const auto capped = Run({"optimize", "--material", "XPS Foamular 250", "--max-thickness", max});
+  REQUIRE(capped.exit_code == 0);
+  CHECK_THAT(capped.out, Catch::Contains("rounding up to stock (16.00 mm) would pass the maximum"));
+  CHECK_THAT(capped.out, !Catch::Contains("rounded up to"));
+  // A safety factor: the derated limits are shown.
+  const auto derated = Run({"optimize", "--safety-factor", "2", "--top", "1"});
+  CHECK_THAT(derated.out, Catch::Contains("safety factor 2: designed to 0.5 MPa and 1.26 J/cm²"));
+  CHECK_THAT(derated.out, Catch::Contains("of the derated limit"));
+  // --top 0: the table is left out cleanly; the ν footnote only with a row that needs it.
+  const auto none = Run({"optimize", "--top", "0"});
+  CHECK_THAT(none.out, Catch::Contains("Candidates (admissible first, by stock thickness then margin; then the rest by "
+                                       "margin at the maximum thickness)\n  ... 29 candidates"));
+  CHECK_THAT(none.out, !Catch::Contains("assumed\n  #"));
+  CHECK_THAT(none.out, !Catch::Contains("* ν unknown"));
+  // The table follows its stated order: admissible by stock thickness then margin, then the rest.
+  const json all = OptimizeJson({});
+  bool seen_inadmissible = false;
+  double last_thickness = 0.0, last_margin = 1e9;
+  for (const json& c : all["candidates"]) {
+    if (c["safe"] == false) {
+      seen_inadmissible = true;
+      continue;
+    }
+    CHECK_FALSE(seen_inadmissible);
+    const double t = c["thickness_m"].get<double>(), m = c["margin"].get<double>();
+    CHECK(t >= last_thickness);
+    if (t == last_thickness) CHECK(m <= last_margin);
+    last_thickness = t;
+    last_margin = m;
+  }
+}
+
+TEST_CASE("optimize takes limits from flags and scene files, and several catalogs", "[optimize]") {
+  const json standard = OptimizeJson({"--thickness", "20mm", "--top", "1"});
+  const json halved = OptimizeJson({"--thickness", "20mm", "--laceration-limit", "0.5MPa", "--contusion-limit", "1.26J/cm2"});
+  CHECK(halved["limits"]["laceration_Pa"].get<double>() == 0.5e6);
+  CHECK(halved["bare_robot"]["contusion_ratio"].get<double>() ==
+        Approx(2 * standard["bare_robot"]["contusion_ratio"].get<double>()).epsilon(1e-12));
+  covopt::cli::testing::TempDir dir;
+  const auto scene = dir.path() / "scene.toml";
+  std::ofstream(scene) << "[limits]\nsafety_factor = 1.5\ncontusion = \"2.52J/cm2\"\n[covering]\nmaterial = \"EPS geofoam EPS39\"\n";
+  const json from_file = OptimizeJson({"--scene", scene.string()});
+  CHECK(from_file["safety_factor"].get<double>() == 1.5);
+  bool warned = false;
+  for (const json& w : from_file["warnings"]) warned = warned || w.get<std::string>().find("covering.material") != std::string::npos;
+  CHECK(warned);
+  CHECK(OptimizeJson({"--scene", scene.string(), "--safety-factor", "1"})["safety_factor"].get<double>() == 1.0);
+  // --catalog twice and --no-builtin, as in the other subcommands.
+  const auto a = dir.path() / "a.toml", b = dir.path() / "b.toml";
+  std::ofstream(a) << "[[material]]\nname = \"my foam A\"\nfamily = \"foam\"\nyoungs_modulus_Pa = \"12MPa\"\npoisson_ratio = 0.3\n"
+                      "modulus_basis = \"as-printed\"\nsource = \"test\"\n";
+  std::ofstream(b) << "[[material]]\nname = \"my foam B\"\nfamily = \"foam\"\nyoungs_modulus_Pa = \"30MPa\"\npoisson_ratio = 0.3\n"
+                      "modulus_basis = \"as-printed\"\nsource = \"test\"\n";
+  const json mine = OptimizeJson({"--no-builtin", "--catalog", a.string(), "--catalog", b.string()});
+  CHECK(mine["candidates"].size() == 2);
 }
