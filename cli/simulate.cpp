@@ -475,8 +475,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
                               result.message.empty() ? "" : ": ", result.message));
   }
   report.assessment = JudgeInjuries(result.peaks, plan);
-  report.safety_factor = plan.safety_factor;
-  report.safety_factor = plan.safety_factor;
+  report.safety_factor = plan.safety_factor;  // the chart draws the derated limits
   for (const std::string& warning : InputWarnings(plan)) report.result.warnings.push_back(warning);
 
   try {
