@@ -217,7 +217,7 @@ class ModulusSearch {
       : oracle_(oracle), o_(o), lo_(std::log10(o.space.min_modulus_Pa)), hi_(std::log10(o.space.max_modulus_Pa)) {}
 
   /// The admissible interval of moduli at `thickness_m`, and the least worst ratio on it.
-  /// With `screen` set, a thickness whose scanned worst ratio is far above the limit (x1.5)
+  /// With `screen` set, a thickness whose scanned worst ratio is far above the limit (x3)
   /// is not refined: its sampled minimum already shows it inadmissible (the ratios change by
   /// a few percent between scan points, which are 1/points_per_decade decades apart).
   ModulusChoice Best(double thickness_m, bool screen = false) const {
@@ -282,7 +282,7 @@ class ModulusSearch {
 
  private:
   static constexpr double kLogModulusTolerance = 1e-12;
-  static constexpr double kScreenFactor = 1.5;
+  static constexpr double kScreenFactor = 3.0;
   static constexpr double kRefineWithin = 1.05;
   static constexpr std::size_t kMaxRefinedMinima = 3;
 

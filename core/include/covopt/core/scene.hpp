@@ -5,7 +5,7 @@
 /// A Scene is what a user writes (or a scene file / the CLI fills in). It is not checked
 /// here; ImpactModel::FromScene validates it and throws std::invalid_argument naming the
 /// offending field. Defaults are the values of Park et al. (ICRA 2011) and of
-/// shared DESIGN.md §1: the paper's Sec. IV scene (10 kg robot at 2 m/s, R_r = 15 mm)
+/// docs/model.md §1: the paper's Sec. IV scene (10 kg robot at 2 m/s, R_r = 15 mm)
 /// against a free 4.5 kg head, wearing the paper's recommended 15 mm, 27.6 MPa covering.
 
 #include <limits>
@@ -18,12 +18,12 @@ inline constexpr double kFixed = std::numeric_limits<double>::infinity();
 /// Use as a radius [m] for a flat robot surface.
 inline constexpr double kFlat = std::numeric_limits<double>::infinity();
 
-/// How the phase thresholds of the piecewise force law are placed (DESIGN.md §2, §4).
+/// How the phase thresholds of the piecewise force law are placed (docs/model.md §2, §4).
 enum class ThresholdReading {
   /// Default. Phase 2 (covering on bone) starts at t1 = 0.8 b_s, phase 3 (robot on bone)
   /// at t2 = t1 + 0.8 b_c: the scalp and the covering compress one after the other.
   kCumulative,
-  /// The paper's literal text: phase 3 starts at t2 = 0.8 b_c. Rejected by DESIGN.md §4
+  /// The paper's literal text: phase 3 starts at t2 = 0.8 b_c. Rejected by docs/model.md §4
   /// (it contradicts the paper's own Sec. IV numbers) and kept for comparison. When
   /// 0.8 b_c < 0.8 b_s the if-chain of eq. (2) is ill-ordered: phase 2 vanishes and the
   /// force jumps at t1, exactly as the literal equation says. Without a covering
@@ -51,12 +51,12 @@ struct RobotSpec {
 };
 
 /// The soft covering on the robot. thickness_m == 0 means no covering: the robot itself
-/// touches the scalp (DESIGN.md §2), and modulus and Poisson ratio are ignored.
+/// touches the scalp (docs/model.md §2), and modulus and Poisson ratio are ignored.
 struct CoveringSpec {
   /// Young's modulus of the covering [Pa] (the paper's polystyrene foam No. 1).
   double youngs_modulus_Pa = 27.6e6;
   /// Poisson ratio of the covering [-], in (-1, 0.5]; 0.25 is the paper's Fig. 9 value
-  /// used when a continuous design needs one and none is given (DESIGN.md §1).
+  /// used when a continuous design needs one and none is given (docs/model.md §1).
   double poisson_ratio = 0.25;
   /// Covering thickness [m], >= 0; 0 = no covering.
   double thickness_m = 0.015;
