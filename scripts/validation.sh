@@ -143,33 +143,35 @@ for R in 15 80; do
   "$COVOPT" sweep --x covering-modulus=0.1MPa..1GPa:log:200 --y covering-thickness=0..50mm:201 \
     --covering-poisson 0.25 --robot-radius ${R}mm --csv "$TMP/map$R.csv" \
     --plot "$OUT/fig11_12_map_R${R}mm.png" >"$TMP/map$R.txt"
-  "$COVOPT" optimize --robot-radius ${R}mm --json >"$TMP/opt$R.json"
+  "$COVOPT" optimize --robot-radius ${R}mm --allow-full-compression --json >"$TMP/opt$R.json"
   say "== Fig. $([ $R = 15 ] && echo 11 || echo 12) (R_r = $R mm, 10 kg, 2 m/s, nu_c 0.25): 200 x 201 map"
   sed -n '/^Safe/p;/^Least/p' "$TMP/map$R.txt" | sed 's/^/  /' >>"$NUMBERS"
   awk -F, 'NR > 1 && $3 == "ok" { if ($16 > 1 && $17 <= 1) lo++; if ($17 > 1 && $16 <= 1) co++; n++ }
            END { printf("  points with laceration but no contusion: %d; contusion without laceration: %d (of %d)\n", lo, co, n) }' \
     "$TMP/map$R.csv" >>"$NUMBERS"
   say "  bare robot: laceration $(json "$TMP/opt$R.json" bare_robot laceration_ratio), contusion $(json "$TMP/opt$R.json" bare_robot contusion_ratio)"
-  say "  optimize verdict: $(awk -F'"' '/"verdict"/ { print $4; exit }' "$TMP/opt$R.json"); continuous optimum E_c $(fmt "$(json "$TMP/opt$R.json" continuous_optimum youngs_modulus_Pa)" 1e-6) MPa, b_c $(fmt "$(json "$TMP/opt$R.json" continuous_optimum thickness_m)" 1e3) mm"
+  say "  optimize verdict (the paper's criterion): $(awk -F'"' '/"verdict"/ { print $4; exit }' "$TMP/opt$R.json"); continuous optimum E_c $(fmt "$(json "$TMP/opt$R.json" continuous_optimum youngs_modulus_Pa)" 1e-6) MPa, b_c $(fmt "$(json "$TMP/opt$R.json" continuous_optimum thickness_m)" 1e3) mm"
   say ""
 done
 
 # ---- Fig. 13: ratios against E_c at 10, 14 and 15 mm -----------------------------------------
 "$COVOPT" sweep --x covering-modulus=0.1MPa..1GPa:log:200 --y covering-thickness=10mm,14mm,15mm \
   --covering-poisson 0.25 --plot "$OUT/fig13_ratios_vs_modulus.png" >/dev/null
-say "== Fig. 13 (R_r = 15 mm, nu_c 0.25): least worst ratio over E_c (covopt optimize --thickness)"
+say "== Fig. 13 (R_r = 15 mm, nu_c 0.25): least worst ratio over E_c (covopt optimize --thickness --allow-full-compression)"
 for b in 10 14 15; do
-  "$COVOPT" optimize --thickness ${b}mm --json >"$TMP/fig13_$b.json"
+  "$COVOPT" optimize --thickness ${b}mm --allow-full-compression --json >"$TMP/fig13_$b.json"
   say "  b_c $b mm: E_c* $(fmt "$(json "$TMP/fig13_$b.json" continuous_optimum youngs_modulus_Pa)" 1e-6) MPa, laceration $(fmt "$(json "$TMP/fig13_$b.json" continuous_optimum laceration_ratio)" 1), contusion $(fmt "$(json "$TMP/fig13_$b.json" continuous_optimum contusion_ratio)" 1)"
 done
 point fig13_ps --x covering-thickness=10mm,14mm,15mm --covering-modulus 27.6MPa --covering-poisson 0.22
 for r in 1 2 3; do
   say "  polystyrene 27.6 MPa (nu 0.22) at $(fmt "$(col "$TMP/fig13_ps.csv" covering-thickness $r)" 1e3) mm: laceration $(fmt "$(col "$TMP/fig13_ps.csv" laceration_ratio $r)" 1), contusion $(fmt "$(col "$TMP/fig13_ps.csv" contusion_ratio $r)" 1)"
 done
-"$COVOPT" optimize --material "polystyrene foam 27.6" --json >"$TMP/ps.json"
-say "  thinnest safe polystyrene 27.6 MPa: $(fmt "$(json "$TMP/ps.json" recommendation min_safe_thickness_m)" 1e3) mm"
-"$COVOPT" optimize --json >"$TMP/opt.json"
-say "  thinnest safe covering of any modulus: $(fmt "$(json "$TMP/opt.json" continuous_optimum thickness_m)" 1e3) mm at E_c $(fmt "$(json "$TMP/opt.json" continuous_optimum youngs_modulus_Pa)" 1e-6) MPa"
+"$COVOPT" optimize --material "polystyrene foam 27.6" --allow-full-compression --json >"$TMP/ps.json"
+say "  thinnest safe polystyrene 27.6 MPa (paper's criterion): $(fmt "$(json "$TMP/ps.json" recommendation min_safe_thickness_m)" 1e3) mm"
+"$COVOPT" optimize --allow-full-compression --json >"$TMP/opt.json"
+say "  thinnest safe covering of any modulus (paper's criterion): $(fmt "$(json "$TMP/opt.json" continuous_optimum thickness_m)" 1e3) mm at E_c $(fmt "$(json "$TMP/opt.json" continuous_optimum youngs_modulus_Pa)" 1e-6) MPa, fully compressed: $(json "$TMP/opt.json" continuous_optimum fully_compressed)"
+"$COVOPT" optimize --json >"$TMP/opt_default.json"
+say "  thinnest admissible covering, default criterion (not fully compressed): $(fmt "$(json "$TMP/opt_default.json" continuous_optimum thickness_m)" 1e3) mm at E_c $(fmt "$(json "$TMP/opt_default.json" continuous_optimum youngs_modulus_Pa)" 1e-6) MPa"
 say ""
 
 # ---- Fig. 14: tensile stress against penetration for three coverings -------------------------
