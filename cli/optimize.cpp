@@ -593,7 +593,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   } else {
     const DesignScore& best = continuous.score;
     fmt::print(out, "Continuous {}  E_c* = {}, b_c* = {} (ν {:.2f}): laceration {:.3f}, contusion {:.3f}, {}{}\n",
-               r.thickness_m ? "best    " : "optimum", MPa(best.design.youngs_modulus_Pa), Mm(best.design.thickness_m),
+               r.thickness_m ? "best   " : "optimum", MPa(best.design.youngs_modulus_Pa), Mm(best.design.thickness_m),
                best.poisson_ratio, best.laceration_ratio, best.contusion_ratio, CompressionWords(best),
                best.admissible(sf, criterion) ? "" : " (not admissible)");
     if (recommended && !r.thickness_m && continuous.feasible) {
