@@ -296,6 +296,9 @@ Json ToJson(const SimulationReport& report) {
   j["scene"]["covering"]["material"] =
       report.covering_material ? Json(*report.covering_material) : Json(nullptr);
   j["warnings"] = r.warnings;
+  Json codes = Json::array();  // the stable code of each warning above the input's own (core's list)
+  for (const ValidityWarning& w : r.coded_warnings) codes.push_back(std::string(ToString(w.code)));
+  j["warning_codes"] = std::move(codes);
   return j;
 }
 

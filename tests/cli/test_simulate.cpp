@@ -315,3 +315,14 @@ TEST_CASE("help and version exit 0 and a missing subcommand is a usage error", "
   CHECK(none.out.empty());
   CHECK_THAT(none.err, Contains("simulate") && Contains("no subcommand"));
 }
+
+TEST_CASE("simulate --json gives the stable code of every model warning beside its message", "[run][json]") {
+  const CliRun thin_stiff = Run({"simulate", "--json", "--covering-thickness", "0.5mm", "--covering-modulus", "1GPa"});
+  REQUIRE(thin_stiff.exit_code == 0);
+  const Json j = Json::parse(thin_stiff.out);
+  REQUIRE(j["warning_codes"].is_array());
+  const std::vector<std::string> codes = j["warning_codes"].get<std::vector<std::string>>();
+  CHECK(codes == std::vector<std::string>{"covering-stiffer-than-scalp", "fully-compressed"});
+  const CliRun plain = Run({"simulate", "--json"});
+  CHECK(Json::parse(plain.out)["warning_codes"].empty());
+}
