@@ -178,13 +178,14 @@ struct DesignOptions {
   /// for any thread count.
   int threads = 1;
   /// The recommended thickness is rounded up to a multiple of this [m] (0 = not rounded),
-  /// as sold; the rounded thickness is checked safe again.
+  /// as sold; the rounded thickness is checked admissible again.
   double thickness_step_m = 0.5e-3;
 };
 
 /// The continuous optimum of a design problem, and how it was found.
 struct ContinuousOptimum {
-  /// A design meeting the constraints was found (problem a) / always true for problem b.
+  /// `score` is admissible under the options' criterion: an admissible design exists within
+  /// the bound (problem a) / the best modulus at the thickness is admissible (problem b).
   bool feasible = false;
   DesignScore score;
   SolverReport global;   ///< NLopt stage
@@ -224,7 +225,7 @@ enum class DesignVerdict {
 };
 const char* ToString(DesignVerdict verdict) noexcept;
 
-/// Problem (a): the thinnest safe covering.
+/// Problem (a): the thinnest admissible covering (safe, and by default not fully compressed).
 struct ThinnestSafeCovering {
   DesignVerdict verdict = DesignVerdict::kNothingSafe;
   DesignCriterion criterion = DesignCriterion::kNoFullCompression;
