@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <ctime>
-#include <limits>
-#include <map>
-#include <stdexcept>
+#include <cstdio>
+
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -14,8 +13,7 @@
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
-#include "covopt/core/exact.hpp"
-#include "covopt/core/time_integration.hpp"
+#include "covopt/core/work_precision.hpp"
 #include "errors.hpp"
 #include "output.hpp"
 #include "plot.hpp"
@@ -26,54 +24,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-/// CPU time of this thread [s]: what one impact costs, whatever else the machine does.
-double ThreadCpuSeconds() {
-  timespec now{};
-  ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
-
-/// Runs `compute` `repeats` times, or automatically about 2 ms worth (at least 3) judged by
-/// `first_seconds`, the time of a run just made (which also warmed caches and workspaces),
-/// and returns the median time and the count.
-template <class Compute>
-std::pair<double, int> MedianCpuTime(Compute&& compute, double first_seconds, int repeats) {
-  const int runs =
-      repeats > 0 ? repeats
-                  : std::clamp(static_cast<int>(std::ceil(2e-3 / std::max(first_seconds, 1e-9))),
-                               3, 301);
-  std::vector<double> times;
-  times.reserve(static_cast<std::size_t>(runs));
-  for (int i = 0; i < runs; ++i) {
-    const double start = ThreadCpuSeconds();
-    compute();
-    times.push_back(ThreadCpuSeconds() - start);
-  }
-  const auto middle = times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2);
-  std::nth_element(times.begin(), middle, times.end());
-  return {*middle, runs};
-}
-
-double RelativeError(double value, double reference) {
-  return reference != 0.0 ? std::abs(value / reference - 1.0) : std::abs(value);
-}
-
-void SetErrors(WorkPrecisionPoint& point, const ImpactResult& result, const ImpactResult& exact) {
-  const ImpactPeaks& p = result.peaks;
-  const ImpactPeaks& q = exact.peaks;
-  point.error_max_penetration = RelativeError(p.max_penetration_m, q.max_penetration_m);
-  point.error_peak_force = RelativeError(p.peak_force_N, q.peak_force_N);
-  point.error_max_compressive_stress =
-      RelativeError(p.max_compressive_stress_Pa, q.max_compressive_stress_Pa);
-  point.error_max_energy_density =
-      RelativeError(p.max_energy_density_J_per_m2, q.max_energy_density_J_per_m2);
-  point.error_contact_duration = RelativeError(result.contact_duration_s.value_or(0.0),
-                                               exact.contact_duration_s.value_or(0.0));
-  point.worst_error = std::max({point.error_max_penetration, point.error_peak_force,
-                                point.error_max_compressive_stress, point.error_max_energy_density,
-                                point.error_contact_duration});
-}
-
 std::string SeriesName(ComputationMethod method, bool restart) {
   if (method == ComputationMethod::kExact) return "exact path";
   return fmt::format("{}{}", ToString(method), restart ? "" : ", no restart");
@@ -81,54 +31,6 @@ std::string SeriesName(ComputationMethod method, bool restart) {
 
 /// A number for CSV/JSON: shortest round-trip, empty/null when absent or not finite.
 std::string CsvNumber(double value) { return std::isfinite(value) ? fmt::format("{}", value) : ""; }
-
-/// The cheapest successful run whose worst error is at most `target`.
-const WorkPrecisionPoint* Cheapest(const std::vector<WorkPrecisionPoint>& points, double target) {
-  const WorkPrecisionPoint* best = nullptr;
-  for (const WorkPrecisionPoint& p : points) {
-    if (p.method == ComputationMethod::kExact || p.status != SolveStatus::kSuccess) continue;
-    if (!(p.worst_error <= target)) continue;
-    if (!best || p.seconds_per_impact < best->seconds_per_impact) best = &p;
-  }
-  return best;
-}
-
-/// Per series: the largest ratio of worst error to requested tolerance over the ladder.
-struct SeriesSummary {
-  ComputationMethod method;
-  bool restart;
-  double worst_ratio = 0.0;
-  double at_tolerance = 0.0;
-  int failures = 0;
-};
-
-std::vector<SeriesSummary> Summarise(const std::vector<WorkPrecisionPoint>& points) {
-  std::vector<SeriesSummary> series;
-  for (const WorkPrecisionPoint& p : points) {
-    if (p.method == ComputationMethod::kExact) continue;
-    auto it = std::find_if(series.begin(), series.end(), [&](const SeriesSummary& s) {
-      return s.method == p.method && s.restart == p.restart;
-    });
-    if (it == series.end()) {
-      series.push_back({p.method, p.restart});
-      it = series.end() - 1;
-    }
-    if (p.status != SolveStatus::kSuccess) {
-      ++it->failures;
-      continue;
-    }
-    const double ratio = p.worst_error / p.relative_tolerance;
-    if (ratio > it->worst_ratio) {
-      it->worst_ratio = ratio;
-      it->at_tolerance = p.relative_tolerance;
-    }
-  }
-  return series;
-}
-
-/// A tolerance above which a series "does not keep its tolerance": the global error of a
-/// well-behaved integrator stays within a few tens of its local tolerance here.
-constexpr double kKeptRatio = 100.0;
 
 // --- charts -------------------------------------------------------------------------
 
@@ -157,11 +59,11 @@ std::string ChartHeader(PlotFormat format, const std::string& output_path,
 constexpr double kErrorFloor = 1e-16;
 
 /// One inline data block per series (x y), the plot command drawing them.
-std::string SeriesPlot(const std::vector<WorkPrecisionPoint>& points, bool time_on_y,
-                       std::string& blocks) {
+std::string SeriesPlot(const WorkPrecisionResult& study, bool time_on_y, std::string& blocks) {
+  const std::vector<WorkPrecisionPoint>& points = study.points;
   std::vector<std::string> commands;
   int index = 0;
-  for (const SeriesSummary& series : Summarise(points)) {
+  for (const WorkPrecisionSeries& series : study.series) {
     std::string data;
     for (const WorkPrecisionPoint& p : points) {
       if (p.method != series.method || p.restart != series.restart) continue;
@@ -186,7 +88,7 @@ std::string SeriesPlot(const std::vector<WorkPrecisionPoint>& points, bool time_
   return plot;
 }
 
-std::string WorkChart(const std::vector<WorkPrecisionPoint>& points, PlotFormat format,
+std::string WorkChart(const WorkPrecisionResult& study, PlotFormat format,
                       const std::string& output_path, const std::string& title) {
   std::string s = ChartHeader(format, output_path,
                               "Work-precision: " + title);
@@ -194,7 +96,8 @@ std::string WorkChart(const std::vector<WorkPrecisionPoint>& points, PlotFormat 
        "exact path [-]'\n";
   s += "set ylabel 'CPU time per impact [µs] (median)'\n";
   std::string blocks;
-  std::string plot = SeriesPlot(points, true, blocks);
+  std::string plot = SeriesPlot(study, true, blocks);
+  const std::vector<WorkPrecisionPoint>& points = study.points;
   const auto exact = std::find_if(points.begin(), points.end(), [](const WorkPrecisionPoint& p) {
     return p.method == ComputationMethod::kExact;
   });
@@ -208,7 +111,7 @@ std::string WorkChart(const std::vector<WorkPrecisionPoint>& points, PlotFormat 
   return s + blocks + plot + "\nunset output\n";
 }
 
-std::string ToleranceChart(const std::vector<WorkPrecisionPoint>& points, PlotFormat format,
+std::string ToleranceChart(const WorkPrecisionResult& study, PlotFormat format,
                            const std::string& output_path, const std::string& title) {
   std::string s = ChartHeader(format, output_path,
                               "Does each method keep its promise? " + title);
@@ -216,7 +119,7 @@ std::string ToleranceChart(const std::vector<WorkPrecisionPoint>& points, PlotFo
   s += "set ylabel 'worst relative error against the exact path [-]'\n";
   s += "set xrange [*:*] reverse\n";
   std::string blocks;
-  std::string plot = SeriesPlot(points, false, blocks);
+  std::string plot = SeriesPlot(study, false, blocks);
   if (plot.empty()) plot = "plot NaN notitle";
   plot += ", \\\n     x with lines dashtype 3 linewidth 2 linecolor rgb '#444444' "
           "title 'error = rtol', \\\n     100*x with lines dashtype 4 linewidth 1 "
@@ -226,8 +129,8 @@ std::string ToleranceChart(const std::vector<WorkPrecisionPoint>& points, PlotFo
 
 // --- text, JSON -------------------------------------------------------------------
 
-void PrintStudy(std::ostream& out, const std::vector<WorkPrecisionPoint>& points,
-                const Scene& scene) {
+void PrintStudy(std::ostream& out, const WorkPrecisionResult& study, const Scene& scene) {
+  const std::vector<WorkPrecisionPoint>& points = study.points;
   fmt::print(out, "Scene   {}\n", SceneHeadline(scene));
   fmt::print(out, "Errors  relative to the exact path; time = median CPU time per impact\n\n");
   fmt::print(out, "{:<29} {:>7} {:>9} {:>8} {:>8} {:>8} {:>8} {:>8} {:>9} {:>10} {:>7} {:>7} {:>5} {:>5}\n",
@@ -261,9 +164,10 @@ void PrintStudy(std::ostream& out, const std::vector<WorkPrecisionPoint>& points
   }
 
   fmt::print(out, "\nCheapest run reaching a worst error of\n");
-  for (const double target : {1e-3, 1e-6, 1e-9}) {
-    const WorkPrecisionPoint* best = Cheapest(points, target);
-    if (best) {
+  for (const CheapestRun& cheapest : study.cheapest) {
+    const double target = cheapest.target_error;
+    if (cheapest.point) {
+      const WorkPrecisionPoint* best = &points[*cheapest.point];
       fmt::print(out, "  {:.0e}  {} at rtol {:.0e}: {:.1f} µs per impact (error {:.1e})\n", target,
                  SeriesName(best->method, best->restart), best->relative_tolerance,
                  best->seconds_per_impact * 1e6, best->worst_error);
@@ -272,10 +176,12 @@ void PrintStudy(std::ostream& out, const std::vector<WorkPrecisionPoint>& points
     }
   }
   std::vector<std::string> broken;
-  for (const SeriesSummary& s : Summarise(points)) {
-    if (s.worst_ratio > kKeptRatio) {
+  const double kept_ratio = study.kept_tolerance_ratio;
+  for (const WorkPrecisionSeries& s : study.series) {
+    if (s.worst_error_to_tolerance > kept_ratio) {
       broken.push_back(fmt::format("{} (error {:.0f} x rtol at rtol {:.0e})",
-                                   SeriesName(s.method, s.restart), s.worst_ratio, s.at_tolerance));
+                                   SeriesName(s.method, s.restart), s.worst_error_to_tolerance,
+                                   s.at_tolerance));
     }
     if (s.failures > 0) {
       broken.push_back(fmt::format("{} ({} failed run{})", SeriesName(s.method, s.restart),
@@ -283,9 +189,9 @@ void PrintStudy(std::ostream& out, const std::vector<WorkPrecisionPoint>& points
     }
   }
   if (broken.empty()) {
-    fmt::print(out, "Every series kept its error within {:g} x rtol.\n", kKeptRatio);
+    fmt::print(out, "Every series kept its error within {:g} x rtol.\n", kept_ratio);
   } else {
-    fmt::print(out, "Not keeping the tolerance (error > {:g} x rtol) or failing:\n", kKeptRatio);
+    fmt::print(out, "Not keeping the tolerance (error > {:g} x rtol) or failing:\n", kept_ratio);
     for (const std::string& line : broken) fmt::print(out, "  {}\n", line);
   }
 }
@@ -324,6 +230,13 @@ std::vector<ComputationMethod> ResolveMethods(const std::vector<std::string>& na
     }
   }
   return methods;
+}
+
+RestartSeries ResolveRestart(const std::string& restart) {
+  if (restart == "on") return RestartSeries::kOn;
+  if (restart == "off") return RestartSeries::kOff;
+  if (restart == "both") return RestartSeries::kBoth;
+  throw InputError(fmt::format("--restart: expected on, off or both (got '{}')", restart));
 }
 
 }  // namespace
@@ -366,59 +279,6 @@ std::vector<double> ParseToleranceLadder(const std::string& text) {
     throw InputError(fmt::format("--tolerances: no tolerance in '{}'", text));
   }
   return tolerances;
-}
-
-std::vector<WorkPrecisionPoint> MeasureWorkPrecision(const ImpactModel& model,
-                                                     const WorkPrecisionPlan& plan) {
-  std::vector<WorkPrecisionPoint> points;
-  double start = ThreadCpuSeconds();
-  const ImpactResult exact = SolveExact(model);
-  const double exact_seconds = ThreadCpuSeconds() - start;
-  {
-    WorkPrecisionPoint reference;
-    reference.status = exact.status;
-    reference.message = exact.message;
-    reference.warning_count = exact.warnings.size();
-    const auto [seconds, runs] =
-        MedianCpuTime([&] { (void)SolveExact(model); }, exact_seconds, plan.repeats);
-    reference.seconds_per_impact = seconds;
-    reference.timed_runs = runs;
-    points.push_back(reference);
-  }
-  TimeIntegrator integrator;
-  for (const ComputationMethod method : plan.methods) {
-    for (const bool restart : plan.restarts) {
-      for (const double tolerance : plan.tolerances) {
-        TimeIntegrationOptions options;
-        options.method = method;
-        options.relative_tolerance = tolerance;
-        options.restart_at_phase_switches = restart;
-        start = ThreadCpuSeconds();
-        const ImpactResult result = integrator.Simulate(model, options);
-        const double first_seconds = ThreadCpuSeconds() - start;
-        WorkPrecisionPoint point;
-        point.method = method;
-        point.restart = restart;
-        point.relative_tolerance = tolerance;
-        point.status = result.status;
-        point.message = result.message;
-        point.statistics = result.statistics;
-        point.warning_count = result.warnings.size();
-        point.energy_residual = result.energy_residual;
-        if (result.ok()) {
-          SetErrors(point, result, exact);
-        } else {
-          point.worst_error = std::numeric_limits<double>::quiet_NaN();
-        }
-        const auto [seconds, runs] = MedianCpuTime(
-            [&] { (void)integrator.Simulate(model, options); }, first_seconds, plan.repeats);
-        point.seconds_per_impact = seconds;
-        point.timed_runs = runs;
-        points.push_back(std::move(point));
-      }
-    }
-  }
-  return points;
 }
 
 std::string WorkPrecisionCsv(const std::vector<WorkPrecisionPoint>& points) {
@@ -502,22 +362,19 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
   const CommandErrors errors(err, "workprecision");
 
   SimulationPlan scene_plan;
-  WorkPrecisionPlan plan;
+  covopt::WorkPrecisionOptions study_options;
   std::optional<ImpactModel> model;
   std::vector<std::pair<std::string, PlotFormat>> charts;
   try {
     scene_plan = ResolveSimulation(options.scene);
-    plan.methods = ResolveMethods(options.methods);
-    plan.tolerances = ParseToleranceLadder(options.tolerances);
-    if (options.restart == "on" || options.restart == "both") plan.restarts.push_back(true);
-    if (options.restart == "off" || options.restart == "both") plan.restarts.push_back(false);
-    if (plan.restarts.empty()) {
-      throw InputError(fmt::format("--restart: expected on, off or both (got '{}')", options.restart));
+    study_options.methods = ResolveMethods(options.methods);
+    study_options.relative_tolerances = ParseToleranceLadder(options.tolerances);
+    study_options.restart = ResolveRestart(options.restart);
+    if (options.repeats < 0 || options.repeats > 100000) {
+      throw InputError(
+          fmt::format("--repeats must be in [0, 100000] (got {})", options.repeats));
     }
-    if (options.repeats < 0) {
-      throw InputError(fmt::format("--repeats must be >= 0 (got {})", options.repeats));
-    }
-    plan.repeats = options.repeats;
+    study_options.repetitions = options.repeats;
     for (const auto& [flag, file] : {std::pair{"--plot", options.plot_file},
                                      std::pair{"--tolerance-plot", options.tolerance_plot_file}}) {
       if (!file) continue;
@@ -540,10 +397,21 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
   }
   if (!charts.empty() && !FindOnPath("gnuplot")) return errors.Failed(std::string(kGnuplotMissing));
 
-  const std::vector<WorkPrecisionPoint> points = MeasureWorkPrecision(*model, plan);
-  if (points.front().status != SolveStatus::kSuccess) {
-    return errors.Failed("the exact path failed: " + points.front().message);
+  // A progress line on an interactive terminal only: pipes and tests see nothing.
+  const bool terminal = &err == &std::cerr && ::isatty(STDERR_FILENO) == 1;
+  if (terminal) {
+    study_options.progress = [&err](const WorkPrecisionProgress& progress) {
+      fmt::print(err, "\rworkprecision {}/{} runs", progress.completed_runs, progress.total_runs);
+      err.flush();
+    };
   }
+  const WorkPrecisionResult study = MeasureWorkPrecision(*model, study_options);
+  if (terminal) {
+    fmt::print(err, "\r\033[K");
+    err.flush();
+  }
+  if (!study.IsUsable()) return errors.Failed(study.message);
+  const std::vector<WorkPrecisionPoint>& points = study.points;
 
   std::string title = options.title ? *options.title : SceneHeadline(scene_plan.scene);
   if (const auto details = SceneDetailsBeyondHeadline(scene_plan.scene);
@@ -554,12 +422,12 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
     if (options.csv_file) WriteFileAtomically(*options.csv_file, WorkPrecisionCsv(points));
     if (options.plot_file) {
       RunGnuplot(*options.plot_file, [&](const std::string& path) {
-        return WorkChart(points, *PlotFormatFor(*options.plot_file), path, title);
+        return WorkChart(study, *PlotFormatFor(*options.plot_file), path, title);
       });
     }
     if (options.tolerance_plot_file) {
       RunGnuplot(*options.tolerance_plot_file, [&](const std::string& path) {
-        return ToleranceChart(points, *PlotFormatFor(*options.tolerance_plot_file), path, title);
+        return ToleranceChart(study, *PlotFormatFor(*options.tolerance_plot_file), path, title);
       });
     }
   } catch (const OutputError& e) {
@@ -573,14 +441,14 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
     for (const WorkPrecisionPoint& p : points) list.push_back(PointJson(p));
     j["points"] = std::move(list);
     Json cheapest = Json::object();
-    for (const double target : {1e-3, 1e-6, 1e-9}) {
-      const WorkPrecisionPoint* best = Cheapest(points, target);
-      cheapest[fmt::format("{:.0e}", target)] = best ? PointJson(*best) : Json(nullptr);
+    for (const CheapestRun& run : study.cheapest) {
+      cheapest[fmt::format("{:.0e}", run.target_error)] =
+          run.point ? PointJson(points[*run.point]) : Json(nullptr);
     }
     j["cheapest_reaching_error"] = std::move(cheapest);
     out << j.dump(2) << '\n';
   } else {
-    PrintStudy(out, points, scene_plan.scene);
+    PrintStudy(out, study, scene_plan.scene);
   }
   out.flush();
   if (!out) return errors.Failed("cannot write the results to standard output");

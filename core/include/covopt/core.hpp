@@ -9,3 +9,4 @@
 #include "covopt/core/scene.hpp"
 #include "covopt/core/sensitivity.hpp"
 #include "covopt/core/time_integration.hpp"
+#include "covopt/core/work_precision.hpp"
