@@ -1,7 +1,8 @@
 // `covopt workprecision`: the study's shape (the exact path first, one point per method,
 // restart choice and tolerance), its physics (errors are measured against the exact path and
 // shrink as the tolerance tightens; the exact path costs less than any integration), the
-// CSV and JSON it writes, and its bad input.
+// CSV and JSON it writes, its bad input, and that it prints what the library's
+// covopt::MeasureWorkPrecision measures (the CLI only parses and prints).
 #include <catch2/catch.hpp>
 
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "cli_test_support.hpp"
+#include "covopt/core/work_precision.hpp"
 #include "errors.hpp"
 #include "plot.hpp"
 #include "workprecision.hpp"
@@ -129,4 +131,40 @@ TEST_CASE("workprecision draws both charts with gnuplot", "[workprecision][plot]
   REQUIRE(run.exit_code == 0);
   CHECK_THAT(ReadFile(work), Contains("<svg") && Contains("arkode-erk54"));
   CHECK(ReadFile(promise).substr(0, 4) == std::string("\x89PNG", 4));
+}
+
+TEST_CASE("workprecision --json prints what the library's study measures", "[workprecision]") {
+  const CliRun run = Run({"workprecision", "--methods", "cvode-bdf,arkode-erk32", "--tolerances",
+                          "1e-5,1e-7", "--restart", "off", "--repeats", "1", "--json"});
+  CAPTURE(run.err);
+  REQUIRE(run.exit_code == 0);
+  const auto json = nlohmann::json::parse(run.out);
+
+  covopt::WorkPrecisionOptions options;
+  options.methods = {covopt::ComputationMethod::kCvodeBdf, covopt::ComputationMethod::kArkodeErk32};
+  options.relative_tolerances = {1e-5, 1e-7};
+  options.restart = covopt::RestartSeries::kOff;
+  options.repetitions = 1;
+  // The CLI's default scene is the library's default scene.
+  const covopt::WorkPrecisionResult study = covopt::MeasureWorkPrecision(covopt::Scene{}, options);
+  REQUIRE(study.status == covopt::WorkPrecisionStatus::kSuccess);
+  REQUIRE(json["points"].size() == study.points.size());
+  for (std::size_t i = 0; i < study.points.size(); ++i) {
+    const auto& printed = json["points"][i];
+    const covopt::WorkPrecisionPoint& measured = study.points[i];
+    CAPTURE(i, printed.dump());
+    CHECK(printed["method"] == std::string(covopt::ToString(measured.method)));
+    CHECK(printed["restart_at_phase_switches"] == measured.restart);
+    // Integration is deterministic: the same run gives the same numbers to the last bit.
+    CHECK(printed["worst_error"].get<double>() == measured.worst_error);
+    CHECK(printed["error_peak_force"].get<double>() == measured.error_peak_force);
+    CHECK(printed["steps"].get<long>() == measured.statistics.steps);
+    CHECK(printed["rhs_evaluations"].get<long>() == measured.statistics.rhs_evaluations);
+  }
+  // The cheapest run per target is chosen by time, which differs between the two runs;
+  // each printed choice must reach its target.
+  for (const auto& [target, best] : json["cheapest_reaching_error"].items()) {
+    CAPTURE(target);
+    if (!best.is_null()) CHECK(best["worst_error"].get<double>() <= std::stod(target));
+  }
 }
