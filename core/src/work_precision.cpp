@@ -118,6 +118,10 @@ void Validate(const WorkPrecisionOptions& o) {
     throw std::invalid_argument("timing_budget_s must be in (0, 60] s (got " +
                                 FormatNumber(o.timing_budget_s) + ")");
   }
+  if (o.max_steps_per_run < 10) {
+    throw std::invalid_argument("max_steps_per_run must be >= 10 (got " +
+                                std::to_string(o.max_steps_per_run) + ")");
+  }
   for (std::size_t i = 0; i < o.error_targets.size(); ++i) {
     const double target = o.error_targets[i];
     if (!(target > 0.0 && std::isfinite(target))) {
@@ -301,6 +305,7 @@ WorkPrecisionResult MeasureWorkPrecision(const ImpactModel& model,
         integration.method = method;
         integration.relative_tolerance = tolerance;
         integration.restart_at_phase_switches = restart;
+        integration.max_steps = options.max_steps_per_run;
         start = ThreadCpuSeconds();
         const ImpactResult result = integrator.Simulate(model, integration);
         const double first_seconds = ThreadCpuSeconds() - start;

@@ -2,8 +2,9 @@
 // the first point and the reference (error 0); the default method's errors shrink as the
 // tolerance tightens; the worst error is the largest of the five; integrating straight through
 // the force law's kinks is less accurate than restarting at them; the summary (cheapest run per
-// target, series keeping their tolerance) agrees with the points; progress reaches the total;
-// bad options are rejected naming the field, the value and the allowed range.
+// target, series keeping their tolerance) agrees with the points; a failed integration is data;
+// progress reaches the total; bad options are rejected naming the field, the value and the
+// allowed range.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -154,6 +155,36 @@ TEST_CASE("work-precision: the cheapest run per target is the cheapest that reac
   CHECK_THAT(study.BriefReport(), Catch::Matchers::Contains("12 integrations in 4 series"));
 }
 
+TEST_CASE("work-precision: a failed integration is a point with its status, not an error",
+          "[work_precision][errors]") {
+  WorkPrecisionOptions options =
+      QuickOptions(ComputationMethod::kArkodeErk54, {1e-4, 1e-10}, RestartSeries::kOn);
+  // Enough steps for rtol 1e-4 (16 on this scene), far too few for 1e-10 (about 180).
+  options.max_steps_per_run = 60;
+  const WorkPrecisionResult study = covopt::MeasureWorkPrecision(CoveredPaperScene(), options);
+  INFO(study.BriefReport());
+  CHECK(study.status == WorkPrecisionStatus::kSomeRunsFailed);
+  CHECK(study.IsUsable());
+  REQUIRE(study.points.size() == 3);
+  const WorkPrecisionPoint& reached = study.points[1];
+  const WorkPrecisionPoint& failed = study.points[2];
+  CHECK(reached.ok());
+  CHECK(failed.status == covopt::SolveStatus::kStepLimit);
+  CHECK_FALSE(failed.message.empty());
+  // A failed run has no errors: NaN, never a misleading 0.
+  CHECK(std::isnan(failed.worst_error));
+  CHECK(std::isnan(failed.error_max_penetration));
+  CHECK(std::isnan(failed.error_contact_duration));
+  REQUIRE(study.series.size() == 1);
+  CHECK(study.series[0].failures == 1);
+  CHECK_FALSE(study.series[0].kept_tolerance);
+  // Only the run that succeeded can be the cheapest.
+  for (const covopt::CheapestRun& run : study.cheapest) {
+    if (run.point) CHECK(*run.point == 1);
+  }
+  CHECK_THAT(study.BriefReport(), Catch::Matchers::Contains("1 failed"));
+}
+
 TEST_CASE("work-precision: progress reaches the total, one call per run", "[work_precision]") {
   WorkPrecisionOptions options =
       QuickOptions(ComputationMethod::kCvodeAdams, {1e-4, 1e-6}, RestartSeries::kBoth);
@@ -213,6 +244,9 @@ TEST_CASE("work-precision: bad options are rejected naming the field, value and 
   bad = good;
   bad.timing_budget_s = 0.0;
   rejects(bad, "timing_budget_s", "(0, 60] s (got 0)");
+  bad = good;
+  bad.max_steps_per_run = 9;
+  rejects(bad, "max_steps_per_run", ">= 10 (got 9)");
   bad = good;
   bad.error_targets = {1e-3, -1.0};
   rejects(bad, "error_targets[1]", "> 0 (got -1)");

@@ -65,6 +65,9 @@ struct WorkPrecisionOptions {
   /// With repetitions = 0: the CPU time to spend timing each point [s], in (0, 60].
   /// Default: 2e-3 s.
   double timing_budget_s = 2e-3;
+  /// Step limit of each integration (TimeIntegrationOptions::max_steps), >= 10; a run
+  /// hitting it is a failed point (SolveStatus::kStepLimit). Default: 200000.
+  long max_steps_per_run = 200000;
   /// Worst errors [-] for which the result names the cheapest run reaching them, each > 0.
   /// Default: 1e-3, 1e-6, 1e-9.
   std::vector<double> error_targets = {1e-3, 1e-6, 1e-9};
