@@ -15,6 +15,7 @@
 #include <fmt/ranges.h>
 
 #include "covopt/materials/material.hpp"
+#include "covopt/report/materials_json.hpp"
 #include "errors.hpp"
 
 namespace covopt::cli {
@@ -207,12 +208,6 @@ std::string DescribeFilter(const MaterialsOptions& o) {
   return fmt::format("{}", fmt::join(parts, ", "));
 }
 
-Json ToJsonArray(const std::vector<const Material*>& rows) {
-  Json array = Json::array();
-  for (const Material* m : rows) array.push_back(MaterialToJson(*m));
-  return array;
-}
-
 }  // namespace
 
 void AddCatalogOptions(CLI::App& command, CatalogOptions& options) {
@@ -243,14 +238,7 @@ materials::Catalog LoadCatalog(const CatalogOptions& options) {
 }
 
 std::string NoSuchMaterial(const materials::Catalog& catalog, std::string_view name) {
-  const std::vector<std::string> suggestions = catalog.Suggest(name);
-  if (suggestions.empty()) {
-    return fmt::format("no material '{}' in the catalog; run 'covopt materials list' for the "
-                       "names",
-                       name);
-  }
-  return fmt::format("no material '{}' in the catalog; did you mean {}?", name,
-                     Quoted(suggestions));
+  return report::NoSuchMaterialMessage(catalog, name);
 }
 
 materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
@@ -300,19 +288,7 @@ materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
   return range;
 }
 
-Json MaterialToJson(const Material& m) {
-  Json j;
-  j["name"] = m.name;
-  j["family"] = m.family;
-  j["youngs_modulus_Pa"] = m.youngs_modulus_Pa;
-  j["poisson_ratio"] = m.poisson_ratio ? Json(*m.poisson_ratio) : Json(nullptr);
-  j["density_kg_per_m3"] = m.density_kg_per_m3 ? Json(*m.density_kg_per_m3) : Json(nullptr);
-  j["modulus_basis"] = materials::ToString(m.modulus_basis);
-  j["source"] = m.source;
-  j["note"] = m.note.empty() ? Json(nullptr) : Json(m.note);
-  j["defined_at"] = m.origin.empty() ? Json(nullptr) : Json(m.origin);
-  return j;
-}
+Json MaterialToJson(const Material& m) { return Json::parse(report::MaterialJson(m)); }
 
 CLI::App* SetupMaterials(CLI::App& app, MaterialsOptions& options) {
   CLI::App* materials = app.add_subcommand(
@@ -409,7 +385,7 @@ int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostrea
       std::vector<const Material*> rows;
       for (const Material& m : catalog.materials()) rows.push_back(&m);
       if (options.json) {
-        out << ToJsonArray(rows).dump(2) << '\n';
+        out << report::MaterialsJson(rows) << '\n';
       } else {
         PrintMaterialTable(out, rows, fmt::format("{} ({}).", Plural(rows.size(), "material"), where));
       }
@@ -419,7 +395,7 @@ int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostrea
       const Material* m = catalog.Find(Trim(options.name));
       if (m == nullptr) return errors.BadInput(NoSuchMaterial(catalog, Trim(options.name)));
       if (options.json) {
-        out << MaterialToJson(*m).dump(2) << '\n';
+        out << report::MaterialJson(*m) << '\n';
       } else {
         PrintMaterial(out, *m);
       }
@@ -434,7 +410,7 @@ int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostrea
       }
       const std::vector<const Material*> rows = catalog.Filter(filter);
       if (options.json) {
-        out << ToJsonArray(rows).dump(2) << '\n';
+        out << report::MaterialsJson(rows) << '\n';
       } else if (rows.empty()) {
         fmt::print(out, "No material of {} ({}) matches {}.\n", where,
                    Plural(catalog.size(), "material"), DescribeFilter(options));

@@ -26,14 +26,6 @@ using Json = nlohmann::ordered_json;
 
 /// A number, or null when it is not finite (JSON has no NaN or Infinity).
 Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
-Json Number(const std::optional<double>& value) {
-  return value ? Number(*value) : Json(nullptr);
-}
-/// A mass or radius that may be infinite: the word the CLI accepts for it.
-Json MaybeInfinite(double value, std::string_view word) {
-  if (std::isinf(value) && value > 0) return Json(word);
-  return Number(value);
-}
 
 std::string_view YesNo(bool b) { return b ? "yes" : "no"; }
 std::string_view SafeWord(bool safe) { return safe ? "SAFE" : "UNSAFE"; }
@@ -212,94 +204,16 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
   }
 }
 
-Json SceneToJson(const Scene& s) {
-  Json j;
-  j["robot"] = {{"mass_kg", MaybeInfinite(s.robot.mass_kg, "fixed")},
-                {"speed_m_per_s", Number(s.robot.speed_m_per_s)},
-                {"radius_m", MaybeInfinite(s.robot.radius_m, "flat")},
-                {"youngs_modulus_Pa", Number(s.robot.youngs_modulus_Pa)},
-                {"poisson_ratio", Number(s.robot.poisson_ratio)}};
-  j["covering"] = {{"youngs_modulus_Pa", Number(s.covering.youngs_modulus_Pa)},
-                   {"poisson_ratio", Number(s.covering.poisson_ratio)},
-                   {"thickness_m", Number(s.covering.thickness_m)}};
-  j["head"] = {{"mass_kg", MaybeInfinite(s.head.mass_kg, "fixed")},
-               {"radius_m", Number(s.head.radius_m)}};
-  j["scalp"] = {{"youngs_modulus_Pa", Number(s.scalp.youngs_modulus_Pa)},
-                {"poisson_ratio", Number(s.scalp.poisson_ratio)},
-                {"thickness_m", Number(s.scalp.thickness_m)}};
-  j["skull"] = {{"youngs_modulus_Pa", Number(s.skull.youngs_modulus_Pa)},
-                {"poisson_ratio", Number(s.skull.poisson_ratio)}};
-  j["model"] = {{"thresholds", ThresholdsName(s.model.thresholds)},
-                {"exponent_covering_scalp", Number(s.model.exponent_covering_scalp)},
-                {"exponent_covering_bone", Number(s.model.exponent_covering_bone)},
-                {"exponent_robot_bone", Number(s.model.exponent_robot_bone)},
-                {"tensile_poisson_ratio", Number(s.model.tensile_poisson_ratio)},
-                {"full_compression_fraction", Number(s.model.full_compression_fraction)}};
-  return j;
-}
+Json SceneToJson(const Scene& s) { return Json::parse(report::SceneJson(s)); }
 
 Json JsonNumber(double value) { return Number(value); }
 
 Json StatisticsToJson(const SolverStatistics& st) {
-  return Json{{"steps", st.steps},
-              {"rhs_evaluations", st.rhs_evaluations},
-              {"root_evaluations", st.root_evaluations},
-              {"jacobian_evaluations", st.jacobian_evaluations},
-              {"nonlinear_iterations", st.nonlinear_iterations},
-              {"error_test_failures", st.error_test_failures},
-              {"convergence_failures", st.convergence_failures},
-              {"restarts", st.restarts}};
+  return Json::parse(report::SolverStatisticsJson(st));
 }
 
 Json ToJson(const SimulationReport& report) {
-  const ImpactResult& r = report.result;
-  const ImpactPeaks& p = r.peaks;
-  const InjuryVerdict& lac = report.assessment.laceration;
-  const InjuryVerdict& con = report.assessment.contusion;
-
-  Json j;
-  j["max_penetration_m"] = Number(p.max_penetration_m);
-  j["peak_force_N"] = Number(p.peak_force_N);
-  j["contact_duration_s"] = Number(r.contact_duration_s);
-  j["time_of_max_compression_s"] = Number(r.time_of_max_compression_s);
-  j["max_compressive_stress_Pa"] = Number(p.max_compressive_stress_Pa);
-  j["max_tensile_stress_Pa"] = Number(p.max_tensile_stress_Pa);
-  j["max_energy_density_J_per_m2"] = Number(p.max_energy_density_J_per_m2);
-  j["rebound_speed_m_per_s"] = Number(r.rebound_speed_m_per_s);
-  j["phase_at_max"] = PhaseNumber(p.phase_at_max);
-  j["phase_at_max_name"] = ToString(p.phase_at_max);
-  j["scalp_fully_compressed"] = p.scalp_fully_compressed;
-  j["fully_compressed"] = p.fully_compressed;
-  j["laceration"] = {{"value_Pa", Number(lac.value)},
-                     {"limit_Pa", Number(lac.limit)},
-                     {"ratio", Number(lac.ratio)},
-                     {"safe", lac.safe}};
-  j["contusion"] = {{"value_J_per_m2", Number(con.value)},
-                    {"limit_J_per_m2", Number(con.limit)},
-                    {"ratio", Number(con.ratio)},
-                    {"safe", con.safe}};
-  j["safe"] = report.assessment.safe();
-  j["method"] = ToString(r.method);
-
-  Json solver = {{"status", ToString(r.status)}, {"message", r.message}, {"raw_code", r.raw_code}};
-  solver.update(StatisticsToJson(r.statistics));
-  if (report.time_options) {
-    const TimeIntegrationOptions& o = *report.time_options;
-    solver["relative_tolerance"] = Number(o.relative_tolerance);
-    solver["absolute_tolerance"] =
-        Number(o.absolute_tolerance > 0.0 ? o.absolute_tolerance : o.relative_tolerance);
-    solver["history_samples"] = r.history.size();
-    if (r.energy_residual) solver["energy_residual"] = Number(*r.energy_residual);
-  }
-  j["solver"] = std::move(solver);
-  j["scene"] = SceneToJson(report.scene);
-  j["scene"]["covering"]["material"] =
-      report.covering_material ? Json(*report.covering_material) : Json(nullptr);
-  j["warnings"] = r.warnings;
-  Json codes = Json::array();  // the stable code of each warning above the input's own (core's list)
-  for (const ValidityWarning& w : r.coded_warnings) codes.push_back(std::string(ToString(w.code)));
-  j["warning_codes"] = std::move(codes);
-  return j;
+  return Json::parse(report::SimulationJson(report));
 }
 
 std::string HistoryCsv(const ImpactModel& model, const std::vector<HistorySample>& history) {

@@ -18,24 +18,13 @@
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/core/time_integration.hpp"
+#include "covopt/report/simulation_json.hpp"
 
 namespace covopt::cli {
 
-/// One finished computation with everything needed to report it.
-struct SimulationReport {
-  Scene scene;                   ///< the resolved scene (defaults, file, flags)
-  ImpactResult result;           ///< from SolveExact or SimulateImpact
-  InjuryAssessment assessment;   ///< Assess(result.peaks)
-  /// The integrator's options when the time path ran; empty for the exact path.
-  std::optional<TimeIntegrationOptions> time_options;
-  /// The catalog material of the covering (simulate --material), if any.
-  std::optional<std::string> covering_material;
-  /// The material's ν is unknown in the catalog and the default was used.
-  bool covering_poisson_assumed = false;
-  /// The verdicts are safe when safety_factor x ratio <= 1, i.e. within the derated limits
-  /// limit / safety_factor [-]; 1 = the limits themselves. The chart draws the derated limits.
-  double safety_factor = 1.0;
-};
+/// One finished computation with everything needed to report it (covopt::report's, whose
+/// SimulationJson is the --json object).
+using report::SimulationReport;
 
 /// The scene in one short line, for titles: "10 kg at 2 m/s, R 15 mm; covering 15 mm,
 /// 27.6 MPa; head 4.5 kg". The speed [m/s] goes with the body that moves: a fixed robot
@@ -54,7 +43,8 @@ std::vector<std::string> SceneDetailsBeyondHeadline(
 /// The readable report: scene, peaks, verdicts, method and solver, warnings.
 void PrintTable(std::ostream& out, const SimulationReport& report);
 
-/// Every resolved scene input in SI; fixed masses are "fixed", a flat radius is "flat".
+/// Every resolved scene input in SI; fixed masses are "fixed", a flat radius is "flat"
+/// (report::SceneJson, parsed).
 nlohmann::ordered_json SceneToJson(const Scene& scene);
 
 /// A number for JSON, or null when it is not finite (JSON has no NaN or Infinity).
@@ -62,12 +52,13 @@ nlohmann::ordered_json JsonNumber(double value);
 
 /// The integrator's counters as JSON: steps, rhs_evaluations, root_evaluations,
 /// jacobian_evaluations, nonlinear_iterations, error_test_failures, convergence_failures,
-/// restarts.
+/// restarts (report::SolverStatisticsJson, parsed).
 nlohmann::ordered_json StatisticsToJson(const SolverStatistics& statistics);
 
 /// The report as one JSON object, values in SI, keys carrying the unit
 /// (max_penetration_m, peak_force_N, ...); missing or non-finite values are null.
-/// scene.covering.material is the catalog material's name, or null.
+/// scene.covering.material is the catalog material's name, or null. It is
+/// report::SimulationJson parsed (the object Python's covopt.simulate returns).
 nlohmann::ordered_json ToJson(const SimulationReport& report);
 
 /// The CSV header of a history file.

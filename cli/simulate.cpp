@@ -350,11 +350,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
 }
 
 InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const SimulationPlan& plan) {
-  InjuryAssessment assessment = Assess(peaks, plan.limits);
-  for (InjuryVerdict* verdict : {&assessment.laceration, &assessment.contusion}) {
-    verdict->safe = plan.safety_factor * verdict->ratio <= 1.0;
-  }
-  return assessment;
+  return report::JudgeInjuries(peaks, plan.limits, plan.safety_factor);
 }
 
 std::vector<std::string> InputWarnings(const SimulationPlan& plan) {
@@ -488,15 +484,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
   }
 
   if (plan.json) {
-    nlohmann::ordered_json json = ToJson(report);
-    // The limits stay the limits; the derated ones and the factor join each verdict.
-    json["laceration"]["derated_limit_Pa"] =
-        JsonNumber(plan.limits.laceration_tensile_stress_Pa / plan.safety_factor);
-    json["laceration"]["safety_factor"] = plan.safety_factor;
-    json["contusion"]["derated_limit_J_per_m2"] =
-        JsonNumber(plan.limits.contusion_energy_density_J_per_m2 / plan.safety_factor);
-    json["contusion"]["safety_factor"] = plan.safety_factor;
-    out << json.dump(2) << '\n';
+    out << report::SimulationJson(report) << '\n';  // the object covopt.simulate() returns
   } else {
     PrintTable(out, report);
   }

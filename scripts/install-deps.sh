@@ -17,6 +17,11 @@ packages=(
   gnuplot-nox            # --plot charts
   libnlopt-cxx-dev       # optimiser: global search (NLopt 2.7)
   coinor-libipopt-dev    # optimiser: local refinement (Ipopt 3.11+, pkg-config ipopt)
+  pybind11-dev           # python/: the `import covopt` extension
+  python3-dev            # Python 3 headers and library for the extension
+  python3-numpy          # history and sweep arrays
+  python3-pytest         # python/tests, run by CTest
+  python3-matplotlib     # python/examples (charts)
 )
 
 missing=()

@@ -1,0 +1,64 @@
+"""covopt: safe soft coverings for collaborative robots (multi-layer Hertz head-impact model).
+
+The C++ library behind the ``covopt`` command, as Python calls. Values are SI floats in
+and out; keyword names are the CLI's scene flags with underscores (``--robot-mass`` is
+``robot_mass``). A scene value may also be a string with a unit, read as the CLI reads it
+(``"15mm"``, ``"27.6MPa"``); ``math.inf`` or ``"fixed"`` is an immovable body (robot_mass,
+head_mass), ``math.inf`` or ``"flat"`` a flat robot surface (robot_radius). A number, like a
+bare number on the command line, must be plausible for its quantity: ``robot_radius=40``
+(40 m, a radius typed in mm) is refused; write ``"40mm"``, or ``"40m"`` if you mean it.
+Unset values are the paper's scene. Results are dicts with the keys of the CLI's ``--json``
+output.
+
+Bad input raises ``ValueError`` with the library's (the CLI's) message; a computation that
+fails raises ``covopt.ComputationError``, whose ``status`` is the library's status name.
+Long calls release the GIL.
+"""
+
+from . import _covopt
+from ._errors import ComputationError
+
+__all__ = ["simulate", "materials", "material", "ComputationError"]
+
+
+def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
+             robot_poisson=None, covering_modulus=None, covering_poisson=None,
+             covering_thickness=None, head_mass=None, head_radius=None, scalp_modulus=None,
+             scalp_poisson=None, scalp_thickness=None, skull_modulus=None, skull_poisson=None,
+             thresholds=None, laceration_limit=None, contusion_limit=None, safety_factor=None,
+             material=None, method=None, rtol=None, atol=None, max_steps=None, history=False):
+    """One impact: its peaks and the injury verdicts, as ``covopt simulate --json``.
+
+    Scene (SI, default the paper's scene): robot_mass [kg], speed [m/s], robot_radius [m],
+    robot_modulus [Pa], robot_poisson [-], covering_modulus [Pa], covering_poisson [-],
+    covering_thickness [m] (0 = no covering), head_mass [kg], head_radius [m],
+    scalp_modulus [Pa], scalp_poisson [-], scalp_thickness [m], skull_modulus [Pa],
+    skull_poisson [-]; thresholds "cumulative" (default) or "literal".
+    material: a built-in catalog name; sets covering_modulus and covering_poisson.
+    laceration_limit [Pa] (default 1e6), contusion_limit [J/m²] (default 25200),
+    safety_factor [-] in [1, 100]: a verdict is safe when safety_factor x ratio <= 1.
+    method: None (exact path; the default integrator with history=True), "exact", "cvode"
+    or an integrator name ("arkode-erk54", "cvode-bdf", ...); rtol, atol [-] and max_steps
+    apply to the time path only.
+    history: also return ``result["history"]``, a dict of 1-D numpy arrays of equal length
+    (time_s, penetration_m, penetration_rate_m_per_s, force_N, compressive_stress_Pa,
+    tensile_stress_Pa, energy_density_J_per_m2: the columns of ``--history``).
+
+    Raises ValueError on bad input, ComputationError when the computation fails.
+    """
+    arguments = {name: value for name, value in locals().items() if value is not None}
+    return _covopt.simulate(**arguments)
+
+
+def materials():
+    """Every built-in catalog material, as ``covopt materials list --json``: a list of dicts
+    (name, family, youngs_modulus_Pa, poisson_ratio, density_kg_per_m3, modulus_basis,
+    source, note, defined_at; None where the catalog gives nothing)."""
+    return _covopt.materials()
+
+
+def material(name):
+    """One built-in catalog material by name (ignoring case), as ``covopt materials show NAME
+    --json``. An unknown name raises ValueError: "no material 'X' in the catalog; did you
+    mean ...?"."""
+    return _covopt.material(name)

@@ -1,0 +1,340 @@
+/// @file module.cpp
+/// covopt._covopt: the pybind11 extension behind `import covopt` (python/covopt/__init__.py).
+///
+/// SI floats in and out; keyword names are the CLI's scene flags with underscores. A scene
+/// value is a number in SI (math.inf for a fixed mass or a flat robot), or a string read as
+/// the CLI reads a flag ("15mm", "fixed", "flat"). A number, like a bare number on the
+/// command line, must be plausible for its quantity (robot_radius=40 is refused: 40 m;
+/// write "40mm", or "40m" if meant). Results are the CLI's JSON objects, built by
+/// covopt::report and turned into dicts by json.loads, so their keys and numbers are those of
+/// `covopt simulate --json` and `covopt materials ... --json`. Bad input raises ValueError
+/// with the library's message; a failed computation raises covopt.ComputationError (with
+/// .status). The computation runs without the GIL.
+
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "covopt/core/exact.hpp"
+#include "covopt/core/impact_model.hpp"
+#include "covopt/core/impact_result.hpp"
+#include "covopt/core/quantity.hpp"
+#include "covopt/core/scene.hpp"
+#include "covopt/core/time_integration.hpp"
+#include "covopt/materials/catalog.hpp"
+#include "covopt/materials/material.hpp"
+#include "covopt/report/materials_json.hpp"
+#include "covopt/report/simulation_json.hpp"
+
+namespace py = pybind11;
+
+namespace covopt::python {
+namespace {
+
+namespace specs = covopt::quantity_specs;
+
+/// One scene keyword: its name, the library's field name (as in the library's messages),
+/// how to read it and where it goes.
+struct SceneKeyword {
+  const char* keyword;  ///< robot_mass
+  const char* field;    ///< robot.mass
+  const QuantitySpec* spec;
+  double& (*value)(Scene&);
+};
+
+// clang-format off
+const SceneKeyword kSceneKeywords[] = {
+  {"robot_mass", "robot.mass", &specs::kRobotMass, [](Scene& s) -> double& { return s.robot.mass_kg; }},
+  {"speed", "robot.speed", &specs::kSpeed, [](Scene& s) -> double& { return s.robot.speed_m_per_s; }},
+  {"robot_radius", "robot.radius", &specs::kRobotRadius, [](Scene& s) -> double& { return s.robot.radius_m; }},
+  {"robot_modulus", "robot.modulus", &specs::kRobotModulus, [](Scene& s) -> double& { return s.robot.youngs_modulus_Pa; }},
+  {"robot_poisson", "robot.poisson", &specs::kPoissonRatio, [](Scene& s) -> double& { return s.robot.poisson_ratio; }},
+  {"covering_modulus", "covering.modulus", &specs::kCoveringModulus, [](Scene& s) -> double& { return s.covering.youngs_modulus_Pa; }},
+  {"covering_poisson", "covering.poisson", &specs::kPoissonRatio, [](Scene& s) -> double& { return s.covering.poisson_ratio; }},
+  {"covering_thickness", "covering.thickness", &specs::kCoveringThickness, [](Scene& s) -> double& { return s.covering.thickness_m; }},
+  {"head_mass", "head.mass", &specs::kHeadMass, [](Scene& s) -> double& { return s.head.mass_kg; }},
+  {"head_radius", "head.radius", &specs::kHeadRadius, [](Scene& s) -> double& { return s.head.radius_m; }},
+  {"scalp_modulus", "scalp.modulus", &specs::kScalpModulus, [](Scene& s) -> double& { return s.scalp.youngs_modulus_Pa; }},
+  {"scalp_poisson", "scalp.poisson", &specs::kPoissonRatio, [](Scene& s) -> double& { return s.scalp.poisson_ratio; }},
+  {"scalp_thickness", "scalp.thickness", &specs::kScalpThickness, [](Scene& s) -> double& { return s.scalp.thickness_m; }},
+  {"skull_modulus", "skull.modulus", &specs::kSkullModulus, [](Scene& s) -> double& { return s.skull.youngs_modulus_Pa; }},
+  {"skull_poisson", "skull.poisson", &specs::kPoissonRatio, [](Scene& s) -> double& { return s.skull.poisson_ratio; }},
+};
+// clang-format on
+
+constexpr double kMaxSafetyFactor = 100.0;
+
+std::string Repr(const py::handle& value) { return py::repr(value).cast<std::string>(); }
+
+/// A number as a person would type it: 40.0 as "40", 0.25 as "0.25".
+std::string AsTyped(const py::handle& number) {
+  if (py::isinstance<py::float_>(number)) {
+    const double value = number.cast<double>();
+    if (value == std::floor(value) && std::abs(value) < 1e15) {
+      return std::to_string(static_cast<long long>(value));
+    }
+  }
+  return py::str(number).cast<std::string>();
+}
+
+/// A Python value as SI: a float or int (SI; math.inf where the spec allows "fixed" or
+/// "flat"), or a string read with the CLI's unit parser.
+/// @throws std::invalid_argument naming the keyword, the value and what is allowed.
+double ReadQuantity(const py::handle& value, const QuantitySpec& spec, std::string_view keyword) {
+  if (py::isinstance<py::str>(value)) {
+    return ParseQuantity(value.cast<std::string>(), spec, keyword);
+  }
+  if (py::isinstance<py::bool_>(value) ||
+      !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value))) {
+    throw std::invalid_argument(std::string(keyword) + ": expected a number in SI (" +
+                                std::string(SiUnit(spec.kind)) + ") or a string with a unit (got " +
+                                Repr(value) + ")");
+  }
+  const double number = value.cast<double>();
+  if (std::isinf(number) && number > 0 && (spec.allow_fixed || spec.allow_flat)) return number;
+  if (!std::isfinite(number)) {
+    throw std::invalid_argument(
+        std::string(keyword) + " must be finite" +
+        (spec.allow_fixed ? " (or math.inf / 'fixed' for a fixed body)"
+         : spec.allow_flat ? " (or math.inf / 'flat' for a flat surface)"
+                           : "") +
+        " (got " + Repr(value) + ")");
+  }
+  // A number has no unit, as a bare number on the command line: an implausible one is the
+  // classic slip (robot_radius=40 meant in mm) and refused with the spellings to use.
+  CheckBareNumber(number, AsTyped(value), spec, keyword, "'");
+  return number;
+}
+
+/// A library message naming scene fields ("robot.mass must be ...") with the keywords the
+/// caller gave: "... (robot.mass is robot_mass=-10.0)".
+std::string AttributeError(std::string message, const py::kwargs& given) {
+  std::string origins;
+  for (const SceneKeyword& k : kSceneKeywords) {
+    if (given.contains(k.keyword) && message.find(k.field) != std::string::npos) {
+      origins += std::string(origins.empty() ? "" : "; ") + k.field + " is " + k.keyword + "=" +
+                 Repr(given[k.keyword]);
+    }
+  }
+  return origins.empty() ? message : message + " (" + origins + ")";
+}
+
+const materials::Catalog& BuiltInCatalog() { return materials::Catalog::BuiltIn(); }
+
+const materials::Material& FindMaterial(std::string_view name) {
+  const materials::Material* m = BuiltInCatalog().Find(name);
+  if (m == nullptr) throw std::invalid_argument(report::NoSuchMaterialMessage(BuiltInCatalog(), name));
+  return *m;
+}
+
+py::object JsonLoads(const std::string& text) {
+  return py::module_::import("json").attr("loads")(text);
+}
+
+/// Raises covopt.ComputationError(message, status).
+[[noreturn]] void RaiseComputationError(const ImpactResult& result) {
+  const std::string message =
+      "the computation failed: " + std::string(ToString(result.status)) + " (" +
+      std::string(ToString(result.method)) + ", code " + std::to_string(result.raw_code) + ")" +
+      (result.message.empty() ? "" : ": " + result.message);
+  py::object error_type = py::module_::import("covopt._errors").attr("ComputationError");
+  py::object error = error_type(message, std::string(ToString(result.status)));
+  PyErr_SetObject(error_type.ptr(), error.ptr());
+  throw py::error_already_set();
+}
+
+const char* const kKnownKeywords[] = {
+    "thresholds", "laceration_limit", "contusion_limit", "safety_factor", "material",
+    "method",     "rtol",             "atol",            "max_steps",     "history"};
+
+/// covopt.simulate(**scene, ...): see python/covopt/__init__.py for the documentation.
+py::dict Simulate(const py::kwargs& kwargs) {
+  const auto get = [&](const char* name) -> std::optional<py::object> {
+    if (!kwargs.contains(name)) return std::nullopt;
+    py::object value = kwargs[name];
+    if (value.is_none()) return std::nullopt;
+    return value;
+  };
+  for (const auto& item : kwargs) {
+    const std::string name = py::str(item.first).cast<std::string>();
+    bool known = false;
+    for (const SceneKeyword& k : kSceneKeywords) known = known || name == k.keyword;
+    for (const char* k : kKnownKeywords) known = known || name == k;
+    if (!known) throw std::invalid_argument("simulate() got an unknown keyword '" + name + "'");
+  }
+
+  report::SimulationReport report;
+  Scene& scene = report.scene;
+  if (const auto name = get("material")) {
+    for (const char* k : {"covering_modulus", "covering_poisson"}) {
+      if (get(k)) {
+        throw std::invalid_argument(std::string("material sets the covering's modulus and Poisson "
+                                                "ratio; give either material or ") + k + ", not both");
+      }
+    }
+    const materials::Material& m = FindMaterial(py::str(*name).cast<std::string>());
+    scene.covering.youngs_modulus_Pa = m.youngs_modulus_Pa;
+    scene.covering.poisson_ratio = m.poisson_ratio.value_or(materials::kDefaultPoissonRatio);
+    report.covering_material = m.name;
+    report.covering_poisson_assumed = !m.poisson_ratio.has_value();
+  }
+  for (const SceneKeyword& k : kSceneKeywords) {
+    if (const auto value = get(k.keyword)) k.value(scene) = ReadQuantity(*value, *k.spec, k.keyword);
+  }
+  if (const auto thresholds = get("thresholds")) {
+    const std::string text = py::str(*thresholds).cast<std::string>();
+    if (text == "cumulative") {
+      scene.model.thresholds = ThresholdReading::kCumulative;
+    } else if (text == "literal") {
+      scene.model.thresholds = ThresholdReading::kLiteral;
+    } else {
+      throw std::invalid_argument("thresholds: expected 'cumulative' or 'literal' (got '" + text + "')");
+    }
+  }
+
+  InjuryLimits limits;
+  if (const auto v = get("laceration_limit")) {
+    limits.laceration_tensile_stress_Pa = ReadQuantity(*v, specs::kLacerationLimit, "laceration_limit");
+    if (!(limits.laceration_tensile_stress_Pa > 0.0)) {
+      throw std::invalid_argument("laceration_limit must be > 0 Pa (got " + Repr(*v) + ")");
+    }
+  }
+  if (const auto v = get("contusion_limit")) {
+    limits.contusion_energy_density_J_per_m2 = ReadQuantity(*v, specs::kContusionLimit, "contusion_limit");
+    if (!(limits.contusion_energy_density_J_per_m2 > 0.0)) {
+      throw std::invalid_argument("contusion_limit must be > 0 J/m2 (got " + Repr(*v) + ")");
+    }
+  }
+  if (const auto v = get("safety_factor")) {
+    report.safety_factor = ReadQuantity(*v, specs::kSafetyFactor, "safety_factor");
+    if (!(report.safety_factor >= 1.0 && report.safety_factor <= kMaxSafetyFactor)) {
+      throw std::invalid_argument("safety_factor must be in [1, 100] (got " + Repr(*v) + ")");
+    }
+  }
+
+  // The path: exact unless a history is asked for or a time-path method is named.
+  const bool history = get("history") && py::bool_(*get("history")).cast<bool>();
+  bool time_path = history;
+  TimeIntegrationOptions time;
+  if (const auto v = get("method")) {
+    const std::string method = py::str(*v).cast<std::string>();
+    if (method == "cvode") {
+      time_path = true;
+      time.method = ComputationMethod::kCvodeAdams;
+    } else if (const auto named = ParseComputationMethod(method);
+               named && *named != ComputationMethod::kExact) {
+      time_path = true;
+      time.method = *named;
+    } else if (method == "exact") {
+      if (history) {
+        throw std::invalid_argument("method='exact' computes no time history, which history=True "
+                                    "needs; drop method (the default integrator runs then) or "
+                                    "give a time-path method");
+      }
+    } else {
+      std::string names;
+      for (const ComputationMethod m : TimeIntegrationMethods()) {
+        names += std::string(names.empty() ? "" : ", ") + std::string(ToString(m));
+      }
+      throw std::invalid_argument("method: expected exact, cvode or one of " + names + " (got '" +
+                                  method + "')");
+    }
+  }
+  for (const char* k : {"rtol", "atol", "max_steps"}) {
+    if (get(k) && !time_path) {
+      throw std::invalid_argument(std::string(k) +
+                                  " applies to the time path only; give method='cvode' or "
+                                  "another integrator, or history=True");
+    }
+  }
+  if (const auto v = get("rtol")) time.relative_tolerance = ReadQuantity(*v, specs::kTolerance, "rtol");
+  if (const auto v = get("atol")) {
+    time.absolute_tolerance = ReadQuantity(*v, specs::kTolerance, "atol");
+    if (!(time.absolute_tolerance > 0.0)) {
+      throw std::invalid_argument("atol must be > 0 (got " + Repr(*v) + ")");
+    }
+  }
+  if (const auto v = get("max_steps")) {
+    if (!py::isinstance<py::int_>(*v) || py::isinstance<py::bool_>(*v)) {
+      throw std::invalid_argument("max_steps: expected an integer (got " + Repr(*v) + ")");
+    }
+    time.max_steps = v->cast<long>();
+  }
+  time.record_history = history;
+
+  std::optional<ImpactModel> model;
+  try {
+    model.emplace(ImpactModel::FromScene(scene));
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(AttributeError(e.what(), kwargs));
+  }
+  {
+    py::gil_scoped_release release;
+    if (time_path) {
+      if (history) {
+        // Smooth histories as the CLI's: at least ~400 samples over the contact.
+        time.history_max_interval_s = ExactContactDuration(*model, ExactPeaks(*model)) / 400.0;
+      }
+      report.time_options = time;
+      report.result = SimulateImpact(*model, time);  // throws invalid_argument on bad options
+    } else {
+      report.result = SolveExact(*model);
+    }
+  }
+  if (!report.result.ok()) RaiseComputationError(report.result);
+  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor);
+
+  py::dict result = JsonLoads(report::SimulationJson(report, -1));
+  if (history) {
+    const std::vector<HistorySample>& h = report.result.history;
+    const auto column = [&](auto field) {
+      py::array_t<double> array(static_cast<py::ssize_t>(h.size()));
+      double* data = array.mutable_data();
+      for (std::size_t i = 0; i < h.size(); ++i) data[i] = field(h[i]);
+      return array;
+    };
+    py::dict columns;
+    columns["time_s"] = column([](const HistorySample& s) { return s.time_s; });
+    columns["penetration_m"] = column([](const HistorySample& s) { return s.penetration_m; });
+    columns["penetration_rate_m_per_s"] =
+        column([](const HistorySample& s) { return s.penetration_rate_m_per_s; });
+    columns["force_N"] = column([](const HistorySample& s) { return s.force_N; });
+    columns["compressive_stress_Pa"] =
+        column([](const HistorySample& s) { return s.compressive_stress_Pa; });
+    const ImpactModel& m = *model;
+    columns["tensile_stress_Pa"] = column(
+        [&m](const HistorySample& s) { return m.TensileFromCompressive(s.compressive_stress_Pa); });
+    columns["energy_density_J_per_m2"] =
+        column([](const HistorySample& s) { return s.energy_density_J_per_m2; });
+    result["history"] = columns;
+  }
+  return result;
+}
+
+py::list Materials() {
+  std::vector<const materials::Material*> rows;
+  for (const materials::Material& m : BuiltInCatalog().materials()) rows.push_back(&m);
+  return JsonLoads(report::MaterialsJson(rows, -1));
+}
+
+py::dict Material(const std::string& name) {
+  return JsonLoads(report::MaterialJson(FindMaterial(name), -1));
+}
+
+}  // namespace
+}  // namespace covopt::python
+
+PYBIND11_MODULE(_covopt, m) {
+  m.doc() = "covopt's C++ library (use the covopt package, which documents it)";
+  // std::invalid_argument already becomes ValueError; say so for the reader.
+  m.def("simulate", &covopt::python::Simulate);
+  m.def("materials", &covopt::python::Materials);
+  m.def("material", &covopt::python::Material, py::arg("name"));
+}

@@ -1,0 +1,178 @@
+"""covopt.simulate against the CLI and the physics.
+
+The dict must be the CLI's `simulate --json` object on the same inputs, key for key and
+number for number (both come from covopt::report::SimulationJson; shortest round-trip
+doubles survive json.loads exactly). History arrays have one entry per sample and agree
+with the peaks; a fixed body behaves as an infinitely heavy one; bad input is a ValueError
+naming the keyword, a failed computation a ComputationError with its status.
+"""
+
+import math
+import threading
+
+import numpy as np
+import pytest
+
+import covopt
+
+# (keyword arguments, the same scene as CLI flags)
+SCENES = [
+    ({}, []),
+    ({"robot_mass": 10.0, "speed": 1.5, "covering_thickness": 0.02, "covering_modulus": 5e6},
+     ["--robot-mass", "10kg", "--speed", "1.5m/s", "--covering-thickness", "20mm",
+      "--covering-modulus", "5MPa"]),
+    ({"robot_mass": math.inf, "speed": 2.2}, ["--robot-mass", "fixed", "--speed", "2.2m/s"]),
+    ({"head_mass": "fixed", "robot_radius": "flat"}, ["--head-mass", "fixed", "--robot-radius", "flat"]),
+    ({"covering_thickness": 0.0}, ["--covering-thickness", "0"]),
+    ({"covering_thickness": 0.004, "thresholds": "literal"},
+     ["--covering-thickness", "4mm", "--thresholds", "literal"]),
+    ({"material": "polystyrene foam 48.3"}, ["--material", "polystyrene foam 48.3"]),
+    ({"covering_modulus": 70e9, "covering_poisson": 0.3, "covering_thickness": 0.015},
+     ["--covering-modulus", "70GPa", "--covering-poisson", "0.3", "--covering-thickness", "15mm"]),
+    ({"laceration_limit": 2e6, "contusion_limit": "3J/cm2"},
+     ["--laceration-limit", "2MPa", "--contusion-limit", "3J/cm2"]),
+    ({"method": "cvode", "rtol": 1e-9}, ["--method", "cvode", "--rtol", "1e-9"]),
+    ({"method": "arkode-erk54", "speed": 3.0}, ["--method", "arkode-erk54", "--speed", "3m/s"]),
+]
+
+
+@pytest.mark.parametrize("kwargs,flags", SCENES)
+def test_simulate_returns_the_cli_json_object(cli_json, kwargs, flags):
+    assert covopt.simulate(**kwargs) == cli_json("simulate", "--json", *flags)
+
+
+def test_the_keys_come_in_the_cli_order(cli_json):
+    assert list(covopt.simulate()) == list(cli_json("simulate", "--json"))
+
+
+def test_a_safety_factor_derates_the_limits_as_the_cli_does(cli_json):
+    ours = covopt.simulate(safety_factor=2.0)
+    theirs = cli_json("simulate", "--json", "--safety-factor", "2")
+    # The CLI adds a warning on its input (the factor and the derated limits); all else agrees.
+    for key in ("laceration", "contusion", "safe", "max_tensile_stress_Pa", "scene", "solver"):
+        assert ours[key] == theirs[key]
+    assert ours["laceration"]["derated_limit_Pa"] == 0.5e6
+    assert ours["laceration"]["ratio"] == covopt.simulate()["laceration"]["ratio"]
+
+
+def test_an_implausible_number_is_accepted_with_an_explicit_unit():
+    assert covopt.simulate(robot_radius="40m")["scene"]["robot"]["radius_m"] == 40.0
+
+
+def test_values_with_units_equal_si_floats():
+    assert covopt.simulate(robot_mass="10kg", speed="250mm/s", covering_thickness="18mm") == \
+        covopt.simulate(robot_mass=10.0, speed=0.25, covering_thickness=0.018)
+
+
+def test_fixed_and_flat_are_math_inf():
+    fixed = covopt.simulate(robot_mass="fixed", robot_radius="flat")
+    assert fixed == covopt.simulate(robot_mass=math.inf, robot_radius=math.inf)
+    assert fixed["scene"]["robot"]["mass_kg"] == "fixed"
+    assert fixed["scene"]["robot"]["radius_m"] == "flat"
+
+
+def test_a_fixed_robot_is_the_limit_of_a_heavy_one():
+    fixed = covopt.simulate(robot_mass=math.inf)
+    heavy = covopt.simulate(robot_mass="1e6kg")  # beyond the plausible range of a bare number
+    light = covopt.simulate(robot_mass=1.0)
+    for key in ("max_penetration_m", "peak_force_N", "max_energy_density_J_per_m2"):
+        assert heavy[key] == pytest.approx(fixed[key], rel=1e-5)
+        assert light[key] < fixed[key]
+
+
+def test_history_arrays_have_one_entry_per_sample_and_agree_with_the_peaks():
+    result = covopt.simulate(history=True)
+    history = result["history"]
+    columns = ["time_s", "penetration_m", "penetration_rate_m_per_s", "force_N",
+               "compressive_stress_Pa", "tensile_stress_Pa", "energy_density_J_per_m2"]
+    assert list(history) == columns
+    samples = result["solver"]["history_samples"]
+    assert samples >= 400
+    for name in columns:
+        assert isinstance(history[name], np.ndarray)
+        assert history[name].shape == (samples,)
+        assert history[name].dtype == np.float64
+    assert np.all(np.diff(history["time_s"]) >= 0)
+    assert history["penetration_m"].max() == pytest.approx(result["max_penetration_m"], rel=1e-6)
+    assert history["force_N"].max() == pytest.approx(result["peak_force_N"], rel=1e-6)
+    # σ_t = σ_c (1 - 2 ν_t) / 3 at every sample.
+    nu_t = result["scene"]["model"]["tensile_poisson_ratio"]
+    np.testing.assert_allclose(history["tensile_stress_Pa"],
+                               history["compressive_stress_Pa"] * (1 - 2 * nu_t) / 3, rtol=1e-12)
+    assert "history" not in covopt.simulate()
+
+
+def test_history_matches_the_cli_history_csv(cli, tmp_path):
+    csv = tmp_path / "history.csv"
+    code, _, err = cli("simulate", "--history", str(csv))
+    assert code == 0, err
+    table = np.genfromtxt(csv, delimiter=",", names=True)
+    history = covopt.simulate(history=True)["history"]
+    for name in history:
+        np.testing.assert_array_equal(history[name], table[name])
+
+
+def test_bad_input_is_a_value_error_with_the_clis_message(cli):
+    with pytest.raises(ValueError) as error:
+        covopt.simulate(robot_mass=-10.0)
+    code, out, err = cli("simulate", "--robot-mass", "-10kg")
+    assert code == 2 and out == ""
+    library_part = str(error.value).split(" (robot.mass is")[0]
+    assert library_part in err
+    assert "robot_mass=-10.0" in str(error.value)
+
+
+@pytest.mark.parametrize("kwargs,words", [
+    ({"robot_radius": "40"}, ["robot_radius 40", "a bare number is in metres", "40mm"]),
+    ({"robot_radius": 40.0}, ["robot_radius 40", "a bare number is in metres", "'40mm' or '40m'"]),
+    ({"covering_modulus": 27.6}, ["covering_modulus 27.6", "Pa", "'27.6MPa'"]),
+    ({"robot_mass": 5000}, ["robot_mass 5000", "kg"]),
+    ({"speed": "2kg"}, ["speed", "'kg' is not a speed"]),
+    ({"robot_mass": math.nan}, ["robot_mass must be finite", "nan"]),
+    ({"speed": math.inf}, ["speed must be finite", "inf"]),
+    ({"head_mass": -math.inf}, ["head_mass must be finite", "fixed"]),
+    ({"covering_thickness": [1]}, ["covering_thickness: expected a number"]),
+    ({"thresholds": "paper"}, ["thresholds", "'cumulative' or 'literal'", "paper"]),
+    ({"safety_factor": 0.5}, ["safety_factor must be in [1, 100]", "0.5"]),
+    ({"method": "euler"}, ["method: expected exact, cvode or one of", "euler"]),
+    ({"method": "exact", "history": True}, ["method='exact' computes no time history"]),
+    ({"rtol": 1e-6}, ["rtol applies to the time path only"]),
+    ({"material": "polystyrene", "covering_modulus": 1e6}, ["give either material or covering_modulus"]),
+    ({"method": "cvode", "rtol": 1.0}, ["rtol must be in [1e-14, 1e-2]", "got 1"]),
+])
+def test_bad_input_names_the_keyword_and_the_value(kwargs, words):
+    with pytest.raises(ValueError) as error:
+        covopt.simulate(**kwargs)
+    for word in words:
+        assert word in str(error.value)
+
+
+def test_an_unknown_keyword_is_a_type_error():
+    with pytest.raises(TypeError):
+        covopt.simulate(robot_masss=10.0)
+
+
+def test_a_failed_computation_raises_computation_error_with_its_status(cli):
+    with pytest.raises(covopt.ComputationError) as error:
+        covopt.simulate(method="cvode", max_steps=10)
+    assert error.value.status == "step-limit"
+    assert isinstance(error.value, RuntimeError)
+    code, out, err = cli("simulate", "--method", "cvode", "--max-steps", "10")
+    assert code == 1 and out == ""
+    assert str(error.value) in err
+
+
+def test_threads_get_the_same_results_as_one_call():
+    expected = covopt.simulate(history=True, speed=3.0)["max_penetration_m"]
+    results = []
+
+    def work():
+        for _ in range(5):
+            results.append(covopt.simulate(history=True, speed=3.0)["max_penetration_m"])
+
+    threads = [threading.Thread(target=work) for _ in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert results == [expected] * 20

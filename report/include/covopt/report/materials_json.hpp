@@ -1,0 +1,27 @@
+#pragma once
+/// @file materials_json.hpp
+/// Catalog entries as JSON text (`covopt materials list|show --json`, `covopt.materials()`)
+/// and the message for a name the catalog does not hold.
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "covopt/materials/catalog.hpp"
+#include "covopt/materials/material.hpp"
+
+namespace covopt::report {
+
+/// One catalog entry as a JSON object: name, family, youngs_modulus_Pa, poisson_ratio (null
+/// if unknown), density_kg_per_m3 [kg/m³] (null if unknown), modulus_basis, source, note
+/// (null if none), defined_at (null if not known).
+std::string MaterialJson(const materials::Material& material, int indent = 2);
+
+/// Catalog entries as a JSON array of MaterialJson objects, in the given order.
+std::string MaterialsJson(std::span<const materials::Material* const> materials, int indent = 2);
+
+/// "no material 'X' in the catalog; did you mean 'Y' or 'Z'?" (or "...; run 'covopt
+/// materials list' for the names" when the catalog suggests nothing close).
+std::string NoSuchMaterialMessage(const materials::Catalog& catalog, std::string_view name);
+
+}  // namespace covopt::report
