@@ -7,6 +7,8 @@
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/scene.hpp"
+#include "covopt/core/scene_fields.hpp"
 #include "covopt/core/sensitivity.hpp"
+#include "covopt/core/sweep.hpp"
 #include "covopt/core/time_integration.hpp"
 #include "covopt/core/work_precision.hpp"

@@ -1,0 +1,384 @@
+// A streamed sweep on the exact path (covopt/core/sweep.hpp).
+//
+// The grid is cut into blocks of block_rows rows. Threads claim the next block in order
+// from a shared counter and fill a slot of a ring of 2 x threads slots; the calling thread
+// hands the blocks to the consumer strictly in order, and computes a block itself while the
+// one it must deliver next is not ready. A block may be claimed only when its slot is free
+// (block < delivered + slots), which bounds memory by the ring whatever the grid's size.
+// Each row is written only by the thread that computed it from its own scene, so neither
+// the order of work nor the number of threads changes a result.
+#include "covopt/core/sweep.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdio>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <utility>
+
+#include "covopt/core/impact_model.hpp"
+#include "covopt/core/scene_fields.hpp"
+#include "numeric_format.hpp"
+
+namespace covopt {
+namespace {
+
+constexpr unsigned kMaxThreads = 4096;
+constexpr std::size_t kMaxBlockRows = 1000000;
+constexpr double kMaxSafetyFactor = 100.0;
+
+using internal::FormatNumber;
+
+/// The field an axis sweeps, checked; `name` is "x" or "y" for messages.
+const SceneField& CheckAxis(const SweepAxis& axis, const char* name) {
+  const SceneField* field = FindSceneField(axis.quantity);
+  if (field == nullptr) {
+    throw std::invalid_argument(std::string(name) + ".quantity: no scene quantity '" +
+                                axis.quantity + "'; the quantities are " + SceneFieldNames() +
+                                " (or their dotted names, e.g. robot.speed)");
+  }
+  if (axis.values.empty()) {
+    throw std::invalid_argument(std::string(name) + ".values: no values for " +
+                                std::string(field->name) + "; give at least one");
+  }
+  for (std::size_t i = 0; i < axis.values.size(); ++i) {
+    if (std::isnan(axis.values[i])) {
+      throw std::invalid_argument(std::string(name) + ".values[" + std::to_string(i) +
+                                  "] must be a number, or +inf for fixed/flat (got nan)");
+    }
+  }
+  return *field;
+}
+
+/// Solves one grid point into `row` (every field overwritten: slots are reused).
+void SolveRow(const SweepSpec& spec, const SweepOptions& options, const SceneField& x_field,
+              const SceneField* y_field, std::size_t ny, std::size_t index, SweepRow& row) {
+  row.index = index;
+  row.ix = index / ny;
+  row.iy = index % ny;
+  row.x = spec.x.values[row.ix];
+  row.y = y_field ? spec.y->values[row.iy] : 0.0;
+  Scene scene = spec.scene;
+  x_field.field(scene) = row.x;
+  if (y_field) y_field->field(scene) = row.y;
+  row.covered = scene.covering.thickness_m > 0.0;
+  row.warnings.clear();
+  try {
+    const ImpactModel model = ImpactModel::FromScene(scene);
+    ImpactResult result = SolveExact(model, options.exact);
+    row.valid = true;
+    row.error.clear();
+    row.peaks = result.peaks;
+    row.contact_duration_s = result.contact_duration_s;
+    row.time_of_max_compression_s = result.time_of_max_compression_s;
+    row.rebound_speed_m_per_s = result.rebound_speed_m_per_s.value_or(0.0);
+    row.assessment = Assess(result.peaks, spec.limits);
+    for (InjuryVerdict* verdict : {&row.assessment.laceration, &row.assessment.contusion}) {
+      verdict->safe = spec.safety_factor * verdict->ratio <= 1.0;
+    }
+    row.worst_ratio = std::max(row.assessment.laceration.ratio, row.assessment.contusion.ratio);
+    row.compression_ratio = result.peaks.max_penetration_m /
+                            result.peaks.full_compression_penetration_m;
+    row.admissible = row.assessment.safe() && !(row.covered && result.peaks.fully_compressed);
+    row.warnings = std::move(result.coded_warnings);
+  } catch (const std::invalid_argument& e) {
+    row.valid = false;
+    row.error = e.what();
+    row.peaks = {};
+    row.contact_duration_s.reset();
+    row.time_of_max_compression_s.reset();
+    row.rebound_speed_m_per_s = 0.0;
+    row.assessment = {};
+    row.worst_ratio = 0.0;
+    row.compression_ratio = 0.0;
+    row.admissible = false;
+  }
+}
+
+/// The summary, one row at a time, in grid order.
+void Count(const SweepRow& row, SweepResult& r) {
+  ++r.rows;
+  if (!row.valid) {
+    if (!r.first_invalid) {
+      r.first_invalid = row.index;
+      r.first_invalid_error = row.error;
+    }
+    return;
+  }
+  ++r.valid;
+  if (row.assessment.safe()) ++r.safe;
+  if (!row.assessment.laceration.safe) ++r.laceration_unsafe;
+  if (!row.assessment.contusion.safe) ++r.contusion_unsafe;
+  if (row.covered) {
+    ++r.covered;
+    if (row.peaks.fully_compressed) ++r.fully_compressed;
+  }
+  if (row.admissible) ++r.admissible;
+  if (!row.warnings.empty()) {
+    ++r.warned;
+    if (!r.first_warned) {
+      r.first_warned = row.index;
+      r.first_warning = row.warnings.front();
+    }
+  }
+  const SweepExtreme extreme{row.index, row.worst_ratio, row.assessment.laceration.ratio,
+                             row.assessment.contusion.ratio};
+  if (!r.least || row.worst_ratio < r.least->worst_ratio) r.least = extreme;
+  if (!r.most || row.worst_ratio > r.most->worst_ratio) r.most = extreme;
+}
+
+std::string Percent(std::size_t n, std::size_t of) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f %%",
+                of == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(of));
+  return text;
+}
+
+std::string Short(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+/// The ring of blocks shared by the threads of one sweep.
+class BlockRing {
+ public:
+  BlockRing(std::size_t blocks, std::size_t slots, std::size_t block_rows)
+      : blocks_(blocks), slots_(slots), ready_(slots, kNone), rows_(slots) {
+    for (auto& slot : rows_) slot.reserve(block_rows);
+  }
+
+  /// Claims the next block if its slot is free; false when there is none to claim now.
+  /// Call with the lock held.
+  bool TryClaim(std::size_t& block) {
+    if (stop_ || next_ >= blocks_ || next_ >= delivered_ + slots_) return false;
+    block = next_++;
+    return true;
+  }
+  /// No block left to claim, ever.
+  bool Exhausted() const { return stop_ || next_ >= blocks_; }
+
+  std::vector<SweepRow>& Slot(std::size_t block) { return rows_[block % slots_]; }
+
+  std::mutex mutex;
+  std::condition_variable changed;  // a block became ready, a slot free, or stop was set
+
+  void MarkReady(std::size_t block) { ready_[block % slots_] = block; }
+  bool Ready(std::size_t block) const { return ready_[block % slots_] == block; }
+  void MarkDelivered(std::size_t block) {
+    ready_[block % slots_] = kNone;
+    delivered_ = block + 1;
+  }
+  void Stop() { stop_ = true; }
+  bool stopped() const { return stop_; }
+
+ private:
+  static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  const std::size_t blocks_;
+  const std::size_t slots_;
+  std::size_t next_ = 0;       // the next block to claim
+  std::size_t delivered_ = 0;  // blocks handed to the consumer
+  bool stop_ = false;
+  std::vector<std::size_t> ready_;  // per slot: the block it holds, complete; or kNone
+  std::vector<std::vector<SweepRow>> rows_;
+};
+
+}  // namespace
+
+std::string_view ToString(SweepStatus status) noexcept {
+  switch (status) {
+    case SweepStatus::kAllValid: return "all-valid";
+    case SweepStatus::kSomeInvalid: return "some-invalid";
+    case SweepStatus::kNoneValid: return "none-valid";
+  }
+  return "unknown";
+}
+
+std::string SweepResult::BriefReport() const {
+  std::string text = "sweep: " + std::to_string(rows) + " point" + (rows == 1 ? "" : "s");
+  if (y_values > 0) {
+    text += " (" + std::to_string(x_values) + " x " + std::to_string(y_values) + ")";
+  }
+  char time[48];
+  std::snprintf(time, sizeof time, " in %.3g s on %u thread%s: ", wall_time_s, threads,
+                threads == 1 ? "" : "s");
+  text += time;
+  switch (status) {
+    case SweepStatus::kAllValid: text += "all valid"; break;
+    case SweepStatus::kSomeInvalid:
+      text += std::to_string(valid) + " valid, " + std::to_string(rows - valid) + " invalid";
+      break;
+    case SweepStatus::kNoneValid: return text + "none valid: " + first_invalid_error;
+  }
+  text += "; safe " + Percent(safe, valid) + ", admissible " + Percent(admissible, valid);
+  if (least && most) {
+    text += "; worst ratio " + Short(least->worst_ratio) + " .. " + Short(most->worst_ratio);
+  }
+  return text;
+}
+
+SweepResult Sweep(const SweepSpec& spec, const SweepOptions& options,
+                  const SweepConsumer& consumer) {
+  // Check everything before any work.
+  const SceneField& x_field = CheckAxis(spec.x, "x");
+  const SceneField* y_field = spec.y ? &CheckAxis(*spec.y, "y") : nullptr;
+  if (y_field == &x_field) {
+    throw std::invalid_argument("y.quantity: " + std::string(x_field.name) +
+                                " is already swept by x (got '" + spec.y->quantity + "')");
+  }
+  const std::size_t nx = spec.x.values.size();
+  const std::size_t ny = spec.y ? spec.y->values.size() : 1;
+  if (nx > std::numeric_limits<std::size_t>::max() / ny) {
+    throw std::invalid_argument("the grid has " + std::to_string(nx) + " x " +
+                                std::to_string(ny) + " points, more than can be counted");
+  }
+  if (!(spec.limits.laceration_tensile_stress_Pa > 0.0) ||
+      !std::isfinite(spec.limits.laceration_tensile_stress_Pa)) {
+    throw std::invalid_argument("limits.laceration_tensile_stress_Pa must be > 0 Pa and finite (got " +
+                                FormatNumber(spec.limits.laceration_tensile_stress_Pa) + ")");
+  }
+  if (!(spec.limits.contusion_energy_density_J_per_m2 > 0.0) ||
+      !std::isfinite(spec.limits.contusion_energy_density_J_per_m2)) {
+    throw std::invalid_argument(
+        "limits.contusion_energy_density_J_per_m2 must be > 0 J/m2 and finite (got " +
+        FormatNumber(spec.limits.contusion_energy_density_J_per_m2) + ")");
+  }
+  if (!(spec.safety_factor >= 1.0 && spec.safety_factor <= kMaxSafetyFactor)) {
+    throw std::invalid_argument("safety_factor must be in [1, 100] (got " +
+                                FormatNumber(spec.safety_factor) + ")");
+  }
+  if (options.threads > kMaxThreads) {
+    throw std::invalid_argument("threads must be <= " + std::to_string(kMaxThreads) +
+                                " (got " + std::to_string(options.threads) + ")");
+  }
+  if (options.block_rows < 1 || options.block_rows > kMaxBlockRows) {
+    throw std::invalid_argument("block_rows must be in 1..1000000 (got " +
+                                std::to_string(options.block_rows) + ")");
+  }
+  if (!consumer) throw std::invalid_argument("consumer: empty; give a function to receive the rows");
+
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t total = nx * ny;
+  const std::size_t block_rows = options.block_rows;
+  const std::size_t blocks = total / block_rows + (total % block_rows != 0 ? 1 : 0);
+  unsigned threads = options.threads;
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(blocks, 1)));
+
+  SweepResult result;
+  result.x_values = nx;
+  result.y_values = spec.y ? ny : 0;
+  result.threads = threads;
+
+  BlockRing ring(blocks, 2 * static_cast<std::size_t>(threads), std::min(block_rows, total));
+  std::exception_ptr worker_error;
+
+  // Fills one block's slot; called without the lock (the slot is the claimer's alone).
+  const auto compute = [&](std::size_t block) {
+    std::vector<SweepRow>& rows = ring.Slot(block);
+    const std::size_t begin = block * block_rows;
+    const std::size_t end = std::min(total, begin + block_rows);
+    rows.resize(end - begin);
+    for (std::size_t i = begin; i < end; ++i) {
+      SolveRow(spec, options, x_field, y_field, ny, i, rows[i - begin]);
+    }
+  };
+
+  // A worker thread: claims and computes blocks until none is left or the sweep stops.
+  const auto work = [&] {
+    std::unique_lock lock(ring.mutex);
+    while (true) {
+      std::size_t block = 0;
+      bool claimed = false;
+      ring.changed.wait(lock, [&] {
+        claimed = ring.TryClaim(block);
+        return claimed || ring.Exhausted();
+      });
+      if (!claimed) return;
+      lock.unlock();
+      try {
+        compute(block);
+      } catch (...) {
+        lock.lock();
+        if (!worker_error) worker_error = std::current_exception();
+        ring.Stop();
+        ring.changed.notify_all();
+        return;
+      }
+      lock.lock();
+      ring.MarkReady(block);
+      ring.changed.notify_all();
+    }
+  };
+
+  // Stops and joins the workers however the calling thread leaves (a consumer's exception
+  // included).
+  struct Workers {
+    BlockRing& ring;
+    std::vector<std::thread> threads;
+    ~Workers() {
+      {
+        const std::lock_guard lock(ring.mutex);
+        ring.Stop();
+      }
+      ring.changed.notify_all();
+      for (std::thread& thread : threads) thread.join();
+    }
+  } workers{ring, {}};
+  workers.threads.reserve(threads - 1);
+  for (unsigned t = 1; t < threads; ++t) workers.threads.emplace_back(work);
+
+  for (std::size_t next = 0; next < blocks; ++next) {
+    {
+      std::unique_lock lock(ring.mutex);
+      while (!ring.Ready(next) && !ring.stopped()) {
+        std::size_t block = 0;
+        if (ring.TryClaim(block)) {
+          lock.unlock();
+          compute(block);
+          lock.lock();
+          ring.MarkReady(block);
+          ring.changed.notify_all();
+          continue;
+        }
+        ring.changed.wait(lock);
+      }
+      if (worker_error) std::rethrow_exception(worker_error);
+    }
+    // The slot is complete, and no thread writes it again before it is marked delivered.
+    const std::vector<SweepRow>& rows = ring.Slot(next);
+    for (const SweepRow& row : rows) Count(row, result);
+    consumer(std::span<const SweepRow>(rows));
+    {
+      const std::lock_guard lock(ring.mutex);
+      ring.MarkDelivered(next);
+    }
+    ring.changed.notify_all();
+    if (options.progress) options.progress(result.rows, total);
+  }
+
+  result.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::size_t invalid = result.rows - result.valid;
+  if (invalid == 0) {
+    result.status = SweepStatus::kAllValid;
+    result.message = std::to_string(result.rows) + (result.rows == 1 ? " point" : " points") +
+                     ", all valid";
+  } else {
+    result.status = result.valid == 0 ? SweepStatus::kNoneValid : SweepStatus::kSomeInvalid;
+    result.message = (result.valid == 0 ? std::string("every point is")
+                                        : std::to_string(invalid) + " of " +
+                                              std::to_string(result.rows) + " points are") +
+                     " outside the model's input range; the first (row " +
+                     std::to_string(*result.first_invalid) + "): " + result.first_invalid_error;
+  }
+  return result;
+}
+
+}  // namespace covopt
