@@ -18,7 +18,7 @@
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/materials/catalog.hpp"
-#include "covopt/optim/covering_design.hpp"
+#include "covopt/optim/design.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
 #include "output.hpp"
@@ -47,12 +47,8 @@ Exit codes: 0 an answer (also "no material is safe"); 1 the search failed;
 2 bad input.)";
 
 struct Resolved {
-  Scene scene;
-  DesignOptions design;
-  std::optional<double> thickness_m;
-  std::vector<CandidateMaterial> candidates;
-  std::map<std::string, std::string, std::less<>> families;  // name -> family
-  std::vector<std::string> warnings;
+  optim::DesignRequest request;
+  std::vector<std::string> warnings;  ///< about the input (the library adds its own)
   int runners_up = 8;
 };
 
@@ -77,10 +73,10 @@ bool IsCoveringField(const SceneField& field) { return field.table == "covering"
 
 Resolved Resolve(const OptimizeOptions& o) {
   Resolved r;
-  DesignOptions& d = r.design;
+  DesignOptions& d = r.request.options;
   if (o.scene_file) {
     SceneFileExtras extras;
-    for (const std::string& name : ApplySceneFile(*o.scene_file, r.scene, &extras)) {
+    for (const std::string& name : ApplySceneFile(*o.scene_file, r.request.scene, &extras)) {
       if (name.rfind("covering.", 0) == 0) {
         r.warnings.push_back(fmt::format("{} in {} is ignored: the covering is what optimize designs",
                                          name, *o.scene_file));
@@ -93,10 +89,10 @@ Resolved Resolve(const OptimizeOptions& o) {
   for (const SceneField& field : SceneFields()) {
     const auto typed = o.scene_values.find(field.dotted_name());
     if (typed != o.scene_values.end()) {
-      field.field(r.scene) = ParseQuantity(typed->second, field.spec, field.flag);
+      field.field(r.request.scene) = ParseQuantity(typed->second, field.spec, field.flag);
     }
   }
-  if (o.thresholds) r.scene.model.thresholds = ParseThresholds(*o.thresholds, "--thresholds");
+  if (o.thresholds) r.request.scene.model.thresholds = ParseThresholds(*o.thresholds, "--thresholds");
 
   namespace specs = covopt::quantity_specs;
   d.allow_full_compression = o.allow_full_compression;
@@ -131,8 +127,8 @@ Resolved Resolve(const OptimizeOptions& o) {
   require(d.limits.contusion_energy_density_J_per_m2 > 0.0 && d.limits.contusion_energy_density_J_per_m2 <= 1e7,
           fmt::format("--contusion-limit must be in (0, 1000 J/cm²] (got '{}')", o.contusion_limit.value_or("")));
   if (o.thickness) {
-    r.thickness_m = ParseQuantity(*o.thickness, specs::kCoveringThickness, "--thickness");
-    require(*r.thickness_m > 0.0 && *r.thickness_m <= 1.0,
+    r.request.thickness_m = ParseQuantity(*o.thickness, specs::kCoveringThickness, "--thickness");
+    require(*r.request.thickness_m > 0.0 && *r.request.thickness_m <= 1.0,
             fmt::format("--thickness must be in (0, 1 m] (got '{}'); for no covering use "
                         "'covopt simulate --covering-thickness 0'",
                         *o.thickness));
@@ -157,42 +153,11 @@ Resolved Resolve(const OptimizeOptions& o) {
       throw InputError(what.rfind("--", 0) == 0 ? what : "--catalog: " + what);
     }
   }();
-  std::vector<const materials::Material*> chosen;
-  if (!o.materials.empty()) {
-    for (const std::string& name : o.materials) {
-      const materials::Material* m = catalog.Find(name);
-      if (!m) throw InputError(fmt::format("--material: {}", NoSuchMaterial(catalog, name)));
-      chosen.push_back(m);
-    }
-  } else {
-    for (const materials::Material& m : catalog.materials()) chosen.push_back(&m);
-  }
-  if (!o.families.empty()) {
-    const auto known = catalog.families();
-    for (const std::string& family : o.families) {
-      if (std::none_of(known.begin(), known.end(), [&](const std::string& k) {
-            return std::equal(k.begin(), k.end(), family.begin(), family.end(),
-                              [](char a, char b) { return std::tolower(a) == std::tolower(b); });
-          })) {
-        throw InputError(fmt::format("--family: no family '{}' in the catalog (families: {})", family,
-                                     fmt::join(known, ", ")));
-      }
-    }
-    materials::MaterialFilter filter;
-    filter.families = o.families;
-    const auto kept = catalog.Filter(filter);
-    std::erase_if(chosen, [&](const materials::Material* m) {
-      return std::find(kept.begin(), kept.end(), m) == kept.end();
-    });
-  }
-  for (const materials::Material* m : chosen) {
-    CandidateMaterial c;
-    c.name = m->name;
-    c.youngs_modulus_Pa = m->youngs_modulus_Pa;
-    c.poisson_assumed = !m->poisson_ratio.has_value();
-    c.poisson_ratio = m->poisson_ratio.value_or(materials::kDefaultPoissonRatio);
-    r.families[m->name] = m->family;
-    r.candidates.push_back(c);
+  try {
+    r.request.materials = optim::SelectCandidates(catalog, o.materials, o.families);
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    throw InputError((what.rfind("no family", 0) == 0 ? "--family: " : "--material: ") + what);
   }
   return r;
 }
@@ -224,9 +189,9 @@ ordered_json ScoreJson(const DesignScore& s) {
 
 ordered_json Nullable(const std::optional<double>& v) { return v ? ordered_json(*v) : ordered_json(nullptr); }
 
-ordered_json CandidateJson(const CandidateOutcome& c, const Resolved& r) {
+ordered_json CandidateJson(const CandidateOutcome& c) {
   ordered_json j = {{"material", c.material.name},
-                    {"family", r.families.count(c.material.name) ? r.families.at(c.material.name) : ""},
+                    {"family", c.material.family},
                     {"youngs_modulus_Pa", c.material.youngs_modulus_Pa},
                     {"poisson_ratio", c.material.poisson_ratio},
                     {"poisson_assumed", c.material.poisson_assumed},
@@ -238,45 +203,6 @@ ordered_json CandidateJson(const CandidateOutcome& c, const Resolved& r) {
                     {"margin", c.margin}};
   j.update(ScoreJson(c.score));
   return j;
-}
-
-/// The sentence that answers the user's question.
-std::string Headline(DesignVerdict verdict, const std::vector<CandidateOutcome>& candidates,
-                     const std::optional<std::size_t>& recommendation, const optim::ContinuousOptimum& continuous,
-                     double max_thickness, std::optional<double> thickness) {
-  const DesignScore& best = continuous.score;
-  switch (verdict) {
-    case DesignVerdict::kBareRobotSafe:
-      return "The bare robot is already safe in this scene: no covering is needed.";
-    case DesignVerdict::kCoveringFound: {
-      const CandidateOutcome& c = candidates[*recommendation];
-      return fmt::format("Recommended: {} at {}.", c.material.name, Mm(*c.recommended_thickness_m));
-    }
-    case DesignVerdict::kNoSafeMaterial:
-      return thickness
-                 ? fmt::format("No catalog material is admissible at {}; a covering of {} would be.",
-                               Mm(*thickness), MPa(best.design.youngs_modulus_Pa))
-                 : fmt::format("No catalog material is admissible within {}; the continuous optimum "
-                               "({}, {}) would be.",
-                               Mm(max_thickness), MPa(best.design.youngs_modulus_Pa), Mm(best.design.thickness_m));
-    case DesignVerdict::kNothingSafe:
-      break;
-  }
-  const std::string least =
-      candidates.empty() ? std::string()
-                         : fmt::format(" The least unsafe material is {} (worst ratio {:.3f}{}).",
-                                       candidates.front().material.name, candidates.front().score.worst_ratio(),
-                                       candidates.front().score.peaks.fully_compressed ? ", fully compressed" : "");
-  if (thickness && continuous.every_modulus_fully_compressed) {
-    return fmt::format("Nothing is admissible at {}: every modulus up to the search's maximum is fully "
-                       "compressed at the peak (the robot reaches the bone through the covering).{}",
-                       Mm(*thickness), least);
-  }
-  return thickness ? fmt::format("Nothing is admissible at {}: even the best modulus ({}) leaves a worst ratio of {:.3f}.{}",
-                                 Mm(*thickness), MPa(best.design.youngs_modulus_Pa), best.worst_ratio(), least)
-                   : fmt::format("Nothing is admissible within {}: no modulus in the search range meets the "
-                                 "criterion at any thickness.{}",
-                                 Mm(max_thickness), least);
 }
 
 /// Prints the first `rows` candidates (none for 0) and the ν footnote when a shown row needs it.
@@ -383,104 +309,50 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   Resolved r;
   try {
     r = Resolve(options);
-    Scene bare = r.scene;
+    Scene bare = r.request.scene;
     bare.covering.thickness_m = 0.0;
     (void)ImpactModel::FromScene(bare);  // scene range checks, naming the field
   } catch (const std::invalid_argument& e) {  // InputError and the library's checks
     return errors.BadInput(e.what());
   }
 
-  const double sf = r.design.safety_factor;
-  ordered_json j;
-  std::string headline;
-  std::vector<CandidateOutcome> candidates;
-  optim::ContinuousOptimum continuous;
-  DesignScore bare;
-  DesignVerdict verdict{};
-  std::optional<std::size_t> recommendation;
-  long evaluations = 0;
-  double seconds = 0.0;
+  const double sf = r.request.options.safety_factor;
+  optim::DesignResult result;
   try {
-    if (r.thickness_m) {
-      const auto result = optim::MinimizeInjuryAtThickness(r.scene, *r.thickness_m, r.candidates, r.design);
-      candidates = result.candidates;
-      continuous = result.continuous;
-      bare = result.bare_robot;
-      verdict = result.verdict;
-      recommendation = result.recommendation;
-      evaluations = result.evaluations;
-      seconds = result.seconds;
-    } else {
-      const auto result = optim::FindThinnestSafeCovering(r.scene, r.candidates, r.design);
-      candidates = result.candidates;
-      continuous = result.continuous;
-      bare = result.bare_robot;
-      verdict = result.verdict;
-      recommendation = result.recommendation;
-      evaluations = result.evaluations;
-      seconds = result.seconds;
-    }
+    result = optim::Design(r.request);  // the whole computation: one library call
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
+  // The input's own warnings first, then the answer's.
+  r.warnings.insert(r.warnings.end(), result.warnings.begin(), result.warnings.end());
+  ordered_json j;
+  const std::string& headline = result.message;
+  const std::vector<CandidateOutcome>& candidates = result.candidates;
+  const optim::ContinuousOptimum& continuous = result.continuous;
+  const DesignScore& bare = result.bare_robot;
+  const DesignVerdict verdict = result.verdict;
+  const long evaluations = result.evaluations;
+  const double seconds = result.seconds;
   const optim::SolverReport& global = continuous.global;
-  const bool global_usable = global.termination == optim::Termination::kConverged ||
-                             global.termination == optim::Termination::kEvaluationLimit ||
-                             global.termination == optim::Termination::kTimeLimit ||
-                             global.termination == optim::Termination::kRoundoffLimited;
-  if (!global_usable) {
-    // Not an error: stage 1 only brackets; the nested search answers on its own.
-    r.warnings.push_back(fmt::format("the global stage failed: {} ({} code {} {}); its point was not used, the "
-                                     "bracketed search answered alone",
-                                     optim::ToString(global.termination), global.backend, global.raw_code,
-                                     global.raw_name));
-  }
   const optim::SolverReport& local = continuous.local;
-  if (!local.backend.empty() && local.termination != optim::Termination::kConverged &&
-      local.termination != optim::Termination::kAcceptable) {
-    r.warnings.push_back(fmt::format("the local polish failed: {} ({} code {} {}); the bracketed search's point "
-                                     "is reported",
-                                     optim::ToString(local.termination), local.backend, local.raw_code, local.raw_name));
-  }
-  const optim::DesignCriterion criterion = r.design.criterion();
-  const bool bare_safe = bare.safe(sf);
-  headline = Headline(verdict, candidates, recommendation, continuous, r.design.space.max_thickness_m, r.thickness_m);
+  const optim::DesignCriterion criterion = result.criterion;
+  const bool bare_safe = !result.covering_needed();
   std::optional<CandidateOutcome> recommended;
-  if (recommendation) recommended = candidates[*recommendation];
-  if (recommended) {
-    // docs/model.md §5: a design that works only with the covering bottomed out (paper's criterion).
-    if (recommended->score.peaks.fully_compressed) {
-      r.warnings.push_back(
-          "the recommended covering is fully compressed at the peak (the robot reaches the bone through it): "
-          "its margin rests on the stiff robot-bone phase of the model; without --allow-full-compression it "
-          "would not be admissible");
-    }
-    // Where the recommended design leaves the model's domain (core's validity checks).
-    Scene covered = r.scene;
-    covered.covering = {recommended->material.youngs_modulus_Pa, recommended->material.poisson_ratio,
-                        *recommended->recommended_thickness_m};
-    for (const std::string& w : ValidityWarnings(ImpactModel::FromScene(covered), recommended->score.peaks)) {
-      if (w.find("fully compressed") == std::string::npos) r.warnings.push_back("recommended covering: " + w);
-    }
-  }
-  if (!bare_safe && continuous.score.peaks.fully_compressed) {
-    r.warnings.push_back(
-        "the continuous optimum is fully compressed at the peak (the robot reaches the bone through the covering)");
-  }
+  if (result.recommendation) recommended = candidates[*result.recommendation];
   const bool from_ipopt = continuous.source == "ipopt";
   const optim::Termination termination = from_ipopt ? local.termination : continuous.bracket.termination;
-  const double laceration_limit = r.design.limits.laceration_tensile_stress_Pa;
-  const double contusion_limit = r.design.limits.contusion_energy_density_J_per_m2;
+  const double laceration_limit = r.request.options.limits.laceration_tensile_stress_Pa;
+  const double contusion_limit = r.request.options.limits.contusion_energy_density_J_per_m2;
 
   if (options.json) {
-    j["problem"] = r.thickness_m ? "least-injury-at-thickness" : "thinnest-safe-covering";
+    j["problem"] = optim::ToString(result.problem);
     j["criterion"] = optim::ToString(criterion);
     j["verdict"] = optim::ToString(verdict);
     j["summary"] = headline;
     if (recommended) {
       const CandidateOutcome& c = *recommended;
       ordered_json rec = {{"material", c.material.name},
-                          {"family", r.families[c.material.name]},
+                          {"family", c.material.family},
                           {"thickness_m", *c.recommended_thickness_m},
                           {"min_safe_thickness_m", Nullable(c.min_safe_thickness_m)},
                           {"stock_thickness_beyond_max_m", Nullable(c.stock_thickness_beyond_max_m)},
@@ -513,7 +385,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                        {"contusion_ratio", bare.contusion_ratio},
                        {"safe", bare_safe}};
     ordered_json list = ordered_json::array();
-    for (const CandidateOutcome& c : candidates) list.push_back(CandidateJson(c, r));
+    for (const CandidateOutcome& c : candidates) list.push_back(CandidateJson(c));
     j["candidates"] = list;
     j["solver"] = {{"termination", optim::ToString(termination)},
                    {"evaluations", evaluations},
@@ -526,13 +398,13 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                    {"contusion_J_per_m2", contusion_limit},
                    {"derated_laceration_Pa", laceration_limit / sf},
                    {"derated_contusion_J_per_m2", contusion_limit / sf}};
-    j["design_space"] = {{"min_modulus_Pa", r.design.space.min_modulus_Pa},
-                         {"max_modulus_Pa", r.design.space.max_modulus_Pa},
-                         {"min_thickness_m", r.design.space.min_thickness_m},
-                         {"max_thickness_m", r.design.space.max_thickness_m},
-                         {"thickness_step_m", r.design.thickness_step_m}};
-    if (r.thickness_m) j["thickness_m"] = *r.thickness_m;
-    Scene shown = r.scene;
+    j["design_space"] = {{"min_modulus_Pa", r.request.options.space.min_modulus_Pa},
+                         {"max_modulus_Pa", r.request.options.space.max_modulus_Pa},
+                         {"min_thickness_m", r.request.options.space.min_thickness_m},
+                         {"max_thickness_m", r.request.options.space.max_thickness_m},
+                         {"thickness_step_m", r.request.options.thickness_step_m}};
+    if (r.request.thickness_m) j["thickness_m"] = *r.request.thickness_m;
+    Scene shown = r.request.scene;
     shown.covering.thickness_m = 0.0;
     ordered_json scene = SceneToJson(shown);
     scene.erase("covering");
@@ -542,7 +414,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     return 0;
   }
 
-  Scene shown = r.scene;
+  Scene shown = r.request.scene;
   shown.covering.thickness_m = 0.0;
   std::string headline_scene = SceneHeadline(shown);
   if (const auto at = headline_scene.find("no covering"); at != std::string::npos) {
@@ -554,8 +426,8 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
              sf > 1 ? fmt::format(": designed to {:.4g} MPa and {:.4g} J/cm²", laceration_limit * 1e-6 / sf,
                                   contusion_limit * 1e-4 / sf)
                     : std::string(),
-             r.thickness_m ? fmt::format("; thickness fixed at {}", Mm(*r.thickness_m))
-                           : fmt::format("; thickness up to {}", Mm(r.design.space.max_thickness_m)));
+             r.request.thickness_m ? fmt::format("; thickness fixed at {}", Mm(*r.request.thickness_m))
+                           : fmt::format("; thickness up to {}", Mm(r.request.options.space.max_thickness_m)));
   fmt::print(out, "Criterion  {}\n",
              criterion == optim::DesignCriterion::kNoFullCompression
                  ? "safe, and the covering not fully compressed at the peak (the robot never reaches bone "
@@ -565,22 +437,22 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   fmt::print(out, "\n{}\n", headline);
   if (recommended) {
     const CandidateOutcome& c = *recommended;
-    fmt::print(out, "  {} ({}), E {}, ν {:.2f}{}\n", c.material.name, r.families[c.material.name],
+    fmt::print(out, "  {} ({}), E {}, ν {:.2f}{}\n", c.material.name, c.material.family,
                MPa(c.material.youngs_modulus_Pa), c.material.poisson_ratio,
                c.material.poisson_assumed ? " (ν unknown, 0.25 assumed)" : "");
     fmt::print(out, "  laceration ratio {:.3f}, contusion ratio {:.3f}: margin {} of the {}; {}\n",
                c.score.laceration_ratio, c.score.contusion_ratio, Percent(c.margin),
                sf > 1 ? "derated limit" : "limit", CompressionWords(c.score));
-    if (c.min_safe_thickness_m && !r.thickness_m) {
+    if (c.min_safe_thickness_m && !r.request.thickness_m) {
       if (c.stock_thickness_beyond_max_m) {
         fmt::print(out,
                    "  thinnest admissible thickness {}; rounding up to stock ({}) would pass the maximum {}, "
                    "so {} is recommended (cut to size)\n",
                    Mm(*c.min_safe_thickness_m), Mm(*c.stock_thickness_beyond_max_m),
-                   Mm(r.design.space.max_thickness_m), Mm(*c.recommended_thickness_m));
+                   Mm(r.request.options.space.max_thickness_m), Mm(*c.recommended_thickness_m));
       } else if (*c.recommended_thickness_m > *c.min_safe_thickness_m) {
         fmt::print(out, "  thinnest admissible thickness {}, rounded up to {} (a multiple of {})\n",
-                   Mm(*c.min_safe_thickness_m), Mm(*c.recommended_thickness_m), Mm(r.design.thickness_step_m));
+                   Mm(*c.min_safe_thickness_m), Mm(*c.recommended_thickness_m), Mm(r.request.options.thickness_step_m));
       } else {
         fmt::print(out, "  thinnest admissible thickness {}\n", Mm(*c.min_safe_thickness_m));
       }
@@ -588,15 +460,15 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   }
   fmt::print(out, "\nBare robot          laceration ratio {:.3f}, contusion ratio {:.3f}: {}\n", bare.laceration_ratio,
              bare.contusion_ratio, bare_safe ? "safe" : "UNSAFE");
-  if (bare_safe && !r.thickness_m) {
+  if (bare_safe && !r.request.thickness_m) {
     fmt::print(out, "Continuous optimum  none needed: the bare robot is safe\n");
   } else {
     const DesignScore& best = continuous.score;
     fmt::print(out, "Continuous {}  E_c* = {}, b_c* = {} (ν {:.2f}): laceration {:.3f}, contusion {:.3f}, {}{}\n",
-               r.thickness_m ? "best   " : "optimum", MPa(best.design.youngs_modulus_Pa), Mm(best.design.thickness_m),
+               r.request.thickness_m ? "best   " : "optimum", MPa(best.design.youngs_modulus_Pa), Mm(best.design.thickness_m),
                best.poisson_ratio, best.laceration_ratio, best.contusion_ratio, CompressionWords(best),
                best.admissible(sf, criterion) ? "" : " (not admissible)");
-    if (recommended && !r.thickness_m && continuous.feasible) {
+    if (recommended && !r.request.thickness_m && continuous.feasible) {
       const CandidateOutcome& c = *recommended;
       const double extra = *c.recommended_thickness_m - best.design.thickness_m;
       fmt::print(out, "                    the recommendation is {:.2f}x its modulus and {} {}\n",
@@ -606,10 +478,10 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   }
   fmt::print(out, "\nCandidates ({})\n",
              candidates.empty() ? "none: the catalog filter left nothing"
-             : r.thickness_m    ? "admissible first, then by margin at this thickness"
+             : r.request.thickness_m    ? "admissible first, then by margin at this thickness"
                                 : "admissible first, by stock thickness then margin; then the rest by margin at the "
                                   "maximum thickness");
-  PrintCandidates(out, candidates, r.runners_up, r.thickness_m.has_value());
+  PrintCandidates(out, candidates, r.runners_up, r.request.thickness_m.has_value());
   fmt::print(out, "\nSolver  global {}: {} ({} evaluations); bracket: {} ({} evaluations); local {}; {} exact-path "
                   "evaluations, {:.1f} ms\n",
              global.backend, optim::ToString(global.termination), global.objective_evaluations,

@@ -93,6 +93,18 @@ const Material* Catalog::Find(std::string_view name) const noexcept {
   return nullptr;
 }
 
+std::string Catalog::MissingMaterialMessage(std::string_view name) const {
+  const std::vector<std::string> suggestions = Suggest(name);
+  std::string message = "no material '" + std::string(name) + "' in the catalog";
+  if (suggestions.empty()) return message + "; run 'covopt materials list' for the names";
+  message += "; did you mean ";
+  for (std::size_t i = 0; i < suggestions.size(); ++i) {
+    if (i > 0) message += (i + 1 == suggestions.size()) ? " or " : ", ";
+    message += "'" + suggestions[i] + "'";
+  }
+  return message + "?";
+}
+
 std::vector<std::string> Catalog::Suggest(std::string_view name, std::size_t max_count) const {
   const std::string query = Lower(name);
   const std::vector<std::string> words = Words(name);

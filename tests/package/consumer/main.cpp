@@ -1,12 +1,15 @@
 // A design loop in user code, built against the installed covopt package: sweep the robot
 // speed, compute each impact both ways, and fail unless the two paths agree; then take the
 // polystyrene coverings from the built-in material catalog (no file needed at run time)
-// and fail unless the paper's 27.6 MPa foam is among them.
+// and fail unless the paper's 27.6 MPa foam is among them; last, one design request
+// (covopt::optim::Design) over the catalog, which must recommend a covering that does not
+// bottom out.
 #include <cmath>
 #include <cstdio>
 
 #include <covopt/core.hpp>
 #include <covopt/materials.hpp>
+#include <covopt/optim.hpp>
 
 int main() {
   covopt::Scene scene;  // the paper's scene with its 15 mm, 27.6 MPa covering
@@ -39,6 +42,12 @@ int main() {
   }
   const covopt::materials::Material* paper = catalog.Find("Polystyrene Foam 27.6");
   if (found < 2 || paper == nullptr || paper->youngs_modulus_Pa != 27.6e6) return 1;
+
+  covopt::optim::DesignRequest request;
+  request.materials = covopt::optim::SelectCandidates(catalog);
+  const covopt::optim::DesignResult design = covopt::optim::Design(request);
+  std::printf("%s\n", design.BriefReport().c_str());
+  if (!design.recommendation || design.candidates[*design.recommendation].score.peaks.fully_compressed) return 1;
   std::printf("consumer: ok\n");
   return 0;
 }

@@ -120,6 +120,11 @@ class Catalog {
   /// word of `name` ("polystyrene" -> both polystyrene foams). Empty if nothing is close.
   std::vector<std::string> Suggest(std::string_view name, std::size_t max_count = 3) const;
 
+  /// What to tell a user who asked for `name` and it is not here: "no material 'X' in the
+  /// catalog; did you mean 'Y' or 'Z'?", or "...; run 'covopt materials list' for the names"
+  /// when nothing is close.
+  std::string MissingMaterialMessage(std::string_view name) const;
+
   /// The entries that pass `filter`, in catalog order.
   std::vector<const Material*> Filter(const MaterialFilter& filter) const;
 

@@ -135,6 +135,8 @@ struct CandidateMaterial {
   double poisson_ratio = 0.25;
   /// ν was not known for this material and poisson_ratio is a default.
   bool poisson_assumed = false;
+  /// The catalog family ("foam", "elastomer", ...); empty when not from a catalog.
+  std::string family{};
 };
 
 /// Options of the design searches. Defaults: the bounds, DIRECT-L then Ipopt.

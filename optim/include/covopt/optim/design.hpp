@@ -1,0 +1,102 @@
+#pragma once
+/// @file design.hpp
+/// The whole design request of `covopt optimize` as one library call: a scene, the candidate
+/// materials (from a catalog, by name or family, or given directly), the design options, and
+/// optionally a fixed thickness; the answer is a DesignResult value with the verdict, the
+/// recommendation, the continuous optimum, every candidate, the stages' reports and the
+/// warnings a safety engineer must read. Nothing is printed; the CLI and the Python module
+/// format this value.
+///
+///     covopt::optim::DesignRequest request;            // the paper's scene, every catalog material
+///     request.scene.robot.speed_m_per_s = 1.5;
+///     request.materials = covopt::optim::SelectCandidates(covopt::materials::Catalog::BuiltIn());
+///     const covopt::optim::DesignResult design = covopt::optim::Design(request);
+///     if (design.recommendation) { const auto& best = design.candidates[*design.recommendation]; }
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <covopt/core/scene.hpp>
+#include <covopt/materials/catalog.hpp>
+
+#include "covopt/optim/covering_design.hpp"
+
+namespace covopt::optim {
+
+/// Which question a design request asks.
+enum class DesignProblem {
+  kThinnestSafeCovering,    ///< the thinnest admissible covering (problem a)
+  kLeastInjuryAtThickness,  ///< the least injury at a given thickness (problem b)
+};
+/// "thinnest-safe-covering" or "least-injury-at-thickness".
+const char* ToString(DesignProblem problem) noexcept;
+
+/// Everything `covopt optimize` is asked.
+struct DesignRequest {
+  /// The scene (SI); its covering is what is designed and is ignored. Default: the paper's.
+  Scene scene;
+  /// The discrete choices, in catalog order (SelectCandidates). Default: none (the
+  /// continuous optimum alone).
+  std::vector<CandidateMaterial> materials;
+  /// Set: problem (b), the least injury at this thickness [m], in (0, 1]. Default: empty,
+  /// problem (a).
+  std::optional<double> thickness_m;
+  /// Search space, criterion, safety factor, limits, solver settings. Default: DesignOptions{}.
+  DesignOptions options;
+};
+
+/// How the request ended. A scene where nothing is admissible is kSuccess (an answer).
+enum class DesignStatus {
+  kSuccess,  ///< the answer below is usable (its verdict may be "nothing is safe")
+};
+/// "success".
+const char* ToString(DesignStatus status) noexcept;
+
+/// The answer to a DesignRequest.
+struct DesignResult {
+  DesignStatus status = DesignStatus::kSuccess;
+  /// One sentence answering the question, e.g. "Recommended: XPS Foamular 250 at 16.00 mm."
+  std::string message;
+  DesignProblem problem = DesignProblem::kThinnestSafeCovering;
+  DesignCriterion criterion = DesignCriterion::kNoFullCompression;
+  DesignVerdict verdict = DesignVerdict::kNothingSafe;
+  /// The thickness of problem (b) [m]; empty for problem (a).
+  std::optional<double> thickness_m;
+  DesignScore bare_robot;
+  ContinuousOptimum continuous;
+  /// Admissible candidates first (problem a: by stock thickness, then margin; problem b: by
+  /// margin), then the others by margin.
+  std::vector<CandidateOutcome> candidates;
+  /// Index into `candidates` of the recommendation, when one is admissible.
+  std::optional<std::size_t> recommendation;
+  /// What the answer's reader must know: a stage that failed (with its status and the
+  /// fallback taken), a recommendation or optimum fully compressed (paper's criterion), the
+  /// recommended design's validity warnings (docs/model.md §7).
+  std::vector<std::string> warnings;
+  long evaluations = 0;  ///< exact-path evaluations in all stages
+  double seconds = 0.0;  ///< wall time [s]
+  /// The bare robot is safe: no covering is needed (the continuous optimum is not a design
+  /// anyone needs then).
+  bool covering_needed() const noexcept { return verdict != DesignVerdict::kBareRobotSafe; }
+  bool ok() const noexcept { return status == DesignStatus::kSuccess; }
+  /// One line: verdict, recommendation or best worst ratio, continuous optimum, evaluations.
+  std::string BriefReport() const;
+};
+
+/// Candidate materials from a catalog: the entries named in `names` (catalog names, compared
+/// ignoring case, in the order given) or, when `names` is empty, every entry in catalog order;
+/// then only those of the `families` (ignoring case), when any are given. A material without a
+/// Poisson ratio gets materials::kDefaultPoissonRatio and poisson_assumed.
+/// @throws std::invalid_argument for an unknown name ("no material 'X' in the catalog; did you
+///         mean 'Y'?") or family ("no family 'X' in the catalog (families: ...)").
+std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalog,
+                                                std::span<const std::string> names = {},
+                                                std::span<const std::string> families = {});
+
+/// Runs the request: problem (a) or (b), the catalog snap, the verdict and the warnings.
+/// @throws std::invalid_argument naming the field for bad input (scene, options, thickness).
+DesignResult Design(const DesignRequest& request);
+
+}  // namespace covopt::optim

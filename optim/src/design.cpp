@@ -1,0 +1,214 @@
+// The design request of `covopt optimize` as one call: candidates from a catalog, problem (a)
+// or (b), the headline, and the warnings the answer carries.
+#include "covopt/optim/design.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdarg>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include <covopt/core/impact_model.hpp>
+#include <covopt/core/impact_result.hpp>
+#include <covopt/materials/material.hpp>
+
+namespace covopt::optim {
+namespace {
+
+/// printf into a std::string (messages only; never on a hot path).
+std::string Format(const char* format, ...) {
+  char buffer[1024];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buffer, sizeof buffer, format, args);
+  va_end(args);
+  return buffer;
+}
+
+std::string Mm(double metres) { return Format("%.2f mm", metres * 1e3); }
+std::string MPa(double pascals) { return Format("%.3g MPa", pascals * 1e-6); }
+
+bool EqualIgnoringCase(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+bool Usable(const SolverReport& r) {
+  return r.termination == Termination::kConverged || r.termination == Termination::kEvaluationLimit ||
+         r.termination == Termination::kTimeLimit || r.termination == Termination::kRoundoffLimited ||
+         r.termination == Termination::kAcceptable;
+}
+
+/// The sentence that answers the request.
+std::string Headline(const DesignResult& r, double max_thickness) {
+  const DesignScore& best = r.continuous.score;
+  switch (r.verdict) {
+    case DesignVerdict::kBareRobotSafe:
+      return "The bare robot is already safe in this scene: no covering is needed.";
+    case DesignVerdict::kCoveringFound: {
+      const CandidateOutcome& c = r.candidates[*r.recommendation];
+      return "Recommended: " + c.material.name + " at " + Mm(*c.recommended_thickness_m) + ".";
+    }
+    case DesignVerdict::kNoSafeMaterial:
+      return r.thickness_m ? "No catalog material is admissible at " + Mm(*r.thickness_m) + "; a covering of " +
+                                 MPa(best.design.youngs_modulus_Pa) + " would be."
+                           : "No catalog material is admissible within " + Mm(max_thickness) +
+                                 "; the continuous optimum (" + MPa(best.design.youngs_modulus_Pa) + ", " +
+                                 Mm(best.design.thickness_m) + ") would be.";
+    case DesignVerdict::kNothingSafe:
+      break;
+  }
+  const std::string least =
+      r.candidates.empty()
+          ? std::string()
+          : Format(" The least unsafe material is %s (worst ratio %.3f%s).", r.candidates.front().material.name.c_str(),
+                   r.candidates.front().score.worst_ratio(),
+                   r.candidates.front().score.peaks.fully_compressed ? ", fully compressed" : "");
+  if (r.thickness_m && r.continuous.every_modulus_fully_compressed) {
+    return "Nothing is admissible at " + Mm(*r.thickness_m) +
+           ": every modulus up to the search's maximum is fully compressed at the peak (the robot reaches "
+           "the bone through the covering)." +
+           least;
+  }
+  return r.thickness_m ? "Nothing is admissible at " + Mm(*r.thickness_m) + ": even the best modulus (" +
+                             MPa(best.design.youngs_modulus_Pa) + ") leaves a worst ratio of " +
+                             Format("%.3f", best.worst_ratio()) + "." + least
+                       : "Nothing is admissible within " + Mm(max_thickness) +
+                             ": no modulus in the search range meets the criterion at any thickness." + least;
+}
+
+/// The warnings of an answer (besides the input's own, which the caller knows).
+std::vector<std::string> Warnings(const DesignRequest& request, const DesignResult& r) {
+  std::vector<std::string> warnings;
+  const SolverReport& global = r.continuous.global;
+  if (!global.backend.empty() && !Usable(global)) {
+    // Not an error: stage 1 only brackets; the nested search answers on its own.
+    warnings.push_back(Format("the global stage failed: %s (%s code %d %s); its point was not used, the bracketed "
+                              "search answered alone",
+                              ToString(global.termination), global.backend.c_str(), global.raw_code,
+                              global.raw_name.c_str()));
+  }
+  const SolverReport& local = r.continuous.local;
+  if (!local.backend.empty() && local.termination != Termination::kConverged &&
+      local.termination != Termination::kAcceptable) {
+    warnings.push_back(Format("the local polish failed: %s (%s code %d %s); the bracketed search's point is reported",
+                              ToString(local.termination), local.backend.c_str(), local.raw_code,
+                              local.raw_name.c_str()));
+  }
+  if (r.recommendation) {
+    const CandidateOutcome& c = r.candidates[*r.recommendation];
+    // docs/model.md §5: a design that works only with the covering bottomed out (paper's criterion).
+    if (c.score.peaks.fully_compressed) {
+      warnings.push_back(
+          "the recommended covering is fully compressed at the peak (the robot reaches the bone through it): "
+          "its margin rests on the stiff robot-bone phase of the model; without --allow-full-compression it "
+          "would not be admissible");
+    }
+    // Where the recommended design leaves the model's domain (core's validity checks).
+    Scene covered = request.scene;
+    covered.covering = {c.material.youngs_modulus_Pa, c.material.poisson_ratio, *c.recommended_thickness_m};
+    for (const std::string& w : ValidityWarnings(ImpactModel::FromScene(covered), c.score.peaks)) {
+      if (w.find("fully compressed") == std::string::npos) warnings.push_back("recommended covering: " + w);
+    }
+  }
+  if (r.covering_needed() && r.continuous.score.peaks.fully_compressed) {
+    warnings.push_back(
+        "the continuous optimum is fully compressed at the peak (the robot reaches the bone through the covering)");
+  }
+  return warnings;
+}
+
+}  // namespace
+
+const char* ToString(DesignProblem problem) noexcept {
+  switch (problem) {
+    case DesignProblem::kThinnestSafeCovering: return "thinnest-safe-covering";
+    case DesignProblem::kLeastInjuryAtThickness: return "least-injury-at-thickness";
+  }
+  return "unknown";
+}
+
+const char* ToString(DesignStatus status) noexcept {
+  switch (status) {
+    case DesignStatus::kSuccess: return "success";
+  }
+  return "unknown";
+}
+
+std::string DesignResult::BriefReport() const {
+  std::string report = std::string(ToString(verdict)) + " (" + ToString(criterion) + "): " + message;
+  if (covering_needed()) {
+    report += Format(" Continuous %s: %s at %s, worst ratio %.3f.", thickness_m ? "best" : "optimum",
+                     MPa(continuous.score.design.youngs_modulus_Pa).c_str(),
+                     Mm(continuous.score.design.thickness_m).c_str(), continuous.score.worst_ratio());
+  }
+  return report + Format(" %ld exact-path evaluations, %.1f ms.", evaluations, seconds * 1e3);
+}
+
+std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalog, std::span<const std::string> names,
+                                                std::span<const std::string> families) {
+  std::vector<const materials::Material*> chosen;
+  if (!names.empty()) {
+    for (const std::string& name : names) {
+      const materials::Material* m = catalog.Find(name);
+      if (!m) throw std::invalid_argument(catalog.MissingMaterialMessage(name));
+      chosen.push_back(m);
+    }
+  } else {
+    for (const materials::Material& m : catalog.materials()) chosen.push_back(&m);
+  }
+  if (!families.empty()) {
+    const std::vector<std::string> known = catalog.families();
+    for (const std::string& family : families) {
+      if (std::none_of(known.begin(), known.end(), [&](const std::string& k) { return EqualIgnoringCase(k, family); })) {
+        std::string list;
+        for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+        throw std::invalid_argument("no family '" + family + "' in the catalog (families: " + list + ")");
+      }
+    }
+    std::erase_if(chosen, [&](const materials::Material* m) {
+      return std::none_of(families.begin(), families.end(),
+                          [&](const std::string& f) { return EqualIgnoringCase(f, m->family); });
+    });
+  }
+  std::vector<CandidateMaterial> candidates;
+  for (const materials::Material* m : chosen) {
+    candidates.push_back({m->name, m->youngs_modulus_Pa, materials::PoissonRatioOrDefault(*m),
+                          !m->poisson_ratio.has_value(), m->family});
+  }
+  return candidates;
+}
+
+DesignResult Design(const DesignRequest& request) {
+  DesignResult r;
+  r.criterion = request.options.criterion();
+  r.thickness_m = request.thickness_m;
+  if (request.thickness_m) {
+    r.problem = DesignProblem::kLeastInjuryAtThickness;
+    LeastInjuryAtThickness b =
+        MinimizeInjuryAtThickness(request.scene, *request.thickness_m, request.materials, request.options);
+    r.verdict = b.verdict;
+    r.bare_robot = b.bare_robot;
+    r.continuous = std::move(b.continuous);
+    r.candidates = std::move(b.candidates);
+    r.recommendation = b.recommendation;
+    r.evaluations = b.evaluations;
+    r.seconds = b.seconds;
+  } else {
+    ThinnestSafeCovering a = FindThinnestSafeCovering(request.scene, request.materials, request.options);
+    r.verdict = a.verdict;
+    r.bare_robot = a.bare_robot;
+    r.continuous = std::move(a.continuous);
+    r.candidates = std::move(a.candidates);
+    r.recommendation = a.recommendation;
+    r.evaluations = a.evaluations;
+    r.seconds = a.seconds;
+  }
+  r.message = Headline(r, request.options.space.max_thickness_m);
+  r.warnings = Warnings(request, r);
+  return r;
+}
+
+}  // namespace covopt::optim
