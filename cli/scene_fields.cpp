@@ -1,6 +1,8 @@
 #include "scene_fields.hpp"
 
 #include <array>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -11,55 +13,27 @@ namespace {
 
 namespace specs = covopt::quantity_specs;
 
-// clang-format off
-const std::array kFields{
-  SceneField{"robot", "mass", "--robot-mass", specs::kRobotMass,
-             [](Scene& s) -> double& { return s.robot.mass_kg; },
-             "robot reflected mass, e.g. 10kg, or 'fixed'"},
-  SceneField{"robot", "speed", "--speed", specs::kSpeed,
-             [](Scene& s) -> double& { return s.robot.speed_m_per_s; },
-             "impact speed, e.g. 2m/s, 250mm/s, 7.2km/h"},
-  SceneField{"robot", "radius", "--robot-radius", specs::kRobotRadius,
-             [](Scene& s) -> double& { return s.robot.radius_m; },
-             "robot surface radius under the covering, e.g. 15mm, or 'flat'"},
-  SceneField{"robot", "modulus", "--robot-modulus", specs::kRobotModulus,
-             [](Scene& s) -> double& { return s.robot.youngs_modulus_Pa; },
-             "robot Young's modulus"},
-  SceneField{"robot", "poisson", "--robot-poisson", specs::kPoissonRatio,
-             [](Scene& s) -> double& { return s.robot.poisson_ratio; },
-             "robot Poisson ratio"},
-  SceneField{"covering", "modulus", "--covering-modulus", specs::kCoveringModulus,
-             [](Scene& s) -> double& { return s.covering.youngs_modulus_Pa; },
-             "covering Young's modulus"},
-  SceneField{"covering", "poisson", "--covering-poisson", specs::kPoissonRatio,
-             [](Scene& s) -> double& { return s.covering.poisson_ratio; },
-             "covering Poisson ratio"},
-  SceneField{"covering", "thickness", "--covering-thickness", specs::kCoveringThickness,
-             [](Scene& s) -> double& { return s.covering.thickness_m; },
-             "covering thickness; 0 = no covering"},
-  SceneField{"head", "mass", "--head-mass", specs::kHeadMass,
-             [](Scene& s) -> double& { return s.head.mass_kg; },
-             "head mass, or 'fixed' for a head held still"},
-  SceneField{"head", "radius", "--head-radius", specs::kHeadRadius,
-             [](Scene& s) -> double& { return s.head.radius_m; },
-             "outer head radius, at the scalp surface"},
-  SceneField{"scalp", "modulus", "--scalp-modulus", specs::kScalpModulus,
-             [](Scene& s) -> double& { return s.scalp.youngs_modulus_Pa; },
-             "scalp Young's modulus"},
-  SceneField{"scalp", "poisson", "--scalp-poisson", specs::kPoissonRatio,
-             [](Scene& s) -> double& { return s.scalp.poisson_ratio; },
-             "scalp Poisson ratio"},
-  SceneField{"scalp", "thickness", "--scalp-thickness", specs::kScalpThickness,
-             [](Scene& s) -> double& { return s.scalp.thickness_m; },
-             "scalp thickness"},
-  SceneField{"skull", "modulus", "--skull-modulus", specs::kSkullModulus,
-             [](Scene& s) -> double& { return s.skull.youngs_modulus_Pa; },
-             "skull bone Young's modulus"},
-  SceneField{"skull", "poisson", "--skull-poisson", specs::kPoissonRatio,
-             [](Scene& s) -> double& { return s.skull.poisson_ratio; },
-             "skull bone Poisson ratio"},
+/// The library's fields, each with its flag "--" + name (the flags are stored once, for
+/// the life of the program, so the string_views stay valid).
+struct FieldTable {
+  std::vector<std::string> flags;
+  std::vector<SceneField> fields;
+
+  FieldTable() {
+    const auto library = covopt::SceneFields();
+    flags.reserve(library.size());
+    for (const covopt::SceneField& field : library) flags.push_back("--" + std::string(field.name));
+    fields.reserve(library.size());
+    for (std::size_t i = 0; i < library.size(); ++i) {
+      fields.push_back(SceneField{library[i], flags[i]});
+    }
+  }
 };
-// clang-format on
+
+const FieldTable& Fields() {
+  static const FieldTable table;
+  return table;
+}
 
 const std::array kLimitFields{
   LimitField{"laceration", "--laceration-limit", specs::kLacerationLimit,
@@ -75,9 +49,7 @@ constexpr std::array<std::string_view, 7> kTables{"robot", "covering", "head", "
 
 }  // namespace
 
-std::string SceneField::dotted_name() const { return fmt::format("{}.{}", table, key); }
-
-std::span<const SceneField> SceneFields() noexcept { return kFields; }
+std::span<const SceneField> SceneFields() noexcept { return Fields().fields; }
 
 std::span<const std::string_view> SceneTables() noexcept { return kTables; }
 

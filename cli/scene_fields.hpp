@@ -1,34 +1,31 @@
 #pragma once
 /// @file scene_fields.hpp
-/// The numeric fields of covopt::Scene a user can set, listed once for the command line
-/// (`--robot-mass`) and the scene file (`[robot] mass`), so both read values the same way.
-/// The threshold reading (`--thresholds`, `[model] thresholds`) is a word, not a quantity,
-/// and is handled beside this table. The injury limits and the safety factor (`[limits]`,
-/// `--laceration-limit` ...) are not Scene fields; they have their own table, LimitFields().
+/// The numeric fields of covopt::Scene a user can set, as the command line and scene files
+/// see them: the library's table (covopt/core/scene_fields.hpp), each with its flag
+/// ("--" + name: `--robot-mass`) beside its scene-file table and key (`[robot] mass`), so
+/// both read values the same way. The threshold reading (`--thresholds`, `[model]
+/// thresholds`) is a word, not a quantity, and is handled beside this table. The injury
+/// limits and the safety factor (`[limits]`, `--laceration-limit` ...) are not Scene fields;
+/// they have their own table, LimitFields().
 
 #include <span>
 #include <string>
 #include <string_view>
 
 #include "covopt/core/scene.hpp"
+#include "covopt/core/scene_fields.hpp"
 #include "quantity.hpp"
 
 namespace covopt::cli {
 
-/// One settable numeric field of a Scene.
-struct SceneField {
-  std::string_view table;     ///< scene-file table, e.g. "robot"
-  std::string_view key;       ///< key in that table, e.g. "mass"
-  std::string_view flag;      ///< command-line flag, e.g. "--robot-mass"
-  QuantitySpec spec;          ///< kind, and whether "fixed"/"flat" are allowed
-  double& (*field)(Scene&);   ///< the Scene member it sets
-  std::string_view help;      ///< one line for --help
-
-  /// "robot.mass": how the scene file and messages name the field.
-  std::string dotted_name() const;
+/// One settable numeric field of a Scene (table, key, name, spec, field, help: see
+/// covopt::SceneField) and its command-line flag.
+struct SceneField : covopt::SceneField {
+  std::string_view flag;  ///< "--" + name, e.g. "--robot-mass"
 };
 
-/// Every settable numeric field, in the order of `covopt simulate --help`.
+/// Every settable numeric field, in the order of `covopt simulate --help` (that of
+/// covopt::SceneFields()).
 std::span<const SceneField> SceneFields() noexcept;
 
 /// The scene-file tables, in order: robot, covering, head, scalp, skull, model, limits.

@@ -2,22 +2,28 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <fmt/compile.h>
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 #include <fmt/ranges.h>
 
-#include "covopt/core/impact_model.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
 #include "output.hpp"
@@ -86,47 +92,49 @@ std::string AxisValueText(const SweepAxis& axis, double value) {
   return fmt::format("{}", value);
 }
 
-/// A CSV text field: quoted, with inner quotes doubled; empty stays empty.
-std::string CsvText(std::string_view text) {
-  if (text.empty()) return {};
-  std::string quoted = "\"";
+/// Appends a CSV text field: quoted, with inner quotes doubled and line breaks as spaces;
+/// nothing for an empty text.
+void AppendCsvText(fmt::memory_buffer& out, std::string_view text) {
+  if (text.empty()) return;
+  out.push_back('"');
   for (const char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += (c == '\n' || c == '\r') ? ' ' : c;
+    if (c == '"') out.push_back('"');
+    out.push_back((c == '\n' || c == '\r') ? ' ' : c);
   }
-  return quoted + "\"";
+  out.push_back('"');
 }
 
-double WorstRatio(const GridPointResult& p) {
-  return std::max(p.assessment.laceration.ratio, p.assessment.contusion.ratio);
-}
+using covopt::SweepRow;
 
 /// The result columns and how each is read; the names are the keys of simulate --json
 /// (cli/output.cpp ToJson), which tests/cli/test_sweep.cpp checks.
 struct ResultColumn {
   std::string_view name;
-  double (*value)(const GridPointResult&);
+  double (*value)(const SweepRow&);
+  /// The value is always one of 0..9 (a phase number or a 0/1 flag): the CSV writes its
+  /// digit directly, the text "{}" gives.
+  bool digit = false;
 };
 double Optional(const std::optional<double>& v) {
   return v ? *v : std::numeric_limits<double>::quiet_NaN();
 }
 // clang-format off
 const std::array kResultColumns{
-  ResultColumn{"max_penetration_m", [](const GridPointResult& p) { return p.result->peaks.max_penetration_m; }},
-  ResultColumn{"peak_force_N", [](const GridPointResult& p) { return p.result->peaks.peak_force_N; }},
-  ResultColumn{"contact_duration_s", [](const GridPointResult& p) { return Optional(p.result->contact_duration_s); }},
-  ResultColumn{"time_of_max_compression_s", [](const GridPointResult& p) { return Optional(p.result->time_of_max_compression_s); }},
-  ResultColumn{"max_compressive_stress_Pa", [](const GridPointResult& p) { return p.result->peaks.max_compressive_stress_Pa; }},
-  ResultColumn{"max_tensile_stress_Pa", [](const GridPointResult& p) { return p.result->peaks.max_tensile_stress_Pa; }},
-  ResultColumn{"max_energy_density_J_per_m2", [](const GridPointResult& p) { return p.result->peaks.max_energy_density_J_per_m2; }},
-  ResultColumn{"rebound_speed_m_per_s", [](const GridPointResult& p) { return Optional(p.result->rebound_speed_m_per_s); }},
-  ResultColumn{"phase_at_max", [](const GridPointResult& p) { return static_cast<double>(PhaseNumber(p.result->peaks.phase_at_max)); }},
-  ResultColumn{"scalp_fully_compressed", [](const GridPointResult& p) { return p.result->peaks.scalp_fully_compressed ? 1.0 : 0.0; }},
-  ResultColumn{"fully_compressed", [](const GridPointResult& p) { return p.result->peaks.fully_compressed ? 1.0 : 0.0; }},
-  ResultColumn{"safe", [](const GridPointResult& p) { return p.assessment.safe() ? 1.0 : 0.0; }},
-  ResultColumn{"laceration_ratio", [](const GridPointResult& p) { return p.assessment.laceration.ratio; }},
-  ResultColumn{"contusion_ratio", [](const GridPointResult& p) { return p.assessment.contusion.ratio; }},
-  ResultColumn{"worst_ratio", [](const GridPointResult& p) { return WorstRatio(p); }},
+  ResultColumn{"max_penetration_m", [](const SweepRow& p) { return p.peaks.max_penetration_m; }, false},
+  ResultColumn{"peak_force_N", [](const SweepRow& p) { return p.peaks.peak_force_N; }, false},
+  ResultColumn{"contact_duration_s", [](const SweepRow& p) { return Optional(p.contact_duration_s); }, false},
+  ResultColumn{"time_of_max_compression_s", [](const SweepRow& p) { return Optional(p.time_of_max_compression_s); }, false},
+  ResultColumn{"max_compressive_stress_Pa", [](const SweepRow& p) { return p.peaks.max_compressive_stress_Pa; }, false},
+  ResultColumn{"max_tensile_stress_Pa", [](const SweepRow& p) { return p.peaks.max_tensile_stress_Pa; }, false},
+  ResultColumn{"max_energy_density_J_per_m2", [](const SweepRow& p) { return p.peaks.max_energy_density_J_per_m2; }, false},
+  ResultColumn{"rebound_speed_m_per_s", [](const SweepRow& p) { return p.rebound_speed_m_per_s; }, false},
+  ResultColumn{"phase_at_max", [](const SweepRow& p) { return static_cast<double>(PhaseNumber(p.peaks.phase_at_max)); }, true},
+  ResultColumn{"scalp_fully_compressed", [](const SweepRow& p) { return p.peaks.scalp_fully_compressed ? 1.0 : 0.0; }, true},
+  ResultColumn{"fully_compressed", [](const SweepRow& p) { return p.peaks.fully_compressed ? 1.0 : 0.0; }, true},
+  ResultColumn{"safe", [](const SweepRow& p) { return p.assessment.safe() ? 1.0 : 0.0; }, true},
+  ResultColumn{"laceration_ratio", [](const SweepRow& p) { return p.assessment.laceration.ratio; }, false},
+  ResultColumn{"contusion_ratio", [](const SweepRow& p) { return p.assessment.contusion.ratio; }, false},
+  ResultColumn{"worst_ratio", [](const SweepRow& p) { return p.worst_ratio; }, false},
 };
 // clang-format on
 const std::array<std::string_view, kResultColumns.size()> kResultColumnNames = [] {
@@ -195,12 +203,34 @@ std::string ColumnLabel(const ResultColumn& column) {
   return d.unit.empty() ? std::string(column.name) : fmt::format("{} [{}]", column.name, d.unit);
 }
 
+/// What a chart needs of one grid point: the rest of its row is not kept.
+struct ChartPoint {
+  bool valid = false;             ///< SweepRow::valid; nothing else means anything if false
+  bool fully_compressed = false;  ///< ImpactPeaks::fully_compressed
+  double laceration_ratio = 0.0;  ///< [-]
+  double contusion_ratio = 0.0;   ///< [-]
+  double worst_ratio = 0.0;       ///< [-]
+  double quantity = 0.0;          ///< the --plot-quantity column [SI], if any
+  double compression_ratio = 0.0; ///< δ_max / t2 [-]
+};
+
+ChartPoint ChartPointOf(const SweepRow& row, const ResultColumn* quantity) {
+  if (!row.valid) return {};
+  return {true,
+          row.peaks.fully_compressed,
+          row.assessment.laceration.ratio,
+          row.assessment.contusion.ratio,
+          row.worst_ratio,
+          quantity ? quantity->value(row) : 0.0,
+          row.compression_ratio};
+}
+
 struct PlotInput {
   const ResultColumn* quantity = nullptr;  ///< --plot-quantity; null: the injury ratios
   const SweepAxis* x = nullptr;
   const SweepAxis* y = nullptr;
-  std::span<const GridPointResult> points;
-  std::span<const Scene> scenes;  ///< the points' scenes, in the same order
+  std::span<const ChartPoint> points;  ///< every grid point, in grid order
+  InjuryLimits limits;                 ///< the limits the ratios are taken against
   std::string scene_line;         ///< the quantities not swept, one line
   /// A point is safe when safety_factor x ratio <= 1: the limit lines sit at ratio
   /// 1/safety_factor (the derated limits).
@@ -212,7 +242,7 @@ std::size_t PointIndex(const PlotInput& in, std::size_t ix, std::size_t iy) {
   const std::size_t ny = in.y ? in.y->values.size() : 1;
   return ix * ny + iy;
 }
-const GridPointResult& At(const PlotInput& in, std::size_t ix, std::size_t iy) {
+const ChartPoint& At(const PlotInput& in, std::size_t ix, std::size_t iy) {
   return in.points[PointIndex(in, ix, iy)];
 }
 
@@ -231,21 +261,6 @@ std::vector<std::size_t> ChartOrder(const SweepAxis& axis) {
                           }),
               order.end());
   return order;
-}
-
-/// δ_max over the penetration at which the robot reaches bone through everything soft
-/// (the start of the robot-on-bone phase: t2, or t1 without a covering) [-]. Above 1 the
-/// point is fully compressed (ImpactPeaks::fully_compressed); 1 is the boundary. NaN for
-/// an invalid point.
-double CompressionRatio(const Scene& scene, const GridPointResult& p) {
-  if (!p.valid()) return std::numeric_limits<double>::quiet_NaN();
-  const ImpactModel model = ImpactModel::FromScene(scene);
-  for (std::size_t i = 0; i < model.segment_count(); ++i) {
-    if (model.segment(i).phase == Phase::kRobotOnBone && model.segment(i).start_m > 0.0) {
-      return p.result->peaks.max_penetration_m / model.segment(i).start_m;
-    }
-  }
-  return std::numeric_limits<double>::quiet_NaN();
 }
 
 /// The gnuplot title: `lines` joined by gnuplot's line breaks.
@@ -268,14 +283,14 @@ std::string MapScript(const PlotInput& in, const std::string& output) {
   bool full_below = false, full_above = false;
   const double at_limit = 1.0 / in.safety_factor;  // the ratio at the (derated) limit
   for (std::size_t i = 0; i < in.points.size(); ++i) {
-    const GridPointResult& p = in.points[i];
-    if (!p.valid()) {
+    const ChartPoint& p = in.points[i];
+    if (!p.valid) {
       ++invalid;
       continue;
     }
-    (p.assessment.laceration.ratio <= at_limit ? lac_below : lac_above) = true;
-    (p.assessment.contusion.ratio <= at_limit ? con_below : con_above) = true;
-    (p.result->peaks.fully_compressed ? full_above : full_below) = true;
+    (p.laceration_ratio <= at_limit ? lac_below : lac_above) = true;
+    (p.contusion_ratio <= at_limit ? con_below : con_above) = true;
+    (p.fully_compressed ? full_above : full_below) = true;
   }
   std::vector<std::string> notes;
   if (!(lac_below && lac_above)) {
@@ -335,14 +350,13 @@ std::string MapScript(const PlotInput& in, const std::string& output) {
   s += "$grid << EOD\n";
   for (const std::size_t ix : x_order) {
     for (const std::size_t iy : y_order) {
-      const GridPointResult& p = At(in, ix, iy);
-      const bool ok = p.valid();
+      const ChartPoint& p = At(in, ix, iy);
+      const bool ok = p.valid;
       s += fmt::format("{} {} {} {} {} {}\n", x.values[ix] / sx, y.values[iy] / sy,
-                       PlotNumber(ok ? p.assessment.laceration.ratio : NAN),
-                       PlotNumber(ok ? p.assessment.contusion.ratio : NAN),
-                       PlotNumber(ok ? (in.quantity ? in.quantity->value(p) / qscale : WorstRatio(p))
-                                     : NAN),
-                       PlotNumber(CompressionRatio(in.scenes[PointIndex(in, ix, iy)], p)));
+                       PlotNumber(ok ? p.laceration_ratio : NAN),
+                       PlotNumber(ok ? p.contusion_ratio : NAN),
+                       PlotNumber(ok ? (in.quantity ? p.quantity / qscale : p.worst_ratio) : NAN),
+                       PlotNumber(ok ? p.compression_ratio : NAN));
     }
     s += "\n";
   }
@@ -355,8 +369,8 @@ std::string MapScript(const PlotInput& in, const std::string& output) {
   bool stippled = false;
   for (std::size_t i = 0; i < x_order.size(); i += x_step) {
     for (std::size_t j = 0; j < y_order.size(); j += y_step) {
-      const GridPointResult& p = At(in, x_order[i], y_order[j]);
-      if (p.valid() && p.result->peaks.fully_compressed) {
+      const ChartPoint& p = At(in, x_order[i], y_order[j]);
+      if (p.valid && p.fully_compressed) {
         s += fmt::format("{} {}\n", x.values[x_order[i]] / sx, y.values[y_order[j]] / sy);
         stippled = true;
       }
@@ -420,15 +434,14 @@ std::string FamiliesScript(const PlotInput& in, const std::string& output) {
   bool any_fully_compressed = false;
   for (std::size_t line = 0; line < lines; ++line) {
     for (const std::size_t i : along_order) {
-      const GridPointResult& p =
-          families_on_y ? At(in, i, in.y ? line : 0) : At(in, line, i);
-      const bool ok = p.valid();
-      const bool full = ok && p.result->peaks.fully_compressed;
+      const ChartPoint& p = families_on_y ? At(in, i, in.y ? line : 0) : At(in, line, i);
+      const bool ok = p.valid;
+      const bool full = ok && p.fully_compressed;
       any_fully_compressed = any_fully_compressed || full;
       s += fmt::format("{} {} {} {} {}\n", along.values[i] / scale,
-                       PlotNumber(ok ? p.assessment.laceration.ratio : NAN),
-                       PlotNumber(ok ? p.assessment.contusion.ratio : NAN),
-                       PlotNumber(ok && in.quantity ? in.quantity->value(p) / qscale : NAN),
+                       PlotNumber(ok ? p.laceration_ratio : NAN),
+                       PlotNumber(ok ? p.contusion_ratio : NAN),
+                       PlotNumber(ok && in.quantity ? p.quantity / qscale : NAN),
                        full ? 1 : 0);
     }
     s += "\n\n";
@@ -489,19 +502,11 @@ std::string FamiliesScript(const PlotInput& in, const std::string& output) {
   }
   title.front() = fmt::format("covopt sweep: injury ratios {}", against);
   s += fmt::format("set multiplot layout 2,1 title \"{}\"\n", TitleText(title));
-  // The limits the ratios are taken against (every point has the same).
-  InjuryAssessment limits = Assess(ImpactPeaks{});
-  for (const GridPointResult& p : in.points) {
-    if (p.valid()) {
-      limits = p.assessment;
-      break;
-    }
-  }
   s += fmt::format("set ylabel 'laceration ratio (tensile stress / {:g} MPa)'\n",
-                   limits.laceration.limit / 1e6);
+                   in.limits.laceration_tensile_stress_Pa / 1e6);
   s += "plot " + clauses(2, true);
   s += fmt::format("set ylabel 'contusion ratio (energy density / {:g} J/cm²)'\n",
-                   limits.contusion.limit / 1e4);
+                   in.limits.contusion_energy_density_J_per_m2 / 1e4);
   s += "plot " + clauses(3, true);
   s += "unset multiplot\nunset output\n";
   return s;
@@ -572,6 +577,74 @@ class ProgressBar {
   bool drawn_ = false;
   Clock::time_point start_ = Clock::now();
   Clock::time_point last_ = start_;
+};
+
+/// A file written piece by piece and put in place atomically, as WriteFileAtomically
+/// (cli/output.hpp) does for a whole text: a temporary in the same directory, flushed to
+/// disk and renamed over the target by Commit; removed if never committed. Messages name
+/// the file and the system's reason, as WriteFileAtomically's do.
+class AtomicFileStream {
+ public:
+  /// @throws OutputError when the temporary cannot be created.
+  explicit AtomicFileStream(const std::filesystem::path& path) : target_(path.string()) {
+    if (!path.has_filename()) {
+      throw OutputError(fmt::format("cannot write '{}': not a file name", target_));
+    }
+    const std::filesystem::path directory =
+        path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    temp_ = (directory / fmt::format(".{}.tmp-XXXXXX", path.filename().string())).string();
+    fd_ = ::mkstemp(temp_.data());
+    if (fd_ < 0) {
+      throw OutputError(fmt::format("cannot write '{}': {}", target_, std::strerror(errno)));
+    }
+  }
+  ~AtomicFileStream() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!committed_) ::unlink(temp_.c_str());
+  }
+  AtomicFileStream(const AtomicFileStream&) = delete;
+  AtomicFileStream& operator=(const AtomicFileStream&) = delete;
+
+  /// @throws OutputError naming the failed step.
+  void Write(std::string_view text) {
+    const char* data = text.data();
+    std::size_t left = text.size();
+    while (left > 0) {
+      const ssize_t n = ::write(fd_, data, left);
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        Fail("write", errno);
+      }
+      data += n;
+      left -= static_cast<std::size_t>(n);
+    }
+  }
+
+  /// Gives the file the permissions a plain open() would (mkstemp makes 0600), flushes it
+  /// to disk, closes it and renames it over the target.
+  /// @throws OutputError naming the failed step.
+  void Commit() {
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    if (::fchmod(fd_, 0666 & ~mask) != 0) Fail("chmod", errno);
+    if (::fsync(fd_) != 0) Fail("fsync", errno);
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) Fail("close", errno);
+    if (::rename(temp_.c_str(), target_.c_str()) != 0) Fail("rename", errno);
+    committed_ = true;
+  }
+
+ private:
+  [[noreturn]] void Fail(const char* step, int error) {
+    throw OutputError(
+        fmt::format("cannot write '{}': {}: {}", target_, step, std::strerror(error)));
+  }
+
+  std::string target_;
+  std::string temp_;
+  int fd_ = -1;
+  bool committed_ = false;
 };
 
 }  // namespace
@@ -694,39 +767,84 @@ SweepAxis ParseSweepAxis(std::string_view text, std::string_view flag) {
 
 std::span<const std::string_view> SweepResultColumns() noexcept { return kResultColumnNames; }
 
-std::string SweepCsv(const SweepAxis& x, const SweepAxis* y,
-                     std::span<const GridPointResult> points) {
-  std::string csv = x.name;
-  if (y) csv += "," + y->name;
-  csv += ",status";
-  for (const ResultColumn& column : kResultColumns) {
-    csv += ',';
-    csv += column.name;
+SweepCsvWriter::SweepCsvWriter(const SweepAxis& x, const SweepAxis* y, Sink sink)
+    : x_(x), y_(y), sink_(std::move(sink)) {
+  x_texts_.reserve(x.values.size());
+  for (const double value : x.values) x_texts_.push_back(AxisValueText(x, value));
+  if (y) {
+    y_texts_.reserve(y->values.size());
+    for (const double value : y->values) y_texts_.push_back(AxisValueText(*y, value));
   }
-  csv += ",warnings,error\n";
-  const std::size_t ny = y ? y->values.size() : 1;
-  csv.reserve(csv.size() + points.size() * 320);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const GridPointResult& p = points[i];
-    csv += AxisValueText(x, x.values[i / ny]);
-    if (y) {
-      csv += ',';
-      csv += AxisValueText(*y, y->values[i % ny]);
+  const auto out = std::back_inserter(buffer_);
+  fmt::format_to(out, "{}", x.name);
+  if (y) fmt::format_to(out, ",{}", y->name);
+  fmt::format_to(out, ",status");
+  for (const ResultColumn& column : kResultColumns) fmt::format_to(out, ",{}", column.name);
+  fmt::format_to(out, ",warnings,error\n");
+}
+
+void SweepCsvWriter::Write(std::span<const SweepRow> rows) {
+  constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
+  const auto append = [this](std::string_view text) {
+    buffer_.append(text.data(), text.data() + text.size());
+  };
+  const auto out = std::back_inserter(buffer_);
+  std::string warnings;
+  for (const SweepRow& row : rows) {
+    append(x_texts_[row.ix]);
+    if (y_) {
+      buffer_.push_back(',');
+      append(y_texts_[row.iy]);
     }
-    csv += p.valid() ? ",ok" : ",invalid";
+    append(row.valid ? ",ok" : ",invalid");
     for (const ResultColumn& column : kResultColumns) {
-      csv += ',';
-      if (!p.valid()) continue;
-      const double v = column.value(p);
-      if (std::isfinite(v)) fmt::format_to(std::back_inserter(csv), "{}", v);
+      buffer_.push_back(',');
+      if (!row.valid) continue;
+      const double v = column.value(row);
+      if (column.digit) {
+        buffer_.push_back(static_cast<char>('0' + static_cast<int>(v)));
+      } else if (std::isfinite(v)) {
+        fmt::format_to(out, FMT_COMPILE("{}"), v);
+      }
     }
-    csv += ',';
-    if (p.valid()) csv += CsvText(fmt::format("{}", fmt::join(p.result->warnings, " | ")));
-    csv += ',';
-    csv += CsvText(p.error);
-    csv += '\n';
+    buffer_.push_back(',');
+    if (row.valid && !row.warnings.empty()) {
+      warnings.clear();
+      for (const covopt::ValidityWarning& warning : row.warnings) {
+        if (&warning != &row.warnings.front()) warnings += " | ";
+        warnings += warning.message;
+      }
+      AppendCsvText(buffer_, warnings);
+    }
+    buffer_.push_back(',');
+    AppendCsvText(buffer_, row.error);
+    buffer_.push_back('\n');
+    if (buffer_.size() >= kFlushBytes) Flush();
   }
-  return csv;
+}
+
+void SweepCsvWriter::Finish() { Flush(); }
+
+void SweepCsvWriter::Flush() {
+  if (buffer_.size() == 0) return;
+  sink_(std::string_view(buffer_.data(), buffer_.size()));
+  buffer_.clear();
+}
+
+covopt::SweepSpec MakeSweepSpec(const SweepAxis& x, const SweepAxis* y,
+                                const SimulationPlan& plan) {
+  covopt::SweepSpec spec;
+  spec.scene = plan.scene;
+  spec.x = {x.name, x.values};
+  if (y) spec.y = covopt::SweepAxis{y->name, y->values};
+  spec.limits = plan.limits;
+  spec.safety_factor = plan.safety_factor;
+  return spec;
+}
+
+std::size_t SweepBlockRows(std::size_t points, unsigned threads) {
+  const std::size_t per_block = points / (8 * std::max(1u, threads)) + 1;
+  return std::clamp<std::size_t>(per_block, 16, 1024);
 }
 
 CLI::App* SetupSweep(CLI::App& app, SweepOptions& options) {
@@ -840,35 +958,6 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
   }
   const SweepAxis* y_axis = y ? &*y : nullptr;
 
-  // The grid, x varying slowest.
-  const std::size_t ny = y ? y->values.size() : 1;
-  std::vector<Scene> scenes(x.values.size() * ny, plan.scene);
-  for (std::size_t ix = 0; ix < x.values.size(); ++ix) {
-    for (std::size_t iy = 0; iy < ny; ++iy) {
-      Scene& scene = scenes[ix * ny + iy];
-      x.field->field(scene) = x.values[ix];
-      if (y) y->field->field(scene) = y->values[iy];
-    }
-  }
-
-  const bool terminal =
-      !options.no_progress && &err == &std::cerr && ::isatty(STDERR_FILENO) == 1;
-  ProgressBar bar(terminal);
-  GridOptions grid;
-  grid.threads = threads;
-  grid.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
-  const auto start = std::chrono::steady_clock::now();
-  std::vector<GridPointResult> points = SolveExactGrid(scenes, grid);
-  // The grid judges against the default limits; the plan's (flags, scene file) rule.
-  for (GridPointResult& point : points) {
-    if (point.valid()) point.assessment = JudgeInjuries(point.result->peaks, plan);
-  }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  bar.Finish();
-  const unsigned used_threads =
-      threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
-
   // The scene without the swept quantities, for the summary and the chart titles.
   std::vector<std::string_view> swept_fields;
   std::vector<std::string> swept_names{x.field->dotted_name()};
@@ -879,22 +968,71 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     scene_line += fmt::format("; {}", fmt::join(details, ", "));
   }
 
-  // Outputs.
+  // Outputs that can fail are checked or opened before the sweep: a missing gnuplot or an
+  // unwritable CSV file costs no computation and leaves no file.
   const bool csv_to_stdout = options.csv_file && *options.csv_file == "-";
   std::vector<std::string> written;
+  if (plot_format && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+  std::optional<AtomicFileStream> csv_file;
+  std::optional<SweepCsvWriter> csv;
   try {
-    if (plot_format && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (options.csv_file && !csv_to_stdout) {
-      WriteFileAtomically(*options.csv_file, SweepCsv(x, y_axis, points));
+      csv_file.emplace(*options.csv_file);
+      csv.emplace(x, y_axis, [&csv_file](std::string_view text) { csv_file->Write(text); });
+    } else if (csv_to_stdout) {
+      csv.emplace(x, y_axis, [&out](std::string_view text) {
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+        if (!out) throw OutputError("cannot write the results to standard output");
+      });
+    }
+  } catch (const OutputError& e) {
+    return errors.Failed(e.what());
+  }
+
+  // The sweep: rows stream into the CSV and, for a chart, into the few numbers it draws.
+  const covopt::SweepSpec spec = MakeSweepSpec(x, y_axis, plan);
+  const std::size_t points = x.values.size() * (y ? y->values.size() : 1);
+  const unsigned wanted_threads =
+      threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+  covopt::SweepOptions sweep;
+  sweep.threads = wanted_threads;
+  sweep.block_rows = SweepBlockRows(points, wanted_threads);
+  const bool terminal =
+      !options.no_progress && &err == &std::cerr && ::isatty(STDERR_FILENO) == 1;
+  ProgressBar bar(terminal);
+  sweep.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
+  std::vector<ChartPoint> chart;
+  if (plot_format) chart.reserve(points);
+  covopt::SweepResult result;
+  try {
+    result = covopt::Sweep(spec, sweep, [&](std::span<const SweepRow> rows) {
+      if (csv) csv->Write(rows);
+      if (plot_format) {
+        for (const SweepRow& row : rows) chart.push_back(ChartPointOf(row, quantity));
+      }
+    });
+    if (csv) csv->Finish();
+    if (csv_file) {
+      csv_file->Commit();
       written.push_back(*options.csv_file);
     }
+  } catch (const OutputError& e) {
+    bar.Finish();
+    return errors.Failed(e.what());
+  } catch (const std::invalid_argument& e) {  // the library refused the spec
+    bar.Finish();
+    return errors.BadInput(e.what());
+  }
+  bar.Finish();
+
+  try {
     if (plot_format) {
       PlotInput input;
       input.quantity = quantity;
       input.x = &x;
       input.y = y_axis;
-      input.points = points;
-      input.scenes = scenes;
+      input.points = chart;
+      input.limits = plan.limits;
       input.scene_line = scene_line;
       input.safety_factor = plan.safety_factor;
       input.format = *plot_format;
@@ -908,37 +1046,9 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     return errors.Failed(e.what());
   }
 
-  if (csv_to_stdout) {
-    out << SweepCsv(x, y_axis, points);
-  } else {
-    // The summary.
-    std::size_t valid = 0, safe = 0, lacerating = 0, contusing = 0, warned = 0;
-    // The design criterion: safe, and a covering not fully compressed (a bare robot has no
-    // covering to bottom out, so safe is enough for it).
-    std::size_t covered = 0, bottomed = 0, admissible = 0;
-    std::optional<std::size_t> first_invalid, first_warned, best, worst;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const GridPointResult& p = points[i];
-      if (!p.valid()) {
-        if (!first_invalid) first_invalid = i;
-        continue;
-      }
-      ++valid;
-      if (p.assessment.safe()) ++safe;
-      const bool has_covering = scenes[i].covering.thickness_m > 0.0;
-      const bool bottomed_out = has_covering && p.result->peaks.fully_compressed;
-      if (has_covering) ++covered;
-      if (bottomed_out) ++bottomed;
-      if (p.assessment.safe() && !bottomed_out) ++admissible;
-      if (!p.assessment.laceration.safe) ++lacerating;
-      if (!p.assessment.contusion.safe) ++contusing;
-      if (!p.result->warnings.empty()) {
-        ++warned;
-        if (!first_warned) first_warned = i;
-      }
-      if (!best || WorstRatio(p) < WorstRatio(points[*best])) best = i;
-      if (!worst || WorstRatio(p) > WorstRatio(points[*worst])) worst = i;
-    }
+  if (!csv_to_stdout) {
+    // The summary, counted by the library on the stream.
+    const std::size_t valid = result.valid;
     const auto percent = [&](std::size_t n) {
       return valid == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(valid);
     };
@@ -946,37 +1056,43 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     if (y) fmt::print(out, "        {}: {}\n", y->name, DescribeAxis(*y));
     fmt::print(out, "Scene   {}\n", scene_line);
     fmt::print(out, "Points  {} in {:.3g} s on {} thread{}: {} valid, {} invalid\n",
-               points.size(), seconds, used_threads, used_threads == 1 ? "" : "s", valid,
-               points.size() - valid);
+               result.rows, result.wall_time_s, result.threads, result.threads == 1 ? "" : "s",
+               valid, result.rows - valid);
     if (valid > 0) {
       // With a safety factor s, a ratio above 1/s is unsafe (InputWarnings says so).
       fmt::print(out, "Safe    {} ({:.1f} %); laceration ratio > {:.4g} at {} ({:.1f} %), "
                       "contusion ratio > {:.4g} at {} ({:.1f} %)\n",
-                 safe, percent(safe), 1.0 / plan.safety_factor, lacerating, percent(lacerating),
-                 1.0 / plan.safety_factor, contusing, percent(contusing));
-      if (covered > 0) {
+                 result.safe, percent(result.safe), 1.0 / plan.safety_factor,
+                 result.laceration_unsafe, percent(result.laceration_unsafe),
+                 1.0 / plan.safety_factor, result.contusion_unsafe,
+                 percent(result.contusion_unsafe));
+      // The design criterion: safe, and a covering not fully compressed (a bare robot has
+      // no covering to bottom out, so safe is enough for it).
+      if (result.covered > 0) {
         fmt::print(out, "Full    covering fully compressed at {} of {} covered points ({:.1f} %); "
                         "safe and not fully compressed at {} ({:.1f} %)\n",
-                   bottomed, covered,
-                   100.0 * static_cast<double>(bottomed) / static_cast<double>(covered),
-                   admissible, percent(admissible));
+                   result.fully_compressed, result.covered,
+                   100.0 * static_cast<double>(result.fully_compressed) /
+                       static_cast<double>(result.covered),
+                   result.admissible, percent(result.admissible));
       }
-      for (const auto& [label, index] : {std::pair{"Least", *best}, std::pair{"Most", *worst}}) {
-        const GridPointResult& p = points[index];
+      for (const auto& [label, extreme] :
+           {std::pair{"Least", *result.least}, std::pair{"Most", *result.most}}) {
         fmt::print(out, "{:<7} worst ratio {:.4g} at {} (laceration {:.4g}, contusion {:.4g})\n",
-                   label, WorstRatio(p), PointName(x, y_axis, index),
-                   p.assessment.laceration.ratio, p.assessment.contusion.ratio);
+                   label, extreme.worst_ratio, PointName(x, y_axis, extreme.index),
+                   extreme.laceration_ratio, extreme.contusion_ratio);
       }
     }
-    if (first_invalid) {
+    if (result.first_invalid) {
+      const std::size_t invalid = result.rows - valid;
       fmt::print(out, "Invalid {} point{} outside the model's input range, e.g. at {}: {}\n",
-                 points.size() - valid, points.size() - valid == 1 ? "" : "s",
-                 PointName(x, y_axis, *first_invalid), points[*first_invalid].error);
+                 invalid, invalid == 1 ? "" : "s", PointName(x, y_axis, *result.first_invalid),
+                 result.first_invalid_error);
     }
-    if (first_warned) {
-      fmt::print(out, "Warned  {} point{} with validity warnings, e.g. at {}: {}\n", warned,
-                 warned == 1 ? "" : "s", PointName(x, y_axis, *first_warned),
-                 points[*first_warned].result->warnings.front());
+    if (result.first_warned) {
+      fmt::print(out, "Warned  {} point{} with validity warnings, e.g. at {}: {}\n",
+                 result.warned, result.warned == 1 ? "" : "s",
+                 PointName(x, y_axis, *result.first_warned), result.first_warning.message);
     }
     for (const std::string& warning : InputWarnings(plan)) {
       fmt::print(out, "Note    {}\n", warning);

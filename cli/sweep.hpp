@@ -15,12 +15,17 @@
 /// ("10..100MPa" would mean 10 Pa to 100 MPa). Every other quantity comes from the scene
 /// flags, --scene and --material exactly as in `covopt simulate`.
 ///
-/// Each point is solved on the exact path on all cores; a point whose scene is outside
-/// the model's input range is reported as invalid with the library's message (never NaN).
+/// The computation is one library call, covopt::Sweep (covopt/core/sweep.hpp): each point
+/// is solved on the exact path on all cores, and the rows stream here in grid order, block
+/// by block, into the CSV writer (SweepCsvWriter) and, with --plot, into the few numbers a
+/// chart needs; so a 1000 x 1000 sweep to CSV runs in flat memory. A point whose scene is
+/// outside the model's input range is reported as invalid with the library's message
+/// (never NaN). The summary is the library's, counted on the stream.
 /// Exit codes: 0 done (also when some points are invalid), 1 an output could not be
 /// written, 2 bad input.
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <span>
@@ -28,7 +33,9 @@
 #include <string_view>
 #include <vector>
 
-#include "covopt/core/grid.hpp"
+#include <fmt/format.h>
+
+#include "covopt/core/sweep.hpp"
 #include "scene_fields.hpp"
 #include "simulate.hpp"
 
@@ -101,12 +108,45 @@ SweepAxis ParseSweepAxis(std::string_view text, std::string_view flag);
 /// contusion_ratio, worst_ratio.
 std::span<const std::string_view> SweepResultColumns() noexcept;
 
-/// The CSV text: header `<x name>[,<y name>],status,<result columns>,warnings,error`, then
-/// one row per point, x varying slowest. status is "ok" or "invalid"; an invalid point has
-/// empty result fields and the library's message in `error`; `warnings` holds the
-/// validity warnings joined by " | ". Numbers are SI, shortest round-trip decimals.
-std::string SweepCsv(const SweepAxis& x, const SweepAxis* y,
-                     std::span<const GridPointResult> points);
+/// Writes the sweep's CSV as its rows arrive: header `<x name>[,<y name>],status,<result
+/// columns>,warnings,error`, then one row per point in the order received (grid order: x
+/// varying slowest). status is "ok" or "invalid"; an invalid point has empty result fields
+/// and the library's message in `error`; `warnings` holds the validity warnings joined by
+/// " | ". Numbers are SI, shortest round-trip decimals; an axis value of +inf is "fixed" or
+/// "flat". The text is built in one buffer and handed to the sink in pieces of about
+/// 1 MiB, so no row costs an allocation.
+class SweepCsvWriter {
+ public:
+  /// Receives the CSV text in order, piece by piece; may throw (OutputError) to stop.
+  using Sink = std::function<void(std::string_view text)>;
+
+  /// Buffers the header. `x` and `y` must outlive the writer.
+  SweepCsvWriter(const SweepAxis& x, const SweepAxis* y, Sink sink);
+
+  /// Appends the rows (SweepRow::ix, iy index the axes' values).
+  void Write(std::span<const covopt::SweepRow> rows);
+  /// Hands what is buffered to the sink. Call once after the last rows.
+  void Finish();
+
+ private:
+  void Flush();
+
+  const SweepAxis& x_;
+  const SweepAxis* y_;
+  Sink sink_;
+  std::vector<std::string> x_texts_;  // each axis value as the CSV shows it
+  std::vector<std::string> y_texts_;
+  fmt::memory_buffer buffer_;
+};
+
+/// The library's sweep of these axes over `plan`'s scene, limits and safety factor: what
+/// `covopt sweep` computes.
+covopt::SweepSpec MakeSweepSpec(const SweepAxis& x, const SweepAxis* y,
+                                const SimulationPlan& plan);
+
+/// Rows per block for a grid of `points` on `threads` threads: about eight blocks per
+/// thread, 16..1024 rows, so small grids still spread over the threads.
+std::size_t SweepBlockRows(std::size_t points, unsigned threads);
 
 /// Adds the `sweep` subcommand to `app`, storing what is typed into `options`.
 CLI::App* SetupSweep(CLI::App& app, SweepOptions& options);

@@ -3,11 +3,14 @@
 // key by key and value by value at the same scene); physical trends hold along an axis;
 // the results do not depend on the number of threads; invalid scenes are reported as such,
 // never as NaN; charts are drawn; bad axis specs are exit 2 naming the flag and the value.
+// The CSV streams (SweepCsvWriter): the same text to a file as to stdout, handed to its
+// sink in bounded pieces, and an unwritable file costs no computation and leaves no file.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +21,7 @@
 #include <covopt/core/exact.hpp>
 #include <covopt/core/grid.hpp>
 #include <covopt/core/impact_model.hpp>
+#include <covopt/core/sweep.hpp>
 
 #include "cli_test_support.hpp"
 #include "plot.hpp"
@@ -481,4 +485,55 @@ TEST_CASE("sweep charts name only the quantities not swept and draw the full-com
   svg = ReadFile(derated_path);
   CHECK_THAT(svg, Contains("laceration limit / 1.5 (ratio 0.6667)") &&
                       Contains("contusion limit / 1.5 (ratio 0.6667)"));
+}
+
+TEST_CASE("the sweep CSV streams: the same text to a file as to stdout, in bounded pieces",
+          "[sweep]") {
+  const std::vector<std::string> axes = {"--x", "covering-modulus=1MPa..300MPa:log:60", "--y",
+                                         "covering-thickness=0..40mm:60"};
+  auto to_stdout = axes;
+  to_stdout.insert(to_stdout.begin(), "sweep");
+  to_stdout.insert(to_stdout.end(), {"--csv", "-"});
+  const auto printed = Run(to_stdout);
+  REQUIRE(printed.exit_code == 0);
+
+  TempDir dir;
+  const auto path = dir / "grid.csv";
+  auto to_file = axes;
+  to_file.insert(to_file.begin(), "sweep");
+  to_file.insert(to_file.end(), {"--csv", path.string()});
+  const auto written = Run(to_file);
+  REQUIRE(written.exit_code == 0);
+  CHECK(ReadFile(path) == printed.out);
+  CHECK(ParseCsv(printed.out).rows.size() == 3600);
+  REQUIRE(printed.out.size() > (std::size_t{1} << 20));  // more than one piece
+
+  // The writer alone, fed the library's rows block by block: the pieces it hands on are
+  // whole rows of at most about 1 MiB, and together they are the CLI's text.
+  const auto x = covopt::cli::ParseSweepAxis(axes[1], "--x");
+  const auto y = covopt::cli::ParseSweepAxis(axes[3], "--y");
+  std::string text;
+  std::size_t pieces = 0;
+  covopt::cli::SweepCsvWriter writer(x, &y, [&](std::string_view piece) {
+    ++pieces;
+    CHECK(piece.size() < (std::size_t{1} << 20) + 4096);
+    CHECK(piece.back() == '\n');
+    text += piece;
+  });
+  covopt::SweepOptions options;
+  options.block_rows = 37;
+  covopt::Sweep(covopt::cli::MakeSweepSpec(x, &y, covopt::cli::SimulationPlan{}), options,
+                [&](std::span<const covopt::SweepRow> rows) { writer.Write(rows); });
+  writer.Finish();
+  CHECK(pieces >= 2);
+  CHECK(text == printed.out);
+}
+
+TEST_CASE("an unwritable sweep CSV is exit 1 naming the file, nothing on stdout", "[sweep]") {
+  TempDir dir;
+  const auto missing = dir / "no-such-dir" / "grid.csv";
+  const auto run = Run({"sweep", "--x", "speed=1m/s..3m/s:5", "--csv", missing.string()});
+  CHECK(run.exit_code == 1);
+  CHECK(run.out.empty());
+  CHECK_THAT(run.err, Contains("cannot write '" + missing.string() + "'"));
 }
