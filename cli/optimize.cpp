@@ -19,6 +19,7 @@
 #include "covopt/core/quantity.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/optim/design.hpp"
+#include "covopt/report/design_json.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
 #include "output.hpp"
@@ -29,12 +30,9 @@
 namespace covopt::cli {
 namespace {
 
-using nlohmann::ordered_json;
-using optim::CandidateMaterial;
 using optim::CandidateOutcome;
 using optim::DesignOptions;
 using optim::DesignScore;
-using optim::DesignVerdict;
 
 constexpr std::string_view kFooter = R"(Values take a unit as in 'covopt simulate' (10kg, 2m/s, 15mm, 27.6MPa).
 The covering is what this command designs: its flags are not taken here.
@@ -166,45 +164,6 @@ std::string Percent(double fraction) { return fmt::format("{:.1f} %", 100.0 * fr
 std::string Mm(double metres) { return fmt::format("{:.2f} mm", metres * 1e3); }
 std::string MPa(double pascals) { return fmt::format("{:.3g} MPa", pascals * 1e-6); }
 
-ordered_json SolverJson(const optim::SolverReport& r) {
-  if (r.backend.empty()) return nullptr;
-  return {{"backend", r.backend},
-          {"termination", optim::ToString(r.termination)},
-          {"raw_code", r.raw_code},
-          {"raw_name", r.raw_name},
-          {"objective_evaluations", r.objective_evaluations},
-          {"constraint_evaluations", r.constraint_evaluations},
-          {"failed_evaluations", r.failed_evaluations},
-          {"seconds", r.seconds}};
-}
-
-ordered_json ScoreJson(const DesignScore& s) {
-  return {{"laceration_ratio", s.laceration_ratio},
-          {"contusion_ratio", s.contusion_ratio},
-          {"max_tensile_stress_Pa", s.peaks.max_tensile_stress_Pa},
-          {"max_energy_density_J_per_m2", s.peaks.max_energy_density_J_per_m2},
-          {"fully_compressed", s.peaks.fully_compressed},
-          {"compression_ratio", s.compression_ratio}};
-}
-
-ordered_json Nullable(const std::optional<double>& v) { return v ? ordered_json(*v) : ordered_json(nullptr); }
-
-ordered_json CandidateJson(const CandidateOutcome& c) {
-  ordered_json j = {{"material", c.material.name},
-                    {"family", c.material.family},
-                    {"youngs_modulus_Pa", c.material.youngs_modulus_Pa},
-                    {"poisson_ratio", c.material.poisson_ratio},
-                    {"poisson_assumed", c.material.poisson_assumed},
-                    {"min_safe_thickness_m", Nullable(c.min_safe_thickness_m)},
-                    {"thickness_m", Nullable(c.recommended_thickness_m)},
-                    {"evaluated_thickness_m", c.score.design.thickness_m},
-                    {"stock_thickness_beyond_max_m", Nullable(c.stock_thickness_beyond_max_m)},
-                    {"safe", c.safe},
-                    {"margin", c.margin}};
-  j.update(ScoreJson(c.score));
-  return j;
-}
-
 /// Prints the first `rows` candidates (none for 0) and the ν footnote when a shown row needs it.
 void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& candidates, int rows,
                      bool fixed_thickness) {
@@ -323,14 +282,15 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
-  // The input's own warnings first, then the answer's.
-  r.warnings.insert(r.warnings.end(), result.warnings.begin(), result.warnings.end());
-  ordered_json j;
+  if (options.json) {
+    out << report::DesignJson(r.request, result, r.warnings) << '\n';  // input's warnings, then the answer's
+    return 0;
+  }
+
   const std::string& headline = result.message;
   const std::vector<CandidateOutcome>& candidates = result.candidates;
   const optim::ContinuousOptimum& continuous = result.continuous;
   const DesignScore& bare = result.bare_robot;
-  const DesignVerdict verdict = result.verdict;
   const long evaluations = result.evaluations;
   const double seconds = result.seconds;
   const optim::SolverReport& global = continuous.global;
@@ -339,80 +299,8 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   const bool bare_safe = !result.covering_needed();
   std::optional<CandidateOutcome> recommended;
   if (result.recommendation) recommended = candidates[*result.recommendation];
-  const bool from_ipopt = continuous.source == "ipopt";
-  const optim::Termination termination = from_ipopt ? local.termination : continuous.bracket.termination;
   const double laceration_limit = r.request.options.limits.laceration_tensile_stress_Pa;
   const double contusion_limit = r.request.options.limits.contusion_energy_density_J_per_m2;
-
-  if (options.json) {
-    j["problem"] = optim::ToString(result.problem);
-    j["criterion"] = optim::ToString(criterion);
-    j["verdict"] = optim::ToString(verdict);
-    j["summary"] = headline;
-    if (recommended) {
-      const CandidateOutcome& c = *recommended;
-      ordered_json rec = {{"material", c.material.name},
-                          {"family", c.material.family},
-                          {"thickness_m", *c.recommended_thickness_m},
-                          {"min_safe_thickness_m", Nullable(c.min_safe_thickness_m)},
-                          {"stock_thickness_beyond_max_m", Nullable(c.stock_thickness_beyond_max_m)},
-                          {"youngs_modulus_Pa", c.material.youngs_modulus_Pa},
-                          {"poisson_ratio", c.material.poisson_ratio},
-                          {"poisson_assumed", c.material.poisson_assumed},
-                          {"laceration_ratio", c.score.laceration_ratio},
-                          {"contusion_ratio", c.score.contusion_ratio},
-                          {"margin", c.margin},
-                          {"safe", c.safe},
-                          {"fully_compressed", c.score.peaks.fully_compressed},
-                          {"compression_ratio", c.score.compression_ratio}};
-      j["recommendation"] = rec;
-    } else {
-      j["recommendation"] = nullptr;
-    }
-    j["continuous_optimum"] = {{"youngs_modulus_Pa", continuous.score.design.youngs_modulus_Pa},
-                               {"thickness_m", continuous.score.design.thickness_m},
-                               {"poisson_ratio", continuous.score.poisson_ratio},
-                               {"laceration_ratio", continuous.score.laceration_ratio},
-                               {"contusion_ratio", continuous.score.contusion_ratio},
-                               {"safe", continuous.score.safe(sf)},
-                               {"admissible", continuous.score.admissible(sf, criterion)},
-                               {"fully_compressed", continuous.score.peaks.fully_compressed},
-                               {"compression_ratio", continuous.score.compression_ratio},
-                               {"every_modulus_fully_compressed", continuous.every_modulus_fully_compressed},
-                               {"needed", !bare_safe},
-                               {"source", continuous.source}};
-    j["bare_robot"] = {{"laceration_ratio", bare.laceration_ratio},
-                       {"contusion_ratio", bare.contusion_ratio},
-                       {"safe", bare_safe}};
-    ordered_json list = ordered_json::array();
-    for (const CandidateOutcome& c : candidates) list.push_back(CandidateJson(c));
-    j["candidates"] = list;
-    j["solver"] = {{"termination", optim::ToString(termination)},
-                   {"evaluations", evaluations},
-                   {"seconds", seconds},
-                   {"global", SolverJson(global)},
-                   {"bracket", SolverJson(continuous.bracket)},
-                   {"local", SolverJson(local)}};
-    j["safety_factor"] = sf;
-    j["limits"] = {{"laceration_Pa", laceration_limit},
-                   {"contusion_J_per_m2", contusion_limit},
-                   {"derated_laceration_Pa", laceration_limit / sf},
-                   {"derated_contusion_J_per_m2", contusion_limit / sf}};
-    j["design_space"] = {{"min_modulus_Pa", r.request.options.space.min_modulus_Pa},
-                         {"max_modulus_Pa", r.request.options.space.max_modulus_Pa},
-                         {"min_thickness_m", r.request.options.space.min_thickness_m},
-                         {"max_thickness_m", r.request.options.space.max_thickness_m},
-                         {"thickness_step_m", r.request.options.thickness_step_m}};
-    if (r.request.thickness_m) j["thickness_m"] = *r.request.thickness_m;
-    Scene shown = r.request.scene;
-    shown.covering.thickness_m = 0.0;
-    ordered_json scene = SceneToJson(shown);
-    scene.erase("covering");
-    j["scene"] = scene;
-    j["warnings"] = r.warnings;
-    out << j.dump(2) << '\n';
-    return 0;
-  }
 
   Scene shown = r.request.scene;
   shown.covering.thickness_m = 0.0;
@@ -491,7 +379,8 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                                                  local.raw_name),
              evaluations, seconds * 1e3);
   fmt::print(out, "        kept: {}\n", continuous.source);
-  for (const std::string& w : r.warnings) fmt::print(out, "Warning: {}\n", w);
+  for (const std::string& w : r.warnings) fmt::print(out, "Warning: {}\n", w);         // about the input
+  for (const std::string& w : result.warnings) fmt::print(out, "Warning: {}\n", w);    // about the answer
   return 0;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file report.hpp
 /// covopt::report: results as JSON text (the CLI's --json and the Python dicts).
+#include "covopt/report/design_json.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
