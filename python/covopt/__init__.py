@@ -18,7 +18,7 @@ Long calls release the GIL.
 from . import _covopt
 from ._errors import ComputationError
 
-__all__ = ["simulate", "materials", "material", "ComputationError"]
+__all__ = ["simulate", "sweep", "materials", "material", "ComputationError"]
 
 
 def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
@@ -48,6 +48,40 @@ def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
     """
     arguments = {name: value for name, value in locals().items() if value is not None}
     return _covopt.simulate(**arguments)
+
+
+def sweep(x, y=None, *, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
+          robot_poisson=None, covering_modulus=None, covering_poisson=None,
+          covering_thickness=None, head_mass=None, head_radius=None, scalp_modulus=None,
+          scalp_poisson=None, scalp_thickness=None, skull_modulus=None, skull_poisson=None,
+          thresholds=None, laceration_limit=None, contusion_limit=None, safety_factor=None,
+          material=None, threads=None):
+    """A grid of impacts on the exact path, as ``covopt sweep``: one or two scene quantities
+    over lists of values, everything else from the scene keywords (as for simulate).
+
+    x, y: ``(quantity, values)``; the quantity is a scene keyword or CLI flag name
+    ("speed", "robot_mass" or "robot-mass", "covering_thickness", ...), the values SI
+    numbers (a list or numpy array; math.inf, "fixed" or "flat" where a body may be fixed
+    or the robot flat). threads: worker threads, None or 0 = all cores; results are the
+    same for any number.
+
+    Returns a dict: ``x`` (and ``y``) as numpy arrays with ``x_quantity`` (``y_quantity``);
+    one numpy array per result, ``a[i, j]`` at ``x[i]``, ``y[j]`` (``a[i]`` with one axis):
+    the peaks (max_penetration_m, peak_force_N, contact_duration_s,
+    time_of_max_compression_s, max_compressive_stress_Pa, max_tensile_stress_Pa,
+    max_energy_density_J_per_m2, rebound_speed_m_per_s, phase_at_max), laceration_ratio,
+    contusion_ratio, worst_ratio, compression_ratio (δ_max / t2, above 1 fully compressed),
+    and the flags valid, scalp_fully_compressed, fully_compressed, safe, admissible (safe
+    and not fully compressed). A point outside the model's input range is not valid: NaN
+    in every number, False in every flag. Also status, message and brief_report (the
+    library's summary line).
+
+    Raises ValueError on bad input (an unknown quantity, no values, ...), ComputationError
+    when no point is a valid scene.
+    """
+    arguments = {name: value for name, value in locals().items()
+                 if value is not None and name not in ("x", "y")}
+    return _covopt.sweep(x, y, **arguments)
 
 
 def materials():

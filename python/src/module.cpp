@@ -12,6 +12,10 @@
 /// .status). The computation runs without the GIL.
 
 #include <cmath>
+#include <cstddef>
+#include <initializer_list>
+#include <limits>
+#include <span>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -27,6 +31,7 @@
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/scene.hpp"
+#include "covopt/core/sweep.hpp"
 #include "covopt/core/time_integration.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/materials/material.hpp"
@@ -150,28 +155,49 @@ py::object JsonLoads(const std::string& text) {
   throw py::error_already_set();
 }
 
-const char* const kKnownKeywords[] = {
-    "thresholds", "laceration_limit", "contusion_limit", "safety_factor", "material",
-    "method",     "rtol",             "atol",            "max_steps",     "history"};
+/// The keywords every scene-taking call shares, beside the scene's own.
+const char* const kSceneOptionKeywords[] = {"thresholds", "laceration_limit", "contusion_limit",
+                                            "safety_factor", "material"};
 
-/// covopt.simulate(**scene, ...): see python/covopt/__init__.py for the documentation.
-py::dict Simulate(const py::kwargs& kwargs) {
-  const auto get = [&](const char* name) -> std::optional<py::object> {
-    if (!kwargs.contains(name)) return std::nullopt;
-    py::object value = kwargs[name];
-    if (value.is_none()) return std::nullopt;
-    return value;
-  };
+/// `kwargs[name]` unless absent or None.
+std::optional<py::object> Get(const py::kwargs& kwargs, const char* name) {
+  if (!kwargs.contains(name)) return std::nullopt;
+  py::object value = kwargs[name];
+  if (value.is_none()) return std::nullopt;
+  return value;
+}
+
+/// Refuses a keyword that is neither a scene keyword nor one of `own`.
+void CheckKeywords(const py::kwargs& kwargs, const char* function,
+                   std::initializer_list<const char*> own) {
   for (const auto& item : kwargs) {
     const std::string name = py::str(item.first).cast<std::string>();
     bool known = false;
     for (const SceneKeyword& k : kSceneKeywords) known = known || name == k.keyword;
-    for (const char* k : kKnownKeywords) known = known || name == k;
-    if (!known) throw std::invalid_argument("simulate() got an unknown keyword '" + name + "'");
+    for (const char* k : kSceneOptionKeywords) known = known || name == k;
+    for (const char* k : own) known = known || name == k;
+    if (!known) {
+      throw std::invalid_argument(std::string(function) + "() got an unknown keyword '" + name + "'");
+    }
   }
+}
 
-  report::SimulationReport report;
-  Scene& scene = report.scene;
+/// What the scene keywords describe: the scene (Scene{} with the keywords applied), the
+/// catalog material, the limits and the safety factor.
+struct SceneInputs {
+  Scene scene;
+  std::optional<std::string> covering_material;  ///< the catalog name, if material= was given
+  bool covering_poisson_assumed = false;         ///< the material's ν is unknown: 0.25 used
+  InjuryLimits limits;
+  double safety_factor = 1.0;  ///< [-], in [1, 100]
+};
+
+/// Reads the scene keywords (the scene itself is checked later, by ImpactModel::FromScene).
+/// @throws std::invalid_argument naming the keyword, the value and what is allowed.
+SceneInputs ReadSceneInputs(const py::kwargs& kwargs) {
+  const auto get = [&](const char* name) { return Get(kwargs, name); };
+  SceneInputs inputs;
+  Scene& scene = inputs.scene;
   if (const auto name = get("material")) {
     for (const char* k : {"covering_modulus", "covering_poisson"}) {
       if (get(k)) {
@@ -182,8 +208,8 @@ py::dict Simulate(const py::kwargs& kwargs) {
     const materials::Material& m = FindMaterial(py::str(*name).cast<std::string>());
     scene.covering.youngs_modulus_Pa = m.youngs_modulus_Pa;
     scene.covering.poisson_ratio = m.poisson_ratio.value_or(materials::kDefaultPoissonRatio);
-    report.covering_material = m.name;
-    report.covering_poisson_assumed = !m.poisson_ratio.has_value();
+    inputs.covering_material = m.name;
+    inputs.covering_poisson_assumed = !m.poisson_ratio.has_value();
   }
   for (const SceneKeyword& k : kSceneKeywords) {
     if (const auto value = get(k.keyword)) k.value(scene) = ReadQuantity(*value, *k.spec, k.keyword);
@@ -199,7 +225,7 @@ py::dict Simulate(const py::kwargs& kwargs) {
     }
   }
 
-  InjuryLimits limits;
+  InjuryLimits& limits = inputs.limits;
   if (const auto v = get("laceration_limit")) {
     limits.laceration_tensile_stress_Pa = ReadQuantity(*v, specs::kLacerationLimit, "laceration_limit");
     if (!(limits.laceration_tensile_stress_Pa > 0.0)) {
@@ -213,11 +239,25 @@ py::dict Simulate(const py::kwargs& kwargs) {
     }
   }
   if (const auto v = get("safety_factor")) {
-    report.safety_factor = ReadQuantity(*v, specs::kSafetyFactor, "safety_factor");
-    if (!(report.safety_factor >= 1.0 && report.safety_factor <= kMaxSafetyFactor)) {
+    inputs.safety_factor = ReadQuantity(*v, specs::kSafetyFactor, "safety_factor");
+    if (!(inputs.safety_factor >= 1.0 && inputs.safety_factor <= kMaxSafetyFactor)) {
       throw std::invalid_argument("safety_factor must be in [1, 100] (got " + Repr(*v) + ")");
     }
   }
+  return inputs;
+}
+
+/// covopt.simulate(**scene, ...): see python/covopt/__init__.py for the documentation.
+py::dict Simulate(const py::kwargs& kwargs) {
+  const auto get = [&](const char* name) { return Get(kwargs, name); };
+  CheckKeywords(kwargs, "simulate", {"method", "rtol", "atol", "max_steps", "history"});
+  SceneInputs inputs = ReadSceneInputs(kwargs);
+  report::SimulationReport report;
+  report.scene = inputs.scene;
+  report.covering_material = inputs.covering_material;
+  report.covering_poisson_assumed = inputs.covering_poisson_assumed;
+  report.safety_factor = inputs.safety_factor;
+  const InjuryLimits& limits = inputs.limits;
 
   // The path: exact unless a history is asked for or a time-path method is named.
   const bool history = get("history") && py::bool_(*get("history")).cast<bool>();
@@ -271,7 +311,7 @@ py::dict Simulate(const py::kwargs& kwargs) {
 
   std::optional<ImpactModel> model;
   try {
-    model.emplace(ImpactModel::FromScene(scene));
+    model.emplace(ImpactModel::FromScene(report.scene));
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(AttributeError(e.what(), kwargs));
   }
@@ -318,6 +358,142 @@ py::dict Simulate(const py::kwargs& kwargs) {
   return result;
 }
 
+/// One sweep axis from Python: (quantity, values); the quantity is a CLI scene flag without
+/// dashes, underscores allowed ("robot_mass" = "robot-mass"); values are SI numbers, or
+/// "fixed"/"flat" for +inf.
+SweepAxis ReadAxis(const py::handle& axis, const char* keyword) {
+  const auto fail = [&](const std::string& problem) {
+    throw std::invalid_argument(std::string(keyword) + ": " + problem + " (got " + Repr(axis) + ")");
+  };
+  if (!py::isinstance<py::sequence>(axis) || py::isinstance<py::str>(axis) || py::len(axis) != 2) {
+    fail("expected (quantity, values), e.g. (\"speed\", [0.5, 1.0, 2.0])");
+  }
+  const py::sequence pair = py::reinterpret_borrow<py::sequence>(axis);
+  if (!py::isinstance<py::str>(pair[0])) fail("the quantity must be a name such as \"speed\"");
+  SweepAxis result;
+  result.quantity = pair[0].cast<std::string>();
+  for (char& c : result.quantity) c = c == '_' ? '-' : c;
+  py::object values = pair[1];
+  if (py::isinstance<py::str>(values)) fail("the values must be a sequence of numbers");
+  if (!py::isinstance<py::iterable>(values)) fail("the values must be a sequence of numbers");
+  for (const py::handle value : values) {
+    if (py::isinstance<py::str>(value)) {
+      const std::string word = value.cast<std::string>();
+      if (word != "fixed" && word != "flat") fail("a value is a number in SI, 'fixed' or 'flat' (not '" + word + "')");
+      result.values.push_back(kFixed);
+    } else if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
+               py::hasattr(value, "__float__")) {
+      result.values.push_back(py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>());
+    } else {
+      fail("a value is a number in SI, 'fixed' or 'flat' (not " + Repr(value) + ")");
+    }
+  }
+  return result;
+}
+
+/// covopt.sweep(x, y=None, **scene, threads=None): see python/covopt/__init__.py.
+py::dict SweepGrid(const py::object& x, const py::object& y, const py::kwargs& kwargs) {
+  CheckKeywords(kwargs, "sweep", {"threads"});
+  const SceneInputs inputs = ReadSceneInputs(kwargs);
+  SweepSpec spec;
+  spec.scene = inputs.scene;
+  spec.limits = inputs.limits;
+  spec.safety_factor = inputs.safety_factor;
+  spec.x = ReadAxis(x, "x");
+  if (!y.is_none()) spec.y = ReadAxis(y, "y");
+  SweepOptions options;
+  if (const auto threads = Get(kwargs, "threads")) {
+    if (!py::isinstance<py::int_>(*threads) || threads->cast<long long>() < 0) {
+      throw std::invalid_argument("threads: expected an integer >= 0, 0 = all cores (got " +
+                                  Repr(*threads) + ")");
+    }
+    options.threads = threads->cast<unsigned>();
+  }
+
+  // The arrays, a[i, j] at x[i], y[j]; invalid points are NaN (numbers) or False (flags).
+  const std::size_t nx = spec.x.values.size();
+  const std::size_t ny = spec.y ? spec.y->values.size() : 0;
+  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(nx)};
+  if (spec.y) shape.push_back(static_cast<py::ssize_t>(ny));
+  struct Column {
+    const char* name;
+    double (*number)(const SweepRow&);  ///< for a float column
+    bool (*flag)(const SweepRow&);      ///< for a bool column
+  };
+  // clang-format off
+  static const Column kColumns[] = {
+    {"max_penetration_m", [](const SweepRow& r) { return r.peaks.max_penetration_m; }, nullptr},
+    {"peak_force_N", [](const SweepRow& r) { return r.peaks.peak_force_N; }, nullptr},
+    {"contact_duration_s", [](const SweepRow& r) { return r.contact_duration_s.value_or(std::numeric_limits<double>::quiet_NaN()); }, nullptr},
+    {"time_of_max_compression_s", [](const SweepRow& r) { return r.time_of_max_compression_s.value_or(std::numeric_limits<double>::quiet_NaN()); }, nullptr},
+    {"max_compressive_stress_Pa", [](const SweepRow& r) { return r.peaks.max_compressive_stress_Pa; }, nullptr},
+    {"max_tensile_stress_Pa", [](const SweepRow& r) { return r.peaks.max_tensile_stress_Pa; }, nullptr},
+    {"max_energy_density_J_per_m2", [](const SweepRow& r) { return r.peaks.max_energy_density_J_per_m2; }, nullptr},
+    {"rebound_speed_m_per_s", [](const SweepRow& r) { return r.rebound_speed_m_per_s; }, nullptr},
+    {"phase_at_max", [](const SweepRow& r) { return static_cast<double>(PhaseNumber(r.peaks.phase_at_max)); }, nullptr},
+    {"laceration_ratio", [](const SweepRow& r) { return r.assessment.laceration.ratio; }, nullptr},
+    {"contusion_ratio", [](const SweepRow& r) { return r.assessment.contusion.ratio; }, nullptr},
+    {"worst_ratio", [](const SweepRow& r) { return r.worst_ratio; }, nullptr},
+    {"compression_ratio", [](const SweepRow& r) { return r.compression_ratio; }, nullptr},
+    {"valid", nullptr, [](const SweepRow& r) { return r.valid; }},
+    {"scalp_fully_compressed", nullptr, [](const SweepRow& r) { return r.valid && r.peaks.scalp_fully_compressed; }},
+    {"fully_compressed", nullptr, [](const SweepRow& r) { return r.valid && r.peaks.fully_compressed; }},
+    {"safe", nullptr, [](const SweepRow& r) { return r.valid && r.assessment.safe(); }},
+    {"admissible", nullptr, [](const SweepRow& r) { return r.valid && r.admissible; }},
+  };
+  // clang-format on
+  py::dict arrays;
+  std::vector<double*> numbers;
+  std::vector<bool*> flags;
+  for (const Column& column : kColumns) {
+    if (column.number) {
+      py::array_t<double> array(shape);
+      numbers.push_back(array.mutable_data());
+      arrays[column.name] = array;
+    } else {
+      py::array_t<bool> array(shape);
+      flags.push_back(array.mutable_data());
+      arrays[column.name] = array;
+    }
+  }
+  SweepResult result;
+  {
+    py::gil_scoped_release release;  // the consumer writes into the arrays' buffers only
+    result = Sweep(spec, options, [&](std::span<const SweepRow> rows) {
+      for (const SweepRow& row : rows) {
+        std::size_t n = 0, f = 0;
+        for (const Column& column : kColumns) {
+          if (column.number) {
+            numbers[n++][row.index] =
+                row.valid ? column.number(row) : std::numeric_limits<double>::quiet_NaN();
+          } else {
+            flags[f++][row.index] = column.flag(row);
+          }
+        }
+      }
+    });
+  }
+  if (!result.ok()) {
+    py::object error_type = py::module_::import("covopt._errors").attr("ComputationError");
+    py::object error = error_type("no point of the sweep is a valid scene: " + result.message,
+                                  std::string(ToString(result.status)));
+    PyErr_SetObject(error_type.ptr(), error.ptr());
+    throw py::error_already_set();
+  }
+  py::dict out;
+  out["x"] = py::array_t<double>(static_cast<py::ssize_t>(nx), spec.x.values.data());
+  out["x_quantity"] = spec.x.quantity;
+  if (spec.y) {
+    out["y"] = py::array_t<double>(static_cast<py::ssize_t>(ny), spec.y->values.data());
+    out["y_quantity"] = spec.y->quantity;
+  }
+  for (const auto& item : arrays) out[item.first] = item.second;
+  out["status"] = std::string(ToString(result.status));
+  out["message"] = result.message;
+  out["brief_report"] = result.BriefReport();
+  return out;
+}
+
 py::list Materials() {
   std::vector<const materials::Material*> rows;
   for (const materials::Material& m : BuiltInCatalog().materials()) rows.push_back(&m);
@@ -335,6 +511,7 @@ PYBIND11_MODULE(_covopt, m) {
   m.doc() = "covopt's C++ library (use the covopt package, which documents it)";
   // std::invalid_argument already becomes ValueError; say so for the reader.
   m.def("simulate", &covopt::python::Simulate);
+  m.def("sweep", &covopt::python::SweepGrid, py::arg("x"), py::arg("y") = py::none());
   m.def("materials", &covopt::python::Materials);
   m.def("material", &covopt::python::Material, py::arg("name"));
 }
