@@ -18,7 +18,7 @@ Long calls release the GIL.
 from . import _covopt
 from ._errors import ComputationError
 
-__all__ = ["simulate", "sweep", "materials", "material", "ComputationError"]
+__all__ = ["simulate", "sweep", "optimize", "materials", "material", "ComputationError"]
 
 
 def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
@@ -82,6 +82,34 @@ def sweep(x, y=None, *, robot_mass=None, speed=None, robot_radius=None, robot_mo
     arguments = {name: value for name, value in locals().items()
                  if value is not None and name not in ("x", "y")}
     return _covopt.sweep(x, y, **arguments)
+
+
+def optimize(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
+             robot_poisson=None, head_mass=None, head_radius=None, scalp_modulus=None,
+             scalp_poisson=None, scalp_thickness=None, skull_modulus=None, skull_poisson=None,
+             thresholds=None, laceration_limit=None, contusion_limit=None, safety_factor=None,
+             materials=None, families=None, catalog=None, no_builtin=False, thickness=None,
+             max_thickness=None, min_modulus=None, max_modulus=None, covering_poisson=None,
+             thickness_step=None, allow_full_compression=False, global_algorithm=None,
+             seed=None, threads=None):
+    """Which covering, how thick, with what margin, as ``covopt optimize --json``.
+
+    The scene keywords are simulate's, without the covering (it is what is designed).
+    Problem (a), the default: the thinnest admissible covering (ratios <= 1/safety_factor
+    and, unless allow_full_compression, not fully compressed at the peak), continuous and
+    for every candidate material. Problem (b), with thickness [m]: the least injury at that
+    thickness. materials: catalog names (default: every material), families: catalog
+    families, catalog: TOML catalog files added to the built-in one (no_builtin: only
+    them). Design space: max_thickness [m] (0.05), min_modulus and max_modulus [Pa]
+    (0.1e6, 1e9), covering_poisson [-] of the continuous design (0.25), thickness_step [m]
+    the recommendation is rounded up to (0.5e-3). Solver: global_algorithm "direct-l"
+    (default), "isres" or "mlsl"; seed; threads of the catalog snap (1..256).
+
+    Returns the dict of ``covopt optimize --json`` (without the CLI's warnings about its own
+    input). Raises ValueError on bad input, ComputationError when the search fails.
+    """
+    arguments = {name: value for name, value in locals().items() if value is not None}
+    return _covopt.optimize(**arguments)
 
 
 def materials():

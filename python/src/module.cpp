@@ -35,6 +35,8 @@
 #include "covopt/core/time_integration.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/materials/material.hpp"
+#include "covopt/optim/design.hpp"
+#include "covopt/report/design_json.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
 
@@ -494,6 +496,122 @@ py::dict SweepGrid(const py::object& x, const py::object& y, const py::kwargs& k
   return out;
 }
 
+/// A list of strings from a str or a sequence of them.
+std::vector<std::string> ReadNames(const py::handle& value, const char* keyword) {
+  std::vector<std::string> names;
+  if (py::isinstance<py::str>(value)) return {value.cast<std::string>()};
+  if (py::isinstance<py::iterable>(value)) {
+    for (const py::handle item : value) {
+      if (!py::isinstance<py::str>(item)) break;
+      names.push_back(item.cast<std::string>());
+    }
+    if (names.size() == py::len(value)) return names;
+  }
+  throw std::invalid_argument(std::string(keyword) + ": expected a name or a list of names (got " +
+                              Repr(value) + ")");
+}
+
+/// covopt.optimize(**scene, ...): see python/covopt/__init__.py.
+py::dict Optimize(const py::kwargs& kwargs) {
+  const auto get = [&](const char* name) { return Get(kwargs, name); };
+  CheckKeywords(kwargs, "optimize",
+                {"materials", "families", "catalog", "no_builtin", "thickness", "max_thickness",
+                 "min_modulus", "max_modulus", "thickness_step", "allow_full_compression",
+                 "global_algorithm", "seed", "threads"});
+  for (const char* k : {"covering_modulus", "covering_thickness", "material"}) {
+    if (get(k)) {
+      throw std::invalid_argument(std::string(k) +
+                                  ": the covering is what optimize designs; give thickness= for the "
+                                  "least injury at a thickness, materials= to choose candidates");
+    }
+  }
+  const SceneInputs inputs = ReadSceneInputs(kwargs);
+  optim::DesignRequest request;
+  request.scene = inputs.scene;
+  optim::DesignOptions& d = request.options;
+  d.limits = inputs.limits;
+  d.safety_factor = inputs.safety_factor;
+  const auto read = [&](const char* keyword, const QuantitySpec& spec, double& into) {
+    if (const auto v = get(keyword)) into = ReadQuantity(*v, spec, keyword);
+  };
+  read("max_thickness", specs::kCoveringThickness, d.space.max_thickness_m);
+  read("min_modulus", specs::kCoveringModulus, d.space.min_modulus_Pa);
+  read("max_modulus", specs::kCoveringModulus, d.space.max_modulus_Pa);
+  read("covering_poisson", specs::kPoissonRatio, d.covering_poisson_ratio);
+  read("thickness_step", specs::kThicknessStep, d.thickness_step_m);
+  const auto require = [](bool ok, const std::string& message) {
+    if (!ok) throw std::invalid_argument(message);
+  };
+  const auto shown = [&](const char* keyword) { return get(keyword) ? Repr(*get(keyword)) : std::string(); };
+  require(d.space.max_thickness_m > d.space.min_thickness_m && d.space.max_thickness_m <= 1.0,
+          "max_thickness must be in (0.1 mm, 1 m] (got " + shown("max_thickness") + ")");
+  require(d.space.min_modulus_Pa > 0 && d.space.max_modulus_Pa > d.space.min_modulus_Pa &&
+              d.space.max_modulus_Pa <= 1e13,
+          "min_modulus/max_modulus must satisfy 0 < min < max <= 1e13 Pa (got " +
+              std::to_string(d.space.min_modulus_Pa) + " Pa, " + std::to_string(d.space.max_modulus_Pa) + " Pa)");
+  require(d.covering_poisson_ratio > -1.0 && d.covering_poisson_ratio <= 0.5,
+          "covering_poisson must be in (-1, 0.5] (got " + shown("covering_poisson") + ")");
+  require(d.thickness_step_m >= 0.0 && d.thickness_step_m <= 0.01,
+          "thickness_step must be in [0, 10 mm] (got " + shown("thickness_step") + ")");
+  if (const auto v = get("thickness")) {
+    request.thickness_m = ReadQuantity(*v, specs::kCoveringThickness, "thickness");
+    require(*request.thickness_m > 0.0 && *request.thickness_m <= 1.0,
+            "thickness must be in (0, 1 m] (got " + Repr(*v) + "); for no covering use "
+            "simulate(covering_thickness=0)");
+  }
+  if (const auto v = get("allow_full_compression")) d.allow_full_compression = py::bool_(*v).cast<bool>();
+  if (const auto v = get("global_algorithm")) {
+    const std::string g = py::str(*v).cast<std::string>();
+    if (g == "direct-l") d.global_algorithm = optim::NloptAlgorithm::kDirectL;
+    else if (g == "isres") d.global_algorithm = optim::NloptAlgorithm::kIsres;
+    else if (g == "mlsl") d.global_algorithm = optim::NloptAlgorithm::kMlsl;
+    else throw std::invalid_argument("global_algorithm: expected direct-l, isres or mlsl (got '" + g + "')");
+  }
+  const auto whole = [&](const char* keyword, long long low, long long high) {
+    const py::object v = *get(keyword);
+    if (!py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v) || v.cast<long double>() < low ||
+        v.cast<long double>() > high) {
+      throw std::invalid_argument(std::string(keyword) + " must be a whole number in [" +
+                                  std::to_string(low) + ", " + std::to_string(high) + "] (got " + Repr(v) + ")");
+    }
+    return v.cast<long long>();
+  };
+  if (get("seed")) d.seed = static_cast<unsigned long>(whole("seed", 0, std::numeric_limits<long long>::max()));
+  if (get("threads")) d.threads = static_cast<int>(whole("threads", 1, 256));
+
+  // The candidates: the built-in catalog and the catalog files (or only those), filtered.
+  const bool no_builtin = get("no_builtin") && py::bool_(*get("no_builtin")).cast<bool>();
+  const std::vector<std::string> files = get("catalog") ? ReadNames(*get("catalog"), "catalog") : std::vector<std::string>{};
+  if (no_builtin && files.empty()) throw std::invalid_argument("no_builtin leaves no catalog; add catalog=FILE");
+  materials::Catalog catalog = no_builtin ? materials::Catalog() : BuiltInCatalog();
+  try {
+    for (const std::string& file : files) catalog.Add(materials::Catalog::FromTomlFile(file));
+  } catch (const materials::CatalogError& e) {
+    throw std::invalid_argument(std::string("catalog: ") + e.what());
+  }
+  const std::vector<std::string> names = get("materials") ? ReadNames(*get("materials"), "materials") : std::vector<std::string>{};
+  const std::vector<std::string> families = get("families") ? ReadNames(*get("families"), "families") : std::vector<std::string>{};
+  try {
+    request.materials = optim::SelectCandidates(catalog, names, families);
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
+  }
+
+  optim::DesignResult result;
+  {
+    py::gil_scoped_release release;
+    result = optim::Design(request);  // throws invalid_argument naming the field
+  }
+  if (!result.ok()) {
+    py::object error_type = py::module_::import("covopt._errors").attr("ComputationError");
+    py::object error = error_type(result.message, std::string(optim::ToString(result.status)));
+    PyErr_SetObject(error_type.ptr(), error.ptr());
+    throw py::error_already_set();
+  }
+  return JsonLoads(report::DesignJson(request, result, {}, -1));
+}
+
 py::list Materials() {
   std::vector<const materials::Material*> rows;
   for (const materials::Material& m : BuiltInCatalog().materials()) rows.push_back(&m);
@@ -512,6 +630,7 @@ PYBIND11_MODULE(_covopt, m) {
   // std::invalid_argument already becomes ValueError; say so for the reader.
   m.def("simulate", &covopt::python::Simulate);
   m.def("sweep", &covopt::python::SweepGrid, py::arg("x"), py::arg("y") = py::none());
+  m.def("optimize", &covopt::python::Optimize);
   m.def("materials", &covopt::python::Materials);
   m.def("material", &covopt::python::Material, py::arg("name"));
 }
