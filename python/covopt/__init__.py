@@ -18,6 +18,8 @@ Long calls release the GIL.
 from . import _covopt
 from ._errors import ComputationError
 
+ComputationError.__module__ = __name__  # shown as covopt.ComputationError
+
 __all__ = ["simulate", "sweep", "optimize", "materials", "material", "ComputationError"]
 
 
