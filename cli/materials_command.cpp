@@ -238,7 +238,7 @@ materials::Catalog LoadCatalog(const CatalogOptions& options) {
 }
 
 std::string NoSuchMaterial(const materials::Catalog& catalog, std::string_view name) {
-  return report::NoSuchMaterialMessage(catalog, name);
+  return catalog.MissingMaterialMessage(name);
 }
 
 materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,

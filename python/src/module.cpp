@@ -137,7 +137,7 @@ const materials::Catalog& BuiltInCatalog() { return materials::Catalog::BuiltIn(
 
 const materials::Material& FindMaterial(std::string_view name) {
   const materials::Material* m = BuiltInCatalog().Find(name);
-  if (m == nullptr) throw std::invalid_argument(report::NoSuchMaterialMessage(BuiltInCatalog(), name));
+  if (m == nullptr) throw std::invalid_argument(BuiltInCatalog().MissingMaterialMessage(name));
   return *m;
 }
 

@@ -24,16 +24,6 @@ Json MaterialObject(const materials::Material& m) {
   return j;
 }
 
-/// 'a', 'b' or 'c'
-std::string QuotedAlternatives(const std::vector<std::string>& words) {
-  std::string joined;
-  for (std::size_t i = 0; i < words.size(); ++i) {
-    if (i > 0) joined += (i + 1 == words.size()) ? " or " : ", ";
-    joined += "'" + words[i] + "'";
-  }
-  return joined;
-}
-
 }  // namespace
 
 std::string MaterialJson(const materials::Material& material, int indent) {
@@ -44,16 +34,6 @@ std::string MaterialsJson(std::span<const materials::Material* const> materials,
   Json array = Json::array();
   for (const materials::Material* m : materials) array.push_back(MaterialObject(*m));
   return array.dump(indent);
-}
-
-std::string NoSuchMaterialMessage(const materials::Catalog& catalog, std::string_view name) {
-  const std::vector<std::string> suggestions = catalog.Suggest(name);
-  if (suggestions.empty()) {
-    return "no material '" + std::string(name) +
-           "' in the catalog; run 'covopt materials list' for the names";
-  }
-  return "no material '" + std::string(name) + "' in the catalog; did you mean " +
-         QuotedAlternatives(suggestions) + "?";
 }
 
 }  // namespace covopt::report

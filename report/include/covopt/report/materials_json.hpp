@@ -1,7 +1,7 @@
 #pragma once
 /// @file materials_json.hpp
 /// Catalog entries as JSON text (`covopt materials list|show --json`, `covopt.materials()`)
-/// and the message for a name the catalog does not hold.
+/// (the message for a name the catalog does not hold is materials::Catalog::MissingMaterialMessage).
 
 #include <span>
 #include <string>
@@ -19,9 +19,5 @@ std::string MaterialJson(const materials::Material& material, int indent = 2);
 
 /// Catalog entries as a JSON array of MaterialJson objects, in the given order.
 std::string MaterialsJson(std::span<const materials::Material* const> materials, int indent = 2);
-
-/// "no material 'X' in the catalog; did you mean 'Y' or 'Z'?" (or "...; run 'covopt
-/// materials list' for the names" when the catalog suggests nothing close).
-std::string NoSuchMaterialMessage(const materials::Catalog& catalog, std::string_view name);
 
 }  // namespace covopt::report
