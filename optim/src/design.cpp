@@ -185,26 +185,21 @@ DesignResult Design(const DesignRequest& request) {
   DesignResult r;
   r.criterion = request.options.criterion();
   r.thickness_m = request.thickness_m;
+  // Both problems answer with the same fields.
+  auto take = [&r](auto&& answer) {
+    r.verdict = answer.verdict;
+    r.bare_robot = answer.bare_robot;
+    r.continuous = std::move(answer.continuous);
+    r.candidates = std::move(answer.candidates);
+    r.recommendation = answer.recommendation;
+    r.evaluations = answer.evaluations;
+    r.seconds = answer.seconds;
+  };
   if (request.thickness_m) {
     r.problem = DesignProblem::kLeastInjuryAtThickness;
-    LeastInjuryAtThickness b =
-        MinimizeInjuryAtThickness(request.scene, *request.thickness_m, request.materials, request.options);
-    r.verdict = b.verdict;
-    r.bare_robot = b.bare_robot;
-    r.continuous = std::move(b.continuous);
-    r.candidates = std::move(b.candidates);
-    r.recommendation = b.recommendation;
-    r.evaluations = b.evaluations;
-    r.seconds = b.seconds;
+    take(MinimizeInjuryAtThickness(request.scene, *request.thickness_m, request.materials, request.options));
   } else {
-    ThinnestSafeCovering a = FindThinnestSafeCovering(request.scene, request.materials, request.options);
-    r.verdict = a.verdict;
-    r.bare_robot = a.bare_robot;
-    r.continuous = std::move(a.continuous);
-    r.candidates = std::move(a.candidates);
-    r.recommendation = a.recommendation;
-    r.evaluations = a.evaluations;
-    r.seconds = a.seconds;
+    take(FindThinnestSafeCovering(request.scene, request.materials, request.options));
   }
   r.message = Headline(r, request.options.space.max_thickness_m);
   r.warnings = Warnings(request, r);
