@@ -106,6 +106,7 @@ double ExactContactDuration(const ImpactModel& model, const ImpactPeaks& peaks) 
     const double upper = (j == top) ? delta_max : seg.end_m;  // δ at the piece's s_lower
     const double s_upper = std::sqrt(delta_max - seg.start_m);
     const double width = s_upper - s_lower;
+    const ImpactModel::EnergyGapBelow energy_below_upper(model, j, upper);
     double piece = 0.0;
     for (int q = 0; q < kQuadratureOrder; ++q) {
       const double u = rule.node[q];
@@ -114,12 +115,11 @@ double ExactContactDuration(const ImpactModel& model, const ImpactPeaks& peaks) 
       const double s = s_lower + width * phi;
       // Gap below `upper`: δ_max - s² = upper - gap.
       const double gap = (s - s_lower) * (s + s_lower);
-      const double energy_gap =
-          energy_above + model.EnergyDifferenceInSegment(j, upper, gap);
+      const double energy_gap = energy_above + energy_below_upper(gap);
       piece += rule.weight[q] * dphi * 2.0 * s / std::sqrt(two_over_mass * energy_gap);
     }
     half_duration += width * piece;
-    energy_above += model.EnergyDifferenceInSegment(j, upper, upper - seg.start_m);
+    energy_above += energy_below_upper(upper - seg.start_m);
     s_lower = s_upper;
   }
   return 2.0 * half_duration;

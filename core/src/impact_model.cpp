@@ -253,15 +253,27 @@ ContactState ImpactModel::StateAt(double penetration_m) const noexcept {
 
 double ImpactModel::EnergyDifferenceInSegment(std::size_t i, double upper_penetration_m,
                                               double gap_m) const noexcept {
-  const ForceLawSegment& seg = segments_[i];
-  const double p = seg.exponent + 1.0;
-  const double x_b = upper_penetration_m - seg.origin_m;
+  return EnergyGapBelow(*this, i, upper_penetration_m)(gap_m);
+}
+
+ImpactModel::EnergyGapBelow::EnergyGapBelow(const ImpactModel& model, std::size_t i,
+                                            double upper_penetration_m) noexcept {
+  const ForceLawSegment& seg = model.segments_[i];
+  force_offset_N_ = seg.force_offset_N;
+  stiffness_ = seg.stiffness;
+  power_ = seg.exponent + 1.0;
+  upper_local_m_ = upper_penetration_m - seg.origin_m;
+  upper_local_pow_ = upper_local_m_ > 0.0 ? std::pow(upper_local_m_, power_) : 0.0;
+}
+
+double ImpactModel::EnergyGapBelow::operator()(double gap_m) const noexcept {
+  const double x_b = upper_local_m_;
   if (!(x_b > 0.0) || !(gap_m > 0.0)) return 0.0;
   // x_b^p - x_a^p = -x_b^p expm1(p log1p(-d/x_b)), exact in relative terms for small d.
   const double ratio = gap_m / x_b;
   const double power_difference =
-      ratio >= 1.0 ? std::pow(x_b, p) : -std::pow(x_b, p) * std::expm1(p * std::log1p(-ratio));
-  return seg.force_offset_N * gap_m + seg.stiffness * power_difference / p;
+      ratio >= 1.0 ? upper_local_pow_ : -upper_local_pow_ * std::expm1(power_ * std::log1p(-ratio));
+  return force_offset_N_ * gap_m + stiffness_ * power_difference / power_;
 }
 
 }  // namespace covopt
