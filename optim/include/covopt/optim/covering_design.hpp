@@ -141,6 +141,7 @@ struct CandidateMaterial {
 
 /// Options of the design searches. Defaults: the bounds, DIRECT-L then Ipopt.
 struct DesignOptions {
+  /// The continuous search box. Default: E_c 0.1 MPa .. 1 GPa, b_c 0.1 .. 50 mm.
   DesignSpace space;
   /// false (default): a covering fully compressed at the peak is not admissible, however low
   /// its ratios (criterion "no-full-compression"). true: the paper's criterion, safety only.
@@ -148,15 +149,18 @@ struct DesignOptions {
   DesignCriterion criterion() const noexcept {
     return allow_full_compression ? DesignCriterion::kPaper : DesignCriterion::kNoFullCompression;
   }
-  /// Ratios must be <= 1/safety_factor (>= 1).
+  /// Ratios must be <= 1/safety_factor, in [1, 100] [-]. Default: 1.
   double safety_factor = 1.0;
-  /// ν_c of the continuous design (docs/model.md §1: 0.25 where none is given).
+  /// ν_c of the continuous design [-] (docs/model.md §1: 0.25 where none is given).
   double covering_poisson_ratio = 0.25;
+  /// The laceration [Pa] and contusion [J/m²] limits. Default: 1 MPa and 2.52 J/cm².
   InjuryLimits limits;
   /// Global stage. DIRECT-L by default: deterministic, and on this 2-D box it finds the
   /// basin of the thinnest safe design within ~1000 evaluations (see tests/optim).
   NloptAlgorithm global_algorithm = NloptAlgorithm::kDirectL;
+  /// Evaluation budget of the global stage, >= 10. Default: 1000.
   long global_evaluations = 1000;
+  /// Seed of the stochastic global algorithms (ISRES, MLSL). Default: 20110509.
   unsigned long seed = 20110509;
   /// Where the global stage starts (ISRES, MLSL use it; DIRECT-L samples the box from its
   /// centre regardless). Empty: the centre of the design space.
@@ -165,22 +169,23 @@ struct DesignOptions {
   /// range) and points per decade of the uniform scan in log10 E_c at each b_c. An
   /// admissible window of b_c narrower than the grid spacing before the first admissible
   /// grid point, or a basin in log10 E_c narrower than the scan spacing, is what this stage
-  /// could miss; the brute-force tests check that the defaults do not.
+  /// could miss; the brute-force tests check that the defaults do not. Defaults: 120 and 20.
   int bracket_thickness_points = 120;
   int modulus_points_per_decade = 20;
-  /// Local stage: Ipopt from the bracketed result, with analytic gradients.
+  /// Local stage: Ipopt from the bracketed result, with analytic gradients. Default: on.
   bool local_polish = true;
+  /// Ipopt's settings. Default: IpoptOptions{} (tol 1e-10, no bound relaxation).
   IpoptOptions ipopt;
   /// Catalog snap: the scan for the first safe thickness uses this many points over the
-  /// thickness range, then bisects to thickness_resolution_m.
+  /// thickness range, then bisects to thickness_resolution_m [m]. Defaults: 250, 1 µm.
   int thickness_scan_points = 250;
   double thickness_resolution_m = 1e-6;
   /// Threads of the catalog snap (each material is independent), in [1, 256]. The outcomes
   /// are assembled in the materials' order before ranking, so the result is bit-identical
-  /// for any thread count.
+  /// for any thread count. Default: 1.
   int threads = 1;
   /// The recommended thickness is rounded up to a multiple of this [m] (0 = not rounded),
-  /// as sold; the rounded thickness is checked admissible again.
+  /// as sold; the rounded thickness is checked admissible again. Default: 0.5 mm.
   double thickness_step_m = 0.5e-3;
 };
 
