@@ -426,23 +426,26 @@ CandidateOutcome SnapMaterial(const CoveringOracle& oracle, const CandidateMater
     }
   }
   outcome.min_safe_thickness_m = admissible;
-  double recommended = admissible;
+  std::optional<DesignScore> at_stock;  // the admissible stock thickness's score, once found
   if (o.thickness_step_m > 0.0) {
     // The admissible set need not be an interval: step up until the stock thickness is
     // admissible too.
     double steps = std::ceil(admissible / o.thickness_step_m - 1e-9);
-    double stock = StockThickness(steps, o.thickness_step_m);
-    while (stock <= space.max_thickness_m * (1 + 1e-12) && !admissible_at(stock)) {
-      stock = StockThickness(++steps, o.thickness_step_m);
-    }
-    if (stock > space.max_thickness_m * (1 + 1e-12)) {
-      outcome.stock_thickness_beyond_max_m = stock;  // keep the exact thickness instead
-    } else {
-      recommended = stock;
+    for (double stock = StockThickness(steps, o.thickness_step_m);;
+         stock = StockThickness(++steps, o.thickness_step_m)) {
+      if (stock > space.max_thickness_m * (1 + 1e-12)) {
+        outcome.stock_thickness_beyond_max_m = stock;  // keep the exact thickness instead
+        break;
+      }
+      DesignScore score = score_at(stock);
+      if (score.admissible(sf, criterion)) {
+        at_stock = score;
+        break;
+      }
     }
   }
-  outcome.recommended_thickness_m = recommended;
-  outcome.score = score_at(recommended);
+  outcome.score = at_stock ? *at_stock : score_at(admissible);
+  outcome.recommended_thickness_m = outcome.score.design.thickness_m;
   outcome.safe = outcome.score.admissible(sf, criterion);
   outcome.margin = outcome.score.margin(sf);
   return outcome;

@@ -3,7 +3,6 @@
 #include "covopt/optim/design.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdarg>
 #include <cstdio>
 #include <stdexcept>
@@ -28,18 +27,6 @@ std::string Format(const char* format, ...) {
 
 std::string Mm(double metres) { return Format("%.2f mm", metres * 1e3); }
 std::string MPa(double pascals) { return Format("%.3g MPa", pascals * 1e-6); }
-
-bool EqualIgnoringCase(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-         });
-}
-
-bool Usable(const SolverReport& r) {
-  return r.termination == Termination::kConverged || r.termination == Termination::kEvaluationLimit ||
-         r.termination == Termination::kTimeLimit || r.termination == Termination::kRoundoffLimited ||
-         r.termination == Termination::kAcceptable;
-}
 
 /// The sentence that answers the request.
 std::string Headline(const DesignResult& r, double max_thickness) {
@@ -83,7 +70,7 @@ std::string Headline(const DesignResult& r, double max_thickness) {
 std::vector<std::string> Warnings(const DesignRequest& request, const DesignResult& r) {
   std::vector<std::string> warnings;
   const SolverReport& global = r.continuous.global;
-  if (!global.backend.empty() && !Usable(global)) {
+  if (!global.backend.empty() && !EndedNormally(global.termination)) {
     // Not an error: stage 1 only brackets; the nested search answers on its own.
     warnings.push_back(Format("the global stage failed: %s (%s code %d %s); its point was not used, the bracketed "
                               "search answered alone",
@@ -160,17 +147,23 @@ std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalo
     for (const materials::Material& m : catalog.materials()) chosen.push_back(&m);
   }
   if (!families.empty()) {
-    const std::vector<std::string> known = catalog.families();
+    // The catalog's own filter matches families ignoring case; a family it matches nothing
+    // of is unknown.
+    auto of_families = [&catalog](std::vector<std::string> wanted) {
+      materials::MaterialFilter filter;
+      filter.families = std::move(wanted);
+      return catalog.Filter(filter);
+    };
     for (const std::string& family : families) {
-      if (std::none_of(known.begin(), known.end(), [&](const std::string& k) { return EqualIgnoringCase(k, family); })) {
+      if (of_families({family}).empty()) {
         std::string list;
-        for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+        for (const std::string& k : catalog.families()) list += (list.empty() ? "" : ", ") + k;
         throw std::invalid_argument("no family '" + family + "' in the catalog (families: " + list + ")");
       }
     }
+    const std::vector<const materials::Material*> kept = of_families({families.begin(), families.end()});
     std::erase_if(chosen, [&](const materials::Material* m) {
-      return std::none_of(families.begin(), families.end(),
-                          [&](const std::string& f) { return EqualIgnoringCase(f, m->family); });
+      return std::find(kept.begin(), kept.end(), m) == kept.end();
     });
   }
   std::vector<CandidateMaterial> candidates;

@@ -23,13 +23,14 @@ const char* ToString(Termination termination) noexcept {
   return "unknown";
 }
 
+bool EndedNormally(Termination termination) noexcept {
+  return termination == Termination::kConverged || termination == Termination::kAcceptable ||
+         termination == Termination::kEvaluationLimit || termination == Termination::kTimeLimit ||
+         termination == Termination::kRoundoffLimited;
+}
+
 bool SolveResult::is_usable() const noexcept {
-  const bool normal_end = report.termination == Termination::kConverged ||
-                          report.termination == Termination::kAcceptable ||
-                          report.termination == Termination::kEvaluationLimit ||
-                          report.termination == Termination::kTimeLimit ||
-                          report.termination == Termination::kRoundoffLimited;
-  return normal_end && !x.empty() &&
+  return EndedNormally(report.termination) && !x.empty() &&
          std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); }) &&
          std::isfinite(objective);
 }

@@ -57,6 +57,10 @@ enum class Termination {
 /// "converged", "evaluation-limit", ...
 const char* ToString(Termination termination) noexcept;
 
+/// The backend ended normally: converged, acceptable, a budget, or roundoff (its point may
+/// be used); false for infeasible, failed evaluations, invalid problems and solver errors.
+bool EndedNormally(Termination termination) noexcept;
+
 /// How a solve ended and what it cost.
 struct SolverReport {
   std::string backend;          ///< "nlopt:GN_DIRECT_L", "ipopt", ...
