@@ -5,8 +5,9 @@ joint-space inertia summed from the links' masses and inertias) against closed f
 planar 2-link arm (M, J_v, reflected mass, its singular stretched pose, a contact-point
 offset, an inertia tensor in a turned frame), the same arm behind a fixed joint with a
 turned origin, and a cart with a pendulum (prismatic and continuous joints). Its Jacobians
-are checked against finite differences of its own forward kinematics, and the shipped cobot
-models (robot/models) against the manufacturers' Denavit-Hartenberg tables.
+are checked against finite differences of its own forward kinematics, its M against the
+kinetic energy of the links moving at numerically differentiated velocities, and the
+shipped cobot models (robot/models) against the manufacturers' Denavit-Hartenberg tables.
 
 Then covopt.reflected_mass (urdfdom + Orocos KDL) against that reference on both shipped
 cobots at their named and at random configurations (fixed seed), several contact points
@@ -174,6 +175,48 @@ def test_reference_jacobians_are_finite_differences_of_its_kinematics(urdf, base
         m = ref.joint_space_inertia(model, base, tip, q)
         np.testing.assert_allclose(m, m.T, atol=1e-15)
         assert np.linalg.eigvalsh(m)[0] > 0.0
+
+
+def _kinetic_energy_by_finite_differences(model, base, tip, q, qdot, h=1e-6):
+    """Sum over links of (m v^2 + w^T I w) / 2, v and w from central differences of poses."""
+    before = ref.forward_kinematics(model, base, tip, q - h * qdot).link_frames
+    after = ref.forward_kinematics(model, base, tip, q + h * qdot).link_frames
+    now = ref.forward_kinematics(model, base, tip, q).link_frames
+    energy = 0.0
+    for link, frame in now.items():
+        inertial = model.links.get(link)
+        if link == base or inertial is None:
+            continue
+        com_before, com_after, com_now = (f @ inertial.frame for f in (before[link],
+                                                                      after[link], frame))
+        v = (com_after[:3, 3] - com_before[:3, 3]) / (2 * h)
+        w_hat = (com_after[:3, :3] - com_before[:3, :3]) / (2 * h) @ com_now[:3, :3].T
+        w = 0.5 * np.array([w_hat[2, 1] - w_hat[1, 2], w_hat[0, 2] - w_hat[2, 0],
+                            w_hat[1, 0] - w_hat[0, 1]])
+        r = com_now[:3, :3]
+        energy += 0.5 * (inertial.mass_kg * v @ v + w @ r @ inertial.tensor_kg_m2 @ r.T @ w)
+    return energy
+
+
+@pytest.mark.parametrize("urdf, base, tip, n", [(FR3, "base", "fr3_link8", 7),
+                                                (UR5E, "base_link", "tool0", 6),
+                                                (CART_PENDULUM, "rail", "tip", 2)],
+                         ids=["fr3", "ur5e", "cart-pendulum"])
+def test_reference_inertia_matrix_is_the_kinetic_energy_of_the_moving_links(urdf, base, tip, n):
+    # M from the Jacobian sum against M from link velocities differentiated numerically:
+    # q_dot^T M q_dot = 2 T(q, q_dot), polarised for the off-diagonal terms.
+    model = ref.read_urdf(urdf)
+    q = np.random.default_rng(5).uniform(-1.5, 1.5, n)
+    m = ref.joint_space_inertia(model, base, tip, q)
+    eye = np.eye(n)
+    diagonal = [2 * _kinetic_energy_by_finite_differences(model, base, tip, q, eye[i])
+                for i in range(n)]
+    numeric = np.diag(diagonal)
+    for i in range(n):
+        for j in range(i + 1, n):
+            both = 2 * _kinetic_energy_by_finite_differences(model, base, tip, q, eye[i] + eye[j])
+            numeric[i, j] = numeric[j, i] = 0.5 * (both - diagonal[i] - diagonal[j])
+    np.testing.assert_allclose(numeric, m, rtol=1e-6, atol=1e-8 * np.abs(m).max())
 
 
 def _craig(a, alpha, d, theta):
