@@ -37,8 +37,9 @@ import numpy as np
 MOVABLE_JOINT_TYPES = ("revolute", "continuous", "prismatic")
 SUPPORTED_JOINT_TYPES = MOVABLE_JOINT_TYPES + ("fixed",)
 
-# lambda_min / lambda_max below this: the chain cannot move the point that way (infinite mass).
-SINGULAR_EIGENVALUE_RATIO = 1e-12
+# u^T A u (or an eigenvalue of A) at or below this times A's largest eigenvalue: the chain
+# cannot move the point that way, an infinite mass (the rule covopt documents, 1e-9).
+SINGULAR_EIGENVALUE_RATIO = 1e-9
 
 
 def rotation_from_rpy(roll, pitch, yaw):
