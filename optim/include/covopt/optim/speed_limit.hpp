@@ -1,0 +1,141 @@
+#pragma once
+/// @file speed_limit.hpp
+/// The other direction of the design question: for a given robot and covering, the largest
+/// impact speed (or reflected robot mass) that stays safe — the speed a power-and-force-
+/// limiting controller enforces.
+///
+/// Definition. The maximum safe speed is the largest v0 such that EVERY speed in (0, v0] is
+/// safe: both injury ratios <= 1/safety_factor and, under the default criterion
+/// (docs/model.md §6), the covering not fully compressed at the peak (δ_max <= t2; for the
+/// bare robot only the ratios count). A controller enforces "speed <= limit", so a safe
+/// window above an unsafe speed would not help. The maximum safe mass is defined the same
+/// way over the reflected robot mass (0, m_r].
+///
+/// How. In the conservative model energy is conserved, so the peak penetration δ_max solves
+/// U(δ_max) = ½ μ v0² (μ = 1/(1/m_r + 1/m_h), the reduced mass) and grows with v0 and with
+/// m_r; the peaks are non-decreasing functions of δ_max (with the literal thresholds, F and
+/// σ_c are their running maxima over the contact: ImpactPeaks). So the limit is found on the
+/// δ axis: δ_lim, the smallest δ at which a criterion reaches its limit —
+///
+///     laceration         σ_t,max(δ) = laceration limit / safety_factor
+///     contusion          e_A(δ)     = contusion limit / safety_factor
+///     full compression   δ = t2     (default criterion, with a covering)
+///
+/// — by a closed form (σ_c in a phase) or a monotone Newton iteration (e_A) inside the phase
+/// where the limit is crossed, to ~1e-15 relative; then
+///
+///     v_max = sqrt(2 U(δ_lim) / μ)        μ_max = 2 U(δ_lim) / v0²
+///     m_r,max = μ_max m_h / (m_h - μ_max)  (free head; μ_max >= m_h: even a fixed robot is
+///                                           safe; fixed head: m_r,max = μ_max).
+/// The ratios at the limit come from re-running the exact path there (ExactPeaks), so they
+/// are the numbers `covopt simulate` prints at that speed or mass: one of them is 1/s (within
+/// rounding), none above. About 1-2 µs per answer.
+///
+/// That the ratios are non-decreasing in v0 and m_r is checked by a dense scan on varied
+/// scenes in tests/optim/test_speed_limit.cpp, and every answer is checked against a
+/// bisection on the full exact path.
+
+#include <string>
+
+#include <covopt/core/scene.hpp>
+
+#include "covopt/optim/covering_design.hpp"
+
+namespace covopt::optim {
+
+/// How a limit search ended. Every outcome is an answer.
+enum class SpeedLimitStatus {
+  /// A criterion binds inside the searched range: the value is the limit.
+  kLimited,
+  /// Safe up to the top of the searched range (the model's 100 m/s; for a mass, 1e6 kg or a
+  /// fixed robot): the value is that ceiling, the true limit (if any) lies above.
+  kSafeUpToSearchLimit,
+  /// Not even the bottom of the range is safe (the model's 1e-6 m/s; a vanishing mass):
+  /// the value is 0.
+  kNoSafeValue,
+};
+/// "limited", "safe-up-to-search-limit", "no-safe-value".
+const char* ToString(SpeedLimitStatus status) noexcept;
+
+/// Which criterion sets the limit.
+enum class LimitingCriterion {
+  kNone,             ///< nothing binds within the searched range
+  kLaceration,       ///< σ_t,max reaches the laceration limit / safety factor
+  kContusion,        ///< e_A,max reaches the contusion limit / safety factor
+  kFullCompression,  ///< δ_max reaches t2: the covering bottoms out (default criterion)
+};
+/// "none", "laceration", "contusion", "full-compression".
+const char* ToString(LimitingCriterion criterion) noexcept;
+
+/// Options of MaxSafeSpeed and MaxSafeMass.
+struct SpeedLimitOptions {
+  /// false (default): a covering fully compressed at the peak is not safe (criterion
+  /// "no-full-compression", as DesignOptions). true: the paper's criterion, the ratios only.
+  bool allow_full_compression = false;
+  DesignCriterion criterion() const noexcept {
+    return allow_full_compression ? DesignCriterion::kPaper : DesignCriterion::kNoFullCompression;
+  }
+  /// Ratios must be <= 1/safety_factor, in [1, 100] [-]. Default: 1.
+  double safety_factor = 1.0;
+  /// The laceration [Pa] and contusion [J/m²] limits, each in (0, inf). Default: 1 MPa and
+  /// 2.52 J/cm².
+  InjuryLimits limits;
+  /// The top of the speed search [m/s], in [1e-6, 100]. Default: 100, the model's ceiling
+  /// (docs/model.md §1).
+  double max_speed_m_per_s = 100.0;
+  /// The top of the mass search for a finite robot [kg], in (0, 1e6]. Default: 1e6, the
+  /// model's ceiling. A fixed robot (m_r = inf) is always considered beyond it.
+  double max_mass_kg = 1e6;
+};
+
+/// The ratios of the impact at a limit, as the exact path computes them there.
+struct LimitRatios {
+  double laceration_ratio = 0.0;   ///< σ_t,max / laceration limit [-]
+  double contusion_ratio = 0.0;    ///< e_A,max / contusion limit [-]
+  /// δ_max / t2 [-] (DesignScore::compression_ratio): > 1 fully compressed; 0 without a
+  /// covering.
+  double compression_ratio = 0.0;
+  double max_penetration_m = 0.0;  ///< δ_max [m]
+};
+
+/// The answer of MaxSafeSpeed.
+struct SpeedLimit {
+  SpeedLimitStatus status = SpeedLimitStatus::kLimited;
+  /// The largest safe impact speed [m/s] (kLimited); the search ceiling
+  /// (kSafeUpToSearchLimit); 0 (kNoSafeValue).
+  double max_safe_speed_m_per_s = 0.0;
+  LimitingCriterion limited_by = LimitingCriterion::kNone;
+  /// The impact at max_safe_speed_m_per_s (at the bottom of the range, 1e-6 m/s, for
+  /// kNoSafeValue).
+  LimitRatios at_limit;
+  /// One sentence, e.g. "max safe speed 1.234 m/s, limited by contusion".
+  std::string message;
+  /// The message with the ratios at the limit.
+  std::string BriefReport() const;
+};
+
+/// The answer of MaxSafeMass.
+struct MassLimit {
+  SpeedLimitStatus status = SpeedLimitStatus::kLimited;
+  /// The largest safe reflected robot mass [kg] (kLimited); kFixed (+inf) when even a fixed
+  /// robot is safe, or options.max_mass_kg, for kSafeUpToSearchLimit; 0 (kNoSafeValue).
+  double max_safe_mass_kg = 0.0;
+  LimitingCriterion limited_by = LimitingCriterion::kNone;
+  /// The impact at max_safe_mass_kg (a fixed robot when that is the answer).
+  LimitRatios at_limit;
+  std::string message;
+  std::string BriefReport() const;
+};
+
+/// The largest impact speed [m/s] at which the scene (robot mass, covering, head, ...) is
+/// safe for every lower speed. scene.robot.speed_m_per_s is ignored.
+/// @throws std::invalid_argument naming the field, the value and the allowed range for a bad
+///         scene or options.
+SpeedLimit MaxSafeSpeed(const Scene& scene, const SpeedLimitOptions& options = {});
+
+/// The largest reflected robot mass [kg] that is safe, with every lighter robot, at the
+/// scene's speed. scene.robot.mass_kg is ignored.
+/// @throws std::invalid_argument as MaxSafeSpeed.
+MassLimit MaxSafeMass(const Scene& scene, const SpeedLimitOptions& options = {});
+
+}  // namespace covopt::optim

@@ -1,0 +1,331 @@
+// The maximum safe impact speed and reflected mass (optim/speed_limit.hpp): the limit is
+// found on the penetration axis, where every criterion is a monotone function of δ_max, and
+// mapped back through the energy balance U(δ_max) = ½ μ v0².
+#include "covopt/optim/speed_limit.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include <covopt/core/exact.hpp>
+#include <covopt/core/impact_model.hpp>
+
+namespace covopt::optim {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// The model's lowest impact speed [m/s] (ImpactModel::FromScene).
+constexpr double kMinSpeed_m_per_s = 1e-6;
+constexpr double kHertzPressureFactor = 3.0 / (2.0 * 3.14159265358979323846);  // k = 3/(2π)
+
+std::string Shortest(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+std::string Format(const char* format, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, value);
+  return buffer;
+}
+
+[[noreturn]] void Reject(const std::string& field, const std::string& requirement, double value) {
+  throw std::invalid_argument(field + " must be " + requirement + " (got " + Shortest(value) + ")");
+}
+
+void CheckOptions(const SpeedLimitOptions& o) {
+  if (!(o.safety_factor >= 1.0 && o.safety_factor <= 100.0)) {
+    Reject("safety_factor", "in [1, 100]", o.safety_factor);
+  }
+  const double laceration = o.limits.laceration_tensile_stress_Pa;
+  const double contusion = o.limits.contusion_energy_density_J_per_m2;
+  if (!(laceration > 0.0 && std::isfinite(laceration))) {
+    Reject("limits.laceration_tensile_stress_Pa", "finite and > 0 Pa", laceration);
+  }
+  if (!(contusion > 0.0 && std::isfinite(contusion))) {
+    Reject("limits.contusion_energy_density_J_per_m2", "finite and > 0 J/m²", contusion);
+  }
+  if (!(o.max_speed_m_per_s >= kMinSpeed_m_per_s && o.max_speed_m_per_s <= 100.0)) {
+    Reject("max_speed_m_per_s", "in [1e-06, 100] m/s", o.max_speed_m_per_s);
+  }
+  if (!(o.max_mass_kg > 0.0 && o.max_mass_kg <= 1e6)) Reject("max_mass_kg", "in (0, 1e+06] kg", o.max_mass_kg);
+}
+
+/// x >= x0 solving  offset (x - x0) + coeff/power (x^power - x0^power) = gap  (gap >= 0):
+/// the left side is increasing and convex for x >= x0 (offset >= 0, coeff > 0, power >= 1),
+/// so Newton started above the root descends monotonically onto it (as the exact path's
+/// energy balance does); either term alone reaching the gap bounds the root from above.
+double SolveOffsetPower(double offset, double coeff, double power, double x0, double gap) {
+  if (!(gap > 0.0)) return x0;
+  if (offset == 0.0 && x0 == 0.0) return std::pow(gap * power / coeff, 1.0 / power);
+  const double x0_pow = x0 > 0.0 ? std::pow(x0, power) : 0.0;
+  double x = std::pow(gap * power / coeff + x0_pow, 1.0 / power);
+  if (offset > 0.0) x = std::min(x, x0 + gap / offset);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double x_pow_m1 = std::pow(x, power - 1.0);
+    const double g = offset * (x - x0) + coeff / power * (x_pow_m1 * x - x0_pow) - gap;
+    const double slope = offset + coeff * x_pow_m1;
+    const double next = x - g / slope;
+    if (!(next < x)) break;  // converged: the monotone sequence stopped decreasing
+    x = std::max(next, x0);
+  }
+  return x;
+}
+
+/// A penetration on the δ axis and the segment of the force law it was found in.
+struct Crossing {
+  double penetration_m = kInfinity;  ///< +inf: never reached
+  std::size_t segment = 0;
+};
+
+/// The largest δ up to which the running maximum of σ_c over [0, δ] stays <= target [Pa]
+/// (ImpactPeaks' σ_c,max of a contact reaching δ).
+Crossing StressCrossing(const ImpactModel& model, double target_Pa) {
+  // σ_c,max over the segments passed is at their ends, each checked <= target on the way.
+  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+    const ForceLawSegment& seg = model.segment(i);
+    const double at_start = model.StateInSegment(i, seg.start_m).compressive_stress_Pa;
+    if (at_start > target_Pa) return {seg.start_m, i};  // a jump up at the switch
+    const bool last = i + 1 == model.segment_count();
+    if (!last) {
+      const double at_end = model.StateInSegment(i, seg.end_m).compressive_stress_Pa;
+      if (at_end <= target_Pa) continue;
+    }
+    // σ_i(δ) = σ_off + k K c x^(n-1) is increasing in the segment and crosses the target here.
+    const double n = seg.exponent;
+    if (!(n > 1.0)) {
+      if (last) return {};  // constant: never crosses
+      continue;
+    }
+    const double kc = kHertzPressureFactor * seg.stiffness * seg.curvature_per_m;
+    const double x = std::pow(std::max(target_Pa - seg.stress_offset_Pa, 0.0) / kc, 1.0 / (n - 1.0));
+    return {std::clamp(seg.origin_m + x, seg.start_m, seg.end_m), i};
+  }
+  return {};
+}
+
+/// The largest δ up to which e(δ) <= target [J/m²] (e is continuous and increasing).
+Crossing EnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2) {
+  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+    const ForceLawSegment& seg = model.segment(i);
+    const bool last = i + 1 == model.segment_count();
+    if (!last && model.StateInSegment(i, seg.end_m).energy_density_J_per_m2 <= target_J_per_m2) continue;
+    // e_i = e_start + σ_off (x - x0) + k K c (x^n - x0^n)/n,  x = δ - origin, x0 = start - origin.
+    const double kc = kHertzPressureFactor * seg.stiffness * seg.curvature_per_m;
+    const double x0 = seg.start_m - seg.origin_m;
+    const double x = SolveOffsetPower(seg.stress_offset_Pa, kc, seg.exponent, x0,
+                                      target_J_per_m2 - seg.energy_density_at_start_J_per_m2);
+    return {std::clamp(seg.origin_m + x, seg.start_m, seg.end_m), i};
+  }
+  return {};
+}
+
+/// The smallest δ at which a criterion reaches its limit, which one, and U there [J].
+struct PenetrationLimit {
+  double penetration_m = kInfinity;
+  LimitingCriterion by = LimitingCriterion::kNone;
+  double energy_J = kInfinity;
+};
+
+PenetrationLimit FindPenetrationLimit(const ImpactModel& model, const SpeedLimitOptions& options) {
+  const double s = options.safety_factor;
+  const double tensile_factor = model.TensileFromCompressive(1.0);  // (1 - 2ν_t)/3 >= 0
+  PenetrationLimit limit;
+  auto consider = [&](const Crossing& crossing, LimitingCriterion by) {
+    if (crossing.penetration_m < limit.penetration_m) {
+      limit.penetration_m = crossing.penetration_m;
+      limit.by = by;
+      limit.energy_J = model.StateInSegment(crossing.segment, crossing.penetration_m).potential_energy_J;
+    }
+  };
+  if (tensile_factor > 0.0) {
+    consider(StressCrossing(model, options.limits.laceration_tensile_stress_Pa / (s * tensile_factor)),
+             LimitingCriterion::kLaceration);
+  }
+  consider(EnergyDensityCrossing(model, options.limits.contusion_energy_density_J_per_m2 / s),
+           LimitingCriterion::kContusion);
+  if (options.criterion() == DesignCriterion::kNoFullCompression && model.has_covering()) {
+    const std::size_t last = model.segment_count() - 1;
+    consider({model.segment(last).start_m, last}, LimitingCriterion::kFullCompression);
+  }
+  return limit;
+}
+
+/// The exact path on `scene`: the ratios, and whether the impact is admissible.
+struct Evaluation {
+  LimitRatios ratios;
+  bool admissible = false;
+};
+
+Evaluation Evaluate(const Scene& scene, const SpeedLimitOptions& options) {
+  const ImpactModel model = ImpactModel::FromScene(scene);
+  const ImpactPeaks peaks = ExactPeaks(model);
+  Evaluation e;
+  e.ratios.laceration_ratio = peaks.max_tensile_stress_Pa / options.limits.laceration_tensile_stress_Pa;
+  e.ratios.contusion_ratio =
+      peaks.max_energy_density_J_per_m2 / options.limits.contusion_energy_density_J_per_m2;
+  e.ratios.compression_ratio =
+      model.has_covering() ? peaks.max_penetration_m / peaks.full_compression_penetration_m : 0.0;
+  e.ratios.max_penetration_m = peaks.max_penetration_m;
+  const double worst = std::max(e.ratios.laceration_ratio, e.ratios.contusion_ratio);
+  e.admissible = worst * options.safety_factor <= 1.0 &&
+                 (options.criterion() == DesignCriterion::kPaper || !model.has_covering() ||
+                  !peaks.fully_compressed);
+  return e;
+}
+
+/// Lowers `value` by a few ulps until the exact path at `set(value)` is admissible: the limit
+/// computed on the δ axis can round to just above the switch or the limit it stands for.
+template <class Setter>
+Evaluation NudgeDown(double& value, const Scene& scene, const SpeedLimitOptions& options, Setter set) {
+  Scene probe = scene;
+  set(probe, value);
+  Evaluation e = Evaluate(probe, options);
+  double step = 2.0 * std::numeric_limits<double>::epsilon();
+  for (int attempt = 0; attempt < 40 && !e.admissible; ++attempt, step *= 2.0) {
+    value *= 1.0 - step;
+    set(probe, value);
+    e = Evaluate(probe, options);
+  }
+  return e;
+}
+
+std::string RatiosText(const LimitRatios& r, bool covered) {
+  std::string text = "laceration ratio " + Format("%.4g", r.laceration_ratio) + ", contusion ratio " +
+                     Format("%.4g", r.contusion_ratio);
+  if (covered) text += ", compression ratio " + Format("%.4g", r.compression_ratio);
+  return text;
+}
+
+}  // namespace
+
+const char* ToString(SpeedLimitStatus status) noexcept {
+  switch (status) {
+    case SpeedLimitStatus::kLimited: return "limited";
+    case SpeedLimitStatus::kSafeUpToSearchLimit: return "safe-up-to-search-limit";
+    case SpeedLimitStatus::kNoSafeValue: return "no-safe-value";
+  }
+  return "unknown";
+}
+
+const char* ToString(LimitingCriterion criterion) noexcept {
+  switch (criterion) {
+    case LimitingCriterion::kNone: return "none";
+    case LimitingCriterion::kLaceration: return "laceration";
+    case LimitingCriterion::kContusion: return "contusion";
+    case LimitingCriterion::kFullCompression: return "full-compression";
+  }
+  return "unknown";
+}
+
+std::string SpeedLimit::BriefReport() const {
+  return message + "; at " + Format("%.6g", std::max(max_safe_speed_m_per_s, kMinSpeed_m_per_s)) +
+         " m/s: " + RatiosText(at_limit, at_limit.compression_ratio > 0.0) + ".";
+}
+
+std::string MassLimit::BriefReport() const {
+  return message + "; at " +
+         (std::isinf(max_safe_mass_kg) ? std::string("a fixed robot")
+                                       : Format("%.6g", max_safe_mass_kg) + " kg") +
+         ": " + RatiosText(at_limit, at_limit.compression_ratio > 0.0) + ".";
+}
+
+SpeedLimit MaxSafeSpeed(const Scene& scene, const SpeedLimitOptions& options) {
+  CheckOptions(options);
+  Scene base = scene;
+  base.robot.speed_m_per_s = 1.0;  // ignored: the law does not depend on it
+  const ImpactModel model = ImpactModel::FromScene(base);
+  const PenetrationLimit limit = FindPenetrationLimit(model, options);
+  const double speed = std::sqrt(2.0 * limit.energy_J / model.effective_mass_kg());  // may be inf
+  const auto set_speed = [](Scene& s, double v) { s.robot.speed_m_per_s = v; };
+
+  SpeedLimit result;
+  result.limited_by = limit.by;
+  if (speed > options.max_speed_m_per_s) {
+    result.status = SpeedLimitStatus::kSafeUpToSearchLimit;
+    result.limited_by = LimitingCriterion::kNone;
+    result.max_safe_speed_m_per_s = options.max_speed_m_per_s;
+    result.at_limit = NudgeDown(result.max_safe_speed_m_per_s, base, options, set_speed).ratios;
+    result.message = "safe up to the search limit of " + Format("%.6g", result.max_safe_speed_m_per_s) +
+                     " m/s" + (options.max_speed_m_per_s == 100.0 ? " (the model's ceiling)" : "");
+    return result;
+  }
+  double value = speed;
+  Evaluation at = {};
+  if (value >= kMinSpeed_m_per_s) at = NudgeDown(value, base, options, set_speed);
+  if (!(value >= kMinSpeed_m_per_s) || !at.admissible) {
+    result.status = SpeedLimitStatus::kNoSafeValue;
+    result.max_safe_speed_m_per_s = 0.0;
+    Scene floor = base;
+    floor.robot.speed_m_per_s = kMinSpeed_m_per_s;
+    result.at_limit = Evaluate(floor, options).ratios;
+    result.message = std::string("no safe speed: unsafe even at 1e-06 m/s (") + ToString(limit.by) + ")";
+    return result;
+  }
+  result.status = SpeedLimitStatus::kLimited;
+  result.max_safe_speed_m_per_s = value;
+  result.at_limit = at.ratios;
+  result.message = "max safe speed " + Format("%.6g", value) + " m/s, limited by " + ToString(limit.by);
+  return result;
+}
+
+MassLimit MaxSafeMass(const Scene& scene, const SpeedLimitOptions& options) {
+  CheckOptions(options);
+  Scene base = scene;
+  base.robot.mass_kg = 1.0;  // ignored: the law does not depend on it
+  const ImpactModel model = ImpactModel::FromScene(base);
+  const PenetrationLimit limit = FindPenetrationLimit(model, options);
+  const double v0 = base.robot.speed_m_per_s;
+  const double head = base.head.mass_kg;
+  const double reduced = 2.0 * limit.energy_J / (v0 * v0);  // μ_max [kg], may be inf
+  const auto set_mass = [](Scene& s, double m) { s.robot.mass_kg = m; };
+
+  MassLimit result;
+  result.limited_by = limit.by;
+  // A fixed robot meets the free head with μ = m_h.
+  if (std::isfinite(head) && reduced >= head) {
+    Scene fixed = base;
+    fixed.robot.mass_kg = kFixed;
+    const Evaluation at = Evaluate(fixed, options);
+    if (at.admissible) {
+      result.status = SpeedLimitStatus::kSafeUpToSearchLimit;
+      result.limited_by = LimitingCriterion::kNone;
+      result.max_safe_mass_kg = kFixed;
+      result.at_limit = at.ratios;
+      result.message = "safe for any reflected mass, even a fixed robot";
+      return result;
+    }
+  }
+  const double mass = std::isinf(head) ? reduced : (reduced >= head ? kInfinity : reduced * head / (head - reduced));
+  if (mass > options.max_mass_kg) {
+    result.status = SpeedLimitStatus::kSafeUpToSearchLimit;
+    result.limited_by = LimitingCriterion::kNone;
+    result.max_safe_mass_kg = options.max_mass_kg;
+    result.at_limit = NudgeDown(result.max_safe_mass_kg, base, options, set_mass).ratios;
+    result.message = "safe up to the search limit of " + Format("%.6g", result.max_safe_mass_kg) + " kg" +
+                     (options.max_mass_kg == 1e6 ? " (the model's ceiling)" : "");
+    return result;
+  }
+  double value = mass;
+  Evaluation at = {};
+  if (value > 0.0) at = NudgeDown(value, base, options, set_mass);
+  if (!(value > 0.0) || !at.admissible) {
+    result.status = SpeedLimitStatus::kNoSafeValue;
+    result.max_safe_mass_kg = 0.0;
+    result.message = std::string("no safe mass: the limit underflows (") + ToString(limit.by) + ")";
+    return result;
+  }
+  result.status = SpeedLimitStatus::kLimited;
+  result.max_safe_mass_kg = value;
+  result.at_limit = at.ratios;
+  result.message = "max safe reflected mass " + Format("%.6g", value) + " kg, limited by " + ToString(limit.by);
+  return result;
+}
+
+}  // namespace covopt::optim
