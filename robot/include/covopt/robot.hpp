@@ -1,0 +1,8 @@
+#pragma once
+/// @file robot.hpp
+/// covopt::robot: a robot's reflected mass at a contact point from its URDF (kinematic chain,
+/// joint-space inertia and Jacobian through Orocos KDL), and a contact point's motion along a
+/// joint trajectory.
+#include "covopt/robot/kinematic_chain.hpp"
+#include "covopt/robot/reflected_mass.hpp"
+#include "covopt/robot/trajectory.hpp"

@@ -1,0 +1,260 @@
+#include "covopt/robot/reflected_mass.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <kdl/chaindynparam.hpp>
+#include <kdl/chainfksolverpos_recursive.hpp>
+#include <kdl/chainjnttojacsolver.hpp>
+#include <kdl/jacobian.hpp>
+#include <kdl/jntspaceinertiamatrix.hpp>
+
+#include "chain_impl.hpp"
+
+namespace covopt::robot {
+
+const char* ToString(ReflectedMassStatus status) noexcept {
+  switch (status) {
+    case ReflectedMassStatus::kSuccess: return "success";
+    case ReflectedMassStatus::kFixedDirections: return "fixed-directions";
+  }
+  return "unknown";
+}
+
+namespace internal {
+
+KDL::JntArray ToJntArray(const KinematicChain& chain, const Eigen::VectorXd& q, const char* what) {
+  const std::vector<std::string>& names = chain.joint_names();
+  if (static_cast<std::size_t>(q.size()) != names.size()) {
+    std::ostringstream message;
+    message << what << ": " << q.size() << " value" << (q.size() == 1 ? "" : "s")
+            << " given, but the chain " << chain.base_link() << " -> " << chain.tip_link()
+            << " has " << names.size() << " movable joint" << (names.size() == 1 ? "" : "s");
+    if (!names.empty()) {
+      message << " (";
+      for (std::size_t i = 0; i < names.size(); ++i) message << (i ? ", " : "") << names[i];
+      message << ")";
+    }
+    throw std::invalid_argument(message.str());
+  }
+  KDL::JntArray array(static_cast<unsigned>(q.size()));
+  for (Eigen::Index i = 0; i < q.size(); ++i) {
+    if (!std::isfinite(q[i])) {
+      std::ostringstream message;
+      message << what << ": joint " << (i + 1) << " (" << names[static_cast<std::size_t>(i)]
+              << ") must be a finite number (got " << q[i] << ")";
+      throw std::invalid_argument(message.str());
+    }
+    array(static_cast<unsigned>(i)) = q[i];
+  }
+  return array;
+}
+
+void CheckFinite(const Eigen::Vector3d& v, const char* what) {
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(v[i])) {
+      std::ostringstream message;
+      message << what << ": component " << (i + 1) << " must be a finite number (got " << v[i]
+              << ")";
+      throw std::invalid_argument(message.str());
+    }
+  }
+}
+
+}  // namespace internal
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// The unit vector with the sign that makes its largest-magnitude component positive, so the
+/// same direction prints the same way whichever sign the eigen solver returns.
+Eigen::Vector3d CanonicalSign(const Eigen::Vector3d& v) {
+  Eigen::Index largest = 0;
+  v.cwiseAbs().maxCoeff(&largest);
+  return v[largest] < 0 ? Eigen::Vector3d(-v) : v;
+}
+
+std::string FormatVector(const Eigen::Vector3d& v) {
+  std::ostringstream out;
+  out.precision(4);
+  out << "(" << v[0] << ", " << v[1] << ", " << v[2] << ")";
+  return out.str();
+}
+
+std::string FormatMass(double mass_kg) {
+  if (!std::isfinite(mass_kg)) return "fixed (infinite)";
+  std::ostringstream out;
+  out.precision(4);
+  out << mass_kg << " kg";
+  return out.str();
+}
+
+Eigen::MatrixXd MassMatrix(const KinematicChain& chain, const KDL::JntArray& q) {
+  const unsigned n = q.rows();
+  KDL::JntSpaceInertiaMatrix inertia(n);
+  KDL::ChainDynParam dynamics(chain.impl().chain, KDL::Vector::Zero());
+  if (n > 0 && dynamics.JntToMass(q, inertia) < 0) {
+    throw std::runtime_error("KDL ChainDynParam::JntToMass failed");
+  }
+  return inertia.data;
+}
+
+Eigen::Matrix<double, 3, Eigen::Dynamic> PointJacobian(const KinematicChain& chain,
+                                                       const KDL::JntArray& q,
+                                                       const Eigen::Vector3d& point_in_tip_m,
+                                                       Eigen::Vector3d* point_in_base_m) {
+  const KDL::Chain& kdl_chain = chain.impl().chain;
+  KDL::Frame tip;
+  KDL::ChainFkSolverPos_recursive forward(kdl_chain);
+  if (forward.JntToCart(q, tip) < 0) throw std::runtime_error("KDL forward kinematics failed");
+  // The Jacobian's reference point is the tip frame's origin; move it to the contact point,
+  // expressed in the base frame (Jacobian::changeRefPoint takes the base-frame offset).
+  const KDL::Vector offset_in_base =
+      tip.M * KDL::Vector(point_in_tip_m[0], point_in_tip_m[1], point_in_tip_m[2]);
+  const KDL::Vector point = tip.p + offset_in_base;
+  if (point_in_base_m != nullptr) *point_in_base_m = Eigen::Vector3d(point.x(), point.y(), point.z());
+  const unsigned n = q.rows();
+  Eigen::Matrix<double, 3, Eigen::Dynamic> linear(3, n);
+  if (n == 0) return linear;
+  KDL::Jacobian jacobian(n);
+  KDL::ChainJntToJacSolver solver(kdl_chain);
+  if (solver.JntToJac(q, jacobian) < 0) throw std::runtime_error("KDL ChainJntToJacSolver failed");
+  jacobian.changeRefPoint(offset_in_base);
+  linear = jacobian.data.topRows(3);
+  return linear;
+}
+
+}  // namespace
+
+Eigen::MatrixXd JointSpaceInertia(const KinematicChain& chain, const Eigen::VectorXd& q) {
+  return MassMatrix(chain, internal::ToJntArray(chain, q));
+}
+
+Eigen::Matrix<double, 3, Eigen::Dynamic> ContactJacobian(const KinematicChain& chain,
+                                                         const Eigen::VectorXd& q,
+                                                         const Eigen::Vector3d& point_in_tip_m) {
+  const KDL::JntArray joints = internal::ToJntArray(chain, q);
+  internal::CheckFinite(point_in_tip_m, "point");
+  return PointJacobian(chain, joints, point_in_tip_m, nullptr);
+}
+
+Eigen::Vector3d ContactPoint(const KinematicChain& chain, const Eigen::VectorXd& q,
+                             const Eigen::Vector3d& point_in_tip_m) {
+  const KDL::JntArray joints = internal::ToJntArray(chain, q);
+  internal::CheckFinite(point_in_tip_m, "point");
+  Eigen::Vector3d point;
+  PointJacobian(chain, joints, point_in_tip_m, &point);
+  return point;
+}
+
+ReflectedMassResult ReflectedMass(const KinematicChain& chain, const Eigen::VectorXd& q,
+                                  const Eigen::Vector3d& point_in_tip_m,
+                                  const std::optional<Eigen::Vector3d>& direction_in_base,
+                                  const ReflectedMassOptions& options) {
+  const double tolerance = options.singular_relative_tolerance;
+  if (!(tolerance >= 0.0 && tolerance < 1.0)) {
+    std::ostringstream message;
+    message << "singular_relative_tolerance must be in [0, 1) (got " << tolerance << ")";
+    throw std::invalid_argument(message.str());
+  }
+  const KDL::JntArray joints = internal::ToJntArray(chain, q);
+  internal::CheckFinite(point_in_tip_m, "point");
+  ReflectedMassResult result;
+  if (direction_in_base) {
+    internal::CheckFinite(*direction_in_base, "direction");
+    const double norm = direction_in_base->norm();
+    if (!(norm > 0.0)) {
+      throw std::invalid_argument(
+          "direction: must be a non-zero vector (got (0, 0, 0)); give the impact direction "
+          "in the base frame, e.g. 1,0,0");
+    }
+    result.direction = *direction_in_base / norm;
+  }
+  result.joint_names = chain.joint_names();
+
+  const Eigen::Matrix<double, 3, Eigen::Dynamic> jacobian =
+      PointJacobian(chain, joints, point_in_tip_m, &result.contact_point_m);
+  Eigen::Matrix3d inverse_mass = Eigen::Matrix3d::Zero();
+  if (joints.rows() > 0) {
+    const Eigen::MatrixXd mass = MassMatrix(chain, joints);
+    const Eigen::LLT<Eigen::MatrixXd> cholesky(mass);
+    if (cholesky.info() != Eigen::Success) {
+      throw std::invalid_argument(
+          chain.source_name() +
+          ": the joint-space inertia matrix is not positive definite at these joints: a joint "
+          "moves no mass or inertia (give the links after it an <inertial>)");
+    }
+    const Eigen::MatrixXd m_inverse_jt = cholesky.solve(jacobian.transpose());
+    inverse_mass = jacobian * m_inverse_jt;
+    inverse_mass = 0.5 * (inverse_mass + inverse_mass.transpose()).eval();
+  }
+  result.inverse_reflected_mass_per_kg = inverse_mass;
+
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inverse_mass);
+  const Eigen::Vector3d& lambda = eigen.eigenvalues();  // ascending
+  const double lambda_max = std::max(lambda[2], 0.0);
+  const double zero_below = tolerance * lambda_max;
+  auto reciprocal = [&](double value) { return value > zero_below && value > 0.0 ? 1.0 / value : kInfinity; };
+  result.max_reflected_mass_kg = reciprocal(lambda[0]);
+  result.max_direction = CanonicalSign(eigen.eigenvectors().col(0));
+  result.min_reflected_mass_kg = reciprocal(lambda[2]);
+  result.min_direction = CanonicalSign(eigen.eigenvectors().col(2));
+  if (result.direction) {
+    result.reflected_mass_kg =
+        reciprocal(result.direction->dot(inverse_mass * *result.direction));
+  }
+
+  std::ostringstream message;
+  if (result.reflected_mass_kg) {
+    message << "reflected mass " << FormatMass(*result.reflected_mass_kg) << " along "
+            << FormatVector(*result.direction) << "; ";
+  }
+  message << FormatMass(result.min_reflected_mass_kg) << " to "
+          << FormatMass(result.max_reflected_mass_kg) << " over all directions";
+  result.message = message.str();
+
+  const std::string where = "the contact point " + FormatVector(result.contact_point_m) +
+                            " m (base frame) of " + chain.tip_link();
+  if (!std::isfinite(result.min_reflected_mass_kg)) {
+    result.warnings.push_back(where + " cannot move in any direction at these joints: its "
+                              "reflected mass is infinite (fixed) in every direction");
+  } else if (!std::isfinite(result.max_reflected_mass_kg)) {
+    const int rank = (lambda.array() > zero_below).count();
+    std::ostringstream warning;
+    warning << where << " cannot move along " << FormatVector(result.max_direction)
+            << (rank == 1 ? " or any direction normal to its only direction of motion "
+                          : " ")
+            << "at these joints (singular configuration, or a direction the joints do not "
+               "reach): the reflected mass along it is infinite (fixed)";
+    result.warnings.push_back(warning.str());
+  }
+  if (result.reflected_mass_kg && !std::isfinite(*result.reflected_mass_kg)) {
+    result.warnings.push_back("along the requested direction " + FormatVector(*result.direction) +
+                              " the robot cannot move " + where +
+                              ": the reflected mass is infinite (fixed), as for a fixed robot");
+  }
+  result.warnings.insert(result.warnings.begin(), chain.warnings().begin(), chain.warnings().end());
+  const bool any_fixed = !std::isfinite(result.max_reflected_mass_kg);
+  result.status = any_fixed ? ReflectedMassStatus::kFixedDirections : ReflectedMassStatus::kSuccess;
+  return result;
+}
+
+std::string ReflectedMassResult::BriefReport() const {
+  std::ostringstream out;
+  out << "Reflected mass: " << message << "\n";
+  out << "  largest  " << FormatMass(max_reflected_mass_kg) << " along "
+      << FormatVector(max_direction) << "\n";
+  out << "  smallest " << FormatMass(min_reflected_mass_kg) << " along "
+      << FormatVector(min_direction) << "\n";
+  out << "  contact point " << FormatVector(contact_point_m) << " m (base frame)\n";
+  for (const std::string& warning : warnings) out << "  warning: " << warning << "\n";
+  return out.str();
+}
+
+}  // namespace covopt::robot
