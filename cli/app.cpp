@@ -11,6 +11,7 @@
 #include "optimize.hpp"
 #include "parse_errors.hpp"
 #include "simulate.hpp"
+#include "speed_limit.hpp"
 #include "sweep.hpp"
 #include "workprecision.hpp"
 
@@ -40,6 +41,8 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   CLI::App* sweep = SetupSweep(app, sweep_options);
   WorkPrecisionOptions workprecision_options;
   CLI::App* workprecision = SetupWorkPrecision(app, workprecision_options);
+  SpeedLimitCommandOptions speed_limit_options;
+  CLI::App* speed_limit = SetupSpeedLimit(app, speed_limit_options);
 
   try {
     app.parse(argc, argv);
@@ -62,6 +65,7 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     if (optimize->parsed()) return RunOptimize(optimize_options, out, err);
     if (sweep->parsed()) return RunSweep(sweep_options, out, err);
     if (workprecision->parsed()) return RunWorkPrecision(workprecision_options, out, err);
+    if (speed_limit->parsed()) return RunSpeedLimit(speed_limit_options, out, err);
   } catch (const std::exception& e) {
     fmt::print(err, "covopt: internal error: {}\n", e.what());
     return 1;

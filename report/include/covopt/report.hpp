@@ -4,3 +4,4 @@
 #include "covopt/report/design_json.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
+#include "covopt/report/speed_limit_json.hpp"

@@ -1,0 +1,430 @@
+#include "speed_limit.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string_view>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "errors.hpp"
+#include "output.hpp"
+#include "sweep.hpp"
+
+namespace covopt::cli {
+namespace {
+
+using report::SpeedLimitQuantity;
+using report::SpeedLimitRow;
+
+constexpr std::string_view kFooter = R"(Values take a unit as in 'covopt simulate' (10kg, 2m/s, 15mm, 27.6MPa).
+The max safe speed is the largest v0 such that every speed up to it is safe:
+both injury ratios <= 1/--safety-factor and (default criterion) the covering
+not fully compressed at the peak. The search stops at the model's 100 m/s and
+says so. --robot-mass (or --speed with --solve-for mass) takes one value or a
+list/range as in 'covopt sweep': 0.5kg..50kg:log:20,fixed gives one row each.
+--material may be repeated: one block of rows and one chart curve each.
+--plot draws the speed limit over the reflected mass (log axes), one curve per
+covering and one for the bare robot, over the range of --robot-mass (without a
+list, 0.5 kg .. 200 kg).
+
+Exit codes: 0 an answer (also "no speed is safe"); 1 an output could not be
+written; 2 bad input.)";
+
+/// Reads a value or list/range typed after `flag` for the sweep axis `axis_name`.
+std::vector<double> ParseValues(const std::string& text, std::string_view axis_name, std::string_view flag) {
+  try {
+    return ParseSweepAxis(fmt::format("{}={}", axis_name, text), flag).values;
+  } catch (const InputError& e) {
+    // The axis parser quotes "NAME=SPEC"; the user typed SPEC after the flag.
+    std::string message = e.what();
+    const std::string quoted = fmt::format("'{}=", axis_name);
+    for (std::size_t at = message.find(quoted); at != std::string::npos; at = message.find(quoted, at + 1)) {
+      message.replace(at, quoted.size(), "'");
+    }
+    // "... (got 'SPEC') in 'SPEC'": once is enough.
+    const std::string suffix = fmt::format(" in '{}'", text);
+    if (message.size() > suffix.size() && message.ends_with(suffix) &&
+        message.find(fmt::format("'{}'", text)) < message.size() - suffix.size()) {
+      message.resize(message.size() - suffix.size());
+    }
+    throw InputError(message);
+  }
+}
+
+std::string MassText(double kg) { return std::isinf(kg) ? std::string("fixed") : fmt::format("{:.4g} kg", kg); }
+
+/// The rows of every covering: one library call each.
+std::vector<SpeedLimitRow> ComputeRows(const SpeedLimitPlan& plan, std::string* bad_input) {
+  std::vector<SpeedLimitRow> rows;
+  for (const SimulationPlan& covering : plan.coverings) {
+    for (const double value : plan.values) {
+      SpeedLimitRow row;
+      if (covering.covering_material && covering.scene.covering.thickness_m > 0.0) {
+        row.material = covering.covering_material->name;
+      }
+      Scene scene = covering.scene;
+      try {
+        if (plan.quantity == SpeedLimitQuantity::kSpeed) {
+          scene.robot.mass_kg = value;
+          row.robot_mass_kg = value;
+          row.speed_limit = optim::MaxSafeSpeed(scene, plan.options);
+        } else {
+          scene.robot.speed_m_per_s = value;
+          row.speed_m_per_s = value;
+          row.mass_limit = optim::MaxSafeMass(scene, plan.options);
+        }
+      } catch (const std::invalid_argument& e) {
+        *bad_input = AttributeError(e.what(), covering);
+        return {};
+      }
+      rows.push_back(std::move(row));
+    }
+  }
+  return rows;
+}
+
+std::string Criterion(const optim::SpeedLimitOptions& options) {
+  return options.criterion() == optim::DesignCriterion::kNoFullCompression
+             ? "safe, and the covering not fully compressed at the peak (the robot never reaches bone through "
+               "it); --allow-full-compression for the paper's"
+             : "the paper's: safe (both ratios within the limits), even if the covering is fully compressed at "
+               "the peak";
+}
+
+void PrintRows(std::ostream& out, const SpeedLimitPlan& plan, const std::vector<SpeedLimitRow>& rows) {
+  const bool by_speed = plan.quantity == SpeedLimitQuantity::kSpeed;
+  const bool materials = plan.coverings.size() > 1;
+  if (materials) fmt::print(out, "  {:<28}", "material");
+  fmt::print(out, "  {:>12}  {:>16}  {:<16}  {:>10}  {:>9}  {:>11}\n", by_speed ? "robot mass" : "speed",
+             by_speed ? "max safe speed" : "max safe mass", "limited by", "laceration", "contusion", "compression");
+  for (const SpeedLimitRow& row : rows) {
+    const optim::SpeedLimitStatus status = by_speed ? row.speed_limit.status : row.mass_limit.status;
+    const optim::LimitRatios& r = by_speed ? row.speed_limit.at_limit : row.mass_limit.at_limit;
+    const optim::LimitingCriterion by = by_speed ? row.speed_limit.limited_by : row.mass_limit.limited_by;
+    std::string limit;
+    if (status == optim::SpeedLimitStatus::kNoSafeValue) {
+      limit = "none safe";
+    } else if (by_speed) {
+      limit = fmt::format("{}{:.4g} m/s", status == optim::SpeedLimitStatus::kSafeUpToSearchLimit ? ">= " : "",
+                          row.speed_limit.max_safe_speed_m_per_s);
+    } else {
+      const double m = row.mass_limit.max_safe_mass_kg;
+      limit = std::isinf(m) ? std::string("fixed")
+                            : fmt::format("{}{:.4g} kg",
+                                          status == optim::SpeedLimitStatus::kSafeUpToSearchLimit ? ">= " : "", m);
+    }
+    if (materials) fmt::print(out, "  {:<28}", row.material.value_or("(scene's covering)").substr(0, 28));
+    const std::string compression =
+        r.compression_ratio > 0.0 ? fmt::format("{:.3f}", r.compression_ratio) : std::string("-");
+    fmt::print(out, "  {:>12}  {:>16}  {:<16}  {:>10.3f}  {:>9.3f}  {:>11}\n",
+               by_speed ? MassText(row.robot_mass_kg) : fmt::format("{:g} m/s", row.speed_m_per_s), limit,
+               optim::ToString(by), r.laceration_ratio, r.contusion_ratio, compression);
+  }
+}
+
+std::string CsvText(const SpeedLimitPlan& plan, const std::vector<SpeedLimitRow>& rows) {
+  std::string text;
+  const auto append_cell = [&](const std::string& cell) {
+    if (cell.find_first_of(",\"\n") == std::string::npos) {
+      text += cell;
+      return;
+    }
+    text += '"';
+    for (const char c : cell) text += c == '"' ? std::string("\"\"") : std::string(1, c);
+    text += '"';
+  };
+  bool first = true;
+  for (const std::string_view column : report::SpeedLimitColumns(plan.quantity)) {
+    text += first ? "" : ",";
+    text += column;
+    first = false;
+  }
+  text += '\n';
+  for (const SpeedLimitRow& row : rows) {
+    first = true;
+    for (const std::string& cell : report::SpeedLimitCsvCells(plan.quantity, row)) {
+      if (!first) text += ',';
+      append_cell(cell);
+      first = false;
+    }
+    text += '\n';
+  }
+  return text;
+}
+
+/// The Safety-Map chart: max safe speed over reflected mass, one curve per covering and the
+/// bare robot.
+std::string SafetyMapScript(const SpeedLimitPlan& plan, const std::string& output) {
+  std::vector<double> masses;
+  for (const double m : plan.values) {
+    if (std::isfinite(m)) masses.push_back(m);
+  }
+  // 121 log-spaced masses over the rows' finite masses, or 0.5 .. 200 kg.
+  const auto [low, high] = std::minmax_element(masses.begin(), masses.end());
+  const bool spread = masses.size() >= 2 && *low < *high;
+  const double from = spread ? *low : 0.5, to = spread ? *high : 200.0;
+  masses.clear();
+  for (int i = 0; i <= 120; ++i) masses.push_back(from * std::pow(to / from, i / 120.0));
+  struct Curve {
+    std::string title;
+    Scene scene;
+  };
+  std::vector<Curve> curves;
+  bool bare_listed = false;
+  for (const SimulationPlan& covering : plan.coverings) {
+    const Scene& s = covering.scene;
+    if (!(s.covering.thickness_m > 0.0)) {
+      bare_listed = true;
+      curves.push_back({"bare robot", s});
+      continue;
+    }
+    curves.push_back({fmt::format("{} {:g} mm", covering.covering_material ? covering.covering_material->name
+                                                                           : fmt::format("{:.3g} MPa",
+                                                                                         s.covering.youngs_modulus_Pa * 1e-6),
+                                  s.covering.thickness_m * 1e3),
+                      s});
+  }
+  if (!bare_listed) {
+    Scene bare = plan.coverings.front().scene;
+    bare.covering.thickness_m = 0.0;
+    curves.push_back({"bare robot", bare});
+  }
+  std::string s = "set encoding utf8\n";
+  s += GnuplotTerminal(plan.plot_format, 1000, 700);
+  s += fmt::format("set output {}\n", GnuplotQuoted(output));
+  s += "$data << EOD\n";
+  for (const Curve& curve : curves) {
+    for (const double m : masses) {
+      Scene scene = curve.scene;
+      scene.robot.mass_kg = m;
+      const optim::SpeedLimit limit = optim::MaxSafeSpeed(scene, plan.options);
+      if (limit.status == optim::SpeedLimitStatus::kNoSafeValue) {
+        s += fmt::format("{} NaN\n", m);
+      } else {
+        s += fmt::format("{} {}\n", m, limit.max_safe_speed_m_per_s);
+      }
+    }
+    s += "\n\n";
+  }
+  s += "EOD\n";
+  const std::array<std::string_view, 8> colours{"#1f5fa8", "#c0392b", "#2e8b57", "#8e44ad",
+                                                "#d68910", "#17a2b8", "#555555", "#e84393"};
+  Scene headline_scene = plan.coverings.front().scene;
+  const std::array<std::string_view, 4> omitted{"robot.mass", "robot.speed", "covering.thickness", "covering.modulus"};
+  const double sf = plan.options.safety_factor;
+  s += fmt::format(
+      "set title \"covopt speed-limit: the largest safe impact speed over the reflected robot mass\\n{}; "
+      "limits {:g} MPa, {:g} J/cm²{}; criterion {}\"\n",
+      SceneHeadline(headline_scene, omitted), plan.options.limits.laceration_tensile_stress_Pa * 1e-6,
+      plan.options.limits.contusion_energy_density_J_per_m2 * 1e-4,
+      sf != 1.0 ? fmt::format(", safety factor {:g}", sf) : std::string(), optim::ToString(plan.options.criterion()));
+  s += "set logscale xy\nset grid xtics ytics mxtics mytics linecolor rgb '#dddddd'\n";
+  s += "set xlabel 'reflected robot mass [kg]'\nset ylabel 'max safe impact speed [m/s]'\n";
+  s += "set key outside right top\nset autoscale xfix\n";
+  s += "plot ";
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    const bool bare = curves[i].title == "bare robot";
+    s += fmt::format("$data index {} using 1:2 with lines linewidth 2 {}linecolor rgb '{}' title {}{}", i,
+                     bare ? "dashtype 2 " : "", bare ? std::string_view("#000000") : colours[i % colours.size()],
+                     GnuplotQuoted(curves[i].title), i + 1 < curves.size() ? ", " : "\n");
+  }
+  s += "unset output\n";
+  return s;
+}
+
+}  // namespace
+
+CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
+  CLI::App* sub = app.add_subcommand(
+      "speed-limit", "The largest safe impact speed of the robot with its covering (or, --solve-for mass, "
+                     "the largest safe reflected mass), per reflected mass");
+  sub->footer(std::string(kFooter));
+  AddSceneOptions(*sub, options.scene);
+  // --material is repeatable here (one block of rows and one chart curve each).
+  sub->remove_option(sub->get_option("--material"));
+  sub->add_option("--material", options.materials,
+                  "covering modulus and Poisson ratio from the material catalog; repeat it for one block of "
+                  "rows and one chart curve per material")
+      ->type_name("NAME")
+      ->group("Scene");
+  sub->add_option("--safety-factor", options.scene.safety_factor,
+                  "the ratios must stay <= 1/factor, 1-100 (default 1)")
+      ->type_name("RATIO")
+      ->group("Limits");
+  sub->add_flag("--allow-full-compression", options.allow_full_compression,
+                "the paper's criterion: a covering fully compressed at the peak may count as safe (default: "
+                "it may not)")
+      ->group("Limits");
+  sub->add_option("--solve-for", options.solve_for,
+                  "speed (default): the max safe speed per --robot-mass; mass: the max safe reflected mass per "
+                  "--speed")
+      ->type_name("speed|mass")
+      ->group("Limits");
+  sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")->group("Output");
+  sub->add_option("--csv", options.csv_file, "write the rows as CSV ('-': to stdout instead of the table)")
+      ->type_name("FILE.csv|-")
+      ->group("Output");
+  sub->add_option("--plot", options.plot_file,
+                  "chart with gnuplot: max safe speed over reflected mass, one curve per --material and the "
+                  "bare robot")
+      ->type_name("FILE.png|FILE.svg")
+      ->group("Output");
+  return sub;
+}
+
+SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
+  SpeedLimitPlan plan;
+  if (options.solve_for) {
+    if (*options.solve_for == "speed") {
+      plan.quantity = SpeedLimitQuantity::kSpeed;
+    } else if (*options.solve_for == "mass") {
+      plan.quantity = SpeedLimitQuantity::kMass;
+    } else {
+      throw InputError(fmt::format("--solve-for: expected speed or mass (got '{}')", *options.solve_for));
+    }
+  }
+  const bool by_speed = plan.quantity == SpeedLimitQuantity::kSpeed;
+  // The quantity solved for is not an input; the one the rows vary may be a list.
+  const std::string solved_key = by_speed ? "robot.speed" : "robot.mass";
+  const std::string varied_key = by_speed ? "robot.mass" : "robot.speed";
+  const std::string_view solved_flag = by_speed ? "--speed" : "--robot-mass";
+  const std::string_view varied_flag = by_speed ? "--robot-mass" : "--speed";
+  if (const auto typed = options.scene.scene_values.find(solved_key); typed != options.scene.scene_values.end()) {
+    throw InputError(fmt::format("{} '{}': speed-limit --solve-for {} computes it; drop {}{}", solved_flag,
+                                 typed->second, by_speed ? "speed" : "mass", solved_flag,
+                                 by_speed ? " (or add --solve-for mass for the max safe mass at that speed)" : ""));
+  }
+  SimulateOptions scene_options = options.scene;
+  scene_options.json = false;
+  std::optional<std::string> varied_text;
+  if (const auto typed = scene_options.scene_values.find(varied_key); typed != scene_options.scene_values.end()) {
+    varied_text = typed->second;
+    scene_options.scene_values.erase(typed);
+  }
+  if (!options.materials.empty() && (scene_options.scene_values.count("covering.modulus") != 0 ||
+                                     scene_options.scene_values.count("covering.poisson") != 0)) {
+    throw InputError(fmt::format("--material '{}' sets the covering's modulus and Poisson ratio; give either "
+                                 "--material or --covering-modulus/--covering-poisson, not both",
+                                 options.materials.front()));
+  }
+  // One resolved scene per covering: the one place the scene is read (ResolveSimulation).
+  if (options.materials.empty()) {
+    plan.coverings.push_back(ResolveSimulation(scene_options));
+  } else {
+    for (const std::string& name : options.materials) {
+      scene_options.material = name;
+      plan.coverings.push_back(ResolveSimulation(scene_options));
+    }
+  }
+  if (varied_text) {
+    plan.values = ParseValues(*varied_text, by_speed ? "robot-mass" : "speed", varied_flag);
+    plan.values_source = fmt::format("{} '{}'", varied_flag, *varied_text);
+    for (SimulationPlan& covering : plan.coverings) covering.sources[varied_key] = plan.values_source;
+  } else {
+    const Scene& scene = plan.coverings.front().scene;
+    plan.values = {by_speed ? scene.robot.mass_kg : scene.robot.speed_m_per_s};
+  }
+
+  const SimulationPlan& first = plan.coverings.front();
+  plan.options.limits = first.limits;
+  plan.options.safety_factor = first.safety_factor;
+  plan.options.allow_full_compression = options.allow_full_compression;
+  plan.json = options.json;
+  if (options.csv_file) {
+    if (options.csv_file->empty()) throw InputError("--csv: empty file name");
+    plan.csv_file = options.csv_file;
+  }
+  if (options.plot_file) {
+    if (!by_speed) {
+      throw InputError("--plot draws the max safe speed over the reflected mass; it applies with --solve-for "
+                       "speed (the default)");
+    }
+    const auto format = PlotFormatFor(*options.plot_file);
+    if (!format) {
+      throw InputError(fmt::format("--plot: cannot tell the format of '{}'; name the file *.png or *.svg",
+                                   *options.plot_file));
+    }
+    plan.plot_file = options.plot_file;
+    plan.plot_format = *format;
+  }
+  if (plan.json && plan.csv_file && *plan.csv_file == "-") {
+    throw InputError("--json and --csv - both print to stdout; give --csv a file name");
+  }
+  return plan;
+}
+
+int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err) {
+  const CommandErrors errors(err, "speed-limit");
+  SpeedLimitPlan plan;
+  try {
+    plan = ResolveSpeedLimit(options);
+  } catch (const std::invalid_argument& e) {  // InputError and the library's own checks
+    return errors.BadInput(e.what());
+  }
+  std::string bad_input;
+  const std::vector<SpeedLimitRow> rows = ComputeRows(plan, &bad_input);
+  if (!bad_input.empty()) return errors.BadInput(bad_input);
+
+  std::vector<std::string> input_warnings;
+  for (const SimulationPlan& covering : plan.coverings) {
+    for (std::string& w : InputWarnings(covering)) {
+      if (std::find(input_warnings.begin(), input_warnings.end(), w) == input_warnings.end()) {
+        input_warnings.push_back(std::move(w));
+      }
+    }
+  }
+  const Scene& scene = plan.coverings.front().scene;
+  try {
+    if (plan.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+    if (plan.csv_file && *plan.csv_file != "-") WriteFileAtomically(*plan.csv_file, CsvText(plan, rows));
+    if (plan.plot_file) {
+      RunGnuplot(*plan.plot_file, [&](const std::string& output_path) { return SafetyMapScript(plan, output_path); });
+    }
+  } catch (const OutputError& e) {
+    return errors.Failed(e.what());
+  }
+
+  if (plan.json) {
+    out << report::SpeedLimitJson(plan.quantity, scene, plan.options, rows, input_warnings) << '\n';
+  } else if (plan.csv_file && *plan.csv_file == "-") {
+    out << CsvText(plan, rows);
+  } else {
+    const bool by_speed = plan.quantity == SpeedLimitQuantity::kSpeed;
+    std::vector<std::string_view> omitted{"robot.mass", "robot.speed"};
+    if (plan.coverings.size() > 1) omitted.push_back("covering.modulus");
+    std::string headline = SceneHeadline(scene, omitted);
+    if (!by_speed && plan.values.size() == 1) headline += fmt::format("; at {:g} m/s", plan.values.front());
+    fmt::print(out, "Scene      {}\n", headline);
+    if (plan.coverings.size() == 1 && plan.coverings.front().covering_material && scene.covering.thickness_m > 0.0) {
+      fmt::print(out, "Material   {}\n", plan.coverings.front().covering_material->name);
+    }
+    const double sf = plan.options.safety_factor;
+    fmt::print(out, "Limits     laceration {:g} MPa, contusion {:g} J/cm², safety factor {:g}{}\n",
+               plan.options.limits.laceration_tensile_stress_Pa * 1e-6,
+               plan.options.limits.contusion_energy_density_J_per_m2 * 1e-4, sf,
+               sf > 1 ? fmt::format(": ratios <= {:.4g}", 1.0 / sf) : std::string());
+    fmt::print(out, "Criterion  {}\n", Criterion(plan.options));
+    fmt::print(out, "Search     {}; the ratios are those of the impact at the limit\n\n",
+               by_speed ? fmt::format("speeds up to {:g} m/s (the model's ceiling)", plan.options.max_speed_m_per_s)
+                        : fmt::format("reflected masses up to {:g} kg (the model's ceiling), and a fixed robot",
+                                      plan.options.max_mass_kg));
+    PrintRows(out, plan, rows);
+    for (const std::string& w : input_warnings) fmt::print(out, "Warning: {}\n", w);
+    for (const std::string& w : report::SpeedLimitRowWarnings(plan.quantity, rows)) {
+      fmt::print(out, "Warning: {}\n", w);
+    }
+    if (plan.csv_file || plan.plot_file) {
+      fmt::print(out, "Wrote      {}{}{}\n", plan.csv_file.value_or(""), plan.csv_file && plan.plot_file ? ", " : "",
+                 plan.plot_file.value_or(""));
+    }
+  }
+  out.flush();
+  if (!out) return errors.Failed("cannot write the results to standard output");
+  return 0;
+}
+
+}  // namespace covopt::cli

@@ -1,0 +1,79 @@
+#pragma once
+/// @file speed_limit.hpp
+/// `covopt speed-limit`: the largest safe impact speed of a robot with its covering (the speed
+/// a power-and-force-limiting controller enforces), or with --solve-for mass the largest safe
+/// reflected mass at a speed.
+///
+///     covopt speed-limit [scene flags] [--material NAME]... [--robot-mass 0.5kg..50kg:log:20,fixed]
+///                        [--solve-for speed|mass] [--safety-factor X] [--allow-full-compression]
+///                        [--json] [--csv FILE|-] [--plot FILE.png|FILE.svg]
+///
+/// The scene comes from Scene{}, --scene, the scene flags and --material exactly as in
+/// `covopt simulate` (ResolveSimulation); --robot-mass (or --speed with --solve-for mass) may
+/// be a list or range in the sweep syntax (ParseSweepAxis), one row per value; several
+/// --material give one block of rows (and one chart curve) each. Each row is one library call,
+/// optim::MaxSafeSpeed or optim::MaxSafeMass; the JSON is report::SpeedLimitJson.
+/// Exit codes: 0 an answer (also "no speed is safe"), 1 an output could not be written,
+/// 2 bad input.
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "covopt/optim/speed_limit.hpp"
+#include "covopt/report/speed_limit_json.hpp"
+#include "plot.hpp"
+#include "simulate.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace covopt::cli {
+
+/// The options of `covopt speed-limit`, as typed.
+struct SpeedLimitCommandOptions {
+  /// The scene flags, --scene, --thresholds, --catalog/--no-builtin, the limits and
+  /// --safety-factor, read as `covopt simulate` reads them. Its robot.mass (robot.speed with
+  /// --solve-for mass) may be a list or range; its `material` stays unset (see materials).
+  SimulateOptions scene;
+  /// --material NAME (repeatable): one block of rows and one chart curve per material.
+  std::vector<std::string> materials;
+  /// --solve-for speed (default) | mass.
+  std::optional<std::string> solve_for;
+  /// --allow-full-compression: the paper's criterion (the ratios only).
+  bool allow_full_compression = false;
+  bool json = false;                      ///< --json
+  std::optional<std::string> csv_file;    ///< --csv FILE ("-": stdout instead of the table)
+  std::optional<std::string> plot_file;   ///< --plot FILE.png|FILE.svg (solve-for speed)
+};
+
+/// What the options resolve to.
+struct SpeedLimitPlan {
+  report::SpeedLimitQuantity quantity = report::SpeedLimitQuantity::kSpeed;
+  /// One resolved scene per covering (per --material, or the scene's own covering).
+  std::vector<SimulationPlan> coverings;
+  /// The values the rows vary: reflected masses [kg] (solving for the speed; +inf = fixed)
+  /// or speeds [m/s] (solving for the mass). One value: the scene's own.
+  std::vector<double> values;
+  /// How messages name where the values came from: "--robot-mass '0.5kg..50kg'" or "".
+  std::string values_source;
+  optim::SpeedLimitOptions options;
+  bool json = false;
+  std::optional<std::string> csv_file;
+  std::optional<std::string> plot_file;
+  PlotFormat plot_format = PlotFormat::kPng;
+};
+
+/// Adds the `speed-limit` subcommand to `app`, storing what is typed into `options`.
+CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options);
+
+/// Reads and checks the options (the scene's ranges are left to the library).
+/// @throws InputError naming the flag, the value and what is allowed.
+SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options);
+
+/// Runs the subcommand; returns the exit code (0, 1 or 2).
+int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace covopt::cli

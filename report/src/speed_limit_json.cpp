@@ -1,0 +1,171 @@
+// Speed (or mass) limits as JSON text (covopt speed-limit --json, covopt.speed_limit()).
+#include "covopt/report/speed_limit_json.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "covopt/report/simulation_json.hpp"
+#include "json_number.hpp"
+
+namespace covopt::report {
+namespace {
+
+using nlohmann::ordered_json;
+
+constexpr std::array<std::string_view, 8> kSpeedColumns = {
+    "material", "robot_mass_kg", "max_safe_speed_m_per_s", "limited_by", "laceration_ratio",
+    "contusion_ratio", "compression_ratio", "status"};
+constexpr std::array<std::string_view, 8> kMassColumns = {
+    "material", "speed_m_per_s", "max_safe_mass_kg", "limited_by", "laceration_ratio",
+    "contusion_ratio", "compression_ratio", "status"};
+
+std::string Shortest(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+std::string Readable(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
+
+/// The parts every row shares, whichever quantity it solves for.
+struct RowAnswer {
+  optim::SpeedLimitStatus status;
+  double limit;  ///< the max safe speed [m/s] or mass [kg]
+  optim::LimitingCriterion limited_by;
+  const optim::LimitRatios* ratios;
+  const std::string* message;
+};
+
+RowAnswer Answer(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
+  if (quantity == SpeedLimitQuantity::kSpeed) {
+    const optim::SpeedLimit& l = row.speed_limit;
+    return {l.status, l.max_safe_speed_m_per_s, l.limited_by, &l.at_limit, &l.message};
+  }
+  const optim::MassLimit& l = row.mass_limit;
+  return {l.status, l.max_safe_mass_kg, l.limited_by, &l.at_limit, &l.message};
+}
+
+ordered_json MassValue(double kg) { return std::isinf(kg) ? ordered_json("fixed") : internal::Number(kg); }
+
+ordered_json RowJson(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
+  const RowAnswer a = Answer(quantity, row);
+  const bool none = a.status == optim::SpeedLimitStatus::kNoSafeValue;
+  ordered_json j;
+  j["material"] = row.material ? ordered_json(*row.material) : ordered_json(nullptr);
+  if (quantity == SpeedLimitQuantity::kSpeed) {
+    j["robot_mass_kg"] = MassValue(row.robot_mass_kg);
+    j["max_safe_speed_m_per_s"] = none ? ordered_json(nullptr) : internal::Number(a.limit);
+  } else {
+    j["speed_m_per_s"] = internal::Number(row.speed_m_per_s);
+    j["max_safe_mass_kg"] = none ? ordered_json(nullptr) : MassValue(a.limit);
+  }
+  j["limited_by"] = optim::ToString(a.limited_by);
+  j["laceration_ratio"] = internal::Number(a.ratios->laceration_ratio);
+  j["contusion_ratio"] = internal::Number(a.ratios->contusion_ratio);
+  j["compression_ratio"] = internal::Number(a.ratios->compression_ratio);
+  j["status"] = optim::ToString(a.status);
+  return j;
+}
+
+std::string RowName(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
+  std::string name = quantity == SpeedLimitQuantity::kSpeed
+                         ? "robot mass " + (std::isinf(row.robot_mass_kg) ? std::string("fixed")
+                                                                           : Readable(row.robot_mass_kg) + " kg")
+                         : "speed " + Readable(row.speed_m_per_s) + " m/s";
+  if (row.material) name += " (" + *row.material + ")";
+  return name;
+}
+
+}  // namespace
+
+const char* ToString(SpeedLimitQuantity quantity) noexcept {
+  return quantity == SpeedLimitQuantity::kSpeed ? "speed" : "mass";
+}
+
+std::span<const std::string_view> SpeedLimitColumns(SpeedLimitQuantity quantity) noexcept {
+  return quantity == SpeedLimitQuantity::kSpeed ? std::span<const std::string_view>(kSpeedColumns)
+                                                : std::span<const std::string_view>(kMassColumns);
+}
+
+std::vector<std::string> SpeedLimitCsvCells(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
+  const ordered_json j = RowJson(quantity, row);
+  std::vector<std::string> cells;
+  for (const auto& [key, value] : j.items()) {
+    if (value.is_null()) cells.emplace_back();
+    else if (value.is_string()) cells.push_back(value.get<std::string>());
+    else cells.push_back(Shortest(value.get<double>()));
+  }
+  return cells;
+}
+
+std::vector<std::string> SpeedLimitRowWarnings(SpeedLimitQuantity quantity, std::span<const SpeedLimitRow> rows) {
+  std::vector<std::string> warnings;
+  for (const SpeedLimitRow& row : rows) {
+    const RowAnswer a = Answer(quantity, row);
+    if (a.status == optim::SpeedLimitStatus::kSafeUpToSearchLimit) {
+      const bool unlimited = quantity == SpeedLimitQuantity::kMass && std::isinf(a.limit);
+      warnings.push_back(RowName(quantity, row) + ": " + *a.message +
+                         (unlimited ? "" : "; the true limit is higher (limited_by \"none\")"));
+    } else if (a.status == optim::SpeedLimitStatus::kNoSafeValue) {
+      warnings.push_back(RowName(quantity, row) + ": " + *a.message);
+    }
+  }
+  return warnings;
+}
+
+std::string SpeedLimitJson(SpeedLimitQuantity quantity, const Scene& scene, const optim::SpeedLimitOptions& options,
+                           std::span<const SpeedLimitRow> rows, std::span<const std::string> input_warnings,
+                           int indent) {
+  const double sf = options.safety_factor;
+  const double laceration = options.limits.laceration_tensile_stress_Pa;
+  const double contusion = options.limits.contusion_energy_density_J_per_m2;
+  ordered_json j;
+  j["solve_for"] = ToString(quantity);
+  j["criterion"] = optim::ToString(options.criterion());
+  j["safety_factor"] = sf;
+  j["limits"] = {{"laceration_Pa", laceration},
+                 {"contusion_J_per_m2", contusion},
+                 {"derated_laceration_Pa", laceration / sf},
+                 {"derated_contusion_J_per_m2", contusion / sf}};
+  if (quantity == SpeedLimitQuantity::kSpeed) {
+    j["search_limit"] = {{"max_speed_m_per_s", options.max_speed_m_per_s}};
+  } else {
+    j["search_limit"] = {{"max_mass_kg", options.max_mass_kg}};
+  }
+  ordered_json list = ordered_json::array();
+  for (const SpeedLimitRow& row : rows) list.push_back(RowJson(quantity, row));
+  j["rows"] = list;
+
+  ordered_json shown = ordered_json::parse(SceneJson(scene));
+  const bool by_speed = quantity == SpeedLimitQuantity::kSpeed;
+  bool shared = !rows.empty();
+  for (const SpeedLimitRow& row : rows) {
+    const SpeedLimitRow& first = rows.front();
+    shared = shared && (by_speed ? row.robot_mass_kg == first.robot_mass_kg : row.speed_m_per_s == first.speed_m_per_s);
+  }
+  if (by_speed) {
+    shown["robot"].erase("speed_m_per_s");
+    if (shared) shown["robot"]["mass_kg"] = MassValue(rows.front().robot_mass_kg);
+    else shown["robot"].erase("mass_kg");
+  } else {
+    shown["robot"].erase("mass_kg");
+    if (shared) shown["robot"]["speed_m_per_s"] = internal::Number(rows.front().speed_m_per_s);
+    else shown["robot"].erase("speed_m_per_s");
+  }
+  j["scene"] = shown;
+  std::vector<std::string> warnings(input_warnings.begin(), input_warnings.end());
+  for (std::string& w : SpeedLimitRowWarnings(quantity, rows)) warnings.push_back(std::move(w));
+  j["warnings"] = warnings;
+  return j.dump(indent);
+}
+
+}  // namespace covopt::report
