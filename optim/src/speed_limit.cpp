@@ -158,15 +158,10 @@ PenetrationLimit FindPenetrationLimit(const ImpactModel& model, const SpeedLimit
 }
 
 /// The exact path on `scene`: the ratios, and whether the impact is admissible.
-struct Evaluation {
-  LimitRatios ratios;
-  bool admissible = false;
-};
-
-Evaluation Evaluate(const Scene& scene, const SpeedLimitOptions& options) {
+ImpactJudgement Evaluate(const Scene& scene, const SpeedLimitOptions& options) {
   const ImpactModel model = ImpactModel::FromScene(scene);
   const ImpactPeaks peaks = ExactPeaks(model);
-  Evaluation e;
+  ImpactJudgement e;
   e.ratios.laceration_ratio = peaks.max_tensile_stress_Pa / options.limits.laceration_tensile_stress_Pa;
   e.ratios.contusion_ratio =
       peaks.max_energy_density_J_per_m2 / options.limits.contusion_energy_density_J_per_m2;
@@ -183,10 +178,10 @@ Evaluation Evaluate(const Scene& scene, const SpeedLimitOptions& options) {
 /// Lowers `value` by a few ulps until the exact path at `set(value)` is admissible: the limit
 /// computed on the δ axis can round to just above the switch or the limit it stands for.
 template <class Setter>
-Evaluation NudgeDown(double& value, const Scene& scene, const SpeedLimitOptions& options, Setter set) {
+ImpactJudgement NudgeDown(double& value, const Scene& scene, const SpeedLimitOptions& options, Setter set) {
   Scene probe = scene;
   set(probe, value);
-  Evaluation e = Evaluate(probe, options);
+  ImpactJudgement e = Evaluate(probe, options);
   double step = 2.0 * std::numeric_limits<double>::epsilon();
   for (int attempt = 0; attempt < 40 && !e.admissible; ++attempt, step *= 2.0) {
     value *= 1.0 - step;
@@ -236,6 +231,11 @@ std::string MassLimit::BriefReport() const {
          ": " + RatiosText(at_limit, at_limit.compression_ratio > 0.0) + ".";
 }
 
+ImpactJudgement JudgeImpact(const Scene& scene, const SpeedLimitOptions& options) {
+  CheckOptions(options);
+  return Evaluate(scene, options);
+}
+
 SpeedLimit MaxSafeSpeed(const Scene& scene, const SpeedLimitOptions& options) {
   CheckOptions(options);
   Scene base = scene;
@@ -257,7 +257,7 @@ SpeedLimit MaxSafeSpeed(const Scene& scene, const SpeedLimitOptions& options) {
     return result;
   }
   double value = speed;
-  Evaluation at = {};
+  ImpactJudgement at = {};
   if (value >= kMinSpeed_m_per_s) at = NudgeDown(value, base, options, set_speed);
   if (!(value >= kMinSpeed_m_per_s) || !at.admissible) {
     result.status = SpeedLimitStatus::kNoSafeValue;
@@ -292,7 +292,7 @@ MassLimit MaxSafeMass(const Scene& scene, const SpeedLimitOptions& options) {
   if (std::isfinite(head) && reduced >= head) {
     Scene fixed = base;
     fixed.robot.mass_kg = kFixed;
-    const Evaluation at = Evaluate(fixed, options);
+    const ImpactJudgement at = Evaluate(fixed, options);
     if (at.admissible) {
       result.status = SpeedLimitStatus::kSafeUpToSearchLimit;
       result.limited_by = LimitingCriterion::kNone;
@@ -313,7 +313,7 @@ MassLimit MaxSafeMass(const Scene& scene, const SpeedLimitOptions& options) {
     return result;
   }
   double value = mass;
-  Evaluation at = {};
+  ImpactJudgement at = {};
   if (value > 0.0) at = NudgeDown(value, base, options, set_mass);
   if (!(value > 0.0) || !at.admissible) {
     result.status = SpeedLimitStatus::kNoSafeValue;

@@ -8,3 +8,4 @@
 #include "covopt/optim/design.hpp"
 #include "covopt/optim/problem.hpp"
 #include "covopt/optim/speed_limit.hpp"
+#include "covopt/optim/trajectory_check.hpp"

@@ -98,6 +98,18 @@ struct LimitRatios {
   double max_penetration_m = 0.0;  ///< δ_max [m]
 };
 
+/// One impact judged by the rules of a limit search.
+struct ImpactJudgement {
+  LimitRatios ratios;       ///< the exact path's ratios at the scene's own speed and mass
+  /// Both ratios <= 1/safety_factor and, under the default criterion, not fully compressed.
+  bool admissible = false;
+};
+
+/// The exact path on `scene` (its own speed and mass), judged with the criterion, safety
+/// factor and limits of `options`: what MaxSafeSpeed and MaxSafeMass call safe.
+/// @throws std::invalid_argument for a bad scene or options.
+ImpactJudgement JudgeImpact(const Scene& scene, const SpeedLimitOptions& options = {});
+
 /// The answer of MaxSafeSpeed.
 struct SpeedLimit {
   SpeedLimitStatus status = SpeedLimitStatus::kLimited;
