@@ -1,0 +1,263 @@
+// `covopt speed-limit` run in-process: that every row is the library's answer for its scene
+// (optim::MaxSafeSpeed / MaxSafeMass, to the bit), that lists and ranges of masses (or speeds)
+// give one row each, that several --material give one block each, that --json, --csv and the
+// table agree, that the edges are answers (safe up to 100 m/s with limited_by "none" and a
+// warning; nothing safe: null), that --plot draws a chart (skipped without gnuplot) and a
+// missing gnuplot is exit 1 with no file, and that bad input is exit 2 with one line on
+// stderr and nothing on stdout.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_test_support.hpp"
+#include "covopt/materials/catalog.hpp"
+#include "covopt/optim/speed_limit.hpp"
+#include "plot.hpp"
+
+namespace {
+
+using covopt::cli::testing::CliRun;
+using covopt::cli::testing::Run;
+using covopt::cli::testing::ScopedEnv;
+using covopt::cli::testing::SplitLines;
+using covopt::cli::testing::TempDir;
+using nlohmann::json;
+
+json JsonOf(const CliRun& run) {
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  return json::parse(run.out);
+}
+
+std::string ReadFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("speed-limit prints the library's max safe speed for the paper's scene", "[speed_limit]") {
+  const CliRun run = Run({"speed-limit"});
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.err.empty());
+  const covopt::optim::SpeedLimit expected = covopt::optim::MaxSafeSpeed(covopt::Scene{});
+  CHECK(run.out.find(fmt::format("{:.4g} m/s", expected.max_safe_speed_m_per_s)) != std::string::npos);
+  CHECK(run.out.find("contusion") != std::string::npos);
+  CHECK(run.out.find("Criterion  safe, and the covering not fully compressed") != std::string::npos);
+}
+
+TEST_CASE("speed-limit --json: one row per mass of a range, each the library's answer to the bit", "[speed_limit]") {
+  const json j = JsonOf(Run({"speed-limit", "--robot-mass", "0.5kg..50kg:log:5,fixed", "--covering-thickness",
+                             "20mm", "--covering-modulus", "16MPa", "--json"}));
+  CHECK(j["solve_for"] == "speed");
+  CHECK(j["criterion"] == "no-full-compression");
+  CHECK(j["search_limit"]["max_speed_m_per_s"] == 100.0);
+  CHECK(j["scene"]["robot"].count("speed_m_per_s") == 0);
+  CHECK(j["scene"]["robot"].count("mass_kg") == 0);  // the rows vary it
+  CHECK(j["scene"]["covering"]["thickness_m"] == 0.02);
+  const json& rows = j["rows"];
+  REQUIRE(rows.size() == 6);
+  CHECK(rows[5]["robot_mass_kg"] == "fixed");
+  double previous = 1e300;
+  for (const json& row : rows) {
+    covopt::Scene scene;
+    scene.covering.thickness_m = 0.02;
+    scene.covering.youngs_modulus_Pa = 16e6;
+    scene.robot.mass_kg = row["robot_mass_kg"].is_string() ? covopt::kFixed : row["robot_mass_kg"].get<double>();
+    const covopt::optim::SpeedLimit expected = covopt::optim::MaxSafeSpeed(scene);
+    CHECK(row["max_safe_speed_m_per_s"].get<double>() == expected.max_safe_speed_m_per_s);
+    CHECK(row["limited_by"] == covopt::optim::ToString(expected.limited_by));
+    CHECK(row["laceration_ratio"].get<double>() == expected.at_limit.laceration_ratio);
+    CHECK(row["contusion_ratio"].get<double>() == expected.at_limit.contusion_ratio);
+    CHECK(row["status"] == "limited");
+    CHECK(row["material"].is_null());
+    CHECK(row["max_safe_speed_m_per_s"].get<double>() < previous);  // heavier is slower
+    previous = row["max_safe_speed_m_per_s"].get<double>();
+  }
+  CHECK(j["warnings"].empty());
+}
+
+TEST_CASE("speed-limit --solve-for mass: one row per speed, 'fixed' when even a fixed robot is safe",
+          "[speed_limit]") {
+  const json j = JsonOf(Run({"speed-limit", "--solve-for", "mass", "--speed", "0.5m/s,1.5m/s,2m/s", "--json"}));
+  CHECK(j["solve_for"] == "mass");
+  const json& rows = j["rows"];
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[0]["max_safe_mass_kg"] == "fixed");
+  CHECK(rows[0]["limited_by"] == "none");
+  CHECK(rows[0]["status"] == "safe-up-to-search-limit");
+  for (int i = 1; i < 3; ++i) {
+    covopt::Scene scene;
+    scene.robot.speed_m_per_s = rows[i]["speed_m_per_s"].get<double>();
+    const covopt::optim::MassLimit expected = covopt::optim::MaxSafeMass(scene);
+    CHECK(rows[i]["max_safe_mass_kg"].get<double>() == expected.max_safe_mass_kg);
+    CHECK(rows[i]["limited_by"] == "contusion");
+  }
+  REQUIRE(j["warnings"].size() == 1);
+  CHECK(j["warnings"][0].get<std::string>().find("fixed robot") != std::string::npos);
+}
+
+TEST_CASE("speed-limit --csv writes the JSON rows' columns; '-' prints them", "[speed_limit]") {
+  const TempDir dir;
+  const auto csv = dir / "limits.csv";
+  const std::vector<std::string> args{"speed-limit", "--robot-mass", "2kg,10kg,fixed", "--material",
+                                      "polystyrene foam 27.6"};
+  std::vector<std::string> with_csv = args;
+  with_csv.insert(with_csv.end(), {"--csv", csv.string()});
+  const CliRun table = Run(with_csv);
+  REQUIRE(table.exit_code == 0);
+  CHECK(table.out.find("Wrote") != std::string::npos);
+  std::vector<std::string> with_json = args;
+  with_json.push_back("--json");
+  const json j = JsonOf(Run(with_json));
+  const std::vector<std::string> lines = SplitLines(ReadFile(csv));
+  REQUIRE(lines.size() == 4);
+  CHECK(lines[0] ==
+        "material,robot_mass_kg,max_safe_speed_m_per_s,limited_by,laceration_ratio,contusion_ratio,"
+        "compression_ratio,status");
+  CHECK(lines[3].rfind("polystyrene foam 27.6,fixed,", 0) == 0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const json& row = j["rows"][i];
+    CHECK(row["material"] == "polystyrene foam 27.6");
+    const double speed = row["max_safe_speed_m_per_s"].get<double>();
+    CHECK(lines[i + 1].find(fmt::format(",{},", speed)) != std::string::npos);
+  }
+  std::vector<std::string> to_stdout = args;
+  to_stdout.insert(to_stdout.end(), {"--csv", "-"});
+  const CliRun printed = Run(to_stdout);
+  REQUIRE(printed.exit_code == 0);
+  CHECK(printed.out == ReadFile(csv));
+
+  // An unwritable target: exit 1, the message names the file, nothing left behind.
+  std::vector<std::string> bad = args;
+  bad.insert(bad.end(), {"--csv", (dir / "no-such-dir" / "x.csv").string()});
+  const CliRun failed = Run(bad);
+  CHECK(failed.exit_code == 1);
+  CHECK(failed.err.find("x.csv") != std::string::npos);
+}
+
+TEST_CASE("speed-limit: several --material give one block of rows each", "[speed_limit]") {
+  const json j = JsonOf(Run({"speed-limit", "--robot-mass", "1kg,10kg", "--covering-thickness", "20mm", "--material",
+                             "XPS Foamular 250", "--material", "EPS geofoam EPS22", "--json"}));
+  const json& rows = j["rows"];
+  REQUIRE(rows.size() == 4);
+  CHECK(rows[0]["material"] == "XPS Foamular 250");
+  CHECK(rows[1]["material"] == "XPS Foamular 250");
+  CHECK(rows[2]["material"] == "EPS geofoam EPS22");
+  CHECK(rows[3]["robot_mass_kg"] == 10.0);
+  const auto& catalog = covopt::materials::Catalog::BuiltIn();
+  covopt::Scene scene;
+  scene.covering.thickness_m = 0.02;
+  scene.covering.youngs_modulus_Pa = catalog.Find("EPS geofoam EPS22")->youngs_modulus_Pa;
+  scene.robot.mass_kg = 10.0;
+  CHECK(rows[3]["max_safe_speed_m_per_s"].get<double>() ==
+        covopt::optim::MaxSafeSpeed(scene).max_safe_speed_m_per_s);
+  const CliRun table = Run({"speed-limit", "--covering-thickness", "20mm", "--material", "XPS Foamular 250",
+                            "--material", "EPS geofoam EPS22"});
+  REQUIRE(table.exit_code == 0);
+  CHECK(table.out.find("EPS geofoam EPS22") != std::string::npos);
+}
+
+TEST_CASE("speed-limit: safe up to 100 m/s says so; nothing safe is null", "[speed_limit]") {
+  const json safe = JsonOf(Run({"speed-limit", "--robot-mass", "0.1g", "--covering-thickness", "0",
+                                "--laceration-limit", "1GPa", "--contusion-limit", "1000J/cm2", "--json"}));
+  CHECK(safe["rows"][0]["max_safe_speed_m_per_s"] == 100.0);
+  CHECK(safe["rows"][0]["limited_by"] == "none");
+  REQUIRE(safe["warnings"].size() == 1);
+  CHECK(safe["warnings"][0].get<std::string>().find("100 m/s") != std::string::npos);
+
+  const json none = JsonOf(Run({"speed-limit", "--laceration-limit", "0.001Pa", "--json"}));
+  CHECK(none["rows"][0]["max_safe_speed_m_per_s"].is_null());
+  CHECK(none["rows"][0]["status"] == "no-safe-value");
+  CHECK(none["rows"][0]["limited_by"] == "laceration");
+  const CliRun table = Run({"speed-limit", "--laceration-limit", "0.001Pa"});
+  REQUIRE(table.exit_code == 0);
+  CHECK(table.out.find("none safe") != std::string::npos);
+  CHECK(table.out.find("nan") == std::string::npos);
+}
+
+TEST_CASE("speed-limit reads the scene file, limits and the criterion as the other commands do", "[speed_limit]") {
+  const std::string scene_file = std::string(COVOPT_CLI_EXAMPLES_DIR) + "/paper_scene.toml";
+  const CliRun run = Run({"speed-limit", "--scene", scene_file, "--json"});
+  REQUIRE(run.exit_code == 0);
+  const json strict = JsonOf(Run({"speed-limit", "--covering-thickness", "10mm", "--covering-modulus", "2MPa",
+                                  "--json"}));
+  const json paper = JsonOf(Run({"speed-limit", "--covering-thickness", "10mm", "--covering-modulus", "2MPa",
+                                 "--allow-full-compression", "--json"}));
+  CHECK(strict["rows"][0]["limited_by"] == "full-compression");
+  CHECK(paper["criterion"] == "paper");
+  CHECK(paper["rows"][0]["max_safe_speed_m_per_s"].get<double>() >
+        strict["rows"][0]["max_safe_speed_m_per_s"].get<double>());
+  const json derated = JsonOf(Run({"speed-limit", "--safety-factor", "2", "--json"}));
+  CHECK(derated["rows"][0]["contusion_ratio"].get<double>() == Approx(0.5).epsilon(1e-12));
+  CHECK(derated["safety_factor"] == 2.0);
+}
+
+TEST_CASE("speed-limit --plot draws the Safety-Map chart; a missing gnuplot is exit 1", "[speed_limit][plot]") {
+  const TempDir dir;
+  const auto png = dir / "map.png";
+  {
+    const ScopedEnv no_path("PATH", dir.path().string());
+    const CliRun missing = Run({"speed-limit", "--plot", png.string()});
+    CHECK(missing.exit_code == 1);
+    CHECK(missing.err.find("gnuplot") != std::string::npos);
+    CHECK(!std::filesystem::exists(png));
+  }
+  if (!covopt::cli::FindOnPath("gnuplot")) {
+    WARN("gnuplot is not on PATH; skipping the chart");
+    return;
+  }
+  const CliRun run = Run({"speed-limit", "--material", "XPS Foamular 250", "--material", "EPS geofoam EPS22",
+                          "--robot-mass", "1kg..100kg:log:4", "--plot", png.string()});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const std::string image = ReadFile(png);
+  REQUIRE(image.size() > 8);
+  CHECK(image.substr(1, 3) == "PNG");
+}
+
+TEST_CASE("speed-limit bad input: exit 2, one line naming the flag, nothing on stdout", "[speed_limit]") {
+  const std::vector<std::vector<std::string>> cases = {
+      {"--speed", "2m/s"},
+      {"--solve-for", "mass", "--robot-mass", "3kg"},
+      {"--solve-for", "weight"},
+      {"--robot-mass", "2kg..1kg"},
+      {"--robot-mass", "-3kg"},
+      {"--robot-mass", "5kg,,3kg"},
+      {"--robot-mass", "2e6kg"},
+      {"--solve-for", "mass", "--speed", "0..2m/s"},
+      {"--safety-factor", "0.5"},
+      {"--laceration-limit", "-1MPa"},
+      {"--material", "no such foam"},
+      {"--material", "XPS Foamular 250", "--covering-modulus", "3MPa"},
+      {"--plot", "chart.pdf"},
+      {"--solve-for", "mass", "--plot", "chart.png"},
+      {"--json", "--csv", "-"},
+      {"--csv", ""},
+      {"--covering-thickness", "-1mm"},
+  };
+  const std::vector<std::string> named = {"--speed", "--robot-mass", "--solve-for", "--robot-mass", "robot.mass",
+                                          "--robot-mass", "robot.mass", "robot.speed", "--safety-factor",
+                                          "--laceration-limit", "--material", "--material", "--plot", "--plot",
+                                          "--csv", "--csv", "covering.thickness"};
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    std::vector<std::string> args{"speed-limit"};
+    args.insert(args.end(), cases[i].begin(), cases[i].end());
+    const CliRun run = Run(args);
+    INFO(fmt::format("{}", fmt::join(args, " ")) << " -> " << run.err);
+    CHECK(run.exit_code == 2);
+    CHECK(run.out.empty());
+    CHECK(SplitLines(run.err).size() == 1);
+    CHECK(run.err.find(named[i]) != std::string::npos);
+  }
+}
