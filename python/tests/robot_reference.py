@@ -23,7 +23,9 @@ in the parent link's frame, rpy = fixed-axis roll about x, pitch about y, yaw ab
 link's frame is the joint frame moved by the joint (a rotation q about the axis, or a
 translation q along it). An <inertial> <origin> places the centre of mass and the frame the
 inertia tensor is written in. Only the links on the chain base -> tip count (the base link's
-own mass does not move); joint rotor inertia is not modelled (URDF has no field for it).
+own mass does not move) and the links that hang off them (beyond the tip, or side branches),
+rigidly, with any movable joint among those held at position 0 (covopt's documented rule);
+joint rotor inertia is not modelled (URDF has no field for it).
 
 Used by test_robot_crosscheck.py; not part of the covopt package.
 """
@@ -107,6 +109,7 @@ class UrdfModel:
     links: dict  # link name -> Inertial or None
     joints: dict  # joint name -> Joint
     parent_joint: dict  # child link name -> Joint
+    child_joints: dict  # parent link name -> [Joint]
 
     def root(self):
         roots = [name for name in self.links if name not in self.parent_joint]
@@ -151,6 +154,7 @@ def read_urdf(path):
         links[link.get("name")] = Inertial(mass, _origin(inertial), tensor)
     joints = {}
     parent_joint = {}
+    child_joints = {}
     for j in robot.findall("joint"):
         axis_element = j.find("axis")
         axis = np.array(_floats(axis_element.get("xyz"), 3, "axis xyz")
@@ -160,7 +164,8 @@ def read_urdf(path):
                       j.find("child").get("link"), _origin(j), axis)
         joints[joint.name] = joint
         parent_joint[joint.child] = joint
-    return UrdfModel(robot.get("name"), links, joints, parent_joint)
+        child_joints.setdefault(joint.parent, []).append(joint)
+    return UrdfModel(robot.get("name"), links, joints, parent_joint, child_joints)
 
 
 @dataclass
@@ -173,6 +178,7 @@ class ChainState:
     prismatic: list  # per movable joint: True if prismatic
     movable_before: dict  # link name -> number of movable joints between base and the link
     tip_frame: np.ndarray
+    locked_joint_names: list  # movable joints off the chain, held at 0
 
 
 def forward_kinematics(model, base, tip, q):
@@ -200,8 +206,22 @@ def forward_kinematics(model, base, tip, q):
             k += 1
         frames[joint.child] = joint_frame @ motion
         before[joint.child] = k
+    # Links off the chain hanging from a chain link after the base move with that link.
+    on_chain = set(frames)
+    locked = []
+    pending = [link for link in frames if link != base]
+    while pending:
+        link = pending.pop()
+        for joint in model.child_joints.get(link, []):
+            if joint.child in on_chain:
+                continue
+            if joint.type in MOVABLE_JOINT_TYPES:
+                locked.append(joint.name)
+            frames[joint.child] = frames[link] @ joint.origin
+            before[joint.child] = before[link]
+            pending.append(joint.child)
     return ChainState([j.name for j in movable], frames, axes, points, prismatic, before,
-                      frames[tip])
+                      frames[tip], sorted(locked))
 
 
 def point_jacobians(state, link, point_in_base):
@@ -266,6 +286,7 @@ def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), directio
         "min_direction": eigenvectors[:, -1],
         "contact_point_m": p,
         "joint_names": state.joint_names,
+        "locked_joint_names": state.locked_joint_names,
         "joint_space_inertia": m,
         "contact_jacobian": jv,
     }

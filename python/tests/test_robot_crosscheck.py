@@ -121,6 +121,18 @@ def test_reference_contact_point_offset_is_a_longer_last_link():
         atol=1e-15)
 
 
+def test_reference_counts_links_beyond_the_tip_as_payload_locked_at_zero():
+    # Tip link1: link 2 rides on it, straight (elbow held at 0), a rigid body of link 1.
+    q1 = 0.6
+    m11 = M1 * LC1**2 + I1 + M2 * (L1 + LC2)**2 + I2
+    across = (-math.sin(q1), math.cos(q1), 0.0)
+    r = ref.reflected_mass(PLANAR, "link1", [q1], point=(L1, 0.0, 0.0), direction=across)
+    assert r["joint_names"] == ["shoulder"]
+    assert r["locked_joint_names"] == ["elbow"]
+    np.testing.assert_allclose(r["joint_space_inertia"], [[m11]], rtol=1e-13)
+    assert r["reflected_mass_kg"] == pytest.approx(m11 / L1**2, rel=1e-12)
+
+
 def test_reference_arm_behind_a_turned_fixed_joint_turns_its_directions():
     mount = ref.rotation_from_rpy(PI / 2, 0.0, 0.3)
     q = (0.7, -1.2)
@@ -346,7 +358,12 @@ def test_covopt_reflected_mass_of_the_shipped_cobots_agrees_with_the_reference(n
 
 @needs_reflected_mass
 def test_covopt_agrees_on_an_inner_link_and_a_base_other_than_the_root():
-    _compare(FR3, "fr3_link4", FR3_READY[:4], (0.0, 0.05, 0.0), (0.0, 1.0, 0.0))
+    # Tip fr3_link4: links 5 to 8 ride on it with joints 5 to 7 held at 0, in both.
+    got, expected = _compare(FR3, "fr3_link4", FR3_READY[:4], (0.0, 0.05, 0.0), (0.0, 1.0, 0.0))
+    assert expected["locked_joint_names"] == ["fr3_joint5", "fr3_joint6", "fr3_joint7"]
+    assert any(all(name in w for name in expected["locked_joint_names"])
+               for w in got["warnings"])
+    _compare(PLANAR, "link1", [0.6], (L1, 0.0, 0.0), (0.0, 1.0, 0.0))
     _compare(UR5E, "tool0", UR5E_READY, (0.0, 0.0, 0.1), (1.0, 1.0, 0.0),
              base="base_link_inertia")
 
