@@ -20,7 +20,8 @@ from ._errors import ComputationError
 
 ComputationError.__module__ = __name__  # shown as covopt.ComputationError
 
-__all__ = ["simulate", "sweep", "optimize", "materials", "material", "ComputationError"]
+__all__ = ["simulate", "sweep", "optimize", "materials", "material", "ComputationError",
+           "max_safe_speed", "max_safe_mass", "speed_limit"]
 
 
 def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
@@ -126,3 +127,60 @@ def material(name):
     --json``. An unknown name raises ValueError: "no material 'X' in the catalog; did you
     mean ...?"."""
     return _covopt.material(name)
+
+
+def max_safe_speed(*, robot_mass=None, robot_radius=None, robot_modulus=None, robot_poisson=None,
+                   covering_modulus=None, covering_poisson=None, covering_thickness=None,
+                   head_mass=None, head_radius=None, scalp_modulus=None, scalp_poisson=None,
+                   scalp_thickness=None, skull_modulus=None, skull_poisson=None, thresholds=None,
+                   laceration_limit=None, contusion_limit=None, safety_factor=None, material=None,
+                   allow_full_compression=False):
+    """The largest impact speed [m/s] such that every speed up to it is safe: both injury
+    ratios <= 1/safety_factor and, unless allow_full_compression, the covering not fully
+    compressed at the peak (optim::MaxSafeSpeed). The scene keywords are simulate's, without
+    speed (it is what is computed).
+
+    Returns a dict: max_safe_speed_m_per_s (None when not even 1e-6 m/s is safe; 100 when
+    safe up to the model's ceiling), limited_by ("laceration", "contusion",
+    "full-compression", "none" at the ceiling), laceration_ratio, contusion_ratio,
+    compression_ratio (of the impact at the limit), status ("limited",
+    "safe-up-to-search-limit", "no-safe-value"), robot_mass_kg, material, message,
+    brief_report. Raises ValueError on bad input.
+    """
+    arguments = {name: value for name, value in locals().items() if value is not None}
+    return _covopt.max_safe_speed(**arguments)
+
+
+def max_safe_mass(*, speed=None, robot_radius=None, robot_modulus=None, robot_poisson=None,
+                  covering_modulus=None, covering_poisson=None, covering_thickness=None,
+                  head_mass=None, head_radius=None, scalp_modulus=None, scalp_poisson=None,
+                  scalp_thickness=None, skull_modulus=None, skull_poisson=None, thresholds=None,
+                  laceration_limit=None, contusion_limit=None, safety_factor=None, material=None,
+                  allow_full_compression=False):
+    """The largest reflected robot mass [kg] that is safe, with every lighter robot, at the
+    scene's speed (optim::MaxSafeMass); as max_safe_speed, without robot_mass.
+
+    Returns a dict like max_safe_speed's with max_safe_mass_kg ("fixed" when even a fixed
+    robot is safe) and speed_m_per_s. Raises ValueError on bad input.
+    """
+    arguments = {name: value for name, value in locals().items() if value is not None}
+    return _covopt.max_safe_mass(**arguments)
+
+
+def speed_limit(*, solve_for="speed", robot_mass=None, speed=None, robot_radius=None,
+                robot_modulus=None, robot_poisson=None, covering_modulus=None,
+                covering_poisson=None, covering_thickness=None, head_mass=None, head_radius=None,
+                scalp_modulus=None, scalp_poisson=None, scalp_thickness=None, skull_modulus=None,
+                skull_poisson=None, thresholds=None, laceration_limit=None, contusion_limit=None,
+                safety_factor=None, material=None, allow_full_compression=False):
+    """A table of limits, as ``covopt speed-limit --json``: solve_for="speed" gives the max
+    safe speed for each robot_mass (a value or a list; math.inf or "fixed" for a fixed
+    robot), solve_for="mass" the max safe reflected mass for each speed (a value or a list).
+    material: a catalog name or a list of names, one block of rows each.
+
+    Returns the dict of ``covopt speed-limit --json`` (solve_for, criterion, safety_factor,
+    limits, search_limit, rows, scene, warnings; without the CLI's warnings about its own
+    input). Raises ValueError on bad input.
+    """
+    arguments = {name: value for name, value in locals().items() if value is not None}
+    return _covopt.speed_limit(**arguments)

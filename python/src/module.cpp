@@ -39,6 +39,7 @@
 #include "covopt/report/design_json.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
+#include "scene_keywords.hpp"
 
 namespace py = pybind11;
 
@@ -623,6 +624,23 @@ py::dict Material(const std::string& name) {
 }
 
 }  // namespace
+
+// For the other binding files (scene_keywords.hpp).
+SceneKeywordInputs ReadSceneKeywords(const py::kwargs& kwargs, const char* function,
+                                     std::initializer_list<const char*> own) {
+  CheckKeywords(kwargs, function, own);
+  SceneInputs in = ReadSceneInputs(kwargs);
+  return {in.scene, in.covering_material, in.covering_poisson_assumed, in.limits, in.safety_factor};
+}
+double ReadSceneQuantity(const py::handle& value, const QuantitySpec& spec, std::string_view keyword) {
+  return ReadQuantity(value, spec, keyword);
+}
+std::string AttributeSceneError(const std::string& message, const py::kwargs& given) {
+  return AttributeError(message, given);
+}
+py::object JsonToPython(const std::string& text) { return JsonLoads(text); }
+
+void BindSpeedLimit(py::module_& m);  // speed_limit_bindings.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -633,4 +651,5 @@ PYBIND11_MODULE(_covopt, m) {
   m.def("optimize", &covopt::python::Optimize);
   m.def("materials", &covopt::python::Materials);
   m.def("material", &covopt::python::Material, py::arg("name"));
+  covopt::python::BindSpeedLimit(m);
 }

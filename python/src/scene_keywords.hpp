@@ -1,0 +1,45 @@
+#pragma once
+/// @file scene_keywords.hpp
+/// The scene keywords every scene-taking Python call shares (robot_mass, speed, ...,
+/// material, thresholds, laceration_limit, contusion_limit, safety_factor), read as
+/// covopt.simulate reads them; defined in module.cpp, for the other binding files.
+
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <pybind11/pybind11.h>
+
+#include "covopt/core/quantity.hpp"
+#include "covopt/core/scene.hpp"
+
+namespace covopt::python {
+
+/// What the scene keywords describe.
+struct SceneKeywordInputs {
+  Scene scene;                                   ///< Scene{} with the keywords applied
+  std::optional<std::string> covering_material;  ///< the catalog name, if material= was given
+  bool covering_poisson_assumed = false;         ///< the material's ν is unknown: 0.25 used
+  InjuryLimits limits;
+  double safety_factor = 1.0;  ///< [-], in [1, 100]
+};
+
+/// Refuses a keyword that is neither a scene keyword nor one of `own` ("FUNCTION() got an
+/// unknown keyword 'X'"), then reads the scene keywords (the scene itself is checked later,
+/// by the library).
+/// @throws std::invalid_argument naming the keyword, the value and what is allowed.
+SceneKeywordInputs ReadSceneKeywords(const pybind11::kwargs& kwargs, const char* function,
+                                     std::initializer_list<const char*> own);
+
+/// A Python value as SI: a number (SI; math.inf where the spec allows "fixed" or "flat"), or
+/// a string read with the CLI's unit parser. @throws std::invalid_argument naming `keyword`.
+double ReadSceneQuantity(const pybind11::handle& value, const QuantitySpec& spec, std::string_view keyword);
+
+/// A library message naming scene fields, with the keywords the caller gave for them.
+std::string AttributeSceneError(const std::string& message, const pybind11::kwargs& given);
+
+/// json.loads(text).
+pybind11::object JsonToPython(const std::string& text);
+
+}  // namespace covopt::python

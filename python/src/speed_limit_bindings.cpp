@@ -1,0 +1,175 @@
+/// @file speed_limit_bindings.cpp
+/// covopt.max_safe_speed, covopt.max_safe_mass and covopt.speed_limit: optim::MaxSafeSpeed /
+/// MaxSafeMass with the scene keywords of covopt.simulate; the dicts are report::SpeedLimitJson
+/// (covopt.speed_limit returns the object `covopt speed-limit --json` prints). See
+/// python/covopt/__init__.py for the documentation.
+
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <pybind11/pybind11.h>
+
+#include "covopt/core/quantity.hpp"
+#include "covopt/optim/speed_limit.hpp"
+#include "covopt/report/speed_limit_json.hpp"
+#include "scene_keywords.hpp"
+
+namespace py = pybind11;
+
+namespace covopt::python {
+namespace {
+
+using report::SpeedLimitQuantity;
+using report::SpeedLimitRow;
+
+/// `kwargs` without the keys in `drop`.
+py::kwargs Without(const py::kwargs& kwargs, std::initializer_list<const char*> drop) {
+  py::kwargs rest;
+  for (const auto& item : kwargs) {
+    const std::string key = py::str(item.first).cast<std::string>();
+    bool dropped = false;
+    for (const char* d : drop) dropped = dropped || key == d;
+    if (!dropped) rest[item.first] = item.second;
+  }
+  return rest;
+}
+
+std::optional<py::object> Get(const py::kwargs& kwargs, const char* name) {
+  if (!kwargs.contains(name)) return std::nullopt;
+  py::object value = kwargs[name];
+  if (value.is_none()) return std::nullopt;
+  return value;
+}
+
+optim::SpeedLimitOptions OptionsFrom(const SceneKeywordInputs& inputs, const py::kwargs& kwargs) {
+  optim::SpeedLimitOptions options;
+  options.limits = inputs.limits;
+  options.safety_factor = inputs.safety_factor;
+  if (const auto v = Get(kwargs, "allow_full_compression")) options.allow_full_compression = py::bool_(*v).cast<bool>();
+  return options;
+}
+
+/// One value or a list of values of a scene quantity.
+std::vector<double> ReadValues(const py::handle& value, const QuantitySpec& spec, const char* keyword) {
+  std::vector<double> values;
+  if (!py::isinstance<py::str>(value) && py::isinstance<py::iterable>(value)) {
+    for (const py::handle item : value) values.push_back(ReadSceneQuantity(item, spec, keyword));
+    if (values.empty()) throw std::invalid_argument(std::string(keyword) + ": no values (got an empty list)");
+    return values;
+  }
+  return {ReadSceneQuantity(value, spec, keyword)};
+}
+
+/// One row computed by the library; bad scenes raise ValueError naming the keyword.
+SpeedLimitRow Compute(SpeedLimitQuantity quantity, Scene scene, double value, const optim::SpeedLimitOptions& options,
+                      const std::optional<std::string>& material, const py::kwargs& kwargs) {
+  SpeedLimitRow row;
+  if (material && scene.covering.thickness_m > 0.0) row.material = material;
+  try {
+    py::gil_scoped_release release;
+    if (quantity == SpeedLimitQuantity::kSpeed) {
+      scene.robot.mass_kg = value;
+      row.robot_mass_kg = value;
+      row.speed_limit = optim::MaxSafeSpeed(scene, options);
+    } else {
+      scene.robot.speed_m_per_s = value;
+      row.speed_m_per_s = value;
+      row.mass_limit = optim::MaxSafeMass(scene, options);
+    }
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(AttributeSceneError(e.what(), kwargs));
+  }
+  return row;
+}
+
+/// The one row as a dict: the row's keys, and message and brief_report.
+py::dict OneLimit(SpeedLimitQuantity quantity, const py::kwargs& kwargs, const char* function) {
+  const bool by_speed = quantity == SpeedLimitQuantity::kSpeed;
+  const char* solved = by_speed ? "speed" : "robot_mass";
+  if (Get(kwargs, solved)) {
+    throw std::invalid_argument(std::string(function) + "() computes " + (by_speed ? "the speed" : "the robot mass") +
+                                "; drop " + solved);
+  }
+  const SceneKeywordInputs inputs = ReadSceneKeywords(kwargs, function, {"allow_full_compression"});
+  const optim::SpeedLimitOptions options = OptionsFrom(inputs, kwargs);
+  const double value = by_speed ? inputs.scene.robot.mass_kg : inputs.scene.robot.speed_m_per_s;
+  const SpeedLimitRow row = Compute(quantity, inputs.scene, value, options, inputs.covering_material, kwargs);
+  const py::dict table = JsonToPython(report::SpeedLimitJson(quantity, inputs.scene, options, {&row, 1}, {}, -1));
+  py::dict result = py::list(table["rows"])[0].cast<py::dict>();
+  result["message"] = by_speed ? row.speed_limit.message : row.mass_limit.message;
+  result["brief_report"] = by_speed ? row.speed_limit.BriefReport() : row.mass_limit.BriefReport();
+  return result;
+}
+
+py::dict MaxSafeSpeed(const py::kwargs& kwargs) { return OneLimit(SpeedLimitQuantity::kSpeed, kwargs, "max_safe_speed"); }
+py::dict MaxSafeMass(const py::kwargs& kwargs) { return OneLimit(SpeedLimitQuantity::kMass, kwargs, "max_safe_mass"); }
+
+/// covopt.speed_limit(**scene, solve_for=, materials=, ...): the dict of `covopt speed-limit --json`.
+py::dict SpeedLimitTable(const py::kwargs& kwargs) {
+  SpeedLimitQuantity quantity = SpeedLimitQuantity::kSpeed;
+  if (const auto v = Get(kwargs, "solve_for")) {
+    const std::string text = py::str(*v).cast<std::string>();
+    if (text == "mass") quantity = SpeedLimitQuantity::kMass;
+    else if (text != "speed") throw std::invalid_argument("solve_for: expected 'speed' or 'mass' (got '" + text + "')");
+  }
+  const bool by_speed = quantity == SpeedLimitQuantity::kSpeed;
+  const char* solved = by_speed ? "speed" : "robot_mass";
+  const char* varied = by_speed ? "robot_mass" : "speed";
+  if (Get(kwargs, solved)) {
+    throw std::invalid_argument(std::string("speed_limit(solve_for='") + (by_speed ? "speed" : "mass") +
+                                "') computes " + (by_speed ? "the speed" : "the robot mass") + "; drop " + solved +
+                                (by_speed ? " (or give solve_for='mass')" : ""));
+  }
+  // The materials, one block of rows each (a name or a list of names).
+  std::vector<std::optional<std::string>> names;
+  if (const auto v = Get(kwargs, "material")) {
+    if (py::isinstance<py::str>(*v)) {
+      names.emplace_back(v->cast<std::string>());
+    } else if (py::isinstance<py::iterable>(*v)) {
+      for (const py::handle item : *v) {
+        if (!py::isinstance<py::str>(item)) {
+          throw std::invalid_argument("material: expected a name or a list of names (got " +
+                                      py::repr(*v).cast<std::string>() + ")");
+        }
+        names.emplace_back(item.cast<std::string>());
+      }
+    }
+    if (names.empty()) throw std::invalid_argument("material: expected a name or a list of names (got an empty list)");
+  } else {
+    names.emplace_back();
+  }
+  const py::kwargs rest = Without(kwargs, {varied, "material", "solve_for"});
+  const QuantitySpec& spec = by_speed ? quantity_specs::kRobotMass : quantity_specs::kSpeed;
+
+  std::vector<SpeedLimitRow> rows;
+  std::optional<Scene> first_scene;
+  optim::SpeedLimitOptions options;
+  for (const std::optional<std::string>& name : names) {
+    py::kwargs scene_kwargs = rest;
+    if (name) scene_kwargs["material"] = *name;
+    const SceneKeywordInputs inputs =
+        ReadSceneKeywords(scene_kwargs, "speed_limit", {"allow_full_compression", "solve_for"});
+    options = OptionsFrom(inputs, kwargs);
+    const std::vector<double> values =
+        Get(kwargs, varied) ? ReadValues(*Get(kwargs, varied), spec, varied)
+                            : std::vector<double>{by_speed ? inputs.scene.robot.mass_kg : inputs.scene.robot.speed_m_per_s};
+    if (!first_scene) first_scene = inputs.scene;
+    for (const double value : values) {
+      rows.push_back(Compute(quantity, inputs.scene, value, options, inputs.covering_material, kwargs));
+    }
+  }
+  return JsonToPython(report::SpeedLimitJson(quantity, *first_scene, options, rows, {}, -1));
+}
+
+}  // namespace
+
+void BindSpeedLimit(py::module_& m) {
+  m.def("max_safe_speed", &MaxSafeSpeed);
+  m.def("max_safe_mass", &MaxSafeMass);
+  m.def("speed_limit", &SpeedLimitTable);
+}
+
+}  // namespace covopt::python
