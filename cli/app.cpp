@@ -11,6 +11,7 @@
 #include "optimize.hpp"
 #include "parse_errors.hpp"
 #include "simulate.hpp"
+#include "robot.hpp"
 #include "speed_limit.hpp"
 #include "sweep.hpp"
 #include "workprecision.hpp"
@@ -43,6 +44,8 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   CLI::App* workprecision = SetupWorkPrecision(app, workprecision_options);
   SpeedLimitCommandOptions speed_limit_options;
   CLI::App* speed_limit = SetupSpeedLimit(app, speed_limit_options);
+  RobotOptions robot_options;
+  CLI::App* robot = SetupRobot(app, robot_options);
 
   try {
     app.parse(argc, argv);
@@ -66,6 +69,7 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     if (sweep->parsed()) return RunSweep(sweep_options, out, err);
     if (workprecision->parsed()) return RunWorkPrecision(workprecision_options, out, err);
     if (speed_limit->parsed()) return RunSpeedLimit(speed_limit_options, out, err);
+    if (robot->parsed()) return RunRobot(robot_options, out, err);
   } catch (const std::exception& e) {
     fmt::print(err, "covopt: internal error: {}\n", e.what());
     return 1;

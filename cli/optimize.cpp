@@ -91,6 +91,11 @@ Resolved Resolve(const OptimizeOptions& o) {
     }
   }
   if (o.thresholds) r.request.scene.model.thresholds = ParseThresholds(*o.thresholds, "--thresholds");
+  if (o.robot_model.given()) {  // --urdf ...: robot.mass from the robot model
+    RobotModelMass mass = ResolveRobotModelMass(o.robot_model, o.scene_values.count(kRobotMassField) != 0);
+    r.request.scene.robot.mass_kg = mass.mass_kg;
+    r.warnings.insert(r.warnings.begin(), mass.notes.begin(), mass.notes.end());
+  }
 
   namespace specs = covopt::quantity_specs;
   d.allow_full_compression = o.allow_full_compression;
@@ -247,6 +252,7 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
   sub->add_option("--thickness-step", options.thickness_step,
                   "round recommended thicknesses up to a multiple of this (default 0.5 mm; 0 = exact)")
       ->type_name("LENGTH")->group("Design");
+  AddRobotModelOptions(*sub, options.robot_model, true, "Robot model (instead of --robot-mass)");
   AddCatalogOptions(*sub, options.catalog);
   sub->add_option("--family", options.families, "only materials of this family (repeatable)")
       ->type_name("NAME")->group("Materials");

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "materials_command.hpp"
+#include "robot_model_options.hpp"
 
 namespace CLI {
 class App;
@@ -33,6 +34,8 @@ struct OptimizeOptions {
   std::optional<std::string> min_modulus;       ///< --min-modulus (default 0.1 MPa)
   std::optional<std::string> max_modulus;       ///< --max-modulus (default 1 GPa)
   std::optional<std::string> safety_factor;     ///< --safety-factor (default 1, or the scene file's)
+  /// --urdf/--base/--tip/--joints/--point/--direction: robot.mass from the robot model.
+  RobotModelOptions robot_model;
   std::optional<std::string> laceration_limit;  ///< --laceration-limit (default 1 MPa)
   std::optional<std::string> contusion_limit;   ///< --contusion-limit (default 2.52 J/cm²)
   /// --allow-full-compression: the paper's criterion (safety only) instead of the default

@@ -207,6 +207,7 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
       ->type_name("N")
       ->group("Computation");
 
+  AddRobotModelOptions(*sub, options.robot_model, true, "Robot model (instead of --robot-mass)");
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")
       ->group("Output");
   sub->add_option("--history", options.history_file,
@@ -244,6 +245,13 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
       field.field(plan.scene) = ParseQuantity(typed->second, field.spec, field.flag);
       plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, typed->second);
     }
+  }
+  if (options.robot_model.given()) {  // --urdf ...: robot.mass from the robot model
+    RobotModelMass mass =
+        ResolveRobotModelMass(options.robot_model, options.scene_values.count(kRobotMassField) != 0);
+    plan.scene.robot.mass_kg = mass.mass_kg;
+    plan.sources[kRobotMassField] = mass.source;
+    plan.robot_model_notes = std::move(mass.notes);
   }
   // Only SetupSimulate fills scene_values, with known names; a caller building the options
   // by hand gets told.
@@ -354,7 +362,7 @@ InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const SimulationPlan& p
 }
 
 std::vector<std::string> InputWarnings(const SimulationPlan& plan) {
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings = plan.robot_model_notes;
   if (plan.safety_factor != 1.0) {
     const auto source = plan.sources.find("limits.safety_factor");
     warnings.push_back(fmt::format(

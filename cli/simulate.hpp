@@ -19,6 +19,7 @@
 #include "covopt/materials/material.hpp"
 #include "materials_command.hpp"
 #include "plot.hpp"
+#include "robot_model_options.hpp"
 
 namespace CLI {
 class App;
@@ -62,6 +63,9 @@ struct SimulateOptions {
   std::optional<long> max_steps;
   /// --json: print one JSON object instead of the table.
   bool json = false;
+  /// --urdf/--base/--tip/--joints/--point/--direction: robot.mass is the robot model's
+  /// reflected mass (excludes --robot-mass). Filled by subcommands that add the group.
+  RobotModelOptions robot_model;
   /// --history FILE.csv: write the time history (needs the time path).
   std::optional<std::string> history_file;
   /// --plot FILE.png|FILE.svg: draw force and stress against time with gnuplot.
@@ -92,6 +96,9 @@ struct SimulationPlan {
   std::optional<std::string> plot_file;
   PlotFormat plot_format = PlotFormat::kPng;
   bool json = false;
+  /// With --urdf: where robot.mass came from and the robot model's warnings, shown with
+  /// the input warnings.
+  std::vector<std::string> robot_model_notes;
 };
 
 /// Adds the scene options every scene-taking subcommand shares to `sub`: --scene, the scene

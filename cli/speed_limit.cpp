@@ -244,6 +244,7 @@ CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
                      "the largest safe reflected mass), per reflected mass");
   sub->footer(std::string(kFooter));
   AddSceneOptions(*sub, options.scene);
+  AddRobotModelOptions(*sub, options.scene.robot_model, true, "Robot model (instead of --robot-mass)");
   // --material is repeatable here (one block of rows and one chart curve each).
   sub->remove_option(sub->get_option("--material"));
   sub->add_option("--material", options.materials,
@@ -304,6 +305,11 @@ SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
   if (const auto typed = scene_options.scene_values.find(varied_key); typed != scene_options.scene_values.end()) {
     varied_text = typed->second;
     scene_options.scene_values.erase(typed);
+  }
+  if (options.scene.robot_model.given() && (!by_speed || varied_text)) {  // --urdf: one robot mass
+    throw InputError(by_speed ? "--robot-mass and --urdf both give the robot mass; give one (--urdf computes "
+                                "the reflected mass from the robot model)"
+                              : "--urdf gives the robot mass, which --solve-for mass computes; drop one of them");
   }
   if (!options.materials.empty() && (scene_options.scene_values.count("covering.modulus") != 0 ||
                                      scene_options.scene_values.count("covering.poisson") != 0)) {

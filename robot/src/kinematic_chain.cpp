@@ -72,9 +72,9 @@ urdf::ModelInterfaceSharedPtr ParseUrdf(const std::string& text, const std::stri
     console_bridge::setLogLevel(previous_level);
   }
   if (model) return model;
-  std::string what = !exception_text.empty() ? exception_text
-                     : handler.errors.empty() ? std::string("not a valid URDF document")
-                                              : handler.errors.back();
+  std::string what = exception_text;
+  for (const std::string& error : handler.errors) what += (what.empty() ? "" : "; ") + error;
+  if (what.empty()) what = "not a valid URDF document";
   // urdfdom's messages may span lines; ours is one line.
   std::replace(what.begin(), what.end(), '\n', ' ');
   throw std::invalid_argument(source + ": malformed URDF: " + what);

@@ -227,11 +227,16 @@ ReflectedMassResult ReflectedMass(const KinematicChain& chain, const Eigen::Vect
   } else if (!std::isfinite(result.max_reflected_mass_kg)) {
     const int rank = (lambda.array() > zero_below).count();
     std::ostringstream warning;
-    warning << where << " cannot move along " << FormatVector(result.max_direction)
-            << (rank == 1 ? " or any direction normal to its only direction of motion "
-                          : " ")
-            << "at these joints (singular configuration, or a direction the joints do not "
-               "reach): the reflected mass along it is infinite (fixed)";
+    if (rank == 1) {
+      warning << where << " can move only along " << FormatVector(result.min_direction)
+              << " at these joints (singular configuration): the reflected mass is infinite "
+                 "(fixed) in every direction normal to it, e.g. "
+              << FormatVector(result.max_direction);
+    } else {
+      warning << where << " cannot move along " << FormatVector(result.max_direction)
+              << " at these joints (singular configuration, or a direction the joints do not "
+                 "reach): the reflected mass along it is infinite (fixed)";
+    }
     result.warnings.push_back(warning.str());
   }
   if (result.reflected_mass_kg && !std::isfinite(*result.reflected_mass_kg)) {

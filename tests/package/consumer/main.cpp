@@ -3,13 +3,15 @@
 // polystyrene coverings from the built-in material catalog (no file needed at run time)
 // and fail unless the paper's 27.6 MPa foam is among them; last, one design request
 // (covopt::optim::Design) over the catalog, which must recommend a covering that does not
-// bottom out.
+// bottom out; and the reflected mass of a one-joint arm from its URDF (covopt::robot): a
+// 2 kg point mass on a 0.5 m lever feels like 2 kg across the lever.
 #include <cmath>
 #include <cstdio>
 
 #include <covopt/core.hpp>
 #include <covopt/materials.hpp>
 #include <covopt/optim.hpp>
+#include <covopt/robot.hpp>
 
 int main() {
   covopt::Scene scene;  // the paper's scene with its 15 mm, 27.6 MPa covering
@@ -48,6 +50,17 @@ int main() {
   const covopt::optim::DesignResult design = covopt::optim::Design(request);
   std::printf("%s\n", design.BriefReport().c_str());
   if (!design.recommendation || design.candidates[*design.recommendation].score.peaks.fully_compressed) return 1;
+
+  const auto arm = covopt::robot::KinematicChain::FromUrdfString(
+      "<robot name='lever'><link name='base'/><joint name='j' type='continuous'>"
+      "<parent link='base'/><child link='lever'/><axis xyz='0 0 1'/></joint><link name='lever'>"
+      "<inertial><origin xyz='0.5 0 0'/><mass value='2'/><inertia ixx='0' ixy='0' ixz='0' "
+      "iyy='0' iyz='0' izz='0'/></inertial></link></robot>",
+      {"", "lever"});
+  const auto reflected = covopt::robot::ReflectedMass(arm, Eigen::VectorXd::Zero(1),
+                                                      Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitY());
+  std::printf("%s\n", reflected.message.c_str());
+  if (std::abs(*reflected.reflected_mass_kg - 2.0) > 1e-12) return 1;
   std::printf("consumer: ok\n");
   return 0;
 }

@@ -1,0 +1,87 @@
+#include "robot.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "covopt/report/robot_json.hpp"
+#include "covopt/robot/reflected_mass.hpp"
+#include "errors.hpp"
+
+namespace covopt::cli {
+namespace {
+
+constexpr std::string_view kFooter = R"(The reflected mass m_u = 1 / (u' J_v M^-1 J_v' u) of the contact point along the
+unit direction u (J_v: the point's linear Jacobian, M: the joint-space inertia
+matrix, from the URDF's links through Orocos KDL), and its extremes over all
+directions (the reciprocal eigenvalues of J_v M^-1 J_v'). A direction the robot
+cannot move the point in (a singular configuration) has an infinite mass:
+"fixed", with a warning. Links beyond the tip ride along as rigid payload.
+Without --direction only the extremes are given. Robot models shipped with
+covopt: share/covopt/robots.
+
+Exit codes: 0 done; 2 bad input.)";
+
+std::string Mass(double mass_kg) {
+  return std::isfinite(mass_kg) ? fmt::format("{:.4g} kg", mass_kg) : std::string("fixed (infinite)");
+}
+
+std::string Direction(const Eigen::Vector3d& v) {
+  auto clean = [](double x) { return std::abs(x) < 5e-13 ? 0.0 : x; };
+  return fmt::format("({:.4g}, {:.4g}, {:.4g})", clean(v[0]), clean(v[1]), clean(v[2]));
+}
+
+}  // namespace
+
+CLI::App* SetupRobot(CLI::App& app, RobotOptions& options) {
+  CLI::App* sub = app.add_subcommand(
+      "robot", "Reflected mass of a robot (URDF) at a contact point, along a direction and its extremes");
+  sub->footer(std::string(kFooter));
+  AddRobotModelOptions(*sub, options.model, false, "Robot model");
+  sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")->group("Output");
+  return sub;
+}
+
+int RunRobot(const RobotOptions& options, std::ostream& out, std::ostream& err) {
+  const CommandErrors errors(err, "robot");
+  robot::ReflectedMassResult result;
+  std::string robot_line;
+  try {
+    const RobotModelInput input = ResolveRobotModelInput(options.model, false);
+    result = robot::ReflectedMass(input.chain, input.joint_positions, input.point_in_tip_m, input.direction);
+    std::string joints;
+    for (std::size_t i = 0; i < input.chain.joint_names().size(); ++i) {
+      joints += fmt::format("{}{} {:.6g}", i ? ", " : "", input.chain.joint_names()[i],
+                            input.joint_positions[static_cast<Eigen::Index>(i)]);
+    }
+    robot_line = fmt::format("Robot    {}: {} -> {}, {} movable joint{}\nJoints   {}\n", input.chain.robot_name(),
+                             input.chain.base_link(), input.chain.tip_link(), input.chain.joint_count(),
+                             input.chain.joint_count() == 1 ? "" : "s", joints.empty() ? "(none)" : joints);
+  } catch (const std::invalid_argument& e) {  // InputError and the library's checks
+    return errors.BadInput(e.what());
+  }
+  if (options.json) {
+    out << report::RobotJson(result) << '\n';
+    return 0;
+  }
+  fmt::print(out, "{}", robot_line);
+  fmt::print(out, "Contact  {} m in the base frame\n\nReflected mass\n", Direction(result.contact_point_m));
+  if (result.reflected_mass_kg) {
+    fmt::print(out, "  along    {:<30} {}\n", Direction(*result.direction), Mass(*result.reflected_mass_kg));
+  }
+  fmt::print(out, "  largest  {:<30} {}\n", Direction(result.max_direction), Mass(result.max_reflected_mass_kg));
+  fmt::print(out, "  smallest {:<30} {}\n", Direction(result.min_direction), Mass(result.min_reflected_mass_kg));
+  if (result.warnings.empty()) {
+    fmt::print(out, "\nWarnings: none\n");
+  } else {
+    fmt::print(out, "\nWarnings\n");
+    for (const std::string& warning : result.warnings) fmt::print(out, "  - {}\n", warning);
+  }
+  return 0;
+}
+
+}  // namespace covopt::cli

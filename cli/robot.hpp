@@ -1,0 +1,34 @@
+#pragma once
+/// @file robot.hpp
+/// `covopt robot`: the reflected mass of a robot (URDF) at a contact point, in a
+/// configuration, along an impact direction, and its extremes over all directions.
+///
+///     covopt robot --urdf FILE [--base LINK] --tip LINK --joints Q1,Q2,... [--point X,Y,Z]
+///                  [--direction X,Y,Z] [--json]
+///
+/// Without --direction only the extremes are printed (JSON: reflected_mass_kg and direction
+/// null). Exit codes: 0 done (also when some direction is fixed: a warning), 2 bad input.
+
+#include <ostream>
+
+#include "robot_model_options.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace covopt::cli {
+
+/// The options of `covopt robot`, as typed.
+struct RobotOptions {
+  RobotModelOptions model;  ///< --urdf/--base/--tip/--joints/--point/--direction
+  bool json = false;        ///< --json: print report::RobotJson
+};
+
+/// Adds the `robot` subcommand to `app`; `options` must outlive the parse.
+CLI::App* SetupRobot(CLI::App& app, RobotOptions& options);
+
+/// Runs the subcommand: one call to robot::ReflectedMass; returns the exit code (0 or 2).
+int RunRobot(const RobotOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace covopt::cli

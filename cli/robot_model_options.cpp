@@ -1,0 +1,206 @@
+#include "robot_model_options.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string_view>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "covopt/core/scene.hpp"
+#include "errors.hpp"
+#include "quantity.hpp"
+
+namespace covopt::cli {
+namespace {
+
+std::string_view Trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+std::vector<std::string> SplitList(std::string_view text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    items.emplace_back(Trim(text.substr(start, comma == std::string_view::npos ? text.npos : comma - start)));
+    if (comma == std::string_view::npos) return items;
+    start = comma + 1;
+  }
+}
+
+/// One joint position: a number with an optional unit fitting the joint's type.
+double ParseJoint(const std::string& item, std::size_t index, const robot::ChainJoint& joint,
+                  const std::string& typed) {
+  const bool prismatic = joint.type == robot::JointType::kPrismatic;
+  const std::string where = fmt::format("--joints: joint {} ({}, {})", index + 1, joint.name,
+                                        robot::ToString(joint.type));
+  const std::string allowed = prismatic ? "a length: 0.1, 0.1m or 100mm" : "an angle: 0.5, 0.5rad or 30deg";
+  double value = 0.0;
+  const char* begin = item.data();
+  const char* end = item.data() + item.size();
+  const auto [stop, ec] = std::from_chars(begin, end, value);
+  if (item.empty() || ec != std::errc() || !std::isfinite(value)) {
+    throw InputError(fmt::format("{}: expected {} (got '{}' in '{}')", where, allowed, item, typed));
+  }
+  const std::string_view unit = Trim(std::string_view(stop, static_cast<std::size_t>(end - stop)));
+  double scale = 1.0;
+  if (unit.empty()) {
+    scale = 1.0;
+  } else if (!prismatic && unit == "rad") {
+    scale = 1.0;
+  } else if (!prismatic && unit == "deg") {
+    scale = std::numbers::pi / 180.0;
+  } else if (prismatic && unit == "m") {
+    scale = 1.0;
+  } else if (prismatic && unit == "mm") {
+    scale = 1e-3;
+  } else if (prismatic && unit == "cm") {
+    scale = 1e-2;
+  } else {
+    throw InputError(fmt::format("{}: unit '{}' does not fit; expected {} (got '{}')", where, unit,
+                                 allowed, item));
+  }
+  return value * scale;
+}
+
+Eigen::VectorXd ParseJoints(const std::string& typed, const robot::KinematicChain& chain) {
+  std::vector<const robot::ChainJoint*> movable;
+  for (const robot::ChainJoint& joint : chain.joints()) {
+    if (joint.type != robot::JointType::kFixed) movable.push_back(&joint);
+  }
+  const std::vector<std::string> items = SplitList(typed);
+  if (items.size() != movable.size()) {
+    std::string names;
+    for (const robot::ChainJoint* joint : movable) names += (names.empty() ? "" : ", ") + joint->name;
+    throw InputError(fmt::format("--joints: {} value{} given, but the chain {} -> {} has {} movable joint{}{} "
+                                 "(got '{}')",
+                                 items.size(), items.size() == 1 ? "" : "s", chain.base_link(),
+                                 chain.tip_link(), movable.size(), movable.size() == 1 ? "" : "s",
+                                 names.empty() ? "" : ": " + names, typed));
+  }
+  Eigen::VectorXd q(static_cast<Eigen::Index>(items.size()));
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    q[static_cast<Eigen::Index>(i)] = ParseJoint(items[i], i, *movable[i], typed);
+  }
+  return q;
+}
+
+Eigen::Vector3d ParseTriple(const std::string& typed, const char* flag, bool lengths) {
+  const std::vector<std::string> items = SplitList(typed);
+  if (items.size() != 3) {
+    throw InputError(fmt::format("{}: expected 3 comma-separated {} X,Y,Z (got {} in '{}')", flag,
+                                 lengths ? "lengths" : "numbers", items.size(), typed));
+  }
+  Eigen::Vector3d v;
+  static constexpr QuantitySpec kCoordinate{QuantityKind::kLength, false, false, 0.0, 10.0, {"mm", "cm"},
+                                            "contact point coordinate"};
+  for (int i = 0; i < 3; ++i) {
+    const std::string& item = items[static_cast<std::size_t>(i)];
+    if (lengths) {
+      v[i] = ParseQuantity(item, kCoordinate, flag);
+    } else {
+      const char* end = item.data() + item.size();
+      const auto [stop, ec] = std::from_chars(item.data(), end, v[i]);
+      if (item.empty() || ec != std::errc() || stop != end || !std::isfinite(v[i])) {
+        throw InputError(fmt::format("{}: component {} must be a finite number (got '{}' in '{}')", flag,
+                                     i + 1, item, typed));
+      }
+    }
+  }
+  return v;
+}
+
+std::string FormatVector(Eigen::Vector3d v, int precision) {
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(v[i]) < 1e-12 * std::max(1.0, v.norm())) v[i] = 0.0;  // rounding noise
+  }
+  return fmt::format("({:.{}g}, {:.{}g}, {:.{}g})", v[0], precision, v[1], precision, v[2], precision);
+}
+
+}  // namespace
+
+void AddRobotModelOptions(CLI::App& sub, RobotModelOptions& options, bool direction_required,
+                          const std::string& group) {
+  sub.add_option("--urdf", options.urdf, "robot model (URDF) whose reflected mass to use")
+      ->type_name("FILE")->group(group);
+  sub.add_option("--base", options.base, "the chain's base link (default: the URDF's root)")
+      ->type_name("LINK")->group(group);
+  sub.add_option("--tip", options.tip, "the link that hits")->type_name("LINK")->group(group);
+  sub.add_option("--joints", options.joints,
+                 "joint positions in chain order: rad, or 30deg (mm/m for prismatic joints)")
+      ->type_name("Q1,Q2,...")->group(group);
+  sub.add_option("--point", options.point,
+                 "contact point in the tip link's frame (default 0,0,0; m, or with units)")
+      ->type_name("X,Y,Z")->group(group);
+  sub.add_option("--direction", options.direction,
+                 direction_required ? "impact direction in the base frame (required with --urdf)"
+                                    : "impact direction in the base frame (default: only the extremes)")
+      ->type_name("X,Y,Z")->group(group);
+}
+
+RobotModelInput ResolveRobotModelInput(const RobotModelOptions& options, bool require_direction) {
+  if (!options.urdf) {
+    throw InputError("--urdf FILE is required with --base/--tip/--joints/--point/--direction");
+  }
+  if (!options.tip) throw InputError(fmt::format("--tip LINK is required with --urdf '{}'", *options.urdf));
+  if (!options.joints) {
+    throw InputError(fmt::format("--joints Q1,Q2,... is required with --urdf '{}'", *options.urdf));
+  }
+  if (require_direction && !options.direction) {
+    throw InputError(fmt::format("--direction X,Y,Z (the impact direction in the base frame) is required "
+                                 "with --urdf '{}'",
+                                 *options.urdf));
+  }
+  robot::ChainSpec spec;
+  spec.base_link = options.base.value_or("");
+  spec.tip_link = *options.tip;
+  if (options.base && options.base->empty()) throw InputError("--base: empty link name");
+  RobotModelInput input{[&] {
+                          try {
+                            return robot::KinematicChain::FromUrdfFile(*options.urdf, spec);
+                          } catch (const std::invalid_argument& e) {
+                            throw InputError(std::string("--urdf: ") + e.what());
+                          }
+                        }(),
+                        {}, Eigen::Vector3d::Zero(), std::nullopt};
+  input.joint_positions = ParseJoints(*options.joints, input.chain);
+  if (options.point) input.point_in_tip_m = ParseTriple(*options.point, "--point", true);
+  if (options.direction) {
+    input.direction = ParseTriple(*options.direction, "--direction", false);
+    if (input.direction->norm() == 0.0) {
+      throw InputError(fmt::format("--direction: must be a non-zero vector (got '{}')", *options.direction));
+    }
+  }
+  return input;
+}
+
+RobotModelMass ResolveRobotModelMass(const RobotModelOptions& options, bool robot_mass_flag_given) {
+  if (robot_mass_flag_given) {
+    throw InputError("--robot-mass and --urdf both give the robot mass; give one (--urdf computes "
+                     "the reflected mass from the robot model)");
+  }
+  const RobotModelInput input = ResolveRobotModelInput(options, true);
+  RobotModelMass mass;
+  try {
+    mass.result = robot::ReflectedMass(input.chain, input.joint_positions, input.point_in_tip_m,
+                                       input.direction);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string("--urdf: ") + e.what());
+  }
+  mass.mass_kg = std::isfinite(*mass.result.reflected_mass_kg) ? *mass.result.reflected_mass_kg : kFixed;
+  mass.source = fmt::format("--urdf '{}' (tip {})", *options.urdf, input.chain.tip_link());
+  mass.notes.push_back(fmt::format(
+      "robot mass {}: the reflected mass of {} at {} m (base frame) along {}, from {} at joints {}",
+      std::isfinite(mass.mass_kg) ? fmt::format("{:.6g} kg", mass.mass_kg) : std::string("fixed"),
+      input.chain.tip_link(), FormatVector(mass.result.contact_point_m, 4),
+      FormatVector(*mass.result.direction, 4), *options.urdf, *options.joints));
+  mass.notes.insert(mass.notes.end(), mass.result.warnings.begin(), mass.result.warnings.end());
+  return mass;
+}
+
+}  // namespace covopt::cli
