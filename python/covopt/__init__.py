@@ -21,7 +21,7 @@ from ._errors import ComputationError
 ComputationError.__module__ = __name__  # shown as covopt.ComputationError
 
 __all__ = ["simulate", "sweep", "optimize", "materials", "material", "ComputationError",
-           "max_safe_speed", "max_safe_mass", "speed_limit"]
+           "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "contact_motion"]
 
 
 def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
@@ -184,3 +184,40 @@ def speed_limit(*, solve_for="speed", robot_mass=None, speed=None, robot_radius=
     """
     arguments = {name: value for name, value in locals().items() if value is not None}
     return _covopt.speed_limit(**arguments)
+
+
+def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), direction=None, *,
+                   urdf_text=None):
+    """The reflected mass of a robot at a contact point, as ``covopt robot --json``.
+
+    urdf: the robot model's file (str or path; None with urdf_text=, the URDF itself);
+    tip: the link that hits; base: the chain's base link (default the URDF's root);
+    joints: the movable joints' positions in chain order [rad, m for prismatic joints];
+    point: the contact point in the tip link's frame [m]; direction: the impact direction
+    in the base frame (any length; None: only the extremes).
+
+    Returns a dict: reflected_mass_kg (None without a direction), direction,
+    max_reflected_mass_kg, max_direction, min_reflected_mass_kg, min_direction,
+    contact_point_m (base frame), joint_names, status, message, warnings. A mass the robot
+    cannot move is the string "fixed" (infinite), with a warning.
+
+    Raises ValueError on bad input (missing or malformed URDF, unknown links, a joint
+    count that does not match, non-finite numbers, a zero direction).
+    """
+    return _covopt.reflected_mass(urdf, tip, joints, base=base, point=point,
+                                  direction=direction, urdf_text=urdf_text)
+
+
+def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, urdf_text=None):
+    """The contact point's motion along a joint trajectory.
+
+    trajectory: a CSV file (a header; time [s], the n joint positions, the n joint
+    velocities per line, in chain order) or a dict with time_s (N), positions (N x n) and
+    velocities (N x n). Other arguments as reflected_mass.
+
+    Returns a dict: samples (time_s, speed_m_per_s, moving, direction (None at rest),
+    velocity_m_per_s, contact_point_m, reflected_mass_kg along the motion; at rest the
+    largest over all directions), joint_names, status, message, warnings.
+    """
+    return _covopt.contact_motion(urdf, tip, trajectory, base=base, point=point,
+                                  urdf_text=urdf_text)

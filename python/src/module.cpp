@@ -641,6 +641,7 @@ std::string AttributeSceneError(const std::string& message, const py::kwargs& gi
 py::object JsonToPython(const std::string& text) { return JsonLoads(text); }
 
 void BindSpeedLimit(py::module_& m);  // speed_limit_bindings.cpp
+void BindRobot(py::module_& m);       // robot_bindings.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -652,4 +653,5 @@ PYBIND11_MODULE(_covopt, m) {
   m.def("materials", &covopt::python::Materials);
   m.def("material", &covopt::python::Material, py::arg("name"));
   covopt::python::BindSpeedLimit(m);
+  covopt::python::BindRobot(m);
 }

@@ -1,0 +1,167 @@
+/// @file robot_bindings.cpp
+/// covopt.reflected_mass and covopt.contact_motion: robot::ReflectedMass and
+/// robot::ContactMotion on a URDF chain; the dicts are report::RobotJson (the object
+/// `covopt robot --json` prints) and report::ContactMotionJson. See
+/// python/covopt/__init__.py for the documentation.
+
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "covopt/report/robot_json.hpp"
+#include "covopt/robot.hpp"
+#include "scene_keywords.hpp"
+
+namespace py = pybind11;
+
+namespace covopt::python {
+namespace {
+
+/// A finite float from a Python number, or ValueError naming `what`.
+double Number(const py::handle& value, const std::string& what) {
+  if (py::isinstance<py::bool_>(value) || py::isinstance<py::str>(value) ||
+      !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
+        py::hasattr(value, "__float__"))) {
+    throw std::invalid_argument(what + ": expected a number (got " +
+                                py::repr(value).cast<std::string>() + ")");
+  }
+  const double x = value.cast<double>();
+  if (!std::isfinite(x)) {
+    std::ostringstream message;
+    message << what << ": must be a finite number (got " << x << ")";
+    throw std::invalid_argument(message.str());
+  }
+  return x;
+}
+
+std::vector<double> Numbers(const py::handle& value, const std::string& what) {
+  if (py::isinstance<py::str>(value) || !py::isinstance<py::iterable>(value)) {
+    throw std::invalid_argument(what + ": expected a sequence of numbers (got " +
+                                py::repr(value).cast<std::string>() + ")");
+  }
+  std::vector<double> numbers;
+  std::size_t i = 0;
+  for (const py::handle item : value) numbers.push_back(Number(item, what + "[" + std::to_string(i++) + "]"));
+  return numbers;
+}
+
+Eigen::Vector3d Triple(const py::handle& value, const char* what) {
+  const std::vector<double> v = Numbers(value, what);
+  if (v.size() != 3) {
+    throw std::invalid_argument(std::string(what) + ": expected 3 components (x, y, z) (got " +
+                                std::to_string(v.size()) + ")");
+  }
+  return {v[0], v[1], v[2]};
+}
+
+Eigen::VectorXd Vector(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
+
+robot::KinematicChain Chain(const py::object& urdf, const std::optional<std::string>& urdf_text,
+                            const std::string& tip, const std::optional<std::string>& base) {
+  robot::ChainSpec spec;
+  spec.tip_link = tip;
+  if (base) {
+    if (base->empty()) throw std::invalid_argument("base: empty link name");
+    spec.base_link = *base;
+  }
+  const bool have_file = !urdf.is_none();
+  if (have_file == urdf_text.has_value()) {
+    throw std::invalid_argument("give the robot model as urdf (a file path) or urdf_text (the URDF "
+                                "itself), exactly one of them");
+  }
+  if (urdf_text) return robot::KinematicChain::FromUrdfString(*urdf_text, spec, "urdf_text");
+  const std::string path = py::str(py::module_::import("os").attr("fspath")(urdf)).cast<std::string>();
+  return robot::KinematicChain::FromUrdfFile(path, spec);
+}
+
+py::object ReflectedMass(const py::object& urdf, const std::string& tip, const py::object& joints,
+                         const std::optional<std::string>& base, const py::object& point,
+                         const py::object& direction, const std::optional<std::string>& urdf_text) {
+  const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base);
+  const Eigen::VectorXd q = Vector(Numbers(joints, "joints"));
+  const Eigen::Vector3d p = Triple(point, "point");
+  std::optional<Eigen::Vector3d> u;
+  if (!direction.is_none()) u = Triple(direction, "direction");
+  robot::ReflectedMassResult result;
+  {
+    py::gil_scoped_release release;
+    result = robot::ReflectedMass(chain, q, p, u);
+  }
+  return JsonToPython(report::RobotJson(result, {}, -1));
+}
+
+/// A trajectory: a CSV path (str or os.PathLike), or a dict with time_s (N), positions
+/// (N x n) and velocities (N x n).
+robot::JointTrajectory Trajectory(const py::object& trajectory, std::size_t joint_count) {
+  if (py::isinstance<py::dict>(trajectory)) {
+    const py::dict d = trajectory.cast<py::dict>();
+    for (const char* key : {"time_s", "positions", "velocities"}) {
+      if (!d.contains(key)) {
+        throw std::invalid_argument(std::string("trajectory: missing key '") + key +
+                                    "' (a dict needs time_s, positions, velocities)");
+      }
+    }
+    robot::JointTrajectory t;
+    t.time_s = Numbers(d["time_s"], "trajectory['time_s']");
+    std::size_t i = 0;
+    for (const py::handle row : d["positions"]) {
+      t.positions.push_back(Vector(Numbers(row, "trajectory['positions'][" + std::to_string(i++) + "]")));
+    }
+    i = 0;
+    for (const py::handle row : d["velocities"]) {
+      t.velocities.push_back(Vector(Numbers(row, "trajectory['velocities'][" + std::to_string(i++) + "]")));
+    }
+    if (t.positions.size() != t.size() || t.velocities.size() != t.size()) {
+      throw std::invalid_argument("trajectory: time_s, positions and velocities must have the same number of "
+                                  "samples (got " + std::to_string(t.size()) + ", " +
+                                  std::to_string(t.positions.size()) + ", " + std::to_string(t.velocities.size()) + ")");
+    }
+    if (t.size() == 0) throw std::invalid_argument("trajectory: no samples");
+    for (std::size_t k = 1; k < t.size(); ++k) {
+      if (t.time_s[k] < t.time_s[k - 1]) {
+        std::ostringstream message;
+        message << "trajectory['time_s'][" << k << "]: time goes backwards (" << t.time_s[k] << " s after "
+                << t.time_s[k - 1] << " s)";
+        throw std::invalid_argument(message.str());
+      }
+    }
+    return t;
+  }
+  const std::string path = py::str(py::module_::import("os").attr("fspath")(trajectory)).cast<std::string>();
+  return robot::ReadJointTrajectory(std::filesystem::path(path), joint_count);
+}
+
+py::object ContactMotion(const py::object& urdf, const std::string& tip, const py::object& trajectory,
+                         const std::optional<std::string>& base, const py::object& point,
+                         const std::optional<std::string>& urdf_text) {
+  const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base);
+  const robot::JointTrajectory t = Trajectory(trajectory, chain.joint_count());
+  const Eigen::Vector3d p = Triple(point, "point");
+  robot::ContactMotionResult result;
+  {
+    py::gil_scoped_release release;
+    result = robot::ContactMotion(chain, t, p);
+  }
+  return JsonToPython(report::ContactMotionJson(result, {}, -1));
+}
+
+}  // namespace
+
+void BindRobot(py::module_& m) {
+  m.def("reflected_mass", &ReflectedMass, py::arg("urdf"), py::arg("tip"), py::arg("joints"),
+        py::arg("base") = py::none(), py::arg("point") = py::make_tuple(0.0, 0.0, 0.0),
+        py::arg("direction") = py::none(), py::arg("urdf_text") = py::none());
+  m.def("contact_motion", &ContactMotion, py::arg("urdf"), py::arg("tip"), py::arg("trajectory"),
+        py::arg("base") = py::none(), py::arg("point") = py::make_tuple(0.0, 0.0, 0.0),
+        py::arg("urdf_text") = py::none());
+}
+
+}  // namespace covopt::python

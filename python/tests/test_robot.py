@@ -1,0 +1,110 @@
+"""covopt.reflected_mass and covopt.contact_motion: the dicts are the CLI's ``covopt robot
+--json`` object for the same inputs; a file and urdf_text= give the same answer; the planar
+test arm's closed-form mass; the stretched arm's "fixed" direction; a trajectory from a CSV
+file equals the same trajectory as a dict and gives |J q̇| of the closed form; bad input
+raises ValueError naming what is wrong.
+"""
+
+import math
+import os
+import pathlib
+
+import numpy as np
+import pytest
+
+import covopt
+
+HERE = pathlib.Path(__file__).resolve().parent
+ROOT = HERE.parent.parent
+PLANAR = ROOT / "tests" / "robot" / "data" / "planar_2link.urdf"  # l1 = 1, l2 = 0.8 m
+FR3 = ROOT / "robot" / "models" / "franka_fr3.urdf"
+FR3_READY = [0.0, -math.pi / 4, 0.0, -3 * math.pi / 4, 0.0, math.pi / 2, math.pi / 4]
+
+
+@pytest.mark.parametrize("direction, flags", [((1.0, 0.0, 0.0), ["--direction", "1,0,0"]),
+                                              (None, [])])
+def test_reflected_mass_returns_the_cli_json_object(cli_json, direction, flags):
+    got = covopt.reflected_mass(str(FR3), "fr3_link8", FR3_READY, point=(0.0, 0.0, 0.05),
+                                direction=direction)
+    joints = ",".join(repr(q) for q in FR3_READY)
+    expected = cli_json("robot", "--urdf", str(FR3), "--tip", "fr3_link8", f"--joints={joints}",
+                        "--point", "0,0,0.05", "--json", *flags)
+    assert got == expected
+    if direction is None:
+        assert got["reflected_mass_kg"] is None and got["direction"] is None
+
+
+def test_a_file_and_urdf_text_agree_and_paths_may_be_pathlike():
+    from_file = covopt.reflected_mass(PLANAR, "tool", [0.3, 1.2], direction=(1, 2, 0))
+    from_text = covopt.reflected_mass(None, "tool", [0.3, 1.2], direction=(1, 2, 0),
+                                      urdf_text=PLANAR.read_text())
+    assert from_file == from_text
+
+
+def test_the_planar_arm_has_its_closed_form_mass_and_a_fixed_stretched_direction():
+    q1, q2 = 0.3, 1.2
+    c2 = math.cos(q2)
+    m = np.array([[0.1 + 0.05 + 2 * 0.25 + 1.5 * (1 + 0.16 + 2 * 0.4 * c2), 0.05 + 1.5 * (0.16 + 0.4 * c2)],
+                  [0.05 + 1.5 * (0.16 + 0.4 * c2), 0.05 + 1.5 * 0.16]])
+    s1, c1, s12, c12 = math.sin(q1), math.cos(q1), math.sin(q1 + q2), math.cos(q1 + q2)
+    jac = np.array([[-s1 - 0.8 * s12, -0.8 * s12], [c1 + 0.8 * c12, 0.8 * c12]])
+    u = np.array([0.6, 0.8])
+    expected = 1.0 / (u @ jac @ np.linalg.solve(m, jac.T) @ u)
+    got = covopt.reflected_mass(PLANAR, "tool", [q1, q2], direction=(0.6, 0.8, 0.0))
+    assert got["reflected_mass_kg"] == pytest.approx(expected, rel=1e-12)
+    assert got["max_reflected_mass_kg"] == "fixed"  # out of the plane
+    stretched = covopt.reflected_mass(PLANAR, "tool", np.array([0.5, 0.0]),
+                                      direction=(math.cos(0.5), math.sin(0.5), 0.0))
+    assert stretched["reflected_mass_kg"] == "fixed"
+    assert any("infinite (fixed)" in w for w in stretched["warnings"])
+
+
+def test_contact_motion_from_a_csv_file_equals_the_dict_and_the_closed_form(tmp_path):
+    rows = [(0.0, 0.3, 1.2, 0.5, -0.8), (0.1, 0.35, 1.1, 0.0, 0.0), (0.2, 0.4, 0.0, 1.0, 0.0)]
+    csv = tmp_path / "trajectory.csv"
+    csv.write_text("time_s,q1,q2,qd1,qd2\n" + "".join(",".join(map(repr, r)) + "\n" for r in rows))
+    from_file = covopt.contact_motion(PLANAR, "tool", csv)
+    from_dict = covopt.contact_motion(PLANAR, "tool", {
+        "time_s": [r[0] for r in rows],
+        "positions": np.array([r[1:3] for r in rows]),
+        "velocities": np.array([r[3:5] for r in rows])})
+    assert from_file == from_dict
+    samples = from_file["samples"]
+    assert [s["time_s"] for s in samples] == [0.0, 0.1, 0.2]
+    assert samples[1]["moving"] is False and samples[1]["direction"] is None
+    # Stretched arm turning at 1 rad/s about the shoulder: the tip moves at 1.8 m/s.
+    assert samples[2]["speed_m_per_s"] == pytest.approx(1.8, rel=1e-12)
+    along = covopt.reflected_mass(PLANAR, "tool", [0.3, 1.2], direction=samples[0]["direction"])
+    assert samples[0]["reflected_mass_kg"] == pytest.approx(along["reflected_mass_kg"], rel=1e-12)
+
+
+@pytest.mark.parametrize("kwargs, words", [
+    (dict(urdf="/nonexistent.urdf", tip="tool", joints=[0, 0]), "no such URDF file"),
+    (dict(urdf=None, tip="tool", joints=[0, 0]), "exactly one of them"),
+    (dict(urdf=None, tip="a", joints=[0], urdf_text="<robot"), "urdf_text: malformed URDF"),
+    (dict(urdf=PLANAR, tip="hand", joints=[0, 0]), "tip link 'hand' is not in the URDF"),
+    (dict(urdf=PLANAR, tip="link1", joints=[0], base="link2"), "not an ancestor"),
+    (dict(urdf=PLANAR, tip="tool", joints=[0, 0, 0]), "3 values given"),
+    (dict(urdf=PLANAR, tip="tool", joints=[0, math.nan]), "joints[1]: must be a finite number"),
+    (dict(urdf=PLANAR, tip="tool", joints=[0, "30deg"]), "joints[1]: expected a number"),
+    (dict(urdf=PLANAR, tip="tool", joints=[0, 0], direction=(0, 0, 0)), "non-zero vector"),
+    (dict(urdf=PLANAR, tip="tool", joints=[0, 0], direction=(1, 0)), "direction: expected 3 components"),
+    (dict(urdf=PLANAR, tip="tool", joints=[0, 0], point=(0.1, 0)), "point: expected 3 components"),
+])
+def test_bad_input_raises_value_error(kwargs, words):
+    with pytest.raises(ValueError) as error:
+        covopt.reflected_mass(**kwargs)
+    assert words in str(error.value)
+
+
+def test_bad_trajectories_raise_value_error(tmp_path):
+    backwards = tmp_path / "backwards.csv"
+    backwards.write_text("t,q1,q2,qd1,qd2\n1,0,0,0,0\n0,0,0,0,0\n")
+    with pytest.raises(ValueError, match="time goes backwards"):
+        covopt.contact_motion(PLANAR, "tool", backwards)
+    with pytest.raises(ValueError, match="4 columns, expected 5"):
+        short = tmp_path / "short.csv"
+        short.write_text("t,q1,q2,qd1,qd2\n0,0,0,0\n")
+        covopt.contact_motion(PLANAR, "tool", short)
+    with pytest.raises(ValueError, match="missing key 'velocities'"):
+        covopt.contact_motion(PLANAR, "tool", {"time_s": [0], "positions": [[0, 0]]})
