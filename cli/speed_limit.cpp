@@ -416,8 +416,8 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
     fmt::print(out, "Criterion  {}\n", Criterion(plan.options));
     fmt::print(out, "Search     {}; the ratios are those of the impact at the limit\n\n",
                by_speed ? fmt::format("speeds up to {:g} m/s (the model's ceiling)", plan.options.max_speed_m_per_s)
-                        : fmt::format("reflected masses up to {:g} kg (the model's ceiling), and a fixed robot",
-                                      plan.options.max_mass_kg));
+                        : fmt::format("reflected masses up to {:g} kg (the model's ceiling){}", plan.options.max_mass_kg,
+                                      std::isinf(scene.head.mass_kg) ? "" : ", and a fixed robot"));
     PrintRows(out, plan, rows);
     for (const std::string& w : input_warnings) fmt::print(out, "Warning: {}\n", w);
     for (const std::string& w : report::SpeedLimitRowWarnings(plan.quantity, rows)) {
