@@ -1,6 +1,7 @@
 // Speed (or mass) limits as JSON text (covopt speed-limit --json, covopt.speed_limit()).
 #include "covopt/report/speed_limit_json.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -160,6 +161,14 @@ std::string SpeedLimitJson(SpeedLimitQuantity quantity, const Scene& scene, cons
     shown["robot"].erase("mass_kg");
     if (shared) shown["robot"]["speed_m_per_s"] = internal::Number(rows.front().speed_m_per_s);
     else shown["robot"].erase("speed_m_per_s");
+  }
+  // Rows of several materials: the covering's modulus and Poisson ratio are the rows' own.
+  const bool several_materials = std::any_of(rows.begin(), rows.end(), [&](const SpeedLimitRow& row) {
+    return row.material != rows.front().material;
+  });
+  if (several_materials) {
+    shown["covering"].erase("youngs_modulus_Pa");
+    shown["covering"].erase("poisson_ratio");
   }
   j["scene"] = shown;
   std::vector<std::string> warnings(input_warnings.begin(), input_warnings.end());

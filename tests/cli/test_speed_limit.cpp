@@ -155,6 +155,8 @@ TEST_CASE("speed-limit: several --material give one block of rows each", "[speed
   CHECK(rows[1]["material"] == "XPS Foamular 250");
   CHECK(rows[2]["material"] == "EPS geofoam EPS22");
   CHECK(rows[3]["robot_mass_kg"] == 10.0);
+  CHECK(j["scene"]["covering"].count("youngs_modulus_Pa") == 0);  // each block has its own
+  CHECK(j["scene"]["covering"]["thickness_m"] == 0.02);
   const auto& catalog = covopt::materials::Catalog::BuiltIn();
   covopt::Scene scene;
   scene.covering.thickness_m = 0.02;

@@ -53,7 +53,8 @@ std::vector<std::string> SpeedLimitCsvCells(SpeedLimitQuantity quantity, const S
 /// ones), search_limit ({max_speed_m_per_s} or {max_mass_kg}), rows (SpeedLimitColumns; a
 /// limit that does not exist is null, "limited_by" "none" when safe up to the ceiling),
 /// scene (SceneJson of `scene` without the quantity solved for, and without the one the rows
-/// vary unless all rows share it), warnings: `input_warnings`, then one per row that is safe
+/// vary unless all rows share it; without the covering's modulus and Poisson ratio when the
+/// rows are of several materials), warnings: `input_warnings`, then one per row that is safe
 /// up to the search ceiling or has no safe value, saying so.
 /// `indent` as in nlohmann's dump: 2 (the CLI's), or -1 for one line.
 std::string SpeedLimitJson(SpeedLimitQuantity quantity, const Scene& scene,
