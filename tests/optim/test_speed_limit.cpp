@@ -242,6 +242,30 @@ TEST_CASE("at the limit the binding ratio is 1/safety factor and none is above",
   CHECK(seen[static_cast<int>(LimitingCriterion::kFullCompression)] >= 1);
 }
 
+TEST_CASE("a stress that jumps past the limit at a switch (literal thresholds) limits the speed there",
+          "[speed_limit]") {
+  // Literal thresholds with 0.8 b_c < 0.8 b_s: phase 3 is measured from 0.8 b_c, so at
+  // t1 = 2.4 mm σ_t jumps from ~5.9 kPa to ~49 kPa. A 20 kPa laceration limit is crossed by
+  // the jump: every speed that stops short of t1 is safe, any speed beyond is not.
+  Case c;
+  c.scene.model.thresholds = covopt::ThresholdReading::kLiteral;
+  c.scene.covering.thickness_m = 1e-3;
+  c.scene.covering.youngs_modulus_Pa = 1e6;
+  c.options.allow_full_compression = true;
+  c.options.limits.laceration_tensile_stress_Pa = 20e3;
+  c.options.limits.contusion_energy_density_J_per_m2 = 1e7;
+  const SpeedLimit limit = MaxSafeSpeed(c.scene, c.options);
+  INFO(limit.BriefReport());
+  REQUIRE(limit.status == SpeedLimitStatus::kLimited);
+  CHECK(limit.limited_by == LimitingCriterion::kLaceration);
+  CHECK(limit.at_limit.max_penetration_m == Approx(2.4e-3).epsilon(1e-12));
+  CHECK(limit.at_limit.laceration_ratio < 0.5);  // the value below the jump
+  CHECK(limit.max_safe_speed_m_per_s == Approx(BruteForceSpeed(c)).epsilon(1e-12));
+  Scene above = c.scene;
+  above.robot.speed_m_per_s = limit.max_safe_speed_m_per_s * (1.0 + 1e-9);
+  CHECK(RatiosOf(above, c.options).laceration > 2.0);
+}
+
 TEST_CASE("the paper's scene: the recommended 15 mm polystyrene is safe only below 2 m/s", "[speed_limit]") {
   const Scene paper;  // 10 kg, R 15 mm, 15 mm of 27.6 MPa, free 4.5 kg head
   const SpeedLimit limit = MaxSafeSpeed(paper);

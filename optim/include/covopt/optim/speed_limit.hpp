@@ -28,8 +28,10 @@
 ///     m_r,max = μ_max m_h / (m_h - μ_max)  (free head; μ_max >= m_h: even a fixed robot is
 ///                                           safe; fixed head: m_r,max = μ_max).
 /// The ratios at the limit come from re-running the exact path there (ExactPeaks), so they
-/// are the numbers `covopt simulate` prints at that speed or mass: one of them is 1/s (within
-/// rounding), none above. About 1-2 µs per answer.
+/// are the numbers `covopt simulate` prints at that speed or mass: none above 1/s, and the
+/// binding one at 1/s within rounding — except where the literal thresholds make σ_c jump past
+/// the limit at a phase switch: the limit is then the speed that just reaches the switch, and
+/// the laceration ratio there is the one below the jump. About 1-2 µs per answer.
 ///
 /// That the ratios are non-decreasing in v0 and m_r is checked by a dense scan on varied
 /// scenes in tests/optim/test_speed_limit.cpp, and every answer is checked against a
