@@ -86,7 +86,7 @@ TEST_CASE("degrees and radians give the same answer") {
   CHECK(in_deg["reflected_mass_kg"].get<double>() == Approx(rad["reflected_mass_kg"].get<double>()).epsilon(1e-9));
 }
 
-TEST_CASE("--urdf on simulate, optimize and speed-limit puts the reflected mass in scene.robot.mass_kg") {
+TEST_CASE("the --urdf options on simulate, optimize and speed-limit put the reflected mass in scene.robot.mass_kg") {
   const std::vector<std::string> model = {"--urdf", kFr3, "--tip", "fr3_link8", "--joints",
                                           "0,-45deg,0,-135deg,0,90deg,45deg", "--direction", "1,0,0"};
   const auto chain = covopt::robot::KinematicChain::FromUrdfFile(kFr3, {"", "fr3_link8"});
