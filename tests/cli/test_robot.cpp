@@ -49,9 +49,9 @@ TEST_CASE("covopt robot --json prints the library's reflected mass of the same i
   }
 }
 
-TEST_CASE("covopt robot: the stretched arm along itself is fixed; across it the closed form") {
-  // q = (0, 0): the tip at (1.8, 0, 0); across the arm (y) m = det(M) / (l1 + l2)^2 ... by
-  // the closed form 1 / (J M^-1 J')_yy with J_y = (1.8, 0.8).
+TEST_CASE("covopt robot calls the stretched arm fixed along itself and gives the closed form across it") {
+  // q = (0, 0): the tip at (1.8, 0, 0). Across the arm (y) the mass is 1 / (J M^-1 J')_yy
+  // with J's y row (l1 + l2, l2) = (1.8, 0.8) and the 2x2 M of the closed form.
   const double M11 = 0.1 + 0.05 + 2.0 * 0.25 + 1.5 * (1.0 + 0.16 + 0.8);
   const double M12 = 0.05 + 1.5 * (0.16 + 0.4);
   const double M22 = 0.05 + 1.5 * 0.16;
