@@ -24,6 +24,7 @@ std::string_view Trim(std::string_view text) {
 
 std::vector<std::string> SplitList(std::string_view text) {
   std::vector<std::string> items;
+  if (Trim(text).empty()) return items;  // "": no values (a chain without movable joints)
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = text.find(',', start);
