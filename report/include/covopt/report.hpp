@@ -6,3 +6,4 @@
 #include "covopt/report/robot_json.hpp"
 #include "covopt/report/simulation_json.hpp"
 #include "covopt/report/speed_limit_json.hpp"
+#include "covopt/report/trajectory_json.hpp"

@@ -1,0 +1,119 @@
+// A trajectory safety check as JSON text (covopt robot --trajectory --json,
+// covopt.check_trajectory()).
+#include "covopt/report/trajectory_json.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "covopt/report/simulation_json.hpp"
+#include "json_number.hpp"
+
+namespace covopt::report {
+namespace {
+
+using nlohmann::ordered_json;
+
+constexpr std::array<std::string_view, 11> kSampleColumns = {
+    "time_s",     "speed_m_per_s",    "reflected_mass_kg", "moving",          "max_safe_speed_m_per_s",
+    "speed_scale", "limited_by",      "laceration_ratio",  "contusion_ratio", "compression_ratio",
+    "safe"};
+
+ordered_json MassValue(double kg) { return std::isinf(kg) ? ordered_json("fixed") : internal::Number(kg); }
+
+ordered_json SampleJson(const optim::SampleVerdict& v) {
+  const bool none_safe = v.speed_limit.status == optim::SpeedLimitStatus::kNoSafeValue;
+  ordered_json j;
+  j["time_s"] = internal::Number(v.time_s);
+  j["speed_m_per_s"] = internal::Number(v.speed_m_per_s);
+  j["reflected_mass_kg"] = MassValue(v.reflected_mass_kg);
+  j["moving"] = v.moving;
+  j["max_safe_speed_m_per_s"] = none_safe ? ordered_json(nullptr) : internal::Number(v.speed_limit.max_safe_speed_m_per_s);
+  j["speed_scale"] = v.moving ? internal::Number(v.speed_scale) : ordered_json(nullptr);
+  j["limited_by"] = optim::ToString(v.speed_limit.limited_by);
+  j["laceration_ratio"] = internal::Number(v.laceration_ratio);
+  j["contusion_ratio"] = internal::Number(v.contusion_ratio);
+  j["compression_ratio"] = internal::Number(v.compression_ratio);
+  j["safe"] = v.safe;
+  return j;
+}
+
+std::string Shortest(double value) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+}  // namespace
+
+std::vector<optim::MotionSample> MotionSamples(const robot::ContactMotionResult& motion) {
+  std::vector<optim::MotionSample> samples;
+  samples.reserve(motion.samples.size());
+  for (const robot::ContactMotionSample& s : motion.samples) {
+    samples.push_back({s.time_s, s.speed_m_per_s, s.reflected_mass_kg});
+  }
+  return samples;
+}
+
+std::span<const std::string_view> TrajectorySampleColumns() noexcept { return kSampleColumns; }
+
+std::vector<std::string> TrajectorySampleCsvCells(const optim::SampleVerdict& sample) {
+  const ordered_json j = SampleJson(sample);
+  std::vector<std::string> cells;
+  for (const auto& [key, value] : j.items()) {
+    if (value.is_null()) cells.emplace_back();
+    else if (value.is_string()) cells.push_back(value.get<std::string>());
+    else if (value.is_boolean()) cells.emplace_back(value.get<bool>() ? "true" : "false");
+    else cells.push_back(Shortest(value.get<double>()));
+  }
+  return cells;
+}
+
+std::string TrajectoryCheckJson(const optim::TrajectoryCheck& check, const robot::ContactMotionResult& motion,
+                                const Scene& scene, const std::optional<std::string>& covering_material,
+                                const optim::SpeedLimitOptions& options,
+                                std::span<const std::string> input_warnings, int indent) {
+  const double sf = options.safety_factor;
+  const double laceration = options.limits.laceration_tensile_stress_Pa;
+  const double contusion = options.limits.contusion_energy_density_J_per_m2;
+  ordered_json j;
+  j["status"] = optim::ToString(check.status);
+  j["message"] = check.message;
+  j["safe_speed_scale"] = internal::Number(check.safe_speed_scale);  // +inf (at rest): null
+  if (check.worst_sample) {
+    ordered_json worst;
+    worst["index"] = *check.worst_sample;
+    const ordered_json sample = SampleJson(check.samples[*check.worst_sample]);
+    for (const auto& [key, value] : sample.items()) worst[key] = value;
+    j["worst_sample"] = worst;
+  } else {
+    j["worst_sample"] = nullptr;
+  }
+  j["sample_count"] = check.samples.size();
+  j["unsafe_sample_count"] = check.unsafe_sample_count;
+  j["criterion"] = optim::ToString(options.criterion());
+  j["safety_factor"] = sf;
+  j["limits"] = {{"laceration_Pa", laceration},
+                 {"contusion_J_per_m2", contusion},
+                 {"derated_laceration_Pa", laceration / sf},
+                 {"derated_contusion_J_per_m2", contusion / sf}};
+  j["search_limit"] = {{"max_speed_m_per_s", options.max_speed_m_per_s}};
+  ordered_json shown = ordered_json::parse(SceneJson(scene));
+  shown["robot"].erase("mass_kg");  // each sample's own
+  shown["robot"].erase("speed_m_per_s");
+  shown["covering"]["material"] = covering_material ? ordered_json(*covering_material) : ordered_json(nullptr);
+  j["scene"] = shown;
+  j["joint_names"] = motion.joint_names;
+  ordered_json samples = ordered_json::array();
+  for (const optim::SampleVerdict& v : check.samples) samples.push_back(SampleJson(v));
+  j["samples"] = samples;
+  std::vector<std::string> warnings(input_warnings.begin(), input_warnings.end());
+  warnings.insert(warnings.end(), motion.warnings.begin(), motion.warnings.end());
+  warnings.insert(warnings.end(), check.warnings.begin(), check.warnings.end());
+  j["warnings"] = warnings;
+  return j.dump(indent);
+}
+
+}  // namespace covopt::report
