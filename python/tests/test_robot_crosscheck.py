@@ -12,8 +12,9 @@ shipped cobot models (robot/models) against the manufacturers' Denavit-Hartenber
 Then covopt.reflected_mass (urdfdom + Orocos KDL) against that reference on both shipped
 cobots at their named and at random configurations (fixed seed), several contact points
 and directions, and on the test arms: masses to 1e-9 relative, directions to 1e-9, the
-contact point to 1e-12 m. These comparisons are skipped only while covopt has no
-reflected_mass.
+contact point to 1e-12 m; and covopt.contact_motion along the example FR3 trajectory
+(velocity, speed, mass along the motion). These comparisons are skipped only while covopt
+has no reflected_mass / contact_motion.
 """
 
 import math
@@ -388,3 +389,38 @@ def test_covopt_calls_singular_directions_fixed_with_a_warning():
     got, _ = _compare(UR5E, "tool0", UR5E_UPRIGHT, (0.0, 0.0, 0.0), (0.0, 1.0, 0.0))
     assert got["reflected_mass_kg"] == "fixed"
     assert got["warnings"]
+
+
+needs_contact_motion = pytest.mark.skipif(
+    not hasattr(covopt, "contact_motion"),
+    reason="covopt.contact_motion is not built yet (the lead removes this skip)")
+
+
+@needs_contact_motion
+def test_covopt_contact_motion_along_the_example_trajectory_agrees_with_the_reference():
+    # robot/models/franka_fr3_pick.csv: per sample the point's velocity J_v q_dot, its speed,
+    # and the reflected mass along the motion (at rest: the largest over all directions).
+    csv = os.path.join(MODELS, "franka_fr3_pick.csv")
+    with open(csv, encoding="utf-8") as lines:
+        data = [line for line in lines if line.strip() and not line.startswith("#")]
+    rows = np.array([[float(x) for x in line.split(",")] for line in data[1:]])  # no header
+    point = (0.0, 0.0, 0.05)
+    got = covopt.contact_motion(FR3, "fr3_link8", csv, point=point)
+    assert list(got["joint_names"]) == [f"fr3_joint{k}" for k in range(1, 8)]
+    assert len(got["samples"]) == len(rows)
+    model = ref.read_urdf(FR3)
+    for row, sample in zip(rows, got["samples"]):
+        q, qdot = row[1:8], row[8:15]
+        jv, p = ref.contact_jacobian(model, "base", "fr3_link8", q, point)
+        velocity = jv @ qdot
+        speed = float(np.linalg.norm(velocity))
+        assert sample["time_s"] == row[0]
+        np.testing.assert_allclose(sample["contact_point_m"], p, atol=1e-12)
+        np.testing.assert_allclose(sample["velocity_m_per_s"], velocity, rtol=1e-9, atol=1e-13)
+        assert sample["speed_m_per_s"] == pytest.approx(speed, rel=1e-9, abs=1e-13)
+        if speed > 1e-6:
+            expected = ref.reflected_mass(model, "fr3_link8", q, point=point, direction=velocity)
+            _assert_same_mass(sample["reflected_mass_kg"], expected["reflected_mass_kg"])
+        elif not sample["moving"]:
+            expected = ref.reflected_mass(model, "fr3_link8", q, point=point)
+            _assert_same_mass(sample["reflected_mass_kg"], expected["max_reflected_mass_kg"])
