@@ -30,7 +30,8 @@ ordered_json SampleJson(const optim::SampleVerdict& v) {
   j["speed_m_per_s"] = internal::Number(v.speed_m_per_s);
   j["reflected_mass_kg"] = MassValue(v.reflected_mass_kg);
   j["moving"] = v.moving;
-  j["max_safe_speed_m_per_s"] = none_safe ? ordered_json(nullptr) : internal::Number(v.speed_limit.max_safe_speed_m_per_s);
+  j["max_safe_speed_m_per_s"] =
+      none_safe ? ordered_json(nullptr) : internal::Number(v.speed_limit.max_safe_speed_m_per_s);
   j["speed_scale"] = v.moving ? internal::Number(v.speed_scale) : ordered_json(nullptr);
   j["limited_by"] = optim::ToString(v.speed_limit.limited_by);
   j["laceration_ratio"] = internal::Number(v.laceration_ratio);
