@@ -18,6 +18,7 @@
 
 #include "numeric_format.hpp"
 #include "stepper.hpp"
+#include "three_state_vector.hpp"
 
 namespace covopt {
 namespace internal {
@@ -200,12 +201,12 @@ struct TimeIntegrator::Workspace {
 
   Workspace() {
     if (SUNContext_Create(nullptr, &context) != 0) throw std::runtime_error("SUNContext_Create failed");
-    state = N_VNew_Serial(3, context);
-    absolute_tolerances = N_VNew_Serial(3, context);
-    dense_output = N_VNew_Serial(3, context);
+    // Serial vectors with fixed-length kernels (fused operations on: one call instead of
+    // q+1 for the Adams history updates and the Runge-Kutta stage sums).
+    state = internal::MakeThreeStateVector(context);
+    absolute_tolerances = internal::MakeThreeStateVector(context);
+    dense_output = internal::MakeThreeStateVector(context);
     if (!state || !absolute_tolerances || !dense_output) throw std::runtime_error("N_VNew_Serial failed");
-    // Fused vector operations: one call instead of q+1 for the Adams history updates.
-    N_VEnableFusedOps_Serial(state, SUNTRUE);
   }
   ~Workspace() {
     for (auto& stepper : steppers) stepper.reset();  // before the context they use
