@@ -13,9 +13,7 @@ Then covopt.reflected_mass (urdfdom + Orocos KDL) against that reference on both
 cobots at their named and at random configurations (fixed seed), several contact points
 and directions, and on the test arms: masses to 1e-9 relative, directions to 1e-9, the
 contact point to 1e-12 m; and covopt.contact_motion along the example FR3 trajectory
-(velocity, speed, mass along the motion). These comparisons are skipped only while covopt
-has no reflected_mass / contact_motion.
-"""
+(velocity, speed, mass along the motion)."""
 
 import math
 import os
@@ -282,11 +280,6 @@ def test_reference_ur5e_upright_pose_moves_tool0_along_one_axis_only():
 
 # ------------------------------------------------------- covopt against the reference
 
-needs_reflected_mass = pytest.mark.skipif(
-    not hasattr(covopt, "reflected_mass"),
-    reason="covopt.reflected_mass is not built yet (the lead removes this skip)")
-
-
 def _mass(value):
     """covopt writes an infinite mass as "fixed"."""
     return math.inf if value == "fixed" else float(value)
@@ -349,7 +342,6 @@ POINTS = [(0.0, 0.0, 0.0), (0.02, -0.035, 0.06)]
 DIRECTIONS = [(1.0, 0.0, 0.0), (0.0, 0.0, -1.0), (0.3, -0.5, 0.8)]
 
 
-@needs_reflected_mass
 @pytest.mark.parametrize("name, urdf, tip, q", COBOT_CASES, ids=[c[0] for c in COBOT_CASES])
 def test_covopt_reflected_mass_of_the_shipped_cobots_agrees_with_the_reference(name, urdf, tip, q):
     for point in POINTS:
@@ -357,7 +349,6 @@ def test_covopt_reflected_mass_of_the_shipped_cobots_agrees_with_the_reference(n
             _compare(urdf, tip, q, point, direction)
 
 
-@needs_reflected_mass
 def test_covopt_agrees_on_an_inner_link_and_a_base_other_than_the_root():
     # Tip fr3_link4: links 5 to 8 ride on it with joints 5 to 7 held at 0, in both.
     got, expected = _compare(FR3, "fr3_link4", FR3_READY[:4], (0.0, 0.05, 0.0), (0.0, 1.0, 0.0))
@@ -369,7 +360,6 @@ def test_covopt_agrees_on_an_inner_link_and_a_base_other_than_the_root():
              base="base_link_inertia")
 
 
-@needs_reflected_mass
 def test_covopt_agrees_on_the_test_arms_closed_forms():
     for q in [(0.0, 0.3), (0.7, -1.2), (-2.0, 2.5)]:
         got, _ = _compare(PLANAR, "tool", q, (0.0, -0.1, 0.0), (0.6, 0.8, 0.0))
@@ -380,7 +370,6 @@ def test_covopt_agrees_on_the_test_arms_closed_forms():
         _compare(CART_PENDULUM, "tip", (0.25, theta), (0.0, 0.0, 0.0), (0.6, 0.8, 0.0))
 
 
-@needs_reflected_mass
 def test_covopt_calls_singular_directions_fixed_with_a_warning():
     got, _ = _compare(PLANAR, "tool", (0.4, 0.0), (0.0, 0.0, 0.0),
                       (math.cos(0.4), math.sin(0.4), 0.0))
@@ -391,12 +380,6 @@ def test_covopt_calls_singular_directions_fixed_with_a_warning():
     assert got["warnings"]
 
 
-needs_contact_motion = pytest.mark.skipif(
-    not hasattr(covopt, "contact_motion"),
-    reason="covopt.contact_motion is not built yet (the lead removes this skip)")
-
-
-@needs_contact_motion
 def test_covopt_contact_motion_along_the_example_trajectory_agrees_with_the_reference():
     # robot/models/franka_fr3_pick.csv: per sample the point's velocity J_v q_dot, its speed,
     # and the reflected mass along the motion (at rest: the largest over all directions).
