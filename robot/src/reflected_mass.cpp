@@ -1,5 +1,6 @@
 #include "covopt/robot/reflected_mass.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -80,10 +81,14 @@ Eigen::Vector3d CanonicalSign(const Eigen::Vector3d& v) {
   return v[largest] < 0 ? Eigen::Vector3d(-v) : v;
 }
 
+/// "(x, y, z)" to 4 digits; rounding noise (below 5e-13 of the largest component, or 5e-13 for a
+/// point near the origin) and negative zeros print as 0.
 std::string FormatVector(const Eigen::Vector3d& v) {
+  const double noise = 5e-13 * std::max(1.0, v.cwiseAbs().maxCoeff());
+  const auto clean = [noise](double x) { return std::abs(x) < noise ? 0.0 : x; };
   std::ostringstream out;
   out.precision(4);
-  out << "(" << v[0] << ", " << v[1] << ", " << v[2] << ")";
+  out << "(" << clean(v[0]) << ", " << clean(v[1]) << ", " << clean(v[2]) << ")";
   return out.str();
 }
 
