@@ -31,16 +31,38 @@ ContactState Law(const RunState& run, double delta) noexcept {
   return run.model->StateInSegment(static_cast<std::size_t>(run.segment), delta);
 }
 
+/// F [N] and σ_c [Pa] at δ with the current segment's formula: Law's force and stress, with
+/// ImpactModel::StateInSegment's expressions (so the same to the bit) but without the
+/// energies and the stiffness the right-hand side does not use.
+struct ForceAndStress {
+  double force_N = 0.0;
+  double compressive_stress_Pa = 0.0;
+};
+
+ForceAndStress LawForceAndStress(const RunState& run, double delta) noexcept {
+  if (run.segment == kWholeLaw) {
+    const ContactState contact = run.model->StateAt(delta);
+    return {contact.force_N, contact.compressive_stress_Pa};
+  }
+  if (run.segment == 0 && !(delta > 0.0)) return {};  // free flight
+  const ForceLawSegment& seg = run.model->segment(static_cast<std::size_t>(run.segment));
+  constexpr double kHertzPressureFactor = 3.0 / (2.0 * std::numbers::pi);  // k = 3/(2π)
+  const double x = std::max(delta - seg.origin_m, 0.0);
+  const double x_pow_nm1 = std::pow(x, seg.exponent - 1.0);
+  const double kc = kHertzPressureFactor * seg.stiffness * seg.curvature_per_m;
+  return {seg.force_offset_N + seg.stiffness * (x_pow_nm1 * x), seg.stress_offset_Pa + kc * x_pow_nm1};
+}
+
 }  // namespace
 
 int RightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) {
   const auto& run = *static_cast<const RunState*>(user_data);
   const sunrealtype* state = N_VGetArrayPointer(y);
   sunrealtype* rate = N_VGetArrayPointer(ydot);
-  const ContactState contact = Law(run, state[0]);
+  const ForceAndStress law = LawForceAndStress(run, state[0]);
   rate[0] = state[1];
-  rate[1] = -contact.force_N * run.inverse_mass;
-  rate[2] = contact.compressive_stress_Pa * state[1];
+  rate[1] = -law.force_N * run.inverse_mass;
+  rate[2] = law.compressive_stress_Pa * state[1];
   return std::isfinite(rate[1]) && std::isfinite(rate[2]) ? 0 : 1;  // 1: recoverable
 }
 
