@@ -21,7 +21,8 @@ from ._errors import ComputationError
 ComputationError.__module__ = __name__  # shown as covopt.ComputationError
 
 __all__ = ["simulate", "sweep", "optimize", "materials", "material", "ComputationError",
-           "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "contact_motion"]
+           "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "contact_motion",
+           "check_trajectory"]
 
 
 def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
@@ -221,3 +222,35 @@ def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, u
     """
     return _covopt.contact_motion(urdf, tip, trajectory, base=base, point=point,
                                   urdf_text=urdf_text)
+
+
+def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, urdf_text=None,
+                     robot_radius=None, robot_modulus=None, robot_poisson=None,
+                     covering_modulus=None, covering_poisson=None, covering_thickness=None,
+                     head_mass=None, head_radius=None, scalp_modulus=None, scalp_poisson=None,
+                     scalp_thickness=None, skull_modulus=None, skull_poisson=None, thresholds=None,
+                     laceration_limit=None, contusion_limit=None, safety_factor=None,
+                     material=None, allow_full_compression=False):
+    """Is a robot motion safe with this covering, and by how much may it be sped up or must
+    it be slowed down? As ``covopt robot --trajectory --json``.
+
+    The robot and trajectory as contact_motion takes them; the covering, head and limits as
+    max_safe_speed takes them (no robot_mass or speed: each sample brings its reflected mass
+    along the motion and the contact point's speed). Per sample: the injury ratios of an
+    impact at that speed and mass, and the largest safe speed at that mass
+    (optim::CheckTrajectory). safe_speed_scale = min over moving samples of max safe speed /
+    speed: running the whole trajectory k times faster is safe exactly when k <= it.
+
+    Returns a dict: status ("safe", "unsafe", "at-rest"), message, safe_speed_scale (None
+    when at rest throughout), worst_sample (index and the sample's keys; None at rest),
+    sample_count, unsafe_sample_count, criterion, safety_factor, limits, search_limit, scene,
+    joint_names, samples (time_s, speed_m_per_s, reflected_mass_kg ("fixed" if infinite),
+    moving, max_safe_speed_m_per_s (None when no speed is safe), speed_scale, limited_by,
+    laceration_ratio, contusion_ratio, compression_ratio, safe), warnings (the robot's and the
+    check's; without the CLI's warnings about its own input). Raises ValueError on bad input.
+    """
+    scene = {name: value for name, value in locals().items()
+             if value is not None and name not in
+             ("urdf", "tip", "trajectory", "base", "point", "urdf_text")}
+    return _covopt.check_trajectory(urdf, tip, trajectory, base=base, point=point,
+                                    urdf_text=urdf_text, **scene)

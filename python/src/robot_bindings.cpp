@@ -16,6 +16,7 @@
 
 #include "covopt/report/robot_json.hpp"
 #include "covopt/robot.hpp"
+#include "robot_inputs.hpp"
 #include "scene_keywords.hpp"
 
 namespace py = pybind11;
@@ -51,6 +52,8 @@ std::vector<double> Numbers(const py::handle& value, const std::string& what) {
   return numbers;
 }
 
+}  // namespace
+
 Eigen::Vector3d Triple(const py::handle& value, const char* what) {
   const std::vector<double> v = Numbers(value, what);
   if (v.size() != 3) {
@@ -60,9 +63,13 @@ Eigen::Vector3d Triple(const py::handle& value, const char* what) {
   return {v[0], v[1], v[2]};
 }
 
+namespace {
+
 Eigen::VectorXd Vector(const std::vector<double>& v) {
   return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
 }
+
+}  // namespace
 
 robot::KinematicChain Chain(const py::object& urdf, const std::optional<std::string>& urdf_text,
                             const std::string& tip, const std::optional<std::string>& base) {
@@ -82,6 +89,8 @@ robot::KinematicChain Chain(const py::object& urdf, const std::optional<std::str
   return robot::KinematicChain::FromUrdfFile(path, spec);
 }
 
+namespace {
+
 py::object ReflectedMass(const py::object& urdf, const std::string& tip, const py::object& joints,
                          const std::optional<std::string>& base, const py::object& point,
                          const py::object& direction, const std::optional<std::string>& urdf_text) {
@@ -97,6 +106,8 @@ py::object ReflectedMass(const py::object& urdf, const std::string& tip, const p
   }
   return JsonToPython(report::RobotJson(result, {}, -1));
 }
+
+}  // namespace
 
 /// A trajectory: a CSV path (str or os.PathLike), or a dict with time_s (N), positions
 /// (N x n) and velocities (N x n).
@@ -138,6 +149,8 @@ robot::JointTrajectory Trajectory(const py::object& trajectory, std::size_t join
   const std::string path = py::str(py::module_::import("os").attr("fspath")(trajectory)).cast<std::string>();
   return robot::ReadJointTrajectory(std::filesystem::path(path), joint_count);
 }
+
+namespace {
 
 py::object ContactMotion(const py::object& urdf, const std::string& tip, const py::object& trajectory,
                          const std::optional<std::string>& base, const py::object& point,

@@ -1,0 +1,32 @@
+#pragma once
+/// @file robot_inputs.hpp
+/// How the robot calls read their Python arguments (defined in robot_bindings.cpp), for the
+/// other binding files: covopt.check_trajectory takes the robot as covopt.contact_motion does.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+#include <pybind11/pybind11.h>
+
+#include "covopt/robot/kinematic_chain.hpp"
+#include "covopt/robot/trajectory.hpp"
+
+namespace covopt::python {
+
+/// The chain base -> tip of the URDF file `urdf` (str or os.PathLike), or of the URDF text
+/// `urdf_text`: exactly one of them. @throws std::invalid_argument otherwise, or as
+/// robot::KinematicChain::FromUrdfFile.
+robot::KinematicChain Chain(const pybind11::object& urdf, const std::optional<std::string>& urdf_text,
+                            const std::string& tip, const std::optional<std::string>& base);
+
+/// A trajectory of `joint_count` joints: a CSV path (str or os.PathLike, read by
+/// robot::ReadJointTrajectory), or a dict with time_s (N), positions (N x n) and velocities
+/// (N x n). @throws std::invalid_argument naming the key, the sample or the line.
+robot::JointTrajectory Trajectory(const pybind11::object& trajectory, std::size_t joint_count);
+
+/// Three finite numbers (x, y, z). @throws std::invalid_argument naming `what`.
+Eigen::Vector3d Triple(const pybind11::handle& value, const char* what);
+
+}  // namespace covopt::python
