@@ -7,6 +7,7 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -29,6 +30,9 @@ struct RunState {
   const ImpactModel* model = nullptr;
   long segment = 0;  // index into the law, or kWholeLaw when not restarting at switches
   double inverse_mass = 0.0;
+  /// Per segment, the phase-local penetration [m] at which unloading stops for the series
+  /// closing of the phase (time_integration.cpp, ClosePhase); 0: none, down to the start.
+  std::array<double, 3> closing_m{};
 };
 
 // The callbacks, shared by every integrator (same C signatures in CVODE and ARKODE).

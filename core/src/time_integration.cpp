@@ -73,7 +73,7 @@ int RootFunctions(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user_data
   double upper = std::numeric_limits<double>::infinity();
   if (run.segment != kWholeLaw) {
     const ForceLawSegment& seg = run.model->segment(static_cast<std::size_t>(run.segment));
-    lower = seg.start_m;
+    lower = seg.start_m + run.closing_m[static_cast<std::size_t>(run.segment)];
     upper = seg.end_m;
   }
   g[kRootUpperSwitch] = std::isinf(upper) ? -1.0 : state[0] - upper;
@@ -180,6 +180,44 @@ PhaseOpening OpenPhase(const ForceLawSegment& seg, double v, double inverse_mass
   return opening;
 }
 
+/// The end of a phase left downward at x = 0: the phase's opening run backwards (the law is
+/// conservative, so the motion is time-reversible). From the state at phase-local
+/// penetration x_c > 0 with rate v_c < 0, the exit speed w follows from the energy of the
+/// segment's law between x_c and 0,  w² = v_c² + (2/m) (F_off x_c + K x_c^(n+1)/(n+1)),  and
+/// the time s left to x = 0 from the series  x(s) = w s - a s² - b s^(n+2)  (PhaseOpening
+/// with v = w, s counted back from the exit) by Newton. The closing point is where the
+/// opening ended, so the series keeps the same tolerance. duration_s = 0: no closing found.
+struct PhaseClosing {
+  double duration_s = 0.0;  ///< s, the time from the closing point to x = 0 [s]
+  PhaseOpening series;      ///< x and -rate at time s' before the exit
+};
+
+PhaseClosing ClosePhase(const ForceLawSegment& seg, double x_c, double v_c, double inverse_mass) {
+  PhaseClosing closing;
+  const double n = seg.exponent;
+  const double drop = 2.0 * inverse_mass *
+                      (seg.force_offset_N * x_c + seg.stiffness * std::pow(x_c, n + 1.0) / (n + 1.0));
+  const double w = std::sqrt(v_c * v_c + drop);
+  if (!(x_c > 0.0 && w > 0.0 && std::isfinite(w))) return closing;
+  PhaseOpening& series = closing.series;
+  series.v = w;
+  series.n = n;
+  series.a = 0.5 * seg.force_offset_N * inverse_mass;
+  series.b = seg.stiffness * std::pow(w, n) * inverse_mass / ((n + 1.0) * (n + 2.0));
+  double s = x_c / w;
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    const auto [x, rate] = series.At(s);
+    if (!(rate > 0.0)) return closing;
+    const double step = (x - x_c) / rate;
+    s -= step;
+    if (std::abs(step) <= 1e-15 * s) {
+      if (s > 0.0 && std::isfinite(s)) closing.duration_s = s;
+      return closing;
+    }
+  }
+  return closing;
+}
+
 void ValidateOptions(const TimeIntegrationOptions& o) {
   using internal::FormatNumber;
   if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
@@ -270,6 +308,7 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
   run.model = &model;
   run.segment = options.restart_at_phase_switches ? 0 : internal::kWholeLaw;
   run.inverse_mass = 1.0 / model.effective_mass_kg();
+  run.closing_m = {};
 
   // Natural scales: L from phase 1 alone (an upper estimate of δ_max), v0, and the energy
   // density phase 1 would reach at L. The absolute tolerances are relative to them.
@@ -345,6 +384,8 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
             }
           }
           set_state(opening.duration_s);
+          // Unloading, the phase ends where its opening did (ClosePhase).
+          run.closing_m[j] = y[0] - seg.start_m;
           t = t_start + opening.duration_s;
           first_step = 0.1 * opening.duration_s;
           record(t);
@@ -393,6 +434,37 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
       continue;  // the law is smooth here: no restart
     }
     if (found[internal::kRootLowerSwitch] && at_max) {
+      if (run.segment != internal::kWholeLaw && run.closing_m[static_cast<std::size_t>(run.segment)] > 0.0) {
+        const std::size_t j = static_cast<std::size_t>(run.segment);
+        const ForceLawSegment& seg = model.segment(j);
+        const PhaseClosing closing = ClosePhase(seg, y[0] - seg.start_m, y[1], run.inverse_mass);
+        run.closing_m[j] = 0.0;  // the phase's own start from here on
+        if (!(closing.duration_s > 0.0)) {  // no series end: integrate down to the start
+          stepper.AddStatistics(result.statistics);
+          ++result.statistics.restarts;
+          flag = restart(false);
+          continue;
+        }
+        const double t_close = t;
+        auto set_state = [&](double before_exit) {
+          const auto [x, rate] = closing.series.At(before_exit);
+          y[0] = seg.start_m + x;
+          y[1] = -rate;
+          y[2] = model.StateInSegment(j, y[0]).energy_density_J_per_m2;
+        };
+        const double interval = options.history_max_interval_s;
+        if (options.record_history && interval > 0.0) {  // the closing, sampled
+          const int gaps = static_cast<int>(std::ceil(closing.duration_s / interval));
+          for (int k = 1; k < gaps; ++k) {
+            const double tau = closing.duration_s * k / gaps;
+            set_state(closing.duration_s - tau);
+            push_sample(t_close + tau, y);
+          }
+        }
+        set_state(0.0);
+        t = t_close + closing.duration_s;
+        record(t);
+      }
       if (run.segment == 0 || run.segment == internal::kWholeLaw) {
         separated = true;
         result.contact_duration_s = t;

@@ -171,3 +171,19 @@ TEST_CASE("Dense output fills the history to the requested spacing", "[time]") {
   options.history_max_interval_s = -1.0;
   CHECK_THROWS_WITH(SimulateImpact(model, options), Catch::Contains("history_max_interval_s"));
 }
+
+TEST_CASE("Each phase's unloading ends on its series: duration, symmetry and rebound", "[time]") {
+  // Unloading toward a phase start (x -> 0, where the law's derivatives are singular) stops
+  // where the phase's opening ended and finishes on the opening's series run backwards; the
+  // motion is conservative, so the result must be the loading run in reverse.
+  Scene scene = PaperScene(GENERATE(0.0, 0.002, 0.015, 0.05), 27.6e6, 0.22);
+  scene.robot.speed_m_per_s = GENERATE(0.5, 2.0, 5.0);
+  scene.model.thresholds = GENERATE(ThresholdReading::kCumulative, ThresholdReading::kLiteral);
+  const ImpactModel model = ImpactModel::FromScene(scene);
+  const ImpactResult exact = SolveExact(model);
+  const ImpactResult result = SimulateImpact(model);
+  REQUIRE(result.ok());
+  CHECK(RelativeError(*result.contact_duration_s, *exact.contact_duration_s) < 1e-7);
+  CHECK(RelativeError(*result.contact_duration_s, 2.0 * *result.time_of_max_compression_s) < 1e-7);
+  CHECK(RelativeError(*result.rebound_speed_m_per_s, scene.robot.speed_m_per_s) < 1e-7);
+}

@@ -8,7 +8,10 @@
 /// it is re-initialised (CVodeReInit / ERKStepReInit) because the force is only C⁰ there; at maximum
 /// compression (δ' = 0 going down: δ_max, e_A,max, time of the peak; F_max and σ_c,max as
 /// the largest over the loading branch, PeaksAtMaxPenetration); and at separation
-/// (δ = 0 going down: duration and rebound speed). Inside a phase the right-hand side uses
+/// (δ = 0 going down: duration and rebound speed). Where a phase's law starts at its own
+/// x = 0 (x^n, singular derivatives), the first stretch upward is taken from the phase's
+/// series solution, and unloading stops where that stretch ended and reaches x = 0 on the
+/// same series run backwards (exit speed from the energy of the law). Inside a phase the right-hand side uses
 /// that phase's formula continued past its ends with the phase-local penetration clamped
 /// at 0, so an overshooting step never takes the pow of a negative base.
 ///
