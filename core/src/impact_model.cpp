@@ -170,7 +170,8 @@ ImpactModel ImpactModel::FromScene(const Scene& scene) {
       // Offsets: the previous law at this segment's origin (F, σ) and start (U, e).
       // Cumulative: origin == start, so all four are continuous.
       const ContactState at_origin = model.StateInSegment(count - 1, origin);
-      const ContactState at_start = model.StateInSegment(count - 1, start);
+      const ContactState at_start =
+          start == origin ? at_origin : model.StateInSegment(count - 1, start);
       seg.force_offset_N = at_origin.force_N;
       seg.stress_offset_Pa = at_origin.compressive_stress_Pa;
       seg.energy_at_start_J = at_start.potential_energy_J;

@@ -109,6 +109,14 @@ ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
   // thresholds each end equals the next segment's offset, which the value at δ_max adds a
   // non-negative term to, so std::max keeps the value at δ_max bit for bit.
   for (std::size_t j = 0; j < segment; ++j) {
+    // Segment j ends where j + 1 starts; when j + 1's origin is there too, its offsets are
+    // segment j's F and σ at that point, computed the same way (ImpactModel::FromScene).
+    const ForceLawSegment& next = model.segment(j + 1);
+    if (next.origin_m == next.start_m) {
+      force = std::max(force, next.force_offset_N);
+      stress = std::max(stress, next.stress_offset_Pa);
+      continue;
+    }
     const ContactState end = model.StateInSegment(j, model.segment(j).end_m);
     force = std::max(force, end.force_N);
     stress = std::max(stress, end.compressive_stress_Pa);
