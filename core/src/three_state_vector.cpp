@@ -167,7 +167,31 @@ int LinearCombination(int count, double* c, N_Vector* X, N_Vector z) {
     }
     return 0;
   }
-  for (int k = 0; k < count; ++k) xd[k] = Data(X[k]);
+  bool aliased = false;  // z is also one of X_1 .. X_(count-1)
+  for (int k = 0; k < count; ++k) {
+    xd[k] = Data(X[k]);
+    aliased = aliased || (k > 0 && X[k] == z);
+  }
+  if (!aliased) {  // the three sums in registers, each in the serial kernel's order
+    const bool scale_first = in_place && c[0] != 1.0;
+    double z0 = in_place ? zd[0] : c[0] * xd[0][0];
+    double z1 = in_place ? zd[1] : c[0] * xd[0][1];
+    double z2 = in_place ? zd[2] : c[0] * xd[0][2];
+    if (scale_first) {
+      z0 *= c[0];
+      z1 *= c[0];
+      z2 *= c[0];
+    }
+    for (int k = 1; k < count; ++k) {
+      z0 += c[k] * xd[k][0];
+      z1 += c[k] * xd[k][1];
+      z2 += c[k] * xd[k][2];
+    }
+    zd[0] = z0;
+    zd[1] = z1;
+    zd[2] = z2;
+    return 0;
+  }
   for (int i = 0; i < kLength; ++i) {
     if (!in_place) {
       zd[i] = c[0] * xd[0][i];
