@@ -1,5 +1,5 @@
-// covopt benchmarks (Google Benchmark): the exact path and the CVODE time path on the
-// paper's scenes. Run: ./build/bench/covopt_bench   (not part of CTest; numbers in README).
+// covopt benchmarks (Google Benchmark): the exact path and the time path (ARKODE and CVODE)
+// on the paper's scenes. Run: ./build/bench/covopt_bench   (not part of CTest; numbers in README).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -39,6 +39,16 @@ void BM_ExactPeaks(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(covopt::ExactPeaks(model));
 }
 BENCHMARK(BM_ExactPeaks)->Arg(0)->Arg(1)->ArgNames({"bare"});
+
+/// Model construction (validation and the force law) and the exact peaks from a scene: what
+/// every evaluation of a design costs (issue 15's target: <= 200 ns).
+void BM_ModelAndPeaks(benchmark::State& state) {
+  const covopt::Scene scene = state.range(0) != 0 ? PaperSceneBare() : PaperSceneWithCovering();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(covopt::ExactPeaks(covopt::ImpactModel::FromScene(scene)));
+  }
+}
+BENCHMARK(BM_ModelAndPeaks)->Arg(0)->Arg(1)->ArgNames({"bare"});
 
 void BM_ExactPeaksAndDuration(benchmark::State& state) {
   const auto& model = Model(static_cast<int>(state.range(0)));
