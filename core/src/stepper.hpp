@@ -61,6 +61,12 @@ class Stepper {
   /// Adds this interval's counters (they are reset by ReInit).
   virtual void AddStatistics(SolverStatistics& stats) = 0;
   virtual std::string FlagName(int flag) = 0;
+  /// A first step [s] for a re-entry into a region this stepper already crossed with steps of
+  /// `step` [s]: a one-step method can take such a step at once; 0 where the integrator
+  /// should estimate its own (CVODE restarts at order 1).
+  virtual double ReentryStep(double step) { return step; }
+  /// |size| of the last step taken [s].
+  virtual double LastStep() = 0;
 };
 
 /// "NAME (flag)" from a return-flag name SUNDIALS malloc'ed (freed here; null: unknown).

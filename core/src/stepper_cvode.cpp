@@ -4,6 +4,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "stepper.hpp"
@@ -77,6 +78,12 @@ class CvodeStepper final : public Stepper {
     }
   }
   std::string FlagName(int flag) override { return TakeFlagName(CVodeGetReturnFlagName(flag), flag); }
+  double ReentryStep(double /*step*/) override { return 0.0; }  // order 1 after a restart
+  double LastStep() override {
+    double step = 0.0;
+    CVodeGetLastStep(mem_, &step);
+    return std::abs(step);
+  }
 
  private:
   bool bdf_ = false;

@@ -357,8 +357,15 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
   };
   // Re-initialise at a phase switch. An upward entry (x = 0 of the new phase's law) first
   // takes the phase's series opening; CVODE starts after it with a step a tenth of it.
-  auto restart = [&](bool upward) {
-    double first_step = 0.0;  // 0: CVODE estimates (downward entries are smooth)
+  // Per segment, the step that crossed its end on the way up: a downward entry there meets
+  // the same smooth law (the motion is time-reversible), so it starts with that step rather
+  // than the integrator's cautious estimate (about 1000 times smaller).
+  std::array<double, 3> loading_step_at_end{};
+  auto restart = [&](bool upward, bool reentry_at_end = true) {
+    double first_step = 0.0;  // 0: the integrator estimates
+    if (!upward && reentry_at_end && run.segment != internal::kWholeLaw) {
+      first_step = stepper.ReentryStep(loading_step_at_end[static_cast<std::size_t>(run.segment)]);
+    }
     if (upward && run.segment != internal::kWholeLaw && y[1] > 0.0) {
       const std::size_t j = static_cast<std::size_t>(run.segment);
       const ForceLawSegment& seg = model.segment(j);
@@ -442,7 +449,7 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
         if (!(closing.duration_s > 0.0)) {  // no series end: integrate down to the start
           stepper.AddStatistics(result.statistics);
           ++result.statistics.restarts;
-          flag = restart(false);
+          flag = restart(false, false);
           continue;
         }
         const double t_close = t;
@@ -478,6 +485,7 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
       continue;
     }
     if (found[internal::kRootUpperSwitch] && !at_max) {
+      loading_step_at_end[static_cast<std::size_t>(run.segment)] = stepper.LastStep();
       ++run.segment;
       stepper.AddStatistics(result.statistics);
       ++result.statistics.restarts;
