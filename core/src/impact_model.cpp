@@ -24,20 +24,31 @@ constexpr double kHertzPressureFactor = 3.0 / (2.0 * std::numbers::pi);  // k = 
                               ")");
 }
 
-/// finite and in (0, max] [unit]; `infinite_word` (e.g. "fixed") also admits +inf.
-/// The message is only built on failure: validation runs in every optimiser evaluation.
-void CheckPositive(const char* field, double value, double max, const char* unit,
-                   const char* infinite_word = nullptr) {
-  if (std::isinf(value) && value > 0 && infinite_word) return;
-  if (value > 0.0 && value <= max) return;  // false for NaN
+[[noreturn, gnu::cold, gnu::noinline]] void RejectPositive(const char* field, double value,
+                                                           double max, const char* unit,
+                                                           const char* infinite_word) {
   Reject(field,
          "in (0, " + FormatNumber(max) + "] " + unit +
              (infinite_word ? std::string(", or ") + infinite_word : std::string()),
          value);
 }
 
-void CheckPoisson(const char* field, double value) {
-  if (!(value > -1.0 && value <= 0.5)) Reject(field, "in (-1, 0.5]", value);
+[[noreturn, gnu::cold, gnu::noinline]] void RejectPoisson(const char* field, double value) {
+  Reject(field, "in (-1, 0.5]", value);
+}
+
+/// finite and in (0, max] [unit]; `infinite_word` (e.g. "fixed") also admits +inf.
+/// The message is only built on failure (out of line): validation runs in every optimiser
+/// evaluation.
+inline void CheckPositive(const char* field, double value, double max, const char* unit,
+                          const char* infinite_word = nullptr) {
+  if (value > 0.0 && value <= max) return;  // false for NaN and +inf (max is finite)
+  if (std::isinf(value) && value > 0 && infinite_word) return;
+  RejectPositive(field, value, max, unit, infinite_word);
+}
+
+inline void CheckPoisson(const char* field, double value) {
+  if (!(value > -1.0 && value <= 0.5)) RejectPoisson(field, value);
 }
 
 void CheckScene(const Scene& s) {
