@@ -57,8 +57,9 @@ ForceAndStress LawForceAndStress(const RunState& run, double delta) noexcept {
 
 int RightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) {
   const auto& run = *static_cast<const RunState*>(user_data);
-  const sunrealtype* state = N_VGetArrayPointer(y);
-  sunrealtype* rate = N_VGetArrayPointer(ydot);
+  // Every vector here is a clone of MakeThreeStateVector's: serial layout, read directly.
+  const sunrealtype* state = NV_DATA_S(y);
+  sunrealtype* rate = NV_DATA_S(ydot);
   const ForceAndStress law = LawForceAndStress(run, state[0]);
   rate[0] = state[1];
   rate[1] = -law.force_N * run.inverse_mass;
@@ -68,7 +69,7 @@ int RightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data)
 
 int RootFunctions(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user_data) {
   const auto& run = *static_cast<const RunState*>(user_data);
-  const sunrealtype* state = N_VGetArrayPointer(y);
+  const sunrealtype* state = NV_DATA_S(y);
   double lower = 0.0;
   double upper = std::numeric_limits<double>::infinity();
   if (run.segment != kWholeLaw) {
