@@ -24,7 +24,17 @@ cannot move the point in (a singular configuration) has an infinite mass:
 Without --direction only the extremes are given. Robot models shipped with
 covopt: share/covopt/robots.
 
-Exit codes: 0 done; 2 bad input.)";
+--trajectory FILE.csv checks a motion instead (no --joints, no --direction):
+per sample the contact point's speed |J_v q'|, the reflected mass along its
+motion, the injury ratios of an impact there on the covering and head of the
+scene flags (as in 'covopt speed-limit'), the max safe speed at that mass, and
+safe_speed_scale = min over samples of max safe speed / speed: the factor by
+which the whole trajectory may be sped up (> 1) or must be slowed (< 1). The
+table lists every sample of a trajectory of up to 20 samples; of a longer one
+the 10 with the smallest speed scale and every unsafe one (at most 30).
+
+Exit codes: 0 done (with --trajectory also when the motion is unsafe); 1 a --csv
+or --plot output could not be written; 2 bad input.)";
 
 std::string Mass(double mass_kg) {
   return std::isfinite(mass_kg) ? fmt::format("{:.4g} kg", mass_kg) : std::string("fixed (infinite)");
@@ -39,15 +49,21 @@ std::string Direction(const Eigen::Vector3d& v) {
 
 CLI::App* SetupRobot(CLI::App& app, RobotOptions& options) {
   CLI::App* sub = app.add_subcommand(
-      "robot", "Reflected mass of a robot (URDF) at a contact point, along a direction and its extremes");
+      "robot", "Reflected mass of a robot (URDF) at a contact point, along a direction and its extremes; "
+               "with --trajectory, the safety check of a motion");
   sub->footer(std::string(kFooter));
   AddRobotModelOptions(*sub, options.model, false, "Robot model");
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")->group("Output");
+  AddRobotTrajectoryOptions(*sub, options.trajectory);
   return sub;
 }
 
 int RunRobot(const RobotOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "robot");
+  if (options.trajectory.file) return RunRobotTrajectory(options.model, options.trajectory, options.json, out, err);
+  if (const auto flag = options.trajectory.FirstCheckFlag()) {
+    return errors.BadInput(fmt::format("{} applies with --trajectory FILE.csv only (the trajectory check)", *flag));
+  }
   robot::ReflectedMassResult result;
   std::string robot_line;
   try {

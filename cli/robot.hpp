@@ -5,6 +5,8 @@
 ///
 ///     covopt robot --urdf FILE [--base LINK] --tip LINK --joints Q1,Q2,... [--point X,Y,Z]
 ///                  [--direction X,Y,Z] [--json]
+///     covopt robot --urdf FILE [--base LINK] --tip LINK [--point X,Y,Z] --trajectory FILE.csv
+///                  [scene flags, limits] [--json] [--csv FILE|-] [--plot FILE.png|FILE.svg]
 ///
 /// Without --direction only the extremes are printed (JSON: reflected_mass_kg and direction
 /// null). Exit codes: 0 done (also when some direction is fixed: a warning), 2 bad input.
@@ -12,6 +14,7 @@
 #include <ostream>
 
 #include "robot_model_options.hpp"
+#include "robot_trajectory.hpp"
 
 namespace CLI {
 class App;
@@ -23,12 +26,15 @@ namespace covopt::cli {
 struct RobotOptions {
   RobotModelOptions model;  ///< --urdf/--base/--tip/--joints/--point/--direction
   bool json = false;        ///< --json: print report::RobotJson
+  /// --trajectory FILE.csv and the check's flags: the trajectory safety check instead.
+  RobotTrajectoryOptions trajectory;
 };
 
 /// Adds the `robot` subcommand to `app`; `options` must outlive the parse.
 CLI::App* SetupRobot(CLI::App& app, RobotOptions& options);
 
-/// Runs the subcommand: one call to robot::ReflectedMass; returns the exit code (0 or 2).
+/// Runs the subcommand: one call to robot::ReflectedMass, or with --trajectory the check of
+/// robot_trajectory.hpp; returns the exit code (0 or 2; 1 when a check's output fails).
 int RunRobot(const RobotOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace covopt::cli

@@ -238,6 +238,8 @@ std::string SafetyMapScript(const SpeedLimitPlan& plan, const std::string& outpu
 
 }  // namespace
 
+std::string SpeedLimitCriterionText(const optim::SpeedLimitOptions& options) { return Criterion(options); }
+
 CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
   CLI::App* sub = app.add_subcommand(
       "speed-limit", "The largest safe impact speed of the robot with its covering (or, --solve-for mass, "

@@ -1,0 +1,394 @@
+#include "robot_trajectory.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "covopt/optim/trajectory_check.hpp"
+#include "covopt/report/trajectory_json.hpp"
+#include "covopt/robot/trajectory.hpp"
+#include "errors.hpp"
+#include "output.hpp"
+#include "plot.hpp"
+#include "scene_fields.hpp"
+#include "speed_limit.hpp"
+
+namespace covopt::cli {
+namespace {
+
+/// The table lists every sample of a trajectory this short; a longer one, its worst ones.
+constexpr std::size_t kListAllUpTo = 20;
+/// How many of the worst samples the table shows at least, and at most (unsafe ones).
+constexpr std::size_t kWorstShown = 10;
+constexpr std::size_t kMostShown = 30;
+
+/// Everything the check's outputs need.
+struct TrajectoryRun {
+  SimulationPlan scene;  ///< the covering, head and limits (robot mass and speed unused)
+  optim::SpeedLimitOptions limit;
+  std::string robot_line;  ///< "fr3: base -> fr3_link8, 7 movable joints; contact point ..."
+  std::string tip_link;
+  robot::ContactMotionResult motion;
+  optim::TrajectoryCheck check;
+  std::vector<std::string> input_warnings;
+  std::optional<PlotFormat> plot_format;
+};
+
+std::string MassText(double kg) { return std::isinf(kg) ? std::string("fixed") : fmt::format("{:.4g}", kg); }
+
+std::string CsvText(const optim::TrajectoryCheck& check) {
+  std::string text;
+  for (const std::string_view column : report::TrajectorySampleColumns()) {
+    text += text.empty() ? "" : ",";
+    text += column;
+  }
+  text += '\n';
+  for (const optim::SampleVerdict& sample : check.samples) {
+    bool first = true;
+    for (const std::string& cell : report::TrajectorySampleCsvCells(sample)) {
+      text += first ? "" : ",";
+      text += cell;  // numbers, "fixed", criterion names, true/false: nothing to quote
+      first = false;
+    }
+    text += '\n';
+  }
+  return text;
+}
+
+/// The samples the table shows: all of a short trajectory; else the kWorstShown moving
+/// samples with the smallest speed scale and every unsafe one, at most kMostShown, in time
+/// order.
+std::vector<std::size_t> ShownSamples(const optim::TrajectoryCheck& check) {
+  std::vector<std::size_t> shown(check.samples.size());
+  std::iota(shown.begin(), shown.end(), std::size_t{0});
+  if (check.samples.size() <= kListAllUpTo) return shown;
+  std::erase_if(shown, [&](std::size_t i) { return !check.samples[i].moving; });
+  std::stable_sort(shown.begin(), shown.end(), [&](std::size_t a, std::size_t b) {
+    return check.samples[a].speed_scale < check.samples[b].speed_scale;
+  });
+  shown.resize(std::min(shown.size(), std::max(kWorstShown, std::min(check.unsafe_sample_count, kMostShown))));
+  std::sort(shown.begin(), shown.end());
+  return shown;
+}
+
+std::string MaxSafeText(const optim::SampleVerdict& v) {
+  switch (v.speed_limit.status) {
+    case optim::SpeedLimitStatus::kNoSafeValue: return "none safe";
+    case optim::SpeedLimitStatus::kSafeUpToSearchLimit:
+      return fmt::format(">= {:.4g}", v.speed_limit.max_safe_speed_m_per_s);
+    case optim::SpeedLimitStatus::kLimited: break;
+  }
+  return fmt::format("{:.4g}", v.speed_limit.max_safe_speed_m_per_s);
+}
+
+void PrintSamples(std::ostream& out, const optim::TrajectoryCheck& check) {
+  const std::vector<std::size_t> shown = ShownSamples(check);
+  fmt::print(out, "  {:>5}  {:>9}  {:>11}  {:>9}  {:>14}  {:>8}  {:<16}  {:>10}  {:>9}  {:>11}  {}\n", "index",
+             "time [s]", "speed [m/s]", "mass [kg]", "max safe [m/s]", "scale", "limited by", "laceration",
+             "contusion", "compression", "safe");
+  for (const std::size_t i : shown) {
+    const optim::SampleVerdict& v = check.samples[i];
+    const std::string scale = v.moving ? fmt::format("{:.4g}", v.speed_scale) : std::string("-");
+    const std::string compression =
+        v.compression_ratio > 0.0 ? fmt::format("{:.3f}", v.compression_ratio) : std::string("-");
+    fmt::print(out, "  {:>5}  {:>9.4g}  {:>11.4g}  {:>9}  {:>14}  {:>8}  {:<16}  {:>10.3f}  {:>9.3f}  {:>11}  {}\n", i,
+               v.time_s, v.speed_m_per_s, MassText(v.reflected_mass_kg), MaxSafeText(v), scale,
+               optim::ToString(v.speed_limit.limited_by), v.laceration_ratio, v.contusion_ratio, compression,
+               !v.moving ? "at rest" : v.safe ? "yes" : "NO");
+  }
+  if (shown.size() < check.samples.size()) {
+    fmt::print(out,
+               "  ({} of {} samples: the {} moving ones with the smallest speed scale, every unsafe one up to {}, "
+               "in time order; all in --json and --csv)\n",
+               shown.size(), check.samples.size(), kWorstShown, kMostShown);
+  }
+}
+
+/// Speed and max safe speed over time, and the profile scaled by safe_speed_scale (dashed),
+/// which touches the limit at the worst sample.
+std::string ChartScript(const TrajectoryRun& run, const std::string& trajectory_file, PlotFormat format,
+                        const std::string& output) {
+  const optim::TrajectoryCheck& check = run.check;
+  const double scale = check.safe_speed_scale;
+  const bool scaled = std::isfinite(scale) && scale > 0.0;
+  double peak = 0.0;
+  for (const optim::SampleVerdict& v : check.samples) {
+    peak = std::max(peak, v.speed_m_per_s * (scaled ? std::max(1.0, scale) : 1.0));
+  }
+  const double top = peak > 0.0 ? 1.5 * peak : 1.0;
+  std::string s = "set encoding utf8\n";
+  s += GnuplotTerminal(format, 1000, 600);
+  s += fmt::format("set output {}\n", GnuplotQuoted(output));
+  s += "$data << EOD\n";
+  for (const optim::SampleVerdict& v : check.samples) {
+    // At rest there is no motion, hence no limit along it (the check's is the heaviest direction's).
+    const bool none = !v.moving || v.speed_limit.status == optim::SpeedLimitStatus::kNoSafeValue;
+    s += fmt::format("{} {} {} {}\n", v.time_s, v.speed_m_per_s,
+                     none ? std::string("NaN") : fmt::format("{}", v.speed_limit.max_safe_speed_m_per_s),
+                     scaled ? fmt::format("{}", v.speed_m_per_s * scale) : std::string("NaN"));
+  }
+  s += "EOD\n";
+  const std::array<std::string_view, 2> omitted{"robot.mass", "robot.speed"};
+  const std::string verdict =
+      check.worst_sample ? fmt::format("{}, safe speed scale {:.4g}", optim::ToString(check.status), scale)
+                         : std::string(optim::ToString(check.status));
+  s += fmt::format(
+      "set title {} . \"\\n\" . {}\n",
+      GnuplotQuoted(fmt::format("covopt robot --trajectory {} (tip {}): {}",
+                                std::filesystem::path(trajectory_file).filename().string(), run.tip_link, verdict)),
+      GnuplotQuoted(fmt::format("{}; criterion {}{}", SceneHeadline(run.scene.scene, omitted),
+                                optim::ToString(run.limit.criterion()),
+                                run.limit.safety_factor != 1.0
+                                    ? fmt::format(", safety factor {:g}", run.limit.safety_factor)
+                                    : std::string())));
+  s += "set grid linecolor rgb '#dddddd'\nset key below\nset autoscale xfix\n";
+  s += fmt::format("set yrange [0:{}]\n", top);
+  s += "set xlabel 'time [s]'\nset ylabel 'speed of the contact point [m/s]'\n";
+  s += "plot $data using 1:2 with lines linewidth 2 linecolor rgb '#1f5fa8' title 'speed', "
+       "$data using 1:3 with lines linewidth 2 linecolor rgb '#c0392b' title 'max safe speed at the "
+       "reflected mass along the motion'";
+  if (scaled) {
+    s += fmt::format(", $data using 1:4 with lines linewidth 2 dashtype 2 linecolor rgb '#1f5fa8' title {}",
+                     GnuplotQuoted(fmt::format("speed x {:.4g} (the safe speed scale)", scale)));
+  }
+  if (check.worst_sample) {
+    const optim::SampleVerdict& w = check.samples[*check.worst_sample];
+    s += fmt::format(", '-' using 1:2 with points pointtype 7 pointsize 1.3 linecolor rgb '#000000' title {}",
+                     GnuplotQuoted(fmt::format("worst sample ({}, t = {:.4g} s)", *check.worst_sample, w.time_s)));
+    s += fmt::format("\n{} {}\ne", w.time_s, w.speed_limit.max_safe_speed_m_per_s);
+  }
+  s += "\nunset output\n";
+  return s;
+}
+
+/// The chain and contact point of --urdf/--base/--tip/--point, read by the robot-model group
+/// (ResolveRobotModelInput, so that every message is the group's). The group reads joint
+/// positions too; the trajectory brings its own, so the chain's zero configuration stands in
+/// (the URDF is read twice: a millisecond).
+RobotModelInput ResolveChainAndPoint(const RobotModelOptions& model) {
+  if (!model.urdf) throw InputError("--urdf FILE is required with --trajectory");
+  RobotModelOptions zero_joints = model;
+  zero_joints.joints = "";
+  zero_joints.direction.reset();
+  if (model.tip && !(model.base && model.base->empty())) {
+    try {
+      const std::size_t n = robot::KinematicChain::FromUrdfFile(*model.urdf, {model.base.value_or(""), *model.tip})
+                                .joint_count();
+      for (std::size_t i = 0; i < n; ++i) *zero_joints.joints += i ? ",0" : "0";
+    } catch (const std::invalid_argument&) {
+      // A bad URDF or link: the group's reading below says so in its words.
+    }
+  }
+  return ResolveRobotModelInput(zero_joints, false);
+}
+
+/// A library message about the trajectory's samples, or about the scene.
+std::string Attribute(const std::string& message, const SimulationPlan& scene, const std::string& file) {
+  if (message.starts_with("trajectory")) return fmt::format("--trajectory '{}': {}", file, message);
+  return AttributeError(message, scene);
+}
+
+TrajectoryRun Resolve(const RobotModelOptions& model, const RobotTrajectoryOptions& options, bool json) {
+  if (model.joints) {
+    throw InputError(fmt::format("--joints '{}': not used with --trajectory (the file gives each sample's joint "
+                                 "positions); drop --joints",
+                                 *model.joints));
+  }
+  if (model.direction) {
+    throw InputError(fmt::format("--direction '{}': not used with --trajectory (each impact is along the contact "
+                                 "point's motion); drop --direction",
+                                 *model.direction));
+  }
+  for (const auto& [key, flag] : {std::pair<std::string_view, std::string_view>{"robot.mass", "--robot-mass"},
+                                  {"robot.speed", "--speed"}}) {
+    if (const auto typed = options.scene.scene_values.find(key); typed != options.scene.scene_values.end()) {
+      throw InputError(fmt::format("{} '{}': not used with --trajectory (each sample's {} comes from the robot "
+                                   "model and the file); drop {}",
+                                   flag, typed->second,
+                                   key == "robot.mass" ? "reflected mass" : "contact-point speed", flag));
+    }
+  }
+  if (options.file->empty()) throw InputError("--trajectory: empty file name");
+  TrajectoryRun run;
+  run.scene = ResolveSimulation(options.scene);
+  run.limit.limits = run.scene.limits;
+  run.limit.safety_factor = run.scene.safety_factor;
+  run.limit.allow_full_compression = options.allow_full_compression;
+  if (options.csv_file && options.csv_file->empty()) throw InputError("--csv: empty file name");
+  if (json && options.csv_file && *options.csv_file == "-") {
+    throw InputError("--json and --csv - both print to stdout; give --csv a file name");
+  }
+  if (options.plot_file) {
+    run.plot_format = PlotFormatFor(*options.plot_file);
+    if (!run.plot_format) {
+      throw InputError(fmt::format("--plot: cannot tell the format of '{}'; name the file *.png or *.svg",
+                                   *options.plot_file));
+    }
+  }
+  for (const std::string_view key : {"robot.mass", "robot.speed"}) {
+    if (const auto source = run.scene.sources.find(key); source != run.scene.sources.end()) {
+      run.input_warnings.push_back(fmt::format("{} from {} is not used: each sample brings its own", key,
+                                               source->second));
+    }
+  }
+  for (std::string& w : InputWarnings(run.scene)) run.input_warnings.push_back(std::move(w));
+
+  const RobotModelInput robot_input = ResolveChainAndPoint(model);
+  const robot::KinematicChain& chain = robot_input.chain;
+  run.tip_link = chain.tip_link();
+  const Eigen::Vector3d& p = robot_input.point_in_tip_m;
+  run.robot_line = fmt::format("{}: {} -> {}, {} movable joint{}; contact point ({:.4g}, {:.4g}, {:.4g}) m in {}",
+                               chain.robot_name(), chain.base_link(), chain.tip_link(), chain.joint_count(),
+                               chain.joint_count() == 1 ? "" : "s", p[0], p[1], p[2], chain.tip_link());
+  try {
+    const robot::JointTrajectory trajectory = robot::ReadJointTrajectory(*options.file, chain.joint_count());
+    run.motion = robot::ContactMotion(chain, trajectory, robot_input.point_in_tip_m);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("--trajectory: {}", e.what()));
+  }
+  try {
+    run.check = optim::CheckTrajectory(run.scene.scene, report::MotionSamples(run.motion), {run.limit});
+  } catch (const std::invalid_argument& e) {
+    throw InputError(Attribute(e.what(), run.scene, *options.file));
+  }
+  return run;
+}
+
+}  // namespace
+
+std::optional<std::string> RobotTrajectoryOptions::FirstCheckFlag() const {
+  if (scene.scene_file) return "--scene";
+  for (const SceneField& field : SceneFields()) {
+    if (scene.scene_values.count(field.dotted_name()) != 0) return std::string(field.flag);
+  }
+  if (scene.thresholds) return "--thresholds";
+  if (scene.material) return "--material";
+  if (scene.catalog.given()) return scene.catalog.files.empty() ? "--no-builtin" : "--catalog";
+  if (scene.laceration_limit) return "--laceration-limit";
+  if (scene.contusion_limit) return "--contusion-limit";
+  if (scene.safety_factor) return "--safety-factor";
+  if (allow_full_compression) return "--allow-full-compression";
+  if (csv_file) return "--csv";
+  if (plot_file) return "--plot";
+  return std::nullopt;
+}
+
+void AddRobotTrajectoryOptions(CLI::App& sub, RobotTrajectoryOptions& options) {
+  sub.add_option("--trajectory", options.file,
+                 "check a joint trajectory (CSV: a header, then time [s], the n joint positions, the n joint "
+                 "velocities per line) against the covering below")
+      ->type_name("FILE.csv")
+      ->group("Trajectory check");
+  AddSceneOptions(sub, options.scene);
+  // Each sample brings the robot's mass and speed: refused with a message, hidden from --help.
+  sub.get_option("--robot-mass")->group("");
+  sub.get_option("--speed")->group("");
+  sub.add_option("--safety-factor", options.scene.safety_factor,
+                 "the ratios must stay <= 1/factor, 1-100 (default 1)")
+      ->type_name("RATIO")
+      ->group("Limits");
+  sub.add_flag("--allow-full-compression", options.allow_full_compression,
+               "the paper's criterion: a covering fully compressed at the peak may count as safe (default: "
+               "it may not)")
+      ->group("Limits");
+  sub.add_option("--csv", options.csv_file,
+                 "write the trajectory's samples as CSV ('-': to stdout instead of the table)")
+      ->type_name("FILE.csv|-")
+      ->group("Output");
+  sub.add_option("--plot", options.plot_file,
+                 "chart with gnuplot: speed and max safe speed over time, and the speed scaled by the safe "
+                 "speed scale")
+      ->type_name("FILE.png|FILE.svg")
+      ->group("Output");
+}
+
+int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOptions& options, bool json,
+                       std::ostream& out, std::ostream& err) {
+  const CommandErrors errors(err, "robot");
+  TrajectoryRun run;
+  try {
+    run = Resolve(model, options, json);
+  } catch (const std::invalid_argument& e) {  // InputError and the library's own checks
+    return errors.BadInput(e.what());
+  }
+  const optim::TrajectoryCheck& check = run.check;
+  try {
+    if (options.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+    if (options.csv_file && *options.csv_file != "-") WriteFileAtomically(*options.csv_file, CsvText(check));
+    if (options.plot_file) {
+      RunGnuplot(*options.plot_file, [&](const std::string& output_path) {
+        return ChartScript(run, *options.file, *run.plot_format, output_path);
+      });
+    }
+  } catch (const OutputError& e) {
+    return errors.Failed(e.what());
+  }
+
+  if (json) {
+    out << report::TrajectoryCheckJson(check, run.motion, run.scene.scene,
+                                       run.scene.covering_material
+                                           ? std::optional<std::string>(run.scene.covering_material->name)
+                                           : std::nullopt,
+                                       run.limit, run.input_warnings)
+        << '\n';
+  } else if (options.csv_file && *options.csv_file == "-") {
+    out << CsvText(check);
+  } else {
+    const Scene& scene = run.scene.scene;
+    const std::array<std::string_view, 2> omitted{"robot.mass", "robot.speed"};
+    const auto& samples = run.motion.samples;
+    fmt::print(out, "Robot      {}\n", run.robot_line);
+    const auto fastest = std::max_element(samples.begin(), samples.end(), [](const auto& a, const auto& b) {
+      return a.speed_m_per_s < b.speed_m_per_s;
+    });
+    fmt::print(out, "Trajectory {}: {} samples, t = {:g} .. {:g} s, peak contact speed {:.4g} m/s at t = {:.4g} s\n",
+               *options.file, samples.size(), samples.front().time_s, samples.back().time_s,
+               fastest->speed_m_per_s, fastest->time_s);
+    fmt::print(out, "Scene      {}\n", SceneHeadline(scene, omitted));
+    if (run.scene.covering_material && scene.covering.thickness_m > 0.0) {
+      fmt::print(out, "Material   {}\n", run.scene.covering_material->name);
+    }
+    const double sf = run.limit.safety_factor;
+    fmt::print(out, "Limits     laceration {:g} MPa, contusion {:g} J/cm², safety factor {:g}{}\n",
+               run.limit.limits.laceration_tensile_stress_Pa * 1e-6,
+               run.limit.limits.contusion_energy_density_J_per_m2 * 1e-4, sf,
+               sf > 1 ? fmt::format(": ratios <= {:.4g}", 1.0 / sf) : std::string());
+    fmt::print(out, "Criterion  {}\n", SpeedLimitCriterionText(run.limit));
+    fmt::print(out, "Verdict    {}\n", check.message);
+    if (check.worst_sample) {
+      const optim::SampleVerdict& w = check.samples[*check.worst_sample];
+      fmt::print(out,
+                 "Worst      sample {} at t = {:.4g} s: speed {:.4g} m/s, reflected mass {}{}, max safe speed {}{}\n",
+                 *check.worst_sample, w.time_s, w.speed_m_per_s, MassText(w.reflected_mass_kg),
+                 std::isinf(w.reflected_mass_kg) ? "" : " kg", MaxSafeText(w),
+                 w.speed_limit.status == optim::SpeedLimitStatus::kNoSafeValue ? "" : " m/s");
+    }
+    fmt::print(out, "\n");
+    PrintSamples(out, check);
+    std::vector<std::string> warnings = run.input_warnings;
+    warnings.insert(warnings.end(), run.motion.warnings.begin(), run.motion.warnings.end());
+    warnings.insert(warnings.end(), check.warnings.begin(), check.warnings.end());
+    if (warnings.empty()) fmt::print(out, "\nWarnings: none\n");
+    for (const std::string& w : warnings) fmt::print(out, "Warning: {}\n", w);
+    if (options.csv_file || options.plot_file) {
+      fmt::print(out, "Wrote      {}{}{}\n", options.csv_file.value_or(""),
+                 options.csv_file && options.plot_file ? ", " : "", options.plot_file.value_or(""));
+    }
+  }
+  out.flush();
+  if (!out) return errors.Failed("cannot write the results to standard output");
+  return 0;
+}
+
+}  // namespace covopt::cli
