@@ -42,6 +42,20 @@ class EvaluationGuard {
     return ok;
   }
 
+  /// The Lagrangian's Hessian (Problem::LagrangianHessian); false as for Constraints.
+  bool Hessian(std::span<const double> x, double objective_factor, std::span<const double> multipliers,
+               std::span<double> lower_triangle) {
+    bool ok = false;
+    try {
+      ok = problem_.LagrangianHessian(x, objective_factor, multipliers, lower_triangle);
+      for (double h : lower_triangle) ok = ok && std::isfinite(h);
+    } catch (...) {
+      Keep(std::current_exception());
+    }
+    if (!ok) ++failed_evaluations;
+    return ok;
+  }
+
   bool has_exception() const { return static_cast<bool>(exception_); }
   void RethrowIfAny() const {
     if (exception_) std::rethrow_exception(exception_);

@@ -1,4 +1,5 @@
-// Ipopt through its TNLP interface: silent, no options file, exact first derivatives.
+// Ipopt through its TNLP interface: silent, no options file, exact first derivatives, and the
+// problem's Hessian of the Lagrangian when it gives one (else L-BFGS).
 #include <IpIpoptApplication.hpp>
 #include <IpTNLP.hpp>
 
@@ -18,8 +19,9 @@ using Ipopt::Number;
 /// Problem -> Ipopt::TNLP. c(x) <= 0 becomes g in [-inf, 0]; h(x) = 0 becomes g in [0, 0].
 class TnlpAdapter : public Ipopt::TNLP {
  public:
-  TnlpAdapter(const Problem& problem, std::span<const double> x0, internal::EvaluationGuard& guard)
-      : problem_(problem), x0_(x0.begin(), x0.end()), guard_(guard),
+  TnlpAdapter(const Problem& problem, std::span<const double> x0, internal::EvaluationGuard& guard,
+              bool exact_hessian)
+      : problem_(problem), x0_(x0.begin(), x0.end()), guard_(guard), exact_hessian_(exact_hessian),
         n_(problem.dimension()), m_(problem.inequality_count() + problem.equality_count()),
         values_(m_), jacobian_(m_ * n_) {}
 
@@ -28,7 +30,7 @@ class TnlpAdapter : public Ipopt::TNLP {
     n = static_cast<Index>(n_);
     m = static_cast<Index>(m_);
     nnz_jac_g = static_cast<Index>(m_ * n_);
-    nnz_h_lag = 0;
+    nnz_h_lag = exact_hessian_ ? static_cast<Index>(n_ * (n_ + 1) / 2) : 0;
     index_style = C_STYLE;
     return true;
   }
@@ -82,6 +84,22 @@ class TnlpAdapter : public Ipopt::TNLP {
     return guard_.Constraints(Point(n, x), values_, std::span<double>(values, m_ * n_));
   }
 
+  bool eval_h(Index n, const Number* x, bool, Number obj_factor, Index m, const Number* lambda, bool,
+              Index, Index* i_row, Index* j_col, Number* values) override {
+    if (!exact_hessian_) return false;
+    if (values == nullptr) {  // the (dense) lower triangle, by rows
+      for (std::size_t i = 0, k = 0; i < n_; ++i) {
+        for (std::size_t j = 0; j <= i; ++j, ++k) {
+          i_row[k] = static_cast<Index>(i);
+          j_col[k] = static_cast<Index>(j);
+        }
+      }
+      return true;
+    }
+    return guard_.Hessian(Point(n, x), obj_factor, std::span<const double>(lambda, static_cast<std::size_t>(m)),
+                          std::span<double>(values, n_ * (n_ + 1) / 2));
+  }
+
   void finalize_solution(Ipopt::SolverReturn, Index n, const Number* x, const Number*,
                          const Number*, Index, const Number*, const Number*, Number,
                          const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
@@ -98,6 +116,7 @@ class TnlpAdapter : public Ipopt::TNLP {
   const Problem& problem_;
   std::vector<double> x0_;
   internal::EvaluationGuard& guard_;
+  bool exact_hessian_;
   std::size_t n_, m_;
   std::vector<double> values_, jacobian_;
   std::vector<double> solution_;
@@ -144,6 +163,12 @@ const char* StatusName(Ipopt::ApplicationReturnStatus status) {
   return "unknown";
 }
 
+/// Warm start (IpoptOptions::warm_start): Ipopt's initial barrier parameter "mu_init" (its
+/// default 0.1) and its bound and slack pushes "bound_push", "bound_frac", "slack_bound_push",
+/// "slack_bound_frac" (default 1e-2).
+constexpr double kWarmStartBarrier = 1e-11;
+constexpr double kWarmStartPush = 1e-12;
+
 std::mutex& IpoptMutex() {
   static std::mutex mutex;
   return mutex;
@@ -168,7 +193,8 @@ SolveResult SolveWithIpopt(const Problem& problem, std::span<const double> x0,
   std::vector<double> solution;
   {
     std::lock_guard<std::mutex> lock(IpoptMutex());
-    Ipopt::SmartPtr<TnlpAdapter> nlp = new TnlpAdapter(problem, x0, guard);
+    const bool exact_hessian = problem.provides_lagrangian_hessian() && !options.limited_memory_hessian;
+    Ipopt::SmartPtr<TnlpAdapter> nlp = new TnlpAdapter(problem, x0, guard, exact_hessian);
     // No console journal at all: Ipopt reports a rejected option on its console as soon as
     // it is set (before print_level applies), and the library never prints.
     Ipopt::SmartPtr<Ipopt::IpoptApplication> app =
@@ -184,11 +210,20 @@ SolveResult SolveWithIpopt(const Problem& problem, std::span<const double> x0,
     accepted = o->SetNumericValue("bound_relax_factor", options.bound_relax_factor) && accepted;
     accepted = o->SetIntegerValue("max_iter", options.max_iterations) && accepted;
     accepted = o->SetNumericValue("max_cpu_time", options.max_seconds) && accepted;
-    if (options.limited_memory_hessian) {
+    if (!exact_hessian) {
       accepted = o->SetStringValue("hessian_approximation", "limited-memory") && accepted;
     }
     accepted = options.derivative_test != nullptr &&
                o->SetStringValue("derivative_test", options.derivative_test) && accepted;
+    if (options.warm_start) {
+      // x0 is (nearly) the solution: start with a barrier parameter near the tolerance and
+      // the variables and slacks where they are, not pushed 1% into the interior.
+      accepted = o->SetNumericValue("mu_init", kWarmStartBarrier) && accepted;
+      accepted = o->SetStringValue("mu_strategy", "monotone") && accepted;
+      for (const char* push : {"bound_push", "bound_frac", "slack_bound_push", "slack_bound_frac"}) {
+        accepted = o->SetNumericValue(push, kWarmStartPush) && accepted;
+      }
+    }
     if (accepted) {
       status = app->Initialize("");  // "" : read no ipopt.opt from the working directory
       if (status == Ipopt::Solve_Succeeded) status = app->OptimizeTNLP(nlp);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "evaluation_guard.hpp"
 
@@ -33,6 +34,42 @@ bool SolveResult::is_usable() const noexcept {
   return EndedNormally(report.termination) && !x.empty() &&
          std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); }) &&
          std::isfinite(objective);
+}
+
+bool CentralDifferenceLagrangianHessian(const Problem& problem, std::span<const double> x,
+                                        double objective_factor, std::span<const double> multipliers,
+                                        std::span<double> lower_triangle, double relative_step) {
+  const std::size_t n = problem.dimension();
+  const std::size_t m = problem.inequality_count() + problem.equality_count();
+  if (x.size() != n || multipliers.size() != m || lower_triangle.size() != n * (n + 1) / 2) return false;
+  // ∇L at a point: σ ∇f + Σ λ_i ∇g_i.
+  std::vector<double> point(x.begin(), x.end()), gradient(n), values(m), jacobian(m * n);
+  auto lagrangian_gradient = [&](std::vector<double>& out) {
+    double value = 0.0;
+    if (!problem.Objective(point, value, gradient)) return false;
+    if (m > 0 && !problem.Constraints(point, values, jacobian)) return false;
+    for (std::size_t j = 0; j < n; ++j) {
+      double sum = objective_factor * gradient[j];
+      for (std::size_t i = 0; i < m; ++i) sum += multipliers[i] * jacobian[i * n + j];
+      if (!std::isfinite(sum)) return false;
+      out[j] = sum;
+    }
+    return true;
+  };
+  std::vector<double> full(n * n), plus(n), minus(n);  // full[j * n + k] = ∂²L/∂x_j∂x_k
+  for (std::size_t j = 0; j < n; ++j) {
+    const double h = relative_step * std::max(1.0, std::abs(x[j]));
+    point[j] = x[j] + h;
+    if (!lagrangian_gradient(plus)) return false;
+    point[j] = x[j] - h;
+    if (!lagrangian_gradient(minus)) return false;
+    point[j] = x[j];
+    for (std::size_t k = 0; k < n; ++k) full[j * n + k] = (plus[k] - minus[k]) / (2.0 * h);
+  }
+  for (std::size_t r = 0, e = 0; r < n; ++r) {
+    for (std::size_t c = 0; c <= r; ++c, ++e) lower_triangle[e] = 0.5 * (full[r * n + c] + full[c * n + r]);
+  }
+  return true;
 }
 
 namespace internal {

@@ -53,13 +53,21 @@ struct IpoptOptions {
   double bound_relax_factor = 0.0;
   int max_iterations = 200;             ///< Ipopt "max_iter"
   double max_seconds = 10.0;            ///< Ipopt "max_cpu_time"
-  /// Ipopt's L-BFGS Hessian approximation (covopt provides first derivatives only).
-  bool limited_memory_hessian = true;
-  /// Scale of the objective/gradient check Ipopt may run: "none" or "first-order".
+  /// Ipopt's L-BFGS Hessian approximation even when the problem gives its Lagrangian's
+  /// Hessian (Problem::provides_lagrangian_hessian); a problem that gives none always gets the
+  /// approximation. Default: false (the problem's Hessian when it has one).
+  bool limited_memory_hessian = false;
+  /// x0 is (nearly) the solution, as a polish from another method's answer: Ipopt starts with
+  /// its barrier parameter at 1e-11 (not 0.1), monotone, and keeps x0 and the constraint
+  /// slacks within 1e-12 of where they are (not pushed 1% into the interior), so it confirms
+  /// the point in a few iterations instead of leaving and re-approaching it. Default: false.
+  bool warm_start = false;
+  /// Scale of the derivative check Ipopt may run: "none", "first-order" or "second-order".
   const char* derivative_test = "none";
 };
 
-/// Runs Ipopt from x0 with exact first derivatives, silently (no console output at all, no
+/// Runs Ipopt from x0 with exact first derivatives (and the problem's second derivatives when
+/// it gives them), silently (no console output at all, no
 /// options file read). An option Ipopt rejects (e.g. a tolerance <= 0) is not ignored: the
 /// solve ends at once with Termination::kInvalidProblem and raw name "Invalid_Option". Ipopt is serialised by a process-wide mutex: its MUMPS linear solver is not
 /// thread-safe.

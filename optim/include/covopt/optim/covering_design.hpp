@@ -23,8 +23,8 @@
 ///     one interval [u_c, max] because δ_max falls with E_c, u_c by bisection; a uniform
 ///     scan of that interval, then golden-section refinement of its best local minima);
 ///     the first admissible grid point is bisected against the one before it.
-///  3. local   Ipopt from the bracketed optimum with analytic gradients, in a small trust
-///     region; its point is kept only when an exact-path re-check finds it admissible and
+///  3. local   Ipopt from the bracketed optimum with analytic gradients (second derivatives
+///     by central differences of them), warm-started, in a small trust region; its point is kept only when an exact-path re-check finds it admissible and
 ///     not thicker.
 /// A stage that fails is reported with its status and never supplies the answer. Every
 /// catalog material gets its own thinnest admissible thickness by a scan then bisection
@@ -172,7 +172,8 @@ struct DesignOptions {
   /// could miss; the brute-force tests check that the defaults do not. Defaults: 120 and 20.
   int bracket_thickness_points = 120;
   int modulus_points_per_decade = 20;
-  /// Local stage: Ipopt from the bracketed result, with analytic gradients. Default: on.
+  /// Local stage: Ipopt from the bracketed result, with analytic gradients; problem (a)
+  /// warm-starts it (IpoptOptions::warm_start). Default: on.
   bool local_polish = true;
   /// Ipopt's settings. Default: IpoptOptions{} (tol 1e-10, no bound relaxation).
   IpoptOptions ipopt;

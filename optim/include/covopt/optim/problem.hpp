@@ -39,7 +39,30 @@ class Problem {
                            std::span<double> /*jacobian*/) const {
     return true;
   }
+
+  /// This problem gives the Hessian of its Lagrangian (LagrangianHessian). Default: no, and
+  /// Ipopt then approximates it by limited-memory BFGS.
+  virtual bool provides_lagrangian_hessian() const { return false; }
+  /// σ ∇²f(x) + Σ_i λ_i ∇²g_i(x) (g: the inequalities then the equalities, λ = `multipliers`,
+  /// σ = `objective_factor`), its lower triangle by rows ((0,0), (1,0), (1,1), (2,0), ...:
+  /// dimension() (dimension() + 1) / 2 entries) into `lower_triangle`.
+  /// @return false if it cannot be evaluated at x (and always when not provided).
+  virtual bool LagrangianHessian(std::span<const double> /*x*/, double /*objective_factor*/,
+                                 std::span<const double> /*multipliers*/,
+                                 std::span<double> /*lower_triangle*/) const {
+    return false;
+  }
 };
+
+/// The Hessian of `problem`'s Lagrangian (as Problem::LagrangianHessian) by central
+/// differences of its analytic gradients (Objective's gradient and Constraints' Jacobian):
+/// column j from x ± h_j e_j, h_j = `relative_step` × max(1, |x_j|), then symmetrised. Its
+/// error is O(h²) in the third derivatives plus O(ε/h) rounding (~1e-10 relative for the
+/// default step with gradients exact to the last bits). Four gradient evaluations per variable.
+/// @return false if an evaluation fails or gives a non-finite value.
+bool CentralDifferenceLagrangianHessian(const Problem& problem, std::span<const double> x,
+                                        double objective_factor, std::span<const double> multipliers,
+                                        std::span<double> lower_triangle, double relative_step = 1e-5);
 
 /// One termination enum for every backend; the backend's raw code is kept alongside.
 enum class Termination {
