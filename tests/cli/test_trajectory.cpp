@@ -247,7 +247,7 @@ TEST_CASE("robot --trajectory: a point that never moves is at rest, and a short 
   CHECK(table.out.find("samples:") == std::string::npos);  // no "(N of M samples: ...)" note
 }
 
-TEST_CASE("robot --trajectory --plot draws the chart; a missing gnuplot is exit 1", "[trajectory][plot]") {
+TEST_CASE("robot --trajectory --plot draws the chart, and a missing gnuplot is exit 1", "[trajectory][plot]") {
   const TempDir dir;
   const auto png = dir / "trajectory.png";
   {
