@@ -165,7 +165,7 @@ const char* StatusName(Ipopt::ApplicationReturnStatus status) {
 
 /// Warm start (IpoptOptions::warm_start): Ipopt's initial barrier parameter "mu_init" (its
 /// default 0.1) and its bound and slack pushes "bound_push", "bound_frac", "slack_bound_push",
-/// "slack_bound_frac" (default 1e-2).
+/// "slack_bound_frac" (default 1e-2); "constr_mult_init_max" 0 (default 1000).
 constexpr double kWarmStartBarrier = 1e-11;
 constexpr double kWarmStartPush = 1e-12;
 
@@ -220,6 +220,8 @@ SolveResult SolveWithIpopt(const Problem& problem, std::span<const double> x0,
       // the variables and slacks where they are, not pushed 1% into the interior.
       accepted = o->SetNumericValue("mu_init", kWarmStartBarrier) && accepted;
       accepted = o->SetStringValue("mu_strategy", "monotone") && accepted;
+      // Multipliers from 0, not a least-squares estimate (a factorization and solve less).
+      accepted = o->SetNumericValue("constr_mult_init_max", 0.0) && accepted;
       for (const char* push : {"bound_push", "bound_frac", "slack_bound_push", "slack_bound_frac"}) {
         accepted = o->SetNumericValue(push, kWarmStartPush) && accepted;
       }

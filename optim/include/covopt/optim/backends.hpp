@@ -59,7 +59,8 @@ struct IpoptOptions {
   bool limited_memory_hessian = false;
   /// x0 is (nearly) the solution, as a polish from another method's answer: Ipopt starts with
   /// its barrier parameter at 1e-11 (not 0.1), monotone, and keeps x0 and the constraint
-  /// slacks within 1e-12 of where they are (not pushed 1% into the interior), so it confirms
+  /// slacks within 1e-12 of where they are (not pushed 1% into the interior), multipliers
+  /// from 0 (no least-squares estimate), so it confirms
   /// the point in a few iterations instead of leaving and re-approaching it. Default: false.
   bool warm_start = false;
   /// Scale of the derivative check Ipopt may run: "none", "first-order" or "second-order".
