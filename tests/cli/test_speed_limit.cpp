@@ -107,7 +107,7 @@ TEST_CASE("speed-limit --solve-for mass: one row per speed, 'fixed' when even a 
   CHECK(j["warnings"][0].get<std::string>().find("fixed robot") != std::string::npos);
 }
 
-TEST_CASE("speed-limit --csv writes the JSON rows' columns; '-' prints them", "[speed_limit]") {
+TEST_CASE("speed-limit --csv writes the JSON rows' columns, and '-' prints them", "[speed_limit]") {
   const TempDir dir;
   const auto csv = dir / "limits.csv";
   const std::vector<std::string> args{"speed-limit", "--robot-mass", "2kg,10kg,fixed", "--material",
@@ -170,7 +170,7 @@ TEST_CASE("speed-limit: several --material give one block of rows each", "[speed
   CHECK(table.out.find("EPS geofoam EPS22") != std::string::npos);
 }
 
-TEST_CASE("speed-limit: safe up to 100 m/s says so; nothing safe is null", "[speed_limit]") {
+TEST_CASE("speed-limit: safe up to 100 m/s says so, and nothing safe is null", "[speed_limit]") {
   const json safe = JsonOf(Run({"speed-limit", "--robot-mass", "0.1g", "--covering-thickness", "0",
                                 "--laceration-limit", "1GPa", "--contusion-limit", "1000J/cm2", "--json"}));
   CHECK(safe["rows"][0]["max_safe_speed_m_per_s"] == 100.0);
@@ -205,7 +205,7 @@ TEST_CASE("speed-limit reads the scene file, limits and the criterion as the oth
   CHECK(derated["safety_factor"] == 2.0);
 }
 
-TEST_CASE("speed-limit --plot draws the Safety-Map chart; a missing gnuplot is exit 1", "[speed_limit][plot]") {
+TEST_CASE("speed-limit --plot draws the Safety-Map chart, and a missing gnuplot is exit 1", "[speed_limit][plot]") {
   const TempDir dir;
   const auto png = dir / "map.png";
   {

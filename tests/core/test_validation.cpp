@@ -199,7 +199,7 @@ TEST_CASE("validation Fig. 9: no covering gives 13.89 MPa, more than 10 % above 
   }
 }
 
-TEST_CASE("validation Fig. 11/12: lacerations never come without contusions; R_r 80 mm needs no "
+TEST_CASE("validation Fig. 11/12: lacerations never come without contusions, and R_r 80 mm needs no "
           "covering", "[validation]") {
   for (const double radius : {0.015, 0.08}) {
     int laceration_alone = 0, contusion_alone = 0;
@@ -260,7 +260,7 @@ TEST_CASE("validation: the paper's polystyrene 27.6 MPa needs 23.44 mm, not 14-1
   CHECK(Worst(polystyrene(0.030)) <= 1.0);
 }
 
-TEST_CASE("validation Fig. 14: polystyrene is lowest; the soft covering bottoms out, the stiff "
+TEST_CASE("validation Fig. 14: polystyrene is lowest, the soft covering bottoms out, the stiff "
           "one does not", "[validation]") {
   struct Row {
     double thickness, soft, polystyrene, stiff;
@@ -328,7 +328,7 @@ TEST_CASE("validation Table I: the unpadded cadaver scenes", "[validation]") {
   CHECK(HasWarning(results[5], "contact radius 8.81 mm"));
 }
 
-TEST_CASE("validation Table III: the padded experiments; 20 mm bottoms out only in Ex. 19",
+TEST_CASE("validation Table III: the padded experiments, where 20 mm bottoms out only in Ex. 19",
           "[validation]") {
   struct Case {
     int experiment;

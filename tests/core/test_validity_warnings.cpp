@@ -132,7 +132,7 @@ TEST_CASE("The stiff-covering warning needs both E_c > E_s and more stress than 
   CHECK_THAT(stiff->message, Catch::Contains("a flat bare robot"));
 }
 
-TEST_CASE("Within 5 % of full compression warns; further from it, or beyond it, does not",
+TEST_CASE("Within 5 % of full compression warns, and further from it, or beyond it, does not",
           "[warnings]") {
   // Default scene: t1 = 2.4 mm, t2 = 14.4 mm, phase 2's travel 12 mm. The speed sets δ_max.
   const Scene base = PaperScene(0.015, 27.6e6);
