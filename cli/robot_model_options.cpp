@@ -51,7 +51,17 @@ double ParseJoint(const std::string& item, std::size_t index, const robot::Chain
   const std::string_view unit = Trim(std::string_view(stop, static_cast<std::size_t>(end - stop)));
   double scale = 1.0;
   if (unit.empty()) {
-    scale = 1.0;
+    // A bare number is SI (rad or m) and must be plausible: beyond a full turn it is almost
+    // surely degrees, beyond 10 m almost surely millimetres.
+    if (!prismatic && std::abs(value) > 2.0 * std::numbers::pi) {
+      throw InputError(fmt::format("{}: a bare number is in radians ({} rad is more than a full turn); "
+                                   "write {}deg or {}rad",
+                                   where, item, item, item));
+    }
+    if (prismatic && std::abs(value) > 10.0) {
+      throw InputError(fmt::format("{}: a bare number is in metres ({} m); write {}mm or {}m", where, item,
+                                   item, item));
+    }
   } else if (!prismatic && unit == "rad") {
     scale = 1.0;
   } else if (!prismatic && unit == "deg") {
@@ -144,19 +154,11 @@ void AddRobotModelOptions(CLI::App& sub, RobotModelOptions& options, bool direct
       ->type_name("X,Y,Z")->group(group);
 }
 
-RobotModelInput ResolveRobotModelInput(const RobotModelOptions& options, bool require_direction) {
+RobotModelInput ResolveRobotModelChain(const RobotModelOptions& options) {
   if (!options.urdf) {
     throw InputError("--urdf FILE is required with --base/--tip/--joints/--point/--direction");
   }
   if (!options.tip) throw InputError(fmt::format("--tip LINK is required with --urdf '{}'", *options.urdf));
-  if (!options.joints) {
-    throw InputError(fmt::format("--joints Q1,Q2,... is required with --urdf '{}'", *options.urdf));
-  }
-  if (require_direction && !options.direction) {
-    throw InputError(fmt::format("--direction X,Y,Z (the impact direction in the base frame) is required "
-                                 "with --urdf '{}'",
-                                 *options.urdf));
-  }
   robot::ChainSpec spec;
   spec.base_link = options.base.value_or("");
   spec.tip_link = *options.tip;
@@ -169,8 +171,21 @@ RobotModelInput ResolveRobotModelInput(const RobotModelOptions& options, bool re
                           }
                         }(),
                         {}, Eigen::Vector3d::Zero(), std::nullopt};
-  input.joint_positions = ParseJoints(*options.joints, input.chain);
   if (options.point) input.point_in_tip_m = ParseTriple(*options.point, "--point", true);
+  return input;
+}
+
+RobotModelInput ResolveRobotModelInput(const RobotModelOptions& options, bool require_direction) {
+  if (options.urdf && options.tip && !options.joints) {
+    throw InputError(fmt::format("--joints Q1,Q2,... is required with --urdf '{}'", *options.urdf));
+  }
+  if (options.urdf && options.tip && require_direction && !options.direction) {
+    throw InputError(fmt::format("--direction X,Y,Z (the impact direction in the base frame) is required "
+                                 "with --urdf '{}'",
+                                 *options.urdf));
+  }
+  RobotModelInput input = ResolveRobotModelChain(options);
+  input.joint_positions = ParseJoints(*options.joints, input.chain);
   if (options.direction) {
     input.direction = ParseTriple(*options.direction, "--direction", false);
     if (input.direction->norm() == 0.0) {

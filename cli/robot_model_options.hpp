@@ -54,6 +54,11 @@ struct RobotModelInput {
   std::optional<Eigen::Vector3d> direction;    ///< base frame, as typed (not normalised)
 };
 
+/// Reads --urdf/--base/--tip/--point and the URDF, not the joints (a trajectory brings its
+/// own): the chain and the contact point; joint_positions empty, no direction.
+/// @throws InputError as ResolveRobotModelInput for those flags.
+RobotModelInput ResolveRobotModelChain(const RobotModelOptions& options);
+
 /// Reads the flags and the URDF.
 /// @throws InputError naming the flag and the value: --urdf, --tip or --joints missing, a
 ///         bad file, unknown links, a joint count that does not match (naming the joints), a

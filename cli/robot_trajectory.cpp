@@ -172,25 +172,10 @@ std::string ChartScript(const TrajectoryRun& run, const std::string& trajectory_
   return s;
 }
 
-/// The chain and contact point of --urdf/--base/--tip/--point, read by the robot-model group
-/// (ResolveRobotModelInput, so that every message is the group's). The group reads joint
-/// positions too; the trajectory brings its own, so the chain's zero configuration stands in
-/// (the URDF is read twice: a millisecond).
+/// The chain and contact point of --urdf/--base/--tip/--point (the trajectory brings the joints).
 RobotModelInput ResolveChainAndPoint(const RobotModelOptions& model) {
   if (!model.urdf) throw InputError("--urdf FILE is required with --trajectory");
-  RobotModelOptions zero_joints = model;
-  zero_joints.joints = "";
-  zero_joints.direction.reset();
-  if (model.tip && !(model.base && model.base->empty())) {
-    try {
-      const std::size_t n = robot::KinematicChain::FromUrdfFile(*model.urdf, {model.base.value_or(""), *model.tip})
-                                .joint_count();
-      for (std::size_t i = 0; i < n; ++i) *zero_joints.joints += i ? ",0" : "0";
-    } catch (const std::invalid_argument&) {
-      // A bad URDF or link: the group's reading below says so in its words.
-    }
-  }
-  return ResolveRobotModelInput(zero_joints, false);
+  return ResolveRobotModelChain(model);
 }
 
 /// A library message about the trajectory's samples, or about the scene.

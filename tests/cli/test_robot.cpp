@@ -139,6 +139,8 @@ TEST_CASE("bad robot input is exit 2 with one line naming the flag and nothing o
       {{"robot", "--urdf", kPlanar, "--tip", "tool", "--joints", "0,nan"}, "--joints: joint 2 (elbow"},
       {{"robot", "--urdf", kPlanar, "--tip", "tool", "--joints", "0,abc"}, "expected an angle"},
       {{"robot", "--urdf", kPlanar, "--tip", "tool", "--joints", "0,3mm"}, "unit 'mm' does not fit"},
+      {{"robot", "--urdf", kPlanar, "--tip", "tool", "--joints", "0,-135"},
+       "joint 2 (elbow, continuous): a bare number is in radians (-135 rad is more than a full turn); write -135deg"},
       {Planar({"--direction", "0,0,0"}), "--direction: must be a non-zero vector"},
       {Planar({"--direction", "1,0"}), "--direction: expected 3 comma-separated numbers"},
       {Planar({"--direction", "1,x,0"}), "--direction: component 2 must be a finite number"},
