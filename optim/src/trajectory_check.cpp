@@ -24,7 +24,7 @@ std::string Format(const char* format, double value) {
 
 [[noreturn]] void RejectSample(std::size_t index, const std::string& what, double value,
                                const std::string& requirement) {
-  throw std::invalid_argument("trajectory sample " + std::to_string(index) + ": " + what + " " +
+  throw std::invalid_argument("trajectory sample " + std::to_string(index + 1) + ": " + what + " " +
                               Format("%.17g", value) + " must be " + requirement);
 }
 
@@ -42,7 +42,7 @@ void CheckSample(const MotionSample& sample, std::size_t index, const MotionSamp
     RejectSample(index, "reflected_mass_kg", sample.reflected_mass_kg, "> 0 kg (or +inf: fixed)");
   }
   if (std::isinf(sample.reflected_mass_kg) && std::isinf(scene.head.mass_kg)) {
-    throw std::invalid_argument("trajectory sample " + std::to_string(index) +
+    throw std::invalid_argument("trajectory sample " + std::to_string(index + 1) +
                                 ": a fixed reflected mass against a fixed head (head.mass_kg) has no "
                                 "impact model: give the head a finite mass");
   }
@@ -65,8 +65,8 @@ std::string TrajectoryCheck::BriefReport() const {
   std::string report = message;
   if (worst_sample) {
     const SampleVerdict& worst = samples[*worst_sample];
-    report += "\nworst sample " + std::to_string(*worst_sample) + " (" + TimeText(worst.time_s) +
-              "): speed " + Format("%.4g", worst.speed_m_per_s) + " m/s, reflected mass " +
+    report += "\nworst sample: " + std::to_string(*worst_sample + 1) + " of " + std::to_string(samples.size()) +
+              " (" + TimeText(worst.time_s) + "): speed " + Format("%.4g", worst.speed_m_per_s) + " m/s, reflected mass " +
               (std::isinf(worst.reflected_mass_kg) ? std::string("fixed")
                                                    : Format("%.4g", worst.reflected_mass_kg) + " kg") +
               ", " + worst.speed_limit.message + ", laceration ratio " +

@@ -292,7 +292,7 @@ TEST_CASE("robot --trajectory bad input: exit 2, one line naming the flag, nothi
       {Fr3(columns), "11 columns, expected 15"},
       {Fr3(nan), "column 9 (qd1 [rad/s])"},
       {Fr3(backwards), "time goes backwards"},
-      {Fr3(too_fast), "--trajectory '" + too_fast + "': trajectory sample 0: speed_m_per_s"},
+      {Fr3(too_fast), "--trajectory '" + too_fast + "': trajectory sample 1: speed_m_per_s"},
       {Fr3(missing), "no such trajectory file"},
       {Fr3(kPick, {"--joints", "0,0,0,0,0,0,0"}), "--joints"},
       {Fr3(kPick, {"--direction", "1,0,0"}), "--direction"},

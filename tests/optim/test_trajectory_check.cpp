@@ -167,8 +167,8 @@ TEST_CASE("trajectory check: bad samples are rejected naming the sample and the 
     CHECK_THROWS_WITH(CheckTrajectory(Scene{}, samples), Catch::Contains(text));
   };
   rejects({}, "no samples");
-  rejects({{0.0, 1.0, 5.0}, {-0.1, 1.0, 5.0}}, "sample 1: time_s");
-  rejects({{0.0, -1.0, 5.0}}, "sample 0: speed_m_per_s");
+  rejects({{0.0, 1.0, 5.0}, {-0.1, 1.0, 5.0}}, "sample 2: time_s");
+  rejects({{0.0, -1.0, 5.0}}, "sample 1: speed_m_per_s");
   rejects({{0.0, std::nan(""), 5.0}}, "speed_m_per_s");
   rejects({{0.0, 101.0, 5.0}}, "in [0, 100] m/s");
   rejects({{0.0, 1.0, 0.0}}, "reflected_mass_kg");

@@ -89,7 +89,7 @@ struct TrajectoryCheck {
 
 /// Judges every sample of a motion against the scene's covering and head. The scene's robot
 /// mass and speed are ignored: each sample brings its own.
-/// @throws std::invalid_argument naming the sample and the value: a non-finite or negative
+/// @throws std::invalid_argument naming the sample (counted from 1) and the value: a non-finite or negative
 ///         speed, a speed above 100 m/s, a reflected mass that is not > 0, a fixed robot
 ///         against a fixed head, time going backwards; or as MaxSafeSpeed for the scene and
 ///         options.
