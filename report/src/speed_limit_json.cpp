@@ -12,6 +12,7 @@
 
 #include "covopt/report/simulation_json.hpp"
 #include "json_number.hpp"
+#include "limits_json.hpp"
 
 namespace covopt::report {
 namespace {
@@ -126,17 +127,9 @@ std::vector<std::string> SpeedLimitRowWarnings(SpeedLimitQuantity quantity, std:
 std::string SpeedLimitJson(SpeedLimitQuantity quantity, const Scene& scene, const optim::SpeedLimitOptions& options,
                            std::span<const SpeedLimitRow> rows, std::span<const std::string> input_warnings,
                            int indent) {
-  const double sf = options.safety_factor;
-  const double laceration = options.limits.laceration_tensile_stress_Pa;
-  const double contusion = options.limits.contusion_energy_density_J_per_m2;
   ordered_json j;
   j["solve_for"] = ToString(quantity);
-  j["criterion"] = optim::ToString(options.criterion());
-  j["safety_factor"] = sf;
-  j["limits"] = {{"laceration_Pa", laceration},
-                 {"contusion_J_per_m2", contusion},
-                 {"derated_laceration_Pa", laceration / sf},
-                 {"derated_contusion_J_per_m2", contusion / sf}};
+  internal::AddCriterionAndLimits(j, options);
   if (quantity == SpeedLimitQuantity::kSpeed) {
     j["search_limit"] = {{"max_speed_m_per_s", options.max_speed_m_per_s}};
   } else {

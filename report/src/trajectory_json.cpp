@@ -10,6 +10,7 @@
 
 #include "covopt/report/simulation_json.hpp"
 #include "json_number.hpp"
+#include "limits_json.hpp"
 
 namespace covopt::report {
 namespace {
@@ -76,9 +77,6 @@ std::string TrajectoryCheckJson(const optim::TrajectoryCheck& check, const robot
                                 const Scene& scene, const std::optional<std::string>& covering_material,
                                 const optim::SpeedLimitOptions& options,
                                 std::span<const std::string> input_warnings, int indent) {
-  const double sf = options.safety_factor;
-  const double laceration = options.limits.laceration_tensile_stress_Pa;
-  const double contusion = options.limits.contusion_energy_density_J_per_m2;
   ordered_json j;
   j["status"] = optim::ToString(check.status);
   j["message"] = check.message;
@@ -94,12 +92,7 @@ std::string TrajectoryCheckJson(const optim::TrajectoryCheck& check, const robot
   }
   j["sample_count"] = check.samples.size();
   j["unsafe_sample_count"] = check.unsafe_sample_count;
-  j["criterion"] = optim::ToString(options.criterion());
-  j["safety_factor"] = sf;
-  j["limits"] = {{"laceration_Pa", laceration},
-                 {"contusion_J_per_m2", contusion},
-                 {"derated_laceration_Pa", laceration / sf},
-                 {"derated_contusion_J_per_m2", contusion / sf}};
+  internal::AddCriterionAndLimits(j, options);
   j["search_limit"] = {{"max_speed_m_per_s", options.max_speed_m_per_s}};
   ordered_json shown = ordered_json::parse(SceneJson(scene));
   shown["robot"].erase("mass_kg");  // each sample's own
