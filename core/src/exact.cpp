@@ -61,20 +61,33 @@ double SolveEnergyBalance(const ForceLawSegment& seg, double energy_gap_J) noexc
   if (seg.force_offset_N == 0.0 && x0 == 0.0) {
     return std::pow(energy_gap_J / k_over_p, 1.0 / p);  // closed form
   }
-  // g(x) = F_off (x - x0) + K/p (x^p - x0^p) - ΔE is increasing and convex for x >= x0:
-  // Newton started above the root descends monotonically onto it. Either term alone
-  // reaching ΔE bounds the root from above.
+  // g(x) = F_off (x - x0) + K/p (x^p - x0^p) - ΔE is increasing and convex for x >= x0.
+  // The power term alone reaching ΔE gives x_b >= root, where g, g' and g'' are known
+  // without another pow (x_b^p = ΔE p/K + x0^p): the first Halley step is free. Each
+  // further step costs one pow; Halley's cubic convergence means a step below 1e-6 (x - x0)
+  // leaves an error of order 1e-18 (x - x0), so that step is the last one. The free step
+  // is never the last: its g carries x_b's rounding, p times g's own.
   const double x0_pow_p = x0 > 0.0 ? std::pow(x0, p) : 0.0;
-  double x = std::pow(energy_gap_J / k_over_p + x0_pow_p, 1.0 / p);
-  if (seg.force_offset_N > 0.0) x = std::min(x, x0 + energy_gap_J / seg.force_offset_N);
+  const double x_b_pow_p = energy_gap_J / k_over_p + x0_pow_p;
+  double x = std::pow(x_b_pow_p, 1.0 / p);
+  double x_pow_n = x_b_pow_p / x;
+  double g = seg.force_offset_N * (x - x0);
   for (int iteration = 0; iteration < 60; ++iteration) {
-    const double x_pow_n = std::pow(x, n);
-    const double g = seg.force_offset_N * (x - x0) + k_over_p * (x_pow_n * x - x0_pow_p) -
-                     energy_gap_J;
     const double slope = seg.force_offset_N + seg.stiffness * x_pow_n;
-    const double next = x - g / slope;
-    if (!(next < x)) break;  // converged: the monotone sequence stopped decreasing
-    x = std::max(next, x0);
+    // Halley, x - 2 g g' / (2 g'^2 - g g''), with g'' x = n K x^n and one division; the
+    // correction to Newton's step g/g' is capped at a factor 2 (g g'' <= g'^2).
+    const double slope_squared_x = slope * slope * x;
+    const double g_curvature_x = g * n * seg.stiffness * x_pow_n;
+    const double denominator = g_curvature_x > slope_squared_x
+                                   ? slope_squared_x
+                                   : 2.0 * slope_squared_x - g_curvature_x;
+    const double step = 2.0 * g * slope * x / denominator;
+    double next = x - step;
+    if (!(next > x0)) next = x - g / slope;  // Newton stays above x0 from either side
+    if (iteration > 0 && !(std::abs(step) > 1e-6 * (x - x0))) return next;
+    x = next;
+    x_pow_n = std::pow(x, n);
+    g = seg.force_offset_N * (x - x0) + k_over_p * (x_pow_n * x - x0_pow_p) - energy_gap_J;
   }
   return x;
 }
