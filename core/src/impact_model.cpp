@@ -276,16 +276,18 @@ ImpactModel::EnergyGapBelow::EnergyGapBelow(const ImpactModel& model, std::size_
   power_ = seg.exponent + 1.0;
   upper_local_m_ = upper_penetration_m - seg.origin_m;
   upper_local_pow_ = upper_local_m_ > 0.0 ? std::pow(upper_local_m_, power_) : 0.0;
+  inverse_upper_local_per_m_ = upper_local_m_ > 0.0 ? 1.0 / upper_local_m_ : 0.0;
+  stiffness_over_power_ = stiffness_ / power_;
 }
 
 double ImpactModel::EnergyGapBelow::operator()(double gap_m) const noexcept {
   const double x_b = upper_local_m_;
   if (!(x_b > 0.0) || !(gap_m > 0.0)) return 0.0;
   // x_b^p - x_a^p = -x_b^p expm1(p log1p(-d/x_b)), exact in relative terms for small d.
-  const double ratio = gap_m / x_b;
+  const double ratio = gap_m * inverse_upper_local_per_m_;
   const double power_difference =
       ratio >= 1.0 ? upper_local_pow_ : -upper_local_pow_ * std::expm1(power_ * std::log1p(-ratio));
-  return force_offset_N_ * gap_m + stiffness_ * power_difference / power_;
+  return force_offset_N_ * gap_m + stiffness_over_power_ * power_difference;
 }
 
 }  // namespace covopt

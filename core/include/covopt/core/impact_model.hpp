@@ -113,8 +113,8 @@ class ImpactModel {
                                    double gap_m) const noexcept;
 
   /// EnergyDifferenceInSegment for many gaps below one δ_b in one segment (the duration
-  /// quadrature asks for 20 per segment): x_b^(n+1) is computed once, the arithmetic is
-  /// otherwise the same, so the results are the same to the bit.
+  /// quadrature asks for 20 per segment): x_b^(n+1), 1/x_b and K/(n+1) are computed once
+  /// (EnergyDifferenceInSegment is one such call, so the two agree to the bit).
   class EnergyGapBelow {
    public:
     EnergyGapBelow(const ImpactModel& model, std::size_t i, double upper_penetration_m) noexcept;
@@ -125,6 +125,8 @@ class ImpactModel {
     double force_offset_N_ = 0.0, stiffness_ = 0.0, power_ = 0.0;
     double upper_local_m_ = 0.0;      ///< x_b, δ_b in the segment's local coordinate [m]
     double upper_local_pow_ = 0.0;    ///< x_b^power
+    double inverse_upper_local_per_m_ = 0.0;  ///< 1/x_b [1/m] (0 when x_b <= 0: unused)
+    double stiffness_over_power_ = 0.0;       ///< K/power
   };
 
   /// Tensile stress from compressive stress, σ_t = σ_c (1 - 2ν_t)/3 [Pa] (eq. 5).
