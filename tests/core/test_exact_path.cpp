@@ -52,6 +52,28 @@ TEST_CASE("delta_max satisfies the energy balance to rounding", "[exact]") {
         Approx(peaks.max_compressive_stress_Pa * (1 - 2 * 0.42) / 3).epsilon(1e-15));
 }
 
+TEST_CASE("delta_max satisfies the energy balance for every exponent and both readings",
+          "[exact]") {
+  // The energy balance is solved by Halley steps from the power term's own root; the
+  // literal reading puts phase 3's origin before its start (x0 > 0) and the exponents span
+  // the allowed [1, 5], so every branch of the solver is met.
+  const ThresholdReading reading = GENERATE(ThresholdReading::kCumulative, ThresholdReading::kLiteral);
+  const double exponent = GENERATE(1.0, 1.5, 2.65, 4.0, 5.0);
+  const double thickness = GENERATE(0.0, 0.002, 0.015);
+  const double speed = GENERATE(0.05, 2.0, 8.0);
+  Scene scene = PaperScene(thickness, 27.6e6, 0.25);
+  scene.robot.speed_m_per_s = speed;
+  scene.model.thresholds = reading;
+  scene.model.exponent_covering_scalp = exponent;
+  scene.model.exponent_covering_bone = exponent;
+  scene.model.exponent_robot_bone = exponent;
+  const ImpactModel model = ImpactModel::FromScene(scene);
+  const ImpactPeaks peaks = ExactPeaks(model);
+  const ContactState at_max = model.StateAt(peaks.max_penetration_m);
+  CAPTURE(reading == ThresholdReading::kLiteral, exponent, thickness, speed);
+  CHECK(RelativeError(at_max.potential_energy_J, model.impact_energy_J()) < 1e-13);
+}
+
 TEST_CASE("A slow impact that stays in phase 1 matches single-layer Hertz", "[exact][hertz]") {
   Scene scene = PaperScene(0.0);
   scene.robot.speed_m_per_s = 0.1;
