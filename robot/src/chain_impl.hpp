@@ -3,6 +3,7 @@
 /// KinematicChain's insides (private to covopt_robot): the KDL chain and what the public
 /// accessors return.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include <kdl/jntarray.hpp>
 
 #include "covopt/robot/kinematic_chain.hpp"
+#include "covopt/robot/reflected_mass.hpp"
 
 namespace covopt::robot {
 
@@ -37,6 +39,27 @@ KDL::JntArray ToJntArray(const KinematicChain& chain, const Eigen::VectorXd& q,
 /// Checks that every component of `v` is finite.
 /// @throws std::invalid_argument "<what>: component <i> must be finite (got nan)".
 void CheckFinite(const Eigen::Vector3d& v, const char* what);
+
+/// @throws std::invalid_argument unless options.singular_relative_tolerance is in [0, 1).
+void CheckSingularTolerance(const ReflectedMassOptions& options);
+
+/// The kinematics and inertia of a contact point at one configuration, computed once: what
+/// ReflectedMass needs, and ContactMotion too (the point's velocity is jacobian · q̇).
+struct PointInertia {
+  Eigen::Matrix<double, 3, Eigen::Dynamic> jacobian;         ///< J_v, base frame [m/rad or m/m]
+  Eigen::Vector3d contact_point_m = Eigen::Vector3d::Zero();  ///< base frame [m]
+  Eigen::Matrix3d inverse_mass = Eigen::Matrix3d::Zero();     ///< Λ⁻¹ = J_v M⁻¹ J_vᵀ [1/kg]
+};
+
+/// J_v, the contact point and Λ⁻¹ at `joints` (already checked).
+/// @throws std::invalid_argument when M is not positive definite.
+PointInertia ComputePointInertia(const KinematicChain& chain, const KDL::JntArray& joints,
+                                 const Eigen::Vector3d& point_in_tip_m);
+
+/// ReflectedMass's answer from a computed PointInertia; `unit_direction` already normalised.
+ReflectedMassResult ReflectedMassAt(const KinematicChain& chain, const PointInertia& point,
+                                    const std::optional<Eigen::Vector3d>& unit_direction,
+                                    const ReflectedMassOptions& options);
 
 }  // namespace internal
 }  // namespace covopt::robot

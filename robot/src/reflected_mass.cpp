@@ -158,34 +158,21 @@ Eigen::Vector3d ContactPoint(const KinematicChain& chain, const Eigen::VectorXd&
   return point;
 }
 
-ReflectedMassResult ReflectedMass(const KinematicChain& chain, const Eigen::VectorXd& q,
-                                  const Eigen::Vector3d& point_in_tip_m,
-                                  const std::optional<Eigen::Vector3d>& direction_in_base,
-                                  const ReflectedMassOptions& options) {
+namespace internal {
+
+void CheckSingularTolerance(const ReflectedMassOptions& options) {
   const double tolerance = options.singular_relative_tolerance;
   if (!(tolerance >= 0.0 && tolerance < 1.0)) {
     std::ostringstream message;
     message << "singular_relative_tolerance must be in [0, 1) (got " << tolerance << ")";
     throw std::invalid_argument(message.str());
   }
-  const KDL::JntArray joints = internal::ToJntArray(chain, q);
-  internal::CheckFinite(point_in_tip_m, "point");
-  ReflectedMassResult result;
-  if (direction_in_base) {
-    internal::CheckFinite(*direction_in_base, "direction");
-    const double norm = direction_in_base->norm();
-    if (!(norm > 0.0)) {
-      throw std::invalid_argument(
-          "direction: must be a non-zero vector (got (0, 0, 0)); give the impact direction "
-          "in the base frame, e.g. 1,0,0");
-    }
-    result.direction = *direction_in_base / norm;
-  }
-  result.joint_names = chain.joint_names();
+}
 
-  const Eigen::Matrix<double, 3, Eigen::Dynamic> jacobian =
-      PointJacobian(chain, joints, point_in_tip_m, &result.contact_point_m);
-  Eigen::Matrix3d inverse_mass = Eigen::Matrix3d::Zero();
+PointInertia ComputePointInertia(const KinematicChain& chain, const KDL::JntArray& joints,
+                                 const Eigen::Vector3d& point_in_tip_m) {
+  PointInertia point;
+  point.jacobian = PointJacobian(chain, joints, point_in_tip_m, &point.contact_point_m);
   if (joints.rows() > 0) {
     const Eigen::MatrixXd mass = MassMatrix(chain, joints);
     const Eigen::LLT<Eigen::MatrixXd> cholesky(mass);
@@ -195,16 +182,27 @@ ReflectedMassResult ReflectedMass(const KinematicChain& chain, const Eigen::Vect
           ": the joint-space inertia matrix is not positive definite at these joints: a joint "
           "moves no mass or inertia (give the links after it an <inertial>)");
     }
-    const Eigen::MatrixXd m_inverse_jt = cholesky.solve(jacobian.transpose());
-    inverse_mass = jacobian * m_inverse_jt;
-    inverse_mass = 0.5 * (inverse_mass + inverse_mass.transpose()).eval();
+    const Eigen::MatrixXd m_inverse_jt = cholesky.solve(point.jacobian.transpose());
+    point.inverse_mass = point.jacobian * m_inverse_jt;
+    point.inverse_mass = 0.5 * (point.inverse_mass + point.inverse_mass.transpose()).eval();
   }
+  return point;
+}
+
+ReflectedMassResult ReflectedMassAt(const KinematicChain& chain, const PointInertia& point,
+                                    const std::optional<Eigen::Vector3d>& unit_direction,
+                                    const ReflectedMassOptions& options) {
+  ReflectedMassResult result;
+  result.direction = unit_direction;
+  result.joint_names = chain.joint_names();
+  result.contact_point_m = point.contact_point_m;
+  const Eigen::Matrix3d& inverse_mass = point.inverse_mass;
   result.inverse_reflected_mass_per_kg = inverse_mass;
 
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inverse_mass);
   const Eigen::Vector3d& lambda = eigen.eigenvalues();  // ascending
   const double lambda_max = std::max(lambda[2], 0.0);
-  const double zero_below = tolerance * lambda_max;
+  const double zero_below = options.singular_relative_tolerance * lambda_max;
   auto reciprocal = [&](double value) { return value > zero_below && value > 0.0 ? 1.0 / value : kInfinity; };
   result.max_reflected_mass_kg = reciprocal(lambda[0]);
   result.max_direction = CanonicalSign(eigen.eigenvectors().col(0));
@@ -253,6 +251,30 @@ ReflectedMassResult ReflectedMass(const KinematicChain& chain, const Eigen::Vect
   const bool any_fixed = !std::isfinite(result.max_reflected_mass_kg);
   result.status = any_fixed ? ReflectedMassStatus::kFixedDirections : ReflectedMassStatus::kSuccess;
   return result;
+}
+
+}  // namespace internal
+
+ReflectedMassResult ReflectedMass(const KinematicChain& chain, const Eigen::VectorXd& q,
+                                  const Eigen::Vector3d& point_in_tip_m,
+                                  const std::optional<Eigen::Vector3d>& direction_in_base,
+                                  const ReflectedMassOptions& options) {
+  internal::CheckSingularTolerance(options);
+  const KDL::JntArray joints = internal::ToJntArray(chain, q);
+  internal::CheckFinite(point_in_tip_m, "point");
+  std::optional<Eigen::Vector3d> unit_direction;
+  if (direction_in_base) {
+    internal::CheckFinite(*direction_in_base, "direction");
+    const double norm = direction_in_base->norm();
+    if (!(norm > 0.0)) {
+      throw std::invalid_argument(
+          "direction: must be a non-zero vector (got (0, 0, 0)); give the impact direction "
+          "in the base frame, e.g. 1,0,0");
+    }
+    unit_direction = *direction_in_base / norm;
+  }
+  return internal::ReflectedMassAt(chain, internal::ComputePointInertia(chain, joints, point_in_tip_m),
+                                   unit_direction, options);
 }
 
 std::string ReflectedMassResult::BriefReport() const {

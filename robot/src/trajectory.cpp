@@ -142,6 +142,7 @@ ContactMotionResult ContactMotion(const KinematicChain& chain, const JointTrajec
     throw std::invalid_argument("trajectory: time_s, positions and velocities differ in length");
   }
   internal::CheckFinite(point_in_tip_m, "point");
+  internal::CheckSingularTolerance(options.reflected_mass);
   ContactMotionResult result;
   result.joint_names = chain.joint_names();
   result.warnings = chain.warnings();
@@ -152,16 +153,16 @@ ContactMotionResult ContactMotion(const KinematicChain& chain, const JointTrajec
     const std::string sample_name = "trajectory sample " + std::to_string(i + 1);
     const std::string positions_name = sample_name + " positions";
     const std::string velocities_name = sample_name + " velocities";
-    internal::ToJntArray(chain, trajectory.positions[i], positions_name.c_str());
+    const KDL::JntArray joints = internal::ToJntArray(chain, trajectory.positions[i], positions_name.c_str());
     internal::ToJntArray(chain, trajectory.velocities[i], velocities_name.c_str());
     if (!std::isfinite(trajectory.time_s[i])) {
       throw std::invalid_argument(sample_name + ": time must be a finite number");
     }
-    const Eigen::Matrix<double, 3, Eigen::Dynamic> jacobian =
-        ContactJacobian(chain, trajectory.positions[i], point_in_tip_m);
+    // J_v, the contact point and Λ⁻¹ once per sample: the velocity and the mass share them.
+    const internal::PointInertia point = internal::ComputePointInertia(chain, joints, point_in_tip_m);
     ContactMotionSample sample;
     sample.time_s = trajectory.time_s[i];
-    sample.velocity_m_per_s = jacobian * trajectory.velocities[i];
+    sample.velocity_m_per_s = point.jacobian * trajectory.velocities[i];
     sample.speed_m_per_s = sample.velocity_m_per_s.norm();
     sample.moving = sample.speed_m_per_s > options.rest_speed_m_per_s;
     std::optional<Eigen::Vector3d> direction;
@@ -169,8 +170,7 @@ ContactMotionResult ContactMotion(const KinematicChain& chain, const JointTrajec
       sample.direction = sample.velocity_m_per_s / sample.speed_m_per_s;
       direction = sample.direction;
     }
-    const ReflectedMassResult mass =
-        ReflectedMass(chain, trajectory.positions[i], point_in_tip_m, direction, options.reflected_mass);
+    const ReflectedMassResult mass = internal::ReflectedMassAt(chain, point, direction, options.reflected_mass);
     sample.contact_point_m = mass.contact_point_m;
     sample.reflected_mass_kg = direction ? *mass.reflected_mass_kg : mass.max_reflected_mass_kg;
     if (sample.moving && !std::isfinite(sample.reflected_mass_kg)) {
