@@ -344,12 +344,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
     if (run.scene.covering_material && scene.covering.thickness_m > 0.0) {
       fmt::print(out, "Material   {}\n", run.scene.covering_material->name);
     }
-    const double sf = run.limit.safety_factor;
-    fmt::print(out, "Limits     laceration {:g} MPa, contusion {:g} J/cm², safety factor {:g}{}\n",
-               run.limit.limits.laceration_tensile_stress_Pa * 1e-6,
-               run.limit.limits.contusion_energy_density_J_per_m2 * 1e-4, sf,
-               sf > 1 ? fmt::format(": ratios <= {:.4g}", 1.0 / sf) : std::string());
-    fmt::print(out, "Criterion  {}\n", SpeedLimitCriterionText(run.limit));
+    PrintLimitsAndCriterion(out, run.limit);
     fmt::print(out, "Verdict    {}\n", check.message);
     if (check.worst_sample) {
       const optim::SampleVerdict& w = check.samples[*check.worst_sample];

@@ -87,14 +87,6 @@ std::vector<SpeedLimitRow> ComputeRows(const SpeedLimitPlan& plan, std::string* 
   return rows;
 }
 
-std::string Criterion(const optim::SpeedLimitOptions& options) {
-  return options.criterion() == optim::DesignCriterion::kNoFullCompression
-             ? "safe, and the covering not fully compressed at the peak (the robot never reaches bone through "
-               "it); --allow-full-compression for the paper's"
-             : "the paper's: safe (both ratios within the limits), even if the covering is fully compressed at "
-               "the peak";
-}
-
 void PrintRows(std::ostream& out, const SpeedLimitPlan& plan, const std::vector<SpeedLimitRow>& rows) {
   const bool by_speed = plan.quantity == SpeedLimitQuantity::kSpeed;
   const bool materials = plan.coverings.size() > 1;
@@ -238,7 +230,19 @@ std::string SafetyMapScript(const SpeedLimitPlan& plan, const std::string& outpu
 
 }  // namespace
 
-std::string SpeedLimitCriterionText(const optim::SpeedLimitOptions& options) { return Criterion(options); }
+void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& options) {
+  const double sf = options.safety_factor;
+  fmt::print(out, "Limits     laceration {:g} MPa, contusion {:g} J/cm², safety factor {:g}{}\n",
+             options.limits.laceration_tensile_stress_Pa * 1e-6,
+             options.limits.contusion_energy_density_J_per_m2 * 1e-4, sf,
+             sf > 1 ? fmt::format(": ratios <= {:.4g}", 1.0 / sf) : std::string());
+  fmt::print(out, "Criterion  {}\n",
+             options.criterion() == optim::DesignCriterion::kNoFullCompression
+                 ? "safe, and the covering not fully compressed at the peak (the robot never reaches bone "
+                   "through it); --allow-full-compression for the paper's"
+                 : "the paper's: safe (both ratios within the limits), even if the covering is fully "
+                   "compressed at the peak");
+}
 
 CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
   CLI::App* sub = app.add_subcommand(
@@ -410,12 +414,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
     if (plan.coverings.size() == 1 && plan.coverings.front().covering_material && scene.covering.thickness_m > 0.0) {
       fmt::print(out, "Material   {}\n", plan.coverings.front().covering_material->name);
     }
-    const double sf = plan.options.safety_factor;
-    fmt::print(out, "Limits     laceration {:g} MPa, contusion {:g} J/cm², safety factor {:g}{}\n",
-               plan.options.limits.laceration_tensile_stress_Pa * 1e-6,
-               plan.options.limits.contusion_energy_density_J_per_m2 * 1e-4, sf,
-               sf > 1 ? fmt::format(": ratios <= {:.4g}", 1.0 / sf) : std::string());
-    fmt::print(out, "Criterion  {}\n", Criterion(plan.options));
+    PrintLimitsAndCriterion(out, plan.options);
     fmt::print(out, "Search     {}; the ratios are those of the impact at the limit\n\n",
                by_speed ? fmt::format("speeds up to {:g} m/s (the model's ceiling)", plan.options.max_speed_m_per_s)
                         : fmt::format("reflected masses up to {:g} kg (the model's ceiling){}", plan.options.max_mass_kg,

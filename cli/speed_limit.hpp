@@ -73,8 +73,8 @@ CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options);
 /// @throws InputError naming the flag, the value and what is allowed.
 SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options);
 
-/// The criterion in words, as the speed-limit table prints it after "Criterion".
-std::string SpeedLimitCriterionText(const optim::SpeedLimitOptions& options);
+/// Prints the table's "Limits" and "Criterion" lines (speed-limit and robot --trajectory).
+void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& options);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err);
