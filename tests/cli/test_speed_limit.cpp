@@ -7,8 +7,6 @@
 // stderr and nothing on stdout.
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -25,6 +23,7 @@
 namespace {
 
 using covopt::cli::testing::CliRun;
+using covopt::cli::testing::ReadFile;
 using covopt::cli::testing::Run;
 using covopt::cli::testing::ScopedEnv;
 using covopt::cli::testing::SplitLines;
@@ -35,13 +34,6 @@ json JsonOf(const CliRun& run) {
   INFO(run.err);
   REQUIRE(run.exit_code == 0);
   return json::parse(run.out);
-}
-
-std::string ReadFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 }  // namespace
