@@ -31,6 +31,11 @@ std::string_view TypeName(QuantityKind kind) {
     case QuantityKind::kDensity: return "DENSITY";
     case QuantityKind::kDimensionless: return "RATIO";
     case QuantityKind::kEnergyDensity: return "ENERGY_DENSITY";
+    case QuantityKind::kTime: return "TIME";
+    case QuantityKind::kAcceleration: return "ACCELERATION";
+    case QuantityKind::kDampingCoefficient: return "DAMPING";
+    case QuantityKind::kStiffness: return "STIFFNESS";
+    case QuantityKind::kViscousDamping: return "DAMPING";
   }
   return "VALUE";
 }
@@ -40,8 +45,9 @@ A bare number is SI, and must be plausible: --robot-radius 40 would be 40 m
 and is refused (write 40mm, or 40m if you mean it). Units: mass kg, g, t
 ('fixed' for an immovable body); length m, cm, mm, um ('flat' for the robot
 radius); speed m/s, mm/s, cm/s, km/h; modulus and stress Pa, kPa, MPa, GPa,
-N/m2, N/mm2; energy density J/m2, J/cm2, kJ/m2; Poisson ratios, tolerances and
-the safety factor are plain numbers. Unset values come from --scene, else the
+N/m2, N/mm2; energy density J/m2, J/cm2, kJ/m2; time s, ms; acceleration m/s2;
+contact damping s/m; stiffness N/m, kN/m; viscous damping N*s/m, Ns/m; Poisson
+ratios, tolerances and the safety factor are plain numbers. Unset values come from --scene, else the
 paper's scene (limits 1 MPa and 2.52 J/cm2, safety factor 1).
 --material NAME takes the covering's E and ν from the catalog (built-in, plus
 --catalog files); it overrides --scene and excludes --covering-modulus/-poisson.

@@ -188,6 +188,11 @@ DisplayUnit DisplayFor(QuantityKind kind) {
     case QuantityKind::kDensity: return {1.0, "kg/m³"};
     case QuantityKind::kDimensionless: return {1.0, ""};
     case QuantityKind::kEnergyDensity: return {1e4, "J/cm²"};
+    case QuantityKind::kTime: return {1e-3, "ms"};
+    case QuantityKind::kAcceleration: return {1.0, "m/s²"};
+    case QuantityKind::kDampingCoefficient: return {1.0, "s/m"};
+    case QuantityKind::kStiffness: return {1e3, "kN/m"};
+    case QuantityKind::kViscousDamping: return {1.0, "N·s/m"};
   }
   return {1.0, ""};
 }

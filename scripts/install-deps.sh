@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libsundials-dev        # CVODE / ARKODE time integration
+  libsundials-dev        # CVODES / ARKODE time integration, CVODES sensitivities
   libeigen3-dev          # small dense linear algebra
   catch2                 # unit tests (v2.13)
   libcli11-dev           # command-line parsing

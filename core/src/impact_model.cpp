@@ -51,6 +51,50 @@ inline void CheckPoisson(const char* field, double value) {
   if (!(value > -1.0 && value <= 0.5)) RejectPoisson(field, value);
 }
 
+/// finite and in [0, max] [unit].
+void CheckNonNegative(const char* field, double value, double max, const char* unit,
+                      const char* zero_means) {
+  if (value >= 0.0 && value <= max) return;
+  Reject(field, "in [0, " + FormatNumber(max) + "] " + unit + " (0 = " + zero_means + ")", value);
+}
+
+/// The inputs of the scenes beyond the conservative two-mass model (docs/model.md §10): out
+/// of line, since the paper's scene (all zero) skips it.
+[[gnu::noinline]] void CheckExtendedScene(const Scene& s) {
+  CheckNonNegative("model.damping", s.model.damping_s_per_m, 1e3, "s/m", "no damping");
+  CheckNonNegative("robot.reaction_delay", s.robot.reaction_delay_s, 10.0, "s", "brake at contact");
+  CheckNonNegative("robot.braking", s.robot.braking_m_per_s2, 1e4, "m/s2", "no braking");
+  if (s.robot.braking_m_per_s2 > 0.0 && std::isinf(s.robot.mass_kg)) {
+    throw std::invalid_argument(
+        "robot.braking needs a robot that moves: robot.mass is fixed (give a finite robot.mass, "
+        "or braking 0)");
+  }
+  const HeadSpec& h = s.head;
+  CheckNonNegative("head.neck_stiffness", h.neck_stiffness_N_per_m, 1e9, "N/m", "no neck spring");
+  CheckNonNegative("head.neck_damping", h.neck_damping_N_s_per_m, 1e7, "N*s/m", "no neck damper");
+  const bool neck = h.neck_stiffness_N_per_m > 0.0 || h.neck_damping_N_s_per_m > 0.0;
+  if (h.torso_mass_kg == 0.0) {
+    if (neck) {
+      throw std::invalid_argument(
+          "head.torso_mass is needed for a neck: head.neck_stiffness and head.neck_damping "
+          "connect the head to a torso (give head.torso_mass in (0, 1e+06] kg or fixed)");
+    }
+    return;
+  }
+  CheckPositive("head.torso_mass", h.torso_mass_kg, 1e6, "kg", "fixed (infinite), or 0 for no neck");
+  if (!neck) {
+    throw std::invalid_argument(
+        "head.torso_mass is given but the neck has neither stiffness nor damping (give "
+        "head.neck_stiffness or head.neck_damping > 0, or no torso) (got head.torso_mass " +
+        FormatNumber(h.torso_mass_kg) + " kg)");
+  }
+  if (std::isinf(h.mass_kg)) {
+    throw std::invalid_argument(
+        "head.torso_mass needs a head that moves: head.mass is fixed, so the neck would carry "
+        "nothing (give a finite head.mass, or no torso)");
+  }
+}
+
 void CheckScene(const Scene& s) {
   CheckPositive("robot.mass", s.robot.mass_kg, 1e6, "kg", "fixed (infinite)");
   // Below ~1e-150 m/s the energy ½mv² underflows and the contact duration is NaN; 1 µm/s
@@ -100,6 +144,11 @@ void CheckScene(const Scene& s) {
   if (!(f > 0.0 && f <= 1.0)) Reject("model.full_compression_fraction", "in (0, 1]", f);
   if (m.thresholds != ThresholdReading::kCumulative && m.thresholds != ThresholdReading::kLiteral) {
     throw std::invalid_argument("model.thresholds must be cumulative or literal");
+  }
+  if (m.damping_s_per_m != 0.0 || s.robot.reaction_delay_s != 0.0 ||
+      s.robot.braking_m_per_s2 != 0.0 || s.head.torso_mass_kg != 0.0 ||
+      s.head.neck_stiffness_N_per_m != 0.0 || s.head.neck_damping_N_s_per_m != 0.0) {
+    CheckExtendedScene(s);
   }
 }
 

@@ -63,6 +63,21 @@ constexpr std::array kUnits{
     Unit{"J/m\u00b2", QuantityKind::kEnergyDensity, 0, 1.0, false},
     Unit{"J/cm\u00b2", QuantityKind::kEnergyDensity, 4, 1.0, false},
     Unit{"kJ/m\u00b2", QuantityKind::kEnergyDensity, 3, 1.0, false},
+    Unit{"s", QuantityKind::kTime, 0, 1.0, true},
+    Unit{"ms", QuantityKind::kTime, -3, 1.0, true},
+    Unit{"m/s2", QuantityKind::kAcceleration, 0, 1.0, true},
+    Unit{"mm/s2", QuantityKind::kAcceleration, -3, 1.0, true},
+    Unit{"m/s\u00b2", QuantityKind::kAcceleration, 0, 1.0, false},
+    Unit{"m/s^2", QuantityKind::kAcceleration, 0, 1.0, false},
+    Unit{"s/m", QuantityKind::kDampingCoefficient, 0, 1.0, true},
+    Unit{"ms/m", QuantityKind::kDampingCoefficient, -3, 1.0, true},
+    Unit{"N/m", QuantityKind::kStiffness, 0, 1.0, true},
+    Unit{"kN/m", QuantityKind::kStiffness, 3, 1.0, true},
+    Unit{"N/mm", QuantityKind::kStiffness, 3, 1.0, true},
+    Unit{"N*s/m", QuantityKind::kViscousDamping, 0, 1.0, true},
+    Unit{"Ns/m", QuantityKind::kViscousDamping, 0, 1.0, true},
+    Unit{"kN*s/m", QuantityKind::kViscousDamping, 3, 1.0, true},
+    Unit{"N\u00b7s/m", QuantityKind::kViscousDamping, 0, 1.0, false},
 };
 
 constexpr std::string_view kSpaces = " \t";
@@ -106,6 +121,11 @@ std::string_view Example(QuantityKind kind) {
     case QuantityKind::kDensity: return "50kg/m3";
     case QuantityKind::kDimensionless: return "0.3";
     case QuantityKind::kEnergyDensity: return "2.52J/cm2";
+    case QuantityKind::kTime: return "20ms";
+    case QuantityKind::kAcceleration: return "20m/s2";
+    case QuantityKind::kDampingCoefficient: return "0.2s/m";
+    case QuantityKind::kStiffness: return "20kN/m";
+    case QuantityKind::kViscousDamping: return "50N*s/m";
   }
   return "";
 }
@@ -120,6 +140,11 @@ std::string_view SiUnitName(QuantityKind kind) {
     case QuantityKind::kDensity: return "kilograms per cubic metre";
     case QuantityKind::kDimensionless: return "plain numbers";
     case QuantityKind::kEnergyDensity: return "joules per square metre";
+    case QuantityKind::kTime: return "seconds";
+    case QuantityKind::kAcceleration: return "metres per second squared";
+    case QuantityKind::kDampingCoefficient: return "seconds per metre";
+    case QuantityKind::kStiffness: return "newtons per metre";
+    case QuantityKind::kViscousDamping: return "newton-seconds per metre";
   }
   return "SI units";
 }
@@ -190,6 +215,11 @@ std::string_view Describe(QuantityKind kind) noexcept {
     case QuantityKind::kDensity: return "a density";
     case QuantityKind::kDimensionless: return "dimensionless";
     case QuantityKind::kEnergyDensity: return "an energy density";
+    case QuantityKind::kTime: return "a time";
+    case QuantityKind::kAcceleration: return "an acceleration";
+    case QuantityKind::kDampingCoefficient: return "a damping coefficient";
+    case QuantityKind::kStiffness: return "a stiffness";
+    case QuantityKind::kViscousDamping: return "a viscous damping";
   }
   return "unknown";
 }
@@ -203,6 +233,11 @@ std::string_view SiUnit(QuantityKind kind) noexcept {
     case QuantityKind::kDensity: return "kg/m3";
     case QuantityKind::kDimensionless: return "";
     case QuantityKind::kEnergyDensity: return "J/m2";
+    case QuantityKind::kTime: return "s";
+    case QuantityKind::kAcceleration: return "m/s2";
+    case QuantityKind::kDampingCoefficient: return "s/m";
+    case QuantityKind::kStiffness: return "N/m";
+    case QuantityKind::kViscousDamping: return "N*s/m";
   }
   return "";
 }
@@ -239,6 +274,15 @@ std::string FormatQuantity(double si_value, QuantityKind kind) {
     case QuantityKind::kDensity: return FormatSignificant(si_value) + " kg/m\u00b3";
     case QuantityKind::kDimensionless: return FormatSignificant(si_value);
     case QuantityKind::kEnergyDensity: return FormatSignificant(si_value / 1e4) + " J/cm\u00b2";
+    case QuantityKind::kTime:
+      if (std::abs(si_value) < 1.0) return FormatSignificant(si_value * 1e3) + " ms";
+      return FormatSignificant(si_value) + " s";
+    case QuantityKind::kAcceleration: return FormatSignificant(si_value) + " m/s\u00b2";
+    case QuantityKind::kDampingCoefficient: return FormatSignificant(si_value) + " s/m";
+    case QuantityKind::kStiffness:
+      if (std::abs(si_value) >= 1e3) return FormatSignificant(si_value / 1e3) + " kN/m";
+      return FormatSignificant(si_value) + " N/m";
+    case QuantityKind::kViscousDamping: return FormatSignificant(si_value) + " N\u00b7s/m";
   }
   return FormatSignificant(si_value);
 }

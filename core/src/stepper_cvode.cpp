@@ -1,5 +1,7 @@
 // CVODE (Adams with fixed-point iteration, or BDF with Newton on the analytic Jacobian).
-#include <cvode/cvode.h>
+// CVODES, not CVODE: CVODES is CVODE plus forward/adjoint sensitivities with the same API,
+// and a program must not link both (they define the same symbols).
+#include <cvodes/cvodes.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>

@@ -27,12 +27,17 @@ Json SceneObject(const Scene& s) {
                 {"speed_m_per_s", Number(s.robot.speed_m_per_s)},
                 {"radius_m", MaybeInfinite(s.robot.radius_m, "flat")},
                 {"youngs_modulus_Pa", Number(s.robot.youngs_modulus_Pa)},
-                {"poisson_ratio", Number(s.robot.poisson_ratio)}};
+                {"poisson_ratio", Number(s.robot.poisson_ratio)},
+                {"reaction_delay_s", Number(s.robot.reaction_delay_s)},
+                {"braking_m_per_s2", Number(s.robot.braking_m_per_s2)}};
   j["covering"] = {{"youngs_modulus_Pa", Number(s.covering.youngs_modulus_Pa)},
                    {"poisson_ratio", Number(s.covering.poisson_ratio)},
                    {"thickness_m", Number(s.covering.thickness_m)}};
   j["head"] = {{"mass_kg", MaybeInfinite(s.head.mass_kg, "fixed")},
-               {"radius_m", Number(s.head.radius_m)}};
+               {"radius_m", Number(s.head.radius_m)},
+               {"torso_mass_kg", MaybeInfinite(s.head.torso_mass_kg, "fixed")},
+               {"neck_stiffness_N_per_m", Number(s.head.neck_stiffness_N_per_m)},
+               {"neck_damping_N_s_per_m", Number(s.head.neck_damping_N_s_per_m)}};
   j["scalp"] = {{"youngs_modulus_Pa", Number(s.scalp.youngs_modulus_Pa)},
                 {"poisson_ratio", Number(s.scalp.poisson_ratio)},
                 {"thickness_m", Number(s.scalp.thickness_m)}};
@@ -43,7 +48,8 @@ Json SceneObject(const Scene& s) {
                 {"exponent_covering_bone", Number(s.model.exponent_covering_bone)},
                 {"exponent_robot_bone", Number(s.model.exponent_robot_bone)},
                 {"tensile_poisson_ratio", Number(s.model.tensile_poisson_ratio)},
-                {"full_compression_fraction", Number(s.model.full_compression_fraction)}};
+                {"full_compression_fraction", Number(s.model.full_compression_fraction)},
+                {"damping_s_per_m", Number(s.model.damping_s_per_m)}};
   return j;
 }
 

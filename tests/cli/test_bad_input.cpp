@@ -60,6 +60,11 @@ std::string WithUnit(QuantityKind kind, const std::string& number) {
     case QuantityKind::kDensity: return number + "kg/m3";
     case QuantityKind::kDimensionless: return number;
     case QuantityKind::kEnergyDensity: return number + "J/m2";
+    case QuantityKind::kTime: return number + "s";
+    case QuantityKind::kAcceleration: return number + "m/s2";
+    case QuantityKind::kDampingCoefficient: return number + "s/m";
+    case QuantityKind::kStiffness: return number + "N/m";
+    case QuantityKind::kViscousDamping: return number + "N*s/m";
   }
   return number;
 }
@@ -96,7 +101,14 @@ std::vector<BadCase> SceneFlagCases(const std::string& command) {
     // Out of the model's range: the library's check names the field, the value and the range.
     cases.push_back({{command, flag, WithUnit(kind, "1e30")}, {name, "must be", "1e+"}});
     cases.push_back({{command, flag, WithUnit(kind, "-3")}, {name, "must be", "-"}});
-    if (!ratio && name != "covering.thickness") {
+    // Zero is allowed where it means "none": no covering, and the inputs of the scenes
+    // beyond the two-mass model (no damping, no braking, no neck).
+    const bool zero_means_none = name == "covering.thickness" || name == "model.damping" ||
+                                 field.table == "robot" && (field.key == "reaction_delay" ||
+                                                            field.key == "braking") ||
+                                 field.table == "head" && field.key != "mass" &&
+                                     field.key != "radius";
+    if (!ratio && !zero_means_none) {
       cases.push_back({{command, flag, WithUnit(kind, "0")}, {name, "must be", "(got 0)"}});
     }
     if (ratio) cases.push_back({{command, flag, "0.6"}, {name, "(-1, 0.5]", "0.6"}});

@@ -54,7 +54,10 @@ TEST_CASE("every scene field reads bare numbers with its named spec", "[quantity
       {"head.mass", &specs::kHeadMass},             {"head.radius", &specs::kHeadRadius},
       {"scalp.modulus", &specs::kScalpModulus},     {"scalp.poisson", &specs::kPoissonRatio},
       {"scalp.thickness", &specs::kScalpThickness}, {"skull.modulus", &specs::kSkullModulus},
-      {"skull.poisson", &specs::kPoissonRatio},
+      {"skull.poisson", &specs::kPoissonRatio},     {"model.damping", &specs::kContactDamping},
+      {"robot.reaction_delay", &specs::kReactionDelay}, {"robot.braking", &specs::kBraking},
+      {"head.torso_mass", &specs::kTorsoMass},      {"head.neck_stiffness", &specs::kNeckStiffness},
+      {"head.neck_damping", &specs::kNeckDamping},
   };
   const auto fields = covopt::cli::SceneFields();
   REQUIRE(fields.size() == expected.size());

@@ -60,7 +60,7 @@ bool SameRow(const SweepRow& a, const SweepRow& b) {
 
 TEST_CASE("the scene fields are found by name and by dotted name, and set the scene",
           "[sweep-library]") {
-  REQUIRE(SceneFields().size() == 15);
+  REQUIRE(SceneFields().size() == 21);
   for (const SceneField& field : SceneFields()) {
     INFO(field.name);
     CHECK(FindSceneField(field.name) == &field);

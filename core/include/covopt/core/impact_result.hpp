@@ -161,8 +161,12 @@ struct ImpactResult {
   ImpactPeaks peaks;
   /// Contact duration [s]: from first contact to separation; empty when not computed.
   std::optional<double> contact_duration_s;
-  /// Relative speed at separation [m/s]; equals the impact speed (no dissipation).
+  /// Relative speed at separation [m/s]; equals the impact speed in the conservative model,
+  /// less with contact damping, braking or a damped neck (docs/model.md §10).
   std::optional<double> rebound_speed_m_per_s;
+  /// Coefficient of restitution [-]: rebound speed / impact speed; 1 in the conservative
+  /// model. Set with rebound_speed_m_per_s.
+  std::optional<double> coefficient_of_restitution;
   /// Time of maximum compression [s] (time path only).
   std::optional<double> time_of_max_compression_s;
   /// The time path's own accuracy check [-], empty for the exact path: the model conserves

@@ -14,6 +14,11 @@
 ///     modulus/stress  Pa, kPa, MPa, GPa, N/m2, N/mm2  (also N/m², N/mm²)
 ///     density         kg/m3, g/cm3  (also kg/m³, kg/m^3, g/cm³, g/cm^3)
 ///     energy density  J/m2, J/cm2, kJ/m2  (also J/m², J/cm², kJ/m²)
+///     time            s, ms
+///     acceleration    m/s2, mm/s2  (also m/s², m/s^2)
+///     damping coefficient (Hunt-Crossley) s/m, ms/m
+///     stiffness       N/m, kN/m, N/mm
+///     viscous damping N*s/m, Ns/m, kN*s/m  (also N·s/m)
 ///     dimensionless   (Poisson ratios, tolerances, safety factors): a plain number
 ///
 /// Decimal units are applied to the decimal number itself, not by a multiplication in
@@ -46,6 +51,12 @@ enum class QuantityKind {
   kDensity,        ///< [kg/m³]
   kDimensionless,  ///< [-]
   kEnergyDensity,  ///< energy per area [J/m²] (the contusion criterion)
+  kTime,           ///< [s]
+  kAcceleration,   ///< [m/s²]
+  /// Hunt-Crossley damping coefficient d [s/m]: the contact force is F_el (1 + d δ').
+  kDampingCoefficient,
+  kStiffness,       ///< a spring's stiffness [N/m]
+  kViscousDamping,  ///< a dashpot's coefficient [N·s/m]
 };
 
 /// How to read one value.
@@ -94,7 +105,8 @@ void CheckBareNumber(double si_value, std::string_view typed, const QuantitySpec
                      std::string_view name, std::string_view quote = "");
 
 /// "a mass", "a length", "a speed", "a modulus or pressure", "a density", "dimensionless",
-/// "an energy density".
+/// "an energy density", "a time", "an acceleration", "a damping coefficient", "a stiffness",
+/// "a viscous damping".
 std::string_view Describe(QuantityKind kind) noexcept;
 
 /// The units that fit a kind, for messages and help: "kg, g or t"; "" for dimensionless.
@@ -148,6 +160,19 @@ inline constexpr QuantitySpec kLacerationLimit{Kind::kModulus, false, false, 1e4
 inline constexpr QuantitySpec kContusionLimit{Kind::kEnergyDensity, false, false, 100.0, 1e7, {"J/cm2", "kJ/m2"}, "contusion limit"};
 /// The safety factor the limits are divided by [-], in [1, 100] (checked by its reader).
 inline constexpr QuantitySpec kSafetyFactor{Kind::kDimensionless, false, false, 0.0, kNoUpperBound, {}, "safety factor"};
+// The scenes beyond the conservative two-mass model (docs/model.md §10).
+/// Hunt-Crossley contact damping d [s/m] (model.damping), >= 0; 0 = none.
+inline constexpr QuantitySpec kContactDamping{Kind::kDampingCoefficient, false, false, 0.0, 10.0, {"ms/m"}, "contact damping"};
+/// The robot's reaction delay after first contact [s] (robot.reaction_delay).
+inline constexpr QuantitySpec kReactionDelay{Kind::kTime, false, false, 0.0, 2.0, {"ms"}, "reaction delay"};
+/// The robot's braking deceleration [m/s²] (robot.braking); 0 = the robot does not brake.
+inline constexpr QuantitySpec kBraking{Kind::kAcceleration, false, false, 0.0, 1000.0, {"mm/s2"}, "braking deceleration"};
+/// The torso the head hangs on by the neck [kg] (head.torso_mass); 0 = no neck.
+inline constexpr QuantitySpec kTorsoMass{Kind::kMass, true, false, 0.0, 500.0, {"g"}, "torso mass"};
+/// The neck's stiffness [N/m] (head.neck_stiffness).
+inline constexpr QuantitySpec kNeckStiffness{Kind::kStiffness, false, false, 0.0, 1e8, {"kN/m", "N/mm"}, "neck stiffness"};
+/// The neck's damping [N·s/m] (head.neck_damping).
+inline constexpr QuantitySpec kNeckDamping{Kind::kViscousDamping, false, false, 0.0, 1e5, {"kN*s/m"}, "neck damping"};
 /// Integrator tolerances [-].
 inline constexpr QuantitySpec kTolerance{Kind::kDimensionless, false, false, 0.0, kNoUpperBound, {}, "tolerance"};
 // clang-format on
@@ -158,6 +183,8 @@ inline constexpr std::array kWithPlausibleRange{
     &kHeadRadius,      &kCoveringThickness, &kScalpThickness, &kThicknessStep,
     &kRobotModulus,    &kCoveringModulus, &kScalpModulus,    &kSkullModulus,
     &kMaterialDensity, &kLacerationLimit, &kContusionLimit,
+    &kContactDamping,  &kReactionDelay,   &kBraking,         &kTorsoMass,
+    &kNeckStiffness,   &kNeckDamping,
 };
 
 }  // namespace quantity_specs

@@ -48,6 +48,13 @@ struct RobotSpec {
   double youngs_modulus_Pa = 70e9;
   /// Poisson ratio of the robot structure [-], in (-1, 0.5].
   double poisson_ratio = 0.3;
+  /// The robot's reaction (docs/model.md §10.2): from this long after first contact [s],
+  /// in [0, 10], the robot brakes with `braking_m_per_s2` while it still moves forward.
+  double reaction_delay_s = 0.0;
+  /// Braking deceleration [m/s²], in [0, 1e4]: a force m_r a against the robot's motion once
+  /// the reaction delay has passed, until the robot stops. 0 (default): the robot does not
+  /// brake. Needs a robot that moves (finite mass).
+  double braking_m_per_s2 = 0.0;
 };
 
 /// The soft covering on the robot. thickness_m == 0 means no covering: the robot itself
@@ -69,6 +76,17 @@ struct HeadSpec {
   /// Outer radius of the head, i.e. of the scalp surface, R_s [m]; must exceed the scalp
   /// thickness.
   double radius_m = 0.08;
+  /// A compliant neck (docs/model.md §10.3): the head hangs on a torso of this mass [kg] by
+  /// a spring and a damper along the impact axis. 0 (default): no neck, the head is a free
+  /// (or fixed) body; otherwise > 0, or kFixed for a torso held still. Needs a free head and
+  /// a neck stiffness or damping.
+  double torso_mass_kg = 0.0;
+  /// The neck's stiffness k_n [N/m], in [0, 1e9]; needs a torso.
+  double neck_stiffness_N_per_m = 0.0;
+  /// The neck's damping c_n [N·s/m], in [0, 1e7]; needs a torso.
+  double neck_damping_N_s_per_m = 0.0;
+  /// The head hangs on a neck (a torso mass is given).
+  bool has_neck() const noexcept { return torso_mass_kg != 0.0; }
 };
 
 /// The scalp: the soft layer over the skull.
@@ -95,6 +113,10 @@ struct ModelConstants {
   /// A soft layer is fully compressed at this fraction of its thickness [-], in (0, 1].
   double full_compression_fraction = 0.8;
   ThresholdReading thresholds = ThresholdReading::kCumulative;
+  /// Hunt-Crossley contact damping d [s/m], in [0, 1e3] (docs/model.md §10.1): the contact
+  /// force is F_el(δ) (1 + d δ') and the stress σ_el(δ) (1 + d δ'). 0 (default): the
+  /// paper's conservative contact.
+  double damping_s_per_m = 0.0;
 };
 
 /// One impact scene: everything the model needs.
@@ -105,6 +127,16 @@ struct Scene {
   ScalpSpec scalp;
   SkullSpec skull;
   ModelConstants model;
+  /// The contact dissipates energy (damping > 0).
+  bool is_damped() const noexcept { return model.damping_s_per_m > 0.0; }
+  /// The robot brakes after its reaction delay (braking > 0).
+  bool robot_brakes() const noexcept { return robot.braking_m_per_s2 > 0.0; }
+  /// The scene is the paper's conservative two-mass impact: no damping, no braking, no neck.
+  /// Only such a scene has the energy integral the exact path needs for every quantity
+  /// (a damped scene keeps an exact path of its own; braking and a neck need the time path).
+  bool is_conservative_two_mass() const noexcept {
+    return !is_damped() && !robot_brakes() && !head.has_neck();
+  }
 };
 
 /// Injury limits the peaks are judged against (Park et al. Sec. IV-A).

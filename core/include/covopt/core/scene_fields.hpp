@@ -39,7 +39,9 @@ struct SceneField {
 /// Every settable numeric field, in the order of `covopt simulate --help`: robot-mass,
 /// speed, robot-radius, robot-modulus, robot-poisson, covering-modulus, covering-poisson,
 /// covering-thickness, head-mass, head-radius, scalp-modulus, scalp-poisson,
-/// scalp-thickness, skull-modulus, skull-poisson.
+/// scalp-thickness, skull-modulus, skull-poisson, then the inputs of the scenes beyond the
+/// conservative two-mass model: damping, reaction-delay, braking, torso-mass, neck-stiffness,
+/// neck-damping.
 std::span<const SceneField> SceneFields() noexcept;
 
 /// The field called `name` ("robot-mass") or `dotted_name` ("robot.mass"); nullptr if none.
