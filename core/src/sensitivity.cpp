@@ -7,31 +7,18 @@
 #include <stdexcept>
 
 #include "covopt/core/exact.hpp"
+#include "sensitivity_internal.hpp"
 
 namespace covopt {
+namespace internal {
 namespace {
 
 constexpr double kHertzPressureFactor = 3.0 / (2.0 * std::numbers::pi);
 
-/// Derivatives of one segment's parameters and offsets with respect to θ.
-struct SegmentDerivatives {
-  double stiffness = 0.0;       // dK
-  double curvature = 0.0;       // dc
-  double start = 0.0;           // d start
-  double origin = 0.0;          // d origin
-  double force_offset = 0.0;    // dF_off
-  double stress_offset = 0.0;   // dσ_off
-  double energy_start = 0.0;    // dU(start)
-  double density_start = 0.0;   // de(start)
-};
-
-/// ∂F, ∂σ, ∂U, ∂e with respect to θ at fixed δ, inside segment `seg`.
-struct Partials {
-  double force = 0.0, stress = 0.0, energy = 0.0, density = 0.0;
-};
-
 /// x^p for x >= 0, with 0^p = 0 for p > 0 (and 1 for p == 0).
 double Power(double x, double p) { return x > 0.0 ? std::pow(x, p) : (p == 0.0 ? 1.0 : 0.0); }
+
+}  // namespace
 
 Partials PartialsAt(const ForceLawSegment& seg, const SegmentDerivatives& d, double delta) {
   const double n = seg.exponent;
@@ -58,14 +45,15 @@ Partials PartialsAt(const ForceLawSegment& seg, const SegmentDerivatives& d, dou
   return p;
 }
 
-/// dσ/dδ inside a segment at δ (infinite at the origin for n < 2).
 double StressSlope(const ForceLawSegment& seg, double delta) {
   const double x = delta - seg.origin_m;
   return kHertzPressureFactor * seg.stiffness * seg.curvature_per_m * (seg.exponent - 1.0) *
          std::pow(x, seg.exponent - 2.0);
 }
 
-enum class Design { kModulus, kThickness };
+namespace {
+
+using Design = DesignParameter;
 
 /// dK, dc, d start, d origin of segment j with respect to one design parameter.
 SegmentDerivatives PrimitiveDerivatives(const ImpactModel& model, std::size_t j, Design design) {
@@ -74,7 +62,7 @@ SegmentDerivatives PrimitiveDerivatives(const ImpactModel& model, std::size_t j,
   SegmentDerivatives d;
   const bool covering_material = seg.phase == Phase::kCoveringOnScalp || seg.phase == Phase::kCoveringOnBone;
   if (covering_material) {
-    if (design == Design::kModulus) {
+    if (design == Design::kCoveringModulus) {
       // K = 4/3 / (C sqrt(c)),  C ∋ (1 - ν_c²)/E_c  =>  dK/dE_c = (3/4) K² sqrt(c) (1 - ν_c²)/E_c².
       const double e_c = scene.covering.youngs_modulus_Pa;
       const double nu_c = scene.covering.poisson_ratio;
@@ -86,13 +74,37 @@ SegmentDerivatives PrimitiveDerivatives(const ImpactModel& model, std::size_t j,
       d.stiffness = -0.5 * seg.stiffness / seg.curvature_per_m * d.curvature;
     }
   }
-  if (seg.phase == Phase::kRobotOnBone && design == Design::kThickness) {
+  if (seg.phase == Phase::kRobotOnBone && design == Design::kCoveringThickness) {
     const double f = scene.model.full_compression_fraction;
     d.origin = f;  // t2 = t1 + f b_c (cumulative) or f b_c (literal)
     d.start = seg.start_m == seg.origin_m ? f : 0.0;  // ill-ordered literal: starts at t1
   }
   return d;
 }
+
+}  // namespace
+
+std::array<SegmentDerivatives, 3> SegmentDerivativesOf(const ImpactModel& model, DesignParameter parameter) {
+  std::array<SegmentDerivatives, 3> all{};
+  all[0] = PrimitiveDerivatives(model, 0, parameter);
+  for (std::size_t j = 0; j + 1 < model.segment_count(); ++j) {
+    const ForceLawSegment& seg = model.segment(j);
+    const ForceLawSegment& next = model.segment(j + 1);
+    SegmentDerivatives following = PrimitiveDerivatives(model, j + 1, parameter);
+    const Partials at_origin = PartialsAt(seg, all[j], next.origin_m);
+    const Partials at_start = PartialsAt(seg, all[j], next.start_m);
+    const ContactState state_origin = model.StateInSegment(j, next.origin_m);
+    const ContactState state_start = model.StateInSegment(j, next.start_m);
+    following.force_offset = at_origin.force + state_origin.stiffness_N_per_m * following.origin;
+    following.stress_offset = at_origin.stress + StressSlope(seg, next.origin_m) * following.origin;
+    following.energy_start = at_start.energy + state_start.force_N * following.start;
+    following.density_start = at_start.density + state_start.compressive_stress_Pa * following.start;
+    all[j + 1] = following;
+  }
+  return all;
+}
+
+namespace {
 
 /// A candidate for F_max or σ_c,max: its value and its derivative.
 struct Candidate {
@@ -102,33 +114,20 @@ struct Candidate {
 PeakDerivatives Differentiate(const ImpactModel& model, const ImpactPeaks& peaks, Design design) {
   const double delta_max = peaks.max_penetration_m;
   const std::size_t top = model.SegmentIndexAt(delta_max);
-  SegmentDerivatives d = PrimitiveDerivatives(model, 0, design);
+  const std::array<SegmentDerivatives, 3> d = SegmentDerivativesOf(model, design);
   // F and σ at the end of each segment passed (the literal law can drop after it), where
   // PeaksAtMaxPenetration may find the maximum; the end moves with the next segment's start.
   std::array<Candidate, 3> force_ends{}, stress_ends{};  // at most 3 segments, top <= 2
   for (std::size_t j = 0; j < top; ++j) {
     const ForceLawSegment& seg = model.segment(j);
-    const ForceLawSegment& next = model.segment(j + 1);
-    SegmentDerivatives following = PrimitiveDerivatives(model, j + 1, design);
-    const Partials at_end = PartialsAt(seg, d, seg.end_m);
+    const Partials at_end = PartialsAt(seg, d[j], seg.end_m);
     const ContactState state_end = model.StateInSegment(j, seg.end_m);
-    force_ends[j] = {state_end.force_N,
-                     at_end.force + state_end.stiffness_N_per_m * following.start};
+    force_ends[j] = {state_end.force_N, at_end.force + state_end.stiffness_N_per_m * d[j + 1].start};
     stress_ends[j] = {state_end.compressive_stress_Pa,
-                      at_end.stress + StressSlope(seg, seg.end_m) * following.start};
-    const Partials at_origin = PartialsAt(seg, d, next.origin_m);
-    const Partials at_start = PartialsAt(seg, d, next.start_m);
-    const ContactState state_origin = model.StateInSegment(j, next.origin_m);
-    const ContactState state_start = model.StateInSegment(j, next.start_m);
-    following.force_offset = at_origin.force + state_origin.stiffness_N_per_m * following.origin;
-    following.stress_offset = at_origin.stress + StressSlope(seg, next.origin_m) * following.origin;
-    following.energy_start = at_start.energy + state_start.force_N * following.start;
-    following.density_start =
-        at_start.density + state_start.compressive_stress_Pa * following.start;
-    d = following;
+                      at_end.stress + StressSlope(seg, seg.end_m) * d[j + 1].start};
   }
   const ForceLawSegment& seg = model.segment(top);
-  const Partials p = PartialsAt(seg, d, delta_max);
+  const Partials p = PartialsAt(seg, d[top], delta_max);
   const ContactState state = model.StateInSegment(top, delta_max);
   PeakDerivatives out;
   out.max_penetration = -p.energy / state.force_N;
@@ -150,6 +149,7 @@ PeakDerivatives Differentiate(const ImpactModel& model, const ImpactPeaks& peaks
 }
 
 }  // namespace
+}  // namespace internal
 
 PeakSensitivities ExactPeakSensitivities(const ImpactModel& model, const ImpactPeaks& peaks) {
   if (!model.has_covering()) {
@@ -157,8 +157,9 @@ PeakSensitivities ExactPeakSensitivities(const ImpactModel& model, const ImpactP
         "design sensitivities need a covering (covering.thickness > 0): b_c -> 0 is a "
         "discontinuity of the model");
   }
-  return {Differentiate(model, peaks, Design::kModulus),
-          Differentiate(model, peaks, Design::kThickness)};
+  using internal::DesignParameter;
+  return {internal::Differentiate(model, peaks, DesignParameter::kCoveringModulus),
+          internal::Differentiate(model, peaks, DesignParameter::kCoveringThickness)};
 }
 
 }  // namespace covopt
