@@ -1,0 +1,501 @@
+// The thinnest covering admissible for every value of an uncertainty box
+// (optim/robust_design.hpp, FindRobustThinnestCovering): scenario generation around
+// FindThinnestSafeCovering's scan-then-bisect (per material) and nested search (continuous).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <covopt/core/exact.hpp>
+#include <covopt/core/impact_model.hpp>
+
+#include "covopt/optim/robust_design.hpp"
+#include "robust_internal.hpp"
+
+namespace covopt::optim {
+namespace internal {
+
+void ValidateDesign(const DesignOptions& o) {
+  const DesignSpace& s = o.space;
+  Require(std::isfinite(s.min_modulus_Pa) && s.min_modulus_Pa > 0,
+          "min modulus must be > 0 Pa (got " + Number(s.min_modulus_Pa) + ")");
+  Require(std::isfinite(s.max_modulus_Pa) && s.max_modulus_Pa > s.min_modulus_Pa && s.max_modulus_Pa <= 1e13,
+          "max modulus must be in (min modulus " + Number(s.min_modulus_Pa) + " Pa, 1e13 Pa] (got " +
+              Number(s.max_modulus_Pa) + ")");
+  Require(std::isfinite(s.min_thickness_m) && s.min_thickness_m > 0,
+          "min thickness must be > 0 m (got " + Number(s.min_thickness_m) + ")");
+  Require(std::isfinite(s.max_thickness_m) && s.max_thickness_m > s.min_thickness_m && s.max_thickness_m <= 1.0,
+          "max thickness must be in (min thickness " + Number(s.min_thickness_m) + " m, 1 m] (got " +
+              Number(s.max_thickness_m) + ")");
+  Require(o.covering_poisson_ratio > -1.0 && o.covering_poisson_ratio <= 0.5,
+          "covering poisson ratio must be in (-1, 0.5] (got " + Number(o.covering_poisson_ratio) + ")");
+  Require(o.thickness_scan_points >= 10 && o.thickness_scan_points <= 1000000,
+          "thickness scan points must be in [10, 1e6] (got " + std::to_string(o.thickness_scan_points) + ")");
+  Require(o.bracket_thickness_points >= 4 && o.bracket_thickness_points <= 100000,
+          "bracket thickness points must be in [4, 100000] (got " + std::to_string(o.bracket_thickness_points) + ")");
+  Require(o.modulus_points_per_decade >= 2 && o.modulus_points_per_decade <= 10000,
+          "modulus points per decade must be in [2, 10000] (got " + std::to_string(o.modulus_points_per_decade) + ")");
+  Require(std::isfinite(o.thickness_resolution_m) && o.thickness_resolution_m > 0,
+          "thickness resolution must be > 0 m (got " + Number(o.thickness_resolution_m) + ")");
+  Require(o.threads >= 1 && o.threads <= 256, "threads must be in [1, 256] (got " + std::to_string(o.threads) + ")");
+  Require(std::isfinite(o.thickness_step_m) && o.thickness_step_m >= 0,
+          "thickness step must be >= 0 m (got " + Number(o.thickness_step_m) + ")");
+  ValidateCriterion({o.criterion(), o.safety_factor, o.limits});
+}
+
+void RefuseCoveringRanges(const UncertaintyBox& box) {
+  const std::string why = "the design chooses the covering; its fields cannot be uncertain here";
+  RefuseRange(box, "covering-modulus", why);
+  RefuseRange(box, "covering-poisson", why);
+  RefuseRange(box, "covering-thickness", why);
+}
+
+double StockThickness(double steps, double step_m) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.12g", steps * step_m);
+  return std::strtod(text, nullptr);
+}
+
+double ScanThickness(const DesignSpace& space, int points, int k) {
+  return k == points - 1 ? space.max_thickness_m
+                         : space.min_thickness_m + (space.max_thickness_m - space.min_thickness_m) * k / (points - 1);
+}
+
+std::vector<double> BracketGrid(const DesignOptions& o) {
+  const DesignSpace& space = o.space;
+  std::vector<double> grid;
+  const int linear = std::max(2, o.bracket_thickness_points / 2);
+  const int geometric = std::max(2, o.bracket_thickness_points - linear);
+  for (int i = 0; i < linear; ++i) {
+    grid.push_back(space.min_thickness_m + (space.max_thickness_m - space.min_thickness_m) * i / (linear - 1));
+  }
+  for (int i = 0; i < geometric; ++i) {
+    grid.push_back(space.min_thickness_m *
+                   std::pow(space.max_thickness_m / space.min_thickness_m, static_cast<double>(i) / (geometric - 1)));
+  }
+  grid.front() = space.min_thickness_m;
+  grid.back() = space.max_thickness_m;
+  std::sort(grid.begin(), grid.end());
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  grid.back() = std::min(grid.back(), space.max_thickness_m);
+  return grid;
+}
+
+}  // namespace internal
+
+namespace {
+
+using internal::ImpactCriterion;
+using internal::Judged;
+
+constexpr double kThicknessTolerance_m = 1e-9;  ///< the continuous optimum's bisection
+constexpr double kLogModulusTolerance = 1e-10;  ///< golden sections in log10 E_c
+
+double SecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// A finite set of input values ("scenarios") a design is judged against: g over the set is
+/// the largest g of its scenes, admissible when every scene is.
+class ScenarioSet {
+ public:
+  ScenarioSet(const UncertaintyBox& box, const ImpactCriterion& criterion) : box_(box), criterion_(criterion) {}
+
+  void Add(const std::vector<double>& values) {
+    for (const std::vector<double>& known : values_) {
+      if (known == values) return;
+    }
+    values_.push_back(values);
+    scenes_.push_back(box_.SceneAt(values));
+  }
+  const std::vector<std::vector<double>>& values() const { return values_; }
+
+  struct Verdict {
+    double governing = 0.0;  ///< max over the set
+    bool admissible = true;
+  };
+  Verdict Judge(const CoveringSpec& covering) const {
+    Verdict v;
+    for (const Scene& base : scenes_) {
+      Scene scene = base;
+      scene.covering = covering;
+      ++evaluations_;
+      const Judged j = internal::JudgeScene(scene, criterion_);
+      v.governing = std::max(v.governing, j.governing_ratio);
+      v.admissible = v.admissible && j.admissible;
+    }
+    return v;
+  }
+  long evaluations() const { return evaluations_; }
+
+ private:
+  const UncertaintyBox& box_;
+  ImpactCriterion criterion_;
+  std::vector<std::vector<double>> values_;
+  std::vector<Scene> scenes_;
+  mutable long evaluations_ = 0;
+};
+
+/// What one robust search shares: the box, the criterion, the options.
+struct RobustContext {
+  const UncertaintyBox& box;
+  ImpactCriterion criterion;
+  const RobustDesignOptions& options;
+
+  /// The worst case of the whole box for one covering.
+  WorstCase WorstCaseFor(const CoveringSpec& covering) const {
+    Scene base = box.nominal();
+    base.covering = covering;
+    return internal::WorstCaseOnScene(box, base, criterion, options.worst_case);
+  }
+};
+
+/// The DesignScore of a worst case (the impact there).
+DesignScore ScoreOf(const WorstCase& worst) {
+  DesignScore score;
+  score.design = {worst.scene.covering.youngs_modulus_Pa, worst.scene.covering.thickness_m};
+  score.poisson_ratio = worst.scene.covering.poisson_ratio;
+  score.peaks = ExactPeaks(ImpactModel::FromScene(worst.scene));
+  score.laceration_ratio = worst.laceration_ratio;
+  score.contusion_ratio = worst.contusion_ratio;
+  score.compression_ratio = worst.compression_ratio;
+  return score;
+}
+
+/// One material: the thinnest thickness admissible for the scenario set (scan, bisection),
+/// confirmed over the whole box, the set grown by every violation found; then the stock step.
+RobustCandidate RobustSnapMaterial(const RobustContext& context, const CandidateMaterial& material,
+                                   const std::vector<std::vector<double>>& initial, long& evaluations) {
+  const DesignOptions& o = context.options.design;
+  const DesignSpace& space = o.space;
+  ScenarioSet set(context.box, context.criterion);
+  for (const std::vector<double>& s : initial) set.Add(s);
+  auto covering = [&](double b) { return CoveringSpec{material.youngs_modulus_Pa, material.poisson_ratio, b}; };
+  auto admissible_on_set = [&](double b) { return set.Judge(covering(b)).admissible; };
+  long search_evaluations = 0;
+  auto confirm = [&](double b) {
+    WorstCase worst = context.WorstCaseFor(covering(b));
+    search_evaluations += worst.evaluations;
+    return worst;
+  };
+
+  RobustCandidate candidate;
+  candidate.outcome.material = material;
+  std::optional<double> thinnest;
+  std::optional<WorstCase> at_thinnest;
+  while (candidate.scenario_rounds < context.options.max_scenario_rounds) {
+    ++candidate.scenario_rounds;
+    double inadmissible = 0.0, admissible = 0.0;
+    bool found = false;
+    for (int k = 0; k < o.thickness_scan_points && !found; ++k) {
+      const double b = internal::ScanThickness(space, o.thickness_scan_points, k);
+      if (admissible_on_set(b)) {
+        found = true;
+        admissible = b;
+      } else {
+        inadmissible = b;
+      }
+    }
+    if (!found) break;  // inadmissible for the set, hence for the box
+    if (inadmissible > 0.0) {
+      while (admissible - inadmissible > o.thickness_resolution_m) {
+        const double mid = 0.5 * (inadmissible + admissible);
+        (admissible_on_set(mid) ? admissible : inadmissible) = mid;
+      }
+    }
+    WorstCase worst = confirm(admissible);
+    if (worst.admissible) {
+      thinnest = admissible;
+      at_thinnest = std::move(worst);
+      break;
+    }
+    set.Add(worst.values);
+  }
+
+  CandidateOutcome& outcome = candidate.outcome;
+  const double sf = o.safety_factor;
+  if (!thinnest) {
+    candidate.unconfirmed = candidate.scenario_rounds >= context.options.max_scenario_rounds;
+    candidate.worst_case = confirm(space.max_thickness_m);
+    outcome.score = ScoreOf(candidate.worst_case);
+    outcome.margin = outcome.score.margin(sf);
+    evaluations += set.evaluations() + search_evaluations;
+    return candidate;
+  }
+  outcome.min_safe_thickness_m = *thinnest;
+  std::optional<WorstCase> at_stock;
+  if (o.thickness_step_m > 0.0) {
+    double steps = std::ceil(*thinnest / o.thickness_step_m - 1e-9);
+    for (double stock = internal::StockThickness(steps, o.thickness_step_m);;
+         stock = internal::StockThickness(++steps, o.thickness_step_m)) {
+      if (stock > space.max_thickness_m * (1 + 1e-12)) {
+        outcome.stock_thickness_beyond_max_m = stock;
+        break;
+      }
+      if (!admissible_on_set(stock)) continue;
+      WorstCase worst = confirm(stock);
+      if (worst.admissible) {
+        at_stock = std::move(worst);
+        break;
+      }
+      set.Add(worst.values);
+    }
+  }
+  candidate.worst_case = at_stock ? *at_stock : *at_thinnest;
+  candidate.worst_case_at_thinnest = std::move(at_thinnest);
+  outcome.score = ScoreOf(candidate.worst_case);
+  outcome.recommended_thickness_m = candidate.worst_case.scene.covering.thickness_m;
+  outcome.safe = candidate.worst_case.admissible;
+  outcome.margin = outcome.score.margin(sf);
+  evaluations += set.evaluations() + search_evaluations;
+  return candidate;
+}
+
+/// The nested search against a scenario set: at a thickness, the modulus of least g over the
+/// set (scan in log10 E_c, golden sections of the best local minima).
+class RobustModulusSearch {
+ public:
+  RobustModulusSearch(const ScenarioSet& set, const DesignOptions& o)
+      : set_(set), o_(o), lo_(std::log10(o.space.min_modulus_Pa)), hi_(std::log10(o.space.max_modulus_Pa)) {}
+
+  struct Choice {
+    double log_modulus = 0.0;
+    double governing = 0.0;
+    bool admissible = false;
+  };
+
+  Choice Best(double b, bool screen) const {
+    const int n = std::max(9, static_cast<int>(std::ceil(o_.modulus_points_per_decade * (hi_ - lo_))) + 1);
+    std::vector<Choice> samples;
+    samples.reserve(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) samples.push_back(At(Grid(n, i), b));
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < samples.size(); ++i) {
+      if (samples[i].governing < samples[best].governing) best = i;
+    }
+    Choice result = samples[best];
+    if (screen && result.governing > 3.0) return result;
+    std::vector<std::size_t> minima;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const double g = samples[i].governing;
+      const bool left = i == 0 || g <= samples[i - 1].governing;
+      const bool right = i + 1 == samples.size() || g <= samples[i + 1].governing;
+      if (left && right && g <= 1.05 * samples[best].governing) minima.push_back(i);
+    }
+    std::stable_sort(minima.begin(), minima.end(),
+                     [&](std::size_t x, std::size_t y) { return samples[x].governing < samples[y].governing; });
+    if (minima.size() > 3) minima.resize(3);
+    for (std::size_t i : minima) {
+      const double left = Grid(n, i == 0 ? 0 : static_cast<int>(i) - 1);
+      const double right = Grid(n, std::min(n - 1, static_cast<int>(i) + 1));
+      const Choice refined = Golden(b, left, right);
+      if (refined.governing < result.governing || (refined.admissible && !result.admissible)) result = refined;
+    }
+    return result;
+  }
+
+ private:
+  double Grid(int n, int i) const { return i == n - 1 ? hi_ : lo_ + (hi_ - lo_) * i / (n - 1); }
+  Choice At(double u, double b) const {
+    const ScenarioSet::Verdict v = set_.Judge({std::pow(10.0, u), o_.covering_poisson_ratio, b});
+    return {u, v.governing, v.admissible};
+  }
+  Choice Golden(double b, double a, double c) const {
+    constexpr double kInvPhi = 0.6180339887498949;
+    double x1 = c - kInvPhi * (c - a), x2 = a + kInvPhi * (c - a);
+    Choice s1 = At(x1, b), s2 = At(x2, b);
+    Choice best = s1.governing <= s2.governing ? s1 : s2;
+    while (c - a > kLogModulusTolerance) {
+      if (s1.governing <= s2.governing) {
+        c = x2;
+        x2 = x1;
+        s2 = s1;
+        x1 = c - kInvPhi * (c - a);
+        s1 = At(x1, b);
+        if (s1.governing < best.governing) best = s1;
+      } else {
+        a = x1;
+        x1 = x2;
+        s1 = s2;
+        x2 = a + kInvPhi * (c - a);
+        s2 = At(x2, b);
+        if (s2.governing < best.governing) best = s2;
+      }
+    }
+    return best;
+  }
+
+  const ScenarioSet& set_;
+  const DesignOptions& o_;
+  double lo_, hi_;
+};
+
+RobustContinuousOptimum RobustContinuous(const RobustContext& context,
+                                         const std::vector<std::vector<double>>& initial, long& evaluations) {
+  const DesignOptions& o = context.options.design;
+  ScenarioSet set(context.box, context.criterion);
+  for (const std::vector<double>& s : initial) set.Add(s);
+  const RobustModulusSearch search(set, o);
+  const std::vector<double> grid = internal::BracketGrid(o);
+  RobustContinuousOptimum out;
+  long search_evaluations = 0;
+  auto design_of = [&](const RobustModulusSearch::Choice& choice, double b) {
+    return CoveringDesign{std::pow(10.0, choice.log_modulus), b};
+  };
+  auto confirm = [&](const CoveringDesign& d) {
+    WorstCase worst = context.WorstCaseFor({d.youngs_modulus_Pa, o.covering_poisson_ratio, d.thickness_m});
+    search_evaluations += worst.evaluations;
+    return worst;
+  };
+  bool confirmed = false;
+  while (out.scenario_rounds < context.options.max_scenario_rounds) {
+    ++out.scenario_rounds;
+    std::optional<std::size_t> first;
+    RobustModulusSearch::Choice choice;
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+      choice = search.Best(grid[k], /*screen=*/true);
+      if (choice.admissible) {
+        first = k;
+        break;
+      }
+    }
+    if (!first) break;  // nothing admissible for the set, hence for the box
+    double b = grid[*first];
+    if (*first > 0) {
+      double inadmissible = grid[*first - 1];
+      while (b - inadmissible > kThicknessTolerance_m) {
+        const double mid = 0.5 * (inadmissible + b);
+        const RobustModulusSearch::Choice at_mid = search.Best(mid, false);
+        if (at_mid.admissible) {
+          b = mid;
+          choice = at_mid;
+        } else {
+          inadmissible = mid;
+        }
+      }
+    }
+    out.design = design_of(choice, b);
+    out.worst_case = confirm(out.design);
+    if (out.worst_case.admissible) {
+      confirmed = true;
+      break;
+    }
+    set.Add(out.worst_case.values);
+  }
+  if (confirmed) {
+    out.feasible = true;
+  } else {
+    out.unconfirmed = out.scenario_rounds >= context.options.max_scenario_rounds;
+    // The least-g modulus for the set at the maximum thickness, and the box's worst case there.
+    const RobustModulusSearch::Choice at_max = search.Best(o.space.max_thickness_m, false);
+    out.design = design_of(at_max, o.space.max_thickness_m);
+    out.worst_case = confirm(out.design);
+  }
+  evaluations += set.evaluations() + search_evaluations;
+  return out;
+}
+
+}  // namespace
+
+RobustThinnestCovering FindRobustThinnestCovering(const UncertaintyBox& box,
+                                                  std::span<const CandidateMaterial> materials,
+                                                  const RobustDesignOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  const DesignOptions& o = options.design;
+  internal::ValidateDesign(o);
+  internal::ValidateSearch(options.worst_case);
+  internal::Require(options.max_scenario_rounds >= 1 && options.max_scenario_rounds <= 1000,
+                    "max scenario rounds must be in [1, 1000] (got " + std::to_string(options.max_scenario_rounds) + ")");
+  internal::RefuseCoveringRanges(box);
+  for (const CandidateMaterial& m : materials) {
+    internal::Require(std::isfinite(m.youngs_modulus_Pa) && m.youngs_modulus_Pa > 0.0 && m.youngs_modulus_Pa <= 1e13,
+                      "material '" + m.name + "': modulus must be in (0, 1e13] Pa (got " +
+                          internal::Number(m.youngs_modulus_Pa) + ")");
+    internal::Require(m.poisson_ratio > -1.0 && m.poisson_ratio <= 0.5,
+                      "material '" + m.name + "': poisson ratio must be in (-1, 0.5] (got " +
+                          internal::Number(m.poisson_ratio) + ")");
+  }
+  const ImpactCriterion criterion{o.criterion(), o.safety_factor, o.limits};
+  const RobustContext context{box, criterion, options};
+  RobustThinnestCovering out;
+  out.criterion = o.criterion();
+  long evaluations = 0;
+
+  Scene bare = box.nominal();
+  bare.covering.thickness_m = 0.0;
+  out.bare_robot = internal::WorstCaseOnScene(box, bare, criterion, options.worst_case);
+  evaluations += out.bare_robot.evaluations;
+
+  // The initial scenarios: the centre, and the worst case at the nominal scene's covering.
+  out.initial_scenarios.push_back(box.Centre());
+  {
+    const WorstCase nominal = internal::WorstCaseOnScene(box, box.nominal(), criterion, options.worst_case);
+    evaluations += nominal.evaluations;
+    if (nominal.values != out.initial_scenarios.front()) out.initial_scenarios.push_back(nominal.values);
+  }
+
+  if (options.continuous) out.continuous = RobustContinuous(context, out.initial_scenarios, evaluations);
+
+  // Materials, each from the same initial scenarios: results independent of the thread count.
+  std::vector<RobustCandidate> candidates(materials.size());
+  std::vector<long> material_evaluations(materials.size(), 0);
+  const std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(o.threads), materials.size());
+  if (threads <= 1) {
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+      candidates[i] = RobustSnapMaterial(context, materials[i], out.initial_scenarios, material_evaluations[i]);
+    }
+  } else {
+    std::vector<std::exception_ptr> errors(threads);
+    std::vector<std::thread> pool;
+    pool.reserve(threads);
+    for (std::size_t t = 0; t < threads; ++t) {
+      pool.emplace_back([&, t] {
+        try {
+          for (std::size_t i = t; i < materials.size(); i += threads) {
+            candidates[i] = RobustSnapMaterial(context, materials[i], out.initial_scenarios, material_evaluations[i]);
+          }
+        } catch (...) {
+          errors[t] = std::current_exception();
+        }
+      });
+    }
+    for (std::thread& thread : pool) thread.join();
+    for (const std::exception_ptr& error : errors) {
+      if (error) std::rethrow_exception(error);
+    }
+  }
+  for (long e : material_evaluations) evaluations += e;
+  std::stable_sort(candidates.begin(), candidates.end(), [](const RobustCandidate& x, const RobustCandidate& y) {
+    const CandidateOutcome& a = x.outcome;
+    const CandidateOutcome& b = y.outcome;
+    if (a.safe != b.safe) return a.safe;
+    if (a.safe && *a.recommended_thickness_m != *b.recommended_thickness_m) {
+      return *a.recommended_thickness_m < *b.recommended_thickness_m;
+    }
+    if (a.margin != b.margin) return a.margin > b.margin;
+    return a.material.name < b.material.name;
+  });
+  out.candidates = std::move(candidates);
+  const bool any_safe = !out.candidates.empty() && out.candidates.front().outcome.safe;
+  if (out.bare_robot.admissible) {
+    out.verdict = DesignVerdict::kBareRobotSafe;
+  } else if (any_safe) {
+    out.verdict = DesignVerdict::kCoveringFound;
+    out.recommendation = 0;
+  } else if (out.continuous && !out.continuous->feasible) {
+    out.verdict = DesignVerdict::kNothingSafe;
+  } else {
+    out.verdict = DesignVerdict::kNoSafeMaterial;
+  }
+  out.evaluations = evaluations;
+  out.seconds = SecondsSince(started);
+  return out;
+}
+
+}  // namespace covopt::optim

@@ -1,0 +1,103 @@
+#pragma once
+// Shared internals of the robust design (optim/robust_design.hpp): judging one impact, the
+// global search over a box, formatting and validation helpers. Not installed.
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <covopt/core/impact_result.hpp>
+#include <covopt/core/scene.hpp>
+
+#include "covopt/optim/robust_design.hpp"
+
+namespace covopt::optim::internal {
+
+/// "%g" of a value.
+std::string Number(double value);
+/// throw std::invalid_argument(message) unless `condition`.
+void Require(bool condition, const std::string& message);
+
+/// The criterion an impact is judged by.
+struct ImpactCriterion {
+  DesignCriterion criterion = DesignCriterion::kNoFullCompression;
+  double safety_factor = 1.0;
+  InjuryLimits limits;
+};
+/// Checks the safety factor ([1, 100]) and the limits (finite, > 0).
+void ValidateCriterion(const ImpactCriterion& criterion);
+
+/// One impact, judged.
+struct Judged {
+  ImpactPeaks peaks;
+  bool covered = false;
+  double laceration_ratio = 0.0;
+  double contusion_ratio = 0.0;
+  double compression_ratio = 0.0;  ///< δ_max / t2; 0 without a covering
+  bool fully_compressed = false;   ///< with a covering only
+  double governing_ratio = 0.0;    ///< g (robust_design.hpp)
+  LimitingCriterion binding = LimitingCriterion::kLaceration;
+  bool laceration = false;  ///< SF r_L > 1
+  bool contusion = false;   ///< SF r_C > 1
+  bool admissible = false;
+};
+
+/// The exact path on `scene`, judged. @throws std::invalid_argument for an invalid scene.
+Judged JudgeScene(const Scene& scene, const ImpactCriterion& criterion);
+
+/// Sets the box's inputs in `scene` to `values` [SI] (values.size() == box.size()).
+void ApplyInputs(const UncertaintyBox& box, std::span<const double> values, Scene& scene);
+
+/// The field names robot-mass, head-mass and speed: the inputs that act through the impact
+/// energy only.
+bool IsEnergyInput(const SceneField& field);
+/// Throws if the box has a range (low < high) on `field_name`, with `why`.
+void RefuseRange(const UncertaintyBox& box, std::string_view field_name, const std::string& why);
+
+/// What the global search looks for: the largest value of f over the box.
+struct BoxMaximum {
+  std::vector<double> values;  ///< every input [SI] at the best point
+  double value = 0.0;
+  std::string found_by;
+  std::optional<double> corner_value;
+  SolverReport global;
+  SolverReport local;
+  long evaluations = 0;
+};
+
+/// Checks GlobalSearchOptions.
+void ValidateSearch(const GlobalSearchOptions& search);
+
+/// The global search of GlobalSearchOptions for max f over the box; f gets every input's
+/// value [SI] and must return a finite number. Point inputs sit at their value; with
+/// search.pin_energy_inputs, energy inputs sit at their high end.
+BoxMaximum MaximizeOverBox(const UncertaintyBox& box, const GlobalSearchOptions& search,
+                           const std::function<double(std::span<const double>)>& f);
+
+/// FindWorstCase for the box's inputs applied to `base` instead of the nominal scene (a
+/// design's covering in place of the nominal one).
+WorstCase WorstCaseOnScene(const UncertaintyBox& box, const Scene& base,
+                           const ImpactCriterion& criterion, const GlobalSearchOptions& search);
+
+/// Fills a WorstCase's ratios from a judged impact.
+void FillWorstCase(const Judged& judged, WorstCase& worst);
+
+/// The input values [SI] of sample `index` into `values` (size box.size()).
+void DrawInputsInto(const UncertaintyBox& box, std::uint64_t seed, std::uint64_t index,
+                    std::span<double> values);
+
+/// Checks the fields of DesignOptions the robust designs use.
+void ValidateDesign(const DesignOptions& options);
+/// Throws for a range on covering-modulus, covering-poisson or covering-thickness.
+void RefuseCoveringRanges(const UncertaintyBox& box);
+/// A multiple of the thickness step, printed-clean (as FindThinnestSafeCovering's).
+double StockThickness(double steps, double step_m);
+/// Point k of the catalog scan's `points` thicknesses over the design space [m].
+double ScanThickness(const DesignSpace& space, int points, int k);
+/// The nested search's thickness grid: half linear, half geometric [m].
+std::vector<double> BracketGrid(const DesignOptions& options);
+
+}  // namespace covopt::optim::internal
