@@ -471,7 +471,9 @@ struct ProbabilityDesign {
   /// estimate at the maximum thickness.
   std::vector<ProbabilityCandidate> candidates;
   std::optional<std::size_t> recommendation;
-  std::uint64_t sample_evaluations = 0;  ///< exact-path evaluations, all designs
+  /// Exact-path evaluations, all designs. A rejected design stops early, and how many samples
+  /// the threads had evaluated by then varies from run to run: this count (only) does.
+  std::uint64_t sample_evaluations = 0;
   double seconds = 0.0;
 };
 
