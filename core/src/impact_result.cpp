@@ -96,6 +96,7 @@ std::string_view ToString(SolveStatus status) noexcept {
     case SolveStatus::kStepLimit: return "step-limit";
     case SolveStatus::kSolverFailure: return "solver-failure";
     case SolveStatus::kEventMissed: return "event-missed";
+    case SolveStatus::kNoSeparation: return "no-separation";
   }
   return "unknown";
 }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "covopt/core/impact_model.hpp"
@@ -24,6 +25,8 @@ inline constexpr long kWholeLaw = -1;       // segment index meaning "the full p
 inline constexpr int kStepTaken = 0;        // CV_SUCCESS == ARK_SUCCESS
 inline constexpr int kRootFound = 2;        // CV_ROOT_RETURN == ARK_ROOT_RETURN
 inline constexpr int kTooMuchWork = -1;     // CV_TOO_MUCH_WORK == ARK_TOO_MUCH_WORK
+/// Crossing directions of the three root functions above (+1 rising, -1 falling).
+inline constexpr std::array<int, kRootCount> kRootDirections{+1, -1, -1};
 
 /// What the C callbacks see: the model and where the integration is.
 struct RunState {
@@ -35,7 +38,13 @@ struct RunState {
   std::array<double, 3> closing_m{};
 };
 
-// The callbacks, shared by every integrator (same C signatures in CVODE and ARKODE).
+// The callbacks' C signatures, the same in CVODE and ARKODE (CVRhsFn == ARKRhsFn, ...).
+using RhsFunction = int (*)(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data);
+using RootFunction = int (*)(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data);
+using JacobianFunction = int (*)(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix jac,
+                                 void* user_data, N_Vector, N_Vector, N_Vector);
+
+// The conservative path's callbacks, shared by every integrator (time_integration.cpp).
 int RightHandSide(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data);
 int RootFunctions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data);
 int Jacobian(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix jac, void* user_data, N_Vector,
@@ -72,12 +81,20 @@ class Stepper {
 /// "NAME (flag)" from a return-flag name SUNDIALS malloc'ed (freed here; null: unknown).
 std::string TakeFlagName(char* malloced_name, int flag);
 
-/// Shared SUNDIALS objects a stepper is built on.
+/// Shared SUNDIALS objects a stepper is built on, and the problem it integrates. The problem
+/// defaults to the conservative path's (δ, δ', e) with its three root functions; the extended
+/// time path (extended_time_path.cpp) passes its own callbacks and a longer vector.
 struct StepperResources {
   SUNContext context = nullptr;
-  N_Vector state = nullptr;  // template for the integrator's vectors
-  RunState* run = nullptr;
+  N_Vector state = nullptr;  // template for the integrator's vectors; its length is the problem's
+  void* user_data = nullptr;  // what the callbacks receive (a RunState for the defaults)
   std::string* log = nullptr;
+  RhsFunction rhs = RightHandSide;
+  RootFunction roots = RootFunctions;
+  /// One crossing direction per root function; its size is the number of root functions.
+  std::span<const int> root_directions = kRootDirections;
+  /// The Jacobian for the implicit methods; null: SUNDIALS' difference quotients.
+  JacobianFunction jacobian = Jacobian;
 };
 
 std::unique_ptr<Stepper> MakeCvodeStepper(ComputationMethod method, const StepperResources& r);

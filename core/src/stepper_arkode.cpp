@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "stepper.hpp"
 
@@ -39,24 +40,25 @@ ARKODE_DIRKTableID ImplicitTable(ComputationMethod method) {
 /// the analytic Jacobian.
 class DirkStepper final : public Stepper {
  public:
-  DirkStepper(ComputationMethod method, const StepperResources& r) {
+  DirkStepper(ComputationMethod method, const StepperResources& r) : rhs_(r.rhs) {
     N_VConst(0.0, r.state);
-    mem_ = ARKStepCreate(nullptr, RightHandSide, 0.0, r.state, r.context);
+    mem_ = ARKStepCreate(nullptr, rhs_, 0.0, r.state, r.context);
     if (!mem_) throw std::runtime_error("ARKStepCreate failed");
     ARKStepSetErrHandlerFn(mem_, CaptureMessage, r.log);
-    ARKStepSetUserData(mem_, r.run);
+    ARKStepSetUserData(mem_, r.user_data);
     if (ARKStepSetTableNum(mem_, ImplicitTable(method), ARKODE_ERK_NONE) != ARK_SUCCESS) {
       throw std::runtime_error("ARKStepSetTableNum failed: " + *r.log);
     }
-    ARKStepRootInit(mem_, kRootCount, RootFunctions);
-    int directions[kRootCount] = {+1, -1, -1};
-    ARKStepSetRootDirection(mem_, directions);
+    std::vector<int> directions(r.root_directions.begin(), r.root_directions.end());
+    ARKStepRootInit(mem_, static_cast<int>(directions.size()), r.roots);
+    ARKStepSetRootDirection(mem_, directions.data());
     ARKStepSetNoInactiveRootWarn(mem_);
     ARKStepSetMaxHnilWarns(mem_, -1);
-    matrix_ = SUNDenseMatrix(3, 3, r.context);
+    const sunindextype size = N_VGetLength(r.state);
+    matrix_ = SUNDenseMatrix(size, size, r.context);
     linear_solver_ = SUNLinSol_Dense(r.state, matrix_, r.context);
     ARKStepSetLinearSolver(mem_, linear_solver_, matrix_);
-    ARKStepSetJacFn(mem_, Jacobian);
+    if (r.jacobian) ARKStepSetJacFn(mem_, r.jacobian);  // else difference quotients
   }
   ~DirkStepper() override {
     ARKStepFree(&mem_);
@@ -67,7 +69,7 @@ class DirkStepper final : public Stepper {
   DirkStepper& operator=(const DirkStepper&) = delete;
 
   int ReInit(double t0, N_Vector y0) override {
-    return ARKStepReInit(mem_, nullptr, RightHandSide, t0, y0);
+    return ARKStepReInit(mem_, nullptr, rhs_, t0, y0);
   }
   int SetTolerances(double relative, N_Vector absolute) override {
     return ARKStepSVtolerances(mem_, relative, absolute);
@@ -106,6 +108,7 @@ class DirkStepper final : public Stepper {
   }
 
  private:
+  RhsFunction rhs_ = nullptr;
   void* mem_ = nullptr;
   SUNMatrix matrix_ = nullptr;
   SUNLinearSolver linear_solver_ = nullptr;
@@ -115,18 +118,18 @@ class DirkStepper final : public Stepper {
 class ErkStepper final : public Stepper {
  public:
   ErkStepper(ComputationMethod method, const StepperResources& r)
-      : trusts_reentry_step_(method != ComputationMethod::kArkodeErk87) {
+      : rhs_(r.rhs), trusts_reentry_step_(method != ComputationMethod::kArkodeErk87) {
     N_VConst(0.0, r.state);
-    mem_ = ERKStepCreate(RightHandSide, 0.0, r.state, r.context);
+    mem_ = ERKStepCreate(rhs_, 0.0, r.state, r.context);
     if (!mem_) throw std::runtime_error("ERKStepCreate failed");
     ERKStepSetErrHandlerFn(mem_, CaptureMessage, r.log);
-    ERKStepSetUserData(mem_, r.run);
+    ERKStepSetUserData(mem_, r.user_data);
     if (ERKStepSetTableNum(mem_, ExplicitTable(method)) != ARK_SUCCESS) {
       throw std::runtime_error("ERKStepSetTableNum failed: " + *r.log);
     }
-    ERKStepRootInit(mem_, kRootCount, RootFunctions);
-    int directions[kRootCount] = {+1, -1, -1};
-    ERKStepSetRootDirection(mem_, directions);
+    std::vector<int> directions(r.root_directions.begin(), r.root_directions.end());
+    ERKStepRootInit(mem_, static_cast<int>(directions.size()), r.roots);
+    ERKStepSetRootDirection(mem_, directions.data());
     ERKStepSetNoInactiveRootWarn(mem_);
     ERKStepSetMaxHnilWarns(mem_, -1);
   }
@@ -134,7 +137,7 @@ class ErkStepper final : public Stepper {
   ErkStepper(const ErkStepper&) = delete;
   ErkStepper& operator=(const ErkStepper&) = delete;
 
-  int ReInit(double t0, N_Vector y0) override { return ERKStepReInit(mem_, RightHandSide, t0, y0); }
+  int ReInit(double t0, N_Vector y0) override { return ERKStepReInit(mem_, rhs_, t0, y0); }
   int SetTolerances(double relative, N_Vector absolute) override {
     return ERKStepSVtolerances(mem_, relative, absolute);
   }
@@ -164,6 +167,7 @@ class ErkStepper final : public Stepper {
   double ReentryStep(double step) override { return trusts_reentry_step_ ? step : 0.0; }
 
  private:
+  RhsFunction rhs_ = nullptr;
   void* mem_ = nullptr;
   /// Fehlberg 7(8)'s embedded error estimate misses the error of a large first step after a
   /// restart (measured: 9e-7 at rtol 1e-9 when re-entering with the loading step), so it

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "stepper.hpp"
 
@@ -21,20 +22,21 @@ class CvodeStepper final : public Stepper {
     if (!mem_) throw std::runtime_error("CVodeCreate failed");
     CVodeSetErrHandlerFn(mem_, CaptureMessage, r.log);
     N_VConst(0.0, r.state);
-    if (CVodeInit(mem_, RightHandSide, 0.0, r.state) != CV_SUCCESS) {
+    if (CVodeInit(mem_, r.rhs, 0.0, r.state) != CV_SUCCESS) {
       throw std::runtime_error("CVodeInit failed: " + *r.log);
     }
-    CVodeSetUserData(mem_, r.run);
-    CVodeRootInit(mem_, kRootCount, RootFunctions);
-    int directions[kRootCount] = {+1, -1, -1};
-    CVodeSetRootDirection(mem_, directions);
+    CVodeSetUserData(mem_, r.user_data);
+    std::vector<int> directions(r.root_directions.begin(), r.root_directions.end());
+    CVodeRootInit(mem_, static_cast<int>(directions.size()), r.roots);
+    CVodeSetRootDirection(mem_, directions.data());
     CVodeSetNoInactiveRootWarn(mem_);
     CVodeSetMaxHnilWarns(mem_, -1);
     if (bdf_) {
-      matrix_ = SUNDenseMatrix(3, 3, r.context);
+      const sunindextype size = N_VGetLength(r.state);
+      matrix_ = SUNDenseMatrix(size, size, r.context);
       linear_solver_ = SUNLinSol_Dense(r.state, matrix_, r.context);
       CVodeSetLinearSolver(mem_, linear_solver_, matrix_);
-      CVodeSetJacFn(mem_, Jacobian);
+      if (r.jacobian) CVodeSetJacFn(mem_, r.jacobian);  // else difference quotients
     } else {
       fixed_point_ = SUNNonlinSol_FixedPoint(r.state, 0, r.context);
       CVodeSetNonlinearSolver(mem_, fixed_point_);

@@ -16,6 +16,7 @@
 #include <string>
 #include <utility>
 
+#include "extended_time_path.hpp"
 #include "numeric_format.hpp"
 #include "stepper.hpp"
 #include "three_state_vector.hpp"
@@ -259,6 +260,8 @@ struct TimeIntegrator::Workspace {
   std::array<std::unique_ptr<internal::Stepper>, kMethodSlots> steppers;
   internal::RunState run;
   std::string log;
+  /// Scenes beyond the conservative two-mass model (extended_time_path.cpp), on first use.
+  std::unique_ptr<internal::ExtendedTimePath> extended;
 
   Workspace() {
     if (SUNContext_Create(nullptr, &context) != 0) throw std::runtime_error("SUNContext_Create failed");
@@ -270,6 +273,7 @@ struct TimeIntegrator::Workspace {
     if (!state || !absolute_tolerances || !dense_output) throw std::runtime_error("N_VNew_Serial failed");
   }
   ~Workspace() {
+    extended.reset();  // before the context it uses
     for (auto& stepper : steppers) stepper.reset();  // before the context they use
     if (absolute_tolerances) N_VDestroy(absolute_tolerances);
     if (dense_output) N_VDestroy(dense_output);
@@ -300,6 +304,10 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
                                       const TimeIntegrationOptions& options) {
   ValidateOptions(options);
   Workspace& ws = *workspace_;
+  if (options.force_extended_dynamics || !model.scene().is_conservative_two_mass()) {
+    if (!ws.extended) ws.extended = std::make_unique<internal::ExtendedTimePath>(ws.context);
+    return ws.extended->Simulate(model, options);
+  }
   ws.log.clear();
   internal::Stepper& stepper = ws.StepperFor(options.method);
 
@@ -334,10 +342,15 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
   y[2] = 0.0;
   double t = 0.0;
 
+  // The bodies' speeds from momentum: m_r v_r + m_b v_b = m_r v0 with v_r - v_b = δ' gives
+  // v_b = (m / m_b)(v0 - δ') (0 for a fixed head; v0 - δ' for a fixed robot).
+  const double head_speed_per_closing = model.effective_mass_kg() / model.scene().head.mass_kg;
   auto push_sample = [&](double time, const sunrealtype* state) {
     const ContactState contact = model.StateAt(state[0]);
-    result.history.push_back(
-        {time, state[0], state[1], contact.force_N, contact.compressive_stress_Pa, state[2]});
+    const double head_speed = head_speed_per_closing * (v0 - state[1]);
+    result.history.push_back({time, state[0], state[1], contact.force_N,
+                              contact.compressive_stress_Pa, state[2], head_speed + state[1],
+                              head_speed});
   };
   // Records y at `time`; after a CVODE step (`interpolate`), first fills the gap since the
   // last sample with dense output, which is valid inside the step just taken.
@@ -477,6 +490,7 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
         separated = true;
         result.contact_duration_s = t;
         result.rebound_speed_m_per_s = -y[1];
+        result.coefficient_of_restitution = -y[1] / v0;
         break;
       }
       --run.segment;

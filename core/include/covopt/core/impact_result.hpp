@@ -91,6 +91,10 @@ enum class SolveStatus {
   kStepLimit,        ///< the integrator hit the step limit before separation
   kSolverFailure,    ///< the integrator returned an error (see message and raw code)
   kEventMissed,      ///< separation/maximum compression was not located consistently
+  /// Time path, scenes beyond the conservative two-mass model: the contact had not ended
+  /// (δ back to 0) within the extended time path's bound (docs/model.md §10.2), e.g. a fixed
+  /// robot driving the head into a fixed torso.
+  kNoSeparation,
 };
 std::string_view ToString(SolveStatus status) noexcept;
 
@@ -111,9 +115,21 @@ struct HistorySample {
   double time_s = 0.0;                          ///< since first contact [s]
   double penetration_m = 0.0;                   ///< δ [m]
   double penetration_rate_m_per_s = 0.0;        ///< δ' [m/s]
-  double force_N = 0.0;                         ///< F(δ) [N]
-  double compressive_stress_Pa = 0.0;           ///< σ_c(δ) [Pa]
+  /// The contact force [N]: F(δ), or F_el(δ)(1 + d δ') with contact damping.
+  double force_N = 0.0;
+  /// The compressive stress [Pa]: σ_c(δ), or σ_el(δ)(1 + d δ') with contact damping.
+  double compressive_stress_Pa = 0.0;
   double energy_density_J_per_m2 = 0.0;         ///< e, integrated by the solver [J/m²]
+  /// Speeds along the impact axis [m/s] in the frame where the head starts at rest and the
+  /// robot at the impact speed (a fixed body keeps its initial speed); δ' is their difference.
+  double robot_speed_m_per_s = 0.0;
+  double head_speed_m_per_s = 0.0;
+  /// The neck's force on the torso, k_n (x_b - x_t) + c_n (ẋ_b - ẋ_t) [N]; 0 without a neck.
+  double neck_force_N = 0.0;
+  /// Work taken out of the moving bodies so far other than into U and the neck spring [J]:
+  /// contact damping, the neck damper, the brake, and the support of a fixed robot (negative:
+  /// it pushes). 0 on the conservative path (docs/model.md §10.2).
+  double dissipated_work_J = 0.0;
 };
 
 /// What a warning is about. Stable across versions: programs may match on it.
@@ -175,6 +191,12 @@ struct ImpactResult {
   /// It costs nothing (U is analytic) and tracks the true error of the peaks within about
   /// a factor of ten (docs/numerics.md). Above max(100 rtol, 1e-9) a warning says the
   /// integrator did not keep its tolerance.
+  /// Scenes beyond the conservative two-mass model (and force_extended_dynamics): the energy
+  /// balance with the work accounted for, at every maximum of δ and at separation,
+  ///     max | ΔK + U(δ) + ½ k_n (x_b - x_t)² + W | / (½ m v0²),
+  /// ΔK the change of the moving bodies' kinetic energy, W the integrated work of the
+  /// contact damping, the neck damper, the brake and a fixed robot's support
+  /// (HistorySample::dissipated_work_J); docs/model.md §10.2.
   std::optional<double> energy_residual;
 
   SolverStatistics statistics;

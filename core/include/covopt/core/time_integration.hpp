@@ -15,6 +15,17 @@
 /// that phase's formula continued past its ends with the phase-local penetration clamped
 /// at 0, so an overshooting step never takes the pow of a negative base.
 ///
+/// Scenes beyond the conservative two-mass model (Scene::is_conservative_two_mass() false:
+/// contact damping, a braking robot, a head on a neck; docs/model.md §10.2, §10.3) take the
+/// extended time path: robot, head and torso as bodies along the impact axis, the state
+///     (δ, δ', v_b, x_b - x_t, ẋ_b - ẋ_t, e, W)
+/// with the head speed v_b, the neck's stretch and rate, the energy density e and the work W
+/// of the dampers, the brake and a fixed robot's support. Events: the phase switches (both
+/// ways), the brake's start t = t_d, the robot stopping while it brakes, the damping force
+/// reaching 0 (1 + d δ' = 0), each restarting the integrator; every maximum of δ (δ_max is the
+/// largest); with damping the maxima of F and σ_c in time; separation, the first return to
+/// δ = 0. No series openings there: the integrator takes the phase starts itself.
+///
 /// The integrators' memory, vectors and linear solvers live in a TimeIntegrator and are
 /// reused across runs. A TimeIntegrator is not thread-safe: give each thread its own (or call
 /// SimulateImpact, which keeps one per thread). SUNDIALS' messages are captured into
@@ -52,6 +63,10 @@ struct TimeIntegrationOptions {
   double history_max_interval_s = 0.0;
   /// Give up after this many internal steps in total (SolveStatus::kStepLimit), >= 10.
   long max_steps = 200000;
+  /// Run the extended time path (bodies, damping, braking, neck; see the file comment) even
+  /// on a conservative two-mass scene, which the δ-only path answers otherwise: for checking
+  /// one path against the other. Scenes with damping, braking or a neck always take it.
+  bool force_extended_dynamics = false;
 };
 
 /// Reusable SUNDIALS workspace (one integrator per method, created on first use).
@@ -64,7 +79,10 @@ class TimeIntegrator {
   TimeIntegrator(const TimeIntegrator&) = delete;
   TimeIntegrator& operator=(const TimeIntegrator&) = delete;
 
-  /// Integrates one impact. Failures come back as a status with the integrator's message.
+  /// Integrates one impact: the δ-only path for a conservative two-mass scene, the extended
+  /// path otherwise (or with force_extended_dynamics). Failures come back as a status with the
+  /// integrator's message; a contact that does not end within the extended path's time bound
+  /// (docs/model.md §10.2) is SolveStatus::kNoSeparation.
   /// @throws std::invalid_argument if an option is out of range (naming it).
   ImpactResult Simulate(const ImpactModel& model, const TimeIntegrationOptions& options = {});
 

@@ -1,0 +1,530 @@
+// The extended time path of docs/model.md §10.2 and §10.3: robot, head and torso along the
+// impact axis, Hunt-Crossley contact damping, a robot that brakes after a reaction delay and a
+// head on a neck, integrated by any method of the Stepper abstraction (stepper.hpp, given this
+// file's callbacks and a 7-entry vector) with events and a restart at every kink or jump of
+// the right-hand side.
+#include "extended_time_path.hpp"
+
+#include <nvector/nvector_serial.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "numeric_format.hpp"
+#include "stepper.hpp"
+
+namespace covopt::internal {
+namespace {
+
+/// Entries of the state vector.
+enum StateEntry : int {
+  kPenetration = 0,   // δ = x_r - x_b [m]
+  kPenetrationRate,   // δ' [m/s]
+  kHeadSpeed,         // v_b [m/s], in the frame where the head starts at rest
+  kNeckStretch,       // q = x_b - x_t [m]; stays 0 without a neck
+  kNeckStretchRate,   // q' = v_b - v_t [m/s]; stays 0 without a neck
+  kEnergyDensity,     // e = ∫σ_c dδ [J/m²]
+  kWork,              // W [J]: dampers, brake, a fixed robot's support
+  kStateSize,
+};
+
+/// Root functions (the events of docs/model.md §10.2).
+enum EventEntry : int {
+  kUpperSwitch = 0,  // δ - end of the current segment, rising: restart in the next segment
+  kLowerSwitch,      // δ - start of the current segment, falling: restart below, or separation
+  kTurn,             // δ', falling: a maximum of δ
+  kBrakeStart,       // t - t_d, rising, until the brake has started: restart braking
+  kRobotStops,       // v_r, falling, while braking: restart without the brake
+  kDampingClamp,     // 1 + d δ', either way: the Hunt-Crossley force reaches or leaves 0
+  kForcePeak,        // dF/dt, falling (damping only): a maximum of F in time
+  kStressPeak,       // dσ_c/dt, falling (damping only): a maximum of σ_c in time
+  kEventCount,
+};
+constexpr std::array<int, kEventCount> kEventDirections{+1, -1, -1, +1, -1, 0, -1, -1};
+
+constexpr double kHertzPressureFactor = 3.0 / (2.0 * std::numbers::pi);  // k = 3/(2π)
+
+/// The bodies along the impact axis: robot, head, torso (in that order).
+struct Bodies {
+  Eigen::Vector3d inverse_mass = Eigen::Vector3d::Zero();   // [1/kg]; 0 fixed, or no torso
+  Eigen::Vector3d moving_mass = Eigen::Vector3d::Zero();    // [kg]; 0 fixed, or no torso
+  Eigen::Vector3d held = Eigen::Vector3d::Zero();           // 1 for a fixed body, else 0
+  Eigen::Vector3d initial_speed = Eigen::Vector3d::Zero();  // [m/s]: (v0, 0, 0)
+};
+
+/// What the C callbacks see: the model, the bodies and where the integration is.
+struct Run {
+  const ImpactModel* model = nullptr;
+  long segment = 0;  // index into the law, or kWholeLaw without restarts at the switches
+  Bodies bodies;
+  double damping_s_per_m = 0.0;
+  double braking_m_per_s2 = 0.0;
+  double reaction_delay_s = 0.0;
+  bool has_neck = false;
+  double neck_stiffness_N_per_m = 0.0;
+  double neck_damping_N_s_per_m = 0.0;
+  bool brake_pending = false;  // the robot brakes, but t_d has not come yet
+  bool brake_on = false;       // braking now: t >= t_d and the robot still moving forward
+  /// Floor on the phase-local penetration in dσ_el/dδ ~ x^(n-2), unbounded at a phase's start
+  /// for n < 2, so the stress-peak root function stays finite [m].
+  double slope_floor_m = 0.0;
+};
+
+/// The elastic law F_el, σ_el of the current segment at δ (continued past its ends, the
+/// phase-local penetration clamped at 0), and with `slopes` its δ-derivatives.
+struct ElasticLaw {
+  double force_N = 0.0;
+  double stress_Pa = 0.0;
+  double stiffness_N_per_m = 0.0;
+  double stress_slope_Pa_per_m = 0.0;
+};
+
+ElasticLaw ElasticLawAt(const Run& run, double delta, bool slopes) noexcept {
+  const bool first = run.segment == 0 || run.segment == kWholeLaw;
+  if (first && !(delta > 0.0)) return {};  // free flight
+  const std::size_t i = run.segment == kWholeLaw ? run.model->SegmentIndexAt(delta)
+                                                 : static_cast<std::size_t>(run.segment);
+  const ForceLawSegment& seg = run.model->segment(i);
+  const double n = seg.exponent;
+  const double x = std::max(delta - seg.origin_m, 0.0);
+  const double x_pow_nm1 = std::pow(x, n - 1.0);
+  const double kc = kHertzPressureFactor * seg.stiffness * seg.curvature_per_m;
+  ElasticLaw law;
+  law.force_N = seg.force_offset_N + seg.stiffness * (x_pow_nm1 * x);
+  law.stress_Pa = seg.stress_offset_Pa + kc * x_pow_nm1;
+  if (slopes) {
+    law.stiffness_N_per_m = n * seg.stiffness * x_pow_nm1;
+    law.stress_slope_Pa_per_m = kc * (n - 1.0) * std::pow(std::max(x, run.slope_floor_m), n - 2.0);
+  }
+  return law;
+}
+
+/// Forces and motion at one state.
+struct Dynamics {
+  ElasticLaw law;
+  double damping_factor = 1.0;  // 1 + d δ', before the clamp at 0
+  double force_N = 0.0;         // F = F_el max(0, 1 + d δ')
+  double stress_Pa = 0.0;       // σ_c = σ_el max(0, 1 + d δ')
+  double brake_force_N = 0.0;   // B = m_r a on the robot, against its motion
+  double neck_force_N = 0.0;    // on the torso, k_n q + c_n q' (the head gets minus this)
+  Eigen::Vector3d velocity;     // robot, head, torso [m/s]
+  Eigen::Vector3d force;        // on robot, head, torso [N]
+  Eigen::Vector3d acceleration;  // [m/s²]; 0 for a fixed body
+};
+
+Dynamics Evaluate(const Run& run, const sunrealtype* y, bool slopes = false) noexcept {
+  Dynamics d;
+  d.law = ElasticLawAt(run, y[kPenetration], slopes);
+  d.damping_factor = 1.0 + run.damping_s_per_m * y[kPenetrationRate];
+  // Hunt-Crossley never pulls: at separation speeds above 1/d the force is 0, not negative.
+  const double factor = std::max(d.damping_factor, 0.0);
+  d.force_N = d.law.force_N * factor;
+  d.stress_Pa = d.law.stress_Pa * factor;
+  const double head = y[kHeadSpeed];
+  d.velocity = Eigen::Vector3d(head + y[kPenetrationRate], head, head - y[kNeckStretchRate]);
+  if (run.brake_on) d.brake_force_N = run.braking_m_per_s2 * run.bodies.moving_mass(0);
+  if (run.has_neck) {
+    d.neck_force_N = run.neck_stiffness_N_per_m * y[kNeckStretch] +
+                     run.neck_damping_N_s_per_m * y[kNeckStretchRate];
+  }
+  d.force = Eigen::Vector3d(-d.force_N - d.brake_force_N, d.force_N - d.neck_force_N, d.neck_force_N);
+  d.acceleration = run.bodies.inverse_mass.cwiseProduct(d.force);
+  return d;
+}
+
+int ExtendedRightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) {
+  const auto& run = *static_cast<const Run*>(user_data);
+  const sunrealtype* s = NV_DATA_S(y);
+  sunrealtype* rate = NV_DATA_S(ydot);
+  const Dynamics d = Evaluate(run, s);
+  rate[kPenetration] = s[kPenetrationRate];
+  rate[kPenetrationRate] = d.acceleration(0) - d.acceleration(1);
+  rate[kHeadSpeed] = d.acceleration(1);
+  rate[kNeckStretch] = run.has_neck ? s[kNeckStretchRate] : 0.0;
+  rate[kNeckStretchRate] = run.has_neck ? d.acceleration(1) - d.acceleration(2) : 0.0;
+  rate[kEnergyDensity] = d.stress_Pa * s[kPenetrationRate];
+  // The power leaving the moving bodies other than into U and the neck spring: the contact
+  // damper (F - F_el) δ', the neck damper c_n q'², the brake B v_r, and the force on a fixed
+  // body times its (constant) speed, which is the work its support does.
+  rate[kWork] = (d.force_N - d.law.force_N) * s[kPenetrationRate] +
+                run.neck_damping_N_s_per_m * s[kNeckStretchRate] * s[kNeckStretchRate] +
+                d.brake_force_N * d.velocity(0) +
+                run.bodies.held.dot(d.force.cwiseProduct(d.velocity));
+  for (int i = 0; i < kStateSize; ++i) {
+    if (!std::isfinite(rate[i])) return 1;  // recoverable: the integrator retries smaller
+  }
+  return 0;
+}
+
+int ExtendedRootFunctions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) {
+  const auto& run = *static_cast<const Run*>(user_data);
+  const sunrealtype* s = NV_DATA_S(y);
+  const bool damped = run.damping_s_per_m > 0.0;
+  const Dynamics d = Evaluate(run, s, damped);
+  double lower = 0.0;
+  double upper = std::numeric_limits<double>::infinity();
+  if (run.segment != kWholeLaw) {
+    const ForceLawSegment& seg = run.model->segment(static_cast<std::size_t>(run.segment));
+    lower = seg.start_m;
+    upper = seg.end_m;
+  }
+  g[kUpperSwitch] = std::isinf(upper) ? -1.0 : s[kPenetration] - upper;
+  g[kLowerSwitch] = s[kPenetration] - lower;
+  g[kTurn] = s[kPenetrationRate];
+  g[kBrakeStart] = run.brake_pending ? t - run.reaction_delay_s : -1.0;
+  g[kRobotStops] = run.brake_on ? d.velocity(0) : 1.0;
+  g[kDampingClamp] = damped ? d.damping_factor : 1.0;
+  if (damped && d.damping_factor > 0.0) {
+    // d/dt [F_el(δ)(1 + d δ')] = F_el' δ' (1 + d δ') + F_el d δ'', and the same for σ.
+    const double rate = s[kPenetrationRate];
+    const double acceleration = d.acceleration(0) - d.acceleration(1);
+    g[kForcePeak] = d.law.stiffness_N_per_m * rate * d.damping_factor +
+                    d.law.force_N * run.damping_s_per_m * acceleration;
+    g[kStressPeak] = d.law.stress_slope_Pa_per_m * rate * d.damping_factor +
+                     d.law.stress_Pa * run.damping_s_per_m * acceleration;
+  } else {
+    g[kForcePeak] = -1.0;  // undamped: the peaks are the law's values at δ_max
+    g[kStressPeak] = -1.0;
+  }
+  return 0;
+}
+
+/// (ΔK + U(δ) + ½ k_n q² + W) / (½ m v0²): zero for an exact solution (ImpactResult::
+/// energy_residual).
+double EnergyImbalance(const Run& run, const sunrealtype* y) noexcept {
+  const Dynamics d = Evaluate(run, y);
+  const Bodies& b = run.bodies;
+  // ½ m (v - v0)(v + v0) per body, which keeps its accuracy for a heavy robot.
+  const double kinetic_change =
+      0.5 * b.moving_mass.dot((d.velocity - b.initial_speed).cwiseProduct(d.velocity + b.initial_speed));
+  const double elastic = run.model->StateAt(y[kPenetration]).potential_energy_J;
+  const double neck = 0.5 * run.neck_stiffness_N_per_m * y[kNeckStretch] * y[kNeckStretch];
+  return (kinetic_change + elastic + neck + y[kWork]) / run.model->impact_energy_J();
+}
+
+}  // namespace
+
+struct ExtendedTimePath::Workspace {
+  SUNContext context = nullptr;
+  N_Vector state = nullptr;
+  N_Vector absolute_tolerances = nullptr;
+  N_Vector dense_output = nullptr;
+  static constexpr std::size_t kMethodSlots =
+      static_cast<std::size_t>(ComputationMethod::kArkodeEsdirk54) + 1;
+  std::array<std::unique_ptr<Stepper>, kMethodSlots> steppers;
+  Run run;
+  std::string log;
+
+  explicit Workspace(SUNContext c) : context(c) {
+    state = N_VNew_Serial(kStateSize, context);
+    absolute_tolerances = N_VNew_Serial(kStateSize, context);
+    dense_output = N_VNew_Serial(kStateSize, context);
+    if (!state || !absolute_tolerances || !dense_output) {
+      Release();
+      throw std::runtime_error("N_VNew_Serial failed");
+    }
+    // Fused operations: one call instead of a chain of axpys for the Runge-Kutta stage sums
+    // and the Adams history (the integrators' vectors are clones of `state`).
+    N_VEnableFusedOps_Serial(state, SUNTRUE);
+  }
+  ~Workspace() { Release(); }
+  Workspace(const Workspace&) = delete;
+  Workspace& operator=(const Workspace&) = delete;
+
+  void Release() noexcept {
+    for (auto& stepper : steppers) stepper.reset();  // before the vectors they were built on
+    for (N_Vector* v : {&state, &absolute_tolerances, &dense_output}) {
+      if (*v) N_VDestroy(*v);
+      *v = nullptr;
+    }
+  }
+
+  Stepper& StepperFor(ComputationMethod method) {
+    auto& slot = steppers[static_cast<std::size_t>(method)];
+    if (!slot) {
+      StepperResources resources;
+      resources.context = context;
+      resources.state = state;
+      resources.user_data = &run;
+      resources.log = &log;
+      resources.rhs = ExtendedRightHandSide;
+      resources.roots = ExtendedRootFunctions;
+      resources.root_directions = kEventDirections;
+      resources.jacobian = nullptr;  // the implicit methods use difference quotients
+      const bool cvode =
+          method == ComputationMethod::kCvodeAdams || method == ComputationMethod::kCvodeBdf;
+      slot = cvode ? MakeCvodeStepper(method, resources) : MakeArkodeStepper(method, resources);
+    }
+    return *slot;
+  }
+};
+
+ExtendedTimePath::ExtendedTimePath(SUNContext context)
+    : workspace_(std::make_unique<Workspace>(context)) {}
+ExtendedTimePath::~ExtendedTimePath() = default;
+
+ImpactResult ExtendedTimePath::Simulate(const ImpactModel& model,
+                                        const TimeIntegrationOptions& options) {
+  Workspace& ws = *workspace_;
+  ws.log.clear();
+  Stepper& stepper = ws.StepperFor(options.method);
+  const Scene& scene = model.scene();
+
+  ImpactResult result;
+  result.method = options.method;
+  Run& run = ws.run;
+  run = Run{};
+  run.model = &model;
+  run.segment = options.restart_at_phase_switches ? 0 : kWholeLaw;
+  const double v0 = model.impact_speed_m_per_s();
+  const std::array<double, 3> masses{scene.robot.mass_kg, scene.head.mass_kg,
+                                     scene.head.has_neck() ? scene.head.torso_mass_kg : 0.0};
+  for (int i = 0; i < 3; ++i) {
+    if (std::isinf(masses[static_cast<std::size_t>(i)])) {
+      run.bodies.held(i) = 1.0;
+    } else if (masses[static_cast<std::size_t>(i)] > 0.0) {
+      run.bodies.moving_mass(i) = masses[static_cast<std::size_t>(i)];
+      run.bodies.inverse_mass(i) = 1.0 / masses[static_cast<std::size_t>(i)];
+    }
+  }
+  run.bodies.initial_speed = Eigen::Vector3d(v0, 0.0, 0.0);
+  run.damping_s_per_m = scene.model.damping_s_per_m;
+  const bool brakes = scene.robot_brakes();
+  run.braking_m_per_s2 = scene.robot.braking_m_per_s2;
+  run.reaction_delay_s = scene.robot.reaction_delay_s;
+  run.brake_pending = brakes && run.reaction_delay_s > 0.0;
+  run.brake_on = brakes && !run.brake_pending;  // the robot moves forward at first contact
+  run.has_neck = scene.head.has_neck();
+  run.neck_stiffness_N_per_m = scene.head.neck_stiffness_N_per_m;
+  run.neck_damping_N_s_per_m = scene.head.neck_damping_N_s_per_m;
+  const bool damped = run.damping_s_per_m > 0.0;
+
+  // Natural scales, as on the δ-only path: L from phase 1 alone, v0, the matching energy
+  // density, and the impact energy for the work.
+  const ForceLawSegment& first = model.segment(0);
+  const double p1 = first.exponent + 1.0;
+  const double length_scale = std::pow(p1 * model.impact_energy_J() / first.stiffness, 1.0 / p1);
+  const double energy_density_scale = kHertzPressureFactor * first.stiffness *
+                                      first.curvature_per_m *
+                                      std::pow(length_scale, first.exponent) / first.exponent;
+  const double time_scale = length_scale / v0;
+  run.slope_floor_m = 1e-12 * length_scale;
+  const double atol =
+      options.absolute_tolerance > 0.0 ? options.absolute_tolerance : options.relative_tolerance;
+  sunrealtype* tolerance = N_VGetArrayPointer(ws.absolute_tolerances);
+  tolerance[kPenetration] = atol * length_scale;
+  tolerance[kPenetrationRate] = atol * v0;
+  tolerance[kHeadSpeed] = atol * v0;
+  tolerance[kNeckStretch] = atol * length_scale;
+  tolerance[kNeckStretchRate] = atol * v0;
+  tolerance[kEnergyDensity] = atol * energy_density_scale;
+  tolerance[kWork] = atol * model.impact_energy_J();
+
+  // The bound on the contact's length: 100 times the slower of the contact's own time
+  // (3 L/v0 ~ the conservative duration) and the neck's (a period of all moving masses on
+  // the neck spring, their time constant on its damper), after the reaction delay.
+  double slowest_s = 3.0 * time_scale;
+  if (run.has_neck) {
+    const double total_mass_kg = run.bodies.moving_mass.sum();
+    if (run.neck_stiffness_N_per_m > 0.0) {
+      slowest_s = std::max(slowest_s, 2.0 * std::numbers::pi *
+                                          std::sqrt(total_mass_kg / run.neck_stiffness_N_per_m));
+    }
+    if (run.neck_damping_N_s_per_m > 0.0) {
+      slowest_s = std::max(slowest_s, total_mass_kg / run.neck_damping_N_s_per_m);
+    }
+  }
+  const double time_bound_s = (brakes ? run.reaction_delay_s : 0.0) + 100.0 * slowest_s;
+
+  sunrealtype* y = N_VGetArrayPointer(ws.state);
+  for (int i = 0; i < kStateSize; ++i) y[i] = 0.0;
+  y[kPenetrationRate] = v0;
+  double t = 0.0;
+
+  auto push_sample = [&](double time, const sunrealtype* s) {
+    const Dynamics d = Evaluate(run, s);
+    result.history.push_back({time, s[kPenetration], s[kPenetrationRate], d.force_N, d.stress_Pa,
+                              s[kEnergyDensity], d.velocity(0), d.velocity(1), d.neck_force_N,
+                              s[kWork]});
+  };
+  // Records y at `time`; after a step or a root, first fills the gap since the last sample
+  // with dense output, valid inside the step just taken.
+  auto record = [&](double time, bool interpolate) {
+    if (!options.record_history) return;
+    const double interval = options.history_max_interval_s;
+    if (interpolate && interval > 0.0 && !result.history.empty()) {
+      const double last = result.history.back().time_s;
+      const int gaps = static_cast<int>(std::ceil((time - last) / interval));
+      for (int k = 1; k < gaps; ++k) {
+        const double tk = last + (time - last) * k / gaps;
+        if (stepper.Interpolate(tk, ws.dense_output) == kStepTaken) {
+          push_sample(tk, N_VGetArrayPointer(ws.dense_output));
+        }
+      }
+    }
+    push_sample(time, y);
+  };
+
+  // Peaks. With damping F and σ_c are tracked over the contact: at every step, every event
+  // (with the formulas on both sides of a switch) and at their own maxima in time.
+  double max_penetration_m = 0.0;
+  std::size_t segment_at_max = 0;
+  double time_at_max_s = 0.0;
+  double energy_density_at_max = 0.0;   // e at the largest maximum of δ
+  double largest_energy_density = 0.0;  // e over every maximum of δ
+  double largest_force_N = 0.0;
+  double largest_stress_Pa = 0.0;
+  double residual = 0.0;
+  auto track_damped_peaks = [&]() {
+    if (!damped) return;
+    const Dynamics d = Evaluate(run, y);
+    largest_force_N = std::max(largest_force_N, d.force_N);
+    largest_stress_Pa = std::max(largest_stress_Pa, d.stress_Pa);
+  };
+  auto check_energy = [&]() { residual = std::max(residual, std::abs(EnergyImbalance(run, y))); };
+
+  int flag = stepper.ReInit(0.0, ws.state);
+  if (flag == kStepTaken) flag = stepper.SetInitStep(0.0);
+  if (flag == kStepTaken) flag = stepper.SetTolerances(options.relative_tolerance, ws.absolute_tolerances);
+  auto restart = [&]() {
+    stepper.AddStatistics(result.statistics);
+    ++result.statistics.restarts;
+    flag = stepper.ReInit(t, ws.state);
+    if (flag == kStepTaken) flag = stepper.SetInitStep(0.0);
+  };
+  record(0.0, false);
+
+  bool turned = false;
+  bool separated = false;
+  bool timed_out = false;
+  long steps_taken = 0;
+  const double horizon = 1e3 * time_scale;  // only orients the first step (one-step mode)
+  while (flag >= 0 && !separated) {
+    flag = stepper.Step(t + horizon, ws.state, &t);
+    if (flag == kStepTaken) {
+      record(t, true);
+      track_damped_peaks();
+      if (++steps_taken >= options.max_steps) break;
+      if (t > time_bound_s) {
+        timed_out = true;
+        break;
+      }
+      continue;
+    }
+    if (flag != kRootFound) break;
+    int found[kEventCount] = {};
+    stepper.RootInfo(found);
+    record(t, true);
+    track_damped_peaks();  // also the maxima of F and σ_c in time (kForcePeak, kStressPeak)
+    if (found[kTurn]) {  // smooth here: no restart
+      check_energy();
+      largest_energy_density = std::max(largest_energy_density, y[kEnergyDensity]);
+      if (!turned || y[kPenetration] > max_penetration_m) {
+        turned = true;
+        max_penetration_m = y[kPenetration];
+        segment_at_max = run.segment == kWholeLaw ? model.SegmentIndexAt(max_penetration_m)
+                                                  : static_cast<std::size_t>(run.segment);
+        time_at_max_s = t;
+        energy_density_at_max = y[kEnergyDensity];
+      }
+    }
+    bool kink = false;
+    if (found[kLowerSwitch]) {
+      if (run.segment == 0 || run.segment == kWholeLaw) {
+        separated = true;
+        result.contact_duration_s = t;
+        result.rebound_speed_m_per_s = -y[kPenetrationRate];
+        result.coefficient_of_restitution = -y[kPenetrationRate] / v0;
+        check_energy();
+        break;
+      }
+      --run.segment;
+      kink = true;
+    } else if (found[kUpperSwitch]) {
+      ++run.segment;
+      kink = true;
+    }
+    if (found[kBrakeStart]) {
+      run.brake_pending = false;
+      run.brake_on = Evaluate(run, y).velocity(0) > 0.0;
+      kink = true;
+    }
+    if (found[kRobotStops]) {
+      run.brake_on = false;
+      kink = true;
+    }
+    if (found[kDampingClamp]) kink = true;
+    if (kink) {
+      track_damped_peaks();  // the new segment's formula at a switch (the literal law jumps)
+      restart();
+    }
+  }
+  stepper.AddStatistics(result.statistics);
+
+  auto fail = [&](SolveStatus status, int code, const std::string& what) {
+    result.status = status;
+    result.raw_code = code;
+    result.message = what;
+    if (!ws.log.empty()) result.message += " (SUNDIALS: " + ws.log + ")";
+  };
+  if (flag < 0) {
+    fail(flag == kTooMuchWork ? SolveStatus::kStepLimit : SolveStatus::kSolverFailure, flag,
+         std::string(ToString(options.method)) + " returned " + stepper.FlagName(flag));
+  } else if (timed_out) {
+    fail(SolveStatus::kNoSeparation, 0,
+         "the contact had not ended after " + FormatNumber(time_bound_s) +
+             " s (100 times the slower of 3 L/v0 and the neck's period or time constant" +
+             std::string(brakes ? ", after the reaction delay" : "") +
+             "): the bodies keep pressing, e.g. a fixed robot driving the head into a fixed torso");
+  } else if (!separated && steps_taken >= options.max_steps) {
+    fail(SolveStatus::kStepLimit, kTooMuchWork,
+         "step limit of " + std::to_string(options.max_steps) + " steps reached before separation");
+  } else if (!separated || !turned) {
+    fail(SolveStatus::kEventMissed, flag,
+         "the integration ended without locating maximum compression and separation");
+  }
+  if (result.ok()) {
+    result.peaks = PeaksAtMaxPenetration(model, segment_at_max, max_penetration_m);
+    if (damped) {  // the largest over the contact, which the loading branch holds
+      result.peaks.peak_force_N = largest_force_N;
+      result.peaks.max_compressive_stress_Pa = largest_stress_Pa;
+      result.peaks.max_tensile_stress_Pa = model.TensileFromCompressive(largest_stress_Pa);
+      result.peaks.max_energy_density_J_per_m2 = largest_energy_density;
+    } else {  // e is a function of δ: its value at δ_max
+      result.peaks.max_energy_density_J_per_m2 = energy_density_at_max;
+    }
+    result.time_of_max_compression_s = time_at_max_s;
+    for (ValidityWarning& warning : CheckValidity(model, result.peaks)) {
+      result.AddWarning(warning.code, std::move(warning.message));
+    }
+    result.energy_residual = residual;
+    const double allowed = std::max(100.0 * options.relative_tolerance, 1e-9);
+    if (!(residual <= allowed)) {
+      result.AddWarning(
+          ValidityCode::kToleranceNotKept,
+          "the time path did not keep its tolerance: energy residual (work accounted for) " +
+              FormatNumber(residual) + " exceeds max(100 rtol, 1e-9) = " + FormatNumber(allowed) +
+              " (" + std::string(ToString(options.method)) +
+              (options.restart_at_phase_switches ? "" : ", no restart at the phase switches") + ")");
+    }
+    if (!options.restart_at_phase_switches) {
+      result.AddWarning(
+          ValidityCode::kNoRestarts,
+          "integrated straight through the force law's C0 kinks (restart_at_phase_switches "
+          "off): the local error test does not see them, so the error may exceed the "
+          "tolerance (a numerics-study setting)");
+    }
+  }
+  run.model = nullptr;
+  return result;
+}
+
+}  // namespace covopt::internal
