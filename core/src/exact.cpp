@@ -1,12 +1,17 @@
 // The exact path of docs/model.md §3: δ_max from energy balance, peaks, and the contact duration
-// by a singularity-free Gauss-Legendre quadrature.
+// by a singularity-free Gauss-Legendre quadrature; with contact damping it hands over to
+// exact_damped.cpp (docs/model.md §10.1).
 #include "covopt/core/exact.hpp"
 
-#include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
-#include <numbers>
+#include <stdexcept>
+#include <string>
 #include <utility>
+
+#include "exact_internal.hpp"
+#include "numeric_format.hpp"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -15,32 +20,9 @@
 namespace covopt {
 namespace {
 
-/// Gauss-Legendre nodes and weights on [0, 1], computed once by Newton on P_N.
-template <int N>
-struct GaussLegendre {
-  std::array<double, N> node{};
-  std::array<double, N> weight{};
-  GaussLegendre() {
-    for (int i = 0; i < N; ++i) {
-      double x = std::cos(std::numbers::pi * (i + 0.75) / (N + 0.5));
-      double derivative = 0.0;
-      for (int iteration = 0; iteration < 100; ++iteration) {
-        double p0 = 1.0, p1 = x;
-        for (int k = 2; k <= N; ++k) {
-          const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-          p0 = p1;
-          p1 = p2;
-        }
-        derivative = N * (x * p1 - p0) / (x * x - 1.0);
-        const double step = p1 / derivative;
-        x -= step;
-        if (std::abs(step) < 1e-16) break;
-      }
-      node[i] = 0.5 * (1.0 - x);
-      weight[i] = 1.0 / ((1.0 - x * x) * derivative * derivative);  // (2/...)/2 on [0,1]
-    }
-  }
-};
+using internal::GaussLegendre;
+using internal::PeakSegment;
+using internal::SolveEnergyBalance;
 
 /// The duration quadrature's fixed factors per node: the map φ(u) = u²(3 - 2u) at the
 /// Gauss-Legendre nodes and 2 w φ'(u), computed once, the same arithmetic as per call.
@@ -65,57 +47,15 @@ const MappedRule<kQuadratureOrder>& Quadrature() {
   return rule;
 }
 
-/// Index of the segment containing δ_max: the last one whose start energy is below ½ m v0².
-std::size_t PeakSegment(const ImpactModel& model) noexcept {
-  std::size_t i = model.segment_count() - 1;
-  while (i > 0 && !(model.segment(i).energy_at_start_J < model.impact_energy_J())) --i;
-  return i;
-}
-
-/// Phase-local penetration x solving U = ½ m v0² inside segment `seg`.
-double SolveEnergyBalance(const ForceLawSegment& seg, double energy_gap_J) noexcept {
-  const double n = seg.exponent;
-  const double p = n + 1.0;
-  const double x0 = seg.start_m - seg.origin_m;
-  const double k_over_p = seg.stiffness / p;
-  if (seg.force_offset_N == 0.0 && x0 == 0.0) {
-    return std::pow(energy_gap_J / k_over_p, 1.0 / p);  // closed form
-  }
-  // g(x) = F_off (x - x0) + K/p (x^p - x0^p) - ΔE is increasing and convex for x >= x0.
-  // The power term alone reaching ΔE gives x_b >= root, where g, g' and g'' are known
-  // without another pow (x_b^p = ΔE p/K + x0^p): the first Halley step is free. Each
-  // further step costs one pow; Halley's cubic convergence means a step below 1e-6 (x - x0)
-  // leaves an error of order 1e-18 (x - x0), so that step is the last one. The free step
-  // is never the last: its g carries x_b's rounding, p times g's own.
-  const double x0_pow_p = x0 > 0.0 ? std::pow(x0, p) : 0.0;
-  const double x_b_pow_p = energy_gap_J / k_over_p + x0_pow_p;
-  double x = std::pow(x_b_pow_p, 1.0 / p);
-  double x_pow_n = x_b_pow_p / x;
-  double g = seg.force_offset_N * (x - x0);
-  for (int iteration = 0; iteration < 60; ++iteration) {
-    const double slope = seg.force_offset_N + seg.stiffness * x_pow_n;
-    // Halley, x - 2 g g' / (2 g'^2 - g g''), with g'' x = n K x^n and one division; the
-    // correction to Newton's step g/g' is capped at a factor 2 (g g'' <= g'^2).
-    const double slope_squared_x = slope * slope * x;
-    const double g_curvature_x = g * n * seg.stiffness * x_pow_n;
-    const double denominator = g_curvature_x > slope_squared_x
-                                   ? slope_squared_x
-                                   : 2.0 * slope_squared_x - g_curvature_x;
-    const double step = 2.0 * g * slope * x / denominator;
-    double next = x - step;
-    if (!(next > x0)) next = x - g / slope;  // Newton stays above x0 from either side
-    if (iteration > 0 && !(std::abs(step) > 1e-6 * (x - x0))) return next;
-    x = next;
-    x_pow_n = std::pow(x, n);
-    g = seg.force_offset_N * (x - x0) + k_over_p * (x_pow_n * x - x0_pow_p) - energy_gap_J;
-  }
-  return x;
-}
-
 }  // namespace
 
 ImpactPeaks ExactPeaks(const ImpactModel& model) noexcept {
-  const std::size_t i = PeakSegment(model);
+  // The energy integral needs a two-body contact: SolveExact refuses the other scenes.
+  assert(!model.scene().robot_brakes() && !model.scene().head.has_neck());
+  if (model.scene().model.damping_s_per_m > 0.0) [[unlikely]] {
+    return internal::DampedExactPeaks(model);
+  }
+  const std::size_t i = PeakSegment(model, model.impact_energy_J());
   const ForceLawSegment& seg = model.segment(i);
   const double x = SolveEnergyBalance(seg, model.impact_energy_J() - seg.energy_at_start_J);
   return PeaksAtMaxPenetration(model, i, seg.origin_m + x);
@@ -125,9 +65,14 @@ double ExactContactDuration(const ImpactModel& model, const ImpactPeaks& peaks) 
   // T/2 = ∫₀^δmax dδ / v(δ),  v = sqrt(2 (U(δ_max) - U(δ)) / m).  With δ = δ_max - s²:
   // T/2 = ∫₀^√δmax 2s ds / v(δ_max - s²), smooth at s = 0. Pieces end at the switches
   // s_j = sqrt(δ_max - t_j); each is mapped by s = a + (b - a) φ(u), φ = u²(3 - 2u).
+  assert(!model.scene().robot_brakes() && !model.scene().head.has_neck());
+  if (model.scene().model.damping_s_per_m > 0.0) [[unlikely]] {
+    const internal::DampedContactTimes times = internal::DampedContactDurations(model, peaks);
+    return times.loading_s + times.unloading_s;
+  }
   const double delta_max = peaks.max_penetration_m;
   const double two_over_mass = 2.0 / model.effective_mass_kg();
-  const std::size_t top = PeakSegment(model);
+  const std::size_t top = PeakSegment(model, model.impact_energy_J());
   const auto& rule = Quadrature();
 
   double half_duration = 0.0;
@@ -175,16 +120,53 @@ double ExactContactDuration(const ImpactModel& model, const ImpactPeaks& peaks) 
   return 2.0 * half_duration;
 }
 
+namespace {
+
+/// Refuses a scene without the energy integral of a two-body contact (docs/model.md §10).
+void CheckExactPathApplies(const Scene& scene) {
+  constexpr const char* kWhy =
+      "the exact path needs the energy integral of a two-body contact (conservative or with "
+      "contact damping): ";
+  constexpr const char* kOnlyTimePath =
+      " needs the time path (a scene with braking or a neck has only the time path)";
+  if (scene.robot_brakes()) {
+    throw std::invalid_argument(std::string(kWhy) + "robot.braking (" +
+                                internal::FormatNumber(scene.robot.braking_m_per_s2) + " m/s2)" +
+                                kOnlyTimePath);
+  }
+  if (scene.head.has_neck()) {
+    throw std::invalid_argument(std::string(kWhy) + "a neck (head.torso_mass " +
+                                internal::FormatNumber(scene.head.torso_mass_kg) + " kg)" +
+                                kOnlyTimePath);
+  }
+}
+
+}  // namespace
+
 ImpactResult SolveExact(const ImpactModel& model, const ExactOptions& options) {
+  CheckExactPathApplies(model.scene());
   ImpactResult result;
   result.method = ComputationMethod::kExact;
   result.peaks = ExactPeaks(model);
-  if (options.compute_duration) {
-    result.contact_duration_s = ExactContactDuration(model, result.peaks);
-    result.time_of_max_compression_s = 0.5 * *result.contact_duration_s;
+  const double impact_speed = model.impact_speed_m_per_s();
+  if (model.scene().is_damped()) {
+    // Hunt-Crossley damping (docs/model.md §10.1): the loading and the unloading differ.
+    if (options.compute_duration) {
+      const internal::DampedContactTimes times =
+          internal::DampedContactDurations(model, result.peaks);
+      result.contact_duration_s = times.loading_s + times.unloading_s;
+      result.time_of_max_compression_s = times.loading_s;
+    }
+    result.rebound_speed_m_per_s = internal::DampedReboundSpeed(model);
+  } else {
+    if (options.compute_duration) {
+      result.contact_duration_s = ExactContactDuration(model, result.peaks);
+      result.time_of_max_compression_s = 0.5 * *result.contact_duration_s;
+    }
+    // No dissipation: the bodies separate at the impact speed (docs/model.md §2).
+    result.rebound_speed_m_per_s = impact_speed;
   }
-  // No dissipation: the bodies separate at the impact speed (docs/model.md §2).
-  result.rebound_speed_m_per_s = model.impact_speed_m_per_s();
+  result.coefficient_of_restitution = *result.rebound_speed_m_per_s / impact_speed;
   for (ValidityWarning& warning : CheckValidity(model, result.peaks)) {
     result.AddWarning(warning.code, std::move(warning.message));
   }

@@ -50,6 +50,22 @@ std::string PeakSummary(const ImpactModel& model, const ImpactPeaks& peaks) {
          "), energy density " + Scaled(peaks.max_energy_density_J_per_m2, 1e4, "J/cm²");
 }
 
+/// The scene CheckValidity's comparisons run the exact path on: the scene itself, or for a
+/// braking robot or a neck (which only the time path models, docs/model.md §10) its two-body
+/// contact without them; `note` then says so in the message.
+Scene ExactComparisonScene(const Scene& scene, std::string& note) {
+  Scene comparison = scene;
+  if (scene.robot_brakes() || scene.head.has_neck()) {
+    comparison.robot.reaction_delay_s = 0.0;
+    comparison.robot.braking_m_per_s2 = 0.0;
+    comparison.head.torso_mass_kg = 0.0;
+    comparison.head.neck_stiffness_N_per_m = 0.0;
+    comparison.head.neck_damping_N_s_per_m = 0.0;
+    note = " (on the exact path, without the braking and the neck)";
+  }
+  return comparison;
+}
+
 }  // namespace
 
 InjuryAssessment Assess(const ImpactPeaks& peaks, const InjuryLimits& limits) noexcept {
@@ -160,6 +176,8 @@ std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const Impac
   };
   const Scene& scene = model.scene();
   const double delta_max = peaks.max_penetration_m;
+  std::string comparison_note;
+  const Scene comparison_scene = ExactComparisonScene(scene, comparison_note);
 
   for (std::size_t i = 0; i < model.segment_count(); ++i) {
     const ForceLawSegment& seg = model.segment(i);
@@ -180,7 +198,7 @@ std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const Impac
 
   if (model.has_covering() && scene.covering.youngs_modulus_Pa > scene.scalp.youngs_modulus_Pa) {
     // The same outer geometry without a covering: a bare robot of radius R_r + b_c.
-    Scene bare_scene = scene;
+    Scene bare_scene = comparison_scene;
     bare_scene.covering.thickness_m = 0.0;
     bare_scene.robot.radius_m = scene.robot.radius_m + scene.covering.thickness_m;  // ∞ stays ∞
     std::optional<ImpactPeaks> bare;
@@ -200,7 +218,7 @@ std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const Impac
                " > E_s " + Modulus(scene.scalp.youngs_modulus_Pa) +
                ") and worse than no covering: " + PeakSummary(model, peaks) + ", while " +
                radius + ", the same outer shape without the covering, gives " +
-               PeakSummary(model, *bare) +
+               PeakSummary(model, *bare) + comparison_note +
                "; the layered stress law adds phase-wise Hertz pressures and overstates the "
                "stress of a covering stiffer than the scalp (docs/model.md §5)");
     }
@@ -248,14 +266,14 @@ std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const Impac
       what += ": the force jumps there from " + Force(below.force_N) + " to " +
               Force(above.force_N);
     }
-    Scene cumulative_scene = scene;
+    Scene cumulative_scene = comparison_scene;
     cumulative_scene.model.thresholds = ThresholdReading::kCumulative;
     const ImpactPeaks cumulative = ExactPeaks(ImpactModel::FromScene(cumulative_scene));
     std::string message =
         "literal thresholds: the paper's eq. (2) read literally, not covopt's default "
         "cumulative reading (docs/model.md §4); " +
         what + ". Peaks: " + PeakSummary(model, peaks) + "; the default reading gives " +
-        PeakSummary(model, cumulative);
+        PeakSummary(model, cumulative) + comparison_note;
     // A drop: the largest value over the contact lies at a switch before δ_max.
     const ContactState at_max = model.StateAt(delta_max);
     if (peaks.peak_force_N > at_max.force_N) {

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "covopt/core/exact.hpp"
+#include "numeric_format.hpp"
 #include "sensitivity_internal.hpp"
 
 namespace covopt {
@@ -156,6 +158,21 @@ PeakSensitivities ExactPeakSensitivities(const ImpactModel& model, const ImpactP
     throw std::invalid_argument(
         "design sensitivities need a covering (covering.thickness > 0): b_c -> 0 is a "
         "discontinuity of the model");
+  }
+  const Scene& scene = model.scene();
+  if (!scene.is_conservative_two_mass()) {
+    // The damped exact path maximises F and σ_c inside the loading branch and integrates e_A:
+    // its derivatives are left to a finite difference or to the time path's sensitivities
+    // (TimePathPeakSensitivities); braking and a neck have no exact path at all.
+    const std::string what =
+        scene.is_damped() ? "contact damping (model.damping " +
+                                internal::FormatNumber(scene.model.damping_s_per_m) + " s/m)"
+        : scene.robot_brakes() ? "a braking robot (robot.braking)"
+                               : "a neck (head.torso_mass)";
+    throw std::invalid_argument(
+        "analytic design sensitivities of the exact path are for the conservative two-mass "
+        "impact, not a scene with " + what +
+        ": use a finite difference, or the time path's sensitivities (TimePathPeakSensitivities)");
   }
   using internal::DesignParameter;
   return {internal::Differentiate(model, peaks, DesignParameter::kCoveringModulus),

@@ -18,12 +18,16 @@ namespace covopt {
 /// non-decreasing in δ, so they are the values at δ_max; the literal reading can drop them
 /// at a switch, and the maximum may then lie at a switch before δ_max. U and e are
 /// non-decreasing in every reading: e_A,max is e(δ_max) (docs/model.md §2, §4).
+/// With contact damping d > 0 (docs/model.md §10.1) F = F_el(δ)(1 + d δ') and
+/// σ_c = σ_el(δ)(1 + d δ'): F_max and σ_c,max are the maxima over the loading branch and lie
+/// before δ_max (where δ' = 0 and the damping term vanishes), inside a phase or at a switch;
+/// e_A,max = ∫σ_c dδ over the loading. The compression flags depend on δ_max only.
 struct ImpactPeaks {
   double max_penetration_m = 0.0;               ///< δ_max [m]
   double peak_force_N = 0.0;                    ///< F_max = max F over [0, δ_max] [N]
   double max_compressive_stress_Pa = 0.0;       ///< σ_c,max = max σ_c over [0, δ_max] [Pa]
   double max_tensile_stress_Pa = 0.0;           ///< σ_t,max = σ_c,max (1 - 2ν_t)/3 [Pa]
-  double max_energy_density_J_per_m2 = 0.0;     ///< e_A,max = e(δ_max) [J/m²]
+  double max_energy_density_J_per_m2 = 0.0;     ///< e_A,max = e(δ_max) = ∫σ_c dδ [J/m²]
   Phase phase_at_max = Phase::kCoveringOnScalp;  ///< the phase δ_max lies in
   /// The scalp reached full compression (δ_max > t1).
   bool scalp_fully_compressed = false;
@@ -40,7 +44,9 @@ struct ImpactPeaks {
 /// The peaks of a contact whose maximum penetration δ_max [m] lies in segment `segment` of
 /// `model`: F_max and σ_c,max as the largest of the law at δ_max and at the ends of the
 /// segments passed on the way (where the literal law can drop), e_A,max = e(δ_max), the
-/// phase and compression flags. Both computation paths build their peaks with it.
+/// phase and compression flags. Both computation paths build their peaks with it. These are
+/// the elastic law's values: with contact damping F and σ_c also depend on δ', and the paths
+/// replace F_max, σ_c,max, σ_t,max and e_A,max by the damped ones (ImpactPeaks).
 ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
                                   double max_penetration_m) noexcept;
 
@@ -183,7 +189,8 @@ struct ImpactResult {
   /// Coefficient of restitution [-]: rebound speed / impact speed; 1 in the conservative
   /// model. Set with rebound_speed_m_per_s.
   std::optional<double> coefficient_of_restitution;
-  /// Time of maximum compression [s] (time path only).
+  /// Time of maximum compression [s]: half the contact duration without damping; the loading
+  /// time, shorter than the unloading, with it. Set with contact_duration_s on the exact path.
   std::optional<double> time_of_max_compression_s;
   /// The time path's own accuracy check [-], empty for the exact path: the model conserves
   /// energy, so both of these vanish for an exact solution,

@@ -38,8 +38,10 @@ struct PeakSensitivities {
   PeakDerivatives per_covering_thickness;  ///< d/db_c, units of the quantity per m
 };
 
-/// Analytic derivatives of ExactPeaks(model).
-/// @throws std::invalid_argument if the model has no covering.
+/// Analytic derivatives of ExactPeaks(model), for the conservative two-mass impact.
+/// @throws std::invalid_argument if the model has no covering, or has contact damping (the
+///         damped peaks are a maximisation and a quadrature, docs/model.md §10.1: use a finite
+///         difference or TimePathPeakSensitivities), braking or a neck.
 PeakSensitivities ExactPeakSensitivities(const ImpactModel& model, const ImpactPeaks& peaks);
 
 }  // namespace covopt
