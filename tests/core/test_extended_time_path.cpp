@@ -274,6 +274,53 @@ TEST_CASE("A damped contact agrees with an independent fixed-step RK4", "[extend
   }
 }
 
+TEST_CASE("A damped contact agrees with the exact damped path", "[extended][damping]") {
+  std::vector<NamedScene> scenes;
+  const Scene base = PaperScene(0.015, 27.6e6, 0.22);
+  auto add = [&](std::string name, auto&& edit) { AddVariant(scenes, base, std::move(name), edit); };
+  add("paper scene, d 0.2 s/m", [](Scene& s) { s.model.damping_s_per_m = 0.2; });
+  add("light damping, slow", [](Scene& s) {
+    s.model.damping_s_per_m = 0.05;
+    s.robot.speed_m_per_s = 1.0;
+  });
+  add("no covering, d 0.5 s/m", [](Scene& s) {
+    s.covering.thickness_m = 0;
+    s.model.damping_s_per_m = 0.5;
+  });
+  add("thin covering, d 1 s/m, 4 m/s (the force peaks at a switch)", [](Scene& s) {
+    s.covering.thickness_m = 0.002;
+    s.robot.speed_m_per_s = 4.0;
+    s.model.damping_s_per_m = 1.0;
+  });
+  add("fixed head, d 0.3 s/m", [](Scene& s) {
+    s.head.mass_kg = kFixed;
+    s.model.damping_s_per_m = 0.3;
+  });
+  add("fixed robot, d 0.3 s/m", [](Scene& s) {
+    s.robot.mass_kg = kFixed;
+    s.model.damping_s_per_m = 0.3;
+  });
+  add("heavy damping, d v0 = 10 (restitution 0.1)", [](Scene& s) {
+    s.model.damping_s_per_m = 2.0;
+    s.robot.speed_m_per_s = 5.0;
+  });
+  for (const NamedScene& named : scenes) {
+    const ImpactModel model = ImpactModel::FromScene(named.scene);
+    const ImpactResult exact = SolveExact(model);
+    for (const ComputationMethod method : {ComputationMethod::kArkodeErk54, ComputationMethod::kCvodeBdf,
+                                           ComputationMethod::kCvodeAdams}) {
+      TimeIntegrationOptions options;  // the default tolerance, rtol 1e-8
+      options.method = method;
+      const ImpactResult simulated = SimulateImpact(model, options);
+      INFO(named.name << ", " << ToString(method) << ": " << simulated.message);
+      REQUIRE(exact.ok());
+      REQUIRE(simulated.ok());
+      CHECK(simulated.peaks.phase_at_max == exact.peaks.phase_at_max);
+      CHECK(WorstDifference(simulated, exact) <= 1e-5);
+    }
+  }
+}
+
 TEST_CASE("The energy balance closes with the dissipated and braking work accounted for",
           "[extended][energy]") {
   std::vector<NamedScene> scenes;
