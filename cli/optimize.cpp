@@ -17,6 +17,7 @@
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
+#include "covopt/core/time_integration.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/optim/design.hpp"
 #include "covopt/report/design_json.hpp"
@@ -26,6 +27,7 @@
 #include "quantity.hpp"
 #include "scene_fields.hpp"
 #include "scene_file.hpp"
+#include "simulate.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -40,6 +42,12 @@ Without --thickness: the thinnest covering keeping laceration and contusion
 below their limits divided by --safety-factor, over E_c (log scale) and b_c,
 then every catalog material's own thinnest safe thickness, rounded up to
 --thickness-step. With --thickness: the least injury at that thickness.
+
+The oracle (--oracle): auto takes the exact path where the scene has an
+energy integral (the two-mass impact, conservative or damped) and the
+time path otherwise (a braking robot, a neck); time-path runs the
+SUNDIALS integrator --method at --rtol (gradients for Ipopt from CVODES
+forward sensitivities, or a central difference with braking or a neck).
 
 Exit codes: 0 an answer (also "no material is safe"); 1 the search failed;
 2 bad input.)";
@@ -68,6 +76,65 @@ unsigned long long ParseCount(const std::string& text, std::string_view flag, un
 }
 
 bool IsCoveringField(const SceneField& field) { return field.table == "covering"; }
+
+/// --oracle, --method and --rtol into the request's OracleOptions (the scene must be read).
+void ResolveOracle(const OptimizeOptions& o, Resolved& r) {
+  optim::OracleOptions& oracle = r.request.options.oracle;
+  if (o.oracle) {
+    const auto choice = optim::ParseOracleChoice(*o.oracle);
+    if (!choice) throw InputError(fmt::format("--oracle: expected auto, exact or time-path (got '{}')", *o.oracle));
+    oracle.choice = *choice;
+  }
+  bool method_exact = false;
+  if (o.method) {
+    if (*o.method == "exact") {
+      method_exact = true;
+    } else if (*o.method == "cvode") {
+      oracle.time_path.method = ComputationMethod::kCvodeAdams;
+    } else if (const auto named = ParseComputationMethod(*o.method); named && *named != ComputationMethod::kExact) {
+      oracle.time_path.method = *named;
+    } else {
+      throw InputError(fmt::format("--method: expected exact, cvode or one of {} (got '{}')", IntegratorNames(),
+                                   *o.method));
+    }
+  }
+  if (method_exact) {
+    if (oracle.choice == optim::OracleChoice::kTimePath) {
+      throw InputError("--method exact contradicts --oracle time-path: the time path runs an integrator; give one "
+                       "of " + IntegratorNames() + ", or --oracle exact");
+    }
+    if (o.rtol) throw InputError("--rtol applies to the time path; --method exact runs none");
+    oracle.choice = optim::OracleChoice::kExact;
+  }
+  if (o.rtol) {
+    oracle.time_path.relative_tolerance = ParseQuantity(*o.rtol, quantity_specs::kTolerance, "--rtol");
+    if (!(oracle.time_path.relative_tolerance >= 1e-14 && oracle.time_path.relative_tolerance <= 1e-2)) {
+      throw InputError(fmt::format("--rtol must be in [1e-14, 1e-2] (got '{}')", *o.rtol));
+    }
+  }
+  const Scene& scene = r.request.scene;
+  if (oracle.choice == optim::OracleChoice::kExact) {
+    if (o.method && !method_exact) {
+      throw InputError(fmt::format("--method {} applies to the time path; --oracle exact runs none", *o.method));
+    }
+    if (o.rtol) throw InputError("--rtol applies to the time path; --oracle exact runs none");
+    try {
+      (void)optim::ChooseOracle(scene, oracle.choice);
+    } catch (const std::invalid_argument&) {
+      throw InputError(fmt::format(
+          "--oracle exact: the exact path needs an energy integral; a scene with {} has only the time path; use "
+          "--oracle auto or time-path",
+          scene.robot_brakes() && scene.head.has_neck() ? "braking and a neck"
+          : scene.robot_brakes()                         ? "braking (--braking)"
+                                                         : "a neck (--torso-mass)"));
+    }
+  } else if (oracle.choice == optim::OracleChoice::kAuto && (o.method || o.rtol) &&
+             optim::ChooseOracle(scene, oracle.choice).kind == optim::OracleKind::kExact) {
+    r.warnings.push_back(fmt::format("{} not used: auto chose the exact path for this scene (add --oracle "
+                                     "time-path to optimise on the time path)",
+                                     o.method && o.rtol ? "--method and --rtol are" : o.method ? "--method is" : "--rtol is"));
+  }
+}
 
 Resolved Resolve(const OptimizeOptions& o) {
   Resolved r;
@@ -146,6 +213,7 @@ Resolved Resolve(const OptimizeOptions& o) {
   if (o.seed) d.seed = ParseCount(*o.seed, "--seed", 0, std::numeric_limits<unsigned long>::max());
   if (o.runners_up) r.runners_up = static_cast<int>(ParseCount(*o.runners_up, "--top", 0, 1000000));
   if (o.threads) d.threads = static_cast<int>(ParseCount(*o.threads, "--threads", 1, 256));
+  ResolveOracle(o, r);
 
   // The candidates: the built-in catalog and --catalog files (or only those, --no-builtin), filtered.
   const materials::Catalog catalog = [&] {
@@ -197,6 +265,16 @@ void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& can
                shown > 0 ? "more" : "candidates");
   }
   if (assumed_shown) fmt::print(out, "  * ν unknown for this material: 0.25 assumed\n");
+}
+
+/// How the Ipopt polish's gradients were computed, for the Oracle line.
+std::string_view GradientWords(optim::GradientSource source) {
+  switch (source) {
+    case optim::GradientSource::kAnalytic: return "analytic";
+    case optim::GradientSource::kForwardSensitivities: return "CVODES forward-sensitivity";
+    case optim::GradientSource::kCentralDifference: return "central-difference";
+  }
+  return "unknown";
 }
 
 /// "the covering is compressed to 94 % of its travel at the peak" and the like.
@@ -264,6 +342,22 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
   sub->add_option("--threads", options.threads,
                   "threads of the per-material catalog snap, 1-256 (default 1); the answer does not depend on it")
       ->type_name("N")->group("Solver");
+  sub->add_option("--oracle", options.oracle,
+                  "which path scores the designs: auto (default: exact where the scene has an energy integral, "
+                  "else the time path), exact, or time-path")
+      ->type_name("auto|exact|time-path")
+      ->group("Solver");
+  sub->add_option("--method", options.method,
+                  fmt::format("the time path's integrator: cvode (Adams) or one of {} (default {}); exact "
+                              "means --oracle exact",
+                              IntegratorNames(), ToString(TimeIntegrationOptions{}.method)))
+      ->type_name("INTEGRATOR")
+      ->group("Solver");
+  sub->add_option("--rtol", options.rtol,
+                  fmt::format("the time path's relative tolerance, in [1e-14, 1e-2] (default {:g})",
+                              TimeIntegrationOptions{}.relative_tolerance))
+      ->type_name("RATIO")
+      ->group("Solver");
   sub->add_option("--top", options.runners_up, "rows of the candidate table (default 8)")->type_name("N")->group("Output");
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the report")->group("Output");
   return sub;
@@ -288,6 +382,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
+  if (!result.ok()) return errors.Failed(result.message);
   if (options.json) {
     out << report::DesignJson(r.request, result, r.warnings) << '\n';  // input's warnings, then the answer's
     return 0;
@@ -376,15 +471,18 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                                 : "admissible first, by stock thickness then margin; then the rest by margin at the "
                                   "maximum thickness");
   PrintCandidates(out, candidates, r.runners_up, r.request.thickness_m.has_value());
-  fmt::print(out, "\nSolver  global {}: {} ({} evaluations); bracket: {} ({} evaluations); local {}; {} exact-path "
+  fmt::print(out, "\nSolver  global {}: {} ({} evaluations); bracket: {} ({} evaluations); local {}; {} {} "
                   "evaluations, {:.1f} ms\n",
              global.backend, optim::ToString(global.termination), global.objective_evaluations,
              optim::ToString(continuous.bracket.termination), continuous.bracket.objective_evaluations,
              local.backend.empty() ? std::string("not run")
                                    : fmt::format("{}: {} ({})", local.backend, optim::ToString(local.termination),
                                                  local.raw_name),
-             evaluations, seconds * 1e3);
+             evaluations, result.oracle.kind == optim::OracleKind::kExact ? "exact-path" : "time-path",
+             seconds * 1e3);
   fmt::print(out, "        kept: {}\n", continuous.source);
+  fmt::print(out, "Oracle  {}, {} gradients; {}\n", result.oracle.Name(), GradientWords(result.oracle.gradient),
+             result.oracle.reason);
   for (const std::string& w : r.warnings) fmt::print(out, "Warning: {}\n", w);         // about the input
   for (const std::string& w : result.warnings) fmt::print(out, "Warning: {}\n", w);    // about the answer
   return 0;

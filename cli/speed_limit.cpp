@@ -419,6 +419,16 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
                by_speed ? fmt::format("speeds up to {:g} m/s (the model's ceiling)", plan.options.max_speed_m_per_s)
                         : fmt::format("reflected masses up to {:g} kg (the model's ceiling){}", plan.options.max_mass_kg,
                                       std::isinf(scene.head.mass_kg) ? "" : ", and a fixed robot"));
+    if (!rows.empty()) {
+      // The δ-axis solve of the exact path goes without saying; a bisection on an oracle is said.
+      const optim::OracleReport oracle = report::SpeedLimitOracle(plan.quantity, rows);
+      const bool bracketed = by_speed ? rows.front().speed_limit.bracketed : rows.front().mass_limit.bracketed;
+      if (bracketed) {
+        fmt::print(out, "Oracle     {}, a bracketed bisection ({} runs{}): {}\n\n", oracle.Name(), oracle.evaluations,
+                   oracle.failed_evaluations > 0 ? fmt::format(", {} failed", oracle.failed_evaluations) : "",
+                   oracle.reason);
+      }
+    }
     PrintRows(out, plan, rows);
     for (const std::string& w : input_warnings) fmt::print(out, "Warning: {}\n", w);
     for (const std::string& w : report::SpeedLimitRowWarnings(plan.quantity, rows)) {

@@ -48,7 +48,9 @@ scalp-thickness, skull-modulus, skull-poisson (or its scene-file name, e.g.
 robot.speed). Values take units as the scene flags do; a bare number is SI,
 so write 0..50mm or 1mm..50mm, not 1..50mm.
 
-Every point is solved on the exact path (as 'covopt simulate'), on all cores.
+Every point is solved on the exact path (as 'covopt simulate'), on all cores;
+a point whose scene has no energy integral (a braking robot, a neck) on the
+time path (ARKODE ERK 5(4), rtol 1e-8), as 'simulate' chooses.
 A point whose scene is outside the model's input range is 'invalid' in the CSV,
 with the library's message; the others carry the numeric keys of 'simulate
 --json'. Without --csv, stdout gets a summary; '--csv -' prints the CSV instead.
@@ -892,7 +894,8 @@ std::size_t SweepBlockRows(std::size_t points, unsigned threads) {
 
 CLI::App* SetupSweep(CLI::App& app, SweepOptions& options) {
   CLI::App* sub = app.add_subcommand(
-      "sweep", "Sweep one or two scene quantities over a grid (exact path, all cores): CSV of "
+      "sweep", "Sweep one or two scene quantities over a grid (exact path, or the time path where the "
+               "scene needs it; all cores): CSV of "
                "every point, and a map or line chart of the injury ratios");
   sub->footer(std::string(kFooter));
   sub->add_option("--x", options.x, "first swept quantity, e.g. covering-modulus=0.1MPa..1GPa:log:200")
@@ -1098,9 +1101,12 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     fmt::print(out, "Sweep   {}: {}\n", x.name, DescribeAxis(x));
     if (y) fmt::print(out, "        {}: {}\n", y->name, DescribeAxis(*y));
     fmt::print(out, "Scene   {}\n", scene_line);
-    fmt::print(out, "Points  {} in {:.3g} s on {} thread{}: {} valid, {} invalid\n",
+    fmt::print(out, "Points  {} in {:.3g} s on {} thread{}: {} valid, {} invalid{}\n",
                result.rows, result.wall_time_s, result.threads, result.threads == 1 ? "" : "s",
-               valid, result.rows - valid);
+               valid, result.rows - valid,
+               result.time_path_rows == 0
+                   ? std::string()
+                   : fmt::format("; {} on the time path (no energy integral)", result.time_path_rows));
     if (valid > 0) {
       // With a safety factor s, a ratio above 1/s is unsafe (InputWarnings says so).
       fmt::print(out, "Safe    {} ({:.1f} %); laceration ratio > {:.4g} at {} ({:.1f} %), "

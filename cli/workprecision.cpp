@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "covopt/core/work_precision.hpp"
+#include "covopt/optim/design_work_precision.hpp"
 #include "errors.hpp"
 #include "output.hpp"
 #include "plot.hpp"
@@ -216,6 +217,229 @@ Json PointJson(const WorkPrecisionPoint& p) {
   return j;
 }
 
+// --- the optimiser-level study (--design) ----------------------------------------------
+
+std::vector<ComputationMethod> ResolveMethods(const std::vector<std::string>& names);
+
+using optim::DesignWorkPrecisionPoint;
+using optim::DesignWorkPrecisionResult;
+
+std::string DesignSeriesName(const DesignWorkPrecisionPoint& p) {
+  return p.oracle == optim::OracleKind::kExact ? std::string("exact path")
+                                                : fmt::format("time path, {}", ToString(p.method));
+}
+
+/// The methods of the study, in the order measured.
+std::vector<ComputationMethod> DesignMethods(const DesignWorkPrecisionResult& study) {
+  std::vector<ComputationMethod> methods;
+  for (const DesignWorkPrecisionPoint& p : study.points) {
+    if (p.oracle == optim::OracleKind::kTimePath &&
+        std::find(methods.begin(), methods.end(), p.method) == methods.end()) {
+      methods.push_back(p.method);
+    }
+  }
+  return methods;
+}
+
+/// One chart of the design study: for each method, the error of b_c* (solid) and of E_c*
+/// (dashed) against the search's CPU time (`cost`) or against the requested rtol.
+std::string DesignChart(const DesignWorkPrecisionResult& study, bool cost, PlotFormat format,
+                        const std::string& output_path, const std::string& title) {
+  std::string s = ChartHeader(format, output_path,
+                              cost ? "Optimiser work-precision: " + title
+                                   : "Does the time-path optimum keep its tolerance? " + title);
+  if (cost) {
+    s += "set xlabel 'relative error of the optimum against the exact path [-] (b_c*: solid, E_c*: dashed)'\n";
+    s += "set ylabel 'CPU time of the thinnest-safe-covering search [s]'\n";
+  } else {
+    s += "set xlabel 'requested relative tolerance rtol of the time path [-]'\n";
+    s += "set ylabel 'relative error of the optimum against the exact path [-] (b_c*: solid, E_c*: dashed)'\n";
+    s += "set xrange [*:*] reverse\n";
+  }
+  std::string blocks;
+  std::vector<std::string> commands;
+  int index = 0;
+  for (const ComputationMethod method : DesignMethods(study)) {
+    for (const bool modulus : {false, true}) {
+      std::string data;
+      for (const DesignWorkPrecisionPoint& p : study.points) {
+        if (p.oracle != optim::OracleKind::kTimePath || p.method != method) continue;
+        const double error = modulus ? p.error_modulus : p.error_thickness;
+        if (!std::isfinite(error)) continue;
+        const double shown = std::max(error, kErrorFloor);
+        data += cost ? fmt::format("{} {}\n", shown, p.seconds) : fmt::format("{} {}\n", p.relative_tolerance, shown);
+      }
+      if (data.empty()) continue;
+      blocks += fmt::format("$d{} << EOD\n{}EOD\n", index, data);
+      commands.push_back(fmt::format(
+          "$d{} using 1:2 with linespoints linewidth 2 pointtype {} pointsize 0.9 dashtype {} linecolor rgb '{}' "
+          "title {}",
+          index, modulus ? 6 : 7, modulus ? 2 : 1, ColorOf(method),
+          GnuplotQuoted(fmt::format("{}: {}", ToString(method), modulus ? "E_c*" : "b_c*"))));
+      ++index;
+    }
+  }
+  if (cost && !study.points.empty()) {
+    blocks += fmt::format("$exact << EOD\n{} {}\nEOD\n", kErrorFloor, study.points.front().seconds);
+    commands.push_back(
+        "$exact using 1:2 with points pointtype 5 pointsize 1.6 linecolor rgb 'black' "
+        "title 'exact path (the reference; error 0, drawn at 1e-16)'");
+  }
+  if (!cost) {
+    commands.push_back("x with lines dashtype 3 linewidth 2 linecolor rgb '#444444' title 'error = rtol'");
+    commands.push_back("100*x with lines dashtype 4 linewidth 1 linecolor rgb '#999999' title 'error = 100 rtol'");
+  }
+  std::string plot;
+  for (std::size_t i = 0; i < commands.size(); ++i) plot += (i == 0 ? "plot " : ", \\\n     ") + commands[i];
+  if (plot.empty()) plot = "plot NaN notitle";
+  return s + blocks + plot + "\nunset output\n";
+}
+
+std::string DesignCsv(const DesignWorkPrecisionResult& study) {
+  std::string csv =
+      "oracle,method,relative_tolerance,feasible,thickness_m,youngs_modulus_Pa,error_thickness,error_modulus,"
+      "contusion_ratio,seconds,evaluations,gradient_evaluations,failed_evaluations,local_termination,source\n";
+  for (const DesignWorkPrecisionPoint& p : study.points) {
+    const bool exact = p.oracle == optim::OracleKind::kExact;
+    std::string source = p.source;
+    std::replace(source.begin(), source.end(), '"', '\'');
+    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"\n", optim::ToString(p.oracle),
+                       ToString(p.method), exact ? "" : CsvNumber(p.relative_tolerance), p.feasible ? 1 : 0,
+                       CsvNumber(p.thickness_m), CsvNumber(p.modulus_Pa), CsvNumber(p.error_thickness),
+                       CsvNumber(p.error_modulus), CsvNumber(p.contusion_ratio), CsvNumber(p.seconds), p.evaluations,
+                       p.gradient_evaluations, p.failed_evaluations, p.local_termination, source);
+  }
+  return csv;
+}
+
+Json DesignPointJson(const DesignWorkPrecisionPoint& p) {
+  const bool exact = p.oracle == optim::OracleKind::kExact;
+  return Json{{"oracle", optim::ToString(p.oracle)},
+              {"method", exact ? Json(nullptr) : Json(std::string(ToString(p.method)))},
+              {"relative_tolerance", exact ? Json(nullptr) : JsonNumber(p.relative_tolerance)},
+              {"feasible", p.feasible},
+              {"thickness_m", JsonNumber(p.thickness_m)},
+              {"youngs_modulus_Pa", JsonNumber(p.modulus_Pa)},
+              {"error_thickness", JsonNumber(p.error_thickness)},
+              {"error_modulus", JsonNumber(p.error_modulus)},
+              {"contusion_ratio", JsonNumber(p.contusion_ratio)},
+              {"seconds", JsonNumber(p.seconds)},
+              {"evaluations", p.evaluations},
+              {"gradient_evaluations", p.gradient_evaluations},
+              {"failed_evaluations", p.failed_evaluations},
+              {"local_termination", p.local_termination},
+              {"source", p.source}};
+}
+
+/// The scene line of the design study: the covering is what the search designs.
+std::string DesignedSceneHeadline(const Scene& scene) {
+  std::string headline = SceneHeadline(scene);
+  if (const auto at = headline.find("no covering"); at != std::string::npos) {
+    headline.replace(at, 11, "covering to be designed");
+  }
+  return headline;
+}
+
+void PrintDesignStudy(std::ostream& out, const DesignWorkPrecisionResult& study, const Scene& scene) {
+  fmt::print(out, "Scene   {}\n", DesignedSceneHeadline(scene));
+  fmt::print(out,
+             "Study   the thinnest admissible covering (continuous optimum) on each oracle; errors relative to "
+             "the exact path's optimum; time = CPU time of the whole search\n\n");
+  fmt::print(out, "{:<26} {:>7} {:>12} {:>10} {:>9} {:>9} {:>9} {:>8} {:>6} {:>6} {:>9}  {}\n", "oracle", "rtol",
+             "b_c* [mm]", "E_c* [MPa]", "err b_c*", "err E_c*", "contusion", "evals", "grads", "failed", "seconds",
+             "kept");
+  for (const DesignWorkPrecisionPoint& p : study.points) {
+    const bool exact = p.oracle == optim::OracleKind::kExact;
+    const auto error = [&](double e) { return exact ? std::string("-") : fmt::format("{:.1e}", e); };
+    fmt::print(out, "{:<26} {:>7} {:>12.6f} {:>10.4f} {:>9} {:>9} {:>9.6f} {:>8} {:>6} {:>6} {:>9.3f}  {}\n",
+               DesignSeriesName(p), exact ? std::string("-") : fmt::format("{:.0e}", p.relative_tolerance),
+               p.thickness_m * 1e3, p.modulus_Pa * 1e-6, error(p.error_thickness), error(p.error_modulus),
+               p.contusion_ratio, p.evaluations, p.gradient_evaluations, p.failed_evaluations, p.seconds,
+               p.feasible ? p.source : "no admissible design");
+  }
+  fmt::print(out, "\n{}\n", study.message);
+}
+
+/// `covopt workprecision --design`.
+int RunDesignStudy(const WorkPrecisionOptions& options, std::ostream& out, std::ostream& err,
+                   const CommandErrors& errors) {
+  SimulationPlan scene_plan;
+  optim::DesignWorkPrecisionOptions study_options;
+  std::vector<std::pair<std::string, PlotFormat>> charts;
+  try {
+    if (options.restart != "both") throw InputError("--restart applies to the integrator study, not to --design");
+    if (options.repeats != 0) throw InputError("--repeats applies to the integrator study, not to --design");
+    scene_plan = ResolveSimulation(options.scene);
+    if (!options.methods.empty()) study_options.methods = ResolveMethods(options.methods);
+    study_options.relative_tolerances =
+        ParseToleranceLadder(options.tolerances == WorkPrecisionOptions{}.tolerances ? "1e-4..1e-10" : options.tolerances);
+    for (const auto& [flag, file] : {std::pair{"--plot", options.plot_file},
+                                     std::pair{"--tolerance-plot", options.tolerance_plot_file}}) {
+      if (!file) continue;
+      const auto format = PlotFormatFor(*file);
+      if (!format) {
+        throw InputError(fmt::format("{}: cannot tell the format of '{}'; name the file *.png or *.svg", flag, *file));
+      }
+      charts.emplace_back(*file, *format);
+    }
+    if (options.csv_file && options.csv_file->empty()) throw InputError("--csv: empty file name");
+  } catch (const InputError& e) {
+    return errors.BadInput(e.what());
+  }
+  if (!charts.empty() && !FindOnPath("gnuplot")) return errors.Failed(std::string(kGnuplotMissing));
+  const bool terminal = &err == &std::cerr && ::isatty(STDERR_FILENO) == 1;
+  if (terminal) {
+    study_options.progress = [&err](const optim::DesignWorkPrecisionProgress& progress) {
+      fmt::print(err, "\nworkprecision --design {}/{} searches", progress.completed_searches, progress.total_searches);
+      err.flush();
+    };
+  }
+  DesignWorkPrecisionResult study;
+  try {
+    study = optim::MeasureDesignWorkPrecision(scene_plan.scene, study_options);
+  } catch (const std::invalid_argument& e) {
+    return errors.BadInput(AttributeError(e.what(), scene_plan));
+  }
+  if (terminal) {
+    fmt::print(err, "\n[K");
+    err.flush();
+  }
+  if (!study.IsUsable()) return errors.Failed(study.message);
+  Scene shown = scene_plan.scene;
+  shown.covering.thickness_m = 0.0;
+  const std::string title = options.title ? *options.title : DesignedSceneHeadline(shown);
+  try {
+    if (options.csv_file) WriteFileAtomically(*options.csv_file, DesignCsv(study));
+    if (options.plot_file) {
+      RunGnuplot(*options.plot_file, [&](const std::string& path) {
+        return DesignChart(study, true, *PlotFormatFor(*options.plot_file), path, title);
+      });
+    }
+    if (options.tolerance_plot_file) {
+      RunGnuplot(*options.tolerance_plot_file, [&](const std::string& path) {
+        return DesignChart(study, false, *PlotFormatFor(*options.tolerance_plot_file), path, title);
+      });
+    }
+  } catch (const OutputError& e) {
+    return errors.Failed(e.what());
+  }
+  if (options.json) {
+    Json j;
+    j["study"] = "design";
+    j["scene"] = SceneToJson(shown);
+    Json list = Json::array();
+    for (const DesignWorkPrecisionPoint& p : study.points) list.push_back(DesignPointJson(p));
+    j["points"] = std::move(list);
+    j["message"] = study.message;
+    out << j.dump(2) << '\n';
+  } else {
+    PrintDesignStudy(out, study, shown);
+  }
+  out.flush();
+  if (!out) return errors.Failed("cannot write the results to standard output");
+  return 0;
+}
+
 std::vector<ComputationMethod> ResolveMethods(const std::vector<std::string>& names) {
   if (names.empty()) return TimeIntegrationMethods();
   std::vector<ComputationMethod> methods;
@@ -355,11 +579,17 @@ CLI::App* SetupWorkPrecision(CLI::App& app, WorkPrecisionOptions& options) {
   sub->add_option("--title", options.title, "scene name for the chart titles")
       ->type_name("TEXT")
       ->group("Output");
+  sub->add_flag("--design", options.design,
+                "the optimiser-level study instead: the thinnest-safe-covering search on the exact path and on "
+                "the time path per --methods (default arkode-erk54, cvode-adams, cvode-bdf) and --tolerances "
+                "(default 1e-4..1e-10); errors of b_c* and E_c* against the exact optimum, CPU time per search")
+      ->group("Study");
   return sub;
 }
 
 int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "workprecision");
+  if (options.design) return RunDesignStudy(options, out, err, errors);
 
   SimulationPlan scene_plan;
   covopt::WorkPrecisionOptions study_options;

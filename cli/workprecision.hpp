@@ -5,7 +5,8 @@
 /// The study itself is the library's covopt::MeasureWorkPrecision
 /// (covopt/core/work_precision.hpp): each SUNDIALS method, with and without the restart at
 /// the force law's phase switches, over a ladder of relative tolerances, measured against
-/// the exact path and timed (median CPU time per impact). This file parses the flags into
+/// the exact path and timed (median CPU time per impact); with --design, the optimiser-level
+/// study (covopt/optim/design_work_precision.hpp). This file parses the flags into
 /// its options and prints the result: a table, --json, --csv, and two gnuplot charts
 /// (worst error against time per impact; worst error against the requested tolerance). Exit codes: 0 done (failed runs are data, reported with their status),
 /// 1 an output could not be written, 2 bad input.
@@ -48,6 +49,12 @@ struct WorkPrecisionOptions {
   std::optional<std::string> tolerance_plot_file;
   /// --title TEXT: a name for the scene in chart titles (default: the scene headline).
   std::optional<std::string> title;
+  /// --design: the optimiser-level study instead (covopt::optim::MeasureDesignWorkPrecision):
+  /// the thinnest-safe-covering search on the exact path and on the time path per
+  /// (integrator, rtol), the errors of b_c* and E_c* against the exact path's optimum and
+  /// the search's CPU time. Default methods arkode-erk54, cvode-adams, cvode-bdf; default
+  /// tolerances 1e-4..1e-10.
+  bool design = false;
 };
 
 /// Reads "1e-3..1e-12" (decades between, inclusive) or "1e-4,1e-6,1e-8" into tolerances

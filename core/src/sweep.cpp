@@ -1,4 +1,5 @@
-// A streamed sweep on the exact path (covopt/core/sweep.hpp).
+// A streamed sweep, each point on the exact path or, where the scene has no energy integral,
+// on the time path (covopt/core/sweep.hpp).
 //
 // The grid is cut into blocks of block_rows rows. Threads claim the next block in order
 // from a shared counter and fill a slot of a ring of 2 x threads slots; the calling thread
@@ -56,6 +57,28 @@ const SceneField& CheckAxis(const SweepAxis& axis, const char* name) {
   return *field;
 }
 
+/// The exact path answers every peak of the scene (the rule of optim's ChooseOracle, at core
+/// level): the conservative two-mass impact, or a damped one (docs/model.md §10.1). A braking
+/// robot or a neck has no energy integral.
+bool ExactPathAnswers(const Scene& scene) noexcept { return !scene.robot_brakes() && !scene.head.has_neck(); }
+
+void ValidateTimePath(const TimeIntegrationOptions& o) {
+  if (o.method == ComputationMethod::kExact || ToString(o.method) == "unknown") {
+    throw std::invalid_argument("time_path.method must be a time integrator, not " + std::string(ToString(o.method)));
+  }
+  if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
+    throw std::invalid_argument("time_path.relative_tolerance must be in [1e-14, 1e-2] (got " +
+                                FormatNumber(o.relative_tolerance) + ")");
+  }
+  if (!(o.absolute_tolerance == 0.0 || (o.absolute_tolerance > 0.0 && o.absolute_tolerance <= 1e-2))) {
+    throw std::invalid_argument("time_path.absolute_tolerance must be in (0, 1e-2], or 0 for rtol (got " +
+                                FormatNumber(o.absolute_tolerance) + ")");
+  }
+  if (o.max_steps < 10) {
+    throw std::invalid_argument("time_path.max_steps must be >= 10 (got " + std::to_string(o.max_steps) + ")");
+  }
+}
+
 /// Solves one grid point into `row` (every field overwritten: slots are reused).
 void SolveRow(const SweepSpec& spec, const SweepOptions& options, const SceneField& x_field,
               const SceneField* y_field, std::size_t ny, std::size_t index, SweepRow& row) {
@@ -69,9 +92,21 @@ void SolveRow(const SweepSpec& spec, const SweepOptions& options, const SceneFie
   if (y_field) y_field->field(scene) = row.y;
   row.covered = scene.covering.thickness_m > 0.0;
   row.warnings.clear();
+  row.method = ExactPathAnswers(scene) ? ComputationMethod::kExact : options.time_path.method;
   try {
     const ImpactModel model = ImpactModel::FromScene(scene);
-    ImpactResult result = SolveExact(model, options.exact);
+    ImpactResult result;
+    if (ExactPathAnswers(scene)) {
+      result = SolveExact(model, options.exact);
+    } else {
+      TimeIntegrationOptions time_path = options.time_path;
+      time_path.record_history = false;
+      result = SimulateImpact(model, time_path);
+      if (!result.ok()) {
+        throw std::invalid_argument("the time path (" + std::string(ToString(time_path.method)) + ") failed: " +
+                                    std::string(ToString(result.status)) + ": " + result.message);
+      }
+    }
     row.valid = true;
     row.error.clear();
     row.peaks = result.peaks;
@@ -104,6 +139,7 @@ void SolveRow(const SweepSpec& spec, const SweepOptions& options, const SceneFie
 /// The summary, one row at a time, in grid order.
 void Count(const SweepRow& row, SweepResult& r) {
   ++r.rows;
+  if (row.method != ComputationMethod::kExact) ++r.time_path_rows;
   if (!row.valid) {
     if (!r.first_invalid) {
       r.first_invalid = row.index;
@@ -216,6 +252,7 @@ std::string SweepResult::BriefReport() const {
       break;
     case SweepStatus::kNoneValid: return text + "none valid: " + first_invalid_error;
   }
+  if (time_path_rows > 0) text += "; " + std::to_string(time_path_rows) + " on the time path";
   text += "; safe " + Percent(safe, valid) + ", admissible " + Percent(admissible, valid);
   if (least && most) {
     text += "; worst ratio " + Short(least->worst_ratio) + " .. " + Short(most->worst_ratio);
@@ -261,6 +298,7 @@ SweepResult Sweep(const SweepSpec& spec, const SweepOptions& options,
     throw std::invalid_argument("block_rows must be in 1..1000000 (got " +
                                 std::to_string(options.block_rows) + ")");
   }
+  ValidateTimePath(options.time_path);
   if (!consumer) throw std::invalid_argument("consumer: empty; give a function to receive the rows");
 
   const auto start = std::chrono::steady_clock::now();

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <optional>
 #include <exception>
-#include <numbers>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -16,12 +16,10 @@
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
-#include <covopt/core/sensitivity.hpp>
 
 namespace covopt::optim {
 namespace {
 
-constexpr double kLn10 = std::numbers::ln10;
 /// The continuous optimum's thickness is bisected to this [m].
 constexpr double kThicknessTolerance_m = 1e-11;
 
@@ -70,7 +68,7 @@ void ValidateOptions(const DesignOptions& o) {
 /// min b_c/b_max s.t. ln(SF r_i) <= 0 and, under the default criterion, ln(δ_max/t2) <= 0.
 class ThinnestProblem : public Problem {
  public:
-  ThinnestProblem(const CoveringOracle& oracle, const DesignOptions& o)
+  ThinnestProblem(const DesignOracle& oracle, const DesignOptions& o)
       : oracle_(oracle), o_(o),
         lower_{std::log10(o.space.min_modulus_Pa), o.space.min_thickness_m / o.space.max_thickness_m},
         upper_{std::log10(o.space.max_modulus_Pa), 1.0} {}
@@ -107,6 +105,7 @@ class ThinnestProblem : public Problem {
   bool Constraints(std::span<const double> x, std::span<double> c, std::span<double> jac) const override {
     RatioGradient gradient;
     const DesignScore score = jac.empty() ? oracle_.Score(Design(x)) : oracle_.Score(Design(x), gradient);
+    if (score.failed) return false;
     c[0] = std::log(o_.safety_factor * score.laceration_ratio);
     c[1] = std::log(o_.safety_factor * score.contusion_ratio);
     const bool compression = inequality_count() == 3;
@@ -125,17 +124,18 @@ class ThinnestProblem : public Problem {
     return true;
   }
 
-  /// Second derivatives by central differences of the analytic Jacobian (the objective is
-  /// linear): only the polish's convergence rate depends on them, its point is fixed by the
-  /// exact first derivatives.
+  /// Second derivatives by central differences of the oracle's Jacobian (the objective is
+  /// linear), with the oracle's step: only the polish's convergence rate depends on them, its
+  /// point is fixed by the first derivatives.
   bool provides_lagrangian_hessian() const override { return true; }
   bool LagrangianHessian(std::span<const double> x, double objective_factor, std::span<const double> multipliers,
                          std::span<double> lower_triangle) const override {
-    return CentralDifferenceLagrangianHessian(*this, x, objective_factor, multipliers, lower_triangle);
+    return CentralDifferenceLagrangianHessian(*this, x, objective_factor, multipliers, lower_triangle,
+                                              oracle_.DifferenceStep());
   }
 
  private:
-  const CoveringOracle& oracle_;
+  const DesignOracle& oracle_;
   const DesignOptions& o_;
   std::vector<double> lower_, upper_;
 };
@@ -145,7 +145,7 @@ class ThinnestProblem : public Problem {
 /// as E_c grows), so the compression condition is the lower bound.
 class WorstRatioProblem : public Problem {
  public:
-  WorstRatioProblem(const CoveringOracle& oracle, const DesignOptions& o, double thickness, double lower)
+  WorstRatioProblem(const DesignOracle& oracle, const DesignOptions& o, double thickness, double lower)
       : oracle_(oracle), o_(o), thickness_(thickness), lower_(lower) {}
   std::size_t dimension() const override { return 1; }
   std::vector<double> lower_bounds() const override { return {lower_}; }
@@ -154,6 +154,7 @@ class WorstRatioProblem : public Problem {
     RatioGradient gradient;
     const CoveringDesign design{std::pow(10.0, x[0]), thickness_};
     const DesignScore score = g.empty() ? oracle_.Score(design) : oracle_.Score(design, gradient);
+    if (score.failed) return false;
     const bool laceration = score.laceration_ratio >= score.contusion_ratio;
     value = std::log(o_.safety_factor * score.worst_ratio());
     if (!g.empty()) {  // a subgradient of the max
@@ -164,7 +165,7 @@ class WorstRatioProblem : public Problem {
   }
 
  private:
-  const CoveringOracle& oracle_;
+  const DesignOracle& oracle_;
   const DesignOptions& o_;
   double thickness_;
   double lower_;
@@ -174,7 +175,7 @@ class WorstRatioProblem : public Problem {
 /// log10 E_c in [lower, log10 E_max].
 class EpigraphProblem : public Problem {
  public:
-  EpigraphProblem(const CoveringOracle& oracle, const DesignOptions& o, double thickness, double lower)
+  EpigraphProblem(const DesignOracle& oracle, const DesignOptions& o, double thickness, double lower)
       : oracle_(oracle), o_(o), thickness_(thickness), lower_(lower) {}
   std::size_t dimension() const override { return 2; }
   std::size_t inequality_count() const override { return 2; }
@@ -192,6 +193,7 @@ class EpigraphProblem : public Problem {
     const CoveringDesign design{std::pow(10.0, x[0]), thickness_};
     RatioGradient gradient;
     const DesignScore score = jac.empty() ? oracle_.Score(design) : oracle_.Score(design, gradient);
+    if (score.failed) return false;
     c[0] = std::log(o_.safety_factor * score.laceration_ratio) - x[1];
     c[1] = std::log(o_.safety_factor * score.contusion_ratio) - x[1];
     if (!jac.empty()) {
@@ -206,11 +208,12 @@ class EpigraphProblem : public Problem {
   bool provides_lagrangian_hessian() const override { return true; }
   bool LagrangianHessian(std::span<const double> x, double objective_factor, std::span<const double> multipliers,
                          std::span<double> lower_triangle) const override {
-    return CentralDifferenceLagrangianHessian(*this, x, objective_factor, multipliers, lower_triangle);
+    return CentralDifferenceLagrangianHessian(*this, x, objective_factor, multipliers, lower_triangle,
+                                              oracle_.DifferenceStep());
   }
 
  private:
-  const CoveringOracle& oracle_;
+  const DesignOracle& oracle_;
   const DesignOptions& o_;
   double thickness_;
   double lower_;
@@ -228,7 +231,7 @@ struct ModulusChoice {
 /// The 1-D global search in u = log10 E_c at a fixed thickness (see the header: stage 2).
 class ModulusSearch {
  public:
-  ModulusSearch(const CoveringOracle& oracle, const DesignOptions& o)
+  ModulusSearch(const DesignOracle& oracle, const DesignOptions& o)
       : oracle_(oracle), o_(o), lo_(std::log10(o.space.min_modulus_Pa)), hi_(std::log10(o.space.max_modulus_Pa)) {}
 
   /// The admissible interval of moduli at `thickness_m`, and the least worst ratio on it.
@@ -332,7 +335,7 @@ class ModulusSearch {
     return best;
   }
 
-  const CoveringOracle& oracle_;
+  const DesignOracle& oracle_;
   const DesignOptions& o_;
   double lo_, hi_;
 };
@@ -405,7 +408,7 @@ double StockThickness(double steps, double step_m) {
 
 /// Thinnest admissible thickness of one material: the first admissible point of a scan, then
 /// bisection; then rounded up to stock.
-CandidateOutcome SnapMaterial(const CoveringOracle& oracle, const CandidateMaterial& material,
+CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMaterial& material,
                               const DesignOptions& o) {
   const double sf = o.safety_factor;
   const DesignCriterion criterion = o.criterion();
@@ -469,7 +472,7 @@ CandidateOutcome SnapMaterial(const CoveringOracle& oracle, const CandidateMater
 /// SnapMaterial for every material, on options.threads threads; outcome i is material i's,
 /// whatever the thread count (each thread writes only its own slots). The first exception
 /// thrown by any thread is rethrown here after all have joined.
-std::vector<CandidateOutcome> SnapMaterials(const CoveringOracle& oracle,
+std::vector<CandidateOutcome> SnapMaterials(const DesignOracle& oracle,
                                             std::span<const CandidateMaterial> materials,
                                             const DesignOptions& o) {
   std::vector<CandidateOutcome> outcomes(materials.size());
@@ -502,14 +505,6 @@ std::vector<CandidateOutcome> SnapMaterials(const CoveringOracle& oracle,
 
 }  // namespace
 
-const char* ToString(DesignCriterion criterion) noexcept {
-  switch (criterion) {
-    case DesignCriterion::kNoFullCompression: return "no-full-compression";
-    case DesignCriterion::kPaper: return "paper";
-  }
-  return "unknown";
-}
-
 const char* ToString(DesignVerdict verdict) noexcept {
   switch (verdict) {
     case DesignVerdict::kCoveringFound: return "covering-found";
@@ -518,87 +513,6 @@ const char* ToString(DesignVerdict verdict) noexcept {
     case DesignVerdict::kNothingSafe: return "nothing-safe";
   }
   return "unknown";
-}
-
-CoveringOracle::CoveringOracle(const Scene& scene, double covering_poisson_ratio,
-                               const InjuryLimits& limits)
-    : scene_(scene), limits_(limits) {
-  scene_.covering.poisson_ratio = covering_poisson_ratio;
-  Scene bare = scene_;
-  bare.covering.thickness_m = 0.0;
-  (void)ImpactModel::FromScene(bare);  // validates everything but the design
-  Require(limits.laceration_tensile_stress_Pa > 0 && limits.contusion_energy_density_J_per_m2 > 0,
-          "injury limits must be > 0");
-}
-
-namespace {
-
-/// Fills the ratios of a score from its peaks.
-void Judge(DesignScore& score, const InjuryLimits& limits) {
-  const InjuryAssessment a = Assess(score.peaks, limits);
-  score.laceration_ratio = a.laceration.ratio;
-  score.contusion_ratio = a.contusion.ratio;
-  score.compression_ratio = score.bare() ? 0.0 : score.peaks.max_penetration_m / score.peaks.full_compression_penetration_m;
-}
-
-}  // namespace
-
-DesignScore CoveringOracle::ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const {
-  ++evaluations_;
-  Scene scene = scene_;
-  scene.covering = {design.youngs_modulus_Pa, poisson_ratio, design.thickness_m};
-  DesignScore score;
-  score.design = design;
-  score.poisson_ratio = poisson_ratio;
-  score.peaks = ExactPeaks(ImpactModel::FromScene(scene));
-  Judge(score, limits_);
-  return score;
-}
-
-DesignScore CoveringOracle::Score(const CoveringDesign& design) const {
-  return ScoreMaterial(design, scene_.covering.poisson_ratio);
-}
-
-DesignScore CoveringOracle::Score(const CoveringDesign& design, RatioGradient& gradient) const {
-  ++evaluations_;
-  Scene scene = scene_;
-  scene.covering.youngs_modulus_Pa = design.youngs_modulus_Pa;
-  scene.covering.thickness_m = design.thickness_m;
-  const ImpactModel model = ImpactModel::FromScene(scene);
-  DesignScore score;
-  score.design = design;
-  score.poisson_ratio = scene.covering.poisson_ratio;
-  score.peaks = ExactPeaks(model);
-  Judge(score, limits_);
-  const PeakSensitivities s = ExactPeakSensitivities(model, score.peaks);
-  const double per_log10 = design.youngs_modulus_Pa * kLn10;  // dE/du, u = log10 E
-  gradient.laceration[0] = s.per_covering_modulus.max_tensile_stress * per_log10 / limits_.laceration_tensile_stress_Pa;
-  gradient.laceration[1] = s.per_covering_thickness.max_tensile_stress / limits_.laceration_tensile_stress_Pa;
-  gradient.contusion[0] = s.per_covering_modulus.max_energy_density * per_log10 / limits_.contusion_energy_density_J_per_m2;
-  gradient.contusion[1] = s.per_covering_thickness.max_energy_density / limits_.contusion_energy_density_J_per_m2;
-  // compression ratio δ_max / t2: t2 moves with b_c by the full-compression fraction f
-  // (cumulative: t2 = t1 + f b_c; literal: t2 = max(f b_c, t1)); E_c does not move it.
-  const ModelConstants& constants = scene.model;
-  const double t1 = constants.full_compression_fraction * scene.scalp.thickness_m;
-  const double covering_travel = constants.full_compression_fraction * design.thickness_m;
-  const double dt2_db = (constants.thresholds == ThresholdReading::kCumulative || covering_travel > t1)
-                            ? constants.full_compression_fraction
-                            : 0.0;
-  const double t2 = score.peaks.full_compression_penetration_m;
-  gradient.compression[0] = s.per_covering_modulus.max_penetration * per_log10 / t2;
-  gradient.compression[1] = (s.per_covering_thickness.max_penetration - score.compression_ratio * dt2_db) / t2;
-  return score;
-}
-
-DesignScore CoveringOracle::ScoreBare() const {
-  ++evaluations_;
-  Scene scene = scene_;
-  scene.covering.thickness_m = 0.0;
-  DesignScore score;
-  score.design.thickness_m = 0.0;
-  score.peaks = ExactPeaks(ImpactModel::FromScene(scene));
-  Judge(score, limits_);
-  return score;
 }
 
 namespace {
@@ -630,14 +544,16 @@ ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
                                               const DesignOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   ValidateOptions(options);
-  const CoveringOracle oracle(scene, options.covering_poisson_ratio, options.limits);
+  const std::unique_ptr<DesignOracle> owned_oracle =
+      MakeOracle(scene, options.covering_poisson_ratio, options.limits, options.oracle);
+  const DesignOracle& oracle = *owned_oracle;
   const double sf = options.safety_factor;
   const DesignCriterion criterion = options.criterion();
   ThinnestSafeCovering out;
   out.criterion = criterion;
   out.bare_robot = oracle.ScoreBare();
 
-  // Stage 1: NLopt on the 2-D problem. Its point, re-checked on the exact path, is at most an
+  // Stage 1: NLopt on the 2-D problem. Its point, re-checked by the oracle, is at most an
   // upper bracket: nothing is reported from it unless stage 2 confirms it.
   const ThinnestProblem problem(oracle, options);
   const std::vector<double> lower = problem.lower_bounds(), upper = problem.upper_bounds();
@@ -650,6 +566,8 @@ ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
     const DesignScore at_global = oracle.Score(problem.Design(global.x));
     if (at_global.admissible(sf, criterion)) upper_bracket = at_global.design.thickness_m;
   }
+
+  std::optional<OracleReport> fallback_oracle;  // the fallback's own oracle, if it ran
 
   // Stage 2: the nested bracketed search.
   const auto bracket_started = std::chrono::steady_clock::now();
@@ -699,6 +617,7 @@ ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
     out.continuous.source = "none admissible in the box: least injury at the maximum thickness (" +
                             fallback.continuous.source + ")";
     out.evaluations += fallback.evaluations;
+    fallback_oracle = fallback.oracle;
   }
 
   // Snap to each material, rank.
@@ -722,6 +641,15 @@ ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
     out.verdict = out.continuous.feasible ? DesignVerdict::kNoSafeMaterial : DesignVerdict::kNothingSafe;
   }
   out.evaluations += oracle.evaluations();
+  out.oracle = oracle.Report();
+  if (fallback_oracle) {
+    out.oracle.evaluations += fallback_oracle->evaluations;
+    out.oracle.gradient_evaluations += fallback_oracle->gradient_evaluations;
+    out.oracle.failed_evaluations += fallback_oracle->failed_evaluations;
+    if (out.oracle.first_failure.empty()) out.oracle.first_failure = fallback_oracle->first_failure;
+    out.oracle.gradient_step_disagreement =
+        std::max(out.oracle.gradient_step_disagreement, fallback_oracle->gradient_step_disagreement);
+  }
   out.seconds = SecondsSince(started);
   return out;
 }
@@ -733,7 +661,9 @@ LeastInjuryAtThickness MinimizeInjuryAtThickness(const Scene& scene, double thic
   ValidateOptions(options);
   Require(std::isfinite(thickness_m) && thickness_m > 0.0 && thickness_m <= 1.0,
           "thickness must be in (0, 1] m (got " + Number(thickness_m) + ")");
-  const CoveringOracle oracle(scene, options.covering_poisson_ratio, options.limits);
+  const std::unique_ptr<DesignOracle> owned_oracle =
+      MakeOracle(scene, options.covering_poisson_ratio, options.limits, options.oracle);
+  const DesignOracle& oracle = *owned_oracle;
   const double sf = options.safety_factor;
   const DesignCriterion criterion = options.criterion();
   LeastInjuryAtThickness out;
@@ -817,6 +747,7 @@ LeastInjuryAtThickness MinimizeInjuryAtThickness(const Scene& scene, double thic
     out.verdict = out.continuous.feasible ? DesignVerdict::kNoSafeMaterial : DesignVerdict::kNothingSafe;
   }
   out.evaluations = oracle.evaluations();
+  out.oracle = oracle.Report();
   out.seconds = SecondsSince(started);
   return out;
 }

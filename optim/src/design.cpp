@@ -100,6 +100,11 @@ std::vector<std::string> Warnings(const DesignRequest& request, const DesignResu
       if (w.find("fully compressed") == std::string::npos) warnings.push_back("recommended covering: " + w);
     }
   }
+  if (r.oracle.failed_evaluations > 0) {
+    warnings.push_back(Format("%ld of %ld %s evaluations failed and counted as inadmissible (first: %s)",
+                              r.oracle.failed_evaluations, r.oracle.evaluations, r.oracle.Name().c_str(),
+                              r.oracle.first_failure.c_str()));
+  }
   if (r.covering_needed() && r.continuous.score.peaks.fully_compressed) {
     warnings.push_back(
         "the continuous optimum is fully compressed at the peak (the robot reaches the bone through the covering)");
@@ -120,6 +125,7 @@ const char* ToString(DesignProblem problem) noexcept {
 const char* ToString(DesignStatus status) noexcept {
   switch (status) {
     case DesignStatus::kSuccess: return "success";
+    case DesignStatus::kOracleFailed: return "oracle-failed";
   }
   return "unknown";
 }
@@ -131,7 +137,7 @@ std::string DesignResult::BriefReport() const {
                      MPa(continuous.score.design.youngs_modulus_Pa).c_str(),
                      Mm(continuous.score.design.thickness_m).c_str(), continuous.score.worst_ratio());
   }
-  return report + Format(" %ld exact-path evaluations, %.1f ms.", evaluations, seconds * 1e3);
+  return report + Format(" %ld %s evaluations, %.1f ms.", evaluations, oracle.Name().c_str(), seconds * 1e3);
 }
 
 std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalog, std::span<const std::string> names,
@@ -187,12 +193,23 @@ DesignResult Design(const DesignRequest& request) {
     r.recommendation = answer.recommendation;
     r.evaluations = answer.evaluations;
     r.seconds = answer.seconds;
+    r.oracle = answer.oracle;
   };
   if (request.thickness_m) {
     r.problem = DesignProblem::kLeastInjuryAtThickness;
     take(MinimizeInjuryAtThickness(request.scene, *request.thickness_m, request.materials, request.options));
   } else {
     take(FindThinnestSafeCovering(request.scene, request.materials, request.options));
+  }
+  // A failed evaluation is never an answer: the bare robot's verdict, or a continuous
+  // optimum that is itself a failed evaluation, leaves nothing usable.
+  if (r.bare_robot.failed || (r.covering_needed() && r.continuous.score.failed)) {
+    r.status = DesignStatus::kOracleFailed;
+    r.message = Format("The %s failed where the answer needs it (%ld of %ld evaluations failed; first: %s).",
+                       r.oracle.Name().c_str(), r.oracle.failed_evaluations, r.oracle.evaluations,
+                       r.oracle.first_failure.c_str());
+    r.warnings = {};
+    return r;
   }
   r.message = Headline(r, request.options.space.max_thickness_m);
   r.warnings = Warnings(request, r);

@@ -1,6 +1,7 @@
 // The maximum safe impact speed and reflected mass (optim/speed_limit.hpp): the limit is
 // found on the penetration axis, where every criterion is a monotone function of δ_max, and
-// mapped back through the energy balance U(δ_max) = ½ μ v0².
+// mapped back through the energy balance U(δ_max) = ½ μ v0²; for a scene without that energy
+// integral (a braking robot, a neck), by a bracketed bisection on the time path.
 #include "covopt/optim/speed_limit.hpp"
 
 #include <algorithm>
@@ -9,11 +10,13 @@
 #include <cstddef>
 #include <cstdio>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
+#include <covopt/core/time_integration.hpp>
 
 namespace covopt::optim {
 namespace {
@@ -157,38 +160,176 @@ PenetrationLimit FindPenetrationLimit(const ImpactModel& model, const SpeedLimit
   return limit;
 }
 
-/// The exact path on `scene`: the ratios, and whether the impact is admissible.
-ImpactJudgement Evaluate(const Scene& scene, const SpeedLimitOptions& options) {
-  const ImpactModel model = ImpactModel::FromScene(scene);
-  const ImpactPeaks peaks = ExactPeaks(model);
-  ImpactJudgement e;
-  e.ratios.laceration_ratio = peaks.max_tensile_stress_Pa / options.limits.laceration_tensile_stress_Pa;
-  e.ratios.contusion_ratio =
-      peaks.max_energy_density_J_per_m2 / options.limits.contusion_energy_density_J_per_m2;
-  e.ratios.compression_ratio =
-      model.has_covering() ? peaks.max_penetration_m / peaks.full_compression_penetration_m : 0.0;
-  e.ratios.max_penetration_m = peaks.max_penetration_m;
-  const double worst = std::max(e.ratios.laceration_ratio, e.ratios.contusion_ratio);
-  e.admissible = worst * options.safety_factor <= 1.0 &&
-                 (options.criterion() == DesignCriterion::kPaper || !model.has_covering() ||
-                  !peaks.fully_compressed);
-  return e;
-}
+/// Judges impacts on the oracle the options choose for the scene (exact or time path),
+/// counting evaluations and failures for the result's OracleReport.
+class Judge {
+ public:
+  Judge(const Scene& scene, const SpeedLimitOptions& options)
+      : options_(options), selection_(ChooseOracle(scene, options.oracle.choice)) {
+    if (selection_.kind == OracleKind::kTimePath) {
+      ValidateTimePathOptions(options.oracle.time_path, "oracle.time_path");
+      time_path_ = options.oracle.time_path;
+      time_path_.record_history = false;
+    }
+  }
+  bool time_path() const noexcept { return selection_.kind == OracleKind::kTimePath; }
+
+  /// The ratios of the impact of `scene`, and whether it is admissible.
+  ImpactJudgement operator()(const Scene& scene) const {
+    ++evaluations_;
+    const ImpactModel model = ImpactModel::FromScene(scene);
+    ImpactJudgement e;
+    ImpactPeaks peaks;
+    if (time_path()) {
+      const ImpactResult result = SimulateImpact(model, time_path_);
+      if (!result.ok()) {
+        ++failed_;
+        if (first_failure_.empty()) first_failure_ = std::string(covopt::ToString(result.status)) + ": " + result.message;
+        e.failed = true;
+        e.ratios.laceration_ratio = e.ratios.contusion_ratio = e.ratios.compression_ratio = kInfinity;
+        return e;
+      }
+      peaks = result.peaks;
+    } else {
+      peaks = ExactPeaks(model);
+    }
+    e.ratios.laceration_ratio = peaks.max_tensile_stress_Pa / options_.limits.laceration_tensile_stress_Pa;
+    e.ratios.contusion_ratio =
+        peaks.max_energy_density_J_per_m2 / options_.limits.contusion_energy_density_J_per_m2;
+    e.ratios.compression_ratio =
+        model.has_covering() ? peaks.max_penetration_m / peaks.full_compression_penetration_m : 0.0;
+    e.ratios.max_penetration_m = peaks.max_penetration_m;
+    const double worst = std::max(e.ratios.laceration_ratio, e.ratios.contusion_ratio);
+    e.admissible = worst * options_.safety_factor <= 1.0 &&
+                   (options_.criterion() == DesignCriterion::kPaper || !model.has_covering() ||
+                    !peaks.fully_compressed);
+    return e;
+  }
+
+  /// The criterion an inadmissible impact violates (the largest excess when several do).
+  LimitingCriterion Violated(const ImpactJudgement& e) const {
+    if (e.failed) return LimitingCriterion::kNone;
+    const double sf = options_.safety_factor;
+    LimitingCriterion by = LimitingCriterion::kNone;
+    double excess = 1.0;
+    auto consider = [&](double value, LimitingCriterion criterion) {
+      if (value > excess) {
+        excess = value;
+        by = criterion;
+      }
+    };
+    consider(sf * e.ratios.laceration_ratio, LimitingCriterion::kLaceration);
+    consider(sf * e.ratios.contusion_ratio, LimitingCriterion::kContusion);
+    if (options_.criterion() == DesignCriterion::kNoFullCompression) {
+      consider(e.ratios.compression_ratio, LimitingCriterion::kFullCompression);
+    }
+    return by;
+  }
+
+  OracleReport Report() const {
+    OracleReport r;
+    r.kind = selection_.kind;
+    r.reason = selection_.reason;
+    r.gradient = selection_.gradient;
+    if (time_path()) {
+      r.method = time_path_.method;
+      r.relative_tolerance = time_path_.relative_tolerance;
+    }
+    r.evaluations = evaluations_;
+    r.failed_evaluations = failed_;
+    r.first_failure = first_failure_;
+    return r;
+  }
+
+ private:
+  const SpeedLimitOptions& options_;
+  OracleSelection selection_;
+  TimeIntegrationOptions time_path_;
+  mutable long evaluations_ = 0;
+  mutable long failed_ = 0;
+  mutable std::string first_failure_;
+};
 
 /// Lowers `value` by a few ulps until the exact path at `set(value)` is admissible: the limit
 /// computed on the δ axis can round to just above the switch or the limit it stands for.
 template <class Setter>
-ImpactJudgement NudgeDown(double& value, const Scene& scene, const SpeedLimitOptions& options, Setter set) {
+ImpactJudgement NudgeDown(double& value, const Scene& scene, const Judge& judge, Setter set) {
   Scene probe = scene;
   set(probe, value);
-  ImpactJudgement e = Evaluate(probe, options);
+  ImpactJudgement e = judge(probe);
   double step = 2.0 * std::numeric_limits<double>::epsilon();
   for (int attempt = 0; attempt < 40 && !e.admissible; ++attempt, step *= 2.0) {
     value *= 1.0 - step;
     set(probe, value);
-    e = Evaluate(probe, options);
+    e = judge(probe);
   }
   return e;
+}
+
+/// A limit bracketed on the oracle (speed_limit.hpp): the first inadmissible point of a
+/// geometric scan upward from `lowest`, bisected against the last admissible one.
+struct BracketedLimit {
+  SpeedLimitStatus status = SpeedLimitStatus::kLimited;
+  double value = 0.0;
+  LimitingCriterion by = LimitingCriterion::kNone;
+  ImpactJudgement at;  ///< at `value` (at `lowest` for kNoSafeValue)
+};
+
+/// Grid points per decade of the scan, and the bisection's relative resolution.
+constexpr double kScanPointsPerDecade = 4.0;
+constexpr double kBisectionResolution = 1e-10;
+
+template <class Setter>
+BracketedLimit BracketOnOracle(const Judge& judge, const Scene& base, double lowest, double highest, Setter set) {
+  auto at = [&](double value) {
+    Scene probe = base;
+    set(probe, value);
+    return judge(probe);
+  };
+  BracketedLimit out;
+  const ImpactJudgement bottom = at(lowest);
+  if (!bottom.admissible) {
+    out.status = SpeedLimitStatus::kNoSafeValue;
+    out.by = judge.Violated(bottom);
+    out.at = bottom;
+    return out;
+  }
+  const int points = std::max(2, static_cast<int>(std::ceil(kScanPointsPerDecade * std::log10(highest / lowest))));
+  double safe = lowest, unsafe = 0.0;
+  ImpactJudgement safe_at = bottom, unsafe_at;
+  for (int i = 1; i <= points; ++i) {
+    const double value = i == points ? highest : lowest * std::pow(highest / lowest, static_cast<double>(i) / points);
+    const ImpactJudgement e = at(value);
+    if (!e.admissible) {
+      unsafe = value;
+      unsafe_at = e;
+      break;
+    }
+    safe = value;
+    safe_at = e;
+  }
+  if (unsafe == 0.0) {
+    out.status = SpeedLimitStatus::kSafeUpToSearchLimit;
+    out.value = highest;
+    out.at = safe_at;
+    return out;
+  }
+  while (unsafe / safe - 1.0 > kBisectionResolution) {
+    const double mid = std::sqrt(safe * unsafe);
+    const ImpactJudgement e = at(mid);
+    if (e.admissible) {
+      safe = mid;
+      safe_at = e;
+    } else {
+      unsafe = mid;
+      unsafe_at = e;
+    }
+  }
+  out.status = SpeedLimitStatus::kLimited;
+  out.value = safe;
+  out.at = safe_at;
+  out.by = judge.Violated(unsafe_at);
+  return out;
 }
 
 std::string RatiosText(const LimitRatios& r, bool covered) {
@@ -233,13 +374,110 @@ std::string MassLimit::BriefReport() const {
 
 ImpactJudgement JudgeImpact(const Scene& scene, const SpeedLimitOptions& options) {
   CheckOptions(options);
-  return Evaluate(scene, options);
+  return Judge(scene, options)(scene);
 }
+
+namespace {
+
+/// MaxSafeSpeed and MaxSafeMass on the δ axis (the exact path's scenes), below.
+SpeedLimit MaxSafeSpeedOnPenetrationAxis(const Scene& base, const SpeedLimitOptions& options, const Judge& judge);
+MassLimit MaxSafeMassOnPenetrationAxis(const Scene& base, const SpeedLimitOptions& options, const Judge& judge);
+
+/// MaxSafeSpeed where there is no δ axis: bracketed on the oracle.
+SpeedLimit MaxSafeSpeedOnOracle(const Scene& base, const SpeedLimitOptions& options, const Judge& judge) {
+  const auto set_speed = [](Scene& s, double v) { s.robot.speed_m_per_s = v; };
+  const BracketedLimit limit = BracketOnOracle(judge, base, kMinSpeed_m_per_s, options.max_speed_m_per_s, set_speed);
+  SpeedLimit result;
+  result.bracketed = true;
+  result.status = limit.status;
+  result.limited_by = limit.by;
+  result.max_safe_speed_m_per_s = limit.value;
+  result.at_limit = limit.at.ratios;
+  switch (limit.status) {
+    case SpeedLimitStatus::kNoSafeValue:
+      result.message = std::string("no safe speed: unsafe even at 1e-06 m/s (") + ToString(limit.by) + ")";
+      break;
+    case SpeedLimitStatus::kSafeUpToSearchLimit:
+      result.message = "safe up to the search limit of " + Format("%.6g", limit.value) + " m/s" +
+                       (options.max_speed_m_per_s == 100.0 ? " (the model's ceiling)" : "");
+      break;
+    case SpeedLimitStatus::kLimited:
+      result.message = "max safe speed " + Format("%.6g", limit.value) + " m/s, limited by " + ToString(limit.by);
+      break;
+  }
+  result.oracle = judge.Report();
+  return result;
+}
+
+/// MaxSafeMass where there is no δ axis: bracketed on the oracle.
+MassLimit MaxSafeMassOnOracle(const Scene& base, const SpeedLimitOptions& options, const Judge& judge) {
+  MassLimit result;
+  result.bracketed = true;
+  // A fixed robot (allowed unless it brakes) meets the head with μ = m_h.
+  if (!base.robot_brakes() && std::isfinite(base.head.mass_kg)) {
+    Scene fixed = base;
+    fixed.robot.mass_kg = kFixed;
+    const ImpactJudgement at = judge(fixed);
+    if (at.admissible) {
+      result.status = SpeedLimitStatus::kSafeUpToSearchLimit;
+      result.max_safe_mass_kg = kFixed;
+      result.at_limit = at.ratios;
+      result.message = "safe for any reflected mass, even a fixed robot";
+      result.oracle = judge.Report();
+      return result;
+    }
+  }
+  const auto set_mass = [](Scene& s, double m) { s.robot.mass_kg = m; };
+  constexpr double kMinMass_kg = 1e-6;
+  const BracketedLimit limit = BracketOnOracle(judge, base, kMinMass_kg, options.max_mass_kg, set_mass);
+  result.status = limit.status;
+  result.limited_by = limit.by;
+  result.max_safe_mass_kg = limit.value;
+  result.at_limit = limit.at.ratios;
+  switch (limit.status) {
+    case SpeedLimitStatus::kNoSafeValue:
+      result.message = std::string("no safe mass: unsafe even at 1e-06 kg (") + ToString(limit.by) + ")";
+      break;
+    case SpeedLimitStatus::kSafeUpToSearchLimit:
+      result.message = "safe up to the search limit of " + Format("%.6g", limit.value) + " kg" +
+                       (options.max_mass_kg == 1e6 ? " (the model's ceiling)" : "");
+      break;
+    case SpeedLimitStatus::kLimited:
+      result.message =
+          "max safe reflected mass " + Format("%.6g", limit.value) + " kg, limited by " + ToString(limit.by);
+      break;
+  }
+  result.oracle = judge.Report();
+  return result;
+}
+
+}  // namespace
 
 SpeedLimit MaxSafeSpeed(const Scene& scene, const SpeedLimitOptions& options) {
   CheckOptions(options);
   Scene base = scene;
   base.robot.speed_m_per_s = 1.0;  // ignored: the law does not depend on it
+  const Judge judge(base, options);
+  if (judge.time_path() || !base.is_conservative_two_mass()) return MaxSafeSpeedOnOracle(base, options, judge);
+  SpeedLimit result = MaxSafeSpeedOnPenetrationAxis(base, options, judge);
+  result.oracle = judge.Report();
+  return result;
+}
+
+MassLimit MaxSafeMass(const Scene& scene, const SpeedLimitOptions& options) {
+  CheckOptions(options);
+  Scene base = scene;
+  base.robot.mass_kg = 1.0;  // ignored: the law does not depend on it
+  const Judge judge(base, options);
+  if (judge.time_path() || !base.is_conservative_two_mass()) return MaxSafeMassOnOracle(base, options, judge);
+  MassLimit result = MaxSafeMassOnPenetrationAxis(base, options, judge);
+  result.oracle = judge.Report();
+  return result;
+}
+
+namespace {
+
+SpeedLimit MaxSafeSpeedOnPenetrationAxis(const Scene& base, const SpeedLimitOptions& options, const Judge& judge) {
   const ImpactModel model = ImpactModel::FromScene(base);
   const PenetrationLimit limit = FindPenetrationLimit(model, options);
   const double speed = std::sqrt(2.0 * limit.energy_J / model.effective_mass_kg());  // may be inf
@@ -251,20 +489,20 @@ SpeedLimit MaxSafeSpeed(const Scene& scene, const SpeedLimitOptions& options) {
     result.status = SpeedLimitStatus::kSafeUpToSearchLimit;
     result.limited_by = LimitingCriterion::kNone;
     result.max_safe_speed_m_per_s = options.max_speed_m_per_s;
-    result.at_limit = NudgeDown(result.max_safe_speed_m_per_s, base, options, set_speed).ratios;
+    result.at_limit = NudgeDown(result.max_safe_speed_m_per_s, base, judge, set_speed).ratios;
     result.message = "safe up to the search limit of " + Format("%.6g", result.max_safe_speed_m_per_s) +
                      " m/s" + (options.max_speed_m_per_s == 100.0 ? " (the model's ceiling)" : "");
     return result;
   }
   double value = speed;
   ImpactJudgement at = {};
-  if (value >= kMinSpeed_m_per_s) at = NudgeDown(value, base, options, set_speed);
+  if (value >= kMinSpeed_m_per_s) at = NudgeDown(value, base, judge, set_speed);
   if (!(value >= kMinSpeed_m_per_s) || !at.admissible) {
     result.status = SpeedLimitStatus::kNoSafeValue;
     result.max_safe_speed_m_per_s = 0.0;
     Scene floor = base;
     floor.robot.speed_m_per_s = kMinSpeed_m_per_s;
-    result.at_limit = Evaluate(floor, options).ratios;
+    result.at_limit = judge(floor).ratios;
     result.message = std::string("no safe speed: unsafe even at 1e-06 m/s (") + ToString(limit.by) + ")";
     return result;
   }
@@ -275,10 +513,7 @@ SpeedLimit MaxSafeSpeed(const Scene& scene, const SpeedLimitOptions& options) {
   return result;
 }
 
-MassLimit MaxSafeMass(const Scene& scene, const SpeedLimitOptions& options) {
-  CheckOptions(options);
-  Scene base = scene;
-  base.robot.mass_kg = 1.0;  // ignored: the law does not depend on it
+MassLimit MaxSafeMassOnPenetrationAxis(const Scene& base, const SpeedLimitOptions& options, const Judge& judge) {
   const ImpactModel model = ImpactModel::FromScene(base);
   const PenetrationLimit limit = FindPenetrationLimit(model, options);
   const double v0 = base.robot.speed_m_per_s;
@@ -292,7 +527,7 @@ MassLimit MaxSafeMass(const Scene& scene, const SpeedLimitOptions& options) {
   if (std::isfinite(head) && reduced >= head) {
     Scene fixed = base;
     fixed.robot.mass_kg = kFixed;
-    const ImpactJudgement at = Evaluate(fixed, options);
+    const ImpactJudgement at = judge(fixed);
     if (at.admissible) {
       result.status = SpeedLimitStatus::kSafeUpToSearchLimit;
       result.limited_by = LimitingCriterion::kNone;
@@ -307,14 +542,14 @@ MassLimit MaxSafeMass(const Scene& scene, const SpeedLimitOptions& options) {
     result.status = SpeedLimitStatus::kSafeUpToSearchLimit;
     result.limited_by = LimitingCriterion::kNone;
     result.max_safe_mass_kg = options.max_mass_kg;
-    result.at_limit = NudgeDown(result.max_safe_mass_kg, base, options, set_mass).ratios;
+    result.at_limit = NudgeDown(result.max_safe_mass_kg, base, judge, set_mass).ratios;
     result.message = "safe up to the search limit of " + Format("%.6g", result.max_safe_mass_kg) + " kg" +
                      (options.max_mass_kg == 1e6 ? " (the model's ceiling)" : "");
     return result;
   }
   double value = mass;
   ImpactJudgement at = {};
-  if (value > 0.0) at = NudgeDown(value, base, options, set_mass);
+  if (value > 0.0) at = NudgeDown(value, base, judge, set_mass);
   if (!(value > 0.0) || !at.admissible) {
     result.status = SpeedLimitStatus::kNoSafeValue;
     result.max_safe_mass_kg = 0.0;
@@ -328,4 +563,5 @@ MassLimit MaxSafeMass(const Scene& scene, const SpeedLimitOptions& options) {
   return result;
 }
 
+}  // namespace
 }  // namespace covopt::optim

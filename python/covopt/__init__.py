@@ -95,7 +95,7 @@ def optimize(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
              materials=None, families=None, catalog=None, no_builtin=False, thickness=None,
              max_thickness=None, min_modulus=None, max_modulus=None, covering_poisson=None,
              thickness_step=None, allow_full_compression=False, global_algorithm=None,
-             seed=None, threads=None):
+             seed=None, threads=None, oracle=None, method=None, rtol=None):
     """Which covering, how thick, with what margin, as ``covopt optimize --json``.
 
     The scene keywords are simulate's, without the covering (it is what is designed).
@@ -107,7 +107,11 @@ def optimize(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
     them). Design space: max_thickness [m] (0.05), min_modulus and max_modulus [Pa]
     (0.1e6, 1e9), covering_poisson [-] of the continuous design (0.25), thickness_step [m]
     the recommendation is rounded up to (0.5e-3). Solver: global_algorithm "direct-l"
-    (default), "isres" or "mlsl"; seed; threads of the catalog snap (1..256).
+    (default), "isres" or "mlsl"; seed; threads of the catalog snap (1..256). Oracle:
+    oracle "auto" (default: the exact path where the scene has an energy integral, else the
+    time path), "exact" or "time-path"; method: the time path's integrator (default
+    "arkode-erk54"; "exact" means oracle="exact"); rtol: its relative tolerance (1e-8).
+    result["solver"]["oracle"] says which ran and why.
 
     Returns the dict of ``covopt optimize --json`` (without the CLI's warnings about its own
     input). Raises ValueError on bad input, ComputationError when the search fails.
@@ -135,11 +139,12 @@ def max_safe_speed(*, robot_mass=None, robot_radius=None, robot_modulus=None, ro
                    head_mass=None, head_radius=None, scalp_modulus=None, scalp_poisson=None,
                    scalp_thickness=None, skull_modulus=None, skull_poisson=None, thresholds=None,
                    laceration_limit=None, contusion_limit=None, safety_factor=None, material=None,
-                   allow_full_compression=False):
+                   allow_full_compression=False, oracle=None, method=None, rtol=None):
     """The largest impact speed [m/s] such that every speed up to it is safe: both injury
     ratios <= 1/safety_factor and, unless allow_full_compression, the covering not fully
     compressed at the peak (optim::MaxSafeSpeed). The scene keywords are simulate's, without
-    speed (it is what is computed).
+    speed (it is what is computed). oracle, method, rtol: as optimize's (a scene without an
+    energy integral is bracketed on the time path).
 
     Returns a dict: max_safe_speed_m_per_s (None when not even 1e-6 m/s is safe; 100 when
     safe up to the model's ceiling), limited_by ("laceration", "contusion",
@@ -157,7 +162,7 @@ def max_safe_mass(*, speed=None, robot_radius=None, robot_modulus=None, robot_po
                   head_mass=None, head_radius=None, scalp_modulus=None, scalp_poisson=None,
                   scalp_thickness=None, skull_modulus=None, skull_poisson=None, thresholds=None,
                   laceration_limit=None, contusion_limit=None, safety_factor=None, material=None,
-                  allow_full_compression=False):
+                  allow_full_compression=False, oracle=None, method=None, rtol=None):
     """The largest reflected robot mass [kg] that is safe, with every lighter robot, at the
     scene's speed (optim::MaxSafeMass); as max_safe_speed, without robot_mass.
 
@@ -173,14 +178,17 @@ def speed_limit(*, solve_for="speed", robot_mass=None, speed=None, robot_radius=
                 covering_poisson=None, covering_thickness=None, head_mass=None, head_radius=None,
                 scalp_modulus=None, scalp_poisson=None, scalp_thickness=None, skull_modulus=None,
                 skull_poisson=None, thresholds=None, laceration_limit=None, contusion_limit=None,
-                safety_factor=None, material=None, allow_full_compression=False):
+                safety_factor=None, material=None, allow_full_compression=False, oracle=None,
+                method=None, rtol=None):
     """A table of limits, as ``covopt speed-limit --json``: solve_for="speed" gives the max
     safe speed for each robot_mass (a value or a list; math.inf or "fixed" for a fixed
     robot), solve_for="mass" the max safe reflected mass for each speed (a value or a list).
     material: a catalog name or a list of names, one block of rows each.
 
+    oracle, method, rtol: as optimize's.
+
     Returns the dict of ``covopt speed-limit --json`` (solve_for, criterion, safety_factor,
-    limits, search_limit, rows, scene, warnings; without the CLI's warnings about its own
+    limits, search_limit, oracle, rows, scene, warnings; without the CLI's warnings about its own
     input). Raises ValueError on bad input.
     """
     arguments = {name: value for name, value in locals().items() if value is not None}

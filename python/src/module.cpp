@@ -512,13 +512,66 @@ std::vector<std::string> ReadNames(const py::handle& value, const char* keyword)
                               Repr(value) + ")");
 }
 
+}  // namespace
+
+/// oracle=, method=, rtol= as optimize() and speed_limit() take them (scene_keywords.hpp).
+optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& scene) {
+  const auto get = [&](const char* name) { return Get(kwargs, name); };
+  optim::OracleOptions oracle;
+  if (const auto v = get("oracle")) {
+    const std::string name = py::str(*v).cast<std::string>();
+    const auto choice = optim::ParseOracleChoice(name);
+    if (!choice) throw std::invalid_argument("oracle: expected 'auto', 'exact' or 'time-path' (got '" + name + "')");
+    oracle.choice = *choice;
+  }
+  bool method_exact = false;
+  if (const auto v = get("method")) {
+    const std::string method = py::str(*v).cast<std::string>();
+    if (method == "exact") {
+      method_exact = true;
+    } else if (method == "cvode") {
+      oracle.time_path.method = ComputationMethod::kCvodeAdams;
+    } else if (const auto named = ParseComputationMethod(method); named && *named != ComputationMethod::kExact) {
+      oracle.time_path.method = *named;
+    } else {
+      std::string names;
+      for (const ComputationMethod m : TimeIntegrationMethods()) {
+        names += std::string(names.empty() ? "" : ", ") + std::string(ToString(m));
+      }
+      throw std::invalid_argument("method: expected exact, cvode or one of " + names + " (got '" + method + "')");
+    }
+  }
+  if (method_exact) {
+    if (oracle.choice == optim::OracleChoice::kTimePath) {
+      throw std::invalid_argument("method='exact' contradicts oracle='time-path': the time path runs an integrator");
+    }
+    oracle.choice = optim::OracleChoice::kExact;
+  }
+  if (const auto v = get("rtol")) {
+    if (oracle.choice == optim::OracleChoice::kExact) {
+      throw std::invalid_argument("rtol applies to the time path; oracle='exact' runs none");
+    }
+    oracle.time_path.relative_tolerance = ReadQuantity(*v, specs::kTolerance, "rtol");
+    if (!(oracle.time_path.relative_tolerance >= 1e-14 && oracle.time_path.relative_tolerance <= 1e-2)) {
+      throw std::invalid_argument("rtol must be in [1e-14, 1e-2] (got " + Repr(*v) + ")");
+    }
+  }
+  if (oracle.choice == optim::OracleChoice::kExact && get("method") && !method_exact) {
+    throw std::invalid_argument("method applies to the time path; oracle='exact' runs none");
+  }
+  (void)optim::ChooseOracle(scene, oracle.choice);  // oracle='exact' on a braking/neck scene: its message
+  return oracle;
+}
+
+namespace {
+
 /// covopt.optimize(**scene, ...): see python/covopt/__init__.py.
 py::dict Optimize(const py::kwargs& kwargs) {
   const auto get = [&](const char* name) { return Get(kwargs, name); };
   CheckKeywords(kwargs, "optimize",
                 {"materials", "families", "catalog", "no_builtin", "thickness", "max_thickness",
                  "min_modulus", "max_modulus", "thickness_step", "allow_full_compression",
-                 "global_algorithm", "seed", "threads"});
+                 "global_algorithm", "seed", "threads", "oracle", "method", "rtol"});
   for (const char* k : {"covering_modulus", "covering_thickness", "material"}) {
     if (get(k)) {
       throw std::invalid_argument(std::string(k) +
@@ -579,6 +632,7 @@ py::dict Optimize(const py::kwargs& kwargs) {
   };
   if (get("seed")) d.seed = static_cast<unsigned long>(whole("seed", 0, std::numeric_limits<long long>::max()));
   if (get("threads")) d.threads = static_cast<int>(whole("threads", 1, 256));
+  d.oracle = ReadOracleKeywords(kwargs, request.scene);
 
   // The candidates: the built-in catalog and the catalog files (or only those), filtered.
   const bool no_builtin = get("no_builtin") && py::bool_(*get("no_builtin")).cast<bool>();

@@ -49,6 +49,7 @@ optim::SpeedLimitOptions OptionsFrom(const SceneKeywordInputs& inputs, const py:
   options.limits = inputs.limits;
   options.safety_factor = inputs.safety_factor;
   if (const auto v = Get(kwargs, "allow_full_compression")) options.allow_full_compression = py::bool_(*v).cast<bool>();
+  options.oracle = ReadOracleKeywords(kwargs, inputs.scene);
   return options;
 }
 
@@ -93,7 +94,7 @@ py::dict OneLimit(SpeedLimitQuantity quantity, const py::kwargs& kwargs, const c
     throw std::invalid_argument(std::string(function) + "() computes " + (by_speed ? "the speed" : "the robot mass") +
                                 "; drop " + solved);
   }
-  const SceneKeywordInputs inputs = ReadSceneKeywords(kwargs, function, {"allow_full_compression"});
+  const SceneKeywordInputs inputs = ReadSceneKeywords(kwargs, function, {"allow_full_compression", "oracle", "method", "rtol"});
   const optim::SpeedLimitOptions options = OptionsFrom(inputs, kwargs);
   const double value = by_speed ? inputs.scene.robot.mass_kg : inputs.scene.robot.speed_m_per_s;
   const SpeedLimitRow row = Compute(quantity, inputs.scene, value, options, inputs.covering_material, kwargs);
@@ -151,7 +152,7 @@ py::dict SpeedLimitTable(const py::kwargs& kwargs) {
     py::kwargs scene_kwargs = rest;
     if (name) scene_kwargs["material"] = *name;
     const SceneKeywordInputs inputs =
-        ReadSceneKeywords(scene_kwargs, "speed_limit", {"allow_full_compression", "solve_for"});
+        ReadSceneKeywords(scene_kwargs, "speed_limit", {"allow_full_compression", "solve_for", "oracle", "method", "rtol"});
     options = OptionsFrom(inputs, kwargs);
     const std::vector<double> values =
         Get(kwargs, varied) ? ReadValues(*Get(kwargs, varied), spec, varied)

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "covopt/report/simulation_json.hpp"
+#include "oracle_json.hpp"
 
 namespace covopt::report {
 namespace {
@@ -127,7 +128,8 @@ std::string DesignJson(const optim::DesignRequest& request, const optim::DesignR
                  {"seconds", seconds},
                  {"global", SolverJson(global)},
                  {"bracket", SolverJson(continuous.bracket)},
-                 {"local", SolverJson(local)}};
+                 {"local", SolverJson(local)},
+                 {"oracle", internal::OracleJson(result.oracle, true)}};
   j["safety_factor"] = sf;
   j["limits"] = {{"laceration_Pa", laceration_limit},
                  {"contusion_J_per_m2", contusion_limit},

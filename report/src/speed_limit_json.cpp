@@ -13,6 +13,7 @@
 #include "covopt/report/simulation_json.hpp"
 #include "json_number.hpp"
 #include "limits_json.hpp"
+#include "oracle_json.hpp"
 
 namespace covopt::report {
 namespace {
@@ -124,6 +125,20 @@ std::vector<std::string> SpeedLimitRowWarnings(SpeedLimitQuantity quantity, std:
   return warnings;
 }
 
+optim::OracleReport SpeedLimitOracle(SpeedLimitQuantity quantity, std::span<const SpeedLimitRow> rows) {
+  const auto of = [quantity](const SpeedLimitRow& row) -> const optim::OracleReport& {
+    return quantity == SpeedLimitQuantity::kSpeed ? row.speed_limit.oracle : row.mass_limit.oracle;
+  };
+  optim::OracleReport merged = rows.empty() ? optim::OracleReport{} : of(rows.front());
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const optim::OracleReport& r = of(rows[i]);
+    merged.evaluations += r.evaluations;
+    merged.failed_evaluations += r.failed_evaluations;
+    if (merged.first_failure.empty()) merged.first_failure = r.first_failure;
+  }
+  return merged;
+}
+
 std::string SpeedLimitJson(SpeedLimitQuantity quantity, const Scene& scene, const optim::SpeedLimitOptions& options,
                            std::span<const SpeedLimitRow> rows, std::span<const std::string> input_warnings,
                            int indent) {
@@ -134,6 +149,13 @@ std::string SpeedLimitJson(SpeedLimitQuantity quantity, const Scene& scene, cons
     j["search_limit"] = {{"max_speed_m_per_s", options.max_speed_m_per_s}};
   } else {
     j["search_limit"] = {{"max_mass_kg", options.max_mass_kg}};
+  }
+  if (!rows.empty()) {
+    ordered_json oracle = internal::OracleJson(SpeedLimitOracle(quantity, rows), false);
+    const SpeedLimitRow& first = rows.front();
+    const bool bracketed = quantity == SpeedLimitQuantity::kSpeed ? first.speed_limit.bracketed : first.mass_limit.bracketed;
+    oracle["search"] = bracketed ? "bracketed-bisection" : "penetration-axis";
+    j["oracle"] = oracle;
   }
   ordered_json list = ordered_json::array();
   for (const SpeedLimitRow& row : rows) list.push_back(RowJson(quantity, row));

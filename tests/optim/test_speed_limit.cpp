@@ -299,7 +299,7 @@ TEST_CASE("a scene safe at 100 m/s is safe up to the search limit, which is stat
   CHECK(limit.at_limit.contusion_ratio < 1.0);
   // A lower ceiling is honoured and named.
   Scene paper;
-  const SpeedLimit capped = MaxSafeSpeed(paper, SpeedLimitOptions{false, 1.0, {}, 0.5, 1e6});
+  const SpeedLimit capped = MaxSafeSpeed(paper, SpeedLimitOptions{false, 1.0, {}, 0.5, 1e6, {}});
   CHECK(capped.status == SpeedLimitStatus::kSafeUpToSearchLimit);
   CHECK(capped.max_safe_speed_m_per_s == 0.5);
 }

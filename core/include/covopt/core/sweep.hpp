@@ -1,6 +1,6 @@
 #pragma once
 /// @file sweep.hpp
-/// A parameter sweep on the exact path, streamed: one or two scene quantities, by name, over
+/// A parameter sweep, streamed: one or two scene quantities, by name, over
 /// lists of values; every grid point solved on worker threads; rows handed to a consumer in
 /// grid order, block by block, so memory stays flat however large the grid (a 1000 x 1000
 /// sweep holds a few blocks of rows at a time, never the grid).
@@ -14,9 +14,13 @@
 ///     std::puts(result.BriefReport().c_str());
 ///
 /// Each point's scene is the spec's scene with the swept fields set; it is validated
-/// (ImpactModel::FromScene) and solved (SolveExact) on its own, so a scene outside the
-/// model's input range is an invalid row carrying the library's message, never a failure of
-/// the sweep and never NaN. A row depends on its scene alone: rows are bit-identical for any
+/// (ImpactModel::FromScene) and solved on its own, so a scene outside the model's input range
+/// is an invalid row carrying the library's message, never a failure of the sweep and never
+/// NaN. A point is solved on the exact path (SolveExact) where the scene has the energy
+/// integral it needs (the two-mass impact, conservative or damped), and on the time path
+/// (SimulateImpact with SweepOptions::time_path) where it does not: a braking robot or a neck
+/// (docs/model.md §10.4); SweepRow::method says which.
+/// A time-path point whose integration fails is an invalid row with the integrator's message. A row depends on its scene alone: rows are bit-identical for any
 /// number of threads and any block size. The summary (SweepResult) is gathered on the stream.
 /// The library never prints; progress goes through SweepOptions::progress.
 
@@ -28,6 +32,7 @@
 #include <vector>
 
 #include "covopt/core/exact.hpp"
+#include "covopt/core/time_integration.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
 
@@ -71,6 +76,10 @@ struct SweepOptions {
   std::size_t block_rows = 1024;
   /// What the exact path computes at each point. Default: peaks and contact duration.
   ExactOptions exact;
+  /// The time path's integrator and tolerances, for the points the exact path cannot answer,
+  /// a braking robot or a neck (any method but kExact, rtol in [1e-14, 1e-2]; it always computes the duration).
+  /// Default: TimeIntegrationOptions{} (ARKODE ERK 5(4), rtol 1e-8).
+  TimeIntegrationOptions time_path;
   /// Called from the calling thread after each block is consumed, with (rows delivered,
   /// rows in total), last with delivered == total. May be empty. An exception it throws
   /// stops the sweep as one from the consumer does. Default: empty.
@@ -93,12 +102,17 @@ struct SweepRow {
   /// δ_max [m], F_max [N], σ_c,max and σ_t,max [Pa], e_A,max [J/m²], the phase at δ_max,
   /// the compression flags and t2 [m] (see ImpactPeaks).
   ImpactPeaks peaks;
-  /// Contact duration [s]; empty when SweepOptions::exact.compute_duration is off.
+  /// The path the point's scene needs: kExact, or the time path's integrator (set for
+  /// invalid rows too).
+  ComputationMethod method = ComputationMethod::kExact;
+  /// Contact duration [s]; empty when SweepOptions::exact.compute_duration is off (exact
+  /// path points).
   std::optional<double> contact_duration_s;
-  /// Time of maximum compression [s] (half the contact duration: the model has no
-  /// dissipation); empty when the duration is not computed.
+  /// Time of maximum compression [s] (half the contact duration on the exact path: the model
+  /// has no dissipation); empty when the duration is not computed.
   std::optional<double> time_of_max_compression_s;
-  /// Relative speed at separation [m/s] (= the impact speed).
+  /// Relative speed at separation [m/s] (the impact speed, less with damping, braking or a
+  /// damped neck).
   double rebound_speed_m_per_s = 0.0;
   /// Laceration (σ_t,max) and contusion (e_A,max) against SweepSpec::limits: ratios are
   /// value / limit [-]; `safe` is safety_factor x ratio <= 1.
@@ -155,6 +169,7 @@ struct SweepResult {
   std::size_t fully_compressed = 0;    ///< covered rows whose covering is fully compressed
   std::size_t admissible = 0;          ///< valid rows meeting the design criterion
   std::size_t warned = 0;              ///< valid rows with at least one validity warning
+  std::size_t time_path_rows = 0;      ///< rows whose scene needs the time path (SweepRow::method)
   /// The first invalid row's index and message.
   std::optional<std::size_t> first_invalid;
   std::string first_invalid_error;
@@ -175,14 +190,15 @@ struct SweepResult {
   std::string BriefReport() const;
 };
 
-/// Sweeps spec.x (and spec.y) over the spec's scene on the exact path, handing every row to
-/// `consumer` in grid order.
+/// Sweeps spec.x (and spec.y) over the spec's scene, each point on the path its scene needs,
+/// handing every row to `consumer` in grid order.
 /// @throws std::invalid_argument before any work, naming the field, the value and what is
 ///         allowed, for: an unknown quantity ("x.quantity: no scene quantity 'foo'; the
 ///         quantities are robot-mass, speed, ..."), an axis without values, a NaN value,
 ///         y sweeping the field x sweeps, a grid of more than SIZE_MAX points, limits not
 ///         > 0, a safety factor outside [1, 100], threads above 4096, block_rows outside
-///         1..1'000'000, or an empty consumer.
+///         1..1'000'000, time_path options out of range ("time_path.relative_tolerance must
+///         be in [1e-14, 1e-2] ..."), or an empty consumer.
 /// An exception thrown by the consumer or by the progress callback stops the sweep: the
 /// worker threads finish their block and are joined, no further rows are delivered, and
 /// the exception propagates to the caller unchanged.

@@ -1,7 +1,8 @@
 #pragma once
 /// @file covering_design.hpp
-/// Covering design on top of the exact impact path: the oracle, the two design problems,
-/// and the snap of the continuous optimum to real materials.
+/// Covering design on top of an impact oracle (oracle.hpp: the exact path, or the time path
+/// where the scene needs it): the two design problems, and the snap of the continuous optimum
+/// to real materials.
 ///
 /// (a) Thinnest admissible covering: minimise b_c over E_c (log-scaled) and b_c such that
 ///     the laceration and contusion ratios are <= 1/safety_factor and, under the default
@@ -23,9 +24,15 @@
 ///     one interval [u_c, max] because δ_max falls with E_c, u_c by bisection; a uniform
 ///     scan of that interval, then golden-section refinement of its best local minima);
 ///     the first admissible grid point is bisected against the one before it.
-///  3. local   Ipopt from the bracketed optimum with analytic gradients (second derivatives
-///     by central differences of them), warm-started, in a small trust region; its point is kept only when an exact-path re-check finds it admissible and
+///  3. local   Ipopt from the bracketed optimum with the oracle's gradients (analytic on the
+///     exact path, CVODES forward sensitivities or a central difference on the time path;
+///     second derivatives by central differences of them), warm-started, in a small trust
+///     region; its point is kept only when a re-check by the oracle finds it admissible and
 ///     not thicker.
+/// Every stage asks the same oracle (DesignOptions::oracle; ChooseOracle). A failed oracle
+/// evaluation (a time-path integration that did not succeed) is an inadmissible point to the
+/// bracketed search and the snap, a failed evaluation to NLopt and Ipopt; it is counted in
+/// the result's OracleReport.
 /// A stage that fails is reported with its status and never supplies the answer. Every
 /// catalog material gets its own thinnest admissible thickness by a scan then bisection
 /// (the admissible set need not be an interval for one material). Everything is a value:
@@ -42,15 +49,10 @@
 #include <covopt/core/scene.hpp>
 
 #include "covopt/optim/backends.hpp"
+#include "covopt/optim/oracle.hpp"
 #include "covopt/optim/problem.hpp"
 
 namespace covopt::optim {
-
-/// A covering: modulus [Pa] and thickness [m].
-struct CoveringDesign {
-  double youngs_modulus_Pa = 0.0;
-  double thickness_m = 0.0;
-};
 
 /// The box of the continuous search. E_c is searched in log10.
 struct DesignSpace {
@@ -59,73 +61,6 @@ struct DesignSpace {
   /// Thinnest covering considered [m]; b_c = 0 (no covering) is a separate candidate.
   double min_thickness_m = 0.1e-3;
   double max_thickness_m = 0.05;   ///< 50 mm
-};
-
-/// Which designs count as acceptable (docs/model.md §6).
-enum class DesignCriterion {
-  kNoFullCompression,  ///< safe and the covering not fully compressed at the peak (default)
-  kPaper,              ///< safe (both injury ratios) only, as the paper designs
-};
-/// "no-full-compression" or "paper".
-const char* ToString(DesignCriterion criterion) noexcept;
-
-/// The injury ratios of one design.
-struct DesignScore {
-  CoveringDesign design;  ///< thickness 0: the bare robot
-  double poisson_ratio = 0.25;
-  ImpactPeaks peaks;
-  double laceration_ratio = 0.0;  ///< σ_t,max / laceration limit
-  double contusion_ratio = 0.0;   ///< e_A,max / contusion limit
-  /// δ_max over the penetration at which the covering is fully compressed [-]
-  /// (peaks.full_compression_penetration_m): > 1 means bottomed out. 0 for the bare robot.
-  double compression_ratio = 0.0;
-  bool bare() const noexcept { return design.thickness_m == 0.0; }
-  double worst_ratio() const noexcept {
-    return laceration_ratio > contusion_ratio ? laceration_ratio : contusion_ratio;
-  }
-  /// Both ratios <= 1/safety_factor.
-  bool safe(double safety_factor) const noexcept { return worst_ratio() * safety_factor <= 1.0; }
-  /// 1 - safety_factor * worst ratio: >= 0 when safe, the fraction of the (derated) limit
-  /// left over.
-  double margin(double safety_factor) const noexcept { return 1.0 - safety_factor * worst_ratio(); }
-  /// Safe and, under kNoFullCompression, not fully compressed (the bare robot: safe).
-  bool admissible(double safety_factor, DesignCriterion criterion) const noexcept {
-    return safe(safety_factor) &&
-           (criterion == DesignCriterion::kPaper || bare() || !peaks.fully_compressed);
-  }
-};
-
-/// d(ratio)/d(log10 E_c) and d(ratio)/d(b_c) [1/m].
-struct RatioGradient {
-  double laceration[2] = {0.0, 0.0};
-  double contusion[2] = {0.0, 0.0};
-  double compression[2] = {0.0, 0.0};  ///< of DesignScore::compression_ratio
-};
-
-/// The exact path as an objective/constraint oracle over covering designs.
-class CoveringOracle {
- public:
-  /// `scene`'s covering is replaced by each design; ν_c = `covering_poisson_ratio`.
-  /// @throws std::invalid_argument if the rest of the scene is invalid.
-  CoveringOracle(const Scene& scene, double covering_poisson_ratio, const InjuryLimits& limits = {});
-
-  /// Ratios of a design (thickness > 0). @throws std::invalid_argument for an invalid design.
-  DesignScore Score(const CoveringDesign& design) const;
-  /// Ratios and their analytic gradient.
-  DesignScore Score(const CoveringDesign& design, RatioGradient& gradient) const;
-  /// The same scene without covering.
-  DesignScore ScoreBare() const;
-  /// Ratios of a design with another Poisson ratio (a catalog material).
-  DesignScore ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const;
-
-  const Scene& scene() const noexcept { return scene_; }
-  /// Exact-path evaluations so far (thread-safe counter).
-  long evaluations() const noexcept { return evaluations_.load(); }
-
- private:
-  Scene scene_;
-  InjuryLimits limits_;
-  mutable std::atomic<long> evaluations_{0};
 };
 
 /// A real material the continuous optimum can snap to.
@@ -177,6 +112,9 @@ struct DesignOptions {
   bool local_polish = true;
   /// Ipopt's settings. Default: IpoptOptions{} (tol 1e-10, no bound relaxation).
   IpoptOptions ipopt;
+  /// Which path scores the designs: auto (default: the exact path where the scene admits it,
+  /// the time path otherwise), exact, or time-path with its integrator and tolerance.
+  OracleOptions oracle;
   /// Catalog snap: the scan for the first safe thickness uses this many points over the
   /// thickness range, then bisects to thickness_resolution_m [m]. Defaults: 250, 1 µm.
   int thickness_scan_points = 250;
@@ -244,8 +182,9 @@ struct ThinnestSafeCovering {
   std::vector<CandidateOutcome> candidates;
   /// Index of the recommended material in `candidates` (the first, when any is safe).
   std::optional<std::size_t> recommendation;
-  long evaluations = 0;  ///< exact-path evaluations in all stages
+  long evaluations = 0;  ///< oracle evaluations in all stages
   double seconds = 0.0;
+  OracleReport oracle;   ///< which oracle ran, why, and its failed evaluations
 };
 
 /// Problem (b): the least injury at a given thickness.
@@ -258,11 +197,13 @@ struct LeastInjuryAtThickness {
   /// Materials by worst ratio at this thickness (safest first).
   std::vector<CandidateOutcome> candidates;
   std::optional<std::size_t> recommendation;  ///< the first candidate, when it is safe
-  long evaluations = 0;
+  long evaluations = 0;  ///< oracle evaluations
   double seconds = 0.0;
+  OracleReport oracle;   ///< which oracle ran, why, and its failed evaluations
 };
 
-/// @throws std::invalid_argument naming the option/scene field for bad input.
+/// @throws std::invalid_argument naming the option/scene field for bad input, or for
+///         oracle exact on a scene the exact path cannot answer.
 ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
                                               std::span<const CandidateMaterial> materials,
                                               const DesignOptions& options = {});

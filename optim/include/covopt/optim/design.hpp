@@ -49,9 +49,12 @@ struct DesignRequest {
 
 /// How the request ended. A scene where nothing is admissible is kSuccess (an answer).
 enum class DesignStatus {
-  kSuccess,  ///< the answer below is usable (its verdict may be "nothing is safe")
+  kSuccess,       ///< the answer below is usable (its verdict may be "nothing is safe")
+  /// The oracle failed where the answer needs it (the bare robot, or every design the
+  /// continuous search tried): time-path integrations that did not succeed (OracleReport).
+  kOracleFailed,
 };
-/// "success".
+/// "success", "oracle-failed".
 const char* ToString(DesignStatus status) noexcept;
 
 /// The answer to a DesignRequest.
@@ -72,16 +75,20 @@ struct DesignResult {
   /// Index into `candidates` of the recommendation, when one is admissible.
   std::optional<std::size_t> recommendation;
   /// What the answer's reader must know: a stage that failed (with its status and the
-  /// fallback taken), a recommendation or optimum fully compressed (paper's criterion), the
-  /// recommended design's validity warnings (docs/model.md §7).
+  /// fallback taken), failed oracle evaluations, a recommendation or optimum fully compressed
+  /// (paper's criterion), the recommended design's validity warnings (docs/model.md §7).
   std::vector<std::string> warnings;
-  long evaluations = 0;  ///< exact-path evaluations in all stages
+  long evaluations = 0;  ///< oracle evaluations in all stages
   double seconds = 0.0;  ///< wall time [s]
+  /// Which oracle scored the designs (exact or time path), why, with which integrator and
+  /// gradient, and how many of its evaluations failed.
+  OracleReport oracle;
   /// The bare robot is safe: no covering is needed (the continuous optimum is not a design
   /// anyone needs then).
   bool covering_needed() const noexcept { return verdict != DesignVerdict::kBareRobotSafe; }
   bool ok() const noexcept { return status == DesignStatus::kSuccess; }
-  /// One line: verdict, recommendation or best worst ratio, continuous optimum, evaluations.
+  /// One line: verdict, recommendation or best worst ratio, continuous optimum, evaluations
+  /// and the oracle.
   std::string BriefReport() const;
 };
 
@@ -95,8 +102,10 @@ std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalo
                                                 std::span<const std::string> names = {},
                                                 std::span<const std::string> families = {});
 
-/// Runs the request: problem (a) or (b), the catalog snap, the verdict and the warnings.
-/// @throws std::invalid_argument naming the field for bad input (scene, options, thickness).
+/// Runs the request: problem (a) or (b), the catalog snap, the verdict and the warnings, on
+/// the oracle request.options.oracle chooses (ChooseOracle).
+/// @throws std::invalid_argument naming the field for bad input (scene, options, thickness),
+///         or for oracle exact on a scene with braking or a neck.
 DesignResult Design(const DesignRequest& request);
 
 }  // namespace covopt::optim

@@ -36,6 +36,18 @@
 /// That the ratios are non-decreasing in v0 and m_r is checked by a dense scan on varied
 /// scenes in tests/optim/test_speed_limit.cpp, and every answer is checked against a
 /// bisection on the full exact path.
+///
+/// Scenes beyond the conservative two-mass model (docs/model.md §10.4). The same rule as the
+/// design searches chooses the oracle (ChooseOracle, SpeedLimitOptions::oracle): the exact
+/// path for a damped contact, the time path for a braking robot or a neck. In none of them
+/// are the peaks functions of δ_max alone, nor δ_max of ½ μ v0², so there is no δ axis to
+/// solve on (nor when the time path is asked for on a conservative scene). The limit is then
+/// bracketed on the oracle itself: speeds (masses) are scanned upward on a geometric grid, 4 points per
+/// decade from 1e-6 m/s (1e-6 kg) to the ceiling, the first inadmissible point found, and the
+/// step from the last admissible one bisected to 1e-10 relative. Scanning upward keeps the
+/// definition (every lower value safe) at the grid's resolution even if a scene were not
+/// monotone; that it is monotone in v0 and m_r for braking and neck scenes is checked by a
+/// dense scan in the tests. About 70 runs per answer (a few ms on the time path).
 
 #include <string>
 
@@ -88,6 +100,9 @@ struct SpeedLimitOptions {
   /// The top of the mass search for a finite robot [kg], in (0, 1e6]. Default: 1e6, the
   /// model's ceiling. A fixed robot (m_r = inf) is always considered beyond it.
   double max_mass_kg = 1e6;
+  /// Which path judges the impacts: auto (default; the exact path's δ-axis solve where the
+  /// scene admits it, a bracketed bisection on the time path otherwise), exact, or time-path.
+  OracleOptions oracle;
 };
 
 /// The ratios of the impact at a limit, as the exact path computes them there.
@@ -105,11 +120,15 @@ struct ImpactJudgement {
   LimitRatios ratios;       ///< the exact path's ratios at the scene's own speed and mass
   /// Both ratios <= 1/safety_factor and, under the default criterion, not fully compressed.
   bool admissible = false;
+  /// The time path failed on this impact (the ratios are then +inf and it is not admissible).
+  bool failed = false;
 };
 
-/// The exact path on `scene` (its own speed and mass), judged with the criterion, safety
-/// factor and limits of `options`: what MaxSafeSpeed and MaxSafeMass call safe.
-/// @throws std::invalid_argument for a bad scene or options.
+/// The oracle options.oracle chooses (the exact path, or the time path) on `scene` (its own
+/// speed and mass), judged with the criterion, safety factor and limits of `options`: what
+/// MaxSafeSpeed and MaxSafeMass call safe.
+/// @throws std::invalid_argument for a bad scene or options, or oracle exact on a scene with
+///         braking or a neck.
 ImpactJudgement JudgeImpact(const Scene& scene, const SpeedLimitOptions& options = {});
 
 /// The answer of MaxSafeSpeed.
@@ -124,6 +143,11 @@ struct SpeedLimit {
   LimitRatios at_limit;
   /// One sentence, e.g. "max safe speed 1.234 m/s, limited by contusion".
   std::string message;
+  /// Which path judged the impacts (exact or time path), why, and its evaluations.
+  OracleReport oracle;
+  /// Found by the bracketed bisection on the oracle (a scene beyond the conservative two-mass
+  /// model, or the time path asked for), not by the δ-axis solve.
+  bool bracketed = false;
   /// The message with the ratios at the limit.
   std::string BriefReport() const;
 };
@@ -138,6 +162,10 @@ struct MassLimit {
   /// The impact at max_safe_mass_kg (a fixed robot when that is the answer).
   LimitRatios at_limit;
   std::string message;
+  /// Which path judged the impacts (exact or time path), why, and its evaluations.
+  OracleReport oracle;
+  /// Found by the bracketed bisection on the oracle, not by the δ-axis solve.
+  bool bracketed = false;
   std::string BriefReport() const;
 };
 

@@ -49,8 +49,14 @@ std::span<const std::string_view> SpeedLimitColumns(SpeedLimitQuantity quantity)
 /// round-trip form, "fixed" for an infinite mass, "" for null (no material, no safe value).
 std::vector<std::string> SpeedLimitCsvCells(SpeedLimitQuantity quantity, const SpeedLimitRow& row);
 
+/// The oracle that judged the rows (they share the scene's kind, so the same choice): the
+/// first row's OracleReport with every row's evaluations and failures added up.
+optim::OracleReport SpeedLimitOracle(SpeedLimitQuantity quantity, std::span<const SpeedLimitRow> rows);
+
 /// The table as one JSON object: solve_for, criterion, safety_factor, limits (and the derated
-/// ones), search_limit ({max_speed_m_per_s} or {max_mass_kg}), rows (SpeedLimitColumns; a
+/// ones), search_limit ({max_speed_m_per_s} or {max_mass_kg}), oracle ({name, reason, method,
+/// rtol, evaluations, failed_evaluations, first_failure: SpeedLimitOracle; search:
+/// "penetration-axis" or "bracketed-bisection"}), rows (SpeedLimitColumns; a
 /// limit that does not exist is null, "limited_by" "none" when safe up to the ceiling),
 /// scene (SceneJson of `scene` without the quantity solved for, and without the one the rows
 /// vary unless all rows share it; without the covering's modulus and Poisson ratio when the

@@ -1,0 +1,262 @@
+#pragma once
+/// @file oracle.hpp
+/// The objective/constraint oracle of the covering design searches: one interface
+/// (DesignOracle), two implementations.
+///
+///  - ExactPathOracle: the exact energy-balance path (docs/model.md §3.1), ~0.2 µs per design,
+///    analytic gradients (ExactPeakSensitivities). It needs the energy integral: the
+///    conservative two-mass impact, and the damped two-mass contact (a few µs per design,
+///    gradients by a central difference of its values).
+///  - TimePathOracle: the SUNDIALS time path (SimulateImpact) with any integrator and
+///    tolerance, tens of µs per design; gradients from CVODES forward sensitivities
+///    (TimePathPeakSensitivities) for the two-mass contact, by a controlled central difference
+///    for a braking robot or a neck (docs/model.md §10.4).
+///
+/// ChooseOracle is the one rule every caller (design searches, speed limits) uses: `auto`
+/// takes the exact path where the scene admits it and the time path otherwise. A time-path
+/// evaluation that fails (status not success) is a failed evaluation: counted, reported, its
+/// score inadmissible with infinite ratios (DesignScore::failed), never an answer.
+///
+///     const auto oracle = covopt::optim::MakeOracle(scene, 0.25, {}, {});  // auto
+///     const covopt::optim::DesignScore score = oracle->Score({16e6, 0.015});
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <covopt/core/impact_result.hpp>
+#include <covopt/core/scene.hpp>
+#include <covopt/core/time_integration.hpp>
+
+namespace covopt::optim {
+
+/// A covering: modulus [Pa] and thickness [m].
+struct CoveringDesign {
+  double youngs_modulus_Pa = 0.0;
+  double thickness_m = 0.0;
+};
+
+/// Which designs count as acceptable (docs/model.md §6).
+enum class DesignCriterion {
+  kNoFullCompression,  ///< safe and the covering not fully compressed at the peak (default)
+  kPaper,              ///< safe (both injury ratios) only, as the paper designs
+};
+/// "no-full-compression" or "paper".
+const char* ToString(DesignCriterion criterion) noexcept;
+
+/// The injury ratios of one design.
+struct DesignScore {
+  CoveringDesign design;  ///< thickness 0: the bare robot
+  double poisson_ratio = 0.25;
+  ImpactPeaks peaks;
+  double laceration_ratio = 0.0;  ///< σ_t,max / laceration limit
+  double contusion_ratio = 0.0;   ///< e_A,max / contusion limit
+  /// δ_max over the penetration at which the covering is fully compressed [-]
+  /// (peaks.full_compression_penetration_m): > 1 means bottomed out. 0 for the bare robot.
+  double compression_ratio = 0.0;
+  /// The oracle could not evaluate this design (a time-path integration failed): the
+  /// ratios are +inf and peaks.fully_compressed is set, so it is never safe, admissible or
+  /// best under either criterion; the oracle counts it.
+  bool failed = false;
+  bool bare() const noexcept { return design.thickness_m == 0.0; }
+  double worst_ratio() const noexcept {
+    return laceration_ratio > contusion_ratio ? laceration_ratio : contusion_ratio;
+  }
+  /// Both ratios <= 1/safety_factor.
+  bool safe(double safety_factor) const noexcept { return worst_ratio() * safety_factor <= 1.0; }
+  /// 1 - safety_factor * worst ratio: >= 0 when safe, the fraction of the (derated) limit
+  /// left over.
+  double margin(double safety_factor) const noexcept { return 1.0 - safety_factor * worst_ratio(); }
+  /// Safe and, under kNoFullCompression, not fully compressed (the bare robot: safe).
+  bool admissible(double safety_factor, DesignCriterion criterion) const noexcept {
+    return safe(safety_factor) &&
+           (criterion == DesignCriterion::kPaper || bare() || !peaks.fully_compressed);
+  }
+};
+
+/// d(ratio)/d(log10 E_c) and d(ratio)/d(b_c) [1/m].
+struct RatioGradient {
+  double laceration[2] = {0.0, 0.0};
+  double contusion[2] = {0.0, 0.0};
+  double compression[2] = {0.0, 0.0};  ///< of DesignScore::compression_ratio
+};
+
+/// What a caller asks for.
+enum class OracleChoice {
+  kAuto,      ///< the exact path where the scene admits it, else the time path (default)
+  kExact,     ///< the exact path; refused for a scene it cannot answer
+  kTimePath,  ///< the time path, whatever the scene
+};
+/// "auto", "exact", "time-path".
+const char* ToString(OracleChoice choice) noexcept;
+/// The inverse of ToString; empty for an unknown name.
+std::optional<OracleChoice> ParseOracleChoice(std::string_view name) noexcept;
+
+/// Which oracle runs.
+enum class OracleKind {
+  kExact,     ///< ExactPathOracle
+  kTimePath,  ///< TimePathOracle
+};
+/// "exact", "time-path".
+const char* ToString(OracleKind kind) noexcept;
+
+/// Where an oracle's gradients come from.
+enum class GradientSource {
+  kAnalytic,               ///< ExactPeakSensitivities (exact path, conservative scene)
+  kForwardSensitivities,   ///< CVODES forward sensitivities (time path, two-mass contact)
+  kCentralDifference,      ///< a central difference of the oracle's own values
+};
+/// "analytic", "cvodes-forward-sensitivities", "central-difference".
+const char* ToString(GradientSource source) noexcept;
+
+/// The exact path answers every peak of this scene: the conservative two-mass impact, or a
+/// damped two-mass contact (its energy relation, docs/model.md §10.1). A braking robot or a
+/// neck has only the time path.
+bool ExactPathAnswers(const Scene& scene) noexcept;
+
+/// The oracle's options.
+struct OracleOptions {
+  /// auto (default), exact or time-path.
+  OracleChoice choice = OracleChoice::kAuto;
+  /// The time path's integrator and tolerances when it runs (any method but kExact; rtol in
+  /// [1e-14, 1e-2]). Default: TimeIntegrationOptions{} (ARKODE ERK 5(4), rtol 1e-8).
+  /// record_history is ignored.
+  TimeIntegrationOptions time_path;
+};
+
+/// The oracle a choice leads to on a scene, and why.
+struct OracleSelection {
+  OracleKind kind = OracleKind::kExact;
+  /// One sentence, e.g. "auto: the conservative two-mass impact has an energy integral, the
+  /// exact path answers every peak".
+  std::string reason;
+  GradientSource gradient = GradientSource::kAnalytic;
+};
+
+/// The rule every search uses (docs/model.md §10.4).
+/// @throws std::invalid_argument for kExact on a scene the exact path cannot answer
+///         ("oracle exact: the exact path needs an energy integral; ...").
+OracleSelection ChooseOracle(const Scene& scene, OracleChoice choice);
+
+/// Which oracle ran, how, what it cost and what failed.
+struct OracleReport {
+  OracleKind kind = OracleKind::kExact;
+  std::string reason;  ///< OracleSelection::reason
+  /// The time path's integrator and rtol; kExact and 0 for the exact path.
+  ComputationMethod method = ComputationMethod::kExact;
+  double relative_tolerance = 0.0;
+  GradientSource gradient = GradientSource::kAnalytic;
+  long evaluations = 0;           ///< designs scored (each one impact computation)
+  long gradient_evaluations = 0;  ///< designs scored with a gradient (included in evaluations)
+  long failed_evaluations = 0;    ///< evaluations whose integration failed
+  std::string first_failure;      ///< the first failed evaluation's message; empty if none
+  /// Central differences only: the largest relative disagreement between the gradients from
+  /// steps h and 2h over all gradient evaluations [-] (the difference's own error check;
+  /// one-sided differences beside a phase switch are not in it).
+  double gradient_step_disagreement = 0.0;
+  /// "exact path" or "time path (arkode-erk54, rtol 1e-08)".
+  std::string Name() const;
+};
+
+/// The objective/constraint oracle over covering designs. `scene`'s covering is replaced by
+/// each design. Thread-safe: the catalog snap scores materials on several threads.
+class DesignOracle {
+ public:
+  virtual ~DesignOracle() = default;
+  DesignOracle(const DesignOracle&) = delete;
+  DesignOracle& operator=(const DesignOracle&) = delete;
+
+  /// Ratios of a design (thickness > 0) with the oracle's ν_c.
+  virtual DesignScore Score(const CoveringDesign& design) const = 0;
+  /// Ratios and their gradient (GradientSource of the report).
+  virtual DesignScore Score(const CoveringDesign& design, RatioGradient& gradient) const = 0;
+  /// Ratios of a design with another Poisson ratio (a catalog material).
+  virtual DesignScore ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const = 0;
+  /// The same scene without covering.
+  virtual DesignScore ScoreBare() const = 0;
+  /// A relative step for difference quotients of this oracle's gradients (the Ipopt polish's
+  /// Hessian) [-]: 1e-5 for the exact path, larger for the time path's noisier values.
+  virtual double DifferenceStep() const noexcept = 0;
+
+  const Scene& scene() const noexcept { return scene_; }
+  /// Evaluations so far (thread-safe counter).
+  long evaluations() const noexcept { return evaluations_.load(); }
+  long failed_evaluations() const noexcept { return failed_evaluations_.load(); }
+  /// The selection, counters and first failure so far.
+  OracleReport Report() const;
+
+ protected:
+  DesignOracle(const Scene& scene, double covering_poisson_ratio, const InjuryLimits& limits,
+               OracleSelection selection, const TimeIntegrationOptions* time_path);
+  /// Fills the ratios of a score from its peaks.
+  void Judge(DesignScore& score) const;
+  /// Counts a failed evaluation and marks the score failed (ratios +inf).
+  void Fail(DesignScore& score, const std::string& message) const;
+  /// Records a central difference's step disagreement.
+  void NoteDisagreement(double relative) const;
+  /// The scene with `design` and ν as its covering.
+  Scene WithCovering(const CoveringDesign& design, double poisson_ratio) const;
+  /// d(compression ratio)/d(b_c) from dδ_max/db_c: t2 moves with b_c (docs/model.md §3.4).
+  double CompressionThicknessDerivative(const DesignScore& score, double max_penetration_per_m) const;
+
+  Scene scene_;
+  InjuryLimits limits_;
+  OracleSelection selection_;
+  ComputationMethod method_ = ComputationMethod::kExact;
+  double relative_tolerance_ = 0.0;
+  mutable std::atomic<long> evaluations_{0};
+  mutable std::atomic<long> gradient_evaluations_{0};
+  mutable std::atomic<long> failed_evaluations_{0};
+  mutable std::mutex failure_mutex_;
+  mutable std::string first_failure_;
+  mutable double gradient_step_disagreement_ = 0.0;
+};
+
+/// The exact path as the oracle.
+class ExactPathOracle final : public DesignOracle {
+ public:
+  /// @throws std::invalid_argument if the rest of the scene is invalid, or the exact path
+  ///         cannot answer it (a braking robot, a neck).
+  ExactPathOracle(const Scene& scene, double covering_poisson_ratio, const InjuryLimits& limits = {},
+                  std::string reason = "exact: as asked");
+  DesignScore Score(const CoveringDesign& design) const override;
+  DesignScore Score(const CoveringDesign& design, RatioGradient& gradient) const override;
+  DesignScore ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const override;
+  DesignScore ScoreBare() const override;
+  double DifferenceStep() const noexcept override { return 1e-5; }
+};
+
+/// The exact path's oracle by its earlier name.
+using CoveringOracle = ExactPathOracle;
+
+/// The time path as the oracle.
+class TimePathOracle final : public DesignOracle {
+ public:
+  /// @throws std::invalid_argument if the scene is invalid or an option is out of range
+  ///         (naming oracle.time_path.<field>).
+  TimePathOracle(const Scene& scene, double covering_poisson_ratio, const InjuryLimits& limits = {},
+                 const TimeIntegrationOptions& time_path = {}, std::string reason = "time-path: chosen");
+  DesignScore Score(const CoveringDesign& design) const override;
+  DesignScore Score(const CoveringDesign& design, RatioGradient& gradient) const override;
+  DesignScore ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const override;
+  DesignScore ScoreBare() const override;
+  double DifferenceStep() const noexcept override;
+
+ private:
+  DesignScore Simulate(const CoveringDesign& design, double poisson_ratio) const;
+  TimeIntegrationOptions time_path_;
+};
+
+/// The oracle `options` choose for `scene` (ChooseOracle), built.
+/// @throws std::invalid_argument as ChooseOracle and the oracles' constructors.
+std::unique_ptr<DesignOracle> MakeOracle(const Scene& scene, double covering_poisson_ratio,
+                                         const InjuryLimits& limits, const OracleOptions& options);
+
+/// Checks the time path's options as the oracle uses them, naming `prefix`.<field>.
+/// @throws std::invalid_argument e.g. "oracle.time_path.relative_tolerance must be in [1e-14, 1e-2] (got 0)".
+void ValidateTimePathOptions(const TimeIntegrationOptions& options, const std::string& prefix = "oracle.time_path");
+
+}  // namespace covopt::optim

@@ -1,0 +1,463 @@
+// The design oracles (oracle.hpp): the exact path and the time path behind one interface,
+// and the rule choosing between them.
+#include "covopt/optim/oracle.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include <covopt/core/exact.hpp>
+#include <covopt/core/impact_model.hpp>
+#include <covopt/core/sensitivity.hpp>
+#include <covopt/core/time_path_sensitivity.hpp>
+
+namespace covopt::optim {
+namespace {
+
+constexpr double kLn10 = std::numbers::ln10;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+std::string Number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+/// A design value as typed back to reproduce a failure (shortest round trip).
+std::string Exactly(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
+
+/// Why a scene has only the time path ("" when it has an energy integral: the conservative
+/// two-mass impact, or a damped two-mass contact, which keeps an energy relation,
+/// docs/model.md §10.1).
+std::string WhyNoEnergyIntegral(const Scene& scene) {
+  const bool brakes = scene.robot_brakes(), neck = scene.head.has_neck();
+  if (brakes && neck) return "the robot brakes (an external force) and the head hangs on a neck (three bodies)";
+  if (brakes) return "the robot brakes (an external force)";
+  if (neck) return "the head hangs on a neck (three bodies)";
+  return "";
+}
+
+/// The gradient a kind of oracle gives on a scene.
+GradientSource GradientFor(OracleKind kind, const Scene& scene) {
+  const bool two_mass = !scene.robot_brakes() && !scene.head.has_neck();
+  if (kind == OracleKind::kExact) {
+    return scene.is_damped() ? GradientSource::kCentralDifference : GradientSource::kAnalytic;
+  }
+  return two_mass ? GradientSource::kForwardSensitivities : GradientSource::kCentralDifference;
+}
+
+/// The ratio gradient from peak derivatives (per E_c [1/Pa], per b_c [1/m]).
+void FillGradient(const DesignScore& score, const PeakSensitivities& s, const InjuryLimits& limits,
+                  double compression_per_thickness, RatioGradient& gradient) {
+  const double per_log10 = score.design.youngs_modulus_Pa * kLn10;  // dE/du, u = log10 E
+  const double laceration = limits.laceration_tensile_stress_Pa;
+  const double contusion = limits.contusion_energy_density_J_per_m2;
+  gradient.laceration[0] = s.per_covering_modulus.max_tensile_stress * per_log10 / laceration;
+  gradient.laceration[1] = s.per_covering_thickness.max_tensile_stress / laceration;
+  gradient.contusion[0] = s.per_covering_modulus.max_energy_density * per_log10 / contusion;
+  gradient.contusion[1] = s.per_covering_thickness.max_energy_density / contusion;
+  const double t2 = score.peaks.full_compression_penetration_m;
+  gradient.compression[0] = s.per_covering_modulus.max_penetration * per_log10 / t2;  // E_c does not move t2
+  gradient.compression[1] = compression_per_thickness;
+}
+
+/// Differences of the three ratios in ln E_c and ln b_c from the points at ±h and ±2h
+/// (relative steps), converted to a gradient in log10 E_c and b_c. Where every point has
+/// δ_max in the same phase as the centre: the central difference with step h, and the largest
+/// relative disagreement with step 2h's as its error check. Where one side crosses a phase
+/// switch (the ratios have a kink there: σ_c's slope, e's curvature change at t1, t2), the
+/// second-order one-sided difference from the other side, (∓3 f0 ± 4 f(±h) ∓ f(±2h)) / 2h,
+/// which is the derivative of the centre's own phase, as the analytic gradient is. False
+/// when an evaluation failed.
+template <class ScoreAt>
+bool CentralDifference(const ScoreAt& score_at, const DesignScore& centre, double h, RatioGradient& gradient,
+                       double& disagreement) {
+  const CoveringDesign& d = centre.design;
+  const std::array<double, 3> f0 = {centre.laceration_ratio, centre.contusion_ratio, centre.compression_ratio};
+  disagreement = 0.0;
+  for (int p = 0; p < 2; ++p) {
+    std::array<DesignScore, 4> at;  // +h, -h, +2h, -2h
+    const std::array<double, 4> steps = {h, -h, 2 * h, -2 * h};
+    for (std::size_t k = 0; k < 4; ++k) {
+      CoveringDesign shifted = d;
+      (p == 0 ? shifted.youngs_modulus_Pa : shifted.thickness_m) *= std::exp(steps[k]);
+      at[k] = score_at(shifted);
+      if (at[k].failed) return false;
+    }
+    auto ratios = [](const DesignScore& s) {
+      return std::array<double, 3>{s.laceration_ratio, s.contusion_ratio, s.compression_ratio};
+    };
+    const auto same_phase = [&](std::size_t k) { return at[k].peaks.phase_at_max == centre.peaks.phase_at_max; };
+    const std::array<double, 3> up = ratios(at[0]), down = ratios(at[1]), up2 = ratios(at[2]), down2 = ratios(at[3]);
+    std::array<double, 3> slope{};  // d ratio / d ln θ
+    const bool forward = same_phase(0) && same_phase(2), backward = same_phase(1) && same_phase(3);
+    for (std::size_t r = 0; r < 3; ++r) {
+      if (forward == backward) {  // smooth on both sides (or kinked on both: central regardless)
+        slope[r] = (up[r] - down[r]) / (2 * h);
+        const double wide = (up2[r] - down2[r]) / (4 * h);
+        const double scale = std::max(std::abs(slope[r]), 1e-2 * std::abs(f0[r]));
+        if (scale > 0.0) disagreement = std::max(disagreement, std::abs(slope[r] - wide) / scale);
+      } else if (forward) {
+        slope[r] = (-3 * f0[r] + 4 * up[r] - up2[r]) / (2 * h);
+      } else {
+        slope[r] = (3 * f0[r] - 4 * down[r] + down2[r]) / (2 * h);
+      }
+    }
+    // d/d log10 E = ln 10 d/d ln E;  d/db = (1/b) d/d ln b.
+    const double to_parameter = p == 0 ? kLn10 : 1.0 / d.thickness_m;
+    gradient.laceration[p] = slope[0] * to_parameter;
+    gradient.contusion[p] = slope[1] * to_parameter;
+    gradient.compression[p] = slope[2] * to_parameter;
+  }
+  return true;
+}
+
+/// The central difference's step [-] for values accurate to about `accuracy` (relative): the
+/// cube root balances truncation (h²) against the values' error (accuracy / h).
+double DifferenceStepFor(double accuracy) { return std::clamp(std::cbrt(accuracy), 1e-5, 0.05); }
+
+/// The relative accuracy of the time path's peaks at rtol (their global error stays within
+/// a few times rtol on the measured scenes, docs/numerics.md).
+double TimePathAccuracy(double rtol) { return 10.0 * rtol; }
+
+/// The accuracy of the exact path's damped peaks (a quadrature for e_A).
+constexpr double kExactDampedAccuracy = 1e-12;
+
+}  // namespace
+
+const char* ToString(DesignCriterion criterion) noexcept {
+  switch (criterion) {
+    case DesignCriterion::kNoFullCompression: return "no-full-compression";
+    case DesignCriterion::kPaper: return "paper";
+  }
+  return "unknown";
+}
+
+const char* ToString(OracleChoice choice) noexcept {
+  switch (choice) {
+    case OracleChoice::kAuto: return "auto";
+    case OracleChoice::kExact: return "exact";
+    case OracleChoice::kTimePath: return "time-path";
+  }
+  return "unknown";
+}
+
+std::optional<OracleChoice> ParseOracleChoice(std::string_view name) noexcept {
+  for (const OracleChoice c : {OracleChoice::kAuto, OracleChoice::kExact, OracleChoice::kTimePath}) {
+    if (name == ToString(c)) return c;
+  }
+  return std::nullopt;
+}
+
+const char* ToString(OracleKind kind) noexcept {
+  switch (kind) {
+    case OracleKind::kExact: return "exact";
+    case OracleKind::kTimePath: return "time-path";
+  }
+  return "unknown";
+}
+
+const char* ToString(GradientSource source) noexcept {
+  switch (source) {
+    case GradientSource::kAnalytic: return "analytic";
+    case GradientSource::kForwardSensitivities: return "cvodes-forward-sensitivities";
+    case GradientSource::kCentralDifference: return "central-difference";
+  }
+  return "unknown";
+}
+
+bool ExactPathAnswers(const Scene& scene) noexcept { return WhyNoEnergyIntegral(scene).empty(); }
+
+OracleSelection ChooseOracle(const Scene& scene, OracleChoice choice) {
+  const std::string why_not = WhyNoEnergyIntegral(scene);
+  OracleSelection s;
+  switch (choice) {
+    case OracleChoice::kAuto:
+      if (why_not.empty()) {
+        s.kind = OracleKind::kExact;
+        s.reason = scene.is_damped()
+                       ? "auto: the damped two-mass contact keeps an energy relation, the exact path answers every peak"
+                       : "auto: the conservative two-mass impact has an energy integral, the exact path answers "
+                         "every peak";
+      } else {
+        s.kind = OracleKind::kTimePath;
+        s.reason = "auto: " + why_not + ", no energy integral: only the time path answers";
+      }
+      break;
+    case OracleChoice::kExact:
+      if (!why_not.empty()) {
+        throw std::invalid_argument("oracle exact: the exact path needs an energy integral; " + why_not +
+                                    ", so this scene has only the time path; choose auto or time-path");
+      }
+      s.kind = OracleKind::kExact;
+      s.reason = "exact: as asked";
+      break;
+    case OracleChoice::kTimePath:
+      s.kind = OracleKind::kTimePath;
+      s.reason = "time-path: as asked";
+      break;
+  }
+  s.gradient = GradientFor(s.kind, scene);
+  return s;
+}
+
+std::string OracleReport::Name() const {
+  if (kind == OracleKind::kExact) return "exact path";
+  char rtol[32];
+  std::snprintf(rtol, sizeof rtol, "%.0e", relative_tolerance);
+  return "time path (" + std::string(covopt::ToString(method)) + ", rtol " + rtol + ")";
+}
+
+void ValidateTimePathOptions(const TimeIntegrationOptions& o, const std::string& prefix) {
+  if (o.method == ComputationMethod::kExact || covopt::ToString(o.method) == "unknown") {
+    throw std::invalid_argument(prefix + ".method must be a time integrator, not " +
+                                std::string(covopt::ToString(o.method)));
+  }
+  if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
+    throw std::invalid_argument(prefix + ".relative_tolerance must be in [1e-14, 1e-2] (got " +
+                                Number(o.relative_tolerance) + ")");
+  }
+  if (!(o.absolute_tolerance == 0.0 || (o.absolute_tolerance > 0.0 && o.absolute_tolerance <= 1e-2))) {
+    throw std::invalid_argument(prefix + ".absolute_tolerance must be in (0, 1e-2], or 0 for rtol (got " +
+                                Number(o.absolute_tolerance) + ")");
+  }
+  if (o.max_steps < 10) {
+    throw std::invalid_argument(prefix + ".max_steps must be >= 10 (got " + std::to_string(o.max_steps) + ")");
+  }
+}
+
+// --- DesignOracle ----------------------------------------------------------------------
+
+DesignOracle::DesignOracle(const Scene& scene, double covering_poisson_ratio, const InjuryLimits& limits,
+                           OracleSelection selection, const TimeIntegrationOptions* time_path)
+    : scene_(scene), limits_(limits), selection_(std::move(selection)) {
+  scene_.covering.poisson_ratio = covering_poisson_ratio;
+  Scene bare = scene_;
+  bare.covering.thickness_m = 0.0;
+  (void)ImpactModel::FromScene(bare);  // validates everything but the design
+  if (!(limits.laceration_tensile_stress_Pa > 0 && limits.contusion_energy_density_J_per_m2 > 0)) {
+    throw std::invalid_argument("injury limits must be > 0");
+  }
+  if (time_path) {
+    method_ = time_path->method;
+    relative_tolerance_ = time_path->relative_tolerance;
+  }
+}
+
+OracleReport DesignOracle::Report() const {
+  OracleReport r;
+  r.kind = selection_.kind;
+  r.reason = selection_.reason;
+  r.method = method_;
+  r.relative_tolerance = relative_tolerance_;
+  r.gradient = selection_.gradient;
+  r.evaluations = evaluations_.load();
+  r.gradient_evaluations = gradient_evaluations_.load();
+  r.failed_evaluations = failed_evaluations_.load();
+  const std::lock_guard<std::mutex> lock(failure_mutex_);
+  r.first_failure = first_failure_;
+  r.gradient_step_disagreement = gradient_step_disagreement_;
+  return r;
+}
+
+void DesignOracle::Judge(DesignScore& score) const {
+  const InjuryAssessment a = Assess(score.peaks, limits_);
+  score.laceration_ratio = a.laceration.ratio;
+  score.contusion_ratio = a.contusion.ratio;
+  score.compression_ratio =
+      score.bare() ? 0.0 : score.peaks.max_penetration_m / score.peaks.full_compression_penetration_m;
+}
+
+void DesignOracle::Fail(DesignScore& score, const std::string& message) const {
+  ++failed_evaluations_;
+  score.failed = true;
+  score.laceration_ratio = score.contusion_ratio = score.compression_ratio = kInfinity;
+  score.peaks.fully_compressed = true;  // inadmissible under either criterion, on every side of a bisection
+  const std::lock_guard<std::mutex> lock(failure_mutex_);
+  if (first_failure_.empty()) first_failure_ = message;
+}
+
+void DesignOracle::NoteDisagreement(double relative) const {
+  const std::lock_guard<std::mutex> lock(failure_mutex_);
+  gradient_step_disagreement_ = std::max(gradient_step_disagreement_, relative);
+}
+
+Scene DesignOracle::WithCovering(const CoveringDesign& design, double poisson_ratio) const {
+  Scene scene = scene_;
+  scene.covering = {design.youngs_modulus_Pa, poisson_ratio, design.thickness_m};
+  return scene;
+}
+
+double DesignOracle::CompressionThicknessDerivative(const DesignScore& score, double max_penetration_per_m) const {
+  // compression ratio δ_max / t2: t2 moves with b_c by the full-compression fraction f
+  // (cumulative: t2 = t1 + f b_c; literal: t2 = max(f b_c, t1)).
+  const ModelConstants& constants = scene_.model;
+  const double t1 = constants.full_compression_fraction * scene_.scalp.thickness_m;
+  const double covering_travel = constants.full_compression_fraction * score.design.thickness_m;
+  const double dt2_db = (constants.thresholds == ThresholdReading::kCumulative || covering_travel > t1)
+                            ? constants.full_compression_fraction
+                            : 0.0;
+  const double t2 = score.peaks.full_compression_penetration_m;
+  return (max_penetration_per_m - score.compression_ratio * dt2_db) / t2;
+}
+
+// --- ExactPathOracle -------------------------------------------------------------------
+
+ExactPathOracle::ExactPathOracle(const Scene& scene, double covering_poisson_ratio, const InjuryLimits& limits,
+                                 std::string reason)
+    : DesignOracle(scene, covering_poisson_ratio, limits, ChooseOracle(scene, OracleChoice::kExact), nullptr) {
+  selection_.reason = std::move(reason);
+}
+
+DesignScore ExactPathOracle::ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const {
+  ++evaluations_;
+  DesignScore score;
+  score.design = design;
+  score.poisson_ratio = poisson_ratio;
+  score.peaks = ExactPeaks(ImpactModel::FromScene(WithCovering(design, poisson_ratio)));
+  Judge(score);
+  return score;
+}
+
+DesignScore ExactPathOracle::Score(const CoveringDesign& design) const {
+  return ScoreMaterial(design, scene_.covering.poisson_ratio);
+}
+
+DesignScore ExactPathOracle::Score(const CoveringDesign& design, RatioGradient& gradient) const {
+  ++gradient_evaluations_;
+  if (selection_.gradient == GradientSource::kCentralDifference) {
+    const DesignScore score = Score(design);
+    double disagreement = 0.0;
+    CentralDifference([this](const CoveringDesign& d) { return Score(d); }, score,
+                      DifferenceStepFor(kExactDampedAccuracy), gradient, disagreement);
+    NoteDisagreement(disagreement);
+    return score;
+  }
+  ++evaluations_;
+  const Scene scene = WithCovering(design, scene_.covering.poisson_ratio);
+  const ImpactModel model = ImpactModel::FromScene(scene);
+  DesignScore score;
+  score.design = design;
+  score.poisson_ratio = scene.covering.poisson_ratio;
+  score.peaks = ExactPeaks(model);
+  Judge(score);
+  const PeakSensitivities s = ExactPeakSensitivities(model, score.peaks);
+  FillGradient(score, s, limits_,
+               CompressionThicknessDerivative(score, s.per_covering_thickness.max_penetration), gradient);
+  return score;
+}
+
+DesignScore ExactPathOracle::ScoreBare() const {
+  ++evaluations_;
+  Scene scene = scene_;
+  scene.covering.thickness_m = 0.0;
+  DesignScore score;
+  score.design.thickness_m = 0.0;
+  score.peaks = ExactPeaks(ImpactModel::FromScene(scene));
+  Judge(score);
+  return score;
+}
+
+// --- TimePathOracle --------------------------------------------------------------------
+
+TimePathOracle::TimePathOracle(const Scene& scene, double covering_poisson_ratio, const InjuryLimits& limits,
+                               const TimeIntegrationOptions& time_path, std::string reason)
+    : DesignOracle(scene, covering_poisson_ratio, limits,
+                   OracleSelection{OracleKind::kTimePath, std::move(reason), GradientFor(OracleKind::kTimePath, scene)},
+                   &time_path),
+      time_path_(time_path) {
+  ValidateTimePathOptions(time_path);
+  time_path_.record_history = false;
+}
+
+double TimePathOracle::DifferenceStep() const noexcept {
+  const double step = DifferenceStepFor(TimePathAccuracy(time_path_.relative_tolerance));
+  // Differences of differences: a wider step where the gradient is a difference itself.
+  return selection_.gradient == GradientSource::kCentralDifference ? std::min(0.05, 4.0 * step) : step;
+}
+
+DesignScore TimePathOracle::Simulate(const CoveringDesign& design, double poisson_ratio) const {
+  ++evaluations_;
+  DesignScore score;
+  score.design = design;
+  score.poisson_ratio = poisson_ratio;
+  Scene scene = scene_;
+  if (design.thickness_m > 0.0) {
+    scene = WithCovering(design, poisson_ratio);
+  } else {
+    scene.covering.thickness_m = 0.0;  // the bare robot
+  }
+  const ImpactModel model = ImpactModel::FromScene(scene);
+  const ImpactResult result = SimulateImpact(model, time_path_);
+  if (!result.ok()) {
+    Fail(score, "time path at E_c " + Exactly(design.youngs_modulus_Pa) + " Pa, b_c " + Exactly(design.thickness_m) +
+                    " m: " + std::string(covopt::ToString(result.status)) + ": " + result.message);
+    return score;
+  }
+  score.peaks = result.peaks;
+  Judge(score);
+  return score;
+}
+
+DesignScore TimePathOracle::ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const {
+  return Simulate(design, poisson_ratio);
+}
+
+DesignScore TimePathOracle::Score(const CoveringDesign& design) const {
+  return Simulate(design, scene_.covering.poisson_ratio);
+}
+
+DesignScore TimePathOracle::Score(const CoveringDesign& design, RatioGradient& gradient) const {
+  DesignScore score = Simulate(design, scene_.covering.poisson_ratio);
+  if (score.failed) return score;
+  ++gradient_evaluations_;
+  if (selection_.gradient == GradientSource::kCentralDifference) {
+    double disagreement = 0.0;
+    const bool ok = CentralDifference([this](const CoveringDesign& d) { return Score(d); }, score,
+                                      DifferenceStepFor(TimePathAccuracy(time_path_.relative_tolerance)), gradient,
+                                      disagreement);
+    if (!ok) {
+      Fail(score, "time path: a central-difference neighbour failed");
+      return score;
+    }
+    NoteDisagreement(disagreement);
+    return score;
+  }
+  const ImpactModel model = ImpactModel::FromScene(WithCovering(design, scene_.covering.poisson_ratio));
+  const TimePathSensitivities s = TimePathPeakSensitivities(model, time_path_);
+  if (!s.ok()) {
+    Fail(score, "forward sensitivities at E_c " + Exactly(design.youngs_modulus_Pa) + " Pa, b_c " +
+                    Exactly(design.thickness_m) + " m: " + std::string(covopt::ToString(s.status)) + ": " + s.message);
+    return score;
+  }
+  FillGradient(score, s.sensitivities, limits_,
+               CompressionThicknessDerivative(score, s.sensitivities.per_covering_thickness.max_penetration),
+               gradient);
+  return score;
+}
+
+DesignScore TimePathOracle::ScoreBare() const {
+  return Simulate({0.0, 0.0}, scene_.covering.poisson_ratio);
+}
+
+std::unique_ptr<DesignOracle> MakeOracle(const Scene& scene, double covering_poisson_ratio,
+                                         const InjuryLimits& limits, const OracleOptions& options) {
+  const OracleSelection selection = ChooseOracle(scene, options.choice);
+  if (selection.kind == OracleKind::kExact) {
+    return std::make_unique<ExactPathOracle>(scene, covering_poisson_ratio, limits, selection.reason);
+  }
+  return std::make_unique<TimePathOracle>(scene, covering_poisson_ratio, limits, options.time_path,
+                                          selection.reason);
+}
+
+}  // namespace covopt::optim
