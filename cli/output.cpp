@@ -145,6 +145,29 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
              Modulus(s.scalp.youngs_modulus_Pa), s.scalp.poisson_ratio,
              Modulus(s.skull.youngs_modulus_Pa), s.skull.poisson_ratio,
              ThresholdsName(s.model.thresholds));
+  // The inputs beyond the paper's conservative two-mass scene (docs/model.md §10), when set.
+  std::vector<std::string> extended;
+  if (s.is_damped()) {
+    extended.push_back(fmt::format(
+        "contact damping {}", FormatQuantity(s.model.damping_s_per_m, QuantityKind::kDampingCoefficient)));
+  }
+  if (s.robot_brakes()) {
+    extended.push_back(fmt::format(
+        "the robot brakes at {} from {} after first contact",
+        FormatQuantity(s.robot.braking_m_per_s2, QuantityKind::kAcceleration),
+        FormatQuantity(s.robot.reaction_delay_s, QuantityKind::kTime)));
+  } else if (s.robot.reaction_delay_s > 0.0) {
+    extended.push_back(fmt::format("reaction delay {} (no braking)",
+                                   FormatQuantity(s.robot.reaction_delay_s, QuantityKind::kTime)));
+  }
+  if (s.head.has_neck()) {
+    extended.push_back(fmt::format(
+        "neck to a torso {}: stiffness {}, damping {}",
+        std::isinf(s.head.torso_mass_kg) ? std::string("held fixed") : Mass(s.head.torso_mass_kg),
+        FormatQuantity(s.head.neck_stiffness_N_per_m, QuantityKind::kStiffness),
+        FormatQuantity(s.head.neck_damping_N_s_per_m, QuantityKind::kViscousDamping)));
+  }
+  if (!extended.empty()) fmt::print(out, "        {}\n", fmt::join(extended, "; "));
 
   fmt::print(out, "\nPeaks\n");
   Row(out, "max penetration", fmt::format("{:.6g} mm", p.max_penetration_m * 1e3));
@@ -161,7 +184,14 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
   Row(out, "max energy density",
       fmt::format("{:.6g} J/cm²", p.max_energy_density_J_per_m2 / 1e4));
   if (r.rebound_speed_m_per_s) {
-    Row(out, "rebound speed", fmt::format("{:.6g} m/s", *r.rebound_speed_m_per_s));
+    // The coefficient of restitution is 1 in the conservative model; it is shown where
+    // damping, braking or a neck make it differ.
+    const bool restitution = r.coefficient_of_restitution && !s.is_conservative_two_mass();
+    Row(out, "rebound speed",
+        fmt::format("{:.6g} m/s{}", *r.rebound_speed_m_per_s,
+                    restitution ? fmt::format(" (coefficient of restitution {:.6g})",
+                                              *r.coefficient_of_restitution)
+                                : std::string()));
   }
   Row(out, "phase at max",
       fmt::format("{} ({})", PhaseNumber(p.phase_at_max), ToString(p.phase_at_max)));
@@ -218,14 +248,21 @@ Json ToJson(const SimulationReport& report) {
 
 std::string HistoryCsv(const ImpactModel& model, const std::vector<HistorySample>& history) {
   const auto field = [](double v) { return std::isfinite(v) ? fmt::format("{}", v) : std::string(); };
+  const bool extended = !model.scene().is_conservative_two_mass();
   std::string csv(kHistoryCsvHeader);
+  if (extended) csv += kHistoryCsvExtendedColumns;
   csv += '\n';
   for (const HistorySample& h : history) {
-    csv += fmt::format("{},{},{},{},{},{},{}\n", field(h.time_s), field(h.penetration_m),
+    csv += fmt::format("{},{},{},{},{},{},{}", field(h.time_s), field(h.penetration_m),
                        field(h.penetration_rate_m_per_s), field(h.force_N),
                        field(h.compressive_stress_Pa),
                        field(model.TensileFromCompressive(h.compressive_stress_Pa)),
                        field(h.energy_density_J_per_m2));
+    if (extended) {
+      csv += fmt::format(",{},{},{},{}", field(h.robot_speed_m_per_s), field(h.head_speed_m_per_s),
+                         field(h.neck_force_N), field(h.dissipated_work_J));
+    }
+    csv += '\n';
   }
   return csv;
 }

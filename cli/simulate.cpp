@@ -186,9 +186,10 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
       ->group("Limits");
 
   sub->add_option("--method", options.method,
-                  "exact (energy balance; default), cvode (CVODE, see --cvode-method), or "
-                  "one integrator: " + IntegratorNames() + fmt::format(". --history/--plot "
-                  "need a time path: {} unless given",
+                  "auto (default: the exact energy balance where the scene admits it, else "
+                  "the time path), exact, cvode (CVODE, see --cvode-method), or one "
+                  "integrator: " + IntegratorNames() + fmt::format(". --history/--plot, "
+                  "--braking and a neck need a time path: {} unless given",
                   ToString(TimeIntegrationOptions{}.method)))
       ->type_name("METHOD")
       ->group("Computation");
@@ -291,11 +292,14 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     plan.plot_format = *format;
   }
 
-  // The computation path.
+  // The computation path. auto (the default) takes the exact path where the scene admits it
+  // (conservative or damped: an energy integral exists) and the time path for a braking robot
+  // or a neck (docs/model.md §10) or for a history.
   const bool needs_history = plan.history_file || plan.plot_file;
-  bool time_path = needs_history;
+  const bool exact_admits = !plan.scene.robot_brakes() && !plan.scene.head.has_neck();
+  bool time_path = needs_history || !exact_admits;
   std::optional<ComputationMethod> integrator;
-  if (options.method) {
+  if (options.method && *options.method != "auto") {
     if (*options.method == "cvode") {
       time_path = true;
     } else if (const auto named = ParseComputationMethod(*options.method);
@@ -303,6 +307,11 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
       time_path = true;
       integrator = named;
     } else if (*options.method == "exact") {
+      if (!exact_admits) {
+        throw InputError(
+            "--method exact: the exact path needs an energy integral; a scene with braking or a "
+            "neck has only the time path; use --method auto or a time integrator");
+      }
       if (needs_history) {
         throw InputError(fmt::format(
             "--method exact computes no time history, which {} needs; drop --method exact "
@@ -310,7 +319,8 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
             plan.history_file ? "--history" : "--plot"));
       }
     } else {
-      throw InputError(fmt::format("--method: expected exact, cvode or one of {} (got '{}')",
+      throw InputError(fmt::format("--method: expected exact, cvode or one of {}, or auto "
+                                   "(the default) (got '{}')",
                                    IntegratorNames(), *options.method));
     }
   }
@@ -321,7 +331,9 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
                                       std::pair{"--max-steps", options.max_steps.has_value()}}) {
       if (given) {
         throw InputError(fmt::format(
-            "{} applies to the time path only; add --method cvode", flag));
+            "{} applies to the time path only, and this scene takes the exact path; add "
+            "--method cvode (or another integrator)",
+            flag));
       }
     }
     return plan;
@@ -467,10 +479,18 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
     }
     report.time_options = plan.time_options;
     if (report.time_options && report.time_options->record_history) {
-      // Smooth charts: at least ~400 samples over the contact, by CVODE's dense output. The
-      // exact duration (a few µs) sets the spacing; the history itself is integrated.
-      const ImpactPeaks peaks = ExactPeaks(*model);
-      report.time_options->history_max_interval_s = ExactContactDuration(*model, peaks) / 400.0;
+      // Smooth charts: at least ~400 samples over the contact, by the integrator's dense
+      // output. The duration sets the spacing: the exact one (a few µs to compute) for a
+      // conservative scene, else a first run without a history; the history is integrated.
+      double duration_s = 0.0;
+      if (plan.scene.is_conservative_two_mass()) {
+        duration_s = ExactContactDuration(*model, ExactPeaks(*model));
+      } else {
+        TimeIntegrationOptions first_run = *report.time_options;
+        first_run.record_history = false;
+        duration_s = SimulateImpact(*model, first_run).contact_duration_s.value_or(0.0);
+      }
+      report.time_options->history_max_interval_s = duration_s / 400.0;  // 0: steps only
     }
     report.result = report.time_options ? SimulateImpact(*model, *report.time_options)
                                         : SolveExact(*model);

@@ -3,8 +3,8 @@
 /// `covopt simulate`: one impact, its peaks and the injury verdicts.
 ///
 /// The scene is Scene{} (the paper's), then the --scene file, then the flags. The exact
-/// path answers unless a history or a plot is asked for, which needs the time path
-/// (CVODE). Exit codes: 0 done, 1 the computation or an output failed, 2 bad input (one
+/// path answers unless a history or a plot is asked for, or the scene has a braking robot
+/// or a neck (docs/model.md §10), which need the time path. Exit codes: 0 done, 1 the computation or an output failed, 2 bad input (one
 /// message on stderr, nothing on stdout).
 
 #include <map>
@@ -50,9 +50,11 @@ struct SimulateOptions {
   /// --safety-factor (simulate only), in [1, 100]: each verdict is judged against its limit
   /// divided by it. Default: the scene file's limits.safety_factor, else 1.
   std::optional<std::string> safety_factor;
-  /// --method exact|cvode|<integrator> (cvode-adams, arkode-erk54, ...: see
-  /// TimeIntegrationMethods()). Default: exact, or the library's default integrator
-  /// (TimeIntegrationOptions::method) when --history or --plot is given.
+  /// --method auto|exact|cvode|<integrator> (cvode-adams, arkode-erk54, ...: see
+  /// TimeIntegrationMethods()). Default auto: exact where the scene has an energy integral
+  /// (conservative or damped), else the library's default integrator
+  /// (TimeIntegrationOptions::method), which also runs when --history or --plot is given.
+  /// exact on a braking or neck scene is bad input.
   std::optional<std::string> method;
   /// --cvode-method adams|bdf. Default: adams.
   std::optional<std::string> cvode_method;

@@ -161,6 +161,7 @@ const std::array kResultColumns{
   ResultColumn{"max_tensile_stress_Pa", [](const SweepRow& p) { return p.peaks.max_tensile_stress_Pa; }, false},
   ResultColumn{"max_energy_density_J_per_m2", [](const SweepRow& p) { return p.peaks.max_energy_density_J_per_m2; }, false},
   ResultColumn{"rebound_speed_m_per_s", [](const SweepRow& p) { return p.rebound_speed_m_per_s; }, false},
+  ResultColumn{"coefficient_of_restitution", [](const SweepRow& p) { return p.coefficient_of_restitution; }, false},
   ResultColumn{"phase_at_max", [](const SweepRow& p) { return static_cast<double>(PhaseNumber(p.peaks.phase_at_max)); }, true},
   ResultColumn{"scalp_fully_compressed", [](const SweepRow& p) { return p.peaks.scalp_fully_compressed ? 1.0 : 0.0; }, true},
   ResultColumn{"fully_compressed", [](const SweepRow& p) { return p.peaks.fully_compressed ? 1.0 : 0.0; }, true},

@@ -113,6 +113,7 @@ void SolveRow(const SweepSpec& spec, const SweepOptions& options, const SceneFie
     row.contact_duration_s = result.contact_duration_s;
     row.time_of_max_compression_s = result.time_of_max_compression_s;
     row.rebound_speed_m_per_s = result.rebound_speed_m_per_s.value_or(0.0);
+    row.coefficient_of_restitution = result.coefficient_of_restitution.value_or(0.0);
     row.assessment = Assess(result.peaks, spec.limits);
     for (InjuryVerdict* verdict : {&row.assessment.laceration, &row.assessment.contusion}) {
       verdict->safe = spec.safety_factor * verdict->ratio <= 1.0;
@@ -129,6 +130,7 @@ void SolveRow(const SweepSpec& spec, const SweepOptions& options, const SceneFie
     row.contact_duration_s.reset();
     row.time_of_max_compression_s.reset();
     row.rebound_speed_m_per_s = 0.0;
+    row.coefficient_of_restitution = 0.0;
     row.assessment = {};
     row.worst_ratio = 0.0;
     row.compression_ratio = 0.0;

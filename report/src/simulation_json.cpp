@@ -90,6 +90,7 @@ std::string SimulationJson(const SimulationReport& report, int indent) {
   j["max_tensile_stress_Pa"] = Number(p.max_tensile_stress_Pa);
   j["max_energy_density_J_per_m2"] = Number(p.max_energy_density_J_per_m2);
   j["rebound_speed_m_per_s"] = Number(r.rebound_speed_m_per_s);
+  j["coefficient_of_restitution"] = Number(r.coefficient_of_restitution);
   j["phase_at_max"] = PhaseNumber(p.phase_at_max);
   j["phase_at_max_name"] = ToString(p.phase_at_max);
   j["scalp_fully_compressed"] = p.scalp_fully_compressed;

@@ -114,6 +114,8 @@ struct SweepRow {
   /// Relative speed at separation [m/s] (the impact speed, less with damping, braking or a
   /// damped neck).
   double rebound_speed_m_per_s = 0.0;
+  /// Rebound speed / impact speed [-] (ImpactResult::coefficient_of_restitution).
+  double coefficient_of_restitution = 0.0;
   /// Laceration (σ_t,max) and contusion (e_A,max) against SweepSpec::limits: ratios are
   /// value / limit [-]; `safe` is safety_factor x ratio <= 1.
   InjuryAssessment assessment;
