@@ -502,6 +502,30 @@ TEST_CASE("A vanishing neck leaves a free head", "[extended][neck]") {
   CHECK(held.peaks.max_penetration_m > reference.peaks.max_penetration_m);
 }
 
+TEST_CASE("A neck can make δ rise again: δ_max is the largest of its maxima", "[extended][neck]") {
+  // A heavy robot presses the head into a neck on a fixed torso; the neck sends the head back.
+  Scene scene = NeckScene(kFixed, 1e5, 0.0);
+  scene.robot.mass_kg = 100.0;
+  const ImpactModel model = ImpactModel::FromScene(scene);
+  const ImpactResult r = Simulate(scene, 1e-9, ComputationMethod::kArkodeErk54, false, true);
+  REQUIRE(r.ok());
+  int maxima = 0;
+  double largest = 0.0;
+  for (std::size_t i = 1; i < r.history.size(); ++i) {
+    if (r.history[i - 1].penetration_rate_m_per_s > 0.0 && r.history[i].penetration_rate_m_per_s <= 0.0) ++maxima;
+    largest = std::max(largest, r.history[i].penetration_m);
+  }
+  CHECK(maxima >= 3);
+  CHECK(r.peaks.max_penetration_m == largest);  // every maximum is an event sample
+  const HistorySample& at_max = *std::find_if(r.history.begin(), r.history.end(), [&](const HistorySample& s) {
+    return s.penetration_m == largest;
+  });
+  CHECK(*r.time_of_max_compression_s == at_max.time_s);
+  CHECK(r.peaks.peak_force_N == model.StateAt(largest).force_N);  // undamped: the law at δ_max
+  CHECK(r.peaks.max_energy_density_J_per_m2 == at_max.energy_density_J_per_m2);
+  CHECK(*r.energy_residual < 100 * 1e-9);
+}
+
 TEST_CASE("A contact that cannot end is a status, not a hang", "[extended][failure]") {
   // A fixed robot keeps driving the head into a fixed torso.
   Scene scene = NeckScene(kFixed, 1e6, 0.0);
