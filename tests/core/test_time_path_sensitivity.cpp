@@ -217,7 +217,7 @@ TEST_CASE("time-path sensitivities refuse what they do not cover") {
                       Catch::Contains("rtol"));
 }
 
-TEST_CASE("a step limit is a status, not an exception") {
+TEST_CASE("a step limit of the sensitivity run is a status, not an exception") {
   TimeIntegrationOptions options;
   options.max_steps = 10;
   const TimePathSensitivities time = TimePathPeakSensitivities(ImpactModel::FromScene(Design(27.6e6, 0.015)), options);
