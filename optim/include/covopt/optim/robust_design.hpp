@@ -234,7 +234,8 @@ struct RobustDesignOptions {
   /// factor, limits, ν_c of the continuous design, the catalog scan (thickness_scan_points,
   /// thickness_resolution_m), thickness_step_m, threads (materials in parallel; the result is
   /// identical for any count), bracket_thickness_points and modulus_points_per_decade (the
-  /// continuous nested search). Its NLopt and Ipopt settings are not used.
+  /// continuous nested search). Its NLopt and Ipopt settings and its oracle are not used: the
+  /// robust searches run on the exact path.
   DesignOptions design;
   /// The inner worst-case search run to confirm each design.
   GlobalSearchOptions worst_case;
@@ -427,7 +428,8 @@ double InverseStandardNormalCdf(double p) noexcept;
 /// Options of FindProbabilityDesign.
 struct ProbabilityDesignOptions {
   /// The design problem (space, criterion, safety factor, limits, ν_c, catalog scan, stock
-  /// step, bracket grid) as in RobustDesignOptions::design. Materials run one after another;
+  /// step, bracket grid) as in RobustDesignOptions::design (exact path; its solver and oracle
+  /// settings are not used). Materials run one after another;
   /// the samples of each design are spread over `sampling.threads`.
   DesignOptions design;
   /// samples, seed, threads and block_samples; progress is called after each stage (the bare
