@@ -17,12 +17,12 @@
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
-#include "covopt/core/time_integration.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/optim/design.hpp"
 #include "covopt/report/design_json.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
+#include "oracle_options.hpp"
 #include "output.hpp"
 #include "quantity.hpp"
 #include "scene_fields.hpp"
@@ -79,61 +79,7 @@ bool IsCoveringField(const SceneField& field) { return field.table == "covering"
 
 /// --oracle, --method and --rtol into the request's OracleOptions (the scene must be read).
 void ResolveOracle(const OptimizeOptions& o, Resolved& r) {
-  optim::OracleOptions& oracle = r.request.options.oracle;
-  if (o.oracle) {
-    const auto choice = optim::ParseOracleChoice(*o.oracle);
-    if (!choice) throw InputError(fmt::format("--oracle: expected auto, exact or time-path (got '{}')", *o.oracle));
-    oracle.choice = *choice;
-  }
-  bool method_exact = false;
-  if (o.method) {
-    if (*o.method == "exact") {
-      method_exact = true;
-    } else if (*o.method == "cvode") {
-      oracle.time_path.method = ComputationMethod::kCvodeAdams;
-    } else if (const auto named = ParseComputationMethod(*o.method); named && *named != ComputationMethod::kExact) {
-      oracle.time_path.method = *named;
-    } else {
-      throw InputError(fmt::format("--method: expected exact, cvode or one of {} (got '{}')", IntegratorNames(),
-                                   *o.method));
-    }
-  }
-  if (method_exact) {
-    if (oracle.choice == optim::OracleChoice::kTimePath) {
-      throw InputError("--method exact contradicts --oracle time-path: the time path runs an integrator; give one "
-                       "of " + IntegratorNames() + ", or --oracle exact");
-    }
-    if (o.rtol) throw InputError("--rtol applies to the time path; --method exact runs none");
-    oracle.choice = optim::OracleChoice::kExact;
-  }
-  if (o.rtol) {
-    oracle.time_path.relative_tolerance = ParseQuantity(*o.rtol, quantity_specs::kTolerance, "--rtol");
-    if (!(oracle.time_path.relative_tolerance >= 1e-14 && oracle.time_path.relative_tolerance <= 1e-2)) {
-      throw InputError(fmt::format("--rtol must be in [1e-14, 1e-2] (got '{}')", *o.rtol));
-    }
-  }
-  const Scene& scene = r.request.scene;
-  if (oracle.choice == optim::OracleChoice::kExact) {
-    if (o.method && !method_exact) {
-      throw InputError(fmt::format("--method {} applies to the time path; --oracle exact runs none", *o.method));
-    }
-    if (o.rtol) throw InputError("--rtol applies to the time path; --oracle exact runs none");
-    try {
-      (void)optim::ChooseOracle(scene, oracle.choice);
-    } catch (const std::invalid_argument&) {
-      throw InputError(fmt::format(
-          "--oracle exact: the exact path needs an energy integral; a scene with {} has only the time path; use "
-          "--oracle auto or time-path",
-          scene.robot_brakes() && scene.head.has_neck() ? "braking and a neck"
-          : scene.robot_brakes()                         ? "braking (--braking)"
-                                                         : "a neck (--torso-mass)"));
-    }
-  } else if (oracle.choice == optim::OracleChoice::kAuto && (o.method || o.rtol) &&
-             optim::ChooseOracle(scene, oracle.choice).kind == optim::OracleKind::kExact) {
-    r.warnings.push_back(fmt::format("{} not used: auto chose the exact path for this scene (add --oracle "
-                                     "time-path to optimise on the time path)",
-                                     o.method && o.rtol ? "--method and --rtol are" : o.method ? "--method is" : "--rtol is"));
-  }
+  r.request.options.oracle = ResolveOracleFlags(o.oracle_flags, r.request.scene, "optimise", r.warnings);
 }
 
 Resolved Resolve(const OptimizeOptions& o) {
@@ -342,22 +288,7 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
   sub->add_option("--threads", options.threads,
                   "threads of the per-material catalog snap, 1-256 (default 1); the answer does not depend on it")
       ->type_name("N")->group("Solver");
-  sub->add_option("--oracle", options.oracle,
-                  "which path scores the designs: auto (default: exact where the scene has an energy integral, "
-                  "else the time path), exact, or time-path")
-      ->type_name("auto|exact|time-path")
-      ->group("Solver");
-  sub->add_option("--method", options.method,
-                  fmt::format("the time path's integrator: cvode (Adams) or one of {} (default {}); exact "
-                              "means --oracle exact",
-                              IntegratorNames(), ToString(TimeIntegrationOptions{}.method)))
-      ->type_name("INTEGRATOR")
-      ->group("Solver");
-  sub->add_option("--rtol", options.rtol,
-                  fmt::format("the time path's relative tolerance, in [1e-14, 1e-2] (default {:g})",
-                              TimeIntegrationOptions{}.relative_tolerance))
-      ->type_name("RATIO")
-      ->group("Solver");
+  AddOracleOptions(*sub, options.oracle_flags, "the designs", "Solver");
   sub->add_option("--top", options.runners_up, "rows of the candidate table (default 8)")->type_name("N")->group("Output");
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the report")->group("Output");
   return sub;

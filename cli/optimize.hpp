@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "materials_command.hpp"
+#include "oracle_options.hpp"
 #include "robot_model_options.hpp"
 
 namespace CLI {
@@ -51,9 +52,7 @@ struct OptimizeOptions {
   std::optional<std::string> seed;              ///< --seed: a whole number
   std::optional<std::string> runners_up;        ///< --top N rows in the table (default 8)
   std::optional<std::string> threads;           ///< --threads N of the catalog snap (default 1)
-  std::optional<std::string> oracle;            ///< --oracle auto|exact|time-path (default auto)
-  std::optional<std::string> method;            ///< --method: the time path's integrator (or exact)
-  std::optional<std::string> rtol;              ///< --rtol: the time path's relative tolerance
+  OracleFlags oracle_flags;                     ///< --oracle, --method, --rtol
   bool json = false;
 };
 

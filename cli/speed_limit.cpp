@@ -31,6 +31,12 @@ list/range as in 'covopt sweep': 0.5kg..50kg:log:20,fixed gives one row each.
 covering and one for the bare robot, over the range of --robot-mass (without a
 list, 0.5 kg .. 200 kg).
 
+The oracle (--oracle): auto takes the exact path's solve along the
+penetration where the scene allows it (the conservative two-mass impact),
+the exact path with damping, the time path with braking or a neck; time-path
+runs the SUNDIALS integrator --method at --rtol on every impact of a
+bracketed bisection.
+
 Exit codes: 0 an answer (also "no speed is safe"); 1 an output could not be
 written; 2 bad input.)";
 
@@ -271,6 +277,7 @@ CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
                   "--speed")
       ->type_name("speed|mass")
       ->group("Limits");
+  AddOracleOptions(*sub, options.oracle, "the impacts of the search", "Oracle");
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")->group("Output");
   sub->add_option("--csv", options.csv_file, "write the rows as CSV ('-': to stdout instead of the table)")
       ->type_name("FILE.csv|-")
@@ -345,6 +352,8 @@ SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
   plan.options.limits = first.limits;
   plan.options.safety_factor = first.safety_factor;
   plan.options.allow_full_compression = options.allow_full_compression;
+  // The coverings differ only in their covering: the first scene decides what the oracle may be.
+  plan.options.oracle = ResolveOracleFlags(options.oracle, first.scene, "search", plan.warnings);
   plan.json = options.json;
   if (options.csv_file) {
     if (options.csv_file->empty()) throw InputError("--csv: empty file name");
@@ -389,6 +398,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
       }
     }
   }
+  for (const std::string& w : plan.warnings) input_warnings.push_back(w);
   const Scene& scene = plan.coverings.front().scene;
   try {
     if (plan.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);

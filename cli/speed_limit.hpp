@@ -6,6 +6,7 @@
 ///
 ///     covopt speed-limit [scene flags] [--material NAME]... [--robot-mass 0.5kg..50kg:log:20,fixed]
 ///                        [--solve-for speed|mass] [--safety-factor X] [--allow-full-compression]
+///                        [--oracle auto|exact|time-path] [--method INTEGRATOR] [--rtol X]
 ///                        [--json] [--csv FILE|-] [--plot FILE.png|FILE.svg]
 ///
 /// The scene comes from Scene{}, --scene, the scene flags and --material exactly as in
@@ -23,6 +24,7 @@
 
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/report/speed_limit_json.hpp"
+#include "oracle_options.hpp"
 #include "plot.hpp"
 #include "simulate.hpp"
 
@@ -44,6 +46,8 @@ struct SpeedLimitCommandOptions {
   std::optional<std::string> solve_for;
   /// --allow-full-compression: the paper's criterion (the ratios only).
   bool allow_full_compression = false;
+  /// --oracle, --method, --rtol: which path judges the impacts (as `covopt optimize`).
+  OracleFlags oracle;
   bool json = false;                      ///< --json
   std::optional<std::string> csv_file;    ///< --csv FILE ("-": stdout instead of the table)
   std::optional<std::string> plot_file;   ///< --plot FILE.png|FILE.svg (solve-for speed)
@@ -60,6 +64,8 @@ struct SpeedLimitPlan {
   /// How messages name where the values came from: "--robot-mass '0.5kg..50kg'" or "".
   std::string values_source;
   optim::SpeedLimitOptions options;
+  /// About the oracle flags (e.g. --rtol not used because auto chose the exact path).
+  std::vector<std::string> warnings;
   bool json = false;
   std::optional<std::string> csv_file;
   std::optional<std::string> plot_file;

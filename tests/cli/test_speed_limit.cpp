@@ -255,3 +255,86 @@ TEST_CASE("speed-limit bad input: exit 2, one line naming the flag, nothing on s
     CHECK(run.err.find(named[i]) != std::string::npos);
   }
 }
+
+TEST_CASE("speed-limit --oracle: auto takes the exact path's solve on the paper's scene", "[speed_limit][oracle]") {
+  const json j = JsonOf(Run({"speed-limit", "--json"}));
+  CHECK(j["oracle"]["name"] == "exact");
+  CHECK(j["oracle"]["search"] == "penetration-axis");
+  CHECK(j["oracle"]["method"].is_null());
+  CHECK_THAT(j["oracle"]["reason"].get<std::string>(), Catch::StartsWith("auto:"));
+  CHECK(j["warnings"].empty());
+  // --oracle exact says the same as auto here, to the bit.
+  const json exact = JsonOf(Run({"speed-limit", "--json", "--oracle", "exact"}));
+  CHECK(exact["oracle"]["name"] == "exact");
+  CHECK(exact["rows"][0]["max_safe_speed_m_per_s"] == j["rows"][0]["max_safe_speed_m_per_s"]);
+  // --rtol under auto on a scene the exact path answers: not used, and a warning says so.
+  const json unused = JsonOf(Run({"speed-limit", "--json", "--rtol", "1e-6"}));
+  CHECK(unused["oracle"]["name"] == "exact");
+  REQUIRE(unused["warnings"].size() == 1);
+  CHECK_THAT(unused["warnings"][0].get<std::string>(),
+             Catch::Contains("--rtol is not used: auto chose the exact path") &&
+                 Catch::Contains("--oracle time-path to search on the time path"));
+}
+
+TEST_CASE("speed-limit --oracle time-path brackets the limit on the time path and agrees with the exact path",
+          "[speed_limit][oracle]") {
+  const json exact = JsonOf(Run({"speed-limit", "--json"}));
+  const json time = JsonOf(Run({"speed-limit", "--json", "--oracle", "time-path"}));
+  CHECK(time["oracle"]["name"] == "time-path");
+  CHECK(time["oracle"]["search"] == "bracketed-bisection");
+  CHECK(time["oracle"]["method"] == "arkode-erk54");  // the library's default integrator
+  CHECK(time["oracle"]["rtol"] == 1e-8);
+  CHECK(time["oracle"]["failed_evaluations"] == 0);
+  CHECK(time["oracle"]["evaluations"].get<long>() > 10);
+  const double exact_speed = exact["rows"][0]["max_safe_speed_m_per_s"].get<double>();
+  const double time_speed = time["rows"][0]["max_safe_speed_m_per_s"].get<double>();
+  CHECK(time["rows"][0]["limited_by"] == exact["rows"][0]["limited_by"]);
+  CHECK(std::abs(time_speed - exact_speed) <= 1e-6 * exact_speed);  // measured 5e-9 at rtol 1e-8
+
+  // --method and --rtol reach the integrator, and the table says which oracle ran.
+  const CliRun table = Run({"speed-limit", "--oracle", "time-path", "--method", "cvode", "--rtol", "1e-9"});
+  INFO(table.err);
+  REQUIRE(table.exit_code == 0);
+  CHECK_THAT(table.out, Catch::Contains("Oracle     time path (cvode-adams, rtol 1e-09), a bracketed bisection"));
+  CHECK_THAT(table.out, Catch::Contains(fmt::format("{:.4g} m/s", exact_speed)));
+}
+
+TEST_CASE("speed-limit --oracle, --method, --rtol: bad input exits 2 with one line naming the flag",
+          "[speed_limit][oracle]") {
+  const std::vector<std::vector<std::string>> cases = {
+      {"--oracle", "foo"},
+      {"--oracle", "exact", "--braking", "50m/s2"},
+      {"--oracle", "exact", "--torso-mass", "30kg", "--neck-stiffness", "20kN/m"},
+      {"--oracle", "time-path", "--method", "exact"},
+      {"--oracle", "exact", "--method", "arkode-erk54"},
+      {"--oracle", "exact", "--rtol", "1e-6"},
+      {"--method", "rk4"},
+      {"--oracle", "time-path", "--rtol", "0.5"},
+      {"--oracle", "time-path", "--rtol", "abc"},
+  };
+  const std::vector<std::string> named = {"--oracle: expected auto, exact or time-path (got 'foo')",
+                                          "--oracle exact: the exact path needs an energy integral; a scene with "
+                                          "braking (--braking) has only the time path",
+                                          "a neck (--torso-mass) has only the time path",
+                                          "--method exact contradicts --oracle time-path",
+                                          "--method arkode-erk54 applies to the time path",
+                                          "--rtol applies to the time path",
+                                          "--method: expected exact, cvode or one of",
+                                          "--rtol must be in [1e-14, 1e-2] (got '0.5')",
+                                          "--rtol"};
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    std::vector<std::string> args{"speed-limit"};
+    args.insert(args.end(), cases[i].begin(), cases[i].end());
+    const CliRun run = Run(args);
+    INFO(fmt::format("{}", fmt::join(args, " ")) << " -> " << run.err);
+    CHECK(run.exit_code == 2);
+    CHECK(run.out.empty());
+    CHECK(SplitLines(run.err).size() == 1);
+    CHECK(run.err.find(named[i]) != std::string::npos);
+  }
+  // On a braking scene auto takes the time path: no refusal, and the table says so.
+  const CliRun braking = Run({"speed-limit", "--braking", "50m/s2"});
+  INFO(braking.err);
+  CHECK(braking.exit_code == 0);
+  CHECK_THAT(braking.out, Catch::Contains("Oracle     time path"));
+}

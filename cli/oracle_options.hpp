@@ -1,0 +1,44 @@
+#pragma once
+/// @file oracle_options.hpp
+/// The flags --oracle, --method and --rtol of the commands that judge impacts through an
+/// oracle (`optimize`, `speed-limit`): which path answers (docs/model.md §10.4), the time
+/// path's integrator and its relative tolerance. One parser, so both commands take the same
+/// values and refuse the same contradictions with the same messages.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "covopt/core/scene.hpp"
+#include "covopt/optim/oracle.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace covopt::cli {
+
+/// --oracle, --method and --rtol as typed.
+struct OracleFlags {
+  std::optional<std::string> oracle;  ///< --oracle auto|exact|time-path (default auto)
+  std::optional<std::string> method;  ///< --method: the time path's integrator (or exact)
+  std::optional<std::string> rtol;    ///< --rtol: the time path's relative tolerance [-]
+  bool given() const noexcept { return oracle || method || rtol; }
+};
+
+/// Adds the three options to `sub` in `group`; `judged` says what the oracle judges ("the
+/// designs", "the impacts of the limit search").
+void AddOracleOptions(CLI::App& sub, OracleFlags& flags, std::string_view judged, std::string_view group);
+
+/// The oracle options the flags ask for on `scene` (read and checked: its braking and neck
+/// decide what --oracle exact may answer and what auto chooses). `purpose` completes the
+/// warning given when auto takes the exact path although --method or --rtol was typed: "(add
+/// --oracle time-path to <purpose> on the time path)".
+/// @throws InputError naming the flag, the value and what is allowed: an unknown oracle or
+///         integrator, --rtol outside [1e-14, 1e-2], --method exact with --oracle time-path,
+///         --method/--rtol with the exact path, --oracle exact on a braking or neck scene.
+optim::OracleOptions ResolveOracleFlags(const OracleFlags& flags, const Scene& scene, std::string_view purpose,
+                                        std::vector<std::string>& warnings);
+
+}  // namespace covopt::cli
