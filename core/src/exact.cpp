@@ -57,8 +57,9 @@ ImpactPeaks ExactPeaks(const ImpactModel& model) noexcept {
   }
   const std::size_t i = PeakSegment(model, model.impact_energy_J());
   const ForceLawSegment& seg = model.segment(i);
-  const double x = SolveEnergyBalance(seg, model.impact_energy_J() - seg.energy_at_start_J);
-  return PeaksAtMaxPenetration(model, i, seg.origin_m + x);
+  const double delta_max =
+      SolveEnergyBalance(seg, model.impact_energy_J() - seg.energy_at_start_J);
+  return PeaksAtMaxPenetration(model, i, delta_max);
 }
 
 double ExactContactDuration(const ImpactModel& model, const ImpactPeaks& peaks) noexcept {

@@ -418,8 +418,7 @@ DampingSplits SplitsOf(const ImpactModel& model, double energy_at_max_J, double 
     if (!(energy > 0.0)) break;
     const std::size_t j = PeakSegment(model, energy);
     const ForceLawSegment& seg = model.segment(j);
-    splits.penetration_m[splits.count++] =
-        seg.origin_m + SolveEnergyBalance(seg, energy - seg.energy_at_start_J);
+    splits.penetration_m[splits.count++] = SolveEnergyBalance(seg, energy - seg.energy_at_start_J);
   }
   return splits;
 }
@@ -475,7 +474,7 @@ ImpactPeaks DampedExactPeaks(const ImpactModel& model) noexcept {
   const std::size_t top = PeakSegment(model, energy);
   const ForceLawSegment& top_segment = model.segment(top);
   const double delta_max =
-      top_segment.origin_m + SolveEnergyBalance(top_segment, energy - top_segment.energy_at_start_J);
+      SolveEnergyBalance(top_segment, energy - top_segment.energy_at_start_J);
   // δ_max's phase, the compression flags and e_el(δ_max); F and σ are replaced below.
   ImpactPeaks peaks = PeaksAtMaxPenetration(model, top, delta_max);
 
@@ -507,8 +506,12 @@ ImpactPeaks DampedExactPeaks(const ImpactModel& model) noexcept {
     const double x_pow_n = std::pow(x, n);
     const double kc = kHertzPressureFactor * seg.stiffness * seg.curvature_per_m;
     const double force_el = seg.force_offset_N + seg.stiffness * x_pow_n;
-    const double density_el = seg.energy_density_at_start_J_per_m2 + seg.stress_offset_Pa * (x - x0) +
-                              kc * (x_pow_n - (x0 > 0.0 ? std::pow(x0, n) : 0.0)) / n;
+    // x^n - x0^n as x0^n expm1(n log1p((x - x0)/x0)) where x0 > 0: no cancellation just
+    // past the start (x - x0 is exact there).
+    const double power_difference =
+        x0 > 0.0 ? std::pow(x0, n) * std::expm1(n * std::log1p((x - x0) / x0)) : x_pow_n;
+    const double density_el = seg.energy_density_at_start_J_per_m2 +
+                              seg.stress_offset_Pa * (x - x0) + kc * power_difference / n;
     const double a = d * q;
     const double ratio = SpeedRatio(a);
     // (1 + d v) 2s/v with v = q ρ: (1 + a ρ) 2s/(q ρ)

@@ -294,8 +294,13 @@ ContactState ImpactModel::StateInSegment(std::size_t i, double penetration_m) co
   double u_local = seg.stiffness * x_pow_n * x / (n + 1.0);
   double e_local = kc * x_pow_n / n;
   if (x0 > 0.0) {
-    u_local -= seg.stiffness * std::pow(x0, n + 1.0) / (n + 1.0);
-    e_local -= kc * std::pow(x0, n) / n;
+    // x^p - x0^p as x0^p expm1(p log1p(d/x0)): the difference of the two powers, each of
+    // order K x0^p/p, which can far exceed U, cancelled just past the start (U and e were
+    // off by up to 1e-5 there). x clamped at 0 is d/x0 = -1.
+    const double log_growth = std::log1p(std::max(d / x0, -1.0));
+    const double x0_pow_n = std::pow(x0, n);
+    u_local = seg.stiffness * x0_pow_n * x0 * std::expm1((n + 1.0) * log_growth) / (n + 1.0);
+    e_local = kc * x0_pow_n * std::expm1(n * log_growth) / n;
   }
   state.potential_energy_J = seg.energy_at_start_J + seg.force_offset_N * d + u_local;
   state.energy_density_J_per_m2 =

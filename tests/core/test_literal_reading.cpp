@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -259,5 +260,138 @@ TEST_CASE("full_compression_penetration_m is where the robot-on-bone segment beg
   for (double thickness : {0.002, 0.0128, 0.015, 0.03}) {
     const ImpactPeaks peaks = ExactPeaks(ImpactModel::FromScene(PaperScene(thickness)));
     CHECK(peaks.fully_compressed == (peaks.max_penetration_m > peaks.full_compression_penetration_m));
+  }
+}
+
+namespace {
+
+/// U [J] and e [J/m²] of the law at δ [m] in long double, from the segment holding δ, with
+/// x^k - x0^k = x0^k expm1(k log1p((δ - start)/x0)) past a literal start (origin < start):
+/// no cancellation however close δ is to the start.
+struct ReferenceIntegrals {
+  long double energy_J = 0.0L;
+  long double density_J_per_m2 = 0.0L;
+};
+ReferenceIntegrals IntegralsAt(const ImpactModel& model, double delta) {
+  const ForceLawSegment& seg = model.segment(model.SegmentIndexAt(delta));
+  const long double n = seg.exponent;
+  const long double past_start = static_cast<long double>(delta) - seg.start_m;
+  const long double x0 = static_cast<long double>(seg.start_m) - seg.origin_m;
+  const long double x = static_cast<long double>(delta) - seg.origin_m;
+  auto power_difference = [&](long double k) {  // x^k - x0^k
+    return x0 > 0.0L ? std::pow(x0, k) * std::expm1(k * std::log1p(past_start / x0))
+                     : std::pow(x, k);
+  };
+  const long double kc = 3.0 / (2.0 * std::numbers::pi) * seg.stiffness * seg.curvature_per_m;
+  ReferenceIntegrals integrals;
+  integrals.energy_J = seg.energy_at_start_J + seg.force_offset_N * past_start +
+                       seg.stiffness * power_difference(n + 1.0L) / (n + 1.0L);
+  integrals.density_J_per_m2 = seg.energy_density_at_start_J_per_m2 +
+                               seg.stress_offset_Pa * past_start + kc * power_difference(n) / n;
+  return integrals;
+}
+
+/// Literal scenes whose robot-on-bone law starts before its switch (origin < start): the
+/// force jumps there, up or down.
+std::vector<NamedScene> IllOrderedLiteralScenes() {
+  std::vector<NamedScene> scenes;
+  const Scene literal = [] {
+    Scene s = PaperScene(0.0);
+    s.model.thresholds = ThresholdReading::kLiteral;
+    return s;
+  }();
+  auto add = [&](std::string name, auto&& edit) {
+    AddVariant(scenes, literal, std::move(name), edit);
+  };
+  add("no covering (F drops at t1)", [](Scene&) {});
+  add("no covering, flat robot", [](Scene& s) { s.robot.radius_m = kFlat; });
+  add("no covering, n_cs 3, n_rb 1.2 (F jumps 1.6e7-fold)", [](Scene& s) {
+    s.model.exponent_covering_scalp = 3.0;
+    s.model.exponent_robot_bone = 1.2;
+  });
+  add("1 mm covering (F jumps up)", [](Scene& s) { s.covering = {27.6e6, 0.22, 0.001}; });
+  add("6.5 mm, 100 MPa covering on a 10 mm scalp (F drops)", [](Scene& s) { s = DropScene(); });
+  return scenes;
+}
+
+/// The robot-on-bone segment of a literal model (its last).
+const ForceLawSegment& LastSegment(const ImpactModel& model) {
+  return model.segment(model.segment_count() - 1);
+}
+
+}  // namespace
+
+TEST_CASE("Literal reading: U and e just past a switch whose law starts before it are exact",
+          "[literal][law][regression]") {
+  // U = U(start) + F_off d + K/p (x^p - x0^p) and e alike: the difference of the powers,
+  // each of order K x0^p, cancelled (U off by 4e-8 and e by 1e-8 where F jumps 1.6e7-fold).
+  for (const NamedScene& named : IllOrderedLiteralScenes()) {
+    const ImpactModel model = ImpactModel::FromScene(named.scene);
+    const ForceLawSegment& bone = LastSegment(model);
+    REQUIRE(bone.origin_m < bone.start_m);
+    for (int j = 0; j <= 45; ++j) {
+      const double delta = bone.start_m * (1.0 + std::pow(10.0, -j / 3.0));
+      INFO(named.name << ", δ = start (1 + 10^-" << j / 3.0 << ")");
+      const ContactState state = model.StateAt(delta);
+      const ReferenceIntegrals reference = IntegralsAt(model, delta);
+      CHECK(std::abs(state.potential_energy_J - reference.energy_J) <= 4e-16L * reference.energy_J);
+      CHECK(std::abs(state.energy_density_J_per_m2 - reference.density_J_per_m2) <=
+            4e-16L * reference.density_J_per_m2);
+    }
+  }
+}
+
+TEST_CASE("Literal reading: delta_max just past a jumped switch is within an ulp of the "
+          "energy balance, damped or not",
+          "[literal][exact][regression]") {
+  // U(δ_max) = E (undamped: ½ m v0²; damped: m φ(d v0)/d², docs/model.md §10.1). Just past
+  // the switch U rises by F(δ) per metre with F the jumped force, so no double δ_max does
+  // better than E between U at δ_max's two neighbours: that is the check (where F jumps
+  // 1.6e7-fold one ulp of δ_max moves U by 1.2e-8 of E). The energy balance solved in the
+  // local penetration x lost the distance past the switch to the rounding of
+  // x0 = start - origin and missed by up to 8 ulps (U off by 4.5e-8 there).
+  const double damping = GENERATE(0.0, 0.2, 5.0);
+  const long double damping_ld = damping;
+  for (const NamedScene& named : IllOrderedLiteralScenes()) {
+    const ImpactModel bare = ImpactModel::FromScene(named.scene);
+    const double switch_energy = LastSegment(bare).energy_at_start_J;
+    const double mass = bare.effective_mass_kg();
+    for (int j = 0; j <= 48; ++j) {
+      const long double target = switch_energy * (1.0L + std::pow(10.0L, -j / 3.0L));
+      // The speed storing `target` at δ_max: φ(w)/d² = target/m, φ(w) = w - ln(1 + w), by
+      // bisection in long double (undamped: ½ v0²).
+      long double speed = std::sqrt(2.0L * target / mass);
+      if (damping > 0.0) {
+        long double low = 0.0L, high = 2.0L * speed + 1.0L;
+        for (int k = 0; k < 200; ++k) {
+          const long double mid = 0.5L * (low + high);
+          const long double w = damping_ld * mid;
+          (mass * (w - std::log1p(w)) / (damping_ld * damping_ld) < target ? low : high) = mid;
+        }
+        speed = low;
+      }
+      Scene scene = named.scene;
+      scene.robot.speed_m_per_s = static_cast<double>(speed);
+      scene.model.damping_s_per_m = damping;
+      const ImpactModel model = ImpactModel::FromScene(scene);
+      const long double w0 = damping_ld * scene.robot.speed_m_per_s;
+      const long double energy = damping > 0.0
+                                     ? mass * (w0 - std::log1p(w0)) / (damping_ld * damping_ld)
+                                     : static_cast<long double>(model.impact_energy_J());
+      const double delta_max = ExactPeaks(model).max_penetration_m;
+      INFO(named.name << ", d = " << damping << " s/m, E = U(switch) (1 + 10^-" << j / 3.0 << ")");
+      // The slack: U(start) is stored rounded (one eps of E), and the damped E = m φ(d v0)/d²
+      // is computed by the library to about 1e-15.
+      const long double slack = (damping > 0.0 ? 2e-15L : 2.3e-16L) * energy;
+      const long double below = IntegralsAt(model, std::nextafter(delta_max, 0.0)).energy_J;
+      const long double above = IntegralsAt(model, std::nextafter(delta_max, 1.0)).energy_J;
+      auto residual_in_eps = [&](long double u) {  // (U - E)/E in units of 1e-16
+        return static_cast<double>((u - energy) / energy * 1e16L);
+      };
+      CAPTURE(residual_in_eps(below), residual_in_eps(IntegralsAt(model, delta_max).energy_J),
+              residual_in_eps(above));
+      CHECK(below <= energy + slack);
+      CHECK(above >= energy - slack);
+    }
   }
 }
