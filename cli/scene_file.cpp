@@ -20,6 +20,7 @@
 #include "parse_errors.hpp"
 #include "quantity.hpp"
 #include "scene_fields.hpp"
+#include "scene_range.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -223,6 +224,17 @@ void ApplyTable(std::string_view table_name, const toml::table& table, std::stri
       return f.table == table_name && f.key == key_name;
     });
     if (field == fields.end()) UnknownKey(source, key, table_name);
+    if (node.is_string() && IsRangeText(**node.as_string())) {
+      const std::string name = fmt::format("{}: {}", where, field->dotted_name());
+      if (!extras_wanted) {
+        throw InputError(fmt::format("{}: a range (an uncertain input) is taken by simulate, optimize and "
+                                     "speed-limit only (got '{}')",
+                                     name, **node.as_string()));
+      }
+      reading.extras.ranges.push_back(ParseSceneRange(**node.as_string(), *field, name));
+      reading.set_fields.push_back(field->dotted_name());
+      continue;
+    }
     Scene example = defaults;
     field->field(reading.scene) =
         ReadQuantity(node, field->spec, field->dotted_name(),

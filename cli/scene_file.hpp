@@ -17,7 +17,8 @@
 /// sets the covering's modulus and Poisson ratio (so it excludes covering.modulus and
 /// covering.poisson); the consumer looks it up. Every table and key is optional; what a file
 /// leaves out keeps the value it had. Unknown tables and keys, wrong types, bad values and
-/// TOML syntax errors are InputErrors that start with "file:line:column:".
+/// TOML syntax errors are InputErrors that start with "file:line:column:". A string value
+/// "LO..HI" is a range (SceneFileExtras::ranges), refused where extras are not wanted.
 
 #include <filesystem>
 #include <optional>
@@ -26,6 +27,7 @@
 #include <vector>
 
 #include "covopt/core/scene.hpp"
+#include "scene_range.hpp"
 
 namespace covopt::cli {
 
@@ -41,6 +43,9 @@ struct SceneFileExtras {
   std::optional<std::string> covering_material;
   /// Where covering.material is written, "file:line:column", for the consumer's messages.
   std::string covering_material_where;
+  /// Fields written as a range, "3.7kg..5.8kg" (an uncertain input, docs/model.md §11); the
+  /// scene keeps its value there. Only simulate, optimize and speed-limit accept them.
+  std::vector<SceneRange> ranges;
 };
 
 /// Reads the scene file at `path` into `scene` (and `extras`): the values it sets replace

@@ -13,6 +13,8 @@
 #include "covopt/core/exact.hpp"
 #include "covopt/core/impact_model.hpp"
 #include "covopt/materials/catalog.hpp"
+#include "covopt/optim/robust_design.hpp"
+#include "covopt/report/robust_json.hpp"
 #include "errors.hpp"
 #include "output.hpp"
 #include "quantity.hpp"
@@ -215,6 +217,12 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
       ->group("Computation");
 
   AddRobotModelOptions(*sub, options.robot_model, true, "Robot model (instead of --robot-mass)");
+  options.accept_ranges = true;
+  AddUncertaintyOptions(*sub, options.uncertainty, true);
+  sub->add_flag("--sensitivities", options.sensitivities,
+                "the elasticity d ln r / d ln x of each injury ratio and the compression ratio to every scene "
+                "input (at the worst case with ranges); with --plot, a tornado chart")
+      ->group("Uncertainty");
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")
       ->group("Output");
   sub->add_option("--history", options.history_file,
@@ -237,6 +245,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     for (std::string& name : ApplySceneFile(*options.scene_file, plan.scene, &extras)) {
       plan.sources[std::move(name)] = *options.scene_file;
     }
+    plan.ranges = extras.ranges;
   }
   if (options.material || extras.covering_material) {
     ApplyMaterial(options, extras, plan);
@@ -249,14 +258,22 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
   for (const SceneField& field : SceneFields()) {
     const auto typed = options.scene_values.find(field.dotted_name());
     if (typed != options.scene_values.end()) {
-      field.field(plan.scene) = ParseQuantity(typed->second, field.spec, field.flag);
+      // A flag replaces the scene file's value or range.
+      std::erase_if(plan.ranges, [&](const SceneRange& r) { return r.field == field.dotted_name(); });
+      if (IsRangeText(typed->second)) {
+        plan.ranges.push_back(ParseSceneRange(typed->second, field, field.flag));
+      } else {
+        field.field(plan.scene) = ParseQuantity(typed->second, field.spec, field.flag);
+      }
       plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, typed->second);
     }
   }
+  if (!plan.ranges.empty() && !options.accept_ranges) throw InputError(RangeRefusal(plan.ranges.front(), "this command"));
   if (options.robot_model.given()) {  // --urdf ...: robot.mass from the robot model
     RobotModelMass mass =
         ResolveRobotModelMass(options.robot_model, options.scene_values.count(kRobotMassField) != 0);
     plan.scene.robot.mass_kg = mass.mass_kg;
+    std::erase_if(plan.ranges, [](const SceneRange& r) { return r.field == kRobotMassField; });
     plan.sources[kRobotMassField] = mass.source;
     plan.robot_model_notes = std::move(mass.notes);
   }
@@ -270,6 +287,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
           fmt::format("unknown scene field '{}' (got '{}')", typed.first, typed.second));
     }
   }
+  SetNominalValues(plan.scene, plan.ranges);
   if (options.thresholds) {
     plan.scene.model.thresholds = ParseThresholds(*options.thresholds, "--thresholds");
     plan.sources["model.thresholds"] = fmt::format("--thresholds '{}'", *options.thresholds);
@@ -455,16 +473,149 @@ std::string AttributeError(const std::string& message, const SimulationPlan& pla
   return attributed + ")";
 }
 
+namespace {
+
+/// simulate with scene ranges, --samples or --sensitivities (docs/model.md §11): the worst
+/// case over the box reported as an impact at that scene, the probability of injury and the
+/// elasticities. Everything runs on the exact path.
+int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& plan,
+                         const std::optional<std::string>& tornado_file, std::ostream& out, std::ostream& err) {
+  const CommandErrors errors(err, "simulate");
+  std::optional<optim::UncertaintyBox> box;
+  std::optional<optim::InjuryProbabilityOptions> sampling;
+  try {
+    sampling = ResolveSampling(options.uncertainty, plan.ranges);
+    if (!plan.ranges.empty()) {
+      box.emplace(MakeUncertaintyBox(plan.scene, ResolveUncertainInputs(plan.ranges, options.uncertainty.distributions),
+                                     plan.ranges));
+      if (plan.time_options) {
+        throw InputError(fmt::format("{} with scene ranges: the worst case and the probability are computed on the "
+                                     "exact path; drop it",
+                                     plan.history_file ? "--history" : plan.plot_file ? "--plot" : "--method"));
+      }
+    } else if (plan.time_options && options.sensitivities) {
+      throw InputError(fmt::format("--sensitivities are computed on the exact path; {} does not apply",
+                                   plan.history_file ? "--history" : "--method"));
+    }
+  } catch (const InputError& e) {
+    return errors.BadInput(e.what());
+  }
+
+  SimulationReport report;
+  optim::WorstCase worst;
+  std::optional<optim::InjuryProbability> probability;
+  std::optional<optim::ElasticityTable> elasticities;
+  try {
+    report.scene = plan.scene;
+    if (box) {
+      optim::WorstCaseOptions worst_options;
+      worst_options.safety_factor = plan.safety_factor;
+      worst_options.limits = plan.limits;
+      worst = optim::FindWorstCase(*box, worst_options);
+      report.scene = worst.scene;
+    }
+    if (plan.covering_material) {
+      report.covering_material = plan.covering_material->name;
+      report.covering_poisson_assumed = !plan.covering_material->poisson_ratio.has_value();
+    }
+    const ImpactModel model = ImpactModel::FromScene(report.scene);
+    report.result = SolveExact(model);
+    if (sampling && box) {
+      SamplingProgressBar bar(err, "sampling");
+      sampling->safety_factor = plan.safety_factor;
+      sampling->limits = plan.limits;
+      sampling->progress = bar.Callback();
+      probability = optim::EstimateInjuryProbability(*box, *sampling);
+    }
+    if (options.sensitivities) {
+      optim::ElasticityOptions elasticity_options;
+      elasticity_options.limits = plan.limits;
+      elasticities = optim::ComputeElasticities(report.scene, elasticity_options);
+    }
+  } catch (const InputError& e) {
+    return errors.BadInput(e.what());
+  } catch (const std::invalid_argument& e) {
+    return errors.BadInput(AttributeError(e.what(), plan));
+  }
+  if (!report.result.ok()) {
+    return errors.Failed(fmt::format("the computation failed: {} ({})", ToString(report.result.status),
+                                     report.result.message));
+  }
+  report.assessment = JudgeInjuries(report.result.peaks, plan);
+  report.safety_factor = plan.safety_factor;
+  for (const std::string& warning : InputWarnings(plan)) report.result.warnings.push_back(warning);
+  try {
+    if (tornado_file) {
+      if (!FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+      PlotTornado(*tornado_file, *elasticities, PlotFormatFor(*tornado_file) == PlotFormat::kSvg);
+    }
+  } catch (const OutputError& e) {
+    return errors.Failed(e.what());
+  }
+
+  if (plan.json) {
+    out << report::UncertainSimulationJson(report, box ? &*box : nullptr, box ? &worst : nullptr,
+                                           probability ? &*probability : nullptr,
+                                           elasticities ? &*elasticities : nullptr)
+        << '\n';
+  } else {
+    if (box) {
+      fmt::print(out, "Scene ranges: {} inputs; the impact below is the worst case over the box\n", box->size());
+      for (const SceneRange& range : plan.ranges) {
+        fmt::print(out, "  {:<20} {} .. {}  (from {})\n", range.name,
+                   FormatQuantity(range.low, FindSceneField(range.name)->spec.kind),
+                   FormatQuantity(range.high, FindSceneField(range.name)->spec.kind), range.source);
+      }
+      PrintWorstCase(out, *box, worst);
+      out << '\n';
+    }
+    PrintTable(out, report);
+    if (probability) {
+      out << '\n';
+      PrintInjuryProbability(out, *probability);
+    }
+    if (elasticities) {
+      out << '\n';
+      PrintElasticities(out, *elasticities);
+    }
+  }
+  out.flush();
+  if (!out) return errors.Failed("cannot write the results to standard output");
+  return 0;
+}
+
+}  // namespace
+
 int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "simulate");
 
   SimulationPlan plan;
   std::optional<ImpactModel> model;
   SimulationReport report;
+  // With --sensitivities, --plot draws the tornado chart (no time path for it).
+  std::optional<std::string> tornado_file;
   try {
-    plan = ResolveSimulation(options);
+    if (options.sensitivities && options.plot_file) {
+      if (!PlotFormatFor(*options.plot_file)) {
+        throw InputError(fmt::format("--plot: cannot tell the format of '{}'; name the file *.png or *.svg",
+                                     *options.plot_file));
+      }
+      SimulateOptions without_plot = options;
+      without_plot.plot_file.reset();
+      tornado_file = options.plot_file;
+      plan = ResolveSimulation(without_plot);
+    } else {
+      plan = ResolveSimulation(options);
+    }
   } catch (const InputError& e) {
     return errors.BadInput(e.what());
+  }
+  if (!plan.ranges.empty() || options.sensitivities || options.uncertainty.samples ||
+      !options.uncertainty.distributions.empty() || options.uncertainty.seed || options.uncertainty.threads) {
+    if ((options.uncertainty.seed || options.uncertainty.threads) && !options.uncertainty.samples) {
+      return errors.BadInput(fmt::format("{} applies with --samples N", options.uncertainty.seed ? "--seed" : "--threads"));
+    }
+    return RunUncertainSimulate(options, plan, tornado_file, out, err);
   }
   try {
     model.emplace(ImpactModel::FromScene(plan.scene));

@@ -20,6 +20,8 @@
 #include "materials_command.hpp"
 #include "plot.hpp"
 #include "robot_model_options.hpp"
+#include "scene_range.hpp"
+#include "uncertainty_options.hpp"
 
 namespace CLI {
 class App;
@@ -70,8 +72,16 @@ struct SimulateOptions {
   RobotModelOptions robot_model;
   /// --history FILE.csv: write the time history (needs the time path).
   std::optional<std::string> history_file;
-  /// --plot FILE.png|FILE.svg: draw force and stress against time with gnuplot.
+  /// --plot FILE.png|FILE.svg: draw force and stress against time with gnuplot (with
+  /// --sensitivities: the tornado chart of the elasticities instead).
   std::optional<std::string> plot_file;
+  /// --samples, --seed, --threads, --distribution: Monte Carlo over the scene's ranges.
+  UncertaintyFlags uncertainty;
+  /// --sensitivities: the elasticity of each ratio to every scene input (docs/model.md §11).
+  bool sensitivities = false;
+  /// Not typed: set by the subcommands that take scene ranges (simulate, speed-limit); for
+  /// the others ResolveSimulation refuses a range with one line.
+  bool accept_ranges = false;
 };
 
 /// What the options resolve to: a scene and how to compute and report it.
@@ -98,6 +108,9 @@ struct SimulationPlan {
   std::optional<std::string> plot_file;
   PlotFormat plot_format = PlotFormat::kPng;
   bool json = false;
+  /// Scene inputs given as ranges LO..HI (flags, or the scene file's strings), each field's
+  /// value in `scene` set to the middle of its range.
+  std::vector<SceneRange> ranges;
   /// With --urdf: where robot.mass came from and the robot model's warnings, shown with
   /// the input warnings.
   std::vector<std::string> robot_model_notes;
@@ -117,7 +130,8 @@ std::string IntegratorNames();
 CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options);
 
 /// Reads every value and checks how the options combine (the scene's ranges are left to the
-/// library; limits and the safety factor are checked here).
+/// library; limits and the safety factor are checked here). A scene input given as LO..HI
+/// goes to SimulationPlan::ranges when options.accept_ranges, else is refused.
 /// @throws InputError naming the flag or the scene-file field.
 SimulationPlan ResolveSimulation(const SimulateOptions& options);
 

@@ -1,0 +1,278 @@
+#include "uncertainty_options.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <stdexcept>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "covopt/core/scene_fields.hpp"
+#include "errors.hpp"
+#include "plot.hpp"
+#include "quantity.hpp"
+#include "scene_fields.hpp"
+
+namespace covopt::cli {
+namespace {
+
+constexpr std::uint64_t kMaxSamples = 10'000'000'000ULL;
+
+std::uint64_t ParseWhole(const std::string& text, std::string_view flag, std::uint64_t low, std::uint64_t high) {
+  std::uint64_t value = 0;
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  const auto [stop, ec] = std::from_chars(begin, end, value);
+  if (ec != std::errc() || stop != end || text.empty() || value < low || value > high) {
+    throw InputError(fmt::format("{} must be a whole number in {}..{} (got '{}')", flag, low, high, text));
+  }
+  return value;
+}
+
+std::string_view Trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+}  // namespace
+
+void AddUncertaintyOptions(CLI::App& command, UncertaintyFlags& flags, bool with_seed_and_threads) {
+  command.add_option("--samples", flags.samples,
+                     "with scene ranges (LO..HI): draw N scenes and report the probability of laceration, "
+                     "contusion and either, with 95 % intervals")
+      ->type_name("N")
+      ->group("Uncertainty");
+  if (with_seed_and_threads) {
+    command.add_option("--seed", flags.seed, "seed of the --samples draws (default 1); the answer depends on it only")
+        ->type_name("S")
+        ->group("Uncertainty");
+    command.add_option("--threads", flags.threads,
+                       "threads for --samples, 0 = all cores (default); the answer does not depend on it")
+        ->type_name("T")
+        ->group("Uncertainty");
+  }
+  command.add_option("--distribution", flags.distributions,
+                     "how a ranged input is drawn (default uniform): NAME=normal:MEAN:SD or NAME=lognormal:MEAN:SD "
+                     "(mean and sd of the value, with units; truncated to the range), repeatable")
+      ->type_name("NAME=LAW:MEAN:SD")
+      ->group("Uncertainty");
+}
+
+std::optional<optim::InjuryProbabilityOptions> ResolveSampling(const UncertaintyFlags& flags,
+                                                              std::span<const SceneRange> ranges) {
+  if (!flags.samples) {
+    if (!flags.distributions.empty()) {
+      throw InputError(fmt::format("--distribution '{}' applies with --samples N", flags.distributions.front()));
+    }
+    return std::nullopt;
+  }
+  if (ranges.empty()) {
+    throw InputError(fmt::format("--samples {}: nothing to sample; give at least one scene input as a range "
+                                 "LO..HI, e.g. --head-mass 3.7kg..5.8kg",
+                                 *flags.samples));
+  }
+  optim::InjuryProbabilityOptions options;
+  options.samples = ParseWhole(*flags.samples, "--samples", 1, kMaxSamples);
+  options.seed = flags.seed ? ParseWhole(*flags.seed, "--seed", 0, std::numeric_limits<std::uint64_t>::max()) : 1;
+  options.threads = flags.threads ? static_cast<unsigned>(ParseWhole(*flags.threads, "--threads", 0, 4096)) : 0;
+  return options;
+}
+
+std::vector<optim::UncertainInput> ResolveUncertainInputs(std::span<const SceneRange> ranges,
+                                                          std::span<const std::string> distributions) {
+  std::vector<optim::UncertainInput> inputs;
+  for (const SceneRange& range : ranges) {
+    optim::UncertainInput input;
+    input.field = range.name;
+    input.low = range.low;
+    input.high = range.high;
+    inputs.push_back(input);
+  }
+  std::vector<std::string> seen;
+  for (const std::string& text : distributions) {
+    const auto fail = [&](const std::string& problem) {
+      throw InputError(fmt::format("--distribution: {} (got '{}')", problem, text));
+    };
+    const std::size_t eq = text.find('=');
+    if (eq == std::string::npos) {
+      fail("expected NAME=normal:MEAN:SD, NAME=lognormal:MEAN:SD or NAME=uniform, e.g. "
+           "head-mass=normal:4.5kg:0.5kg");
+    }
+    const std::string_view name = Trim(std::string_view(text).substr(0, eq));
+    const covopt::SceneField* field = FindSceneField(name);
+    if (field == nullptr) {
+      fail(fmt::format("unknown input '{}'; the scene fields are {}", name, SceneFieldNames()));
+    }
+    const auto input = std::find_if(inputs.begin(), inputs.end(),
+                                    [&](const optim::UncertainInput& i) { return i.field == field->name; });
+    if (input == inputs.end()) {
+      fail(fmt::format("{} has no range; a distribution needs one, e.g. --{} LO..HI", field->name, field->name));
+    }
+    if (std::find(seen.begin(), seen.end(), std::string(field->name)) != seen.end()) {
+      fail(fmt::format("{} is given a distribution twice", field->name));
+    }
+    seen.emplace_back(field->name);
+    std::vector<std::string_view> parts;
+    std::string_view rest = std::string_view(text).substr(eq + 1);
+    for (std::size_t colon = rest.find(':'); colon != std::string_view::npos; colon = rest.find(':')) {
+      parts.push_back(Trim(rest.substr(0, colon)));
+      rest = rest.substr(colon + 1);
+    }
+    parts.push_back(Trim(rest));
+    if (parts.size() == 1 && parts[0] == "uniform") continue;
+    if (parts.size() != 3 || (parts[0] != "normal" && parts[0] != "lognormal")) {
+      fail("expected NAME=normal:MEAN:SD, NAME=lognormal:MEAN:SD or NAME=uniform, e.g. "
+           "head-mass=normal:4.5kg:0.5kg");
+    }
+    const QuantitySpec units_only{field->spec.kind, false, false};
+    const std::string flag = fmt::format("--distribution {}", field->name);
+    input->distribution = parts[0] == "normal" ? optim::InputDistribution::kNormal : optim::InputDistribution::kLognormal;
+    input->mean = ParseQuantity(parts[1], units_only, flag + " (mean)");
+    input->standard_deviation = ParseQuantity(parts[2], units_only, flag + " (standard deviation)");
+  }
+  return inputs;
+}
+
+optim::UncertaintyBox MakeUncertaintyBox(const Scene& nominal, std::span<const optim::UncertainInput> inputs,
+                                         std::span<const SceneRange> ranges) {
+  if (!nominal.is_conservative_two_mass() && !ranges.empty()) {
+    throw InputError(fmt::format(
+        "{} '{}': ranges (uncertain inputs) run on the exact path of the conservative two-mass impact; a scene with "
+        "{} is not supported with ranges (docs/model.md §11)",
+        ranges.front().source, ranges.front().text,
+        nominal.robot_brakes()      ? "braking"
+        : nominal.head.has_neck()   ? "a neck"
+                                    : "contact damping"));
+  }
+  try {
+    return optim::UncertaintyBox::FromScene(nominal, inputs);
+  } catch (const std::invalid_argument& e) {
+    std::string message = e.what();
+    std::string origins;
+    for (const SceneRange& range : ranges) {
+      if (message.find(range.name) != std::string::npos || message.find(range.field) != std::string::npos) {
+        origins += fmt::format("{}{} from {} '{}'", origins.empty() ? "" : "; ", range.name, range.source, range.text);
+      }
+    }
+    throw InputError(origins.empty() ? message : message + " (" + origins + ")");
+  }
+}
+
+void SetNominalValues(Scene& scene, std::span<const SceneRange> ranges) {
+  for (const SceneRange& range : ranges) {
+    if (const covopt::SceneField* field = FindSceneField(range.name)) {
+      field->field(scene) = 0.5 * (range.low + range.high);
+    }
+  }
+}
+
+std::string DescribeValues(const optim::UncertaintyBox& box, std::span<const double> values) {
+  std::string text;
+  for (std::size_t i = 0; i < box.size() && i < values.size(); ++i) {
+    if (!text.empty()) text += ", ";
+    text += fmt::format("{} {}", box.inputs()[i].field, FormatQuantity(values[i], box.field(i).spec.kind));
+  }
+  return text;
+}
+
+void PrintWorstCase(std::ostream& out, const optim::UncertaintyBox& box, const optim::WorstCase& worst,
+                    std::string_view indent) {
+  out << fmt::format("{}worst case: {} (found by {}; {} evaluations, {:.1f} ms)\n", indent,
+                     DescribeValues(box, worst.values), worst.found_by, worst.evaluations, worst.seconds * 1e3);
+  out << fmt::format("{}  laceration ratio {:.4f}, contusion ratio {:.4f}{}; governing ratio {:.4f} ({} binds): {}\n",
+                     indent, worst.laceration_ratio, worst.contusion_ratio,
+                     worst.scene.covering.thickness_m > 0.0
+                         ? fmt::format(", compression {:.1f} % of the covering", 100.0 * worst.compression_ratio)
+                         : std::string(),
+                     worst.governing_ratio, optim::ToString(worst.binding),
+                     worst.admissible ? "admissible for every value in the box" : "NOT admissible for the whole box");
+  if (worst.corner_governing_ratio) {
+    out << fmt::format("{}  the corners alone give {:.4f}{}\n", indent, *worst.corner_governing_ratio,
+                       *worst.corner_governing_ratio < worst.governing_ratio * (1.0 - 1e-9)
+                           ? " (the worst case is inside the box, not at a corner)"
+                           : "");
+  }
+}
+
+void PrintInjuryProbability(std::ostream& out, const optim::InjuryProbability& p, std::string_view indent) {
+  out << fmt::format("{}probability over {} samples (seed {}), Wilson 95 % intervals:\n", indent, p.any.samples, p.seed);
+  const std::pair<const char*, const optim::ProbabilityEstimate*> rows[] = {
+      {"laceration", &p.laceration}, {"contusion", &p.contusion}, {"either injury", &p.any},
+      {"fully compressed", &p.fully_compressed}, {"inadmissible", &p.inadmissible}};
+  for (const auto& [name, e] : rows) {
+    out << fmt::format("{}  {:<17} {:>10.6f}  [{:.6f}, {:.6f}]  ({} of {})\n", indent, name, e->probability,
+                       e->ci95_low, e->ci95_high, e->count, e->samples);
+  }
+}
+
+void PrintElasticities(std::ostream& out, const optim::ElasticityTable& table) {
+  out << fmt::format("Sensitivities (elasticities d ln r / d ln x) at r_L {:.4f}, r_C {:.4f}{}:\n",
+                     table.laceration_ratio, table.contusion_ratio,
+                     table.compression_ratio ? fmt::format(", r_delta {:.4f}", *table.compression_ratio) : "");
+  out << fmt::format("  {:<20} {:>12} {:>11} {:>10} {:>12}  {}\n", "input", "value", "laceration", "contusion",
+                     "compression", "method");
+  for (const optim::InputElasticity& r : table.rows) {
+    const covopt::SceneField* field = FindSceneField(r.field);
+    out << fmt::format("  {:<20} {:>12} {:>+11.4f} {:>+10.4f} {:>12}  {}{}\n", r.field,
+                       field ? FormatQuantity(r.value, field->spec.kind) : fmt::format("{:g}", r.value), r.laceration,
+                       r.contusion, r.compression ? fmt::format("{:+.4f}", *r.compression) : "-",
+                       optim::ToString(r.method), r.reliable ? "" : " (steps disagree: a kink nearby)");
+  }
+}
+
+void PlotTornado(const std::string& path, const optim::ElasticityTable& table, bool svg) {
+  RunGnuplot(path, [&](const std::string& output) {
+    const std::size_t n = table.rows.size();
+    std::string script = GnuplotTerminal(svg ? PlotFormat::kSvg : PlotFormat::kPng, 900,
+                                         static_cast<int>(160 + 36 * n));
+    script += fmt::format("set output {}\n", GnuplotQuoted(output));
+    script += "set title 'Sensitivities: elasticity d ln r / d ln x of each injury ratio'\n";
+    script += "set xlabel 'elasticity [-]'\nset grid xtics\nset key bottom right\nset xzeroaxis\n";
+    script += fmt::format("set yrange [-0.7:{}]\n", static_cast<double>(n) - 0.3);
+    std::string tics;
+    for (std::size_t i = 0; i < n; ++i) {
+      tics += fmt::format("{}{} {}", i == 0 ? "" : ", ", GnuplotQuoted(table.rows[i].field), n - 1 - i);
+    }
+    script += fmt::format("set ytics ({})\n", tics);
+    script += "$D << EOD\n";
+    for (std::size_t i = 0; i < n; ++i) {
+      script += fmt::format("{} {:.9g} {:.9g}\n", n - 1 - i, table.rows[i].laceration, table.rows[i].contusion);
+    }
+    script += "EOD\n";
+    script += "set style fill solid 0.75 border -1\n";
+    script += "plot $D using ($2/2):($1+0.2):($2<0?$2:0):($2<0?0:$2):($1):($1+0.4) with boxxyerror lc rgb '#c0392b' "
+              "title 'laceration ratio', \\\n"
+              "     $D using ($3/2):($1-0.2):($3<0?$3:0):($3<0?0:$3):($1-0.4):($1) with boxxyerror lc rgb '#2e86c1' "
+              "title 'contusion ratio'\n";
+    return script;
+  });
+}
+
+SamplingProgressBar::SamplingProgressBar(std::ostream& err, std::string label)
+    : err_(err), label_(std::move(label)), enabled_(&err == &std::cerr && isatty(STDERR_FILENO) == 1) {}
+
+SamplingProgressBar::~SamplingProgressBar() {
+  if (drawn_) err_ << "\r\033[K" << std::flush;  // leave the line clean for what follows
+}
+
+std::function<void(double)> SamplingProgressBar::Callback() {
+  if (!enabled_) return {};
+  return [this](double fraction) {
+    const int percent = static_cast<int>(std::floor(100.0 * std::clamp(fraction, 0.0, 1.0)));
+    if (percent == last_percent_) return;
+    last_percent_ = percent;
+    constexpr int kWidth = 40;
+    const int filled = percent * kWidth / 100;
+    err_ << '\r' << label_ << " [" << std::string(static_cast<std::size_t>(filled), '#')
+         << std::string(static_cast<std::size_t>(kWidth - filled), ' ') << "] " << percent << " %" << std::flush;
+    drawn_ = true;
+  };
+}
+
+}  // namespace covopt::cli

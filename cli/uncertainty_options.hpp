@@ -1,0 +1,97 @@
+#pragma once
+/// @file uncertainty_options.hpp
+/// The command line of issue 14 (docs/model.md §11) shared by simulate, optimize and
+/// speed-limit: scene ranges into an optim::UncertaintyBox, --samples/--seed/--threads/
+/// --distribution into InjuryProbabilityOptions, and a progress bar on a terminal's stderr.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "covopt/core/scene.hpp"
+#include "covopt/optim/robust_design.hpp"
+#include "scene_range.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace covopt::cli {
+
+/// The sampling flags as typed.
+struct UncertaintyFlags {
+  std::optional<std::string> samples;  ///< --samples N, 1..1e10
+  std::optional<std::string> seed;     ///< --seed S, a whole number (default 1)
+  std::optional<std::string> threads;  ///< --threads T, 0 (all cores, the default) .. 4096
+  /// --distribution NAME=normal:MEAN:SD | NAME=lognormal:MEAN:SD | NAME=uniform (repeatable).
+  std::vector<std::string> distributions;
+};
+
+/// Adds --samples and --distribution (and --seed and --threads when `with_seed_and_threads`;
+/// optimize has its own) to `command`, in group "Uncertainty".
+void AddUncertaintyOptions(CLI::App& command, UncertaintyFlags& flags, bool with_seed_and_threads);
+
+/// The sampling the flags ask for, or empty without --samples.
+/// @throws InputError for a bad value, --distribution/--seed without --samples, or --samples
+///   without a range.
+std::optional<optim::InjuryProbabilityOptions> ResolveSampling(const UncertaintyFlags& flags,
+                                                              std::span<const SceneRange> ranges);
+
+/// The ranges as the library's inputs, with their --distribution (uniform otherwise).
+/// @throws InputError for an unknown NAME, a NAME without a range, a malformed distribution.
+std::vector<optim::UncertainInput> ResolveUncertainInputs(std::span<const SceneRange> ranges,
+                                                          std::span<const std::string> distributions);
+
+/// optim::UncertaintyBox::FromScene with the library's message as InputError, naming where
+/// the ranges were given; a nominal scene with damping, braking or a neck gets one line
+/// saying the robust searches run on the exact path only.
+optim::UncertaintyBox MakeUncertaintyBox(const Scene& nominal, std::span<const optim::UncertainInput> inputs,
+                                         std::span<const SceneRange> ranges);
+
+/// Sets each range's field of `scene` to the middle of the range (the nominal value).
+void SetNominalValues(Scene& scene, std::span<const SceneRange> ranges);
+
+/// "head-mass 5.8 kg, scalp-thickness 5 mm": input values [SI] for people.
+std::string DescribeValues(const optim::UncertaintyBox& box, std::span<const double> values);
+
+/// The worst case as text: "worst case: head-mass 5.8 kg, scalp-thickness 2 mm (found by
+/// corner; 1 234 evaluations, 3.1 ms)" and a line with the ratios and what binds.
+void PrintWorstCase(std::ostream& out, const optim::UncertaintyBox& box, const optim::WorstCase& worst,
+                    std::string_view indent = "");
+
+/// The probability table: laceration, contusion, either, fully compressed, inadmissible, each
+/// with its count and Wilson 95 % interval.
+void PrintInjuryProbability(std::ostream& out, const optim::InjuryProbability& probability,
+                            std::string_view indent = "");
+
+/// The elasticity table (tornado order).
+void PrintElasticities(std::ostream& out, const optim::ElasticityTable& table);
+
+/// The tornado chart of `table` into `path` (gnuplot; bars of the laceration and contusion
+/// elasticities per input, largest at the top). @throws OutputError.
+void PlotTornado(const std::string& path, const optim::ElasticityTable& table, bool svg);
+
+/// A progress bar on stderr: drawn only when `err` is std::cerr and stderr is a terminal, so
+/// tests and pipes stay clean. Callback() is what InjuryProbabilityOptions::progress takes.
+class SamplingProgressBar {
+ public:
+  SamplingProgressBar(std::ostream& err, std::string label);
+  ~SamplingProgressBar();
+  SamplingProgressBar(const SamplingProgressBar&) = delete;
+  SamplingProgressBar& operator=(const SamplingProgressBar&) = delete;
+  std::function<void(double)> Callback();
+  bool enabled() const noexcept { return enabled_; }
+
+ private:
+  std::ostream& err_;
+  std::string label_;
+  bool enabled_ = false;
+  bool drawn_ = false;
+  int last_percent_ = -1;
+};
+
+}  // namespace covopt::cli
