@@ -29,8 +29,10 @@ def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
              robot_poisson=None, covering_modulus=None, covering_poisson=None,
              covering_thickness=None, head_mass=None, head_radius=None, scalp_modulus=None,
              scalp_poisson=None, scalp_thickness=None, skull_modulus=None, skull_poisson=None,
-             thresholds=None, laceration_limit=None, contusion_limit=None, safety_factor=None,
-             material=None, method=None, rtol=None, atol=None, max_steps=None, history=False):
+             damping=None, reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
+             neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
+             safety_factor=None, material=None, method=None, rtol=None, atol=None, max_steps=None,
+             history=False):
     """One impact: its peaks and the injury verdicts, as ``covopt simulate --json``.
 
     Scene (SI, default the paper's scene): robot_mass [kg], speed [m/s], robot_radius [m],
@@ -38,12 +40,19 @@ def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
     covering_thickness [m] (0 = no covering), head_mass [kg], head_radius [m],
     scalp_modulus [Pa], scalp_poisson [-], scalp_thickness [m], skull_modulus [Pa],
     skull_poisson [-]; thresholds "cumulative" (default) or "literal".
+    Beyond the paper's conservative two-mass impact (docs/model.md §10; each 0 = off, the
+    default): damping [s/m], the Hunt-Crossley contact damping d (F = F_el (1 + d δ'));
+    reaction_delay [s] and braking [m/s²], the robot braking that long after first contact
+    while it still moves forward; torso_mass [kg] (math.inf or "fixed": a fixed torso),
+    neck_stiffness [N/m] and neck_damping [N·s/m], the head hung on a torso by a neck (no
+    default values: give your own). A damped scene reports coefficient_of_restitution.
     material: a built-in catalog name; sets covering_modulus and covering_poisson.
     laceration_limit [Pa] (default 1e6), contusion_limit [J/m²] (default 25200),
     safety_factor [-] in [1, 100]: a verdict is safe when safety_factor x ratio <= 1.
-    method: None (exact path; the default integrator with history=True), "exact", "cvode"
-    or an integrator name ("arkode-erk54", "cvode-bdf", ...); rtol, atol [-] and max_steps
-    apply to the time path only.
+    method: None (auto: the exact path where the scene has an energy integral, conservative
+    or damped; the default integrator for braking, a neck or history=True), "exact" (refused
+    with braking or a neck), "cvode" or an integrator name ("arkode-erk54", "cvode-bdf",
+    ...); rtol, atol [-] and max_steps apply to the time path only.
     history: also return ``result["history"]``, a dict of 1-D numpy arrays of equal length
     (time_s, penetration_m, penetration_rate_m_per_s, force_N, compressive_stress_Pa,
     tensile_stress_Pa, energy_density_J_per_m2: the columns of ``--history``).
@@ -58,10 +67,13 @@ def sweep(x, y=None, *, robot_mass=None, speed=None, robot_radius=None, robot_mo
           robot_poisson=None, covering_modulus=None, covering_poisson=None,
           covering_thickness=None, head_mass=None, head_radius=None, scalp_modulus=None,
           scalp_poisson=None, scalp_thickness=None, skull_modulus=None, skull_poisson=None,
-          thresholds=None, laceration_limit=None, contusion_limit=None, safety_factor=None,
-          material=None, threads=None):
-    """A grid of impacts on the exact path, as ``covopt sweep``: one or two scene quantities
-    over lists of values, everything else from the scene keywords (as for simulate).
+          damping=None, reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
+          neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
+          safety_factor=None, material=None, threads=None):
+    """A grid of impacts, as ``covopt sweep``: one or two scene quantities over lists of
+    values, everything else from the scene keywords (as for simulate, the extended ones
+    included). Each point takes the exact path where its scene has an energy integral, the
+    time path (ARKODE ERK 5(4), rtol 1e-8) with braking or a neck.
 
     x, y: ``(quantity, values)``; the quantity is a scene keyword or CLI flag name
     ("speed", "robot_mass" or "robot-mass", "covering_thickness", ...), the values SI
@@ -91,14 +103,16 @@ def sweep(x, y=None, *, robot_mass=None, speed=None, robot_radius=None, robot_mo
 def optimize(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
              robot_poisson=None, head_mass=None, head_radius=None, scalp_modulus=None,
              scalp_poisson=None, scalp_thickness=None, skull_modulus=None, skull_poisson=None,
-             thresholds=None, laceration_limit=None, contusion_limit=None, safety_factor=None,
-             materials=None, families=None, catalog=None, no_builtin=False, thickness=None,
-             max_thickness=None, min_modulus=None, max_modulus=None, covering_poisson=None,
-             thickness_step=None, allow_full_compression=False, global_algorithm=None,
-             seed=None, threads=None, oracle=None, method=None, rtol=None):
+             damping=None, reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
+             neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
+             safety_factor=None, materials=None, families=None, catalog=None, no_builtin=False,
+             thickness=None, max_thickness=None, min_modulus=None, max_modulus=None,
+             covering_poisson=None, thickness_step=None, allow_full_compression=False,
+             global_algorithm=None, seed=None, threads=None, oracle=None, method=None, rtol=None):
     """Which covering, how thick, with what margin, as ``covopt optimize --json``.
 
-    The scene keywords are simulate's, without the covering (it is what is designed).
+    The scene keywords are simulate's (damping, braking and a neck included), without the
+    covering (it is what is designed).
     Problem (a), the default: the thinnest admissible covering (ratios <= 1/safety_factor
     and, unless allow_full_compression, not fully compressed at the peak), continuous and
     for every candidate material. Problem (b), with thickness [m]: the least injury at that
@@ -137,13 +151,15 @@ def material(name):
 def max_safe_speed(*, robot_mass=None, robot_radius=None, robot_modulus=None, robot_poisson=None,
                    covering_modulus=None, covering_poisson=None, covering_thickness=None,
                    head_mass=None, head_radius=None, scalp_modulus=None, scalp_poisson=None,
-                   scalp_thickness=None, skull_modulus=None, skull_poisson=None, thresholds=None,
-                   laceration_limit=None, contusion_limit=None, safety_factor=None, material=None,
-                   allow_full_compression=False, oracle=None, method=None, rtol=None):
+                   scalp_thickness=None, skull_modulus=None, skull_poisson=None, damping=None,
+                   reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
+                   neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
+                   safety_factor=None, material=None, allow_full_compression=False, oracle=None,
+                   method=None, rtol=None):
     """The largest impact speed [m/s] such that every speed up to it is safe: both injury
     ratios <= 1/safety_factor and, unless allow_full_compression, the covering not fully
-    compressed at the peak (optim::MaxSafeSpeed). The scene keywords are simulate's, without
-    speed (it is what is computed). oracle, method, rtol: as optimize's (a scene without an
+    compressed at the peak (optim::MaxSafeSpeed). The scene keywords are simulate's (damping,
+    braking and a neck included), without speed (it is what is computed). oracle, method, rtol: as optimize's (a scene without an
     energy integral is bracketed on the time path).
 
     Returns a dict: max_safe_speed_m_per_s (None when not even 1e-6 m/s is safe; 100 when
@@ -160,9 +176,11 @@ def max_safe_speed(*, robot_mass=None, robot_radius=None, robot_modulus=None, ro
 def max_safe_mass(*, speed=None, robot_radius=None, robot_modulus=None, robot_poisson=None,
                   covering_modulus=None, covering_poisson=None, covering_thickness=None,
                   head_mass=None, head_radius=None, scalp_modulus=None, scalp_poisson=None,
-                  scalp_thickness=None, skull_modulus=None, skull_poisson=None, thresholds=None,
-                  laceration_limit=None, contusion_limit=None, safety_factor=None, material=None,
-                  allow_full_compression=False, oracle=None, method=None, rtol=None):
+                  scalp_thickness=None, skull_modulus=None, skull_poisson=None, damping=None,
+                  reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
+                  neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
+                  safety_factor=None, material=None, allow_full_compression=False, oracle=None,
+                  method=None, rtol=None):
     """The largest reflected robot mass [kg] that is safe, with every lighter robot, at the
     scene's speed (optim::MaxSafeMass); as max_safe_speed, without robot_mass.
 
@@ -177,9 +195,10 @@ def speed_limit(*, solve_for="speed", robot_mass=None, speed=None, robot_radius=
                 robot_modulus=None, robot_poisson=None, covering_modulus=None,
                 covering_poisson=None, covering_thickness=None, head_mass=None, head_radius=None,
                 scalp_modulus=None, scalp_poisson=None, scalp_thickness=None, skull_modulus=None,
-                skull_poisson=None, thresholds=None, laceration_limit=None, contusion_limit=None,
-                safety_factor=None, material=None, allow_full_compression=False, oracle=None,
-                method=None, rtol=None):
+                skull_poisson=None, damping=None, reaction_delay=None, braking=None,
+                torso_mass=None, neck_stiffness=None, neck_damping=None, thresholds=None,
+                laceration_limit=None, contusion_limit=None, safety_factor=None, material=None,
+                allow_full_compression=False, oracle=None, method=None, rtol=None):
     """A table of limits, as ``covopt speed-limit --json``: solve_for="speed" gives the max
     safe speed for each robot_mass (a value or a list; math.inf or "fixed" for a fixed
     robot), solve_for="mass" the max safe reflected mass for each speed (a value or a list).
@@ -236,9 +255,11 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
                      robot_radius=None, robot_modulus=None, robot_poisson=None,
                      covering_modulus=None, covering_poisson=None, covering_thickness=None,
                      head_mass=None, head_radius=None, scalp_modulus=None, scalp_poisson=None,
-                     scalp_thickness=None, skull_modulus=None, skull_poisson=None, thresholds=None,
-                     laceration_limit=None, contusion_limit=None, safety_factor=None,
-                     material=None, allow_full_compression=False):
+                     scalp_thickness=None, skull_modulus=None, skull_poisson=None, damping=None,
+                     reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
+                     neck_damping=None, thresholds=None, laceration_limit=None,
+                     contusion_limit=None, safety_factor=None, material=None,
+                     allow_full_compression=False):
     """Is a robot motion safe with this covering, and by how much may it be sped up or must
     it be slowed down? As ``covopt robot --trajectory --json``.
 

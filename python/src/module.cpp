@@ -74,6 +74,13 @@ const SceneKeyword kSceneKeywords[] = {
   {"scalp_thickness", "scalp.thickness", &specs::kScalpThickness, [](Scene& s) -> double& { return s.scalp.thickness_m; }},
   {"skull_modulus", "skull.modulus", &specs::kSkullModulus, [](Scene& s) -> double& { return s.skull.youngs_modulus_Pa; }},
   {"skull_poisson", "skull.poisson", &specs::kPoissonRatio, [](Scene& s) -> double& { return s.skull.poisson_ratio; }},
+  // Beyond the conservative two-mass model (docs/model.md §10).
+  {"damping", "model.damping", &specs::kContactDamping, [](Scene& s) -> double& { return s.model.damping_s_per_m; }},
+  {"reaction_delay", "robot.reaction_delay", &specs::kReactionDelay, [](Scene& s) -> double& { return s.robot.reaction_delay_s; }},
+  {"braking", "robot.braking", &specs::kBraking, [](Scene& s) -> double& { return s.robot.braking_m_per_s2; }},
+  {"torso_mass", "head.torso_mass", &specs::kTorsoMass, [](Scene& s) -> double& { return s.head.torso_mass_kg; }},
+  {"neck_stiffness", "head.neck_stiffness", &specs::kNeckStiffness, [](Scene& s) -> double& { return s.head.neck_stiffness_N_per_m; }},
+  {"neck_damping", "head.neck_damping", &specs::kNeckDamping, [](Scene& s) -> double& { return s.head.neck_damping_N_s_per_m; }},
 };
 // clang-format on
 
@@ -262,9 +269,12 @@ py::dict Simulate(const py::kwargs& kwargs) {
   report.safety_factor = inputs.safety_factor;
   const InjuryLimits& limits = inputs.limits;
 
-  // The path: exact unless a history is asked for or a time-path method is named.
+  // The path, as the CLI's --method auto: exact where the scene has an energy integral
+  // (conservative or damped), the time path for a braking robot or a neck (docs/model.md §10),
+  // for a history, or when a time-path method is named.
   const bool history = get("history") && py::bool_(*get("history")).cast<bool>();
-  bool time_path = history;
+  const bool exact_admits = !report.scene.robot_brakes() && !report.scene.head.has_neck();
+  bool time_path = history || !exact_admits;
   TimeIntegrationOptions time;
   if (const auto v = get("method")) {
     const std::string method = py::str(*v).cast<std::string>();
@@ -276,6 +286,11 @@ py::dict Simulate(const py::kwargs& kwargs) {
       time_path = true;
       time.method = *named;
     } else if (method == "exact") {
+      if (!exact_admits) {
+        throw std::invalid_argument("method='exact': the exact path needs an energy integral; a scene with "
+                                    "braking or a neck has only the time path; drop method (the default "
+                                    "integrator runs then) or give a time-path method");
+      }
       if (history) {
         throw std::invalid_argument("method='exact' computes no time history, which history=True "
                                     "needs; drop method (the default integrator runs then) or "
@@ -322,8 +337,17 @@ py::dict Simulate(const py::kwargs& kwargs) {
     py::gil_scoped_release release;
     if (time_path) {
       if (history) {
-        // Smooth histories as the CLI's: at least ~400 samples over the contact.
-        time.history_max_interval_s = ExactContactDuration(*model, ExactPeaks(*model)) / 400.0;
+        // Smooth histories as the CLI's: at least ~400 samples over the contact, whose
+        // duration is the exact one for a conservative scene, else a first run's.
+        double duration_s = 0.0;
+        if (report.scene.is_conservative_two_mass()) {
+          duration_s = ExactContactDuration(*model, ExactPeaks(*model));
+        } else {
+          TimeIntegrationOptions first_run = time;
+          first_run.record_history = false;
+          duration_s = SimulateImpact(*model, first_run).contact_duration_s.value_or(0.0);
+        }
+        time.history_max_interval_s = duration_s / 400.0;  // 0: steps only
       }
       report.time_options = time;
       report.result = SimulateImpact(*model, time);  // throws invalid_argument on bad options
