@@ -20,6 +20,7 @@
 #include "covopt/materials/catalog.hpp"
 #include "covopt/optim/design.hpp"
 #include "covopt/report/design_json.hpp"
+#include "covopt/report/robust_json.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
 #include "oracle_options.hpp"
@@ -54,6 +55,8 @@ Exit codes: 0 an answer (also "no material is safe"); 1 the search failed;
 
 struct Resolved {
   optim::DesignRequest request;
+  /// Scene inputs given as ranges LO..HI: the robust design (docs/model.md §11).
+  std::vector<SceneRange> ranges;
   std::vector<std::string> warnings;  ///< about the input (the library adds its own)
   int runners_up = 8;
 };
@@ -93,6 +96,9 @@ Resolved Resolve(const OptimizeOptions& o) {
                                          name, *o.scene_file));
       }
     }
+    for (const SceneRange& range : extras.ranges) {
+      if (range.field.rfind("covering.", 0) != 0) r.ranges.push_back(range);  // covering: warned above
+    }
     if (extras.laceration_limit_Pa) d.limits.laceration_tensile_stress_Pa = *extras.laceration_limit_Pa;
     if (extras.contusion_limit_J_per_m2) d.limits.contusion_energy_density_J_per_m2 = *extras.contusion_limit_J_per_m2;
     if (extras.safety_factor) d.safety_factor = *extras.safety_factor;
@@ -100,13 +106,20 @@ Resolved Resolve(const OptimizeOptions& o) {
   for (const SceneField& field : SceneFields()) {
     const auto typed = o.scene_values.find(field.dotted_name());
     if (typed != o.scene_values.end()) {
-      field.field(r.request.scene) = ParseQuantity(typed->second, field.spec, field.flag);
+      std::erase_if(r.ranges, [&](const SceneRange& range) { return range.field == field.dotted_name(); });
+      if (IsRangeText(typed->second)) {
+        r.ranges.push_back(ParseSceneRange(typed->second, field, field.flag));
+      } else {
+        field.field(r.request.scene) = ParseQuantity(typed->second, field.spec, field.flag);
+      }
     }
   }
+  SetNominalValues(r.request.scene, r.ranges);
   if (o.thresholds) r.request.scene.model.thresholds = ParseThresholds(*o.thresholds, "--thresholds");
   if (o.robot_model.given()) {  // --urdf ...: robot.mass from the robot model
     RobotModelMass mass = ResolveRobotModelMass(o.robot_model, o.scene_values.count(kRobotMassField) != 0);
     r.request.scene.robot.mass_kg = mass.mass_kg;
+    std::erase_if(r.ranges, [](const SceneRange& range) { return range.field == kRobotMassField; });
     r.warnings.insert(r.warnings.begin(), mass.notes.begin(), mass.notes.end());
   }
 
@@ -231,6 +244,177 @@ std::string CompressionWords(const DesignScore& s) {
   return fmt::format("{:.0f} % of the way to full compression at the peak", 100.0 * s.compression_ratio);
 }
 
+/// optimize with scene ranges (docs/model.md §11): the thinnest covering admissible for every
+/// value in the box (FindRobustThinnestCovering), or with --max-injury-probability the
+/// thinnest whose probability of failing the criterion is <= P (FindProbabilityDesign).
+int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream& out, std::ostream& err) {
+  const CommandErrors errors(err, "optimize");
+  std::optional<optim::UncertaintyBox> box;
+  std::optional<optim::InjuryProbabilityOptions> sampling;
+  std::optional<double> max_probability;
+  try {
+    if (o.thickness) {
+      throw InputError("--thickness with scene ranges: the robust design finds the thickness; for one covering over "
+                       "the box use 'covopt simulate --covering-thickness ... --material ...' with the ranges");
+    }
+    if (o.oracle_flags.given()) {
+      throw InputError(fmt::format("--{} with scene ranges: the robust searches run on the exact path",
+                                   o.oracle_flags.oracle ? "oracle" : o.oracle_flags.method ? "method" : "rtol"));
+    }
+    UncertaintyFlags flags = o.uncertainty;
+    flags.seed = o.seed;
+    flags.threads = o.threads ? o.threads : std::optional<std::string>{};
+    sampling = ResolveSampling(flags, r.ranges);
+    if (o.max_injury_probability) {
+      const double p = ParseQuantity(*o.max_injury_probability, quantity_specs::kTolerance, "--max-injury-probability");
+      if (!(p >= 0.0 && p < 1.0)) {
+        throw InputError(fmt::format("--max-injury-probability must be in [0, 1) (got '{}')", *o.max_injury_probability));
+      }
+      if (!sampling) throw InputError("--max-injury-probability needs --samples N (the probability is estimated)");
+      max_probability = p;
+    }
+    box.emplace(MakeUncertaintyBox(r.request.scene, ResolveUncertainInputs(r.ranges, o.uncertainty.distributions),
+                                   r.ranges));
+  } catch (const std::invalid_argument& e) {
+    return errors.BadInput(e.what());
+  }
+  const DesignOptions& design = r.request.options;
+  const double sf = design.safety_factor;
+
+  if (max_probability) {
+    optim::ProbabilityDesignOptions options;
+    options.design = design;
+    options.sampling = *sampling;
+    options.max_probability = *max_probability;
+    optim::ProbabilityDesign result;
+    try {
+      SamplingProgressBar bar(err, "designing");
+      options.sampling.progress = bar.Callback();
+      result = optim::FindProbabilityDesign(*box, r.request.materials, options);
+    } catch (const std::invalid_argument& e) {
+      return errors.BadInput(e.what());
+    }
+    if (o.json) {
+      out << report::ProbabilityDesignJson(*box, options, result, r.warnings) << '\n';
+      return 0;
+    }
+    fmt::print(out, "Design for a probability of failing the criterion <= {:g} over {} inputs ({}), {} samples, seed {}\n",
+               *max_probability, box->size(), optim::ToString(result.criterion), options.sampling.samples,
+               options.sampling.seed);
+    for (const SceneRange& range : r.ranges) fmt::print(out, "  {:<20} {}  (from {})\n", range.name, range.text, range.source);
+    const auto line = [&](const optim::InjuryProbability& p) {
+      return fmt::format("P(inadmissible) {:.6f} [{:.6f}, {:.6f}], P(laceration) {:.6f}, P(contusion) {:.6f}",
+                         p.inadmissible.probability, p.inadmissible.ci95_low, p.inadmissible.ci95_high,
+                         p.laceration.probability, p.contusion.probability);
+    };
+    fmt::print(out, "\nVerdict: {}\n", optim::ToString(result.verdict));
+    if (result.recommendation) {
+      const optim::ProbabilityCandidate& c = result.candidates[*result.recommendation];
+      fmt::print(out, "Recommended: {} (E {}), {} (thinnest meeting the target {})\n", c.material.name,
+                 MPa(c.material.youngs_modulus_Pa), Mm(*c.recommended_thickness_m), Mm(*c.min_thickness_m));
+      fmt::print(out, "  {}\n  sampling error: the 95 % interval is +-{:.6f} around the estimate\n", line(c.at_design),
+                 0.5 * (c.at_design.inadmissible.ci95_high - c.at_design.inadmissible.ci95_low));
+    }
+    if (result.continuous) {
+      fmt::print(out, "Continuous optimum: {}: E_c {}, b_c {}; {}\n",
+                 result.continuous->feasible ? "meets the target" : "misses the target",
+                 MPa(result.continuous->design.youngs_modulus_Pa), Mm(result.continuous->design.thickness_m),
+                 line(result.continuous->at_design));
+    }
+    fmt::print(out, "Bare robot: {}\n", line(result.bare_robot));
+    fmt::print(out, "\nCandidates:\n  {:<3} {:<28} {:>9} {:>10} {:>14}  {}\n", "#", "material", "E [MPa]", "thickness",
+               "P(inadmiss.)", "95 % interval");
+    const int shown = std::min<int>(r.runners_up, static_cast<int>(result.candidates.size()));
+    for (int i = 0; i < shown; ++i) {
+      const optim::ProbabilityCandidate& c = result.candidates[static_cast<std::size_t>(i)];
+      fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>10} {:>14.6f}  [{:.6f}, {:.6f}]\n", i + 1,
+                 c.material.name.substr(0, 28), c.material.youngs_modulus_Pa * 1e-6,
+                 c.recommended_thickness_m ? Mm(*c.recommended_thickness_m) : "> max",
+                 c.at_design.inadmissible.probability, c.at_design.inadmissible.ci95_low,
+                 c.at_design.inadmissible.ci95_high);
+    }
+    fmt::print(out, "\nSearch: {} sampled impacts, {:.2f} s\n", result.sample_evaluations, result.seconds);
+    for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
+    return 0;
+  }
+
+  optim::RobustDesignOptions options;
+  options.design = design;
+  optim::RobustThinnestCovering result;
+  std::optional<optim::InjuryProbability> probability;
+  try {
+    result = optim::FindRobustThinnestCovering(*box, r.request.materials, options);
+    if (sampling && result.recommendation) {
+      const optim::RobustCandidate& c = result.candidates[*result.recommendation];
+      Scene designed = box->nominal();
+      designed.covering.youngs_modulus_Pa = c.outcome.material.youngs_modulus_Pa;
+      designed.covering.poisson_ratio = c.outcome.material.poisson_ratio;
+      designed.covering.thickness_m = *c.outcome.recommended_thickness_m;
+      const auto inputs = ResolveUncertainInputs(r.ranges, o.uncertainty.distributions);
+      const optim::UncertaintyBox at_design = optim::UncertaintyBox::FromScene(designed, inputs);
+      SamplingProgressBar bar(err, "sampling");
+      sampling->safety_factor = sf;
+      sampling->limits = design.limits;
+      sampling->allow_full_compression = design.allow_full_compression;
+      sampling->progress = bar.Callback();
+      probability = optim::EstimateInjuryProbability(at_design, *sampling);
+    }
+  } catch (const std::invalid_argument& e) {
+    return errors.BadInput(e.what());
+  }
+  if (o.json) {
+    out << report::RobustDesignJson(*box, options, result, probability ? &*probability : nullptr, r.warnings) << '\n';
+    return 0;
+  }
+  fmt::print(out, "Robust design over {} uncertain inputs ({} criterion, safety factor {:g}):\n", box->size(),
+             optim::ToString(result.criterion), sf);
+  for (const SceneRange& range : r.ranges) fmt::print(out, "  {:<20} {}  (from {})\n", range.name, range.text, range.source);
+  fmt::print(out, "\nVerdict: {}\n", optim::ToString(result.verdict));
+  if (result.recommendation) {
+    const optim::RobustCandidate& c = result.candidates[*result.recommendation];
+    fmt::print(out, "Recommended: {} (E {}, ν {:.2f}{}), {} — admissible for every value in the box (thinnest {})\n",
+               c.outcome.material.name, MPa(c.outcome.material.youngs_modulus_Pa), c.outcome.material.poisson_ratio,
+               c.outcome.material.poisson_assumed ? " assumed" : "", Mm(*c.outcome.recommended_thickness_m),
+               Mm(*c.outcome.min_safe_thickness_m));
+    if (c.worst_case_at_thinnest) {
+      fmt::print(out, "  What sets the design, at {}:\n", Mm(*c.outcome.min_safe_thickness_m));
+      PrintWorstCase(out, *box, *c.worst_case_at_thinnest, "  ");
+    }
+    fmt::print(out, "  At {}:\n", Mm(*c.outcome.recommended_thickness_m));
+    PrintWorstCase(out, *box, c.worst_case, "  ");
+  }
+  if (result.continuous) {
+    const optim::RobustContinuousOptimum& c = *result.continuous;
+    fmt::print(out, "Continuous optimum: E_c {}, b_c {}{}\n", MPa(c.design.youngs_modulus_Pa), Mm(c.design.thickness_m),
+               c.feasible ? "" : " (not admissible for the whole box within the search space)");
+    PrintWorstCase(out, *box, c.worst_case, "  ");
+  }
+  fmt::print(out, "Bare robot over the box:\n");
+  PrintWorstCase(out, *box, result.bare_robot, "  ");
+  fmt::print(out, "\nCandidates (each at its worst case over the box):\n  {:<3} {:<28} {:>9} {:>10} {:>11} {:>10} {:>8} {:>7}\n",
+             "#", "material", "E [MPa]", "thickness", "laceration", "contusion", "margin", "rounds");
+  const int shown = std::min<int>(r.runners_up, static_cast<int>(result.candidates.size()));
+  for (int i = 0; i < shown; ++i) {
+    const optim::RobustCandidate& c = result.candidates[static_cast<std::size_t>(i)];
+    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>10} {:>11.3f} {:>10.3f} {:>8} {:>7}{}\n", i + 1,
+               c.outcome.material.name.substr(0, 28), c.outcome.material.youngs_modulus_Pa * 1e-6,
+               c.outcome.recommended_thickness_m ? Mm(*c.outcome.recommended_thickness_m)
+                                                 : fmt::format("> {}", Mm(c.outcome.score.design.thickness_m)),
+               c.worst_case.laceration_ratio, c.worst_case.contusion_ratio, Percent(c.outcome.margin),
+               c.scenario_rounds, c.unconfirmed ? "  unconfirmed" : "");
+  }
+  if (static_cast<int>(result.candidates.size()) > shown) {
+    fmt::print(out, "  ... {} more (--top N, or --json for all)\n", result.candidates.size() - static_cast<std::size_t>(shown));
+  }
+  if (probability) {
+    fmt::print(out, "\nThe recommendation over the box's distribution:\n");
+    PrintInjuryProbability(out, *probability, "  ");
+  }
+  fmt::print(out, "\nSearch: {} exact-path evaluations, {:.1f} ms\n", result.evaluations, result.seconds * 1e3);
+  for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
+  return 0;
+}
+
 }  // namespace
 
 CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
@@ -289,6 +473,12 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
                   "threads of the per-material catalog snap, 1-256 (default 1); the answer does not depend on it")
       ->type_name("N")->group("Solver");
   AddOracleOptions(*sub, options.oracle_flags, "the designs", "Solver");
+  AddUncertaintyOptions(*sub, options.uncertainty, false);
+  sub->add_option("--max-injury-probability", options.max_injury_probability,
+                  "with scene ranges and --samples: the thinnest covering whose probability of failing the criterion "
+                  "is at most P, in [0, 1) (--seed and --threads set the sampling)")
+      ->type_name("P")
+      ->group("Uncertainty");
   sub->add_option("--top", options.runners_up, "rows of the candidate table (default 8)")->type_name("N")->group("Output");
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the report")->group("Output");
   return sub;
@@ -304,6 +494,13 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     (void)ImpactModel::FromScene(bare);  // scene range checks, naming the field
   } catch (const std::invalid_argument& e) {  // InputError and the library's checks
     return errors.BadInput(e.what());
+  }
+  if (!r.ranges.empty()) return RunRobustOptimize(options, r, out, err);
+  if (options.uncertainty.samples || !options.uncertainty.distributions.empty() || options.max_injury_probability) {
+    return errors.BadInput(fmt::format("{} needs at least one scene input as a range LO..HI, e.g. --head-mass 3.7kg..5.8kg",
+                                       options.uncertainty.samples           ? "--samples"
+                                       : options.max_injury_probability ? "--max-injury-probability"
+                                                                              : "--distribution"));
   }
 
   const double sf = r.request.options.safety_factor;

@@ -18,6 +18,7 @@
 #include "materials_command.hpp"
 #include "oracle_options.hpp"
 #include "robot_model_options.hpp"
+#include "uncertainty_options.hpp"
 
 namespace CLI {
 class App;
@@ -53,6 +54,12 @@ struct OptimizeOptions {
   std::optional<std::string> runners_up;        ///< --top N rows in the table (default 8)
   std::optional<std::string> threads;           ///< --threads N of the catalog snap (default 1)
   OracleFlags oracle_flags;                     ///< --oracle, --method, --rtol
+  /// --samples, --distribution (seed and threads: --seed, --threads): with scene ranges, the
+  /// recommendation's probability of injury, or the sampling of --max-injury-probability.
+  UncertaintyFlags uncertainty;
+  /// --max-injury-probability P: with ranges and --samples, the thinnest covering whose
+  /// probability of failing the criterion is <= P (FindProbabilityDesign).
+  std::optional<std::string> max_injury_probability;
   bool json = false;
 };
 
