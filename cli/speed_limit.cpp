@@ -13,6 +13,10 @@
 #include "errors.hpp"
 #include "output.hpp"
 #include "sweep.hpp"
+#include "uncertainty_options.hpp"
+#include "covopt/optim/robust_design.hpp"
+#include "covopt/report/robust_json.hpp"
+#include <nlohmann/json.hpp>
 
 namespace covopt::cli {
 namespace {
@@ -314,6 +318,7 @@ SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
   }
   SimulateOptions scene_options = options.scene;
   scene_options.json = false;
+  scene_options.accept_ranges = true;  // other inputs as LO..HI: the limit over the box (RunSpeedLimit)
   std::optional<std::string> varied_text;
   if (const auto typed = scene_options.scene_values.find(varied_key); typed != scene_options.scene_values.end()) {
     varied_text = typed->second;
@@ -378,6 +383,92 @@ SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
   return plan;
 }
 
+namespace {
+
+/// speed-limit with scene ranges (docs/model.md §11): per covering and row, the limit safe for
+/// every value in the box (MaxSafeSpeedOverBox / MaxSafeMassOverBox) and where it is set.
+int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptions& options, std::ostream& out,
+                        std::ostream& err) {
+  const CommandErrors errors(err, "speed-limit");
+  const bool by_speed = plan.quantity == SpeedLimitQuantity::kSpeed;
+  if (plan.csv_file || plan.plot_file || options.oracle.given()) {
+    return errors.BadInput(fmt::format("{} with scene ranges: the limit over the box is one number per row, found on "
+                                       "the exact path; drop it",
+                                       plan.csv_file ? "--csv" : plan.plot_file ? "--plot" : "--oracle/--method/--rtol"));
+  }
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  nlohmann::ordered_json inputs;
+  std::string text;
+  try {
+    for (const SimulationPlan& covering : plan.coverings) {
+      const auto uncertain = ResolveUncertainInputs(covering.ranges, {});
+      for (const double value : plan.values) {
+        Scene nominal = covering.scene;
+        (by_speed ? nominal.robot.mass_kg : nominal.robot.speed_m_per_s) = value;
+        const optim::UncertaintyBox box = MakeUncertaintyBox(nominal, uncertain, covering.ranges);
+        if (inputs.is_null()) inputs = nlohmann::ordered_json::parse(report::UncertainInputsJson(box, -1));
+        const std::string material = covering.covering_material ? covering.covering_material->name : std::string();
+        nlohmann::ordered_json row;
+        if (!material.empty()) row["material"] = material;
+        if (by_speed) {
+          const optim::RobustSpeedLimit limit = optim::MaxSafeSpeedOverBox(box, plan.options);
+          row["robot_mass_kg"] = std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
+          row.update(nlohmann::ordered_json::parse(report::RobustSpeedLimitJson(box, limit, -1)));
+          text += fmt::format("{}{}robot {}: max safe speed {} for every value in the box ({}), limited by {}\n",
+                              material, material.empty() ? "" : ", ", FormatQuantity(value, QuantityKind::kMass),
+                              FormatQuantity(limit.limit.max_safe_speed_m_per_s, QuantityKind::kSpeed),
+                              optim::ToString(limit.limit.status), optim::ToString(limit.limit.limited_by));
+          text += fmt::format("  set at: {} (found by {}; {} evaluations, {:.1f} ms)\n", DescribeValues(box, limit.values),
+                              limit.found_by, limit.evaluations, limit.seconds * 1e3);
+        } else {
+          const optim::RobustMassLimit limit = optim::MaxSafeMassOverBox(box, plan.options);
+          const nlohmann::ordered_json where = nlohmann::ordered_json::parse(report::WorstCaseJson(box, [&] {
+            optim::WorstCase w;
+            w.values = limit.values;
+            return w;
+          }(), -1));
+          row["speed_m_per_s"] = value;
+          row["max_safe_mass_kg"] = std::isfinite(limit.limit.max_safe_mass_kg)
+                                        ? nlohmann::ordered_json(limit.limit.max_safe_mass_kg)
+                                        : nlohmann::ordered_json(nullptr);
+          row["status"] = optim::ToString(limit.limit.status);
+          row["limited_by"] = optim::ToString(limit.limit.limited_by);
+          row["message"] = limit.limit.message;
+          row["worst_case"] = {{"inputs", where["inputs"]}, {"units", where["units"]}};
+          row["found_by"] = limit.found_by;
+          row["evaluations"] = limit.evaluations;
+          row["seconds"] = limit.seconds;
+          text += fmt::format("{}{}at {}: max safe robot mass {} for every value in the box ({}), limited by {}\n",
+                              material, material.empty() ? "" : ", ", FormatQuantity(value, QuantityKind::kSpeed),
+                              FormatQuantity(limit.limit.max_safe_mass_kg, QuantityKind::kMass),
+                              optim::ToString(limit.limit.status), optim::ToString(limit.limit.limited_by));
+          text += fmt::format("  set at: {} (found by {}; {} evaluations, {:.1f} ms)\n", DescribeValues(box, limit.values),
+                              limit.found_by, limit.evaluations, limit.seconds * 1e3);
+        }
+        rows.push_back(row);
+      }
+    }
+  } catch (const std::invalid_argument& e) {
+    return errors.BadInput(e.what());
+  }
+  if (plan.json) {
+    nlohmann::ordered_json j;
+    j["solve_for"] = by_speed ? "speed" : "mass";
+    j["uncertain_inputs"] = inputs;
+    j["rows"] = rows;
+    out << j.dump(2) << '\n';
+  } else {
+    out << "Limits over the box of " << plan.coverings.front().ranges.size() << " uncertain inputs:\n";
+    for (const SceneRange& range : plan.coverings.front().ranges) {
+      out << fmt::format("  {:<20} {}  (from {})\n", range.name, range.text, range.source);
+    }
+    out << '\n' << text;
+  }
+  return 0;
+}
+
+}  // namespace
+
 int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "speed-limit");
   SpeedLimitPlan plan;
@@ -386,6 +477,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
   } catch (const std::invalid_argument& e) {  // InputError and the library's own checks
     return errors.BadInput(e.what());
   }
+  if (!plan.coverings.front().ranges.empty()) return RunRobustSpeedLimit(plan, options, out, err);
   std::string bad_input;
   const std::vector<SpeedLimitRow> rows = ComputeRows(plan, &bad_input);
   if (!bad_input.empty()) return errors.BadInput(bad_input);
