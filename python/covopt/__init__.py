@@ -22,7 +22,7 @@ ComputationError.__module__ = __name__  # shown as covopt.ComputationError
 
 __all__ = ["simulate", "sweep", "optimize", "materials", "material", "ComputationError",
            "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "contact_motion",
-           "check_trajectory"]
+           "check_trajectory", "worst_case", "injury_probability", "sensitivities", "robust_optimize"]
 
 
 def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
@@ -283,3 +283,51 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
              ("urdf", "tip", "trajectory", "base", "point", "urdf_text")}
     return _covopt.check_trajectory(urdf, tip, trajectory, base=base, point=point,
                                     urdf_text=urdf_text, **scene)
+
+
+# Robust design over a population (docs/model.md §11). `ranges` maps scene inputs (keyword
+# names, head_mass or head-mass) to (low, high) or "LO..HI", values with units as elsewhere;
+# the other scene keywords are simulate's (the exact path only: no damping, braking or neck).
+
+def worst_case(*, ranges, **scene):
+    """The worst impact over the box (optim::FindWorstCase: corners, a Halton sample, DIRECT-L,
+    COBYLA). Returns the dict ``covopt simulate --json`` prints with the same ranges: the impact
+    at the worst case (peaks, verdicts, scene) plus uncertain_inputs and worst_case {inputs,
+    units, laceration_ratio, contusion_ratio, compression_ratio, governing_ratio, binding,
+    admissible, corner_governing_ratio, found_by, evaluations, seconds}. ValueError on bad input.
+    """
+    return _covopt.worst_case(ranges=ranges, **scene)
+
+
+def injury_probability(*, ranges, samples, seed=1, threads=0, distributions=None, **scene):
+    """Monte Carlo over the box: as worst_case, plus injury_probability {samples, seed,
+    laceration, contusion, any, fully_compressed, inadmissible, ci95: {name: [low, high]},
+    counts}, the dict ``covopt simulate --json --samples N --seed S`` prints. distributions maps
+    an input to ("normal" or "lognormal", mean, sd) (of the value, with units; truncated to the
+    range); uniform otherwise. Identical for any threads (0 = all cores)."""
+    return _covopt.injury_probability(ranges=ranges, samples=samples, seed=seed, threads=threads,
+                                      distributions=distributions, **scene)
+
+
+def sensitivities(**scene):
+    """The elasticities d ln r / d ln x of the laceration, contusion and compression ratios to
+    every scene input at this scene (optim::ComputeElasticities), the ``sensitivities`` object
+    of ``covopt simulate --json --sensitivities``: {laceration_ratio, contusion_ratio,
+    compression_ratio, evaluations, rows: [{field, unit, value, laceration, contusion,
+    compression, method, reliable, discrepancy}]} in tornado order."""
+    return _covopt.sensitivities(**scene)
+
+
+def robust_optimize(*, ranges, samples=None, seed=1, threads=0, distributions=None,
+                    max_injury_probability=None, allow_full_compression=False, **scene):
+    """The thinnest built-in catalog covering admissible for every value in the box
+    (optim::FindRobustThinnestCovering), the dict ``covopt optimize --json`` prints with the
+    same ranges (worst_case: the input values that set the design). With samples, the
+    recommendation's injury_probability too; with max_injury_probability (and samples), the
+    thinnest covering whose probability of failing the criterion is at most that
+    (optim::FindProbabilityDesign), as ``covopt optimize --max-injury-probability P``."""
+    arguments = {"ranges": ranges, "samples": samples, "seed": seed, "threads": threads,
+                 "distributions": distributions, "max_injury_probability": max_injury_probability,
+                 "allow_full_compression": allow_full_compression}
+    arguments = {k: v for k, v in arguments.items() if v is not None}
+    return _covopt.robust_optimize(**arguments, **scene)

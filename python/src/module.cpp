@@ -721,6 +721,7 @@ py::object JsonToPython(const std::string& text) { return JsonLoads(text); }
 void BindSpeedLimit(py::module_& m);  // speed_limit_bindings.cpp
 void BindRobot(py::module_& m);       // robot_bindings.cpp
 void BindTrajectory(py::module_& m);  // trajectory_bindings.cpp
+void BindRobust(py::module_& m);      // robust_bindings.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -734,4 +735,5 @@ PYBIND11_MODULE(_covopt, m) {
   covopt::python::BindSpeedLimit(m);
   covopt::python::BindRobot(m);
   covopt::python::BindTrajectory(m);
+  covopt::python::BindRobust(m);
 }

@@ -1,0 +1,93 @@
+"""covopt.worst_case, injury_probability, sensitivities and robust_optimize (docs/model.md §11),
+cross-checked against the CLI's JSON with the same ranges."""
+
+import pytest
+
+import covopt
+
+COVERING = {"covering_thickness": "16mm", "material": "XPS Foamular 250"}
+COVERING_FLAGS = ["--covering-thickness", "16mm", "--material", "XPS Foamular 250"]
+RANGES = {"head_mass": ("3.7kg", "5.8kg"), "scalp_thickness": "2mm..5mm"}
+RANGE_FLAGS = ["--head-mass", "3.7kg..5.8kg", "--scalp-thickness", "2mm..5mm"]
+
+
+def without_timing(value):
+    """The dict without seconds and evaluation counts that may differ between runs."""
+    if isinstance(value, dict):
+        return {k: without_timing(v) for k, v in value.items() if k not in ("seconds",)}
+    if isinstance(value, list):
+        return [without_timing(v) for v in value]
+    return value
+
+
+def test_worst_case_is_the_cli_simulate_object(cli_json):
+    ours = covopt.worst_case(ranges=RANGES, **COVERING)
+    theirs = cli_json("simulate", "--json", *RANGE_FLAGS, *COVERING_FLAGS)
+    assert without_timing(ours["worst_case"]) == without_timing(theirs["worst_case"])
+    assert ours["uncertain_inputs"] == theirs["uncertain_inputs"]
+    assert ours["contusion"] == theirs["contusion"]
+    assert ours["worst_case"]["inputs"]["head-mass"] == pytest.approx(5.8)
+    assert ours["worst_case"]["binding"] == "contusion"
+
+
+def test_injury_probability_is_the_cli_object_for_any_thread_count(cli_json):
+    ours = covopt.injury_probability(ranges=RANGES, samples=5000, seed=4, threads=1, **COVERING)
+    threaded = covopt.injury_probability(ranges=RANGES, samples=5000, seed=4, threads=3, **COVERING)
+    theirs = cli_json("simulate", "--json", *RANGE_FLAGS, *COVERING_FLAGS, "--samples", "5000", "--seed", "4")
+    assert ours["injury_probability"] == theirs["injury_probability"]
+    assert threaded["injury_probability"] == ours["injury_probability"]
+    p = ours["injury_probability"]
+    assert p["ci95"]["contusion"][0] <= p["contusion"] <= p["ci95"]["contusion"][1]
+    assert p["any"] >= p["contusion"]
+
+
+def test_distributions_match_the_cli(cli_json):
+    ours = covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=3000,
+                                     distributions={"head_mass": ("normal", "4.5kg", "0.5kg")}, **COVERING)
+    theirs = cli_json("simulate", "--json", "--head-mass", "3.7kg..5.8kg", *COVERING_FLAGS, "--samples", "3000",
+                      "--distribution", "head-mass=normal:4.5kg:0.5kg")
+    assert ours["injury_probability"] == theirs["injury_probability"]
+    assert ours["uncertain_inputs"][0]["distribution"] == "normal"
+
+
+def test_sensitivities_are_the_cli_object(cli_json):
+    ours = covopt.sensitivities(**COVERING)
+    theirs = cli_json("simulate", "--json", "--sensitivities", *COVERING_FLAGS)["sensitivities"]
+    assert ours == theirs
+    assert ours["rows"][0]["field"] == "speed"
+
+
+def test_robust_optimize_is_the_cli_optimize_object(cli_json):
+    ours = covopt.robust_optimize(ranges=RANGES)
+    theirs = cli_json("optimize", "--json", *RANGE_FLAGS)
+    assert without_timing(ours["recommendation"]) == without_timing(theirs["recommendation"])
+    assert without_timing(ours["worst_case"]) == without_timing(theirs["worst_case"])
+    assert ours["verdict"] == "covering-found"
+    assert ours["recommendation"]["thickness_m"] > 0.016  # thicker than for the nominal head
+
+
+def test_probability_design_matches_the_cli(cli_json):
+    ours = covopt.robust_optimize(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=2000, seed=2,
+                                  max_injury_probability=0.05)
+    theirs = cli_json("optimize", "--json", "--head-mass", "3.7kg..5.8kg", "--samples", "2000", "--seed", "2",
+                      "--max-injury-probability", "0.05")
+    assert ours["recommendation"]["material"] == theirs["recommendation"]["material"]
+    assert ours["recommendation"]["thickness_m"] == theirs["recommendation"]["thickness_m"]
+    assert ours["recommendation"]["injury_probability"] == theirs["recommendation"]["injury_probability"]
+    assert ours["recommendation"]["injury_probability"]["inadmissible"] <= 0.05
+
+
+@pytest.mark.parametrize("call, needle", [
+    (lambda: covopt.worst_case(ranges={"head_mass": ("5.8kg", "3.7kg")}), "head"),
+    (lambda: covopt.worst_case(ranges={"brain_mass": ("1kg", "2kg")}), "unknown input"),
+    (lambda: covopt.worst_case(ranges={}), "ranges"),
+    (lambda: covopt.worst_case(ranges={"head_mass": ("3.7kg", "5.8kg")}, damping="0.2s/m"), "damping"),
+    (lambda: covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=0), "samples"),
+    (lambda: covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10,
+                                       distributions={"speed": ("normal", "2m/s", "0.1m/s")}), "no range"),
+    (lambda: covopt.robust_optimize(ranges={"head_mass": ("3.7kg", "5.8kg")}, max_injury_probability=0.1),
+     "samples"),
+])
+def test_bad_input_raises_value_error(call, needle):
+    with pytest.raises(ValueError, match=needle):
+        call()
