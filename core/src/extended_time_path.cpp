@@ -391,7 +391,7 @@ ImpactResult ExtendedTimePath::Simulate(const ImpactModel& model,
   };
   auto check_energy = [&]() { residual = std::max(residual, std::abs(EnergyImbalance(run, y))); };
 
-  int flag = stepper.ReInit(0.0, ws.state);
+  int flag = stepper.BeginRun(0.0, ws.state);  // a new run: nothing carried over
   if (flag == kStepTaken) flag = stepper.SetInitStep(0.0);
   if (flag == kStepTaken) flag = stepper.SetTolerances(options.relative_tolerance, ws.absolute_tolerances);
   auto restart = [&]() {

@@ -57,7 +57,18 @@ void CaptureMessage(int error_code, const char* module, const char* function, ch
 class Stepper {
  public:
   virtual ~Stepper() = default;
-  /// Restart at (t0, y0) with the same right-hand side; the step history is dropped.
+  /// Start a new run at (t0, y0) in the state of a newly created integrator, so that a run's
+  /// results and counters never depend on what ran before on this stepper. CVODE: CVodeReInit
+  /// resets everything. ARKODE (6.4): ERKStepReInit/ARKStepReInit keep the root-finding flag
+  /// "a root was returned at the last call" (irfnd), so after a run that ended on a root
+  /// (separation) every step of the next interval re-checks that root: one more root-function
+  /// evaluation and one more right-hand side per step than on a fresh integrator (measured:
+  /// ERK 5(4) on the paper scene at 3 m/s, 493 against 489 right-hand sides, peaks equal).
+  /// ARKODE's memory is therefore created anew for every run (about 2 us of a 37 us run of
+  /// ERK 5(4) on the paper scene); the DIRK methods keep their matrix and linear solver.
+  virtual int BeginRun(double t0, N_Vector y0) = 0;
+  /// Restart at (t0, y0) inside a run (at an event) with the same right-hand side; the step
+  /// history is dropped.
   virtual int ReInit(double t0, N_Vector y0) = 0;
   virtual int SetTolerances(double relative, N_Vector absolute) = 0;
   /// First step of the next integration interval; 0 lets the integrator estimate it.

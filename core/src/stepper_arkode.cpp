@@ -40,36 +40,33 @@ ARKODE_DIRKTableID ImplicitTable(ComputationMethod method) {
 /// the analytic Jacobian.
 class DirkStepper final : public Stepper {
  public:
-  DirkStepper(ComputationMethod method, const StepperResources& r) : rhs_(r.rhs) {
-    N_VConst(0.0, r.state);
-    mem_ = ARKStepCreate(nullptr, rhs_, 0.0, r.state, r.context);
-    if (!mem_) throw std::runtime_error("ARKStepCreate failed");
-    ARKStepSetErrHandlerFn(mem_, CaptureMessage, r.log);
-    ARKStepSetUserData(mem_, r.user_data);
-    if (ARKStepSetTableNum(mem_, ImplicitTable(method), ARKODE_ERK_NONE) != ARK_SUCCESS) {
-      throw std::runtime_error("ARKStepSetTableNum failed: " + *r.log);
-    }
-    std::vector<int> directions(r.root_directions.begin(), r.root_directions.end());
-    ARKStepRootInit(mem_, static_cast<int>(directions.size()), r.roots);
-    ARKStepSetRootDirection(mem_, directions.data());
-    ARKStepSetNoInactiveRootWarn(mem_);
-    ARKStepSetMaxHnilWarns(mem_, -1);
+  DirkStepper(ComputationMethod method, const StepperResources& r)
+      : table_(ImplicitTable(method)), resources_(r),
+        root_directions_(r.root_directions.begin(), r.root_directions.end()) {
+    resources_.root_directions = root_directions_;  // this stepper's own copy
     const sunindextype size = N_VGetLength(r.state);
     matrix_ = SUNDenseMatrix(size, size, r.context);
     linear_solver_ = SUNLinSol_Dense(r.state, matrix_, r.context);
-    ARKStepSetLinearSolver(mem_, linear_solver_, matrix_);
-    if (r.jacobian) ARKStepSetJacFn(mem_, r.jacobian);  // else difference quotients
+    if (!matrix_ || !linear_solver_) {
+      Release();
+      throw std::runtime_error("SUNDenseMatrix/SUNLinSol_Dense failed");
+    }
+    N_VConst(0.0, r.state);
+    if (Create(0.0, r.state) != ARK_SUCCESS) {
+      Release();
+      throw std::runtime_error("ARKStepCreate failed: " + *r.log);
+    }
   }
-  ~DirkStepper() override {
-    ARKStepFree(&mem_);
-    if (linear_solver_) SUNLinSolFree(linear_solver_);
-    if (matrix_) SUNMatDestroy(matrix_);
-  }
+  ~DirkStepper() override { Release(); }
   DirkStepper(const DirkStepper&) = delete;
   DirkStepper& operator=(const DirkStepper&) = delete;
 
+  int BeginRun(double t0, N_Vector y0) override {
+    ARKStepFree(&mem_);
+    return Create(t0, y0);
+  }
   int ReInit(double t0, N_Vector y0) override {
-    return ARKStepReInit(mem_, nullptr, rhs_, t0, y0);
+    return ARKStepReInit(mem_, nullptr, resources_.rhs, t0, y0);
   }
   int SetTolerances(double relative, N_Vector absolute) override {
     return ARKStepSVtolerances(mem_, relative, absolute);
@@ -108,7 +105,35 @@ class DirkStepper final : public Stepper {
   }
 
  private:
-  RhsFunction rhs_ = nullptr;
+  /// A new ARKStep memory at (t0, y0), configured; the matrix and linear solver are reused.
+  int Create(double t0, N_Vector y0) {
+    mem_ = ARKStepCreate(nullptr, resources_.rhs, t0, y0, resources_.context);
+    if (!mem_) return ARK_MEM_FAIL;
+    ARKStepSetErrHandlerFn(mem_, CaptureMessage, resources_.log);
+    ARKStepSetUserData(mem_, resources_.user_data);
+    int flag = ARKStepSetTableNum(mem_, table_, ARKODE_ERK_NONE);
+    if (flag == ARK_SUCCESS) {
+      flag = ARKStepRootInit(mem_, static_cast<int>(root_directions_.size()), resources_.roots);
+    }
+    if (flag == ARK_SUCCESS) flag = ARKStepSetRootDirection(mem_, root_directions_.data());
+    if (flag == ARK_SUCCESS) flag = ARKStepSetNoInactiveRootWarn(mem_);
+    if (flag == ARK_SUCCESS) flag = ARKStepSetMaxHnilWarns(mem_, -1);
+    if (flag == ARK_SUCCESS) flag = ARKStepSetLinearSolver(mem_, linear_solver_, matrix_);
+    // Without an analytic Jacobian, difference quotients.
+    if (flag == ARK_SUCCESS && resources_.jacobian) flag = ARKStepSetJacFn(mem_, resources_.jacobian);
+    return flag;
+  }
+  void Release() noexcept {
+    ARKStepFree(&mem_);
+    if (linear_solver_) SUNLinSolFree(linear_solver_);
+    if (matrix_) SUNMatDestroy(matrix_);
+    linear_solver_ = nullptr;
+    matrix_ = nullptr;
+  }
+
+  ARKODE_DIRKTableID table_;
+  StepperResources resources_;
+  std::vector<int> root_directions_;
   void* mem_ = nullptr;
   SUNMatrix matrix_ = nullptr;
   SUNLinearSolver linear_solver_ = nullptr;
@@ -118,26 +143,25 @@ class DirkStepper final : public Stepper {
 class ErkStepper final : public Stepper {
  public:
   ErkStepper(ComputationMethod method, const StepperResources& r)
-      : rhs_(r.rhs), trusts_reentry_step_(method != ComputationMethod::kArkodeErk87) {
+      : table_(ExplicitTable(method)), resources_(r),
+        root_directions_(r.root_directions.begin(), r.root_directions.end()),
+        trusts_reentry_step_(method != ComputationMethod::kArkodeErk87) {
+    resources_.root_directions = root_directions_;  // this stepper's own copy
     N_VConst(0.0, r.state);
-    mem_ = ERKStepCreate(rhs_, 0.0, r.state, r.context);
-    if (!mem_) throw std::runtime_error("ERKStepCreate failed");
-    ERKStepSetErrHandlerFn(mem_, CaptureMessage, r.log);
-    ERKStepSetUserData(mem_, r.user_data);
-    if (ERKStepSetTableNum(mem_, ExplicitTable(method)) != ARK_SUCCESS) {
-      throw std::runtime_error("ERKStepSetTableNum failed: " + *r.log);
+    if (Create(0.0, r.state) != ARK_SUCCESS) {
+      ERKStepFree(&mem_);
+      throw std::runtime_error("ERKStepCreate failed: " + *r.log);
     }
-    std::vector<int> directions(r.root_directions.begin(), r.root_directions.end());
-    ERKStepRootInit(mem_, static_cast<int>(directions.size()), r.roots);
-    ERKStepSetRootDirection(mem_, directions.data());
-    ERKStepSetNoInactiveRootWarn(mem_);
-    ERKStepSetMaxHnilWarns(mem_, -1);
   }
   ~ErkStepper() override { ERKStepFree(&mem_); }
   ErkStepper(const ErkStepper&) = delete;
   ErkStepper& operator=(const ErkStepper&) = delete;
 
-  int ReInit(double t0, N_Vector y0) override { return ERKStepReInit(mem_, rhs_, t0, y0); }
+  int BeginRun(double t0, N_Vector y0) override {
+    ERKStepFree(&mem_);
+    return Create(t0, y0);
+  }
+  int ReInit(double t0, N_Vector y0) override { return ERKStepReInit(mem_, resources_.rhs, t0, y0); }
   int SetTolerances(double relative, N_Vector absolute) override {
     return ERKStepSVtolerances(mem_, relative, absolute);
   }
@@ -167,7 +191,25 @@ class ErkStepper final : public Stepper {
   double ReentryStep(double step) override { return trusts_reentry_step_ ? step : 0.0; }
 
  private:
-  RhsFunction rhs_ = nullptr;
+  /// A new ERKStep memory at (t0, y0), configured.
+  int Create(double t0, N_Vector y0) {
+    mem_ = ERKStepCreate(resources_.rhs, t0, y0, resources_.context);
+    if (!mem_) return ARK_MEM_FAIL;
+    ERKStepSetErrHandlerFn(mem_, CaptureMessage, resources_.log);
+    ERKStepSetUserData(mem_, resources_.user_data);
+    int flag = ERKStepSetTableNum(mem_, table_);
+    if (flag == ARK_SUCCESS) {
+      flag = ERKStepRootInit(mem_, static_cast<int>(root_directions_.size()), resources_.roots);
+    }
+    if (flag == ARK_SUCCESS) flag = ERKStepSetRootDirection(mem_, root_directions_.data());
+    if (flag == ARK_SUCCESS) flag = ERKStepSetNoInactiveRootWarn(mem_);
+    if (flag == ARK_SUCCESS) flag = ERKStepSetMaxHnilWarns(mem_, -1);
+    return flag;
+  }
+
+  ARKODE_ERKTableID table_;
+  StepperResources resources_;
+  std::vector<int> root_directions_;
   void* mem_ = nullptr;
   /// Fehlberg 7(8)'s embedded error estimate misses the error of a large first step after a
   /// restart (measured: 9e-7 at rtol 1e-9 when re-entering with the loading step), so it

@@ -51,6 +51,7 @@ class CvodeStepper final : public Stepper {
   CvodeStepper(const CvodeStepper&) = delete;
   CvodeStepper& operator=(const CvodeStepper&) = delete;
 
+  int BeginRun(double t0, N_Vector y0) override { return CVodeReInit(mem_, t0, y0); }
   int ReInit(double t0, N_Vector y0) override { return CVodeReInit(mem_, t0, y0); }
   int SetTolerances(double relative, N_Vector absolute) override {
     return CVodeSVtolerances(mem_, relative, absolute);

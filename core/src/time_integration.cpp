@@ -375,6 +375,7 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
   // the same smooth law (the motion is time-reversible), so it starts with that step rather
   // than the integrator's cautious estimate (about 1000 times smaller).
   std::array<double, 3> loading_step_at_end{};
+  bool run_started = false;  // the first start is a new run (Stepper::BeginRun), then restarts
   auto restart = [&](bool upward, bool reentry_at_end = true) {
     double first_step = 0.0;  // 0: the integrator estimates
     if (!upward && reentry_at_end && run.segment != internal::kWholeLaw) {
@@ -413,7 +414,8 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
         }
       }
     }
-    int flag = stepper.ReInit(t, ws.state);
+    int flag = run_started ? stepper.ReInit(t, ws.state) : stepper.BeginRun(t, ws.state);
+    run_started = true;
     if (flag == internal::kStepTaken) flag = stepper.SetInitStep(first_step);
     return flag;
   };

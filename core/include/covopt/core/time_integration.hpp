@@ -27,7 +27,9 @@
 /// δ = 0. No series openings there: the integrator takes the phase starts itself.
 ///
 /// The integrators' memory, vectors and linear solvers live in a TimeIntegrator and are
-/// reused across runs. A TimeIntegrator is not thread-safe: give each thread its own (or call
+/// reused across runs (ARKODE's memory is created anew for each run: its re-initialisation
+/// keeps root-finding state). A run's output, solver counters included, does not depend on
+/// what ran before on the same TimeIntegrator. A TimeIntegrator is not thread-safe: give each thread its own (or call
 /// SimulateImpact, which keeps one per thread). SUNDIALS' messages are captured into
 /// ImpactResult::message, never printed.
 
