@@ -483,7 +483,7 @@ ImpactResult ExtendedTimePath::Simulate(const ImpactModel& model,
          "the contact had not ended after " + FormatNumber(time_bound_s) +
              " s (100 times the slower of 3 L/v0 and the neck's period or time constant" +
              std::string(brakes ? ", after the reaction delay" : "") +
-             "): the bodies keep pressing, e.g. a fixed robot driving the head into a fixed torso");
+             "): the bodies keep pressing");
   } else if (!separated && steps_taken >= options.max_steps) {
     fail(SolveStatus::kStepLimit, kTooMuchWork,
          "step limit of " + std::to_string(options.max_steps) + " steps reached before separation");

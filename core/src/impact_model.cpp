@@ -93,6 +93,12 @@ void CheckNonNegative(const char* field, double value, double max, const char* u
         "head.torso_mass needs a head that moves: head.mass is fixed, so the neck would carry "
         "nothing (give a finite head.mass, or no torso)");
   }
+  if (std::isinf(h.torso_mass_kg) && std::isinf(s.robot.mass_kg)) {
+    throw std::invalid_argument(
+        "robot.mass and head.torso_mass are both fixed: the robot would drive the head into the "
+        "torso for ever and the contact could never end (give a finite mass in (0, 1e+06] kg to "
+        "one of them)");
+  }
 }
 
 void CheckScene(const Scene& s) {

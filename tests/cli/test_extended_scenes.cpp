@@ -178,6 +178,8 @@ TEST_CASE("bad values of the new inputs exit 2 naming the flag", "[extended][bad
   CheckBadInput({"simulate", "--torso-mass", "30kg"}, {"head.torso_mass", "neither stiffness nor damping"});
   CheckBadInput({"simulate", "--torso-mass", "-3kg", "--neck-stiffness", "1kN/m"}, {"head.torso_mass", "-3"});
   CheckBadInput({"simulate", "--braking", "10m/s2", "--robot-mass", "fixed"}, {"robot.braking", "fixed"});
+  CheckBadInput({"simulate", "--robot-mass", "fixed", "--torso-mass", "fixed", "--neck-stiffness", "30kN/m"},
+                {"robot.mass", "head.torso_mass", "both fixed"});
   CheckBadInput({"simulate", "--braking", "10kg"}, {"--braking", "kg"});
   CheckBadInput({"simulate", "--neck-damping", "100N/m", "--torso-mass", "30kg"}, {"--neck-damping", "N/m"});
 }

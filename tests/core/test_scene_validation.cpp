@@ -89,6 +89,26 @@ TEST_CASE("Both bodies fixed is rejected, naming both masses", "[scene]") {
   CHECK_THAT(message, Catch::Contains("fixed"));
 }
 
+TEST_CASE("A fixed robot with a fixed torso is rejected, naming both masses", "[scene][extended]") {
+  // The robot would push the head into the torso for ever: the contact could never end.
+  Scene scene;
+  scene.robot.mass_kg = covopt::kFixed;
+  scene.head.torso_mass_kg = covopt::kFixed;
+  scene.head.neck_stiffness_N_per_m = 3e4;
+  const std::string message = RejectionMessage(scene);
+  CHECK_THAT(message, Catch::Contains("robot.mass"));
+  CHECK_THAT(message, Catch::Contains("head.torso_mass"));
+  CHECK_THAT(message, Catch::Contains("both fixed"));
+  CHECK_THAT(message, Catch::Contains("never end"));
+  // Either one fixed is a scene that ends.
+  Scene free_robot = scene;
+  free_robot.robot.mass_kg = 10.0;
+  CHECK_NOTHROW(ImpactModel::FromScene(free_robot));
+  Scene free_torso = scene;
+  free_torso.head.torso_mass_kg = 30.0;
+  CHECK_NOTHROW(ImpactModel::FromScene(free_torso));
+}
+
 TEST_CASE("Covering material is not checked when there is no covering", "[scene]") {
   Scene scene;
   scene.covering = {-1.0, 0.9, 0.0};  // ignored: thickness 0 means no covering

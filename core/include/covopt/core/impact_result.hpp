@@ -98,8 +98,8 @@ enum class SolveStatus {
   kSolverFailure,    ///< the integrator returned an error (see message and raw code)
   kEventMissed,      ///< separation/maximum compression was not located consistently
   /// Time path, scenes beyond the conservative two-mass model: the contact had not ended
-  /// (δ back to 0) within the extended time path's bound (docs/model.md §10.2), e.g. a fixed
-  /// robot driving the head into a fixed torso.
+  /// (δ back to 0) within the extended time path's bound (docs/model.md §10.2): a guard; the
+  /// scene that cannot end, a fixed robot driving the head into a fixed torso, is bad input.
   kNoSeparation,
 };
 std::string_view ToString(SolveStatus status) noexcept;
