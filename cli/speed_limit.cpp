@@ -418,8 +418,8 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
                               material, material.empty() ? "" : ", ", FormatQuantity(value, QuantityKind::kMass),
                               FormatQuantity(limit.limit.max_safe_speed_m_per_s, QuantityKind::kSpeed),
                               optim::ToString(limit.limit.status), optim::ToString(limit.limit.limited_by));
-          text += fmt::format("  set at: {} (found by {}; {} evaluations, {:.1f} ms)\n", DescribeValues(box, limit.values),
-                              limit.found_by, limit.evaluations, limit.seconds * 1e3);
+          text += fmt::format("  set at: {} (found by {}, {} evaluations)\n", DescribeValues(box, limit.values),
+                              limit.found_by, limit.evaluations);
         } else {
           const optim::RobustMassLimit limit = optim::MaxSafeMassOverBox(box, plan.options);
           const nlohmann::ordered_json where = nlohmann::ordered_json::parse(report::WorstCaseJson(box, [&] {
@@ -442,8 +442,8 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
                               material, material.empty() ? "" : ", ", FormatQuantity(value, QuantityKind::kSpeed),
                               FormatQuantity(limit.limit.max_safe_mass_kg, QuantityKind::kMass),
                               optim::ToString(limit.limit.status), optim::ToString(limit.limit.limited_by));
-          text += fmt::format("  set at: {} (found by {}; {} evaluations, {:.1f} ms)\n", DescribeValues(box, limit.values),
-                              limit.found_by, limit.evaluations, limit.seconds * 1e3);
+          text += fmt::format("  set at: {} (found by {}, {} evaluations)\n", DescribeValues(box, limit.values),
+                              limit.found_by, limit.evaluations);
         }
         rows.push_back(row);
       }

@@ -183,8 +183,8 @@ std::string DescribeValues(const optim::UncertaintyBox& box, std::span<const dou
 
 void PrintWorstCase(std::ostream& out, const optim::UncertaintyBox& box, const optim::WorstCase& worst,
                     std::string_view indent) {
-  out << fmt::format("{}worst case: {} (found by {}; {} evaluations, {:.1f} ms)\n", indent,
-                     DescribeValues(box, worst.values), worst.found_by, worst.evaluations, worst.seconds * 1e3);
+  out << fmt::format("{}worst case: {} (found by {}, {} evaluations)\n", indent, DescribeValues(box, worst.values),
+                     worst.found_by, worst.evaluations);
   out << fmt::format("{}  laceration ratio {:.4f}, contusion ratio {:.4f}{}; governing ratio {:.4f} ({} binds): {}\n",
                      indent, worst.laceration_ratio, worst.contusion_ratio,
                      worst.scene.covering.thickness_m > 0.0
