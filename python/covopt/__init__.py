@@ -55,7 +55,10 @@ def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
     ...); rtol, atol [-] and max_steps apply to the time path only.
     history: also return ``result["history"]``, a dict of 1-D numpy arrays of equal length
     (time_s, penetration_m, penetration_rate_m_per_s, force_N, compressive_stress_Pa,
-    tensile_stress_Pa, energy_density_J_per_m2: the columns of ``--history``).
+    tensile_stress_Pa, energy_density_J_per_m2: the columns of ``--history``; with damping,
+    braking or a neck also robot_speed_m_per_s, head_speed_m_per_s [m/s] along the impact
+    axis, the head starting at rest, neck_force_N [N] and dissipated_work_J [J], the work of
+    the dampers, the brake and a fixed robot's support so far).
 
     Raises ValueError on bad input, ComputationError when the computation fails.
     """

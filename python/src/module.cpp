@@ -380,6 +380,15 @@ py::dict Simulate(const py::kwargs& kwargs) {
         [&m](const HistorySample& s) { return m.TensileFromCompressive(s.compressive_stress_Pa); });
     columns["energy_density_J_per_m2"] =
         column([](const HistorySample& s) { return s.energy_density_J_per_m2; });
+    if (!report.scene.is_conservative_two_mass()) {  // the CLI's extra --history columns
+      columns["robot_speed_m_per_s"] =
+          column([](const HistorySample& s) { return s.robot_speed_m_per_s; });
+      columns["head_speed_m_per_s"] =
+          column([](const HistorySample& s) { return s.head_speed_m_per_s; });
+      columns["neck_force_N"] = column([](const HistorySample& s) { return s.neck_force_N; });
+      columns["dissipated_work_J"] =
+          column([](const HistorySample& s) { return s.dissipated_work_J; });
+    }
     result["history"] = columns;
   }
   return result;

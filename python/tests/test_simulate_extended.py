@@ -6,10 +6,6 @@ exact path with damping, the time path with braking or a neck) and gives the CLI
 the physics: damping dissipates (coefficient of restitution below 1, less the more damping),
 braking lowers the peak force, a neck sits between a free head and a head carrying its torso.
 The neck values here are test inputs, not published physiology.
-
-Named to run after test_simulate.py: a time-path run in this process changes the step
-counters of a later identical time-path run (see test_time_path_oracle.py), which
-test_simulate compares with the CLI's fresh process.
 """
 
 import inspect
