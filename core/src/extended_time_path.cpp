@@ -18,6 +18,7 @@
 #include <string>
 #include <utility>
 
+#include "fixed_length_vector.hpp"
 #include "numeric_format.hpp"
 #include "stepper.hpp"
 
@@ -224,16 +225,16 @@ struct ExtendedTimePath::Workspace {
   std::string log;
 
   explicit Workspace(SUNContext c) : context(c) {
-    state = N_VNew_Serial(kStateSize, context);
-    absolute_tolerances = N_VNew_Serial(kStateSize, context);
-    dense_output = N_VNew_Serial(kStateSize, context);
+    // Serial vectors with fixed-length kernels and fused operations (one call instead of a
+    // chain of axpys for the Runge-Kutta stage sums and the Adams history); the integrators'
+    // vectors are clones of `state`.
+    state = MakeFixedLengthVector(kStateSize, context);
+    absolute_tolerances = MakeFixedLengthVector(kStateSize, context);
+    dense_output = MakeFixedLengthVector(kStateSize, context);
     if (!state || !absolute_tolerances || !dense_output) {
       Release();
       throw std::runtime_error("N_VNew_Serial failed");
     }
-    // Fused operations: one call instead of a chain of axpys for the Runge-Kutta stage sums
-    // and the Adams history (the integrators' vectors are clones of `state`).
-    N_VEnableFusedOps_Serial(state, SUNTRUE);
   }
   ~Workspace() { Release(); }
   Workspace(const Workspace&) = delete;

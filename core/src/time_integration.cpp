@@ -19,7 +19,7 @@
 #include "extended_time_path.hpp"
 #include "numeric_format.hpp"
 #include "stepper.hpp"
-#include "three_state_vector.hpp"
+#include "fixed_length_vector.hpp"
 
 namespace covopt {
 namespace internal {
@@ -58,7 +58,7 @@ ForceAndStress LawForceAndStress(const RunState& run, double delta) noexcept {
 
 int RightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) {
   const auto& run = *static_cast<const RunState*>(user_data);
-  // Every vector here is a clone of MakeThreeStateVector's: serial layout, read directly.
+  // Every vector here is a clone of MakeFixedLengthVector's: serial layout, read directly.
   const sunrealtype* state = NV_DATA_S(y);
   sunrealtype* rate = NV_DATA_S(ydot);
   const ForceAndStress law = LawForceAndStress(run, state[0]);
@@ -267,9 +267,9 @@ struct TimeIntegrator::Workspace {
     if (SUNContext_Create(nullptr, &context) != 0) throw std::runtime_error("SUNContext_Create failed");
     // Serial vectors with fixed-length kernels (fused operations on: one call instead of
     // q+1 for the Adams history updates and the Runge-Kutta stage sums).
-    state = internal::MakeThreeStateVector(context);
-    absolute_tolerances = internal::MakeThreeStateVector(context);
-    dense_output = internal::MakeThreeStateVector(context);
+    state = internal::MakeFixedLengthVector(3, context);
+    absolute_tolerances = internal::MakeFixedLengthVector(3, context);
+    dense_output = internal::MakeFixedLengthVector(3, context);
     if (!state || !absolute_tolerances || !dense_output) throw std::runtime_error("N_VNew_Serial failed");
   }
   ~Workspace() {

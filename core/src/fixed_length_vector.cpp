@@ -1,22 +1,22 @@
-// The time path's 3-entry state vector: SUNDIALS' serial N_Vector with fixed-length kernels
-// in its operations table (see three_state_vector.hpp).
+// The time paths' state vectors: SUNDIALS' serial N_Vector with fixed-length kernels in its
+// operations table (see fixed_length_vector.hpp), for the δ-only path's 3 entries and the
+// extended path's 7.
 //
 // Why: the generic serial kernels loop over a run-time length and, in the fused operations,
-// over the vectors first; for three entries the loop set-up dominates (the profile of the
-// default time path had N_VLinearCombination_Serial alone at about a fifth of the time).
-// Per entry, every kernel below does the serial kernel's operations in the serial kernel's
-// order, so the results are identical.
-#include "three_state_vector.hpp"
+// over the vectors first; for a few entries the loop set-up dominates (the profile of the
+// default time path had N_VLinearCombination_Serial alone at about a fifth of the time, of the
+// extended path at about a third). Per entry, every kernel below does the serial kernel's
+// operations in the serial kernel's order, so the results are identical.
+#include "fixed_length_vector.hpp"
 
 #include <cmath>
 
 namespace covopt::internal {
 namespace {
 
-constexpr int kLength = 3;
-
 inline double* Data(N_Vector v) { return static_cast<N_VectorContent_Serial>(v->content)->data; }
 
+template <int kLength>
 void LinearSum(double a, N_Vector x, double b, N_Vector y, N_Vector z) {
   const double* xd = Data(x);
   const double* yd = Data(y);
@@ -35,11 +35,13 @@ void LinearSum(double a, N_Vector x, double b, N_Vector y, N_Vector z) {
   for (int i = 0; i < kLength; ++i) zd[i] = (a * xd[i]) + (b * yd[i]);
 }
 
+template <int kLength>
 void Const(double c, N_Vector z) {
   double* zd = Data(z);
   for (int i = 0; i < kLength; ++i) zd[i] = c;
 }
 
+template <int kLength>
 void Prod(N_Vector x, N_Vector y, N_Vector z) {
   const double* xd = Data(x);
   const double* yd = Data(y);
@@ -47,6 +49,7 @@ void Prod(N_Vector x, N_Vector y, N_Vector z) {
   for (int i = 0; i < kLength; ++i) zd[i] = xd[i] * yd[i];
 }
 
+template <int kLength>
 void Div(N_Vector x, N_Vector y, N_Vector z) {
   const double* xd = Data(x);
   const double* yd = Data(y);
@@ -54,30 +57,35 @@ void Div(N_Vector x, N_Vector y, N_Vector z) {
   for (int i = 0; i < kLength; ++i) zd[i] = xd[i] / yd[i];
 }
 
+template <int kLength>
 void Scale(double c, N_Vector x, N_Vector z) {  // c x: exact copies/negations for c = ±1
   const double* xd = Data(x);
   double* zd = Data(z);
   for (int i = 0; i < kLength; ++i) zd[i] = c * xd[i];
 }
 
+template <int kLength>
 void Abs(N_Vector x, N_Vector z) {
   const double* xd = Data(x);
   double* zd = Data(z);
   for (int i = 0; i < kLength; ++i) zd[i] = std::abs(xd[i]);
 }
 
+template <int kLength>
 void Inv(N_Vector x, N_Vector z) {
   const double* xd = Data(x);
   double* zd = Data(z);
   for (int i = 0; i < kLength; ++i) zd[i] = 1.0 / xd[i];
 }
 
+template <int kLength>
 void AddConst(N_Vector x, double b, N_Vector z) {
   const double* xd = Data(x);
   double* zd = Data(z);
   for (int i = 0; i < kLength; ++i) zd[i] = xd[i] + b;
 }
 
+template <int kLength>
 double DotProd(N_Vector x, N_Vector y) {
   const double* xd = Data(x);
   const double* yd = Data(y);
@@ -86,6 +94,7 @@ double DotProd(N_Vector x, N_Vector y) {
   return sum;
 }
 
+template <int kLength>
 double MaxNorm(N_Vector x) {
   const double* xd = Data(x);
   double max = 0.0;
@@ -95,6 +104,7 @@ double MaxNorm(N_Vector x) {
   return max;
 }
 
+template <int kLength>
 double WeightedSquareSum(N_Vector x, N_Vector w) {
   const double* xd = Data(x);
   const double* wd = Data(w);
@@ -106,10 +116,12 @@ double WeightedSquareSum(N_Vector x, N_Vector w) {
   return sum;
 }
 
+template <int kLength>
 double WrmsNorm(N_Vector x, N_Vector w) {
-  return std::sqrt(WeightedSquareSum(x, w) / static_cast<double>(kLength));
+  return std::sqrt(WeightedSquareSum<kLength>(x, w) / static_cast<double>(kLength));
 }
 
+template <int kLength>
 double Min(N_Vector x) {
   const double* xd = Data(x);
   double min = xd[0];
@@ -119,12 +131,14 @@ double Min(N_Vector x) {
   return min;
 }
 
+template <int kLength>
 void Compare(double c, N_Vector x, N_Vector z) {
   const double* xd = Data(x);
   double* zd = Data(z);
   for (int i = 0; i < kLength; ++i) zd[i] = std::abs(xd[i]) >= c ? 1.0 : 0.0;
 }
 
+template <int kLength>
 sunbooleantype InvTest(N_Vector x, N_Vector z) {
   const double* xd = Data(x);
   double* zd = Data(z);
@@ -142,14 +156,15 @@ sunbooleantype InvTest(N_Vector x, N_Vector z) {
 /// z = Σ c_k X_k. Entry by entry, in the serial kernel's order (its cases z == X_0 with
 /// c_0 = 1, z == X_0, and z separate); an entry only ever reads the same entry of the
 /// others, so the entry-outer loop gives the serial kernel's results even under aliasing.
+template <int kLength>
 int LinearCombination(int count, double* c, N_Vector* X, N_Vector z) {
   if (count < 1) return -1;
   if (count == 1) {
-    Scale(c[0], X[0], z);
+    Scale<kLength>(c[0], X[0], z);
     return 0;
   }
   if (count == 2) {
-    LinearSum(c[0], X[0], c[1], X[1], z);
+    LinearSum<kLength>(c[0], X[0], c[1], X[1], z);
     return 0;
   }
   double* zd = Data(z);
@@ -172,24 +187,17 @@ int LinearCombination(int count, double* c, N_Vector* X, N_Vector z) {
     xd[k] = Data(X[k]);
     aliased = aliased || (k > 0 && X[k] == z);
   }
-  if (!aliased) {  // the three sums in registers, each in the serial kernel's order
+  if (!aliased) {  // the sums in registers, each in the serial kernel's order
     const bool scale_first = in_place && c[0] != 1.0;
-    double z0 = in_place ? zd[0] : c[0] * xd[0][0];
-    double z1 = in_place ? zd[1] : c[0] * xd[0][1];
-    double z2 = in_place ? zd[2] : c[0] * xd[0][2];
+    double sum[kLength];
+    for (int i = 0; i < kLength; ++i) sum[i] = in_place ? zd[i] : c[0] * xd[0][i];
     if (scale_first) {
-      z0 *= c[0];
-      z1 *= c[0];
-      z2 *= c[0];
+      for (int i = 0; i < kLength; ++i) sum[i] *= c[0];
     }
     for (int k = 1; k < count; ++k) {
-      z0 += c[k] * xd[k][0];
-      z1 += c[k] * xd[k][1];
-      z2 += c[k] * xd[k][2];
+      for (int i = 0; i < kLength; ++i) sum[i] += c[k] * xd[k][i];
     }
-    zd[0] = z0;
-    zd[1] = z1;
-    zd[2] = z2;
+    for (int i = 0; i < kLength; ++i) zd[i] = sum[i];
     return 0;
   }
   for (int i = 0; i < kLength; ++i) {
@@ -204,10 +212,11 @@ int LinearCombination(int count, double* c, N_Vector* X, N_Vector z) {
 }
 
 /// Z_k = a_k x + Y_k.
+template <int kLength>
 int ScaleAddMulti(int count, double* a, N_Vector x, N_Vector* Y, N_Vector* Z) {
   if (count < 1) return -1;
   if (count == 1) {
-    LinearSum(a[0], x, 1.0, Y[0], Z[0]);
+    LinearSum<kLength>(a[0], x, 1.0, Y[0], Z[0]);
     return 0;
   }
   const double* xd = Data(x);
@@ -226,43 +235,53 @@ int ScaleAddMulti(int count, double* a, N_Vector x, N_Vector* Y, N_Vector* Z) {
   return 0;
 }
 
+template <int kLength>
 int DotProdMulti(int count, N_Vector x, N_Vector* Y, double* products) {
   if (count < 1) return -1;
-  for (int k = 0; k < count; ++k) products[k] = DotProd(x, Y[k]);
+  for (int k = 0; k < count; ++k) products[k] = DotProd<kLength>(x, Y[k]);
   return 0;
+}
+
+template <int kLength>
+void SetFixedLengthKernels(N_Vector_Ops ops) {
+  ops->nvlinearsum = LinearSum<kLength>;
+  ops->nvconst = Const<kLength>;
+  ops->nvprod = Prod<kLength>;
+  ops->nvdiv = Div<kLength>;
+  ops->nvscale = Scale<kLength>;
+  ops->nvabs = Abs<kLength>;
+  ops->nvinv = Inv<kLength>;
+  ops->nvaddconst = AddConst<kLength>;
+  ops->nvdotprod = DotProd<kLength>;
+  ops->nvmaxnorm = MaxNorm<kLength>;
+  ops->nvwrmsnorm = WrmsNorm<kLength>;
+  ops->nvmin = Min<kLength>;
+  ops->nvcompare = Compare<kLength>;
+  ops->nvinvtest = InvTest<kLength>;
+  ops->nvlinearcombination = LinearCombination<kLength>;
+  ops->nvscaleaddmulti = ScaleAddMulti<kLength>;
+  ops->nvdotprodmulti = DotProdMulti<kLength>;
+  ops->nvdotprodlocal = DotProd<kLength>;
+  ops->nvmaxnormlocal = MaxNorm<kLength>;
+  ops->nvminlocal = Min<kLength>;
+  ops->nvinvtestlocal = InvTest<kLength>;
+  ops->nvwsqrsumlocal = WeightedSquareSum<kLength>;
 }
 
 }  // namespace
 
-N_Vector MakeThreeStateVector(SUNContext context) {
-  N_Vector v = N_VNew_Serial(kLength, context);
+N_Vector MakeFixedLengthVector(int length, SUNContext context) {
+  if (length != 3 && length != 7) return nullptr;
+  N_Vector v = N_VNew_Serial(length, context);
   if (!v) return nullptr;
   // The serial vector's fused and vector-array operations (used by CVODE's Adams history
   // updates and ARKODE's stage sums); those not replaced below stay the serial ones.
   N_VEnableFusedOps_Serial(v, SUNTRUE);
-  N_Vector_Ops ops = v->ops;
-  ops->nvlinearsum = LinearSum;
-  ops->nvconst = Const;
-  ops->nvprod = Prod;
-  ops->nvdiv = Div;
-  ops->nvscale = Scale;
-  ops->nvabs = Abs;
-  ops->nvinv = Inv;
-  ops->nvaddconst = AddConst;
-  ops->nvdotprod = DotProd;
-  ops->nvmaxnorm = MaxNorm;
-  ops->nvwrmsnorm = WrmsNorm;
-  ops->nvmin = Min;
-  ops->nvcompare = Compare;
-  ops->nvinvtest = InvTest;
-  ops->nvlinearcombination = LinearCombination;
-  ops->nvscaleaddmulti = ScaleAddMulti;
-  ops->nvdotprodmulti = DotProdMulti;
-  ops->nvdotprodlocal = DotProd;
-  ops->nvmaxnormlocal = MaxNorm;
-  ops->nvminlocal = Min;
-  ops->nvinvtestlocal = InvTest;
-  ops->nvwsqrsumlocal = WeightedSquareSum;
+  if (length == 3) {
+    SetFixedLengthKernels<3>(v->ops);
+  } else {
+    SetFixedLengthKernels<7>(v->ops);
+  }
   return v;
 }
 
