@@ -312,11 +312,18 @@ ImpactResult ExtendedTimePath::Simulate(const ImpactModel& model,
   // density, and the impact energy for the work.
   const ForceLawSegment& first = model.segment(0);
   const double p1 = first.exponent + 1.0;
-  const double length_scale = std::pow(p1 * model.impact_energy_J() / first.stiffness, 1.0 / p1);
+  const double conservative_length_m =
+      std::pow(p1 * model.impact_energy_J() / first.stiffness, 1.0 / p1);
+  // A braking robot travels at most v0 t_d + v0²/(2a), which bounds δ: far below L when the
+  // brake stops it early (low speed, strong brake), and δ must stay above its tolerance.
+  const double length_scale =
+      brakes ? std::min(conservative_length_m,
+                        v0 * run.reaction_delay_s + v0 * v0 / (2.0 * run.braking_m_per_s2))
+             : conservative_length_m;
   const double energy_density_scale = kHertzPressureFactor * first.stiffness *
                                       first.curvature_per_m *
                                       std::pow(length_scale, first.exponent) / first.exponent;
-  const double time_scale = length_scale / v0;
+  const double time_scale = conservative_length_m / v0;
   run.slope_floor_m = 1e-12 * length_scale;
   const double atol =
       options.absolute_tolerance > 0.0 ? options.absolute_tolerance : options.relative_tolerance;
@@ -343,7 +350,9 @@ ImpactResult ExtendedTimePath::Simulate(const ImpactModel& model,
       slowest_s = std::max(slowest_s, total_mass_kg / run.neck_damping_N_s_per_m);
     }
   }
-  const double time_bound_s = (brakes ? run.reaction_delay_s : 0.0) + 100.0 * slowest_s;
+  double time_bound_s = (brakes ? run.reaction_delay_s : 0.0) + 100.0 * slowest_s;
+  const double neck_time_s = slowest_s > 3.0 * time_scale ? slowest_s : 0.0;
+  const double inverse_reduced_mass = run.bodies.inverse_mass(0) + run.bodies.inverse_mass(1);
 
   sunrealtype* y = N_VGetArrayPointer(ws.state);
   for (int i = 0; i < kStateSize; ++i) y[i] = 0.0;
@@ -391,6 +400,20 @@ ImpactResult ExtendedTimePath::Simulate(const ImpactModel& model,
     largest_stress_Pa = std::max(largest_stress_Pa, d.stress_Pa);
   };
   auto check_energy = [&]() { residual = std::max(residual, std::abs(EnergyImbalance(run, y))); };
+  // From a maximum of δ or the robot's stop on, what is left of the contact depends on the
+  // state there, not on v0: a robot braked to rest early leaves a tiny δ that the elastic
+  // force alone unloads, slowly (from rest at δ, for F ~ δ^n, in a time ~ δ^((1-n)/2)). So
+  // the bound grows to 100 times the slower of the neck's time and 3 δ/v, v the relative
+  // speed that δ' and U(δ) give.
+  auto extend_time_bound = [&]() {
+    const double potential_J = model.StateAt(y[kPenetration]).potential_energy_J;
+    const double speed = std::sqrt(y[kPenetrationRate] * y[kPenetrationRate] +
+                                   2.0 * potential_J * inverse_reduced_mass);
+    if (speed > 0.0) {
+      time_bound_s =
+          std::max(time_bound_s, t + 100.0 * std::max(neck_time_s, 3.0 * y[kPenetration] / speed));
+    }
+  };
 
   int flag = stepper.BeginRun(0.0, ws.state);  // a new run: nothing carried over
   if (flag == kStepTaken) flag = stepper.SetInitStep(0.0);
@@ -436,6 +459,7 @@ ImpactResult ExtendedTimePath::Simulate(const ImpactModel& model,
         time_at_max_s = t;
         energy_density_at_max = y[kEnergyDensity];
       }
+      extend_time_bound();
     }
     bool kink = false;
     if (found[kLowerSwitch]) {
@@ -460,6 +484,7 @@ ImpactResult ExtendedTimePath::Simulate(const ImpactModel& model,
     }
     if (found[kRobotStops]) {
       run.brake_on = false;
+      extend_time_bound();
       kink = true;
     }
     if (found[kDampingClamp]) kink = true;
@@ -484,7 +509,10 @@ ImpactResult ExtendedTimePath::Simulate(const ImpactModel& model,
          "the contact had not ended after " + FormatNumber(time_bound_s) +
              " s (100 times the slower of 3 L/v0 and the neck's period or time constant" +
              std::string(brakes ? ", after the reaction delay" : "") +
-             "): the bodies keep pressing");
+             ", or from the last maximum compression" +
+             std::string(brakes ? " or the robot's stop" : "") +
+             " of that and 3 delta/v, v the relative speed from delta' and U(delta)): the "
+             "bodies keep pressing");
   } else if (!separated && steps_taken >= options.max_steps) {
     fail(SolveStatus::kStepLimit, kTooMuchWork,
          "step limit of " + std::to_string(options.max_steps) + " steps reached before separation");

@@ -466,6 +466,40 @@ TEST_CASE("A robot braked to a stop is released: only the contact pushes it back
   CHECK(r.statistics.restarts == 3);
 }
 
+TEST_CASE("Every braking run separates, from 1e-6 to 10 m/s and 0 to 1000 m/s²", "[extended][braking]") {
+  // A strong brake at a low speed stops the robot after δ ~ v0²/(2a), far below the unbraked
+  // penetration; only the elastic force then unloads that tiny δ, over a time that grows as
+  // δ_max falls (~δ^(-1/4) for Hertz) and far exceeds 3 L/v0. The contact must still end
+  // (a free head, no neck), with the energy balance kept.
+  for (const double delay_s : {0.0, 1e-3}) {
+    for (const double braking : {0.0, 1.0, 10.0, 100.0, 150.0, 200.0, 1000.0}) {
+      for (double speed = 1e-6; speed <= 10.0 * (1.0 + 1e-9); speed *= 10.0) {
+        Scene scene = BrakingScene(braking, delay_s);
+        scene.robot.speed_m_per_s = speed;
+        CAPTURE(delay_s, braking, speed);
+        const ImpactResult r = Simulate(scene, 1e-8, ComputationMethod::kArkodeErk54, true);
+        REQUIRE(r.ok());
+        REQUIRE(r.contact_duration_s.has_value());
+        CHECK(*r.contact_duration_s > 0.0);
+        CHECK(*r.rebound_speed_m_per_s >= 0.0);
+        CHECK(r.energy_residual <= 1e-6);  // max(100 rtol, 1e-9)
+        for (const std::string& warning : r.warnings) {
+          CHECK(warning.find("did not keep its tolerance") == std::string::npos);
+        }
+        if (braking > 0.0) {  // δ_max is at most the robot's travel, v0 t_d + v0²/(2a)
+          const double travel_m = speed * delay_s + speed * speed / (2.0 * braking);
+          CHECK(r.peaks.max_penetration_m <= travel_m * (1.0 + 1e-6));
+          // Far below the unbraked penetration, the brake (m_r a ~ 1e3 N) dwarfs the contact
+          // force and the robot stops after exactly v0²/(2a).
+          if (delay_s == 0.0 && braking >= 100.0 && speed <= 1e-4) {
+            CHECK(RelativeError(r.peaks.max_penetration_m, travel_m) < 1e-6);
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST_CASE("A very stiff neck makes head and torso one mass", "[extended][neck]") {
   const double torso = 40.0;
   Scene one_mass = PaperScene(0.015, 27.6e6, 0.22);
