@@ -85,6 +85,7 @@ std::vector<std::size_t> ShownSamples(const optim::TrajectoryCheck& check) {
 std::string MaxSafeText(const optim::SampleVerdict& v) {
   switch (v.speed_limit.status) {
     case optim::SpeedLimitStatus::kNoSafeValue: return "none safe";
+    case optim::SpeedLimitStatus::kEvaluationFailed: return "evaluation failed";
     case optim::SpeedLimitStatus::kSafeUpToSearchLimit:
       return fmt::format(">= {:.4g}", v.speed_limit.max_safe_speed_m_per_s);
     case optim::SpeedLimitStatus::kLimited: break;

@@ -204,7 +204,8 @@ std::string SafetyMapScript(const SpeedLimitPlan& plan, const std::string& outpu
       Scene scene = curve.scene;
       scene.robot.mass_kg = m;
       const optim::SpeedLimit limit = optim::MaxSafeSpeed(scene, plan.options);
-      if (limit.status == optim::SpeedLimitStatus::kNoSafeValue) {
+      if (limit.status == optim::SpeedLimitStatus::kNoSafeValue ||
+          limit.status == optim::SpeedLimitStatus::kEvaluationFailed) {
         s += fmt::format("{} NaN\n", m);
       } else {
         s += fmt::format("{} {}\n", m, limit.max_safe_speed_m_per_s);
@@ -481,6 +482,15 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
   std::string bad_input;
   const std::vector<SpeedLimitRow> rows = ComputeRows(plan, &bad_input);
   if (!bad_input.empty()) return errors.BadInput(bad_input);
+  // A row the oracle could not answer is no answer at all: exit 1 with its message.
+  for (const SpeedLimitRow& row : rows) {
+    const bool by_speed = plan.quantity == SpeedLimitQuantity::kSpeed;
+    const optim::SpeedLimitStatus status = by_speed ? row.speed_limit.status : row.mass_limit.status;
+    if (status == optim::SpeedLimitStatus::kEvaluationFailed) {
+      return errors.Failed((by_speed ? row.speed_limit.message : row.mass_limit.message) +
+                           (row.material ? " (" + *row.material + ")" : std::string()));
+    }
+  }
 
   std::vector<std::string> input_warnings;
   for (const SimulationPlan& covering : plan.coverings) {

@@ -273,6 +273,7 @@ struct BracketedLimit {
   double value = 0.0;
   LimitingCriterion by = LimitingCriterion::kNone;
   ImpactJudgement at;  ///< at `value` (at `lowest` for kNoSafeValue)
+  double failed_at = 0.0;  ///< the value whose evaluation failed (kEvaluationFailed)
 };
 
 /// Grid points per decade of the scan, and the bisection's relative resolution.
@@ -287,7 +288,15 @@ BracketedLimit BracketOnOracle(const Judge& judge, const Scene& base, double low
     return judge(probe);
   };
   BracketedLimit out;
+  // A failed evaluation says nothing about safety: the search stops and reports it.
+  auto failed = [&](const ImpactJudgement& e, double value) {
+    if (!e.failed) return false;
+    out.status = SpeedLimitStatus::kEvaluationFailed;
+    out.failed_at = value;
+    return true;
+  };
   const ImpactJudgement bottom = at(lowest);
+  if (failed(bottom, lowest)) return out;
   if (!bottom.admissible) {
     out.status = SpeedLimitStatus::kNoSafeValue;
     out.by = judge.Violated(bottom);
@@ -300,6 +309,7 @@ BracketedLimit BracketOnOracle(const Judge& judge, const Scene& base, double low
   for (int i = 1; i <= points; ++i) {
     const double value = i == points ? highest : lowest * std::pow(highest / lowest, static_cast<double>(i) / points);
     const ImpactJudgement e = at(value);
+    if (failed(e, value)) return out;
     if (!e.admissible) {
       unsafe = value;
       unsafe_at = e;
@@ -317,6 +327,7 @@ BracketedLimit BracketOnOracle(const Judge& judge, const Scene& base, double low
   while (unsafe / safe - 1.0 > kBisectionResolution) {
     const double mid = std::sqrt(safe * unsafe);
     const ImpactJudgement e = at(mid);
+    if (failed(e, mid)) return out;
     if (e.admissible) {
       safe = mid;
       safe_at = e;
@@ -346,6 +357,7 @@ const char* ToString(SpeedLimitStatus status) noexcept {
     case SpeedLimitStatus::kLimited: return "limited";
     case SpeedLimitStatus::kSafeUpToSearchLimit: return "safe-up-to-search-limit";
     case SpeedLimitStatus::kNoSafeValue: return "no-safe-value";
+    case SpeedLimitStatus::kEvaluationFailed: return "evaluation-failed";
   }
   return "unknown";
 }
@@ -404,6 +416,10 @@ SpeedLimit MaxSafeSpeedOnOracle(const Scene& base, const SpeedLimitOptions& opti
     case SpeedLimitStatus::kLimited:
       result.message = "max safe speed " + Format("%.6g", limit.value) + " m/s, limited by " + ToString(limit.by);
       break;
+    case SpeedLimitStatus::kEvaluationFailed:
+      result.message = "no answer: the oracle failed at " + Format("%.6g", limit.failed_at) + " m/s (" +
+                       judge.Report().first_failure + ")";
+      break;
   }
   result.oracle = judge.Report();
   return result;
@@ -445,6 +461,10 @@ MassLimit MaxSafeMassOnOracle(const Scene& base, const SpeedLimitOptions& option
     case SpeedLimitStatus::kLimited:
       result.message =
           "max safe reflected mass " + Format("%.6g", limit.value) + " kg, limited by " + ToString(limit.by);
+      break;
+    case SpeedLimitStatus::kEvaluationFailed:
+      result.message = "no answer: the oracle failed at " + Format("%.6g", limit.failed_at) + " kg (" +
+                       judge.Report().first_failure + ")";
       break;
   }
   result.oracle = judge.Report();

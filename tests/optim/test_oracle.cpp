@@ -317,3 +317,56 @@ TEST_CASE("a sweep solves the points without an energy integral on the time path
   }
   CHECK_THAT(result.BriefReport(), Catch::Contains("2 on the time path"));
 }
+
+TEST_CASE("a strong brake with no delay raises the speed limit above the unbraked one, as a scan shows",
+          "[oracle][speed-limit]") {
+  // 200 m/s² from first contact: at very low speeds the robot stops after v0²/(2a) and the tiny
+  // contact unloads slowly; every evaluation must still end in a separation, from 1e-6 m/s up.
+  const Scene scene = Braking(/*delay_s=*/0.0, /*braking=*/200.0);
+  const SpeedLimit unbraked = MaxSafeSpeed(Scene{}, {});
+  REQUIRE(unbraked.status == SpeedLimitStatus::kLimited);
+  CHECK(unbraked.max_safe_speed_m_per_s == Approx(1.775).epsilon(1e-3));
+  const SpeedLimit limit = MaxSafeSpeed(scene, {});
+  INFO(limit.message);
+  REQUIRE(limit.status == SpeedLimitStatus::kLimited);
+  CHECK(limit.oracle.failed_evaluations == 0);
+  const double v = limit.max_safe_speed_m_per_s;
+  CHECK(v > unbraked.max_safe_speed_m_per_s);
+  // Brute force on the time path: 100 speeds per decade upward from 1e-6 m/s; all admissible
+  // below the first inadmissible one, and the limit between it and its predecessor.
+  double last_safe = 0.0;
+  double first_unsafe = 0.0;
+  for (int k = 0; k <= 800; ++k) {
+    Scene probe = scene;
+    probe.robot.speed_m_per_s = 1e-6 * std::pow(10.0, k / 100.0);
+    const ImpactJudgement at = JudgeImpact(probe, {});
+    INFO("speed " << probe.robot.speed_m_per_s << " m/s");
+    REQUIRE_FALSE(at.failed);
+    if (!at.admissible) {
+      first_unsafe = probe.robot.speed_m_per_s;
+      break;
+    }
+    last_safe = probe.robot.speed_m_per_s;
+  }
+  REQUIRE(first_unsafe > 0.0);
+  CHECK(last_safe <= v);
+  CHECK(v < first_unsafe);
+}
+
+TEST_CASE("a failed evaluation ends the speed-limit search with its status, never read as unsafe",
+          "[oracle][speed-limit][failure]") {
+  SpeedLimitOptions options;
+  options.oracle.time_path.max_steps = 10;  // the smallest allowed: too few to separate
+  const SpeedLimit limit = MaxSafeSpeed(Braking(/*delay_s=*/0.0, /*braking=*/200.0), options);
+  CHECK(limit.status == SpeedLimitStatus::kEvaluationFailed);
+  CHECK(std::string(ToString(limit.status)) == "evaluation-failed");
+  CHECK(limit.max_safe_speed_m_per_s == 0.0);
+  CHECK(limit.limited_by == LimitingCriterion::kNone);
+  CHECK(limit.oracle.evaluations == 1);  // the search stops at the first failure
+  CHECK(limit.oracle.failed_evaluations == 1);
+  CHECK_THAT(limit.message, Catch::Contains("the oracle failed at 1e-06 m/s"));
+  CHECK_THAT(limit.message, Catch::Contains("step-limit"));
+  const MassLimit mass = MaxSafeMass(Braking(/*delay_s=*/0.0, /*braking=*/200.0), options);
+  CHECK(mass.status == SpeedLimitStatus::kEvaluationFailed);
+  CHECK_THAT(mass.message, Catch::Contains("the oracle failed at"));
+}

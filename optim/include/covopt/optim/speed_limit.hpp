@@ -67,8 +67,13 @@ enum class SpeedLimitStatus {
   /// Not even the bottom of the range is safe (the model's 1e-6 m/s; a vanishing mass):
   /// the value is 0.
   kNoSafeValue,
+  /// Not an answer: the oracle (the time path) failed on an impact the search needed, so
+  /// whether that value is safe is unknown. The value is 0, the ratios are 0, and the message
+  /// names the value and the oracle's status and message. A failed run is never read as safe
+  /// or unsafe.
+  kEvaluationFailed,
 };
-/// "limited", "safe-up-to-search-limit", "no-safe-value".
+/// "limited", "safe-up-to-search-limit", "no-safe-value", "evaluation-failed".
 const char* ToString(SpeedLimitStatus status) noexcept;
 
 /// Which criterion sets the limit.
