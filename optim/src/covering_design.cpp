@@ -17,34 +17,19 @@
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
 
+#include "validation_internal.hpp"
+
 namespace covopt::optim {
 namespace {
 
 /// The continuous optimum's thickness is bisected to this [m].
 constexpr double kThicknessTolerance_m = 1e-11;
 
-std::string Number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
-
-void Require(bool condition, const std::string& message) {
-  if (!condition) throw std::invalid_argument(message);
-}
+using internal::Number;
+using internal::Require;
 
 void ValidateOptions(const DesignOptions& o) {
-  const DesignSpace& s = o.space;
-  Require(std::isfinite(s.min_modulus_Pa) && s.min_modulus_Pa > 0,
-          "min modulus must be > 0 Pa (got " + Number(s.min_modulus_Pa) + ")");
-  Require(std::isfinite(s.max_modulus_Pa) && s.max_modulus_Pa > s.min_modulus_Pa && s.max_modulus_Pa <= 1e13,
-          "max modulus must be in (min modulus " + Number(s.min_modulus_Pa) + " Pa, 1e13 Pa] (got " +
-              Number(s.max_modulus_Pa) + ")");
-  Require(std::isfinite(s.min_thickness_m) && s.min_thickness_m > 0,
-          "min thickness must be > 0 m (got " + Number(s.min_thickness_m) + ")");
-  Require(std::isfinite(s.max_thickness_m) && s.max_thickness_m > s.min_thickness_m && s.max_thickness_m <= 1.0,
-          "max thickness must be in (min thickness " + Number(s.min_thickness_m) + " m, 1 m] (got " +
-              Number(s.max_thickness_m) + ")");
+  internal::ValidateDesignSpace(o.space);
   Require(std::isfinite(o.safety_factor) && o.safety_factor >= 1.0 && o.safety_factor <= 100.0,
           "safety factor must be in [1, 100] (got " + Number(o.safety_factor) + ")");
   Require(o.covering_poisson_ratio > -1.0 && o.covering_poisson_ratio <= 0.5,

@@ -21,16 +21,6 @@
 namespace covopt::optim {
 namespace internal {
 
-std::string Number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
-
-void Require(bool condition, const std::string& message) {
-  if (!condition) throw std::invalid_argument(message);
-}
-
 void ValidateCriterion(const ImpactCriterion& c) {
   Require(std::isfinite(c.safety_factor) && c.safety_factor >= 1.0 && c.safety_factor <= 100.0,
           "safety factor must be in [1, 100] (got " + Number(c.safety_factor) + ")");

@@ -22,17 +22,7 @@ namespace covopt::optim {
 namespace internal {
 
 void ValidateDesign(const DesignOptions& o) {
-  const DesignSpace& s = o.space;
-  Require(std::isfinite(s.min_modulus_Pa) && s.min_modulus_Pa > 0,
-          "min modulus must be > 0 Pa (got " + Number(s.min_modulus_Pa) + ")");
-  Require(std::isfinite(s.max_modulus_Pa) && s.max_modulus_Pa > s.min_modulus_Pa && s.max_modulus_Pa <= 1e13,
-          "max modulus must be in (min modulus " + Number(s.min_modulus_Pa) + " Pa, 1e13 Pa] (got " +
-              Number(s.max_modulus_Pa) + ")");
-  Require(std::isfinite(s.min_thickness_m) && s.min_thickness_m > 0,
-          "min thickness must be > 0 m (got " + Number(s.min_thickness_m) + ")");
-  Require(std::isfinite(s.max_thickness_m) && s.max_thickness_m > s.min_thickness_m && s.max_thickness_m <= 1.0,
-          "max thickness must be in (min thickness " + Number(s.min_thickness_m) + " m, 1 m] (got " +
-              Number(s.max_thickness_m) + ")");
+  ValidateDesignSpace(o.space);
   Require(o.covering_poisson_ratio > -1.0 && o.covering_poisson_ratio <= 0.5,
           "covering poisson ratio must be in (-1, 0.5] (got " + Number(o.covering_poisson_ratio) + ")");
   Require(o.thickness_scan_points >= 10 && o.thickness_scan_points <= 1000000,
@@ -483,16 +473,9 @@ RobustThinnestCovering FindRobustThinnestCovering(const UncertaintyBox& box,
   });
   out.candidates = std::move(candidates);
   const bool any_safe = !out.candidates.empty() && out.candidates.front().outcome.safe;
-  if (out.bare_robot.admissible) {
-    out.verdict = DesignVerdict::kBareRobotSafe;
-  } else if (any_safe) {
-    out.verdict = DesignVerdict::kCoveringFound;
-    out.recommendation = 0;
-  } else if (out.continuous && !out.continuous->feasible) {
-    out.verdict = DesignVerdict::kNothingSafe;
-  } else {
-    out.verdict = DesignVerdict::kNoSafeMaterial;
-  }
+  out.verdict = internal::RobustVerdict(out.bare_robot.admissible, any_safe,
+                                        out.continuous && !out.continuous->feasible);
+  if (out.verdict == DesignVerdict::kCoveringFound) out.recommendation = 0;
   out.evaluations = evaluations;
   out.seconds = SecondsSince(started);
   return out;

@@ -13,13 +13,9 @@
 #include <covopt/core/scene.hpp>
 
 #include "covopt/optim/robust_design.hpp"
+#include "validation_internal.hpp"
 
 namespace covopt::optim::internal {
-
-/// "%g" of a value.
-std::string Number(double value);
-/// throw std::invalid_argument(message) unless `condition`.
-void Require(bool condition, const std::string& message);
 
 /// The criterion an impact is judged by.
 struct ImpactCriterion {
@@ -99,5 +95,15 @@ double StockThickness(double steps, double step_m);
 double ScanThickness(const DesignSpace& space, int points, int k);
 /// The nested search's thickness grid: half linear, half geometric [m].
 std::vector<double> BracketGrid(const DesignOptions& options);
+
+/// A robust design's verdict: the bare robot safe, else a covering found (the first
+/// candidate meets the requirement), else nothing safe when the continuous optimum was asked
+/// for and is infeasible, else no safe material.
+inline DesignVerdict RobustVerdict(bool bare_robot_safe, bool covering_found, bool continuous_infeasible) {
+  if (bare_robot_safe) return DesignVerdict::kBareRobotSafe;
+  if (covering_found) return DesignVerdict::kCoveringFound;
+  if (continuous_infeasible) return DesignVerdict::kNothingSafe;
+  return DesignVerdict::kNoSafeMaterial;
+}
 
 }  // namespace covopt::optim::internal

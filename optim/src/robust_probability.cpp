@@ -424,16 +424,9 @@ ProbabilityDesign FindProbabilityDesign(const UncertaintyBox& box, std::span<con
   const std::uint64_t allowed =
       static_cast<std::uint64_t>(std::floor(options.max_probability * static_cast<double>(options.sampling.samples)));
   const bool any_meets = !out.candidates.empty() && out.candidates.front().meets_target;
-  if (out.bare_robot.inadmissible.count <= allowed) {
-    out.verdict = DesignVerdict::kBareRobotSafe;
-  } else if (any_meets) {
-    out.verdict = DesignVerdict::kCoveringFound;
-    out.recommendation = 0;
-  } else if (out.continuous && !out.continuous->feasible) {
-    out.verdict = DesignVerdict::kNothingSafe;
-  } else {
-    out.verdict = DesignVerdict::kNoSafeMaterial;
-  }
+  out.verdict = internal::RobustVerdict(out.bare_robot.inadmissible.count <= allowed, any_meets,
+                                        out.continuous && !out.continuous->feasible);
+  if (out.verdict == DesignVerdict::kCoveringFound) out.recommendation = 0;
   out.sample_evaluations = judge.evaluated();
   out.seconds = SecondsSince(started);
   return out;
