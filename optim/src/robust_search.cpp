@@ -261,6 +261,21 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+/// A robust limit (RobustSpeedLimit, RobustMassLimit) at the box's worst point: `limit_at`
+/// (MaxSafeSpeed or MaxSafeMass) evaluated once more there, counted with the search's.
+template <typename RobustLimit, typename LimitAt>
+RobustLimit AtWorstPoint(const UncertaintyBox& box, const internal::BoxMaximum& maximum, LimitAt limit_at,
+                         std::chrono::steady_clock::time_point started) {
+  RobustLimit out;
+  out.values = maximum.values;
+  out.scene = box.SceneAt(out.values);
+  out.limit = limit_at(out.scene);
+  out.found_by = maximum.found_by;
+  out.evaluations = maximum.evaluations + 1;
+  out.seconds = SecondsSince(started);
+  return out;
+}
+
 }  // namespace
 
 RobustSpeedLimit MaxSafeSpeedOverBox(const UncertaintyBox& box, const SpeedLimitOptions& options,
@@ -275,14 +290,8 @@ RobustSpeedLimit MaxSafeSpeedOverBox(const UncertaintyBox& box, const SpeedLimit
     return -MaxSafeSpeed(scene, options).max_safe_speed_m_per_s;
   };
   const internal::BoxMaximum maximum = internal::MaximizeOverBox(box, search, lower_speed);
-  RobustSpeedLimit out;
-  out.values = maximum.values;
-  out.scene = box.SceneAt(out.values);
-  out.limit = MaxSafeSpeed(out.scene, options);
-  out.found_by = maximum.found_by;
-  out.evaluations = maximum.evaluations + 1;
-  out.seconds = SecondsSince(started);
-  return out;
+  return AtWorstPoint<RobustSpeedLimit>(
+      box, maximum, [&](const Scene& worst) { return MaxSafeSpeed(worst, options); }, started);
 }
 
 RobustMassLimit MaxSafeMassOverBox(const UncertaintyBox& box, const SpeedLimitOptions& options,
@@ -301,14 +310,8 @@ RobustMassLimit MaxSafeMassOverBox(const UncertaintyBox& box, const SpeedLimitOp
     return std::isinf(mass) ? -std::numeric_limits<double>::max() : -mass;
   };
   const internal::BoxMaximum maximum = internal::MaximizeOverBox(box, search, lower_mass);
-  RobustMassLimit out;
-  out.values = maximum.values;
-  out.scene = box.SceneAt(out.values);
-  out.limit = MaxSafeMass(out.scene, options);
-  out.found_by = maximum.found_by;
-  out.evaluations = maximum.evaluations + 1;
-  out.seconds = SecondsSince(started);
-  return out;
+  return AtWorstPoint<RobustMassLimit>(
+      box, maximum, [&](const Scene& worst) { return MaxSafeMass(worst, options); }, started);
 }
 
 }  // namespace covopt::optim
