@@ -36,6 +36,22 @@ json JsonOf(const CliRun& run) {
   return json::parse(run.out);
 }
 
+/// `speed-limit` with each of `cases` is bad input: exit 2, nothing on stdout, one line on
+/// stderr containing named[i].
+void ExpectSpeedLimitRefusals(const std::vector<std::vector<std::string>>& cases,
+                              const std::vector<std::string>& named) {
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    std::vector<std::string> args{"speed-limit"};
+    args.insert(args.end(), cases[i].begin(), cases[i].end());
+    const CliRun run = Run(args);
+    INFO(fmt::format("{}", fmt::join(args, " ")) << " -> " << run.err);
+    CHECK(run.exit_code == 2);
+    CHECK(run.out.empty());
+    CHECK(SplitLines(run.err).size() == 1);
+    CHECK(run.err.find(named[i]) != std::string::npos);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("speed-limit prints the library's max safe speed for the paper's scene", "[speed_limit]") {
@@ -244,16 +260,7 @@ TEST_CASE("speed-limit bad input: exit 2, one line naming the flag, nothing on s
                                           "--robot-mass", "robot.mass", "robot.speed", "--safety-factor",
                                           "--laceration-limit", "--material", "--material", "--plot", "--plot",
                                           "--csv", "--csv", "covering.thickness"};
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    std::vector<std::string> args{"speed-limit"};
-    args.insert(args.end(), cases[i].begin(), cases[i].end());
-    const CliRun run = Run(args);
-    INFO(fmt::format("{}", fmt::join(args, " ")) << " -> " << run.err);
-    CHECK(run.exit_code == 2);
-    CHECK(run.out.empty());
-    CHECK(SplitLines(run.err).size() == 1);
-    CHECK(run.err.find(named[i]) != std::string::npos);
-  }
+  ExpectSpeedLimitRefusals(cases, named);
 }
 
 TEST_CASE("speed-limit --oracle: auto takes the exact path's solve on the paper's scene", "[speed_limit][oracle]") {
@@ -322,16 +329,7 @@ TEST_CASE("speed-limit --oracle, --method, --rtol: bad input exits 2 with one li
                                           "--method: expected exact, cvode or one of",
                                           "--rtol must be in [1e-14, 1e-2] (got '0.5')",
                                           "--rtol"};
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    std::vector<std::string> args{"speed-limit"};
-    args.insert(args.end(), cases[i].begin(), cases[i].end());
-    const CliRun run = Run(args);
-    INFO(fmt::format("{}", fmt::join(args, " ")) << " -> " << run.err);
-    CHECK(run.exit_code == 2);
-    CHECK(run.out.empty());
-    CHECK(SplitLines(run.err).size() == 1);
-    CHECK(run.err.find(named[i]) != std::string::npos);
-  }
+  ExpectSpeedLimitRefusals(cases, named);
   // On a braking scene auto takes the time path: no refusal, and the table says so.
   const CliRun braking = Run({"speed-limit", "--braking", "50m/s2"});
   INFO(braking.err);
