@@ -19,6 +19,7 @@
 using namespace covopt;
 using covopt::test::PaperScene;
 using covopt::test::RelativeError;
+using covopt::test::SetEveryExponent;
 
 namespace {
 
@@ -186,9 +187,7 @@ TEST_CASE("The energy stored at delta_max is m (v0/d - ln(1 + d v0)/d^2)", "[exa
   const double speed = GENERATE(0.3, 2.0, 7.0);
   Scene scene = Damped(PaperScene(thickness, 27.6e6, 0.25), damping, speed);
   scene.model.thresholds = reading;
-  scene.model.exponent_covering_scalp = exponent;
-  scene.model.exponent_covering_bone = exponent;
-  scene.model.exponent_robot_bone = exponent;
+  SetEveryExponent(scene, exponent);
   const ImpactModel model = ImpactModel::FromScene(scene);
   const ImpactPeaks peaks = ExactPeaks(model);
   const long double w0 = static_cast<long double>(damping) * speed;

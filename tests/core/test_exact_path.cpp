@@ -11,6 +11,7 @@
 using namespace covopt;
 using covopt::test::PaperScene;
 using covopt::test::RelativeError;
+using covopt::test::SetEveryExponent;
 
 namespace {
 
@@ -64,9 +65,7 @@ TEST_CASE("delta_max satisfies the energy balance for every exponent and both re
   Scene scene = PaperScene(thickness, 27.6e6, 0.25);
   scene.robot.speed_m_per_s = speed;
   scene.model.thresholds = reading;
-  scene.model.exponent_covering_scalp = exponent;
-  scene.model.exponent_covering_bone = exponent;
-  scene.model.exponent_robot_bone = exponent;
+  SetEveryExponent(scene, exponent);
   const ImpactModel model = ImpactModel::FromScene(scene);
   const ImpactPeaks peaks = ExactPeaks(model);
   const ContactState at_max = model.StateAt(peaks.max_penetration_m);

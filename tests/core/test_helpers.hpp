@@ -17,6 +17,14 @@ inline Scene PaperScene(double covering_thickness_m = 0.0, double covering_modul
   return scene;
 }
 
+/// Sets every pair's contact-law exponent (covering-scalp, covering-bone, robot-bone) to
+/// `exponent` [-].
+inline void SetEveryExponent(Scene& scene, double exponent) {
+  scene.model.exponent_covering_scalp = exponent;
+  scene.model.exponent_covering_bone = exponent;
+  scene.model.exponent_robot_bone = exponent;
+}
+
 /// A scene with a name for test messages.
 struct NamedScene {
   std::string name;
