@@ -17,6 +17,7 @@
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
 
+#include "robust_internal.hpp"
 #include "validation_internal.hpp"
 
 namespace covopt::optim {
@@ -336,23 +337,7 @@ bool Admissible(const ModulusChoice& choice, const DesignOptions& o) {
 /// the grid. Empty when nothing in the box is admissible.
 std::optional<ModulusChoice> BracketThinnest(const ModulusSearch& search, const DesignOptions& o,
                                              std::optional<double> upper_bracket) {
-  const DesignSpace& space = o.space;
-  std::vector<double> grid;
-  const int linear = std::max(2, o.bracket_thickness_points / 2);
-  const int geometric = std::max(2, o.bracket_thickness_points - linear);
-  for (int i = 0; i < linear; ++i) {
-    grid.push_back(space.min_thickness_m + (space.max_thickness_m - space.min_thickness_m) * i / (linear - 1));
-  }
-  for (int i = 0; i < geometric; ++i) {
-    grid.push_back(space.min_thickness_m * std::pow(space.max_thickness_m / space.min_thickness_m,
-                                                    static_cast<double>(i) / (geometric - 1)));
-  }
-  grid.front() = space.min_thickness_m;
-  grid.back() = space.max_thickness_m;
-  if (upper_bracket) grid.push_back(*upper_bracket);
-  std::sort(grid.begin(), grid.end());
-  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
-  grid.back() = std::min(grid.back(), space.max_thickness_m);
+  const std::vector<double> grid = internal::BracketGrid(o, upper_bracket);
 
   for (std::size_t k = 0; k < grid.size(); ++k) {
     ModulusChoice choice = search.Best(grid[k], /*screen=*/true);

@@ -57,7 +57,7 @@ double ScanThickness(const DesignSpace& space, int points, int k) {
                          : space.min_thickness_m + (space.max_thickness_m - space.min_thickness_m) * k / (points - 1);
 }
 
-std::vector<double> BracketGrid(const DesignOptions& o) {
+std::vector<double> BracketGrid(const DesignOptions& o, std::optional<double> extra_thickness_m) {
   const DesignSpace& space = o.space;
   std::vector<double> grid;
   const int linear = std::max(2, o.bracket_thickness_points / 2);
@@ -71,6 +71,7 @@ std::vector<double> BracketGrid(const DesignOptions& o) {
   }
   grid.front() = space.min_thickness_m;
   grid.back() = space.max_thickness_m;
+  if (extra_thickness_m) grid.push_back(*extra_thickness_m);
   std::sort(grid.begin(), grid.end());
   grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
   grid.back() = std::min(grid.back(), space.max_thickness_m);

@@ -93,8 +93,10 @@ void RefuseCoveringRanges(const UncertaintyBox& box);
 double StockThickness(double steps, double step_m);
 /// Point k of the catalog scan's `points` thicknesses over the design space [m].
 double ScanThickness(const DesignSpace& space, int points, int k);
-/// The nested search's thickness grid: half linear, half geometric [m].
-std::vector<double> BracketGrid(const DesignOptions& options);
+/// The nested search's thickness grid: half linear, half geometric [m], with
+/// `extra_thickness_m` (an admissible thickness known beforehand) when given. Shared with
+/// FindThinnestSafeCovering's stage 2.
+std::vector<double> BracketGrid(const DesignOptions& options, std::optional<double> extra_thickness_m = std::nullopt);
 
 /// A robust design's verdict: the bare robot safe, else a covering found (the first
 /// candidate meets the requirement), else nothing safe when the continuous optimum was asked
