@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
@@ -31,6 +32,12 @@ void AddOracleOptions(CLI::App& sub, OracleFlags& flags, std::string_view judged
                  fmt::format("the time path's relative tolerance, in [1e-14, 1e-2] (default {:g})",
                              TimeIntegrationOptions{}.relative_tolerance))
       ->type_name("RATIO")
+      ->group(std::string(group));
+  sub.add_option("--max-steps", flags.max_steps,
+                 fmt::format("the time path's limit on internal steps per impact, >= 10; reaching it fails "
+                             "that evaluation (default {})",
+                             TimeIntegrationOptions{}.max_steps))
+      ->type_name("N")
       ->group(std::string(group));
 }
 
@@ -64,7 +71,12 @@ optim::OracleOptions ResolveOracleFlags(const OracleFlags& flags, const Scene& s
                        "of " + IntegratorNames() + ", or --oracle exact");
     }
     if (flags.rtol) throw InputError("--rtol applies to the time path; --method exact runs none");
+    if (flags.max_steps) throw InputError("--max-steps applies to the time path; --method exact runs none");
     oracle.choice = optim::OracleChoice::kExact;
+  }
+  if (flags.max_steps) {
+    if (*flags.max_steps < 10) throw InputError(fmt::format("--max-steps must be >= 10 (got {})", *flags.max_steps));
+    oracle.time_path.max_steps = *flags.max_steps;
   }
   if (flags.rtol) {
     oracle.time_path.relative_tolerance = ParseQuantity(*flags.rtol, quantity_specs::kTolerance, "--rtol");
@@ -77,6 +89,7 @@ optim::OracleOptions ResolveOracleFlags(const OracleFlags& flags, const Scene& s
       throw InputError(fmt::format("--method {} applies to the time path; --oracle exact runs none", *flags.method));
     }
     if (flags.rtol) throw InputError("--rtol applies to the time path; --oracle exact runs none");
+    if (flags.max_steps) throw InputError("--max-steps applies to the time path; --oracle exact runs none");
     try {
       (void)optim::ChooseOracle(scene, oracle.choice);
     } catch (const std::invalid_argument&) {
@@ -87,14 +100,19 @@ optim::OracleOptions ResolveOracleFlags(const OracleFlags& flags, const Scene& s
           : scene.robot_brakes()                         ? "braking (--braking)"
                                                          : "a neck (--torso-mass)"));
     }
-  } else if (oracle.choice == optim::OracleChoice::kAuto && (flags.method || flags.rtol) &&
+  } else if (oracle.choice == optim::OracleChoice::kAuto && (flags.method || flags.rtol || flags.max_steps) &&
              optim::ChooseOracle(scene, oracle.choice).kind == optim::OracleKind::kExact) {
-    warnings.push_back(fmt::format("{} not used: auto chose the exact path for this scene (add --oracle "
+    std::vector<std::string_view> unused;
+    if (flags.method) unused.push_back("--method");
+    if (flags.rtol) unused.push_back("--rtol");
+    if (flags.max_steps) unused.push_back("--max-steps");
+    warnings.push_back(fmt::format("{} {} not used: auto chose the exact path for this scene (add --oracle "
                                    "time-path to {} on the time path)",
-                                   flags.method && flags.rtol ? "--method and --rtol are"
-                                   : flags.method             ? "--method is"
-                                                              : "--rtol is",
-                                   purpose));
+                                   unused.size() == 1 ? std::string(unused.front())
+                                                      : fmt::format("{} and {}",
+                                                                    fmt::join(unused.begin(), unused.end() - 1, ", "),
+                                                                    unused.back()),
+                                   unused.size() == 1 ? "is" : "are", purpose));
   }
   return oracle;
 }

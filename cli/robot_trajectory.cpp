@@ -309,6 +309,8 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
     return errors.BadInput(e.what());
   }
   const optim::TrajectoryCheck& check = run.check;
+  // A failed evaluation leaves the trajectory without a verdict: no table, file or chart.
+  if (check.status == optim::TrajectoryCheckStatus::kEvaluationFailed) return errors.Failed(check.message);
   try {
     if (options.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (options.csv_file && *options.csv_file != "-") WriteFileAtomically(*options.csv_file, CsvText(check));

@@ -57,6 +57,7 @@ const char* ToString(TrajectoryCheckStatus status) noexcept {
     case TrajectoryCheckStatus::kSafe: return "safe";
     case TrajectoryCheckStatus::kUnsafe: return "unsafe";
     case TrajectoryCheckStatus::kAtRest: return "at-rest";
+    case TrajectoryCheckStatus::kEvaluationFailed: return "evaluation-failed";
   }
   return "unknown";
 }
@@ -88,6 +89,7 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
   check.safe_speed_scale = kInfinity;
   bool scale_set_by_ceiling = false;
   std::size_t no_safe_speed_count = 0;
+  std::string first_failure;  ///< what failed at the first failed sample
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const MotionSample& sample = samples[i];
     SampleVerdict verdict;
@@ -102,6 +104,21 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
     if (verdict.moving) {
       at.robot.speed_m_per_s = sample.speed_m_per_s;
       const ImpactJudgement judgement = JudgeImpact(at, options.limit);
+      if (judgement.failed || verdict.speed_limit.status == SpeedLimitStatus::kEvaluationFailed) {
+        // No verdict: neither "unsafe" nor a speed scale of 0 may stand for a failed run.
+        verdict.evaluation_failed = true;
+        verdict.safe = false;
+        verdict.speed_scale = 0.0;
+        if (check.failed_sample_count++ == 0) {
+          first_failure = "trajectory sample " + std::to_string(i + 1) + " (" + TimeText(sample.time_s) +
+                          ", speed " + Format("%.4g", sample.speed_m_per_s) + " m/s): " +
+                          (verdict.speed_limit.status == SpeedLimitStatus::kEvaluationFailed
+                               ? verdict.speed_limit.message
+                               : std::string("the time path failed on the impact at this speed"));
+        }
+        check.samples.push_back(verdict);
+        continue;
+      }
       verdict.laceration_ratio = judgement.ratios.laceration_ratio;
       verdict.contusion_ratio = judgement.ratios.contusion_ratio;
       verdict.compression_ratio = judgement.ratios.compression_ratio;
@@ -120,6 +137,15 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
     check.samples.push_back(verdict);
   }
 
+  if (check.failed_sample_count > 0) {
+    check.status = TrajectoryCheckStatus::kEvaluationFailed;
+    check.safe_speed_scale = 0.0;
+    check.worst_sample.reset();
+    check.message = "evaluation failed at " + std::to_string(check.failed_sample_count) + " of " +
+                    std::to_string(check.samples.size()) + " samples, no verdict on the trajectory; first: " +
+                    first_failure;
+    return check;
+  }
   if (!check.worst_sample) {
     check.status = TrajectoryCheckStatus::kAtRest;
     check.message = "the contact point never moves (every speed < 1e-06 m/s): no impact to judge";

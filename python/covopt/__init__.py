@@ -111,7 +111,8 @@ def optimize(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
              safety_factor=None, materials=None, families=None, catalog=None, no_builtin=False,
              thickness=None, max_thickness=None, min_modulus=None, max_modulus=None,
              covering_poisson=None, thickness_step=None, allow_full_compression=False,
-             global_algorithm=None, seed=None, threads=None, oracle=None, method=None, rtol=None):
+             global_algorithm=None, seed=None, threads=None, oracle=None, method=None, rtol=None,
+             max_steps=None):
     """Which covering, how thick, with what margin, as ``covopt optimize --json``.
 
     The scene keywords are simulate's (damping, braking and a neck included), without the
@@ -127,7 +128,8 @@ def optimize(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
     (default), "isres" or "mlsl"; seed; threads of the catalog snap (1..256). Oracle:
     oracle "auto" (default: the exact path where the scene has an energy integral, else the
     time path), "exact" or "time-path"; method: the time path's integrator (default
-    "arkode-erk54"; "exact" means oracle="exact"); rtol: its relative tolerance (1e-8).
+    "arkode-erk54"; "exact" means oracle="exact"); rtol: its relative tolerance (1e-8);
+    max_steps: its step limit per impact (an int >= 10; default 200000).
     result["solver"]["oracle"] says which ran and why.
 
     Returns the dict of ``covopt optimize --json`` (without the CLI's warnings about its own
@@ -158,19 +160,22 @@ def max_safe_speed(*, robot_mass=None, robot_radius=None, robot_modulus=None, ro
                    reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
                    neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
                    safety_factor=None, material=None, allow_full_compression=False, oracle=None,
-                   method=None, rtol=None):
+                   method=None, rtol=None, max_steps=None):
     """The largest impact speed [m/s] such that every speed up to it is safe: both injury
     ratios <= 1/safety_factor and, unless allow_full_compression, the covering not fully
     compressed at the peak (optim::MaxSafeSpeed). The scene keywords are simulate's (damping,
-    braking and a neck included), without speed (it is what is computed). oracle, method, rtol: as optimize's (a scene without an
-    energy integral is bracketed on the time path).
+    braking and a neck included), without speed (it is what is computed). oracle, method,
+    rtol, max_steps: as optimize's (a scene without an energy integral is bracketed on the
+    time path).
 
     Returns a dict: max_safe_speed_m_per_s (None when not even 1e-6 m/s is safe; 100 when
     safe up to the model's ceiling), limited_by ("laceration", "contusion",
     "full-compression", "none" at the ceiling), laceration_ratio, contusion_ratio,
     compression_ratio (of the impact at the limit), status ("limited",
     "safe-up-to-search-limit", "no-safe-value"), robot_mass_kg, material, message,
-    brief_report. Raises ValueError on bad input.
+    brief_report. Raises ValueError on bad input, ComputationError (status
+    "evaluation-failed") when the time path fails on an impact of the search: a failed
+    search is no limit.
     """
     arguments = {name: value for name, value in locals().items() if value is not None}
     return _covopt.max_safe_speed(**arguments)
@@ -183,12 +188,13 @@ def max_safe_mass(*, speed=None, robot_radius=None, robot_modulus=None, robot_po
                   reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
                   neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
                   safety_factor=None, material=None, allow_full_compression=False, oracle=None,
-                  method=None, rtol=None):
+                  method=None, rtol=None, max_steps=None):
     """The largest reflected robot mass [kg] that is safe, with every lighter robot, at the
     scene's speed (optim::MaxSafeMass); as max_safe_speed, without robot_mass.
 
     Returns a dict like max_safe_speed's with max_safe_mass_kg ("fixed" when even a fixed
-    robot is safe) and speed_m_per_s. Raises ValueError on bad input.
+    robot is safe) and speed_m_per_s. Raises ValueError on bad input, ComputationError as
+    max_safe_speed.
     """
     arguments = {name: value for name, value in locals().items() if value is not None}
     return _covopt.max_safe_mass(**arguments)
@@ -201,17 +207,18 @@ def speed_limit(*, solve_for="speed", robot_mass=None, speed=None, robot_radius=
                 skull_poisson=None, damping=None, reaction_delay=None, braking=None,
                 torso_mass=None, neck_stiffness=None, neck_damping=None, thresholds=None,
                 laceration_limit=None, contusion_limit=None, safety_factor=None, material=None,
-                allow_full_compression=False, oracle=None, method=None, rtol=None):
+                allow_full_compression=False, oracle=None, method=None, rtol=None, max_steps=None):
     """A table of limits, as ``covopt speed-limit --json``: solve_for="speed" gives the max
     safe speed for each robot_mass (a value or a list; math.inf or "fixed" for a fixed
     robot), solve_for="mass" the max safe reflected mass for each speed (a value or a list).
     material: a catalog name or a list of names, one block of rows each.
 
-    oracle, method, rtol: as optimize's.
+    oracle, method, rtol, max_steps: as optimize's.
 
     Returns the dict of ``covopt speed-limit --json`` (solve_for, criterion, safety_factor,
     limits, search_limit, oracle, rows, scene, warnings; without the CLI's warnings about its own
-    input). Raises ValueError on bad input.
+    input). Raises ValueError on bad input, ComputationError (status "evaluation-failed")
+    when the time path fails on an impact of a row's search.
     """
     arguments = {name: value for name, value in locals().items() if value is not None}
     return _covopt.speed_limit(**arguments)
@@ -279,7 +286,9 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
     joint_names, samples (time_s, speed_m_per_s, reflected_mass_kg ("fixed" if infinite),
     moving, max_safe_speed_m_per_s (None when no speed is safe), speed_scale, limited_by,
     laceration_ratio, contusion_ratio, compression_ratio, safe), warnings (the robot's and the
-    check's; without the CLI's warnings about its own input). Raises ValueError on bad input.
+    check's; without the CLI's warnings about its own input). Raises ValueError on bad input,
+    ComputationError (status "evaluation-failed") when the time path (a scene with braking or
+    a neck) fails at a sample: the trajectory then has no verdict.
     """
     scene = {name: value for name, value in locals().items()
              if value is not None and name not in

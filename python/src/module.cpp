@@ -153,16 +153,22 @@ py::object JsonLoads(const std::string& text) {
   return py::module_::import("json").attr("loads")(text);
 }
 
-/// Raises covopt.ComputationError(message, status).
-[[noreturn]] void RaiseComputationError(const ImpactResult& result) {
-  const std::string message =
-      "the computation failed: " + std::string(ToString(result.status)) + " (" +
-      std::string(ToString(result.method)) + ", code " + std::to_string(result.raw_code) + ")" +
-      (result.message.empty() ? "" : ": " + result.message);
-  py::object error_type = py::module_::import("covopt._errors").attr("ComputationError");
-  py::object error = error_type(message, std::string(ToString(result.status)));
-  PyErr_SetObject(error_type.ptr(), error.ptr());
-  throw py::error_already_set();
+/// Raises covopt.ComputationError for a failed impact computation.
+[[noreturn]] void RaiseImpactFailure(const ImpactResult& result) {
+  RaiseComputationError("the computation failed: " + std::string(ToString(result.status)) + " (" +
+                            std::string(ToString(result.method)) + ", code " + std::to_string(result.raw_code) +
+                            ")" + (result.message.empty() ? "" : ": " + result.message),
+                        std::string(ToString(result.status)));
+}
+
+/// max_steps=: an int (not a bool) >= 10.
+long ReadMaxSteps(const py::handle& value) {
+  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
+    throw std::invalid_argument("max_steps: expected an integer (got " + Repr(value) + ")");
+  }
+  const long steps = value.cast<long>();
+  if (steps < 10) throw std::invalid_argument("max_steps must be >= 10 (got " + std::to_string(steps) + ")");
+  return steps;
 }
 
 /// The keywords every scene-taking call shares, beside the scene's own.
@@ -319,12 +325,7 @@ py::dict Simulate(const py::kwargs& kwargs) {
       throw std::invalid_argument("atol must be > 0 (got " + Repr(*v) + ")");
     }
   }
-  if (const auto v = get("max_steps")) {
-    if (!py::isinstance<py::int_>(*v) || py::isinstance<py::bool_>(*v)) {
-      throw std::invalid_argument("max_steps: expected an integer (got " + Repr(*v) + ")");
-    }
-    time.max_steps = v->cast<long>();
-  }
+  if (const auto v = get("max_steps")) time.max_steps = ReadMaxSteps(*v);
   time.record_history = history;
 
   std::optional<ImpactModel> model;
@@ -355,7 +356,7 @@ py::dict Simulate(const py::kwargs& kwargs) {
       report.result = SolveExact(*model);
     }
   }
-  if (!report.result.ok()) RaiseComputationError(report.result);
+  if (!report.result.ok()) RaiseImpactFailure(report.result);
   report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor);
 
   py::dict result = JsonLoads(report::SimulationJson(report, -1));
@@ -510,11 +511,8 @@ py::dict SweepGrid(const py::object& x, const py::object& y, const py::kwargs& k
     });
   }
   if (!result.ok()) {
-    py::object error_type = py::module_::import("covopt._errors").attr("ComputationError");
-    py::object error = error_type("no point of the sweep is a valid scene: " + result.message,
-                                  std::string(ToString(result.status)));
-    PyErr_SetObject(error_type.ptr(), error.ptr());
-    throw py::error_already_set();
+    RaiseComputationError("no point of the sweep is a valid scene: " + result.message,
+                          std::string(ToString(result.status)));
   }
   py::dict out;
   out["x"] = py::array_t<double>(static_cast<py::ssize_t>(nx), spec.x.values.data());
@@ -547,7 +545,7 @@ std::vector<std::string> ReadNames(const py::handle& value, const char* keyword)
 
 }  // namespace
 
-/// oracle=, method=, rtol= as optimize() and speed_limit() take them (scene_keywords.hpp).
+/// oracle=, method=, rtol=, max_steps= as optimize() and speed_limit() take them (scene_keywords.hpp).
 optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& scene) {
   const auto get = [&](const char* name) { return Get(kwargs, name); };
   optim::OracleOptions oracle;
@@ -592,6 +590,12 @@ optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& s
   if (oracle.choice == optim::OracleChoice::kExact && get("method") && !method_exact) {
     throw std::invalid_argument("method applies to the time path; oracle='exact' runs none");
   }
+  if (const auto v = get("max_steps")) {
+    if (oracle.choice == optim::OracleChoice::kExact) {
+      throw std::invalid_argument("max_steps applies to the time path; oracle='exact' runs none");
+    }
+    oracle.time_path.max_steps = ReadMaxSteps(*v);
+  }
   (void)optim::ChooseOracle(scene, oracle.choice);  // oracle='exact' on a braking/neck scene: its message
   return oracle;
 }
@@ -604,7 +608,7 @@ py::dict Optimize(const py::kwargs& kwargs) {
   CheckKeywords(kwargs, "optimize",
                 {"materials", "families", "catalog", "no_builtin", "thickness", "max_thickness",
                  "min_modulus", "max_modulus", "thickness_step", "allow_full_compression",
-                 "global_algorithm", "seed", "threads", "oracle", "method", "rtol"});
+                 "global_algorithm", "seed", "threads", "oracle", "method", "rtol", "max_steps"});
   for (const char* k : {"covering_modulus", "covering_thickness", "material"}) {
     if (get(k)) {
       throw std::invalid_argument(std::string(k) +
@@ -691,12 +695,7 @@ py::dict Optimize(const py::kwargs& kwargs) {
     py::gil_scoped_release release;
     result = optim::Design(request);  // throws invalid_argument naming the field
   }
-  if (!result.ok()) {
-    py::object error_type = py::module_::import("covopt._errors").attr("ComputationError");
-    py::object error = error_type(result.message, std::string(optim::ToString(result.status)));
-    PyErr_SetObject(error_type.ptr(), error.ptr());
-    throw py::error_already_set();
-  }
+  if (!result.ok()) RaiseComputationError(result.message, std::string(optim::ToString(result.status)));
   return JsonLoads(report::DesignJson(request, result, {}, -1));
 }
 
@@ -726,6 +725,13 @@ std::string AttributeSceneError(const std::string& message, const py::kwargs& gi
   return AttributeError(message, given);
 }
 py::object JsonToPython(const std::string& text) { return JsonLoads(text); }
+
+void RaiseComputationError(const std::string& message, const std::string& status) {
+  py::object error_type = py::module_::import("covopt._errors").attr("ComputationError");
+  py::object error = error_type(message, status);
+  PyErr_SetObject(error_type.ptr(), error.ptr());
+  throw py::error_already_set();
+}
 
 void BindSpeedLimit(py::module_& m);  // speed_limit_bindings.cpp
 void BindRobot(py::module_& m);       // robot_bindings.cpp

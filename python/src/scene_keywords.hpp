@@ -40,13 +40,17 @@ double ReadSceneQuantity(const pybind11::handle& value, const QuantitySpec& spec
 /// A library message naming scene fields, with the keywords the caller gave for them.
 std::string AttributeSceneError(const std::string& message, const pybind11::kwargs& given);
 
-/// oracle= ('auto', 'exact', 'time-path'), method= (the time path's integrator, or 'exact')
-/// and rtol= as optimize() and speed_limit() take them, checked against `scene` (oracle='exact'
+/// oracle= ('auto', 'exact', 'time-path'), method= (the time path's integrator, or 'exact'),
+/// rtol= and max_steps= (an int >= 10) as optimize() and speed_limit() take them, checked against `scene` (oracle='exact'
 /// on a braking or neck scene is refused with the library's message).
 /// @throws std::invalid_argument naming the keyword, the value and what is allowed.
 optim::OracleOptions ReadOracleKeywords(const pybind11::kwargs& kwargs, const Scene& scene);
 
 /// json.loads(text).
 pybind11::object JsonToPython(const std::string& text);
+
+/// Raises covopt.ComputationError(message, status): a computation that ran on valid input and
+/// failed (`status`: the library's status name, e.g. "step-limit", "evaluation-failed").
+[[noreturn]] void RaiseComputationError(const std::string& message, const std::string& status);
 
 }  // namespace covopt::python

@@ -83,6 +83,11 @@ SpeedLimitRow Compute(SpeedLimitQuantity quantity, Scene scene, double value, co
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(AttributeSceneError(e.what(), kwargs));
   }
+  const bool by_speed = quantity == SpeedLimitQuantity::kSpeed;
+  if ((by_speed ? row.speed_limit.status : row.mass_limit.status) == optim::SpeedLimitStatus::kEvaluationFailed) {
+    // As the CLI's exit 1: a failed search is no limit.
+    RaiseComputationError(by_speed ? row.speed_limit.message : row.mass_limit.message, "evaluation-failed");
+  }
   return row;
 }
 
@@ -94,7 +99,7 @@ py::dict OneLimit(SpeedLimitQuantity quantity, const py::kwargs& kwargs, const c
     throw std::invalid_argument(std::string(function) + "() computes " + (by_speed ? "the speed" : "the robot mass") +
                                 "; drop " + solved);
   }
-  const SceneKeywordInputs inputs = ReadSceneKeywords(kwargs, function, {"allow_full_compression", "oracle", "method", "rtol"});
+  const SceneKeywordInputs inputs = ReadSceneKeywords(kwargs, function, {"allow_full_compression", "oracle", "method", "rtol", "max_steps"});
   const optim::SpeedLimitOptions options = OptionsFrom(inputs, kwargs);
   const double value = by_speed ? inputs.scene.robot.mass_kg : inputs.scene.robot.speed_m_per_s;
   const SpeedLimitRow row = Compute(quantity, inputs.scene, value, options, inputs.covering_material, kwargs);
@@ -152,7 +157,7 @@ py::dict SpeedLimitTable(const py::kwargs& kwargs) {
     py::kwargs scene_kwargs = rest;
     if (name) scene_kwargs["material"] = *name;
     const SceneKeywordInputs inputs =
-        ReadSceneKeywords(scene_kwargs, "speed_limit", {"allow_full_compression", "solve_for", "oracle", "method", "rtol"});
+        ReadSceneKeywords(scene_kwargs, "speed_limit", {"allow_full_compression", "solve_for", "oracle", "method", "rtol", "max_steps"});
     options = OptionsFrom(inputs, kwargs);
     const std::vector<double> values =
         Get(kwargs, varied) ? ReadValues(*Get(kwargs, varied), spec, varied)

@@ -56,6 +56,9 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
       throw std::invalid_argument(AttributeSceneError(e.what(), kwargs));
     }
   }
+  if (check.status == optim::TrajectoryCheckStatus::kEvaluationFailed) {
+    RaiseComputationError(check.message, optim::ToString(check.status));  // as the CLI's exit 1
+  }
   return JsonToPython(
       report::TrajectoryCheckJson(check, motion, inputs.scene, inputs.covering_material, options.limit, {}, -1));
 }

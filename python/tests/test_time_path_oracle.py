@@ -48,3 +48,29 @@ def test_bad_oracle_keywords_raise_value_error(kwargs, message):
     with pytest.raises(ValueError, match=None) as error:
         covopt.optimize(**kwargs)
     assert message in str(error.value)
+
+
+def test_a_failed_time_path_raises_computation_error_never_a_limit():
+    # 10 steps (max_steps' smallest value) cannot carry a braked contact to separation.
+    for call in (covopt.max_safe_speed, covopt.max_safe_mass, covopt.speed_limit):
+        with pytest.raises(covopt.ComputationError) as error:
+            call(braking="200m/s2", max_steps=10)
+        assert error.value.status == "evaluation-failed"
+        assert "the oracle failed at" in str(error.value) and "step-limit" in str(error.value)
+    answered = covopt.max_safe_speed(braking="200m/s2", max_steps=200000)  # the failure was the step limit's
+    assert answered["status"] == "limited"
+    with pytest.raises(covopt.ComputationError) as error:
+        covopt.optimize(braking="50m/s2", max_steps=10, materials=["polystyrene foam 27.6"])
+    assert error.value.status == "oracle-failed"
+
+
+@pytest.mark.parametrize("kwargs,message", [
+    ({"oracle": "time-path", "max_steps": 5}, "max_steps must be >= 10 (got 5)"),
+    ({"oracle": "time-path", "max_steps": 1e4}, "max_steps: expected an integer"),
+    ({"oracle": "exact", "max_steps": 1000}, "max_steps applies to the time path"),
+])
+def test_bad_max_steps_raise_value_error(kwargs, message):
+    for call in (covopt.optimize, covopt.max_safe_speed):
+        with pytest.raises(ValueError) as error:
+            call(**kwargs)
+        assert message in str(error.value)

@@ -61,7 +61,9 @@ ordered_json MassValue(double kg) { return std::isinf(kg) ? ordered_json("fixed"
 
 ordered_json RowJson(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
   const RowAnswer a = Answer(quantity, row);
-  const bool none = a.status == optim::SpeedLimitStatus::kNoSafeValue;
+  // No safe value, or no answer at all (a failed evaluation): null, never the 0 the status carries.
+  const bool none = a.status == optim::SpeedLimitStatus::kNoSafeValue ||
+                    a.status == optim::SpeedLimitStatus::kEvaluationFailed;
   ordered_json j;
   j["material"] = row.material ? ordered_json(*row.material) : ordered_json(nullptr);
   if (quantity == SpeedLimitQuantity::kSpeed) {
@@ -118,7 +120,8 @@ std::vector<std::string> SpeedLimitRowWarnings(SpeedLimitQuantity quantity, std:
       const bool unlimited = quantity == SpeedLimitQuantity::kMass && std::isinf(a.limit);
       warnings.push_back(RowName(quantity, row) + ": " + *a.message +
                          (unlimited ? "" : "; the true limit is higher (limited_by \"none\")"));
-    } else if (a.status == optim::SpeedLimitStatus::kNoSafeValue) {
+    } else if (a.status == optim::SpeedLimitStatus::kNoSafeValue ||
+               a.status == optim::SpeedLimitStatus::kEvaluationFailed) {
       warnings.push_back(RowName(quantity, row) + ": " + *a.message);
     }
   }

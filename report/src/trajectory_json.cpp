@@ -25,7 +25,11 @@ constexpr std::array<std::string_view, 11> kSampleColumns = {
 ordered_json MassValue(double kg) { return std::isinf(kg) ? ordered_json("fixed") : internal::Number(kg); }
 
 ordered_json SampleJson(const optim::SampleVerdict& v) {
-  const bool none_safe = v.speed_limit.status == optim::SpeedLimitStatus::kNoSafeValue;
+  // A failed evaluation has no answer: its limit, scale, ratios and verdict are null.
+  const bool failed = v.evaluation_failed;
+  const bool none_safe = v.speed_limit.status == optim::SpeedLimitStatus::kNoSafeValue ||
+                         v.speed_limit.status == optim::SpeedLimitStatus::kEvaluationFailed;
+  const auto ratio = [failed](double value) { return failed ? ordered_json(nullptr) : internal::Number(value); };
   ordered_json j;
   j["time_s"] = internal::Number(v.time_s);
   j["speed_m_per_s"] = internal::Number(v.speed_m_per_s);
@@ -33,12 +37,12 @@ ordered_json SampleJson(const optim::SampleVerdict& v) {
   j["moving"] = v.moving;
   j["max_safe_speed_m_per_s"] =
       none_safe ? ordered_json(nullptr) : internal::Number(v.speed_limit.max_safe_speed_m_per_s);
-  j["speed_scale"] = v.moving ? internal::Number(v.speed_scale) : ordered_json(nullptr);
+  j["speed_scale"] = v.moving && !failed ? internal::Number(v.speed_scale) : ordered_json(nullptr);
   j["limited_by"] = optim::ToString(v.speed_limit.limited_by);
-  j["laceration_ratio"] = internal::Number(v.laceration_ratio);
-  j["contusion_ratio"] = internal::Number(v.contusion_ratio);
-  j["compression_ratio"] = internal::Number(v.compression_ratio);
-  j["safe"] = v.safe;
+  j["laceration_ratio"] = ratio(v.laceration_ratio);
+  j["contusion_ratio"] = ratio(v.contusion_ratio);
+  j["compression_ratio"] = ratio(v.compression_ratio);
+  j["safe"] = failed ? ordered_json(nullptr) : ordered_json(v.safe);
   return j;
 }
 
@@ -80,7 +84,9 @@ std::string TrajectoryCheckJson(const optim::TrajectoryCheck& check, const robot
   ordered_json j;
   j["status"] = optim::ToString(check.status);
   j["message"] = check.message;
-  j["safe_speed_scale"] = internal::Number(check.safe_speed_scale);  // +inf (at rest): null
+  j["safe_speed_scale"] = check.status == optim::TrajectoryCheckStatus::kEvaluationFailed
+                              ? ordered_json(nullptr)  // no verdict
+                              : internal::Number(check.safe_speed_scale);  // +inf (at rest): null
   if (check.worst_sample) {
     ordered_json worst;
     worst["index"] = *check.worst_sample;
@@ -92,6 +98,7 @@ std::string TrajectoryCheckJson(const optim::TrajectoryCheck& check, const robot
   }
   j["sample_count"] = check.samples.size();
   j["unsafe_sample_count"] = check.unsafe_sample_count;
+  j["failed_sample_count"] = check.failed_sample_count;
   internal::AddCriterionAndLimits(j, options);
   j["search_limit"] = {{"max_speed_m_per_s", options.max_speed_m_per_s}};
   ordered_json shown = ordered_json::parse(SceneJson(scene));

@@ -2,7 +2,9 @@
 // on the paper's scene, the time path when asked or when the scene brakes), the human report
 // says it in one line, the time-path optimum equals the exact one to its tolerance, and bad
 // input exits 2 with one message naming the flag: an unknown oracle, a tolerance out of range,
-// --method exact against --oracle time-path, --oracle exact on a braking or neck scene.
+// --method exact against --oracle time-path, --oracle exact on a braking or neck scene, a
+// --max-steps below 10 or with the exact path; a time path that fails (too few steps) exits 1
+// with its status, never a limit or a design.
 // `covopt speed-limit` on a braking scene names the time path; `covopt workprecision
 // --design` measures the time-path optimum against the exact one.
 #include <catch2/catch.hpp>
@@ -111,6 +113,9 @@ TEST_CASE("optimize refuses bad oracle input with exit 2 and one message", "[opt
       {{"--oracle", "exact", "--method", "cvode-bdf"}, "--method cvode-bdf applies to the time path; --oracle exact "
                                                        "runs none"},
       {{"--oracle", "exact", "--rtol", "1e-6"}, "--rtol applies to the time path; --oracle exact runs none"},
+      {{"--oracle", "time-path", "--max-steps", "5"}, "--max-steps must be >= 10 (got 5)"},
+      {{"--oracle", "exact", "--max-steps", "1000"}, "--max-steps applies to the time path; --oracle exact runs none"},
+      {{"--method", "exact", "--max-steps", "1000"}, "--max-steps applies to the time path; --method exact runs none"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args = {"optimize"};
@@ -141,6 +146,34 @@ TEST_CASE("speed-limit on a braking scene names the time path and its bisection"
   REQUIRE(paper.exit_code == 0);
   CHECK(json::parse(paper.out)["oracle"]["name"] == "exact");
   CHECK(json::parse(paper.out)["oracle"]["search"] == "penetration-axis");
+}
+
+TEST_CASE("a time path that fails is reported with its status and exit 1, never as a limit or a design",
+          "[speed-limit][optimize][oracle][failure]") {
+  // 10 steps (--max-steps' smallest value) cannot carry a braked contact to separation.
+  const auto limit = Run({"speed-limit", "--braking", "200m/s2", "--max-steps", "10"});
+  CHECK(limit.exit_code == 1);
+  CHECK(limit.out.empty());
+  CHECK_THAT(limit.err, Catch::StartsWith("covopt speed-limit: error: no answer: the oracle failed at 1e-06 m/s") &&
+                            Catch::Contains("step-limit"));
+  CHECK(std::count(limit.err.begin(), limit.err.end(), '\n') == 1);
+  const auto as_json = Run({"speed-limit", "--json", "--braking", "200m/s2", "--max-steps", "10"});
+  CHECK(as_json.exit_code == 1);
+  CHECK(as_json.out.empty());
+  // The same limit with the default step limit is an answer: the failure is the step limit's.
+  CHECK(Run({"speed-limit", "--braking", "200m/s2", "--max-steps", "200000"}).exit_code == 0);
+
+  const auto design = Run(Args({"optimize", "--braking", "50m/s2", "--max-steps", "10"}));
+  CHECK(design.exit_code == 1);
+  CHECK(design.out.empty());
+  CHECK_THAT(design.err, Catch::StartsWith("covopt optimize: error: ") && Catch::Contains("step-limit"));
+}
+
+TEST_CASE("optimize under auto: --max-steps on a scene the exact path answers is not used, a warning says so",
+          "[speed-limit][optimize][oracle]") {
+  const auto run = Run(Args({"optimize", "--max-steps", "1000", "--rtol", "1e-6"}));
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.out, Catch::Contains("Warning: --rtol and --max-steps are not used: auto chose the exact path"));
 }
 
 TEST_CASE("workprecision --design measures the time-path optimum against the exact one", "[workprecision][oracle]") {

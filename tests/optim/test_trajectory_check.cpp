@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -159,6 +160,36 @@ TEST_CASE("trajectory check: a scale set by the 100 m/s ceiling is flagged as a 
   CHECK(check.status == TrajectoryCheckStatus::kSafe);
   REQUIRE(check.warnings.size() == 1);
   CHECK_THAT(check.warnings[0], Catch::Contains("lower bound"));
+}
+
+TEST_CASE("trajectory check: a failed time-path evaluation leaves the trajectory without a verdict",
+          "[trajectory][failure]") {
+  Scene braking;  // a braking robot: only the time path answers
+  braking.robot.braking_m_per_s2 = 200.0;
+  const std::vector<MotionSample> samples = {{0.0, 0.0, 5.0}, {0.1, 0.8, 6.0}, {0.2, 1.2, 7.0}};
+  const TrajectoryCheck answered = CheckTrajectory(braking, samples);
+  INFO(answered.message);
+  REQUIRE(answered.status == TrajectoryCheckStatus::kSafe);  // the scene itself is answerable
+  CHECK(answered.failed_sample_count == 0);
+
+  TrajectoryCheckOptions starved;
+  starved.limit.oracle.time_path.max_steps = 10;  // the smallest allowed: too few to separate
+  const TrajectoryCheck check = CheckTrajectory(braking, samples, starved);
+  INFO(check.message);
+  CHECK(check.status == TrajectoryCheckStatus::kEvaluationFailed);
+  CHECK(std::string(covopt::optim::ToString(check.status)) == "evaluation-failed");
+  CHECK(check.failed_sample_count == 2);  // the two moving samples; the one at rest is not judged
+  CHECK(check.unsafe_sample_count == 0);  // a failure is not counted as unsafe
+  CHECK(check.safe_speed_scale == 0.0);
+  CHECK_FALSE(check.worst_sample.has_value());
+  CHECK_FALSE(check.samples[0].evaluation_failed);
+  for (std::size_t i : {1, 2}) {
+    CHECK(check.samples[i].evaluation_failed);
+    CHECK_FALSE(check.samples[i].safe);
+  }
+  CHECK_THAT(check.message, Catch::StartsWith("evaluation failed at 2 of 3 samples"));
+  CHECK_THAT(check.message, Catch::Contains("trajectory sample 2 (t = 0.1 s"));
+  CHECK_THAT(check.message, Catch::Contains("step-limit"));
 }
 
 TEST_CASE("trajectory check: bad samples are rejected naming the sample and the value", "[trajectory]") {

@@ -6,7 +6,8 @@
 /// reflected mass along its direction of motion (covopt::robot::ContactMotion computes them
 /// from a URDF and a joint trajectory; any other source will do). At each sample the check
 /// asks two questions of the scene's covering and head:
-///   - the impact of the point at that speed and mass: its injury ratios (the exact path);
+///   - the impact of the point at that speed and mass: its injury ratios (JudgeImpact: the
+///     exact path, or the time path on a scene with braking or a neck);
 ///   - the largest safe speed at that mass (MaxSafeSpeed, same criterion and safety factor).
 /// safe_speed_scale = min over moving samples of (max safe speed / speed). Running the whole
 /// trajectory k times faster multiplies every joint velocity, hence every contact speed, by k
@@ -47,12 +48,15 @@ struct SampleVerdict {
   /// False when the point is at rest (speed < 1e-6 m/s, the model's lowest): no impact, the
   /// ratios are 0 and the sample does not limit the scale.
   bool moving = false;
-  /// The impact at this speed and mass (exact path); 0 at rest.
+  /// The impact at this speed and mass (JudgeImpact); 0 at rest or when the evaluation failed.
   double laceration_ratio = 0.0;   ///< σ_t,max / laceration limit [-]
   double contusion_ratio = 0.0;    ///< e_A,max / contusion limit [-]
   double compression_ratio = 0.0;  ///< δ_max / t2 [-]; 0 without a covering
   /// Ratios within 1/safety factor and, under the default criterion, not fully compressed.
   bool safe = true;
+  /// The time path failed on this sample's impact or on its speed-limit search (a scene with
+  /// braking or a neck): the sample has no verdict, its ratios are 0 and safe is false.
+  bool evaluation_failed = false;
   /// The largest safe speed at this reflected mass.
   SpeedLimit speed_limit;
   /// max safe speed / speed [-]; +inf at rest.
@@ -64,8 +68,11 @@ enum class TrajectoryCheckStatus {
   kSafe,    ///< every sample is safe: safe_speed_scale >= 1
   kUnsafe,  ///< some sample is not: the trajectory must be slowed by safe_speed_scale
   kAtRest,  ///< the contact point never moves: nothing to judge
+  /// The time path failed at some moving sample: no verdict on the trajectory (message names
+  /// the first such sample and the failure; safe_speed_scale is 0, worst_sample empty).
+  kEvaluationFailed,
 };
-/// "safe", "unsafe", "at-rest".
+/// "safe", "unsafe", "at-rest", "evaluation-failed".
 const char* ToString(TrajectoryCheckStatus status) noexcept;
 
 /// The answer of CheckTrajectory.
@@ -79,6 +86,8 @@ struct TrajectoryCheck {
   std::optional<std::size_t> worst_sample;
   /// The number of moving samples that are not safe as they are.
   std::size_t unsafe_sample_count = 0;
+  /// The number of moving samples whose evaluation failed (status kEvaluationFailed).
+  std::size_t failed_sample_count = 0;
   /// One sentence: "unsafe: slow the trajectory to 0.73× (worst at t = 0.42 s, ...)".
   std::string message;
   /// What a reader must know (a ceiling-limited scale, samples with no safe speed at all).

@@ -2,7 +2,8 @@
 /// @file speed_limit_json.hpp
 /// Speed (or mass) limits as JSON text: the object `covopt speed-limit --json` prints and
 /// `covopt.speed_limit()` returns as a dict; both call SpeedLimitJson. SI values, units in the
-/// keys; an infinite mass is "fixed"; a limit that does not exist (no safe value) is null.
+/// keys; an infinite mass is "fixed"; a limit that does not exist (no safe value, or a failed
+/// evaluation) is null.
 
 #include <optional>
 #include <span>

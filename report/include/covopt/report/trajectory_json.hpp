@@ -35,9 +35,11 @@ std::span<const std::string_view> TrajectorySampleColumns() noexcept;
 /// shortest round-trip form, "fixed" for an infinite mass, "true"/"false", "" for null.
 std::vector<std::string> TrajectorySampleCsvCells(const optim::SampleVerdict& sample);
 
-/// The check as one JSON object: status ("safe", "unsafe", "at-rest"), message,
-/// safe_speed_scale (null when at rest throughout), worst_sample (null when at rest; else
-/// {index (0-based), then the sample's keys}), sample_count, unsafe_sample_count, criterion,
+/// The check as one JSON object: status ("safe", "unsafe", "at-rest", "evaluation-failed"),
+/// message, safe_speed_scale (null when at rest throughout or evaluation-failed), worst_sample
+/// (null when at rest or evaluation-failed; else {index (0-based), then the sample's keys}),
+/// sample_count, unsafe_sample_count, failed_sample_count (a failed sample's limit, scale,
+/// ratios and safe are null), criterion,
 /// safety_factor, limits (and the derated ones), search_limit {max_speed_m_per_s}, scene
 /// (SceneJson of `scene` without the robot's mass and speed, which each sample brings, and
 /// with covering.material: `covering_material`, the catalog name, or null),
