@@ -4,14 +4,74 @@
 // CVODE's message (a step limit), never as an exception or a wrong number.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "test_helpers.hpp"
 
 using namespace covopt;
+using covopt::test::AddVariant;
+using covopt::test::NamedScene;
 using covopt::test::PaperScene;
 using covopt::test::RelativeError;
+
+namespace {
+
+/// δ where the robot-on-bone segment (phase 3) begins: t2, or t1 without a covering [m].
+double FullCompressionSwitch(const ImpactModel& model) {
+  return model.segment(model.segment_count() - 1).start_m;
+}
+
+/// `scene` with the impact speed at which the exact δ_max is the full-compression switch
+/// times (1 + relative): ½ m v0² = U(t2 (1 + relative)).
+Scene GrazingScene(Scene scene, double relative) {
+  const ImpactModel model = ImpactModel::FromScene(scene);
+  const double target = FullCompressionSwitch(model) * (1.0 + relative);
+  scene.robot.speed_m_per_s =
+      std::sqrt(2.0 * model.StateAt(target).potential_energy_J / model.effective_mass_kg());
+  return scene;
+}
+
+/// The exact path's result for `model`, the reference of the grazing tests. Where δ_max rounds
+/// onto the start of its segment (δ_max == t2 to the bit, phase 3 by its energy), the exact
+/// path's duration quadrature divides 0 by 0 in that segment's empty piece and returns NaN
+/// (core/src/exact.cpp, ExactContactDuration; found with these scenes, left to its own fix):
+/// the duration and time of the peak are then those of a 1e-12 faster impact, which differ by
+/// about 1e-12 relative, far inside every tolerance checked here.
+ImpactResult ExactReference(const ImpactModel& model) {
+  ImpactResult exact = SolveExact(model);
+  if (!std::isfinite(*exact.contact_duration_s)) {
+    Scene faster = model.scene();
+    faster.robot.speed_m_per_s *= 1.0 + 1e-12;
+    const ImpactResult nearby = SolveExact(ImpactModel::FromScene(faster));
+    exact.contact_duration_s = nearby.contact_duration_s;
+    exact.time_of_max_compression_s = nearby.time_of_max_compression_s;
+  }
+  return exact;
+}
+
+/// Every peak, the duration, the rebound speed and the time of the peak within `limit`
+/// (relative) of the exact path.
+void CheckAgainstExact(const ImpactResult& result, const ImpactResult& exact, double limit) {
+  CHECK(RelativeError(result.peaks.max_penetration_m, exact.peaks.max_penetration_m) < limit);
+  CHECK(RelativeError(result.peaks.peak_force_N, exact.peaks.peak_force_N) < limit);
+  CHECK(RelativeError(result.peaks.max_compressive_stress_Pa,
+                      exact.peaks.max_compressive_stress_Pa) < limit);
+  CHECK(RelativeError(result.peaks.max_tensile_stress_Pa, exact.peaks.max_tensile_stress_Pa) <
+        limit);
+  CHECK(RelativeError(result.peaks.max_energy_density_J_per_m2,
+                      exact.peaks.max_energy_density_J_per_m2) < limit);
+  CHECK(RelativeError(*result.contact_duration_s, *exact.contact_duration_s) < limit);
+  CHECK(RelativeError(*result.rebound_speed_m_per_s, *exact.rebound_speed_m_per_s) < limit);
+  CHECK(RelativeError(*result.time_of_max_compression_s, *exact.time_of_max_compression_s) <
+        limit);
+}
+
+}  // namespace
 
 TEST_CASE("Energy is conserved: rebound speed equals impact speed", "[time]") {
   const double thickness = GENERATE(0.0, 0.002, 0.015);
@@ -186,4 +246,108 @@ TEST_CASE("Each phase's unloading ends on its series: duration, symmetry and reb
   CHECK(RelativeError(*result.contact_duration_s, *exact.contact_duration_s) < 1e-7);
   CHECK(RelativeError(*result.contact_duration_s, 2.0 * *result.time_of_max_compression_s) < 1e-7);
   CHECK(RelativeError(*result.rebound_speed_m_per_s, scene.robot.speed_m_per_s) < 1e-7);
+}
+
+TEST_CASE("Grazing the full-compression switch", "[time][grazing]") {
+  // δ_max a hair above (or at, or below) the switch to the robot-on-bone phase: the designs
+  // that the bracketed search's bisection on the full-compression boundary produces. The
+  // integrator reaches the switch with almost no speed left; restarted in phase 3, δ = t2 + x
+  // rounded back to t2 and the lower switch's root function was 0 from the restart on.
+  // Before the grazing turn (time_integration.cpp, GrazingTurnAtSwitch) 35 of these 1800 runs
+  // failed, on every scene: CVODE Adams (33) and BDF (2), with CV_ILL_INPUT ("Root found at
+  // and very near t") but one CV_CONV_FAILURE, at offsets from -1e-6 to +1e-6, each within
+  // 10 rtol of the switch; ERK 5(4) ran away (t = 1e149) and ERK 8(7) hit its step limit on
+  // the optimiser's designs of the next test. Every integrator must now succeed and agree
+  // with the exact path.
+  std::vector<NamedScene> scenes;
+  const Scene paper = PaperScene(0.015, 27.6e6, 0.22);
+  auto add = [&](std::string name, auto&& edit) { AddVariant(scenes, paper, std::move(name), edit); };
+  add("paper scene, 15 mm of 27.6 MPa", [](Scene&) {});
+  add("4 mm of 1 GPa (the optimiser's stiff corner)", [](Scene& s) {
+    s.covering = {999109940.49841368, 0.25, 0.0039910199699451044};
+  });
+  add("40 mm of 1 MPa", [](Scene& s) { s.covering = {1e6, 0.25, 0.04}; });
+  add("no covering (the switch is t1)", [](Scene& s) { s.covering.thickness_m = 0.0; });
+  add("literal thresholds", [](Scene& s) { s.model.thresholds = ThresholdReading::kLiteral; });
+
+  TimeIntegrator integrator;
+  for (const NamedScene& named : scenes) {
+    for (const double relative : {-1e-6, -1e-10, -1e-14, 0.0, 1e-16, 1e-15, 1e-14, 1e-13, 1e-12,
+                                  1e-11, 1e-10, 1e-9, 1e-8, 1e-7, 1e-6}) {
+      const ImpactModel model = ImpactModel::FromScene(GrazingScene(named.scene, relative));
+      const ImpactResult exact = ExactReference(model);
+      REQUIRE(std::isfinite(*exact.contact_duration_s));
+      for (const double rtol : {1e-6, 1e-8, 1e-10}) {
+        for (const ComputationMethod method : TimeIntegrationMethods()) {
+          TimeIntegrationOptions options;
+          options.method = method;
+          options.relative_tolerance = rtol;
+          const ImpactResult result = integrator.Simulate(model, options);
+          INFO(named.name << ", δ_max at the switch x (1 + " << relative << "), "
+                          << ToString(method) << ", rtol " << rtol << ": " << result.message);
+          CHECK(result.ok());  // every failing combination listed, not only the first
+          if (!result.ok()) continue;
+          // ERK 6(5) (a 3rd-order table in SUNDIALS 6.4.1) and ERK 8(7) (events located on
+          // the interpolant) miss 100 rtol on these scenes whether or not δ_max grazes the
+          // switch (docs/numerics.md, findings 5 and 6; measured at 0.5-5 m/s without grazing:
+          // up to 230 and 140 rtol at rtol 1e-6, 740 and 890 rtol at 1e-8): for them only the
+          // status and a bound against gross errors (a turn or a return lost) are checked.
+          const bool known_inaccurate = method == ComputationMethod::kArkodeErk65 ||
+                                        method == ComputationMethod::kArkodeErk87;
+          CheckAgainstExact(result, exact, (known_inaccurate ? 1e4 : 100.0) * rtol);
+          // Within the tolerance of the switch either phase is a right reading; further out
+          // the phase at the peak is the exact path's.
+          if (std::abs(relative) > 1e3 * rtol) {
+            CHECK(result.peaks.phase_at_max == exact.peaks.phase_at_max);
+            CHECK(result.peaks.fully_compressed == exact.peaks.fully_compressed);
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("Grazing the full-compression switch: the optimiser's failed designs",
+          "[time][grazing]") {
+  // The designs docs/numerics.md reported from `covopt optimize --oracle time-path` (2 m/s,
+  // paper scene otherwise), with the integrator and tolerance each failed with; with this
+  // history the ERK 5(4) runaway threw std::bad_alloc.
+  struct Design {
+    double modulus_Pa, thickness_m;
+    ComputationMethod method;
+    double rtol;
+  };
+  for (const Design& d : {Design{999109940.49841368, 0.0039910199699451044,  // CV_ILL_INPUT
+                                 ComputationMethod::kCvodeAdams, 1e-9},
+                          Design{700153201.49938297, 0.0044343416939057597,  // t = 1.2e149
+                                 ComputationMethod::kArkodeErk54, 1e-5},
+                          Design{353344091.8939957, 0.0054741874391763604,  // step limit
+                                 ComputationMethod::kArkodeErk87, 1e-4}}) {
+    const ImpactModel model = ImpactModel::FromScene(PaperScene(d.thickness_m, d.modulus_Pa, 0.25));
+    const ImpactResult exact = ExactReference(model);
+    TimeIntegrationOptions options;
+    options.method = d.method;
+    options.relative_tolerance = d.rtol;
+    options.record_history = true;
+    options.history_max_interval_s = *exact.contact_duration_s / 300.0;
+    const ImpactResult result = SimulateImpact(model, options);
+    INFO(ToString(d.method) << ", rtol " << d.rtol << ", E_c " << d.modulus_Pa << " Pa: "
+                            << result.message);
+    CHECK(result.ok());
+    if (!result.ok()) continue;
+    CHECK(RelativeError(FullCompressionSwitch(model), exact.peaks.max_penetration_m) < 1e-5);
+    CheckAgainstExact(result, exact, 100.0 * d.rtol);
+    // The history runs through the turn in order, to the requested spacing, and holds δ_max.
+    double previous_time = -1.0;
+    double max_penetration = 0.0;
+    for (const HistorySample& sample : result.history) {
+      CHECK(sample.time_s > previous_time);
+      CHECK(sample.time_s - std::max(previous_time, 0.0) <=
+            options.history_max_interval_s * (1 + 1e-9));
+      previous_time = sample.time_s;
+      max_penetration = std::max(max_penetration, sample.penetration_m);
+    }
+    CHECK(max_penetration == result.peaks.max_penetration_m);
+    CHECK(result.history.back().time_s == *result.contact_duration_s);
+  }
 }
