@@ -85,6 +85,11 @@ double ExactContactDuration(const ImpactModel& model, const ImpactPeaks& peaks) 
     const double upper = (j == top) ? delta_max : seg.end_m;  // δ at the piece's s_lower
     const double s_upper = std::sqrt(delta_max - seg.start_m);
     const double width = s_upper - s_lower;
+    if (!(width > 0.0)) {
+      // δ_max exactly at the top segment's start: an empty piece (its nodes would be 0/0).
+      s_lower = s_upper;
+      continue;
+    }
     const ImpactModel::EnergyGapBelow energy_below_upper(model, j, upper);
     // The energies first (one call each), then the square roots and divisions in a loop
     // of their own; the sum keeps its order.

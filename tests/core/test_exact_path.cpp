@@ -133,6 +133,34 @@ TEST_CASE("delta_max just past a phase switch keeps the duration smooth", "[exac
   }
 }
 
+TEST_CASE("delta_max landing exactly on a switch gives a finite, continuous duration", "[exact]") {
+  // A soft thick covering fully compressed at 2.017 m/s: at this speed δ_max rounds exactly onto
+  // t2, the top segment's start, where the duration quadrature's first piece is empty (it was
+  // 0/0: "contact duration -nan ms").
+  Scene scene = PaperScene(0.0);
+  scene.covering.youngs_modulus_Pa = 1e6;
+  scene.covering.thickness_m = 0.040;
+  scene.covering.poisson_ratio = 0.25;
+  scene.robot.speed_m_per_s = 2.0173746111141204;
+  const ImpactModel model = ImpactModel::FromScene(scene);
+  const ImpactResult result = SolveExact(model);
+  REQUIRE(result.peaks.max_penetration_m == model.segment(model.segment_count() - 1).start_m);
+  REQUIRE(result.contact_duration_s.has_value());
+  const double duration = *result.contact_duration_s;
+  CHECK(std::isfinite(duration));
+  CHECK(RelativeError(duration, BruteForceDuration(model, result.peaks.max_penetration_m)) < 1e-5);
+  // Every speed within 64 ulps either side of it: finite, and continuous across the switch.
+  double speed = scene.robot.speed_m_per_s;
+  for (int k = 0; k < 64; ++k) speed = std::nextafter(speed, 0.0);
+  for (int k = 0; k <= 128; ++k, speed = std::nextafter(speed, 10.0)) {
+    scene.robot.speed_m_per_s = speed;
+    const ImpactResult near = SolveExact(ImpactModel::FromScene(scene));
+    INFO("speed " << speed);
+    REQUIRE(std::isfinite(*near.contact_duration_s));
+    CHECK(RelativeError(*near.contact_duration_s, duration) < 1e-9);
+  }
+}
+
 TEST_CASE("Fully compressed thin coverings reach phase 3 and say so", "[exact]") {
   const ImpactResult thin = SolveExact(ImpactModel::FromScene(PaperScene(0.002, 27.6e6, 0.22)));
   CHECK(thin.peaks.phase_at_max == Phase::kRobotOnBone);
