@@ -1,9 +1,11 @@
 #pragma once
-// Shared scene builders for the core tests.
+// Shared scene builders and path comparisons for the core tests.
 #include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include <covopt/core.hpp>
 
@@ -41,6 +43,19 @@ void AddVariant(std::vector<NamedScene>& scenes, const Scene& base, std::string 
 
 inline double RelativeError(double value, double reference) {
   return std::abs(value - reference) / std::abs(reference);
+}
+
+/// Checks every peak, the contact duration and the rebound speed of `result` within `limit`
+/// (relative) of the exact path's `exact`.
+inline void CheckPeaksAgainstExact(const ImpactResult& result, const ImpactResult& exact, double limit) {
+  CHECK(RelativeError(result.peaks.max_penetration_m, exact.peaks.max_penetration_m) < limit);
+  CHECK(RelativeError(result.peaks.peak_force_N, exact.peaks.peak_force_N) < limit);
+  CHECK(RelativeError(result.peaks.max_compressive_stress_Pa, exact.peaks.max_compressive_stress_Pa) < limit);
+  CHECK(RelativeError(result.peaks.max_tensile_stress_Pa, exact.peaks.max_tensile_stress_Pa) < limit);
+  CHECK(RelativeError(result.peaks.max_energy_density_J_per_m2, exact.peaks.max_energy_density_J_per_m2) <
+        limit);
+  CHECK(RelativeError(*result.contact_duration_s, *exact.contact_duration_s) < limit);
+  CHECK(RelativeError(*result.rebound_speed_m_per_s, *exact.rebound_speed_m_per_s) < limit);
 }
 
 }  // namespace covopt::test
