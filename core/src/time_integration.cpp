@@ -577,6 +577,8 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
       const std::size_t j = static_cast<std::size_t>(run.segment);
       loading_step_at_end[j] = stepper.LastStep();
       const double tol_x = tolerance[0] + options.relative_tolerance * std::abs(y[0]);
+      stepper.AddStatistics(result.statistics);  // either way the run restarts here
+      ++result.statistics.restarts;
       if (const std::optional<GrazingTurn> turn =
               GrazingTurnAtSwitch(model, j, y, run.inverse_mass, tol_x)) {
         at_max = true;
@@ -586,14 +588,10 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
         take_grazing_turn(*turn);
         // Back at the switch (v > 0: after the excursion, with speed -v; v <= 0: already
         // there): unloading goes on in this segment, as it would after a turn below the switch.
-        stepper.AddStatistics(result.statistics);
-        ++result.statistics.restarts;
         flag = restart(false);
         continue;
       }
       ++run.segment;
-      stepper.AddStatistics(result.statistics);
-      ++result.statistics.restarts;
       flag = restart(true);
       continue;
     }
