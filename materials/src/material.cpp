@@ -24,6 +24,15 @@ std::string_view ToString(ModulusBasis basis) noexcept {
   return "unknown";
 }
 
+std::string_view ToString(CrushBehaviour behaviour) noexcept {
+  switch (behaviour) {
+    case CrushBehaviour::kCrushes: return "crushes";
+    case CrushBehaviour::kDoesNotCrush: return "does-not-crush";
+    case CrushBehaviour::kUnknown: return "unknown";
+  }
+  return "unknown";
+}
+
 std::string_view Describe(ModulusBasis basis) noexcept {
   switch (basis) {
     case ModulusBasis::kCompressive: return "compression test (secant or tangent modulus)";

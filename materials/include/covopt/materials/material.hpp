@@ -39,6 +39,22 @@ std::string_view Describe(ModulusBasis basis) noexcept;
 /// Reads the catalog spelling (exactly as ToString writes it); empty if unknown.
 std::optional<ModulusBasis> ParseModulusBasis(std::string_view text) noexcept;
 
+/// How a material behaves when compressed past its elastic range: what the no-crush
+/// criterion (docs/model.md §12) can say about it.
+enum class CrushBehaviour {
+  /// A rigid or semi-rigid foam (EPS, XPS, rigid PU, PMI) or a solid that yields: it stays
+  /// elastic only up to its compressive strength (compressive_strength_Pa, known).
+  kCrushes,
+  /// An elastomer, gel or flexible foam: it densifies instead of crushing; full compression
+  /// (the not-fully-compressed criterion) is its limit.
+  kDoesNotCrush,
+  /// Not known from the sources at hand: a design with it cannot be verified for crushing.
+  kUnknown,
+};
+
+/// The catalog spelling: "crushes", "does-not-crush", "unknown".
+std::string_view ToString(CrushBehaviour behaviour) noexcept;
+
 /// One catalog entry. Plain data; Catalog validates entries when it loads or adds them.
 struct Material {
   /// Unique within a catalog, compared ignoring case, e.g. "polystyrene foam 27.6".
@@ -59,6 +75,17 @@ struct Material {
   /// How E was derived (strain range, representative value of a range, conversions);
   /// may be empty.
   std::string note;
+  /// Whether the material crushes, and so whether compressive_strength_Pa applies.
+  CrushBehaviour crush_behaviour = CrushBehaviour::kUnknown;
+  /// Compressive strength [Pa]: the stress at yield or at 10 % strain, whichever comes
+  /// first, as the test method defines it; set exactly when crush_behaviour is kCrushes.
+  std::optional<double> compressive_strength_Pa;
+  /// The strength's test method ("ASTM D1621, at yield or 10 % strain") or, for a material
+  /// that does not crush, why ("flexible foam: densifies"); empty when unknown.
+  std::string strength_method;
+  /// Where the strength (or the does-not-crush statement) comes from: a URL or a citation;
+  /// empty when unknown.
+  std::string strength_source;
   /// Where the entry was defined, "file:line:column" of its [[material]] header; empty
   /// for entries added in code.
   std::string origin;
