@@ -151,6 +151,15 @@ std::vector<const Material*> Catalog::Filter(const MaterialFilter& filter) const
       continue;
     }
     if (!name_part.empty() && Lower(m.name).find(name_part) == std::string::npos) continue;
+    if (!filter.compressive_strength_Pa.unbounded() &&
+        !(m.compressive_strength_Pa && filter.compressive_strength_Pa.Contains(*m.compressive_strength_Pa))) {
+      continue;
+    }
+    if (!filter.crush_behaviours.empty() &&
+        std::find(filter.crush_behaviours.begin(), filter.crush_behaviours.end(),
+                  m.crush_behaviour) == filter.crush_behaviours.end()) {
+      continue;
+    }
     kept.push_back(&m);
   }
   return kept;

@@ -26,14 +26,21 @@ namespace {
 
 using internal::FormatNumber;
 
-constexpr std::array<std::string_view, 8> kKeys{
-    internal::kKeyName,    internal::kKeyFamily, internal::kKeyModulus, internal::kKeyPoisson,
-    internal::kKeyDensity, internal::kKeyBasis,  internal::kKeySource,  internal::kKeyNote};
+constexpr std::array<std::string_view, 11> kKeys{
+    internal::kKeyName,     internal::kKeyFamily,         internal::kKeyModulus,
+    internal::kKeyPoisson,  internal::kKeyDensity,        internal::kKeyBasis,
+    internal::kKeySource,   internal::kKeyNote,           internal::kKeyStrength,
+    internal::kKeyStrengthMethod, internal::kKeyStrengthSource};
+
+/// A compressive strength without a unit is read as pascals and must be plausible.
+constexpr QuantitySpec kStrengthSpec{QuantityKind::kModulus,   false, false,
+                                     kPlausibleStrengthMin_Pa, kPlausibleStrengthMax_Pa,
+                                     {"kPa", "MPa"},           "compressive strength"};
 constexpr std::string_view kRequiredKeys =
     "name, family, youngs_modulus_Pa, modulus_basis, source";
 
 /// Keys people are likely to write for ours, beyond typos.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 16> kKeyAliases{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 24> kKeyAliases{{
     {"e", internal::kKeyModulus},
     {"modulus", internal::kKeyModulus},
     {"young", internal::kKeyModulus},
@@ -50,6 +57,14 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 16> kKeyAlia
     {"citation", internal::kKeySource},
     {"notes", internal::kKeyNote},
     {"comment", internal::kKeyNote},
+    {"strength", internal::kKeyStrength},
+    {"compressive_strength", internal::kKeyStrength},
+    {"crush_strength", internal::kKeyStrength},
+    {"sigma_c", internal::kKeyStrength},
+    {"crush", internal::kKeyStrength},
+    {"method", internal::kKeyStrengthMethod},
+    {"test_method", internal::kKeyStrengthMethod},
+    {"strength_reference", internal::kKeyStrengthSource},
 }};
 
 std::string Where(std::string_view source, const toml::source_position& position) {
@@ -134,6 +149,7 @@ class EntryReader {
       if (!note->is_string()) Fail(*note, internal::kKeyNote, "must be a string, got " + Shown(*note));
       m.note = note->as_string()->get();
     }
+    ReadStrength(m);
     return m;
   }
 
@@ -264,6 +280,98 @@ class EntryReader {
     Fail(*node, key,
          allowed + " (got " + Shown(*node) + ")" +
              (near ? "; did you mean '" + std::string(*near) + "'?" : std::string()));
+  }
+
+  /// strength_method or strength_source: absent (empty) or non-blank text.
+  std::string OptionalText(std::string_view key) {
+    const toml::node* node = table_.get(key);
+    if (node == nullptr) return {};
+    if (!node->is_string()) Fail(*node, key, "must be a string, got " + Shown(*node));
+    std::string text = node->as_string()->get();
+    if (auto problem = internal::TextProblem(text, false)) Fail(*node, key, *problem);
+    return text;
+  }
+
+  /// compressive_strength_Pa, strength_method and strength_source. An absent
+  /// compressive_strength_Pa is "unknown" (catalogs written before it existed).
+  void ReadStrength(Material& m) {
+    const std::string_view key = internal::kKeyStrength;
+    const toml::node* node = table_.get(key);
+    const toml::node* method = table_.get(internal::kKeyStrengthMethod);
+    const toml::node* source = table_.get(internal::kKeyStrengthSource);
+    m.strength_method = OptionalText(internal::kKeyStrengthMethod);
+    m.strength_source = OptionalText(internal::kKeyStrengthSource);
+
+    const std::string allowed = "must be " + std::string(internal::kStrengthAllowed);
+    if (node == nullptr) {
+      m.crush_behaviour = CrushBehaviour::kUnknown;
+    } else if (const auto* text = node->as_string();
+               text != nullptr && text->get() == internal::kDoesNotCrush) {
+      m.crush_behaviour = CrushBehaviour::kDoesNotCrush;
+    } else if (text != nullptr && text->get() == internal::kUnknownStrength) {
+      m.crush_behaviour = CrushBehaviour::kUnknown;
+    } else if (text != nullptr && !StartsLikeANumber(text->get())) {
+      const auto near = internal::Closest(
+          text->get(), {internal::kDoesNotCrush, internal::kUnknownStrength, "does-not-crush"});
+      std::string hint;
+      if (near) {
+        hint = "; did you mean '" +
+               std::string(*near == "does-not-crush" ? internal::kDoesNotCrush : *near) + "'?";
+      }
+      Fail(*node, key, allowed + " (got " + Shown(*node) + ")" + hint);
+    } else {
+      const auto value = ReadQuantity(*node, key, kStrengthSpec);
+      if (!value) Fail(*node, key, allowed + " (got " + Shown(*node) + ")");
+      if (auto problem = internal::StrengthProblem(*value)) Fail(*node, key, *problem);
+      m.crush_behaviour = CrushBehaviour::kCrushes;
+      m.compressive_strength_Pa = *value;
+    }
+
+    // What the value asks of strength_method and strength_source.
+    const std::string shown = node == nullptr ? std::string() : Shown(*node);
+    switch (m.crush_behaviour) {
+      case CrushBehaviour::kCrushes:
+      case CrushBehaviour::kDoesNotCrush: {
+        const bool crushes = m.crush_behaviour == CrushBehaviour::kCrushes;
+        if (m.strength_method.empty()) {
+          Fail(*node, key,
+               shown + " needs a strength_method: " +
+                   (crushes ? "the test method and what it measures, e.g. \"ASTM D1621, at "
+                              "yield or 10 % strain\""
+                            : "why it does not crush, e.g. \"flexible open-cell foam: "
+                              "densifies, no crush strength\""));
+        }
+        if (m.strength_source.empty()) {
+          Fail(*node, key,
+               shown + " needs a strength_source: a URL or a citation for " +
+                   (crushes ? "the strength" : "\"does not crush\""));
+        }
+        break;
+      }
+      case CrushBehaviour::kUnknown: {
+        const toml::node* extra = method != nullptr ? method : source;
+        if (extra != nullptr) {
+          const std::string_view extra_key =
+              method != nullptr ? internal::kKeyStrengthMethod : internal::kKeyStrengthSource;
+          Fail(*extra, extra_key,
+               std::string("is given but compressive_strength_Pa is ") +
+                   (node == nullptr ? "missing (unknown)" : "\"unknown\"") +
+                   "; give the strength (with a unit) or \"does not crush\", or leave " +
+                   std::string(extra_key) + " out (a note may say why it is unknown)");
+        }
+        break;
+      }
+    }
+  }
+
+  /// Whether a string value is meant as a number ("172 kPa", "-1MPa", ".5 MPa", "nan").
+  static bool StartsLikeANumber(std::string_view text) {
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string_view::npos) return false;
+    const char c = text[first];
+    if ((c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+') return true;
+    const std::string lower = internal::Lower(text.substr(first, 3));
+    return lower == "nan" || lower == "inf";
   }
 
   const toml::table& table_;

@@ -33,6 +33,14 @@ std::string_view ToString(CrushBehaviour behaviour) noexcept {
   return "unknown";
 }
 
+std::optional<CrushBehaviour> ParseCrushBehaviour(std::string_view text) noexcept {
+  for (const CrushBehaviour b :
+       {CrushBehaviour::kCrushes, CrushBehaviour::kDoesNotCrush, CrushBehaviour::kUnknown}) {
+    if (ToString(b) == text) return b;
+  }
+  return std::nullopt;
+}
+
 std::string_view Describe(ModulusBasis basis) noexcept {
   switch (basis) {
     case ModulusBasis::kCompressive: return "compression test (secant or tangent modulus)";

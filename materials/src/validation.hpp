@@ -23,15 +23,30 @@ inline constexpr std::string_view kKeyDensity = "density_kg_per_m3";
 inline constexpr std::string_view kKeyBasis = "modulus_basis";
 inline constexpr std::string_view kKeySource = "source";
 inline constexpr std::string_view kKeyNote = "note";
+inline constexpr std::string_view kKeyStrength = "compressive_strength_Pa";
+inline constexpr std::string_view kKeyStrengthMethod = "strength_method";
+inline constexpr std::string_view kKeyStrengthSource = "strength_source";
+
+/// The words compressive_strength_Pa may hold instead of a stress.
+inline constexpr std::string_view kDoesNotCrush = "does not crush";
+inline constexpr std::string_view kUnknownStrength = "unknown";
+/// What compressive_strength_Pa may be, for messages.
+inline constexpr std::string_view kStrengthAllowed =
+    "a stress with a unit (\"172 kPa\"), a number in Pa, \"does not crush\" or \"unknown\"";
 
 /// What is wrong with a value, phrased to follow the key ("must be > 0 ... (got -1)"), or
 /// nothing if it is fine.
 std::optional<std::string> ModulusProblem(double youngs_modulus_Pa);
 std::optional<std::string> PoissonProblem(double poisson_ratio);
 std::optional<std::string> DensityProblem(double density_kg_per_m3);
+std::optional<std::string> StrengthProblem(double compressive_strength_Pa);
 /// Required text (name, family, source): not empty or blank; a name must also not start
 /// or end with a space, since names are looked up exactly (ignoring case).
 std::optional<std::string> TextProblem(std::string_view text, bool is_name);
+
+/// The first rule the strength fields of an entry break (crush_behaviour,
+/// compressive_strength_Pa, strength_method, strength_source), as {key, problem}.
+std::optional<std::pair<std::string, std::string>> StrengthFieldsProblem(const Material& material);
 
 /// The first rule a whole entry breaks, as {key, problem}; nothing if it is valid.
 std::optional<std::pair<std::string, std::string>> FirstProblem(const Material& material);

@@ -18,10 +18,22 @@
 ///                        | "hardness", required
 ///     source             string, required: a URL or a citation
 ///     note               string, optional: how E was derived
+///     compressive_strength_Pa
+///                        the stress at which the material stops being elastic: a number
+///                        (Pa) or a string with a unit ("172 kPa"), > 0 and <= 1e12 (the
+///                        material crushes); or "does not crush" (elastomers, gels, flexible
+///                        foams: they densify); or "unknown". Optional in a user file
+///                        (absent = unknown); the built-in catalog states it for every entry
+///     strength_method    string: with a strength, its test method and definition ("ASTM
+///                        D1621, at yield or 10 % strain"); with "does not crush", why.
+///                        Required with either, not allowed with "unknown"
+///     strength_source    string: a URL or a citation for the strength or for "does not
+///                        crush". Required with either, not allowed with "unknown"
 ///
 /// Values with units are read as in scene files (covopt/core/quantity.hpp): a bare number is
 /// SI and must be plausible for its quantity (youngs_modulus_Pa = 27.6 would be 27.6 Pa and
-/// is refused; write "27.6MPa"). Any other key, or a top-level key other than `material`, is
+/// is refused; write "27.6MPa"; a bare compressive_strength_Pa must lie in
+/// [kPlausibleStrengthMin_Pa, kPlausibleStrengthMax_Pa], 1 kPa to 10 GPa). Any other key, or a top-level key other than `material`, is
 /// an error.
 
 #include <cstddef>
@@ -76,6 +88,13 @@ struct MaterialFilter {
   std::vector<ModulusBasis> bases;
   /// Keep names that contain this text, ignoring case; empty keeps every name.
   std::string name_contains;
+  /// Compressive strength [Pa]: a bounded range keeps only materials whose strength is
+  /// known (they crush) and in range; materials that do not crush, or whose strength is
+  /// unknown, never pass it (include_unknown does not apply). Select those by
+  /// crush_behaviours.
+  Range compressive_strength_Pa;
+  /// Crush behaviours to keep; empty keeps every behaviour.
+  std::vector<CrushBehaviour> crush_behaviours;
   /// Whether an entry whose ν (or density) is unknown passes a bounded ν (or density)
   /// range. Default false: a value that is not known is not known to be in range.
   bool include_unknown = false;

@@ -55,6 +55,17 @@ enum class CrushBehaviour {
 /// The catalog spelling: "crushes", "does-not-crush", "unknown".
 std::string_view ToString(CrushBehaviour behaviour) noexcept;
 
+/// Reads the spelling ToString writes; empty if it is none of them.
+std::optional<CrushBehaviour> ParseCrushBehaviour(std::string_view text) noexcept;
+
+/// Where a compressive strength written without a unit is believable [Pa]: 1 kPa (the
+/// softest crushable foams are rated at tens of kPa) to 10 GPa (beyond any polymer). A bare
+/// number outside it is refused as a likely unit slip ("172" meant in kPa), as for E.
+inline constexpr double kPlausibleStrengthMin_Pa = 1e3;
+inline constexpr double kPlausibleStrengthMax_Pa = 1e10;
+/// The largest compressive strength an entry may have [Pa] (as for E).
+inline constexpr double kMaxStrength_Pa = 1e12;
+
 /// One catalog entry. Plain data; Catalog validates entries when it loads or adds them.
 struct Material {
   /// Unique within a catalog, compared ignoring case, e.g. "polystyrene foam 27.6".
