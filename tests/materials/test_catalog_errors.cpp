@@ -5,11 +5,17 @@
 // of range (E <= 0, E too large or not finite, nu > 0.5 or <= -1, density <= 0), values with
 // units as in scene files (a bad unit, or a bare number implausible in SI: 27.6 for E is
 // 27.6 Pa), unknown modulus bases, duplicate names within a file and across catalogs (both
-// places named), files that cannot be read, and entries added in code.
+// places named), files that cannot be read, and entries added in code; and the strength
+// keys: a known strength needs its method and source, "does not crush" its reason and
+// source, "unknown" neither; a bare strength must be plausible; negative, zero, NaN and
+// infinite strengths, strengths mixed with words, and wrong types are refused; Catalog::Add
+// checks the same rules (a strength is set exactly when the material crushes).
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
+#include <utility>
 
 #include <catch2/catch.hpp>
 #include <unistd.h>
@@ -350,4 +356,200 @@ TEST_CASE("a catalog file that cannot be read is an error naming it", "[errors]"
     CHECK_THAT(e.what(), StartsWith(path.string() + ":5:17: "));
   }
   std::filesystem::remove(path);
+}
+
+// ---- compressive_strength_Pa, strength_method, strength_source ------------------------------
+
+namespace {
+
+/// kGood with a known strength, its method and source (lines 10-12).
+std::string WithStrength(const std::string& strength, bool method = true, bool source = true) {
+  std::string text = kGood + "compressive_strength_Pa = " + strength + "\n";
+  if (method) text += "strength_method = \"ASTM D1621, at yield or 10 % strain\"\n";
+  if (source) text += "strength_source = \"a datasheet\"\n";
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("a compressive strength loads with its method and source", "[errors][strength]") {
+  using covopt::materials::CrushBehaviour;
+  const Material known =
+      Catalog::FromTomlString(WithStrength("\"172 kPa\""), "mine.toml").materials()[0];
+  CHECK(known.crush_behaviour == CrushBehaviour::kCrushes);
+  CHECK(known.compressive_strength_Pa == 172e3);
+  CHECK(known.strength_method == "ASTM D1621, at yield or 10 % strain");
+  CHECK(known.strength_source == "a datasheet");
+  CHECK(Catalog::FromTomlString(WithStrength("172e3"), "mine.toml")
+            .materials()[0]
+            .compressive_strength_Pa == 172e3);  // a plausible bare number is Pa
+
+  const Material soft =
+      Catalog::FromTomlString(WithStrength("\"does not crush\""), "mine.toml").materials()[0];
+  CHECK(soft.crush_behaviour == CrushBehaviour::kDoesNotCrush);
+  CHECK_FALSE(soft.compressive_strength_Pa.has_value());
+
+  const Material unknown = Catalog::FromTomlString(
+      kGood + "compressive_strength_Pa = \"unknown\"\n", "mine.toml").materials()[0];
+  CHECK(unknown.crush_behaviour == CrushBehaviour::kUnknown);
+  CHECK(unknown.strength_method.empty());
+  // Absent: unknown (catalogs written before the key existed still load).
+  const Material old = Catalog::FromTomlString(kGood, "mine.toml").materials()[0];
+  CHECK(old.crush_behaviour == CrushBehaviour::kUnknown);
+  CHECK_FALSE(old.compressive_strength_Pa.has_value());
+}
+
+TEST_CASE("strength errors are one line naming the key, the value and what is allowed",
+          "[errors][strength]") {
+  SECTION("a known strength without its method") {
+    const CatalogError e = ErrorFor(WithStrength("\"172 kPa\"", false, true));
+    CHECK(std::string(e.what()) ==
+          "mine.toml:10:27: material 'soft foam': compressive_strength_Pa \"172 kPa\" needs a "
+          "strength_method: the test method and what it measures, e.g. \"ASTM D1621, at yield "
+          "or 10 % strain\"");
+    CHECK(e.key() == "compressive_strength_Pa");
+  }
+  SECTION("a known strength without its source") {
+    CHECK(std::string(ErrorFor(WithStrength("\"172 kPa\"", true, false)).what()) ==
+          "mine.toml:10:27: material 'soft foam': compressive_strength_Pa \"172 kPa\" needs a "
+          "strength_source: a URL or a citation for the strength");
+  }
+  SECTION("does not crush without the reason") {
+    CHECK(std::string(ErrorFor(WithStrength("\"does not crush\"", false, true)).what()) ==
+          "mine.toml:10:27: material 'soft foam': compressive_strength_Pa \"does not crush\" "
+          "needs a strength_method: why it does not crush, e.g. \"flexible open-cell foam: "
+          "densifies, no crush strength\"");
+  }
+  SECTION("unknown with a method") {
+    const CatalogError e = ErrorFor(WithStrength("\"unknown\"", true, false));
+    CHECK(std::string(e.what()) ==
+          "mine.toml:11:19: material 'soft foam': strength_method is given but "
+          "compressive_strength_Pa is \"unknown\"; give the strength (with a unit) or \"does "
+          "not crush\", or leave strength_method out (a note may say why it is unknown)");
+    CHECK(e.key() == "strength_method");
+  }
+  SECTION("a method without any strength") {
+    CHECK_THAT(ErrorFor(kGood + "strength_method = \"ASTM D1621\"\n").what(),
+               StartsWith("mine.toml:10:19: material 'soft foam': strength_method is given but "
+                          "compressive_strength_Pa is missing (unknown)"));
+  }
+  SECTION("a strength mixed with does not crush") {
+    const CatalogError e = ErrorFor(WithStrength("\"does not crush, 172 kPa\""));
+    CHECK_THAT(e.what(), StartsWith("mine.toml:10:27: material 'soft foam': "
+                                    "compressive_strength_Pa must be a stress with a unit "
+                                    "(\"172 kPa\"), a number in Pa, \"does not crush\" or "
+                                    "\"unknown\" (got \"does not crush, 172 kPa\")"));
+    CHECK_THAT(ErrorFor(WithStrength("\"172 kPa does not crush\"")).what(),
+               StartsWith("mine.toml:10:27: material 'soft foam': compressive_strength_Pa:"));
+    CHECK_THAT(ErrorFor(WithStrength("\"does-not-crush\"")).what(),
+               Contains("(got \"does-not-crush\"); did you mean 'does not crush'?"));
+  }
+  SECTION("an implausible bare number, with the likely unit") {
+    CHECK(std::string(ErrorFor(WithStrength("172")).what()) ==
+          "mine.toml:10:27: material 'soft foam': compressive_strength_Pa 172: a bare number is "
+          "in pascals (172 Pa); write \"172kPa\" or \"172Pa\"");
+  }
+  SECTION("negative, zero, NaN, infinite") {
+    CHECK(std::string(ErrorFor(WithStrength("\"-172 kPa\"")).what()) ==
+          "mine.toml:10:27: material 'soft foam': compressive_strength_Pa must be > 0 and <= "
+          "1e12 (Pa), or \"does not crush\" or \"unknown\" (got -172000)");
+    CHECK_THAT(ErrorFor(WithStrength("-172e3")).what(),
+               Contains("compressive_strength_Pa must be > 0") && Contains("(got -172000)"));
+    CHECK_THAT(ErrorFor(WithStrength("0")).what(), Contains("(got 0)"));
+    CHECK_THAT(ErrorFor(WithStrength("nan")).what(),
+               StartsWith("mine.toml:10:27: material 'soft foam': compressive_strength_Pa must "
+                          "be > 0") && Contains("(got nan)"));
+    CHECK_THAT(ErrorFor(WithStrength("inf")).what(), Contains("compressive_strength_Pa must be > 0"));
+    CHECK_THAT(ErrorFor(WithStrength("\"nan kPa\"")).what(), Contains("not a finite number"));
+  }
+  SECTION("wrong types and a blank method") {
+    CHECK_THAT(ErrorFor(WithStrength("true")).what(),
+               Contains("compressive_strength_Pa must be a stress with a unit") &&
+                   Contains("(got a boolean)"));
+    CHECK_THAT(ErrorFor(kGood + "compressive_strength_Pa = \"1 MPa\"\nstrength_method = 3\n").what(),
+               StartsWith("mine.toml:11:19:") && Contains("strength_method must be a string"));
+    CHECK_THAT(ErrorFor(kGood + "compressive_strength_Pa = \"1 MPa\"\nstrength_method = \" \"\n"
+                                "strength_source = \"s\"\n")
+                   .what(),
+               Contains("strength_method must not be empty"));
+  }
+  SECTION("a unit that is no stress") {
+    CHECK_THAT(ErrorFor(WithStrength("\"172 kg\"")).what(),
+               StartsWith("mine.toml:10:27: material 'soft foam': compressive_strength_Pa: unit "
+                          "'kg' is not a modulus or pressure"));
+  }
+  SECTION("unknown keys near the new ones get a suggestion") {
+    CHECK_THAT(ErrorFor(kGood + "compressive_strength = \"1 MPa\"\n").what(),
+               Contains("unknown key 'compressive_strength'; did you mean "
+                        "'compressive_strength_Pa'?"));
+    CHECK_THAT(ErrorFor(kGood + "strength_metod = \"x\"\n").what(),
+               Contains("did you mean 'strength_method'?"));
+    CHECK_THAT(ErrorFor(kGood + "strength_src = \"x\"\n").what(),
+               Contains("did you mean 'strength_source'?"));
+  }
+}
+
+TEST_CASE("Catalog::Add checks the strength fields as a file would", "[errors][strength]") {
+  using covopt::materials::CrushBehaviour;
+  Material m;
+  m.name = "rigid foam";
+  m.family = "foam";
+  m.youngs_modulus_Pa = 20e6;
+  m.modulus_basis = ModulusBasis::kCompressive;
+  m.source = "a datasheet";
+  const auto error_for = [](Material bad) -> std::string {
+    try {
+      Catalog().Add(std::move(bad));
+    } catch (const CatalogError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  CHECK(error_for(m).empty());  // unknown, with nothing else: fine
+
+  Material crushes = m;
+  crushes.crush_behaviour = CrushBehaviour::kCrushes;
+  crushes.compressive_strength_Pa = 0.3e6;
+  crushes.strength_method = "EN 826, at 10 % strain";
+  crushes.strength_source = "a datasheet";
+  CHECK(error_for(crushes).empty());
+
+  Material bad = crushes;
+  bad.compressive_strength_Pa.reset();
+  CHECK_THAT(error_for(bad), StartsWith("material 'rigid foam': compressive_strength_Pa is "
+                                        "required when the material crushes"));
+  bad = crushes;
+  bad.compressive_strength_Pa = -1.0;
+  CHECK_THAT(error_for(bad), StartsWith("material 'rigid foam': compressive_strength_Pa must be "
+                                        "> 0 and <= 1e12 (Pa)"));
+  bad.compressive_strength_Pa = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THAT(error_for(bad), Contains("compressive_strength_Pa must be > 0"));
+  bad.compressive_strength_Pa = std::numeric_limits<double>::infinity();
+  CHECK_THAT(error_for(bad), Contains("compressive_strength_Pa must be > 0"));
+  bad = crushes;
+  bad.strength_method.clear();
+  CHECK_THAT(error_for(bad), StartsWith("material 'rigid foam': strength_method must name the "
+                                        "test method"));
+  bad = crushes;
+  bad.strength_source = "  ";
+  CHECK_THAT(error_for(bad), StartsWith("material 'rigid foam': strength_source must say where"));
+
+  // Set exactly when the material crushes.
+  bad = crushes;
+  bad.crush_behaviour = CrushBehaviour::kDoesNotCrush;
+  CHECK_THAT(error_for(bad), StartsWith("material 'rigid foam': compressive_strength_Pa must be "
+                                        "empty for a material that does not crush (got 3e+05)"));
+  bad.compressive_strength_Pa.reset();
+  CHECK(error_for(bad).empty());
+  bad.strength_method.clear();
+  CHECK_THAT(error_for(bad), Contains("strength_method must say why the material does not crush"));
+  bad = crushes;
+  bad.crush_behaviour = CrushBehaviour::kUnknown;
+  CHECK_THAT(error_for(bad), Contains("compressive_strength_Pa must be empty when the crush "
+                                      "behaviour is unknown"));
+  bad.compressive_strength_Pa.reset();
+  CHECK_THAT(error_for(bad), Contains("strength_method must be empty when the strength is unknown"));
+  bad = m;
+  bad.crush_behaviour = static_cast<CrushBehaviour>(7);
+  CHECK_THAT(error_for(bad), Contains("invalid crush behaviour"));
 }

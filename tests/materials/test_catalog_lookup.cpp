@@ -192,3 +192,37 @@ TEST_CASE("the built-in catalog answers a designer's range query", "[lookup]") {
   CHECK(std::find(names.begin(), names.end(), "polystyrene foam 27.6") != names.end());
   CHECK(std::find(names.begin(), names.end(), "polystyrene foam 48.3") == names.end());  // 100 kg/m³
 }
+
+TEST_CASE("Filter keeps known strengths in range and selects crush behaviours", "[filter][strength]") {
+  using covopt::materials::CrushBehaviour;
+  const Catalog& catalog = Catalog::BuiltIn();
+  covopt::materials::MaterialFilter strong;
+  strong.compressive_strength_Pa = {150e3, 300e3};
+  const auto kept = catalog.Filter(strong);
+  REQUIRE(!kept.empty());
+  std::vector<std::string> names;
+  for (const Material* m : kept) {
+    names.push_back(m->name);
+    REQUIRE(m->compressive_strength_Pa.has_value());
+    CHECK(*m->compressive_strength_Pa >= 150e3);
+    CHECK(*m->compressive_strength_Pa <= 300e3);
+  }
+  // FOAMULAR 250 (172 kPa), 400 (276 kPa), EPS29 (200 kPa), EPS39 (276 kPa), LB-X (300 kPa).
+  CHECK(names == std::vector<std::string>{"EPS geofoam EPS29", "EPS geofoam EPS39",
+                                          "XPS Foamular 250", "XPS Foamular 400",
+                                          "XPS Styrofoam LB-X"});
+  // Unknown strengths never pass a strength range, not even with include_unknown.
+  strong.include_unknown = true;
+  CHECK(catalog.Filter(strong).size() == kept.size());
+
+  covopt::materials::MaterialFilter soft;
+  soft.crush_behaviours = {CrushBehaviour::kDoesNotCrush};
+  const auto no_crush = catalog.Filter(soft);
+  CHECK(no_crush.size() >= 20);
+  for (const Material* m : no_crush) CHECK(m->crush_behaviour == CrushBehaviour::kDoesNotCrush);
+  soft.crush_behaviours.push_back(CrushBehaviour::kUnknown);
+  const auto either = catalog.Filter(soft);
+  CHECK(either.size() > no_crush.size());
+  soft.compressive_strength_Pa = {1.0, std::nullopt};  // a range and no crushing material: none
+  CHECK(catalog.Filter(soft).empty());
+}
