@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <exception>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -54,6 +55,46 @@ std::vector<std::string> BasisNames() {
 
 std::string ModulusText(double pa) { return FormatQuantity(pa, QuantityKind::kModulus); }
 
+/// --strength: a bare end is Pa and must be plausible for a compressive strength.
+constexpr QuantitySpec kStrengthSpec{QuantityKind::kModulus,
+                                     false,
+                                     false,
+                                     materials::kPlausibleStrengthMin_Pa,
+                                     materials::kPlausibleStrengthMax_Pa,
+                                     {"kPa", "MPa"},
+                                     "compressive strength"};
+
+constexpr std::array kCrushBehaviours{materials::CrushBehaviour::kCrushes,
+                                      materials::CrushBehaviour::kDoesNotCrush,
+                                      materials::CrushBehaviour::kUnknown};
+
+std::vector<std::string> CrushNames() {
+  std::vector<std::string> names;
+  for (const auto b : kCrushBehaviours) names.emplace_back(materials::ToString(b));
+  return names;
+}
+
+/// A stress in 3 significant digits for the table: "172 kPa", "86.2 MPa".
+std::string ShortStress(double pa) {
+  const std::array<std::pair<double, const char*>, 3> units{
+      {{1e9, "GPa"}, {1e6, "MPa"}, {1e3, "kPa"}}};
+  for (const auto& [scale, unit] : units) {
+    if (pa >= scale) return fmt::format("{:.3g} {}", pa / scale, unit);
+  }
+  return fmt::format("{:.3g} Pa", pa);
+}
+
+/// The table's strength column: the strength, "no crush" or "unknown".
+std::string StrengthText(const Material& m) {
+  switch (m.crush_behaviour) {
+    case materials::CrushBehaviour::kCrushes:
+      return m.compressive_strength_Pa ? ShortStress(*m.compressive_strength_Pa) : "unknown";
+    case materials::CrushBehaviour::kDoesNotCrush: return "no crush";
+    case materials::CrushBehaviour::kUnknown: break;
+  }
+  return "unknown";
+}
+
 std::string PoissonText(const Material& m) {
   return m.poisson_ratio ? fmt::format("{:g}", *m.poisson_ratio) : std::string("–");
 }
@@ -71,13 +112,13 @@ void PrintMaterialTable(std::ostream& out, const std::vector<const Material*>& r
     name_width = std::max(name_width, m->name.size());
     family_width = std::max(family_width, m->family.size());
   }
-  fmt::print(out, "{:<{}}  {:<{}}  {:>10}  {:>5}  {:>9}  {}\n", "name", name_width, "family",
-             family_width, "E", "ν", "ρ [kg/m³]", "E basis");
+  fmt::print(out, "{:<{}}  {:<{}}  {:>11}  {:>5}  {:>9}  {:>9}  {}\n", "name", name_width,
+             "family", family_width, "E", "ν", "ρ [kg/m³]", "strength", "E basis");
   bool unknown = false;
   for (const Material* m : rows) {
-    fmt::print(out, "{:<{}}  {:<{}}  {:>10}  {:>5}  {:>9}  {}\n", m->name, name_width, m->family,
-               family_width, ModulusText(m->youngs_modulus_Pa), PoissonText(*m), DensityText(*m),
-               materials::ToString(m->modulus_basis));
+    fmt::print(out, "{:<{}}  {:<{}}  {:>11}  {:>5}  {:>9}  {:>9}  {}\n", m->name, name_width,
+               m->family, family_width, ModulusText(m->youngs_modulus_Pa), PoissonText(*m),
+               DensityText(*m), StrengthText(*m), materials::ToString(m->modulus_basis));
     unknown = unknown || !m->poisson_ratio || !m->density_kg_per_m3;
   }
   fmt::print(out, "\n{}\n", closing);
@@ -85,6 +126,10 @@ void PrintMaterialTable(std::ostream& out, const std::vector<const Material*>& r
     fmt::print(out, "– = not given by the source; where ν is needed, {:g} is assumed.\n",
                materials::kDefaultPoissonRatio);
   }
+  fmt::print(out,
+             "strength = compressive strength (at yield or 10 % strain, by its test method); "
+             "no crush = densifies instead, full compression is its limit; unknown = a design "
+             "with it cannot be verified for crushing.\n");
   fmt::print(out, "Sources, notes and how E was obtained: covopt materials show NAME\n");
 }
 
@@ -136,6 +181,25 @@ void PrintMaterial(std::ostream& out, const Material& m) {
                               ? FormatQuantity(*m.density_kg_per_m3, QuantityKind::kDensity)
                               : std::string("unknown"));
   ShowRow(out, "source", m.source);
+  switch (m.crush_behaviour) {
+    case materials::CrushBehaviour::kCrushes:
+      ShowRow(out, "strength",
+              m.compressive_strength_Pa
+                  ? fmt::format("{} ({:.10g} Pa), compressive: the material crushes above it",
+                                ModulusText(*m.compressive_strength_Pa), *m.compressive_strength_Pa)
+                  : std::string("unknown"));
+      ShowRow(out, "strength method", m.strength_method);
+      ShowRow(out, "strength source", m.strength_source);
+      break;
+    case materials::CrushBehaviour::kDoesNotCrush:
+      ShowRow(out, "strength", "does not crush: " + m.strength_method);
+      ShowRow(out, "strength source", m.strength_source);
+      break;
+    case materials::CrushBehaviour::kUnknown:
+      ShowRow(out, "strength",
+              "unknown: a design with this material cannot be verified for crushing");
+      break;
+  }
   if (!m.note.empty()) ShowRow(out, "note", m.note);
   if (!m.origin.empty()) ShowRow(out, "defined at", m.origin);
 }
@@ -159,14 +223,28 @@ std::string Plural(std::size_t n, std::string_view word) {
 /// The filter `find`'s options describe, checked against the catalog (families).
 materials::MaterialFilter ResolveFilter(const MaterialsOptions& o, const Catalog& catalog) {
   materials::MaterialFilter filter;
+  // The named specs, so that a bare end is checked as a bare number is everywhere else
+  // ("--modulus 10..100" would be 10 Pa to 100 Pa).
   if (o.modulus) {
-    filter.youngs_modulus_Pa = ParseRange(*o.modulus, {QuantityKind::kModulus}, "--modulus");
+    filter.youngs_modulus_Pa =
+        ParseRange(*o.modulus, quantity_specs::kCoveringModulus, "--modulus");
   }
   if (o.poisson) {
     filter.poisson_ratio = ParseRange(*o.poisson, {QuantityKind::kDimensionless}, "--poisson");
   }
   if (o.density) {
-    filter.density_kg_per_m3 = ParseRange(*o.density, {QuantityKind::kDensity}, "--density");
+    filter.density_kg_per_m3 =
+        ParseRange(*o.density, quantity_specs::kMaterialDensity, "--density");
+  }
+  if (o.strength) {
+    filter.compressive_strength_Pa = ParseRange(*o.strength, kStrengthSpec, "--strength");
+  }
+  for (const std::string& crush : o.crush) {
+    const auto parsed = materials::ParseCrushBehaviour(crush);
+    if (!parsed) {
+      throw InputError(fmt::format("--crush: expected {} (got '{}')", Quoted(CrushNames()), crush));
+    }
+    filter.crush_behaviours.push_back(*parsed);
   }
   const std::vector<std::string> families = catalog.families();
   for (const std::string& family : o.families) {
@@ -201,6 +279,8 @@ std::string DescribeFilter(const MaterialsOptions& o) {
   if (o.modulus) parts.push_back("E " + *o.modulus);
   if (o.poisson) parts.push_back("ν " + *o.poisson);
   if (o.density) parts.push_back("ρ " + *o.density);
+  if (o.strength) parts.push_back("strength " + *o.strength);
+  if (!o.crush.empty()) parts.push_back("crush " + fmt::format("{}", fmt::join(o.crush, "|")));
   if (!o.families.empty()) parts.push_back("family " + fmt::format("{}", fmt::join(o.families, "|")));
   if (!o.bases.empty()) parts.push_back("basis " + fmt::format("{}", fmt::join(o.bases, "|")));
   if (o.name_contains) parts.push_back("name contains '" + *o.name_contains + "'");
@@ -248,7 +328,8 @@ materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
     throw InputError(fmt::format("{}: {} (got '{}')", name, problem, text));
   };
   const std::string example =
-      spec.kind == QuantityKind::kModulus   ? "10MPa..100MPa"
+      name == "--strength"                  ? "100kPa..1MPa"
+      : spec.kind == QuantityKind::kModulus ? "10MPa..100MPa"
       : spec.kind == QuantityKind::kDensity ? "20kg/m3..60kg/m3"
                                             : "0.2..0.3";
   const auto dots = s.find("..");
@@ -297,17 +378,20 @@ CLI::App* SetupMaterials(CLI::App& app, MaterialsOptions& options) {
   materials->footer(
       "The built-in catalog holds sourced foams, elastomers and paddings, among them the\n"
       "paper's Table IV coverings. Every entry states how its E was obtained (compressive,\n"
-      "tensile, bending, fitted, as-printed, hardness): compare like with like.\n"
+      "tensile, bending, fitted, as-printed, hardness): compare like with like. Each\n"
+      "states its compressive strength, or that it does not crush, or that it is unknown.\n"
       "Exit codes: 0 done; 2 bad input.");
 
   CLI::App* list = materials->add_subcommand("list", "List every material: name, family, E, ν, "
-                                                     "density and the basis of E");
+                                                     "density, strength and the basis of E");
   list->add_flag("--json", options.json, "print a JSON array of objects (SI units)");
   AddCatalogOptions(*list, options.catalog);
   list->callback([&options] { options.action = MaterialsAction::kList; });
 
   CLI::App* show = materials->add_subcommand(
-      "show", "Show one material with its source and how its E was obtained");
+      "show",
+      "Show one material with its source, how its E was obtained and its compressive "
+      "strength (or that it does not crush) with the strength's method and source");
   // The name may come as one quoted argument or as several words.
   show->add_option_function<std::vector<std::string>>(
           "name",
@@ -326,7 +410,9 @@ CLI::App* SetupMaterials(CLI::App& app, MaterialsOptions& options) {
   show->callback([&options] { options.action = MaterialsAction::kShow; });
 
   CLI::App* find = materials->add_subcommand(
-      "find", "Find materials by ranges of E, ν and density, by family, basis or name");
+      "find",
+      "Find materials by ranges of E, ν, density and strength, by crush behaviour, family, "
+      "basis or name");
   find->add_option("--modulus", options.modulus,
                    "Young's modulus range, e.g. 10MPa..100MPa, 10MPa.. or ..100MPa")
       ->type_name("LO..HI")
@@ -337,6 +423,18 @@ CLI::App* SetupMaterials(CLI::App& app, MaterialsOptions& options) {
   find->add_option("--density", options.density,
                    "density range in kg/m3 or g/cm3, e.g. ..60kg/m3")
       ->type_name("LO..HI")
+      ->group("Filters");
+  find->add_option("--strength", options.strength,
+                   "compressive strength range, e.g. 100kPa..1MPa or 1MPa..: keeps only "
+                   "materials whose strength is known and in range (not those that do not "
+                   "crush, nor those whose strength is unknown)")
+      ->type_name("LO..HI")
+      ->group("Filters");
+  find->add_option("--crush", options.crush,
+                   "keep this crush behaviour: crushes, does-not-crush or unknown; repeatable: "
+                   "any of them")
+      ->type_name("BEHAVIOUR")
+      ->allow_extra_args(false)
       ->group("Filters");
   find->add_option("--family", options.families,
                    "keep this family (foam, elastomer, padding, ...); repeatable: any of them")
@@ -358,7 +456,8 @@ CLI::App* SetupMaterials(CLI::App& app, MaterialsOptions& options) {
       ->group("Filters");
   find->add_flag("--json", options.json, "print a JSON array of objects (SI units)");
   AddCatalogOptions(*find, options.catalog);
-  find->footer("Ranges are closed; a bare number is SI (Pa, kg/m³). Units: Pa, kPa, MPa, GPa;\n"
+  find->footer("Ranges are closed; a bare number is SI (Pa, kg/m³) and must be plausible\n"
+               "(--modulus 10..100 is refused: write 10MPa..100MPa). Units: Pa, kPa, MPa, GPa;\n"
                "kg/m3, g/cm3. Exit codes: 0 done (also when nothing matches); 2 bad input.");
   find->callback([&options] { options.action = MaterialsAction::kFind; });
   return materials;

@@ -6,8 +6,15 @@
 ///     covopt materials list [--json] [--catalog FILE]... [--no-builtin]
 ///     covopt materials show NAME [--json] [--catalog FILE]... [--no-builtin]
 ///     covopt materials find [--modulus LO..HI] [--poisson LO..HI] [--density LO..HI]
-///                           [--family F]... [--basis B]... [--name TEXT]
-///                           [--include-unknown] [--json] [--catalog FILE]... [--no-builtin]
+///                           [--strength LO..HI] [--crush C]... [--family F]...
+///                           [--basis B]... [--name TEXT] [--include-unknown] [--json]
+///                           [--catalog FILE]... [--no-builtin]
+///
+/// --strength keeps materials whose compressive strength is known and in range (materials
+/// that do not crush, or whose strength is unknown, never pass it); --crush keeps materials
+/// of the given crush behaviours (crushes, does-not-crush, unknown). A bare range end is SI
+/// and must be plausible for its quantity, as elsewhere ("--modulus 10..100" is refused:
+/// 10 Pa is no covering's modulus).
 ///
 /// The catalog is the built-in one (covopt::materials::Catalog::BuiltIn()) plus every
 /// --catalog file in order; a name defined twice is bad input naming both places.
@@ -64,7 +71,8 @@ materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
 
 /// One catalog entry as JSON: name, family, youngs_modulus_Pa, poisson_ratio (null if
 /// unknown), density_kg_per_m3 (null if unknown), modulus_basis, source, note (null if
-/// none), defined_at.
+/// none), crush_behaviour, compressive_strength_Pa (null unless known), strength_method,
+/// strength_source, defined_at.
 nlohmann::ordered_json MaterialToJson(const materials::Material& material);
 
 /// Which `materials` subcommand ran.
@@ -80,6 +88,8 @@ struct MaterialsOptions {
   std::optional<std::string> modulus;   ///< --modulus LO..HI (Pa, kPa, MPa, GPa)
   std::optional<std::string> poisson;   ///< --poisson LO..HI
   std::optional<std::string> density;   ///< --density LO..HI (kg/m3, g/cm3)
+  std::optional<std::string> strength;  ///< --strength LO..HI (Pa, kPa, MPa, GPa)
+  std::vector<std::string> crush;       ///< --crush C, repeatable: any of them
   std::vector<std::string> families;    ///< --family F, repeatable: any of them
   std::vector<std::string> bases;       ///< --basis B, repeatable: any of them
   std::optional<std::string> name_contains;  ///< --name TEXT: part of the name

@@ -1,5 +1,5 @@
 """covopt.materials() and covopt.material(name) against `covopt materials list|show --json`,
-and the unknown-name message."""
+the unknown-name message, and the compressive-strength keys."""
 
 import pytest
 
@@ -22,10 +22,11 @@ def test_material_ignores_case():
 
 def test_every_material_has_the_documented_keys_in_si():
     keys = ["name", "family", "youngs_modulus_Pa", "poisson_ratio", "density_kg_per_m3",
-            "modulus_basis", "source", "note", "defined_at"]
+            "modulus_basis", "source", "note", "crush_behaviour", "compressive_strength_Pa",
+            "strength_method", "strength_source", "defined_at"]
     for m in covopt.materials():
         assert list(m) == keys
-        assert 1e4 <= m["youngs_modulus_Pa"] <= 1e12
+        assert 1e3 <= m["youngs_modulus_Pa"] <= 1e12
         assert m["poisson_ratio"] is None or -1 < m["poisson_ratio"] <= 0.5
 
 
@@ -44,3 +45,28 @@ def test_a_material_sets_the_covering_of_a_simulation():
     covering = covopt.simulate(material=m["name"])["scene"]["covering"]
     assert covering["youngs_modulus_Pa"] == m["youngs_modulus_Pa"]
     assert covering["material"] == m["name"]
+
+
+def test_every_material_states_its_crush_behaviour():
+    materials = covopt.materials()
+    assert len(materials) >= 45
+    for m in materials:
+        assert m["crush_behaviour"] in ("crushes", "does-not-crush", "unknown")
+        if m["crush_behaviour"] == "crushes":
+            assert m["compressive_strength_Pa"] > 0
+            assert m["strength_method"] and m["strength_source"]
+        else:
+            assert m["compressive_strength_Pa"] is None
+        if m["crush_behaviour"] == "does-not-crush":
+            assert m["strength_method"] and m["strength_source"]
+        if m["crush_behaviour"] == "unknown":
+            assert m["strength_method"] is None and m["strength_source"] is None
+
+
+def test_the_strength_agrees_with_the_cli(cli_json):
+    m = covopt.material("XPS Foamular 250")
+    shown = cli_json("materials", "show", "XPS Foamular 250", "--json")
+    assert m["compressive_strength_Pa"] == shown["compressive_strength_Pa"]
+    assert m["compressive_strength_Pa"] == pytest.approx(25 * 6894.757)
+    assert m["strength_method"] == shown["strength_method"]
+    assert covopt.material("silicone Sylgard 184")["crush_behaviour"] == "does-not-crush"

@@ -20,6 +20,11 @@ Json MaterialObject(const materials::Material& m) {
   j["modulus_basis"] = materials::ToString(m.modulus_basis);
   j["source"] = m.source;
   j["note"] = m.note.empty() ? Json(nullptr) : Json(m.note);
+  j["crush_behaviour"] = materials::ToString(m.crush_behaviour);
+  j["compressive_strength_Pa"] =
+      m.compressive_strength_Pa ? Json(*m.compressive_strength_Pa) : Json(nullptr);
+  j["strength_method"] = m.strength_method.empty() ? Json(nullptr) : Json(m.strength_method);
+  j["strength_source"] = m.strength_source.empty() ? Json(nullptr) : Json(m.strength_source);
   j["defined_at"] = m.origin.empty() ? Json(nullptr) : Json(m.origin);
   return j;
 }

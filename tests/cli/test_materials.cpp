@@ -7,7 +7,10 @@
 // errors (bad TOML, a name clash) are bad input naming file:line:column, that range
 // filters read units and refuse ambiguous or inverted ranges, and that simulate --material
 // computes the same impact as the library with the entry's E and ν (0.25 with a warning
-// when ν is unknown) and names the material in the JSON.
+// when ν is unknown) and names the material in the JSON. And the compressive strength:
+// list's strength column, show's strength, method and source (or "does not crush" with the
+// reason, or "unknown"), the JSON keys, find --strength and --crush, and a bare range end
+// refused when implausible ("--modulus 10..100" is exit 2 with one line).
 
 #include <algorithm>
 #include <string>
@@ -100,7 +103,8 @@ TEST_CASE("materials list --json is an array with the documented keys in SI", "[
     CAPTURE(m.name);
     for (const char* key : {"name", "family", "youngs_modulus_Pa", "poisson_ratio",
                             "density_kg_per_m3", "modulus_basis", "source", "note",
-                            "defined_at"}) {
+                            "crush_behaviour", "compressive_strength_Pa", "strength_method",
+                            "strength_source", "defined_at"}) {
       CAPTURE(key);
       CHECK(j.contains(key));
     }
@@ -119,6 +123,22 @@ TEST_CASE("materials list --json is an array with the documented keys in SI", "[
     }
     CHECK(j["modulus_basis"] == std::string(covopt::materials::ToString(m.modulus_basis)));
     CHECK(j["source"] == m.source);
+    CHECK(j["crush_behaviour"] == std::string(covopt::materials::ToString(m.crush_behaviour)));
+    if (m.compressive_strength_Pa) {
+      CHECK(j["compressive_strength_Pa"].get<double>() == *m.compressive_strength_Pa);
+    } else {
+      CHECK(j["compressive_strength_Pa"].is_null());
+    }
+    if (m.strength_method.empty()) {
+      CHECK(j["strength_method"].is_null());
+    } else {
+      CHECK(j["strength_method"] == m.strength_method);
+    }
+    if (m.strength_source.empty()) {
+      CHECK(j["strength_source"].is_null());
+    } else {
+      CHECK(j["strength_source"] == m.strength_source);
+    }
   }
   const auto ps = std::find_if(json.begin(), json.end(),
                                [](const Json& j) { return j["name"] == "polystyrene foam 27.6"; });
@@ -209,35 +229,44 @@ TEST_CASE("materials find returns what Catalog::Filter returns", "[materials][fi
     CHECK(NamesIn(soft) == NamesOf(catalog.Filter(filter)));
     const Json dense = Json::parse(
         Run({"materials", "find", "--density", "0.3g/cm3..", "--json"}).out);
-    CHECK(NamesIn(dense) == std::vector<std::string>{"sponge rubber 1040"});
+    covopt::materials::MaterialFilter dense_filter;
+    dense_filter.density_kg_per_m3 = {300.0, std::nullopt};
+    CHECK(NamesIn(dense) == NamesOf(catalog.Filter(dense_filter)));
+    CHECK(std::find(NamesIn(dense).begin(), NamesIn(dense).end(), "sponge rubber 1040") !=
+          NamesIn(dense).end());
     const Json kpa = Json::parse(
         Run({"materials", "find", "--modulus", "100kPa..200kPa", "--json"}).out);
-    CHECK(NamesIn(kpa) == std::vector<std::string>{"PE foam Plastazote LD33"});
+    covopt::materials::MaterialFilter kpa_filter;
+    kpa_filter.youngs_modulus_Pa = {100e3, 200e3};
+    CHECK(NamesIn(kpa) == NamesOf(catalog.Filter(kpa_filter)));
+    CHECK(NamesIn(kpa).front() == "PE foam Plastazote LD33");
   }
   SECTION("basis, name and several families") {
     const Json fitted = Json::parse(Run({"materials", "find", "--basis", "fitted", "--json"}).out);
     CHECK(fitted.size() == 4);
     const Json named = Json::parse(Run({"materials", "find", "--name", "XPS", "--json"}).out);
-    CHECK(named.size() == 4);
+    CHECK(named.size() == 5);  // Foamular 250/400/600, Dow blue, Styrofoam LB-X
     const Json two = Json::parse(Run({"materials", "find", "--family", "padding", "--family",
                                       "Thermoplastic", "--json"})
                                      .out);
-    CHECK(two.size() == 5);
+    CHECK(two.size() == 7);  // 4 Park paddings, 3 nylons
   }
 }
 
 TEST_CASE("materials find prints a table, or says that nothing matches", "[materials][find]") {
   const CliRun run = Run({"materials", "find", "--modulus", "20MPa..40MPa", "--family", "foam"});
   REQUIRE(run.exit_code == 0);
+  const std::string total = std::to_string(Catalog::BuiltIn().size());
   CHECK_THAT(run.out, Contains("polystyrene foam 27.6") && Contains("XPS Foamular 600") &&
-                          Contains("of 29 materials match E 20MPa..40MPa, family foam"));
+                          Contains("of " + total + " materials match E 20MPa..40MPa, family foam"));
   CHECK_THAT(run.out, !Contains("polystyrene foam 48.3"));
 
   const CliRun none = Run({"materials", "find", "--modulus", "1TPa.."});
   CHECK(none.exit_code == 2);  // TPa is no unit: bad input, not an empty answer
   const CliRun empty = Run({"materials", "find", "--modulus", "500GPa.."});
   REQUIRE(empty.exit_code == 0);
-  CHECK_THAT(empty.out, StartsWith("No material of the built-in catalog (29 materials) matches"));
+  CHECK_THAT(empty.out,
+             StartsWith("No material of the built-in catalog (" + total + " materials) matches"));
   CHECK(Json::parse(Run({"materials", "find", "--modulus", "500GPa..", "--json"}).out).empty());
 }
 
@@ -285,7 +314,8 @@ TEST_CASE("a user catalog extends the built-in one", "[materials][catalog]") {
   const CliRun run = Run({"materials", "list", "--catalog", file});
   REQUIRE(run.exit_code == 0);
   CHECK_THAT(run.out, Contains("lab foam A") && Contains("polystyrene foam 27.6") &&
-                          Contains("31 materials (the built-in catalog and " + file + ")"));
+                          Contains(std::to_string(Catalog::BuiltIn().size() + 2) +
+                                   " materials (the built-in catalog and " + file + ")"));
 
   const CliRun show = Run({"materials", "show", "lab foam a", "--catalog", file});
   REQUIRE(show.exit_code == 0);
@@ -414,4 +444,102 @@ TEST_CASE("simulate --material without a covering is reported as ignored", "[mat
   REQUIRE(json["warnings"].size() == 1);
   CHECK(json["warnings"][0] ==
         "no covering (covering.thickness = 0), so --material 'XPS Foamular 250' is ignored");
+}
+
+// ---- The compressive strength ---------------------------------------------------------------
+
+TEST_CASE("materials list shows each material's strength", "[materials][strength]") {
+  const CliRun run = Run({"materials", "list"});
+  REQUIRE(run.exit_code == 0);
+  CHECK_THAT(run.out, Contains("strength") && Contains("E basis"));
+  const auto row = [&](const std::string& name) {
+    const auto at = run.out.find("\n" + name + " ");
+    REQUIRE(at != std::string::npos);
+    return run.out.substr(at + 1, run.out.find('\n', at + 1) - at - 1);
+  };
+  CHECK_THAT(row("XPS Foamular 250"), Contains("  172 kPa  "));
+  CHECK_THAT(row("EPS geofoam EPS39"), Contains("  276 kPa  "));
+  CHECK_THAT(row("nylon bumper cover Qolo"), Contains("  86.2 MPa  "));
+  CHECK_THAT(row("silicone Sylgard 184"), Contains("  no crush  "));
+  CHECK_THAT(row("polystyrene foam 27.6"), Contains("  unknown  "));
+  CHECK_THAT(run.out, Contains("no crush = densifies instead"));
+}
+
+TEST_CASE("materials show prints the strength with its method and source", "[materials][strength]") {
+  const CliRun xps = Run({"materials", "show", "XPS Foamular 250"});
+  REQUIRE(xps.exit_code == 0);
+  CHECK_THAT(xps.out, Contains("strength         172.369 kPa (172368.925 Pa)") &&
+                          Contains("strength method  ASTM D1621") &&
+                          Contains("strength source  https://studylib.net/doc/18458375"));
+  const CliRun gel = Run({"materials", "show", "silicone Sylgard 184"});
+  CHECK_THAT(gel.out, Contains("strength         does not crush: solid elastomer") &&
+                          Contains("strength source  ASTM definition of an elastomer"));
+  const CliRun paper = Run({"materials", "show", "polystyrene foam 27.6"});
+  CHECK_THAT(paper.out, Contains("strength         unknown: a design with this material cannot "
+                                 "be verified for crushing"));
+  CHECK_THAT(paper.out, !Contains("strength method"));
+
+  const Json json = Json::parse(Run({"materials", "show", "XPS Foamular 250", "--json"}).out);
+  CHECK(json["crush_behaviour"] == "crushes");
+  CHECK(json["compressive_strength_Pa"].get<double>() == Approx(172368.925));
+  CHECK(json["strength_method"].get<std::string>().find("ASTM D1621") != std::string::npos);
+  const Json soft = Json::parse(Run({"materials", "show", "PU foam HR 40/28", "--json"}).out);
+  CHECK(soft["crush_behaviour"] == "does-not-crush");
+  CHECK(soft["compressive_strength_Pa"].is_null());
+  CHECK(soft["strength_method"].is_string());
+  const Json paper_json = Json::parse(Run({"materials", "show", "Park padding 30", "--json"}).out);
+  CHECK(paper_json["crush_behaviour"] == "unknown");
+  CHECK(paper_json["strength_method"].is_null());
+  CHECK(paper_json["strength_source"].is_null());
+}
+
+TEST_CASE("materials find filters by strength and crush behaviour", "[materials][find][strength]") {
+  const Catalog& catalog = Catalog::BuiltIn();
+  const Json strong = Json::parse(Run({"materials", "find", "--strength", "1MPa..", "--json"}).out);
+  CHECK(NamesIn(strong) == std::vector<std::string>{"nylon bumper cover Qolo",
+                                                    "nylon 101 PA66 extruded",
+                                                    "nylon Nycast 6PA cast"});
+  const Json band = Json::parse(
+      Run({"materials", "find", "--strength", "150kPa..300kPa", "--json"}).out);
+  covopt::materials::MaterialFilter filter;
+  filter.compressive_strength_Pa = {150e3, 300e3};
+  CHECK(NamesIn(band) == NamesOf(catalog.Filter(filter)));
+  CHECK(band.size() == 5);
+  for (const Json& m : band) CHECK(m["crush_behaviour"] == "crushes");
+
+  const Json soft = Json::parse(
+      Run({"materials", "find", "--crush", "does-not-crush", "--family", "foam", "--json"}).out);
+  CHECK(soft.size() >= 14);
+  for (const Json& m : soft) CHECK(m["crush_behaviour"] == "does-not-crush");
+  const Json two = Json::parse(
+      Run({"materials", "find", "--crush", "crushes", "--crush", "unknown", "--json"}).out);
+  CHECK(two.size() + Json::parse(Run({"materials", "find", "--crush", "does-not-crush", "--json"}).out).size() ==
+        catalog.size());
+
+  const CliRun table = Run({"materials", "find", "--strength", "1MPa.."});
+  CHECK_THAT(table.out, Contains("3 of " + std::to_string(catalog.size()) +
+                                 " materials match strength 1MPa.."));
+}
+
+TEST_CASE("a bare range end is refused when implausible, as a bare number is",
+          "[materials][find][errors]") {
+  // Issue 21: "--modulus 10..100" read as 10 Pa to 100 Pa and exited 0.
+  const CliRun run = Run({"materials", "find", "--modulus", "10..100"});
+  CHECK(run.exit_code == 2);
+  CHECK(run.out.empty());
+  CHECK(run.err == "covopt materials find: error: --modulus 10: a bare number is in pascals "
+                   "(10 Pa); write 10MPa or 10Pa\n");
+  CheckBadInput({"materials", "find", "--modulus", "..100"}, "--modulus 100: a bare number is in pascals");
+  CheckBadInput({"materials", "find", "--density", "0.02..0.06"},
+                "--density 0.02: a bare number is in kilograms per cubic metre");
+  CheckBadInput({"materials", "find", "--strength", "100..500"},
+                "--strength 100: a bare number is in pascals (100 Pa); write 100kPa or 100Pa");
+  CheckBadInput({"materials", "find", "--strength", "1MPa"},
+                "--strength: expected a range LO..HI, LO.. or ..HI, e.g. 100kPa..1MPa");
+  CheckBadInput({"materials", "find", "--crush", "crush"},
+                "--crush: expected 'crushes', 'does-not-crush' or 'unknown' (got 'crush')");
+  // Plausible bare ends still pass, and a bare 0 needs no unit.
+  CHECK(Run({"materials", "find", "--modulus", "1e6..1e8"}).exit_code == 0);
+  CHECK(Run({"materials", "find", "--modulus", "0..1e8"}).exit_code == 0);
+  CHECK(Run({"materials", "find", "--strength", "1e5..1e6"}).exit_code == 0);
 }

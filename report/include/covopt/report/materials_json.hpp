@@ -14,7 +14,9 @@ namespace covopt::report {
 
 /// One catalog entry as a JSON object: name, family, youngs_modulus_Pa, poisson_ratio (null
 /// if unknown), density_kg_per_m3 [kg/m³] (null if unknown), modulus_basis, source, note
-/// (null if none), defined_at (null if not known).
+/// (null if none), crush_behaviour ("crushes", "does-not-crush" or "unknown"),
+/// compressive_strength_Pa (null unless the material crushes), strength_method and
+/// strength_source (null if none), defined_at (null if not known).
 std::string MaterialJson(const materials::Material& material, int indent = 2);
 
 /// Catalog entries as a JSON array of MaterialJson objects, in the given order.
