@@ -125,6 +125,8 @@ Resolved Resolve(const OptimizeOptions& o) {
 
   namespace specs = covopt::quantity_specs;
   d.allow_full_compression = o.allow_full_compression;
+  d.allow_crushing = o.allow_crushing;
+  d.allow_unknown_strength = o.allow_unknown_strength;
   d.space.max_thickness_m = Parse(o.max_thickness, specs::kCoveringThickness, "--max-thickness", d.space.max_thickness_m);
   d.space.min_modulus_Pa = Parse(o.min_modulus, specs::kCoveringModulus, "--min-modulus", d.space.min_modulus_Pa);
   d.space.max_modulus_Pa = Parse(o.max_modulus, specs::kCoveringModulus, "--max-modulus", d.space.max_modulus_Pa);
@@ -161,6 +163,12 @@ Resolved Resolve(const OptimizeOptions& o) {
             fmt::format("--thickness must be in (0, 1 m] (got '{}'); for no covering use "
                         "'covopt simulate --covering-thickness 0'",
                         *o.thickness));
+    if (o.max_thickness) {
+      throw InputError(fmt::format("--thickness {} and --max-thickness {} conflict: --thickness fixes the thickness "
+                                   "(the least injury there), --max-thickness bounds the search for the thinnest; "
+                                   "give one",
+                                   *o.thickness, *o.max_thickness));
+    }
   }
   if (o.global_algorithm) {
     const std::string& g = *o.global_algorithm;
@@ -196,13 +204,24 @@ std::string Percent(double fraction) { return fmt::format("{:.1f} %", 100.0 * fr
 std::string Mm(double metres) { return fmt::format("{:.2f} mm", metres * 1e3); }
 std::string MPa(double pascals) { return fmt::format("{:.3g} MPa", pascals * 1e-6); }
 
+/// The crush column of a candidate: its ratio, "no crush" or "unknown".
+std::string CrushCell(const DesignScore& s) {
+  switch (s.crush_check) {
+    case optim::CrushCheck::kChecked: return fmt::format("{:.3f}", s.crush_ratio);
+    case optim::CrushCheck::kDoesNotCrush: return "no crush";
+    case optim::CrushCheck::kUnknownStrength: return "unknown";
+    case optim::CrushCheck::kNoMaterial: break;
+  }
+  return "-";
+}
+
 /// Prints the first `rows` candidates (none for 0) and the ν footnote when a shown row needs it.
 void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& candidates, int rows,
-                     bool fixed_thickness) {
+                     bool fixed_thickness, const optim::DesignRule& rule) {
   const int shown = std::min<int>(rows, static_cast<int>(candidates.size()));
   if (shown > 0) {
-    fmt::print(out, "  {:<3} {:<28} {:>9} {:>6} {:>10} {:>11} {:>10} {:>8}\n", "#", "material", "E [MPa]", "ν",
-               "thickness", "laceration", "contusion", "margin");
+    fmt::print(out, "  {:<3} {:<28} {:>9} {:>6} {:>10} {:>7} {:>7} {:>7} {:>8} {:>8}  {}\n", "#", "material",
+               "E [MPa]", "ν", "thickness", "lacer.", "contus.", "compr.", "crush", "margin", "governs");
   }
   bool assumed_shown = false;
   for (int i = 0; i < shown; ++i) {
@@ -212,11 +231,16 @@ void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& can
     const std::string thickness = c.recommended_thickness_m || fixed_thickness
                                       ? Mm(c.score.design.thickness_m)
                                       : fmt::format("> {}", Mm(c.score.design.thickness_m));
-    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>6} {:>10} {:>11.3f} {:>10.3f} {:>8}{}\n", i + 1,
+    const bool unknown_refused = c.score.crush_check == optim::CrushCheck::kUnknownStrength &&
+                                 !rule.crushing_allowed && !rule.unknown_strength_allowed;
+    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>6} {:>10} {:>7.3f} {:>7.3f} {:>7.3f} {:>8} {:>8}  {}{}\n", i + 1,
                c.material.name.substr(0, 28), c.material.youngs_modulus_Pa * 1e-6,
                fmt::format("{:.2f}{}", c.material.poisson_ratio, c.material.poisson_assumed ? "*" : ""),
-               thickness, c.score.laceration_ratio, c.score.contusion_ratio, Percent(c.margin),
-               c.score.peaks.fully_compressed ? "  fully compressed" : "");
+               thickness, c.score.laceration_ratio, c.score.contusion_ratio, c.score.compression_ratio,
+               CrushCell(c.score), Percent(c.margin), optim::ToString(c.score.governing(rule).criterion),
+               unknown_refused                 ? "; strength unknown, not recommended"
+               : c.score.peaks.fully_compressed ? "; fully compressed"
+                                                : "");
     assumed_shown = assumed_shown || c.material.poisson_assumed;
   }
   if (static_cast<int>(candidates.size()) > shown) {
@@ -236,12 +260,58 @@ std::string_view GradientWords(optim::GradientSource source) {
   return "unknown";
 }
 
-/// "the covering is compressed to 94 % of its travel at the peak" and the like.
+/// "the covering uses 93 % of its travel at the peak" and the like. The travel is the
+/// covering's own 0.8 b_c beyond the scalp's (ImpactPeaks::covering_compression_ratio).
 std::string CompressionWords(const DesignScore& s) {
   if (s.bare()) return "";
   if (s.peaks.fully_compressed) return "fully compressed at the peak";
   if (s.compression_ratio > 0.9995) return "at the edge of full compression at the peak";
-  return fmt::format("{:.0f} % of the way to full compression at the peak", 100.0 * s.compression_ratio);
+  return fmt::format("{:.0f} % of the covering's travel used at the peak", 100.0 * s.compression_ratio);
+}
+
+/// "crush ratio 0.41 (σ_c,max 1.2 MPa, strength 3.0 MPa)", "does not crush", "strength unknown".
+std::string CrushWords(const DesignScore& s, const CandidateOutcome& c) {
+  switch (s.crush_check) {
+    case optim::CrushCheck::kChecked:
+      return fmt::format("crush ratio {:.3f} (peak compressive stress {}, compressive strength {})", s.crush_ratio,
+                         MPa(s.peaks.max_compressive_stress_Pa), MPa(c.material.compressive_strength_Pa));
+    case optim::CrushCheck::kDoesNotCrush:
+      return fmt::format("does not crush (peak compressive stress {}; full compression is its limit)",
+                         MPa(s.peaks.max_compressive_stress_Pa));
+    case optim::CrushCheck::kUnknownStrength:
+      return fmt::format("compressive strength unknown: unverified for crushing at {}",
+                         MPa(s.peaks.max_compressive_stress_Pa));
+    case optim::CrushCheck::kNoMaterial: break;
+  }
+  return "";
+}
+
+/// The candidate table as CSV: every candidate, SI units in the header.
+std::string CandidatesCsv(const std::vector<CandidateOutcome>& candidates, const optim::DesignRule& rule) {
+  std::string csv =
+      "rank,material,family,youngs_modulus_Pa,poisson_ratio,poisson_assumed,crush_behaviour,compressive_strength_Pa,"
+      "admissible,thickness_m,min_safe_thickness_m,laceration_ratio,contusion_ratio,compression_ratio,crush_ratio,"
+      "governing_criterion,governing_ratio,margin,max_compressive_stress_Pa,fully_compressed\n";
+  const auto quoted = [](const std::string& text) { return CsvField(text); };
+  const auto number = [](double v) { return std::isfinite(v) ? fmt::format("{}", v) : std::string(); };
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const CandidateOutcome& c = candidates[i];
+    const optim::GoverningRatio g = c.score.governing(rule);
+    const bool crushes = c.material.crush_behaviour == materials::CrushBehaviour::kCrushes;
+    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", i + 1, quoted(c.material.name),
+                       quoted(c.material.family), number(c.material.youngs_modulus_Pa),
+                       number(c.material.poisson_ratio), c.material.poisson_assumed,
+                       materials::ToString(c.material.crush_behaviour),
+                       crushes ? number(c.material.compressive_strength_Pa) : "", c.safe,
+                       number(c.score.design.thickness_m),
+                       c.min_safe_thickness_m ? number(*c.min_safe_thickness_m) : "",
+                       number(c.score.laceration_ratio), number(c.score.contusion_ratio),
+                       number(c.score.compression_ratio),
+                       c.score.crush_check == optim::CrushCheck::kChecked ? number(c.score.crush_ratio) : "",
+                       optim::ToString(g.criterion), number(g.ratio), number(c.margin),
+                       number(c.score.peaks.max_compressive_stress_Pa), c.score.peaks.fully_compressed);
+  }
+  return csv;
 }
 
 /// optimize with scene ranges (docs/model.md §11): the thinnest covering admissible for every
@@ -267,8 +337,8 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
     sampling = ResolveSampling(flags, r.ranges);
     if (o.max_injury_probability) {
       const double p = ParseQuantity(*o.max_injury_probability, quantity_specs::kTolerance, "--max-injury-probability");
-      if (!(p >= 0.0 && p < 1.0)) {
-        throw InputError(fmt::format("--max-injury-probability must be in [0, 1) (got '{}')", *o.max_injury_probability));
+      if (!(p > 0.0 && p < 1.0)) {
+        throw InputError(fmt::format("--max-injury-probability must be in (0, 1) (got '{}')", *o.max_injury_probability));
       }
       if (!sampling) throw InputError("--max-injury-probability needs --samples N (the probability is estimated)");
       max_probability = p;
@@ -280,6 +350,17 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
   }
   const DesignOptions& design = r.request.options;
   const double sf = design.safety_factor;
+  const optim::DesignRule rule = design.rule();
+  Scene nominal = r.request.scene;
+  nominal.covering.thickness_m = 0.0;
+  std::string scene_line = SceneHeadline(nominal);
+  if (const auto at = scene_line.find("no covering"); at != std::string::npos) {
+    scene_line.replace(at, 11, "covering to be designed");
+  }
+  const auto print_scope = [&out, &rule] {
+    fmt::print(out, "\nScope\n");
+    for (const std::string& line : optim::HeadVerdictScope(rule)) fmt::print(out, "  {}\n", line);
+  };
 
   if (max_probability) {
     optim::ProbabilityDesignOptions options;
@@ -298,9 +379,14 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
       out << report::ProbabilityDesignJson(*box, options, result, r.warnings) << '\n';
       return 0;
     }
-    fmt::print(out, "Design for a probability of failing the criterion <= {:g} over {} inputs ({}), {} samples, seed {}\n",
-               *max_probability, box->size(), optim::ToString(result.criterion), options.sampling.samples,
+    fmt::print(out, "Scene      {} (nominal; the ranges below vary)\n", scene_line);
+    fmt::print(out, "Design for a probability of failing the criterion <= {:g} over {} input{}, {} samples, seed {}\n",
+               *max_probability, box->size(), box->size() == 1 ? "" : "s", options.sampling.samples,
                options.sampling.seed);
+    fmt::print(out, "Criterion  {}\n", rule.Describe());
+    fmt::print(out, "Target     met when the upper end of the 95 % (Wilson) interval of P(inadmissible) is <= {:g}: at "
+                    "most {} failing samples of {}\n",
+               *max_probability, result.allowed_failures, options.sampling.samples);
     for (const SceneRange& range : r.ranges) fmt::print(out, "  {:<20} {}  (from {})\n", range.name, range.text, range.source);
     const auto line = [&](const optim::InjuryProbability& p) {
       return fmt::format("P(inadmissible) {:.6f} [{:.6f}, {:.6f}], P(laceration) {:.6f}, P(contusion) {:.6f}",
@@ -312,8 +398,8 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
       const optim::ProbabilityCandidate& c = result.candidates[*result.recommendation];
       fmt::print(out, "Recommended: {} (E {}), {} (thinnest meeting the target {})\n", c.material.name,
                  MPa(c.material.youngs_modulus_Pa), Mm(*c.recommended_thickness_m), Mm(*c.min_thickness_m));
-      fmt::print(out, "  {}\n  sampling error: the 95 % interval is +-{:.6f} around the estimate\n", line(c.at_design),
-                 0.5 * (c.at_design.inadmissible.ci95_high - c.at_design.inadmissible.ci95_low));
+      fmt::print(out, "  {}\n  the 95 % upper bound {:.6f} is <= the target {:g}\n", line(c.at_design),
+                 c.at_design.inadmissible.ci95_high, *max_probability);
     }
     if (result.continuous) {
       fmt::print(out, "Continuous optimum: {}: E_c {}, b_c {}; {}\n",
@@ -334,6 +420,7 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
                  c.at_design.inadmissible.ci95_high);
     }
     fmt::print(out, "\nSearch: {} sampled impacts, {:.2f} s\n", result.sample_evaluations, result.seconds);
+    print_scope();
     for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
     return 0;
   }
@@ -366,8 +453,9 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
     out << report::RobustDesignJson(*box, options, result, probability ? &*probability : nullptr, r.warnings) << '\n';
     return 0;
   }
-  fmt::print(out, "Robust design over {} uncertain inputs ({} criterion, safety factor {:g}):\n", box->size(),
-             optim::ToString(result.criterion), sf);
+  fmt::print(out, "Scene      {} (nominal; the ranges below vary)\n", scene_line);
+  fmt::print(out, "Criterion  {}\n", rule.Describe());
+  fmt::print(out, "Robust design over {} uncertain input{}:\n", box->size(), box->size() == 1 ? "" : "s");
   for (const SceneRange& range : r.ranges) fmt::print(out, "  {:<20} {}  (from {})\n", range.name, range.text, range.source);
   fmt::print(out, "\nVerdict: {}\n", optim::ToString(result.verdict));
   if (result.recommendation) {
@@ -391,17 +479,20 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
   }
   fmt::print(out, "Bare robot over the box:\n");
   PrintWorstCase(out, *box, result.bare_robot, "  ");
-  fmt::print(out, "\nCandidates (each at its worst case over the box):\n  {:<3} {:<28} {:>9} {:>10} {:>11} {:>10} {:>8} {:>7}\n",
-             "#", "material", "E [MPa]", "thickness", "laceration", "contusion", "margin", "rounds");
+  fmt::print(out, "\nCandidates (each at its worst case over the box):\n  {:<3} {:<28} {:>9} {:>10} {:>7} {:>7} {:>7} {:>8} {:>8}  {:<16} {:>6}\n",
+             "#", "material", "E [MPa]", "thickness", "lacer.", "contus.", "compr.", "crush", "margin", "governs",
+             "rounds");
   const int shown = std::min<int>(r.runners_up, static_cast<int>(result.candidates.size()));
   for (int i = 0; i < shown; ++i) {
     const optim::RobustCandidate& c = result.candidates[static_cast<std::size_t>(i)];
-    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>10} {:>11.3f} {:>10.3f} {:>8} {:>7}{}\n", i + 1,
+    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>10} {:>7.3f} {:>7.3f} {:>7.3f} {:>8} {:>8}  {:<16} {:>6}{}\n", i + 1,
                c.outcome.material.name.substr(0, 28), c.outcome.material.youngs_modulus_Pa * 1e-6,
                c.outcome.recommended_thickness_m ? Mm(*c.outcome.recommended_thickness_m)
                                                  : fmt::format("> {}", Mm(c.outcome.score.design.thickness_m)),
-               c.worst_case.laceration_ratio, c.worst_case.contusion_ratio, Percent(c.outcome.margin),
-               c.scenario_rounds, c.unconfirmed ? "  unconfirmed" : "");
+               c.worst_case.laceration_ratio, c.worst_case.contusion_ratio, c.worst_case.compression_ratio,
+               CrushCell(c.outcome.score), Percent(c.outcome.margin),
+               optim::ToString(c.outcome.score.governing(rule).criterion), c.scenario_rounds,
+               c.unconfirmed ? "  unconfirmed" : "");
   }
   if (static_cast<int>(result.candidates.size()) > shown) {
     fmt::print(out, "  ... {} more (--top N, or --json for all)\n", result.candidates.size() - static_cast<std::size_t>(shown));
@@ -411,6 +502,7 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
     PrintInjuryProbability(out, *probability, "  ");
   }
   fmt::print(out, "\nSearch: {} exact-path evaluations, {:.1f} ms\n", result.evaluations, result.seconds * 1e3);
+  print_scope();
   for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
   return 0;
 }
@@ -447,6 +539,15 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
                 "the paper's criterion: a covering fully compressed at the peak may count as safe "
                 "(default: it may not, the robot must never reach bone through it)")
       ->group("Design");
+  sub->add_flag("--allow-crushing", options.allow_crushing,
+                "a sacrificial liner: a material may be recommended although its peak compressive stress times the "
+                "safety factor exceeds its compressive strength (default: it may not; it would crush at the first "
+                "impact)")
+      ->group("Design");
+  sub->add_flag("--allow-unknown-strength", options.allow_unknown_strength,
+                "materials whose compressive strength is unknown may be recommended, each with a warning (default: "
+                "they are not, a design with them is unverified for crushing)")
+      ->group("Design");
   sub->add_option("--laceration-limit", options.laceration_limit,
                   "tensile stress that lacerates the scalp (default 1MPa)")
       ->type_name("STRESS")->group("Design");
@@ -476,11 +577,15 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
   AddUncertaintyOptions(*sub, options.uncertainty, false);
   sub->add_option("--max-injury-probability", options.max_injury_probability,
                   "with scene ranges and --samples: the thinnest covering whose probability of failing the criterion "
-                  "is at most P, in [0, 1) (--seed and --threads set the sampling)")
+                  "is shown to be at most P: the upper end of its 95 % interval, not just the estimate, must be <= P; "
+                  "P in (0, 1) (--seed and --threads set the sampling)")
       ->type_name("P")
       ->group("Uncertainty");
   sub->add_option("--top", options.runners_up, "rows of the candidate table (default 8)")->type_name("N")->group("Output");
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the report")->group("Output");
+  sub->add_option("--csv", options.csv, "write every candidate to FILE as CSV (SI units in the header)")
+      ->type_name("FILE")
+      ->group("Output");
   return sub;
 }
 
@@ -511,10 +616,18 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     return errors.BadInput(e.what());
   }
   if (!result.ok()) return errors.Failed(result.message);
+  if (options.csv) {
+    try {
+      WriteFileAtomically(*options.csv, CandidatesCsv(result.candidates, result.rule));
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
   if (options.json) {
     out << report::DesignJson(r.request, result, r.warnings) << '\n';  // input's warnings, then the answer's
     return 0;
   }
+  if (options.csv) fmt::print(out, "Wrote {} ({} candidates)\n\n", *options.csv, result.candidates.size());
 
   const std::string& headline = result.message;
   const std::vector<CandidateOutcome>& candidates = result.candidates;
@@ -545,21 +658,23 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                     : std::string(),
              r.request.thickness_m ? fmt::format("; thickness fixed at {}", Mm(*r.request.thickness_m))
                            : fmt::format("; thickness up to {}", Mm(r.request.options.space.max_thickness_m)));
-  fmt::print(out, "Criterion  {}\n",
-             criterion == optim::DesignCriterion::kNoFullCompression
-                 ? "safe, and the covering not fully compressed at the peak (the robot never reaches bone "
-                   "through it); --allow-full-compression for the paper's"
-                 : "the paper's: safe (both ratios within the limits), even if the covering is fully compressed "
-                   "at the peak");
+  const optim::DesignRule& rule = result.rule;
+  fmt::print(out, "Criterion  {}{}\n", rule.Describe(),
+             criterion == optim::DesignCriterion::kNoFullCompression && !rule.crushing_allowed
+                 ? " (--allow-full-compression for the paper's criterion, --allow-crushing for a sacrificial liner)"
+                 : "");
   fmt::print(out, "\n{}\n", headline);
   if (recommended) {
     const CandidateOutcome& c = *recommended;
+    const optim::GoverningRatio governing = c.score.governing(rule);
     fmt::print(out, "  {} ({}), E {}, ν {:.2f}{}\n", c.material.name, c.material.family,
                MPa(c.material.youngs_modulus_Pa), c.material.poisson_ratio,
                c.material.poisson_assumed ? " (ν unknown, 0.25 assumed)" : "");
-    fmt::print(out, "  laceration ratio {:.3f}, contusion ratio {:.3f}: margin {} of the {}; {}\n",
-               c.score.laceration_ratio, c.score.contusion_ratio, Percent(c.margin),
-               sf > 1 ? "derated limit" : "limit", CompressionWords(c.score));
+    fmt::print(out, "  laceration ratio {:.3f}, contusion ratio {:.3f}, compression ratio {:.3f}; {}\n",
+               c.score.laceration_ratio, c.score.contusion_ratio, c.score.compression_ratio,
+               CrushWords(c.score, c));
+    fmt::print(out, "  governed by {} (ratio {:.3f}): margin {} of the {}; {}\n", optim::ToString(governing.criterion),
+               governing.ratio, Percent(c.margin), sf > 1 ? "derated limit" : "limit", CompressionWords(c.score));
     if (c.min_safe_thickness_m && !r.request.thickness_m) {
       if (c.stock_thickness_beyond_max_m) {
         fmt::print(out,
@@ -585,6 +700,11 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                r.request.thickness_m ? "best   " : "optimum", MPa(best.design.youngs_modulus_Pa), Mm(best.design.thickness_m),
                best.poisson_ratio, best.laceration_ratio, best.contusion_ratio, CompressionWords(best),
                best.admissible(sf, criterion) ? "" : " (not admissible)");
+    if (!rule.crushing_allowed) {
+      fmt::print(out, "                    needs a material of compressive strength >= {} (peak compressive stress {} "
+                      "x safety factor {:g}), or one that does not crush\n",
+                 MPa(best.required_strength_Pa(sf)), MPa(best.peaks.max_compressive_stress_Pa), sf);
+    }
     if (recommended && !r.request.thickness_m && continuous.feasible) {
       const CandidateOutcome& c = *recommended;
       const double extra = *c.recommended_thickness_m - best.design.thickness_m;
@@ -598,7 +718,10 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
              : r.request.thickness_m    ? "admissible first, then by margin at this thickness"
                                 : "admissible first, by stock thickness then margin; then the rest by margin at the "
                                   "maximum thickness");
-  PrintCandidates(out, candidates, r.runners_up, r.request.thickness_m.has_value());
+  PrintCandidates(out, candidates, r.runners_up, r.request.thickness_m.has_value(), rule);
+  fmt::print(out, "  ratios: laceration, contusion, compression (the covering's own travel used, 0.8 b_c beyond the "
+                  "scalp's 0.8 b_s), crush (peak compressive stress / compressive strength); margin = 1 - SF x the "
+                  "governing one\n");
   fmt::print(out, "\nSolver  global {}: {} ({} evaluations); bracket: {} ({} evaluations); local {}; {} {} "
                   "evaluations, {:.1f} ms\n",
              global.backend, optim::ToString(global.termination), global.objective_evaluations,
@@ -611,6 +734,8 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   fmt::print(out, "        kept: {}\n", continuous.source);
   fmt::print(out, "Oracle  {}, {} gradients; {}\n", result.oracle.Name(), GradientWords(result.oracle.gradient),
              result.oracle.reason);
+  fmt::print(out, "\nScope\n");
+  for (const std::string& line : result.scope) fmt::print(out, "  {}\n", line);
   for (const std::string& w : r.warnings) fmt::print(out, "Warning: {}\n", w);         // about the input
   for (const std::string& w : result.warnings) fmt::print(out, "Warning: {}\n", w);    // about the answer
   return 0;

@@ -43,6 +43,11 @@ struct OptimizeOptions {
   /// --allow-full-compression: the paper's criterion (safety only) instead of the default
   /// "no-full-compression" (safe and the covering not fully compressed at the peak).
   bool allow_full_compression = false;
+  /// --allow-crushing: a sacrificial liner; the crush criterion is reported, not applied.
+  bool allow_crushing = false;
+  /// --allow-unknown-strength: materials of unknown compressive strength may be recommended,
+  /// each with a warning.
+  bool allow_unknown_strength = false;
   std::optional<std::string> thickness;         ///< --thickness: problem (b)
   std::optional<std::string> covering_poisson;  ///< ν of the continuous design (0.25)
   std::optional<std::string> thickness_step;    ///< --thickness-step (default 0.5 mm)
@@ -61,6 +66,8 @@ struct OptimizeOptions {
   /// probability of failing the criterion is <= P (FindProbabilityDesign).
   std::optional<std::string> max_injury_probability;
   bool json = false;
+  /// --csv FILE: the candidate table as CSV (every candidate, SI units in the header).
+  std::optional<std::string> csv;
 };
 
 CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options);

@@ -78,6 +78,10 @@ inline constexpr std::string_view kHistoryCsvExtendedColumns =
 /// (model.TensileFromCompressive), the stress the laceration limit judges.
 std::string HistoryCsv(const ImpactModel& model, const std::vector<HistorySample>& history);
 
+/// One CSV field: as it is, or, when it holds a comma, a quote or a line break, in double
+/// quotes with inner quotes doubled (RFC 4180).
+std::string CsvField(std::string_view text);
+
 /// Writes `content` to `path` atomically: a temporary file in the same directory, flushed,
 /// then renamed over `path`. A reader sees the old file or the whole new one.
 /// @throws OutputError naming the file and the system's reason.

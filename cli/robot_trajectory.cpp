@@ -211,6 +211,7 @@ TrajectoryRun Resolve(const RobotModelOptions& model, const RobotTrajectoryOptio
   run.limit.limits = run.scene.limits;
   run.limit.safety_factor = run.scene.safety_factor;
   run.limit.allow_full_compression = options.allow_full_compression;
+  run.limit.covering_compressive_strength_Pa = CrushCheckOf(run.scene).compressive_strength_Pa;
   if (options.csv_file && options.csv_file->empty()) throw InputError("--csv: empty file name");
   if (json && options.csv_file && *options.csv_file == "-") {
     throw InputError("--json and --csv - both print to stdout; give --csv a file name");
@@ -229,6 +230,7 @@ TrajectoryRun Resolve(const RobotModelOptions& model, const RobotTrajectoryOptio
     }
   }
   for (std::string& w : InputWarnings(run.scene)) run.input_warnings.push_back(std::move(w));
+  for (std::string& w : CrushCheckOf(run.scene).notes) run.input_warnings.push_back(std::move(w));
 
   const RobotModelInput robot_input = ResolveChainAndPoint(model);
   const robot::KinematicChain& chain = robot_input.chain;
@@ -347,7 +349,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
     if (run.scene.covering_material && scene.covering.thickness_m > 0.0) {
       fmt::print(out, "Material   {}\n", run.scene.covering_material->name);
     }
-    PrintLimitsAndCriterion(out, run.limit);
+    PrintLimitsAndCriterion(out, run.limit, run.scene);
     fmt::print(out, "Verdict    {}\n", check.message);
     if (check.worst_sample) {
       const optim::SampleVerdict& w = check.samples[*check.worst_sample];
@@ -359,6 +361,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
     }
     fmt::print(out, "\n");
     PrintSamples(out, check);
+    PrintHeadScope(out, run.limit);
     std::vector<std::string> warnings = run.input_warnings;
     warnings.insert(warnings.end(), run.motion.warnings.begin(), run.motion.warnings.end());
     warnings.insert(warnings.end(), check.warnings.begin(), check.warnings.end());

@@ -146,6 +146,16 @@ InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const SimulationPlan& p
 /// states).
 std::vector<std::string> InputWarnings(const SimulationPlan& plan);
 
+/// The crush check a limit search can make on a plan's covering (docs/model.md §12): the
+/// catalog material's compressive strength when it crushes [Pa] (0 otherwise), and what the
+/// reader must know when none is checked: a covering assumed because none was given, one
+/// given by its modulus (no material, no strength), or a material of unknown strength.
+struct CoveringCrushCheck {
+  double compressive_strength_Pa = 0.0;
+  std::vector<std::string> notes;
+};
+CoveringCrushCheck CrushCheckOf(const SimulationPlan& plan);
+
 /// Adds to a library message that names scene fields ("robot.mass must be ...") where the
 /// user set them: "... (robot.mass from --robot-mass '-10kg')".
 std::string AttributeError(const std::string& message, const SimulationPlan& plan);

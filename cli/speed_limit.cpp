@@ -14,6 +14,7 @@
 #include "output.hpp"
 #include "sweep.hpp"
 #include "uncertainty_options.hpp"
+#include "covopt/optim/design.hpp"
 #include "covopt/optim/robust_design.hpp"
 #include "covopt/report/robust_json.hpp"
 #include <nlohmann/json.hpp>
@@ -77,15 +78,17 @@ std::vector<SpeedLimitRow> ComputeRows(const SpeedLimitPlan& plan, std::string* 
         row.material = covering.covering_material->name;
       }
       Scene scene = covering.scene;
+      optim::SpeedLimitOptions options = plan.options;
+      options.covering_compressive_strength_Pa = CrushCheckOf(covering).compressive_strength_Pa;
       try {
         if (plan.quantity == SpeedLimitQuantity::kSpeed) {
           scene.robot.mass_kg = value;
           row.robot_mass_kg = value;
-          row.speed_limit = optim::MaxSafeSpeed(scene, plan.options);
+          row.speed_limit = optim::MaxSafeSpeed(scene, options);
         } else {
           scene.robot.speed_m_per_s = value;
           row.speed_m_per_s = value;
-          row.mass_limit = optim::MaxSafeMass(scene, plan.options);
+          row.mass_limit = optim::MaxSafeMass(scene, options);
         }
       } catch (const std::invalid_argument& e) {
         *bad_input = AttributeError(e.what(), covering);
@@ -130,15 +133,7 @@ void PrintRows(std::ostream& out, const SpeedLimitPlan& plan, const std::vector<
 
 std::string CsvText(const SpeedLimitPlan& plan, const std::vector<SpeedLimitRow>& rows) {
   std::string text;
-  const auto append_cell = [&](const std::string& cell) {
-    if (cell.find_first_of(",\"\n") == std::string::npos) {
-      text += cell;
-      return;
-    }
-    text += '"';
-    for (const char c : cell) text += c == '"' ? std::string("\"\"") : std::string(1, c);
-    text += '"';
-  };
+  const auto append_cell = [&](const std::string& cell) { text += CsvField(cell); };
   bool first = true;
   for (const std::string_view column : report::SpeedLimitColumns(plan.quantity)) {
     text += first ? "" : ",";
@@ -241,18 +236,24 @@ std::string SafetyMapScript(const SpeedLimitPlan& plan, const std::string& outpu
 
 }  // namespace
 
-void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& options) {
+void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& options,
+                             const SimulationPlan& covering) {
   const double sf = options.safety_factor;
   fmt::print(out, "Limits     laceration {:g} MPa, contusion {:g} J/cm², safety factor {:g}{}\n",
              options.limits.laceration_tensile_stress_Pa * 1e-6,
              options.limits.contusion_energy_density_J_per_m2 * 1e-4, sf,
              sf > 1 ? fmt::format(": ratios <= {:.4g}", 1.0 / sf) : std::string());
-  fmt::print(out, "Criterion  {}\n",
-             options.criterion() == optim::DesignCriterion::kNoFullCompression
-                 ? "safe, and the covering not fully compressed at the peak (the robot never reaches bone "
-                   "through it); --allow-full-compression for the paper's"
-                 : "the paper's: safe (both ratios within the limits), even if the covering is fully "
-                   "compressed at the peak");
+  optim::SpeedLimitOptions judged = options;
+  judged.covering_compressive_strength_Pa = CrushCheckOf(covering).compressive_strength_Pa;
+  const optim::DesignRule rule = judged.rule();
+  const bool unchecked = covering.scene.covering.thickness_m > 0.0 && !rule.crushing_allowed &&
+                         !(judged.covering_compressive_strength_Pa > 0.0);
+  fmt::print(out, "Criterion  {}{}\n", rule.Describe(), unchecked ? " (this covering has none known: see the warnings)" : "");
+}
+
+void PrintHeadScope(std::ostream& out, const optim::SpeedLimitOptions& options) {
+  fmt::print(out, "\nScope\n");
+  for (const std::string& line : optim::HeadVerdictScope(options.rule())) fmt::print(out, "  {}\n", line);
 }
 
 CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
@@ -273,6 +274,9 @@ CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
                   "the ratios must stay <= 1/factor, 1-100 (default 1)")
       ->type_name("RATIO")
       ->group("Limits");
+  sub->add_flag("--allow-crushing", options.allow_crushing,
+                "a sacrificial liner: the material's crushing does not limit the speed (default: a --material "
+                "of known strength must not crush, SF x peak compressive stress <= its strength)");
   sub->add_flag("--allow-full-compression", options.allow_full_compression,
                 "the paper's criterion: a covering fully compressed at the peak may count as safe (default: "
                 "it may not)")
@@ -358,6 +362,7 @@ SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
   plan.options.limits = first.limits;
   plan.options.safety_factor = first.safety_factor;
   plan.options.allow_full_compression = options.allow_full_compression;
+  plan.options.allow_crushing = options.allow_crushing;
   // The coverings differ only in their covering: the first scene decides what the oracle may be.
   plan.options.oracle = ResolveOracleFlags(options.oracle, first.scene, "search", plan.warnings);
   plan.json = options.json;
@@ -494,7 +499,9 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
 
   std::vector<std::string> input_warnings;
   for (const SimulationPlan& covering : plan.coverings) {
-    for (std::string& w : InputWarnings(covering)) {
+    std::vector<std::string> warnings = InputWarnings(covering);
+    for (std::string& note : CrushCheckOf(covering).notes) warnings.push_back(std::move(note));
+    for (std::string& w : warnings) {
       if (std::find(input_warnings.begin(), input_warnings.end(), w) == input_warnings.end()) {
         input_warnings.push_back(std::move(w));
       }
@@ -526,7 +533,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
     if (plan.coverings.size() == 1 && plan.coverings.front().covering_material && scene.covering.thickness_m > 0.0) {
       fmt::print(out, "Material   {}\n", plan.coverings.front().covering_material->name);
     }
-    PrintLimitsAndCriterion(out, plan.options);
+    PrintLimitsAndCriterion(out, plan.options, plan.coverings.front());
     fmt::print(out, "Search     {}; the ratios are those of the impact at the limit\n\n",
                by_speed ? fmt::format("speeds up to {:g} m/s (the model's ceiling)", plan.options.max_speed_m_per_s)
                         : fmt::format("reflected masses up to {:g} kg (the model's ceiling){}", plan.options.max_mass_kg,
@@ -542,6 +549,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
       }
     }
     PrintRows(out, plan, rows);
+    PrintHeadScope(out, plan.options);
     for (const std::string& w : input_warnings) fmt::print(out, "Warning: {}\n", w);
     for (const std::string& w : report::SpeedLimitRowWarnings(plan.quantity, rows)) {
       fmt::print(out, "Warning: {}\n", w);

@@ -46,6 +46,8 @@ struct SpeedLimitCommandOptions {
   std::optional<std::string> solve_for;
   /// --allow-full-compression: the paper's criterion (the ratios only).
   bool allow_full_compression = false;
+  /// --allow-crushing: a sacrificial liner; its crush ratio does not limit.
+  bool allow_crushing = false;
   /// --oracle, --method, --rtol: which path judges the impacts (as `covopt optimize`).
   OracleFlags oracle;
   bool json = false;                      ///< --json
@@ -80,7 +82,11 @@ CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options);
 SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options);
 
 /// Prints the table's "Limits" and "Criterion" lines (speed-limit and robot --trajectory).
-void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& options);
+/// The Limits and Criterion lines of a limit search on `covering` (its crush check).
+void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& options,
+                             const SimulationPlan& covering);
+/// The Scope block: what the verdicts cover (optim::HeadVerdictScope).
+void PrintHeadScope(std::ostream& out, const optim::SpeedLimitOptions& options);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err);

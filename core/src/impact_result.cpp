@@ -148,6 +148,10 @@ ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
   peaks.scalp_fully_compressed = segment > 0;
   peaks.fully_compressed = peaks.phase_at_max == Phase::kRobotOnBone;
   peaks.full_compression_penetration_m = model.segment(model.segment_count() - 1).start_m;
+  peaks.covering_travel_start_m = model.has_covering() ? 0.0 : peaks.full_compression_penetration_m;
+  for (std::size_t j = 0; j < model.segment_count(); ++j) {
+    if (model.segment(j).phase == Phase::kCoveringOnBone) peaks.covering_travel_start_m = model.segment(j).start_m;
+  }
   return peaks;
 }
 
@@ -230,9 +234,10 @@ std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const Impac
     if (delta_max >= seg.end_m - kNearFullCompressionShare * travel) {
       warn(ValidityCode::kNearFullCompression,
            "the covering is within 5 % of full compression at the peak: δ_max " +
-               Millimetres(delta_max) + ", full compression at " + Millimetres(seg.end_m) +
-               " (" + Percent((delta_max - seg.start_m) / travel) +
-               " of phase 2's travel used); a little more impact energy bottoms it out and "
+               Millimetres(delta_max) + ", full compression at δ = " + Millimetres(seg.end_m) +
+               " (the scalp's travel " + Millimetres(seg.start_m) + " plus the covering's " +
+               Millimetres(travel) + "; " + Percent((delta_max - seg.start_m) / travel) +
+               " of the covering's travel used); a little more impact energy bottoms it out and "
                "the robot reaches the bone");
     }
   }

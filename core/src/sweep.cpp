@@ -119,9 +119,10 @@ void SolveRow(const SweepSpec& spec, const SweepOptions& options, const SceneFie
       verdict->safe = spec.safety_factor * verdict->ratio <= 1.0;
     }
     row.worst_ratio = std::max(row.assessment.laceration.ratio, row.assessment.contusion.ratio);
-    row.compression_ratio = result.peaks.max_penetration_m /
-                            result.peaks.full_compression_penetration_m;
-    row.admissible = row.assessment.safe() && !(row.covered && result.peaks.fully_compressed);
+    row.compression_ratio = result.peaks.covering_compression_ratio();
+    row.admissible = row.assessment.safe() &&
+                     !(row.covered && (result.peaks.fully_compressed ||
+                                       spec.safety_factor * row.compression_ratio > 1.0));
     row.warnings = std::move(result.coded_warnings);
   } catch (const std::invalid_argument& e) {
     row.valid = false;

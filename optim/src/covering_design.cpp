@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <optional>
 #include <exception>
 #include <memory>
@@ -25,6 +26,9 @@ namespace {
 
 /// The continuous optimum's thickness is bisected to this [m].
 constexpr double kThicknessTolerance_m = 1e-11;
+/// The covering's travel ratio in the logarithmic constraint is at least this: it is 0 while
+/// δ_max stays within the scalp's travel, far inside the constraint, where it is flat.
+constexpr double kLeastTravelRatio = 1e-12;
 
 using internal::Number;
 using internal::Require;
@@ -49,9 +53,19 @@ void ValidateOptions(const DesignOptions& o) {
           "thickness step must be >= 0 m (got " + Number(o.thickness_step_m) + ")");
 }
 
+void ValidateCandidates(std::span<const CandidateMaterial> materials) {
+  for (const CandidateMaterial& m : materials) {
+    if (m.crush_behaviour != materials::CrushBehaviour::kCrushes) continue;
+    Require(std::isfinite(m.compressive_strength_Pa) && m.compressive_strength_Pa > 0.0,
+            "material '" + m.name + "': compressive strength must be finite and > 0 Pa for a material that crushes (got " +
+                Number(m.compressive_strength_Pa) + ")");
+  }
+}
+
 /// Problem (a): x = (log10 E_c, b_c / b_max), both of order one (Ipopt is sensitive to
 /// scaling: with b_c in metres it reported local infeasibility from feasible basins);
-/// min b_c/b_max s.t. ln(SF r_i) <= 0 and, under the default criterion, ln(δ_max/t2) <= 0.
+/// min b_c/b_max s.t. ln(SF r_i) <= 0 and, under the default criterion, ln(SF r_δ) <= 0 with
+/// r_δ the covering's travel ratio (DesignScore::compression_ratio).
 class ThinnestProblem : public Problem {
  public:
   ThinnestProblem(const DesignOracle& oracle, const DesignOptions& o)
@@ -95,7 +109,8 @@ class ThinnestProblem : public Problem {
     c[0] = std::log(o_.safety_factor * score.laceration_ratio);
     c[1] = std::log(o_.safety_factor * score.contusion_ratio);
     const bool compression = inequality_count() == 3;
-    if (compression) c[2] = std::log(score.compression_ratio);
+    const double travel = std::max(score.compression_ratio, kLeastTravelRatio);
+    if (compression) c[2] = std::log(o_.safety_factor * travel);
     if (!jac.empty()) {
       const double db_dx = o_.space.max_thickness_m;
       jac[0] = gradient.laceration[0] / score.laceration_ratio;
@@ -103,8 +118,8 @@ class ThinnestProblem : public Problem {
       jac[2] = gradient.contusion[0] / score.contusion_ratio;
       jac[3] = gradient.contusion[1] * db_dx / score.contusion_ratio;
       if (compression) {
-        jac[4] = gradient.compression[0] / score.compression_ratio;
-        jac[5] = gradient.compression[1] * db_dx / score.compression_ratio;
+        jac[4] = gradient.compression[0] / travel;
+        jac[5] = gradient.compression[1] * db_dx / travel;
       }
     }
     return true;
@@ -228,19 +243,21 @@ class ModulusSearch {
     ModulusChoice choice;
     double lower = lo_;
     if (o_.criterion() == DesignCriterion::kNoFullCompression) {
+      const double sf = o_.safety_factor;
       const DesignScore stiffest = At(hi_, thickness_m);
-      if (stiffest.peaks.fully_compressed) {
+      if (stiffest.compression_exceeded(sf)) {
         choice.admissible_modulus_exists = false;
         choice.lowest_admissible_log_modulus = hi_;
         choice.score = stiffest;
         return choice;
       }
-      if (At(lo_, thickness_m).peaks.fully_compressed) {
-        // δ_max falls as E_c grows (F rises with E_c at every δ): bisect the boundary.
+      if (At(lo_, thickness_m).compression_exceeded(sf)) {
+        // δ_max falls as E_c grows (F rises with E_c at every δ): bisect the boundary of the
+        // travel the safety factor leaves.
         double compressed = lo_, free = hi_;
         while (free - compressed > kLogModulusTolerance) {
           const double mid = 0.5 * (compressed + free);
-          (At(mid, thickness_m).peaks.fully_compressed ? compressed : free) = mid;
+          (At(mid, thickness_m).compression_exceeded(sf) ? compressed : free) = mid;
         }
         lower = free;
       }
@@ -380,13 +397,14 @@ double StockThickness(double steps, double step_m) {
 /// bisection; then rounded up to stock.
 CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMaterial& material,
                               const DesignOptions& o) {
-  const double sf = o.safety_factor;
-  const DesignCriterion criterion = o.criterion();
+  const DesignRule rule = o.rule();
   const DesignSpace& space = o.space;
   auto score_at = [&](double b) {
-    return oracle.ScoreMaterial({material.youngs_modulus_Pa, b}, material.poisson_ratio);
+    DesignScore score = oracle.ScoreMaterial({material.youngs_modulus_Pa, b}, material.poisson_ratio);
+    CheckCrush(material, score);
+    return score;
   };
-  auto admissible_at = [&](double b) { return score_at(b).admissible(sf, criterion); };
+  auto admissible_at = [&](double b) { return score_at(b).admissible(rule); };
   CandidateOutcome outcome;
   outcome.material = material;
   const int points = o.thickness_scan_points;
@@ -404,7 +422,7 @@ CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMateria
   }
   if (!found) {
     outcome.score = score_at(space.max_thickness_m);
-    outcome.margin = outcome.score.margin(sf);
+    outcome.margin = outcome.score.margin(rule);
     return outcome;
   }
   if (inadmissible > 0.0) {
@@ -426,7 +444,7 @@ CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMateria
         break;
       }
       DesignScore score = score_at(stock);
-      if (score.admissible(sf, criterion)) {
+      if (score.admissible(rule)) {
         at_stock = score;
         break;
       }
@@ -434,8 +452,8 @@ CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMateria
   }
   outcome.score = at_stock ? *at_stock : score_at(admissible);
   outcome.recommended_thickness_m = outcome.score.design.thickness_m;
-  outcome.safe = outcome.score.admissible(sf, criterion);
-  outcome.margin = outcome.score.margin(sf);
+  outcome.safe = outcome.score.admissible(rule);
+  outcome.margin = outcome.score.margin(rule);
   return outcome;
 }
 
@@ -474,6 +492,19 @@ std::vector<CandidateOutcome> SnapMaterials(const DesignOracle& oracle,
 }
 
 }  // namespace
+
+void CheckCrush(const CandidateMaterial& material, DesignScore& score) noexcept {
+  score.crush_ratio = 0.0;
+  switch (material.crush_behaviour) {
+    case materials::CrushBehaviour::kCrushes:
+      score.crush_check = CrushCheck::kChecked;
+      score.crush_ratio = score.failed ? std::numeric_limits<double>::infinity()
+                                       : score.peaks.max_compressive_stress_Pa / material.compressive_strength_Pa;
+      return;
+    case materials::CrushBehaviour::kDoesNotCrush: score.crush_check = CrushCheck::kDoesNotCrush; return;
+    case materials::CrushBehaviour::kUnknown: score.crush_check = CrushCheck::kUnknownStrength; return;
+  }
+}
 
 const char* ToString(DesignVerdict verdict) noexcept {
   switch (verdict) {
@@ -514,6 +545,7 @@ ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
                                               const DesignOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   ValidateOptions(options);
+  ValidateCandidates(materials);
   const std::unique_ptr<DesignOracle> owned_oracle =
       MakeOracle(scene, options.covering_poisson_ratio, options.limits, options.oracle);
   const DesignOracle& oracle = *owned_oracle;
@@ -629,6 +661,7 @@ LeastInjuryAtThickness MinimizeInjuryAtThickness(const Scene& scene, double thic
                                                  const DesignOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   ValidateOptions(options);
+  ValidateCandidates(materials);
   Require(std::isfinite(thickness_m) && thickness_m > 0.0 && thickness_m <= 1.0,
           "thickness must be in (0, 1] m (got " + Number(thickness_m) + ")");
   const std::unique_ptr<DesignOracle> owned_oracle =
@@ -658,7 +691,7 @@ LeastInjuryAtThickness MinimizeInjuryAtThickness(const Scene& scene, double thic
   // A point from another stage must stay on the same side of the compression boundary.
   auto compression_ok = [&](const DesignScore& score) {
     return criterion == DesignCriterion::kPaper || out.continuous.every_modulus_fully_compressed ||
-           !score.peaks.fully_compressed;
+           !score.compression_exceeded(sf);
   };
 
   // NLopt's global search on the same interval; its point is kept only if it is better.
@@ -695,12 +728,14 @@ LeastInjuryAtThickness MinimizeInjuryAtThickness(const Scene& scene, double thic
   out.continuous.score = best;
   out.continuous.feasible = best.admissible(sf, criterion);
 
+  const DesignRule rule = options.rule();
   for (const CandidateMaterial& material : materials) {
     CandidateOutcome outcome;
     outcome.material = material;
     outcome.score = oracle.ScoreMaterial({material.youngs_modulus_Pa, thickness_m}, material.poisson_ratio);
-    outcome.safe = outcome.score.admissible(sf, criterion);
-    outcome.margin = outcome.score.margin(sf);
+    CheckCrush(material, outcome.score);
+    outcome.safe = outcome.score.admissible(rule);
+    outcome.margin = outcome.score.margin(rule);
     if (outcome.safe) outcome.recommended_thickness_m = thickness_m;
     out.candidates.push_back(outcome);
   }

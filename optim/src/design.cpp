@@ -28,6 +28,25 @@ std::string Format(const char* format, ...) {
 std::string Mm(double metres) { return Format("%.2f mm", metres * 1e3); }
 std::string MPa(double pascals) { return Format("%.3g MPa", pascals * 1e-6); }
 
+/// Why the catalog has no admissible material, when crushing or an unknown strength is part of
+/// it: " N materials would crush; M have an unknown strength (--allow-unknown-strength)."
+std::string WhyNoMaterial(const DesignResult& r) {
+  if (r.rule.crushing_allowed) return "";
+  int crush = 0, unknown = 0;
+  for (const CandidateOutcome& c : r.candidates) {
+    if (c.score.crush_check == CrushCheck::kUnknownStrength && !r.rule.unknown_strength_allowed) ++unknown;
+    if (c.score.governing(r.rule).criterion == LimitingCriterion::kCrush) ++crush;
+  }
+  std::string why;
+  if (crush > 0) why += Format(" %d material%s would crush where %s thick enough.", crush, crush == 1 ? "" : "s",
+                               crush == 1 ? "it is" : "they are");
+  if (unknown > 0) {
+    why += Format(" %d of unknown strength %s not considered (--allow-unknown-strength admits them, unverified).",
+                  unknown, unknown == 1 ? "is" : "are");
+  }
+  return why;
+}
+
 /// The sentence that answers the request.
 std::string Headline(const DesignResult& r, double max_thickness) {
   const DesignScore& best = r.continuous.score;
@@ -39,11 +58,14 @@ std::string Headline(const DesignResult& r, double max_thickness) {
       return "Recommended: " + c.material.name + " at " + Mm(*c.recommended_thickness_m) + ".";
     }
     case DesignVerdict::kNoSafeMaterial:
-      return r.thickness_m ? "No catalog material is admissible at " + Mm(*r.thickness_m) + "; a covering of " +
-                                 MPa(best.design.youngs_modulus_Pa) + " would be."
-                           : "No catalog material is admissible within " + Mm(max_thickness) +
-                                 "; the continuous optimum (" + MPa(best.design.youngs_modulus_Pa) + ", " +
-                                 Mm(best.design.thickness_m) + ") would be.";
+      return (r.thickness_m ? "No catalog material is admissible at " + Mm(*r.thickness_m) + "; a covering of " +
+                                  MPa(best.design.youngs_modulus_Pa) + " would be"
+                            : "No catalog material is admissible within " + Mm(max_thickness) +
+                                  "; the continuous optimum (" + MPa(best.design.youngs_modulus_Pa) + ", " +
+                                  Mm(best.design.thickness_m) + ") would be") +
+             (r.rule.crushing_allowed ? "" : ", in a material whose compressive strength is at least " +
+                                                 MPa(best.required_strength_Pa(r.rule.safety_factor))) +
+             "." + WhyNoMaterial(r);
     case DesignVerdict::kNothingSafe:
       break;
   }
@@ -92,6 +114,18 @@ std::vector<std::string> Warnings(const DesignRequest& request, const DesignResu
           "the recommended covering is fully compressed at the peak (the robot reaches the bone through it): "
           "its margin rests on the stiff robot-bone phase of the model; without --allow-full-compression it "
           "would not be admissible");
+    }
+    if (c.score.crush_check == CrushCheck::kUnknownStrength) {
+      warnings.push_back("the recommended material's compressive strength is unknown: the design is unverified for "
+                         "crushing; check that " + c.material.name + " stays elastic up to " +
+                         MPa(c.score.required_strength_Pa(request.options.safety_factor)) +
+                         " (its peak compressive stress times the safety factor)");
+    } else if (c.score.crush_check == CrushCheck::kChecked && request.options.allow_crushing &&
+               request.options.safety_factor * c.score.crush_ratio > 1.0) {
+      warnings.push_back(Format("the recommended covering crushes: its peak compressive stress is %.3g times its "
+                                "compressive strength (with the safety factor); a sacrificial liner protects once "
+                                "and must be replaced after every impact (--allow-crushing)",
+                                request.options.safety_factor * c.score.crush_ratio));
     }
     // Where the recommended design leaves the model's domain (core's validity checks).
     Scene covered = request.scene;
@@ -175,14 +209,25 @@ std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalo
   std::vector<CandidateMaterial> candidates;
   for (const materials::Material* m : chosen) {
     candidates.push_back({m->name, m->youngs_modulus_Pa, materials::PoissonRatioOrDefault(*m),
-                          !m->poisson_ratio.has_value(), m->family});
+                          !m->poisson_ratio.has_value(), m->family, m->crush_behaviour,
+                          m->compressive_strength_Pa.value_or(0.0)});
   }
   return candidates;
+}
+
+std::vector<std::string> HeadVerdictScope(const DesignRule& rule) {
+  return {"Criteria: " + rule.Describe() + ".",
+          "ISO/TS 15066:2016 (Annex A, A.3.2) does not permit transient contact with the skull, forehead or face; "
+          "its quasi-static limits there (Table A.2) are 130 N and 130 N/cm² on the forehead (110 N/cm² on the "
+          "temple) and 65 N and 110 N/cm² on the face. A safe verdict here means no skin injury in Park et al.'s "
+          "model, not compliance with the standard."};
 }
 
 DesignResult Design(const DesignRequest& request) {
   DesignResult r;
   r.criterion = request.options.criterion();
+  r.rule = request.options.rule();
+  r.scope = HeadVerdictScope(r.rule);
   r.thickness_m = request.thickness_m;
   // Both problems answer with the same fields.
   auto take = [&r](auto&& answer) {

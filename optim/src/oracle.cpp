@@ -66,8 +66,10 @@ void FillGradient(const DesignScore& score, const PeakSensitivities& s, const In
   gradient.laceration[1] = s.per_covering_thickness.max_tensile_stress / laceration;
   gradient.contusion[0] = s.per_covering_modulus.max_energy_density * per_log10 / contusion;
   gradient.contusion[1] = s.per_covering_thickness.max_energy_density / contusion;
-  const double t2 = score.peaks.full_compression_penetration_m;
-  gradient.compression[0] = s.per_covering_modulus.max_penetration * per_log10 / t2;  // E_c does not move t2
+  // r = (δ_max − s) / (t2 − s): E_c moves neither t2 nor s; 0 (flat) while δ_max <= s.
+  const double travel = score.peaks.full_compression_penetration_m - score.peaks.covering_travel_start_m;
+  gradient.compression[0] =
+      score.compression_ratio > 0.0 ? s.per_covering_modulus.max_penetration * per_log10 / travel : 0.0;
   gradient.compression[1] = compression_per_thickness;
 }
 
@@ -141,6 +143,62 @@ const char* ToString(DesignCriterion criterion) noexcept {
     case DesignCriterion::kPaper: return "paper";
   }
   return "unknown";
+}
+
+const char* ToString(LimitingCriterion criterion) noexcept {
+  switch (criterion) {
+    case LimitingCriterion::kNone: return "none";
+    case LimitingCriterion::kLaceration: return "laceration";
+    case LimitingCriterion::kContusion: return "contusion";
+    case LimitingCriterion::kFullCompression: return "full-compression";
+    case LimitingCriterion::kCrush: return "crush";
+  }
+  return "unknown";
+}
+
+const char* ToString(CrushCheck check) noexcept {
+  switch (check) {
+    case CrushCheck::kNoMaterial: return "no-material";
+    case CrushCheck::kChecked: return "checked";
+    case CrushCheck::kDoesNotCrush: return "does-not-crush";
+    case CrushCheck::kUnknownStrength: return "unknown-strength";
+  }
+  return "unknown";
+}
+
+std::vector<std::string> DesignRule::Parts() const {
+  std::vector<std::string> parts = {ToString(LimitingCriterion::kLaceration), ToString(LimitingCriterion::kContusion)};
+  if (compression_counts()) parts.emplace_back(ToString(LimitingCriterion::kFullCompression));
+  if (!crushing_allowed) parts.emplace_back(ToString(LimitingCriterion::kCrush));
+  return parts;
+}
+
+std::string DesignRule::Describe() const {
+  std::string text = "no laceration and no contusion (Park et al. 2011's skin limits)";
+  if (compression_counts()) text += ", the covering not fully compressed";
+  text += crushing_allowed ? "; crushing allowed (a sacrificial liner)" : ", the covering not crushed";
+  if (!crushing_allowed && unknown_strength_allowed) text += " where its strength is known";
+  return text + "; safety factor " + Number(safety_factor) + " on each";
+}
+
+GoverningRatio DesignScore::governing(const DesignRule& rule) const noexcept {
+  GoverningRatio g{LimitingCriterion::kLaceration, laceration_ratio};
+  auto consider = [&g](double ratio, LimitingCriterion criterion) {
+    if (ratio > g.ratio) g = {criterion, ratio};
+  };
+  consider(contusion_ratio, LimitingCriterion::kContusion);
+  if (rule.compression_counts() && !bare()) consider(compression_ratio, LimitingCriterion::kFullCompression);
+  if (!rule.crushing_allowed && crush_check == CrushCheck::kChecked) consider(crush_ratio, LimitingCriterion::kCrush);
+  return g;
+}
+
+bool DesignScore::admissible(const DesignRule& rule) const noexcept {
+  if (failed) return false;
+  if (rule.compression_counts() && compression_exceeded(rule.safety_factor)) return false;
+  if (crush_check == CrushCheck::kUnknownStrength && !rule.crushing_allowed && !rule.unknown_strength_allowed) {
+    return false;
+  }
+  return rule.safety_factor * governing(rule).ratio <= 1.0;
 }
 
 const char* ToString(OracleChoice choice) noexcept {
@@ -274,8 +332,7 @@ void DesignOracle::Judge(DesignScore& score) const {
   const InjuryAssessment a = Assess(score.peaks, limits_);
   score.laceration_ratio = a.laceration.ratio;
   score.contusion_ratio = a.contusion.ratio;
-  score.compression_ratio =
-      score.bare() ? 0.0 : score.peaks.max_penetration_m / score.peaks.full_compression_penetration_m;
+  score.compression_ratio = score.bare() ? 0.0 : score.peaks.covering_compression_ratio();
 }
 
 void DesignOracle::Fail(DesignScore& score, const std::string& message) const {
@@ -299,16 +356,18 @@ Scene DesignOracle::WithCovering(const CoveringDesign& design, double poisson_ra
 }
 
 double DesignOracle::CompressionThicknessDerivative(const DesignScore& score, double max_penetration_per_m) const {
-  // compression ratio δ_max / t2: t2 moves with b_c by the full-compression fraction f
-  // (cumulative: t2 = t1 + f b_c; literal: t2 = max(f b_c, t1)).
+  // compression ratio (δ_max − s) / (t2 − s): t2 moves with b_c by the full-compression
+  // fraction f (cumulative: t2 = t1 + f b_c; literal: t2 = max(f b_c, t1)); s = t1 (or 0)
+  // does not move. 0 (flat) while δ_max <= s.
   const ModelConstants& constants = scene_.model;
   const double t1 = constants.full_compression_fraction * scene_.scalp.thickness_m;
   const double covering_travel = constants.full_compression_fraction * score.design.thickness_m;
   const double dt2_db = (constants.thresholds == ThresholdReading::kCumulative || covering_travel > t1)
                             ? constants.full_compression_fraction
                             : 0.0;
-  const double t2 = score.peaks.full_compression_penetration_m;
-  return (max_penetration_per_m - score.compression_ratio * dt2_db) / t2;
+  if (!(score.compression_ratio > 0.0)) return 0.0;
+  const double travel = score.peaks.full_compression_penetration_m - score.peaks.covering_travel_start_m;
+  return (max_penetration_per_m - score.compression_ratio * dt2_db) / travel;
 }
 
 // --- ExactPathOracle -------------------------------------------------------------------

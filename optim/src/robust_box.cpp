@@ -40,24 +40,27 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c) {
   j.laceration_ratio = j.peaks.max_tensile_stress_Pa / c.limits.laceration_tensile_stress_Pa;
   j.contusion_ratio = j.peaks.max_energy_density_J_per_m2 / c.limits.contusion_energy_density_J_per_m2;
   if (j.covered) {
-    j.compression_ratio = j.peaks.max_penetration_m / j.peaks.full_compression_penetration_m;
+    j.compression_ratio = j.peaks.covering_compression_ratio();
     j.fully_compressed = j.peaks.fully_compressed;
+    if (c.compressive_strength_Pa > 0.0) j.crush_ratio = j.peaks.max_compressive_stress_Pa / c.compressive_strength_Pa;
   }
   const double sf = c.safety_factor;
   j.laceration = sf * j.laceration_ratio > 1.0;
   j.contusion = sf * j.contusion_ratio > 1.0;
   const bool compression_counts = j.covered && c.criterion == DesignCriterion::kNoFullCompression;
-  j.admissible = !j.laceration && !j.contusion && !(compression_counts && j.fully_compressed);
+  const bool crush_counts = j.covered && c.crush_counts && c.compressive_strength_Pa > 0.0;
   j.governing_ratio = sf * j.laceration_ratio;
   j.binding = LimitingCriterion::kLaceration;
-  if (sf * j.contusion_ratio > j.governing_ratio) {
-    j.governing_ratio = sf * j.contusion_ratio;
-    j.binding = LimitingCriterion::kContusion;
-  }
-  if (compression_counts && j.compression_ratio > j.governing_ratio) {
-    j.governing_ratio = j.compression_ratio;
-    j.binding = LimitingCriterion::kFullCompression;
-  }
+  auto consider = [&j, sf](double ratio, LimitingCriterion criterion) {
+    if (sf * ratio > j.governing_ratio) {
+      j.governing_ratio = sf * ratio;
+      j.binding = criterion;
+    }
+  };
+  consider(j.contusion_ratio, LimitingCriterion::kContusion);
+  if (compression_counts) consider(j.compression_ratio, LimitingCriterion::kFullCompression);
+  if (crush_counts) consider(j.crush_ratio, LimitingCriterion::kCrush);
+  j.admissible = j.governing_ratio <= 1.0 && !(compression_counts && j.fully_compressed);
   return j;
 }
 
@@ -66,6 +69,7 @@ void FillWorstCase(const Judged& j, WorstCase& worst) {
   worst.contusion_ratio = j.contusion_ratio;
   worst.compression_ratio = j.compression_ratio;
   worst.fully_compressed = j.fully_compressed;
+  worst.crush_ratio = j.crush_ratio;
   worst.governing_ratio = j.governing_ratio;
   worst.binding = j.binding;
   worst.admissible = j.admissible;
@@ -216,6 +220,21 @@ ProbabilityEstimate WilsonEstimate(std::uint64_t count, std::uint64_t samples) {
   e.ci95_low = count == 0 ? 0.0 : std::max(0.0, centre - half);
   e.ci95_high = count == samples ? 1.0 : std::min(1.0, centre + half);
   return e;
+}
+
+std::optional<std::uint64_t> MostEventsWithUpperBoundWithin(double probability, std::uint64_t samples) {
+  Require(samples > 0, "a probability needs at least one sample (got 0)");
+  if (WilsonEstimate(0, samples).ci95_high > probability) return std::nullopt;
+  // The bound exceeds count / samples, so the answer is below probability × samples + 1.
+  std::uint64_t within = 0;
+  std::uint64_t beyond = std::min<std::uint64_t>(
+      samples, static_cast<std::uint64_t>(std::floor(probability * static_cast<double>(samples))) + 1);
+  if (WilsonEstimate(beyond, samples).ci95_high <= probability) return beyond;
+  while (beyond - within > 1) {
+    const std::uint64_t mid = within + (beyond - within) / 2;
+    (WilsonEstimate(mid, samples).ci95_high <= probability ? within : beyond) = mid;
+  }
+  return within;
 }
 
 namespace {

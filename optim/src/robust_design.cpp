@@ -139,16 +139,26 @@ struct RobustContext {
   ImpactCriterion criterion;
   const RobustDesignOptions& options;
 
-  /// The worst case of the whole box for one covering.
-  WorstCase WorstCaseFor(const CoveringSpec& covering) const {
+  /// The worst case of the whole box for one covering, judged by `judged_by` (default: the
+  /// context's criterion).
+  WorstCase WorstCaseFor(const CoveringSpec& covering, const ImpactCriterion* judged_by = nullptr) const {
     Scene base = box.nominal();
     base.covering = covering;
-    return internal::WorstCaseOnScene(box, base, criterion, options.worst_case);
+    return internal::WorstCaseOnScene(box, base, judged_by ? *judged_by : criterion, options.worst_case);
+  }
+  /// The criterion for one material: the context's, with its strength when it crushes.
+  ImpactCriterion ForMaterial(const CandidateMaterial& material) const {
+    ImpactCriterion c = criterion;
+    if (material.crush_behaviour == materials::CrushBehaviour::kCrushes) {
+      c.compressive_strength_Pa = material.compressive_strength_Pa;
+      c.crush_counts = !options.design.allow_crushing;
+    }
+    return c;
   }
 };
 
-/// The DesignScore of a worst case (the impact there).
-DesignScore ScoreOf(const WorstCase& worst) {
+/// The DesignScore of a material's worst case (the impact there), with its crush check.
+DesignScore ScoreOf(const WorstCase& worst, const CandidateMaterial& material) {
   DesignScore score;
   score.design = {worst.scene.covering.youngs_modulus_Pa, worst.scene.covering.thickness_m};
   score.poisson_ratio = worst.scene.covering.poisson_ratio;
@@ -156,6 +166,7 @@ DesignScore ScoreOf(const WorstCase& worst) {
   score.laceration_ratio = worst.laceration_ratio;
   score.contusion_ratio = worst.contusion_ratio;
   score.compression_ratio = worst.compression_ratio;
+  CheckCrush(material, score);
   return score;
 }
 
@@ -165,19 +176,30 @@ RobustCandidate RobustSnapMaterial(const RobustContext& context, const Candidate
                                    const std::vector<std::vector<double>>& initial, long& evaluations) {
   const DesignOptions& o = context.options.design;
   const DesignSpace& space = o.space;
-  ScenarioSet set(context.box, context.criterion);
+  const ImpactCriterion criterion = context.ForMaterial(material);
+  ScenarioSet set(context.box, criterion);
   for (const std::vector<double>& s : initial) set.Add(s);
   auto covering = [&](double b) { return CoveringSpec{material.youngs_modulus_Pa, material.poisson_ratio, b}; };
   auto admissible_on_set = [&](double b) { return set.Judge(covering(b)).admissible; };
   long search_evaluations = 0;
   auto confirm = [&](double b) {
-    WorstCase worst = context.WorstCaseFor(covering(b));
+    WorstCase worst = context.WorstCaseFor(covering(b), &criterion);
     search_evaluations += worst.evaluations;
     return worst;
   };
 
   RobustCandidate candidate;
   candidate.outcome.material = material;
+  const DesignRule material_rule = o.rule();
+  if (material.crush_behaviour == materials::CrushBehaviour::kUnknown && !material_rule.crushing_allowed &&
+      !material_rule.unknown_strength_allowed) {
+    // Never admissible under the rule: its worst case at the maximum thickness, for the table.
+    candidate.worst_case = confirm(space.max_thickness_m);
+    candidate.outcome.score = ScoreOf(candidate.worst_case, material);
+    candidate.outcome.margin = candidate.outcome.score.margin(material_rule);
+    evaluations += search_evaluations;
+    return candidate;
+  }
   std::optional<double> thinnest;
   std::optional<WorstCase> at_thinnest;
   while (candidate.scenario_rounds < context.options.max_scenario_rounds) {
@@ -210,12 +232,12 @@ RobustCandidate RobustSnapMaterial(const RobustContext& context, const Candidate
   }
 
   CandidateOutcome& outcome = candidate.outcome;
-  const double sf = o.safety_factor;
+  const DesignRule rule = o.rule();
   if (!thinnest) {
     candidate.unconfirmed = candidate.scenario_rounds >= context.options.max_scenario_rounds;
     candidate.worst_case = confirm(space.max_thickness_m);
-    outcome.score = ScoreOf(candidate.worst_case);
-    outcome.margin = outcome.score.margin(sf);
+    outcome.score = ScoreOf(candidate.worst_case, material);
+    outcome.margin = outcome.score.margin(rule);
     evaluations += set.evaluations() + search_evaluations;
     return candidate;
   }
@@ -240,10 +262,11 @@ RobustCandidate RobustSnapMaterial(const RobustContext& context, const Candidate
   }
   candidate.worst_case = at_stock ? *at_stock : *at_thinnest;
   candidate.worst_case_at_thinnest = std::move(at_thinnest);
-  outcome.score = ScoreOf(candidate.worst_case);
+  outcome.score = ScoreOf(candidate.worst_case, material);
   outcome.recommended_thickness_m = candidate.worst_case.scene.covering.thickness_m;
-  outcome.safe = candidate.worst_case.admissible;
-  outcome.margin = outcome.score.margin(sf);
+  // The box's verdict, and the rule's word on a material of unknown strength.
+  outcome.safe = candidate.worst_case.admissible && outcome.score.admissible(rule);
+  outcome.margin = outcome.score.margin(rule);
   evaluations += set.evaluations() + search_evaluations;
   return candidate;
 }

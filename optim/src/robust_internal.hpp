@@ -22,6 +22,11 @@ struct ImpactCriterion {
   DesignCriterion criterion = DesignCriterion::kNoFullCompression;
   double safety_factor = 1.0;
   InjuryLimits limits;
+  /// The covering material's compressive strength [Pa] when it crushes and the strength is
+  /// known: the crush ratio σ_c,max / strength is computed; 0: no crush check.
+  double compressive_strength_Pa = 0.0;
+  /// The crush ratio counts (the no-crush criterion; not for a sacrificial liner).
+  bool crush_counts = false;
 };
 /// Checks the safety factor ([1, 100]) and the limits (finite, > 0).
 void ValidateCriterion(const ImpactCriterion& criterion);
@@ -32,8 +37,9 @@ struct Judged {
   bool covered = false;
   double laceration_ratio = 0.0;
   double contusion_ratio = 0.0;
-  double compression_ratio = 0.0;  ///< δ_max / t2; 0 without a covering
+  double compression_ratio = 0.0;  ///< the covering's travel used; 0 without a covering
   bool fully_compressed = false;   ///< with a covering only
+  double crush_ratio = 0.0;        ///< σ_c,max / strength; 0 without a crush check
   double governing_ratio = 0.0;    ///< g (robust_design.hpp)
   LimitingCriterion binding = LimitingCriterion::kLaceration;
   bool laceration = false;  ///< SF r_L > 1

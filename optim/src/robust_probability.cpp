@@ -188,10 +188,14 @@ namespace {
 /// Judges coverings against the probability target on the same samples (common random numbers).
 class ProbabilityJudge {
  public:
-  ProbabilityJudge(const UncertaintyBox& box, const ProbabilityDesignOptions& o)
-      : box_(box),
-        criterion_{o.design.criterion(), o.design.safety_factor, o.design.limits},
-        allowed_(static_cast<std::uint64_t>(std::floor(o.max_probability * static_cast<double>(o.sampling.samples)))) {
+  /// Judges by the options' criterion and, for a `material` that crushes, its strength.
+  ProbabilityJudge(const UncertaintyBox& box, const ProbabilityDesignOptions& o, std::uint64_t allowed_failures,
+                   const CandidateMaterial* material = nullptr)
+      : box_(box), criterion_{o.design.criterion(), o.design.safety_factor, o.design.limits}, allowed_(allowed_failures) {
+    if (material && material->crush_behaviour == materials::CrushBehaviour::kCrushes) {
+      criterion_.compressive_strength_Pa = material->compressive_strength_Pa;
+      criterion_.crush_counts = !o.design.allow_crushing;
+    }
     request_.samples = o.sampling.samples;
     request_.seed = o.sampling.seed;
     request_.threads = ThreadCount(o.sampling.threads);
@@ -252,6 +256,12 @@ ProbabilityCandidate ProbabilitySnapMaterial(const ProbabilityJudge& judge, cons
   auto covering = [&](double b) { return CoveringSpec{material.youngs_modulus_Pa, material.poisson_ratio, b}; };
   ProbabilityCandidate candidate;
   candidate.material = material;
+  const DesignRule rule = o.rule();
+  if (material.crush_behaviour == materials::CrushBehaviour::kUnknown && !rule.crushing_allowed &&
+      !rule.unknown_strength_allowed) {
+    candidate.at_design = judge.Estimate(covering(space.max_thickness_m));  // never meets the target
+    return candidate;
+  }
   double failing = 0.0, meeting = 0.0;
   bool found = false;
   for (int k = 0; k < o.thickness_scan_points && !found; ++k) {
@@ -376,8 +386,9 @@ ProbabilityDesign FindProbabilityDesign(const UncertaintyBox& box, std::span<con
   const DesignOptions& o = options.design;
   internal::ValidateDesign(o);
   ValidateSampling(options.sampling);
-  Require(std::isfinite(options.max_probability) && options.max_probability >= 0.0 && options.max_probability < 1.0,
-          "max injury probability must be in [0, 1) (got " + internal::Number(options.max_probability) + ")");
+  // 0 cannot be shown by any finite number of samples (the upper bound of 0 events is > 0).
+  Require(std::isfinite(options.max_probability) && options.max_probability > 0.0 && options.max_probability < 1.0,
+          "max injury probability must be in (0, 1) (got " + internal::Number(options.max_probability) + ")");
   internal::RefuseCoveringRanges(box);
   for (const CandidateMaterial& m : materials) {
     Require(std::isfinite(m.youngs_modulus_Pa) && m.youngs_modulus_Pa > 0.0 && m.youngs_modulus_Pa <= 1e13,
@@ -387,7 +398,18 @@ ProbabilityDesign FindProbabilityDesign(const UncertaintyBox& box, std::span<con
             "material '" + m.name + "': poisson ratio must be in (-1, 0.5] (got " + internal::Number(m.poisson_ratio) +
                 ")");
   }
-  const ProbabilityJudge judge(box, options);
+  const std::optional<std::uint64_t> allowed =
+      MostEventsWithUpperBoundWithin(options.max_probability, options.sampling.samples);
+  if (!allowed) {
+    // 0 failures in n samples has the upper bound z²/(n + z²): n >= z² (1 − P) / P shows P.
+    constexpr double z2 = 1.959963984540054 * 1.959963984540054;
+    const double needed = std::ceil(z2 * (1.0 - options.max_probability) / options.max_probability);
+    throw std::invalid_argument(
+        "max injury probability " + internal::Number(options.max_probability) + " needs at least " +
+        internal::Number(needed) + " samples (got " + std::to_string(options.sampling.samples) +
+        "): with fewer, even no failing sample leaves the 95 % upper bound above the target");
+  }
+  const ProbabilityJudge judge(box, options, *allowed);
   const std::size_t stages = 1 + materials.size() + (options.continuous ? 1 : 0);
   std::size_t stages_done = 0;
   auto stage_done = [&] {
@@ -406,8 +428,11 @@ ProbabilityDesign FindProbabilityDesign(const UncertaintyBox& box, std::span<con
     out.continuous = ProbabilityContinuous(judge, o);
     stage_done();
   }
+  std::uint64_t material_evaluations = 0;
   for (const CandidateMaterial& material : materials) {
-    out.candidates.push_back(ProbabilitySnapMaterial(judge, material, o));
+    const ProbabilityJudge material_judge(box, options, *allowed, &material);
+    out.candidates.push_back(ProbabilitySnapMaterial(material_judge, material, o));
+    material_evaluations += material_judge.evaluated();
     stage_done();
   }
   std::stable_sort(out.candidates.begin(), out.candidates.end(),
@@ -421,13 +446,12 @@ ProbabilityDesign FindProbabilityDesign(const UncertaintyBox& box, std::span<con
                      }
                      return a.material.name < b.material.name;
                    });
-  const std::uint64_t allowed =
-      static_cast<std::uint64_t>(std::floor(options.max_probability * static_cast<double>(options.sampling.samples)));
+  out.allowed_failures = *allowed;
   const bool any_meets = !out.candidates.empty() && out.candidates.front().meets_target;
-  out.verdict = internal::RobustVerdict(out.bare_robot.inadmissible.count <= allowed, any_meets,
+  out.verdict = internal::RobustVerdict(out.bare_robot.inadmissible.count <= *allowed, any_meets,
                                         out.continuous && !out.continuous->feasible);
   if (out.verdict == DesignVerdict::kCoveringFound) out.recommendation = 0;
-  out.sample_evaluations = judge.evaluated();
+  out.sample_evaluations = judge.evaluated() + material_evaluations;
   out.seconds = SecondsSince(started);
   return out;
 }

@@ -37,7 +37,9 @@ std::optional<LogRatios> LogRatiosAt(const Scene& scene, const InjuryLimits& lim
   LogRatios r;
   r.laceration = std::log(peaks.max_tensile_stress_Pa / limits.laceration_tensile_stress_Pa);
   r.contusion = std::log(peaks.max_energy_density_J_per_m2 / limits.contusion_energy_density_J_per_m2);
-  if (model->has_covering()) r.compression = std::log(peaks.max_penetration_m / peaks.full_compression_penetration_m);
+  // ln of the covering's travel ratio; -inf while δ_max stays within the scalp's travel, which
+  // the caller treats as no compression elasticity.
+  if (model->has_covering()) r.compression = std::log(peaks.covering_compression_ratio());
   return r;
 }
 
@@ -110,9 +112,11 @@ ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions&
   long evaluations = 1;
   table.laceration_ratio = peaks.max_tensile_stress_Pa / options.limits.laceration_tensile_stress_Pa;
   table.contusion_ratio = peaks.max_energy_density_J_per_m2 / options.limits.contusion_energy_density_J_per_m2;
-  if (covered) table.compression_ratio = peaks.max_penetration_m / peaks.full_compression_penetration_m;
+  // The covering's travel ratio is 0 while δ_max stays within the scalp's travel: no elasticity then.
+  const bool compressed = covered && peaks.covering_compression_ratio() > 0.0;
+  if (compressed) table.compression_ratio = peaks.covering_compression_ratio();
   const LogRatios at_x{std::log(table.laceration_ratio), std::log(table.contusion_ratio),
-                       covered ? std::log(*table.compression_ratio) : 0.0};
+                       compressed ? std::log(*table.compression_ratio) : 0.0};
 
   std::optional<PeakSensitivities> analytic;
   if (covered) analytic = ExactPeakSensitivities(model, peaks);
@@ -131,8 +135,8 @@ ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions&
       row.method = DerivativeMethod::kAnalytic;
       row.laceration = x * d.max_tensile_stress / peaks.max_tensile_stress_Pa;
       row.contusion = x * d.max_energy_density / peaks.max_energy_density_J_per_m2;
-      // r_δ = δ_max / t2: t2 moves with b_c by the full-compression fraction f (cumulative;
-      // literal only once f b_c > t1), not with E_c.
+      // r_δ = (δ_max − s) / (t2 − s), s = covering_travel_start_m: t2 moves with b_c by the
+      // full-compression fraction f (cumulative; literal only once f b_c > t1), s and E_c do not.
       double dt2 = 0.0;
       if (!modulus) {
         const ModelConstants& c = scene.model;
@@ -140,7 +144,9 @@ ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions&
         const bool moves = c.thresholds == ThresholdReading::kCumulative || c.full_compression_fraction * x > t1;
         dt2 = moves ? c.full_compression_fraction : 0.0;
       }
-      row.compression = x * (d.max_penetration / peaks.max_penetration_m - dt2 / peaks.full_compression_penetration_m);
+      const double used = peaks.max_penetration_m - peaks.covering_travel_start_m;
+      const double travel = peaks.full_compression_penetration_m - peaks.covering_travel_start_m;
+      row.compression = x * (d.max_penetration / used - dt2 / travel);
     } else {
       const Difference coarse = Differentiate(scene, field, at_x, options.log_step, options.limits, evaluations);
       const Difference fine = Differentiate(scene, field, at_x, options.log_step / 10, options.limits, evaluations);
@@ -151,17 +157,20 @@ ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions&
         row.method = fine.one_sided ? DerivativeMethod::kOneSidedDifference : DerivativeMethod::kCentralDifference;
         row.laceration = fine.elasticity.laceration;
         row.contusion = fine.elasticity.contusion;
-        if (covered) row.compression = fine.elasticity.compression;
+        // A neighbour whose δ_max stays within the scalp's travel has no finite ln r_δ.
+        const bool compression_differs = compressed && std::isfinite(fine.elasticity.compression) &&
+                                         std::isfinite(coarse.elasticity.compression);
+        if (compression_differs) row.compression = fine.elasticity.compression;
         row.discrepancy = std::max(Disagreement(coarse.elasticity.laceration, fine.elasticity.laceration),
                                    Disagreement(coarse.elasticity.contusion, fine.elasticity.contusion));
-        if (covered) {
+        if (compression_differs) {
           row.discrepancy =
               std::max(row.discrepancy, Disagreement(coarse.elasticity.compression, fine.elasticity.compression));
         }
         row.reliable = row.discrepancy <= options.tolerance;
       }
     }
-    if (!covered) row.compression.reset();
+    if (!compressed || (row.compression && !std::isfinite(*row.compression))) row.compression.reset();
     table.rows.push_back(row);
   }
   const bool laceration_worse = table.laceration_ratio >= table.contusion_ratio;

@@ -58,6 +58,10 @@ void CheckOptions(const SpeedLimitOptions& o) {
     Reject("max_speed_m_per_s", "in [1e-06, 100] m/s", o.max_speed_m_per_s);
   }
   if (!(o.max_mass_kg > 0.0 && o.max_mass_kg <= 1e6)) Reject("max_mass_kg", "in (0, 1e+06] kg", o.max_mass_kg);
+  if (!(std::isfinite(o.covering_compressive_strength_Pa) && o.covering_compressive_strength_Pa >= 0.0)) {
+    Reject("covering_compressive_strength_Pa", "finite and >= 0 Pa (0: no crush check)",
+           o.covering_compressive_strength_Pa);
+  }
 }
 
 /// x >= x0 solving  offset (x - x0) + coeff/power (x^power - x0^power) = gap  (gap >= 0):
@@ -154,8 +158,16 @@ PenetrationLimit FindPenetrationLimit(const ImpactModel& model, const SpeedLimit
   consider(EnergyDensityCrossing(model, options.limits.contusion_energy_density_J_per_m2 / s),
            LimitingCriterion::kContusion);
   if (options.criterion() == DesignCriterion::kNoFullCompression && model.has_covering()) {
+    // The covering's travel the safety factor leaves: s + (t2 − s)/SF (ImpactPeaks::
+    // covering_compression_ratio), s the start of its travel; t2 itself at SF 1.
     const std::size_t last = model.segment_count() - 1;
-    consider({model.segment(last).start_m, last}, LimitingCriterion::kFullCompression);
+    const ImpactPeaks at_full = PeaksAtMaxPenetration(model, last, model.segment(last).start_m);
+    const double start = at_full.covering_travel_start_m, full = at_full.full_compression_penetration_m;
+    const double reserved = s == 1.0 ? full : start + (full - start) / s;
+    consider({reserved, model.SegmentIndexAt(reserved)}, LimitingCriterion::kFullCompression);
+  }
+  if (options.covering_compressive_strength_Pa > 0.0 && !options.allow_crushing && model.has_covering()) {
+    consider(StressCrossing(model, options.covering_compressive_strength_Pa / s), LimitingCriterion::kCrush);
   }
   return limit;
 }
@@ -196,11 +208,12 @@ class Judge {
     e.ratios.laceration_ratio = peaks.max_tensile_stress_Pa / options_.limits.laceration_tensile_stress_Pa;
     e.ratios.contusion_ratio =
         peaks.max_energy_density_J_per_m2 / options_.limits.contusion_energy_density_J_per_m2;
-    e.ratios.compression_ratio =
-        model.has_covering() ? peaks.max_penetration_m / peaks.full_compression_penetration_m : 0.0;
+    e.ratios.compression_ratio = peaks.covering_compression_ratio();
+    if (model.has_covering() && options_.covering_compressive_strength_Pa > 0.0) {
+      e.ratios.crush_ratio = peaks.max_compressive_stress_Pa / options_.covering_compressive_strength_Pa;
+    }
     e.ratios.max_penetration_m = peaks.max_penetration_m;
-    const double worst = std::max(e.ratios.laceration_ratio, e.ratios.contusion_ratio);
-    e.admissible = worst * options_.safety_factor <= 1.0 &&
+    e.admissible = Violated(e) == LimitingCriterion::kNone &&
                    (options_.criterion() == DesignCriterion::kPaper || !model.has_covering() ||
                     !peaks.fully_compressed);
     return e;
@@ -221,8 +234,9 @@ class Judge {
     consider(sf * e.ratios.laceration_ratio, LimitingCriterion::kLaceration);
     consider(sf * e.ratios.contusion_ratio, LimitingCriterion::kContusion);
     if (options_.criterion() == DesignCriterion::kNoFullCompression) {
-      consider(e.ratios.compression_ratio, LimitingCriterion::kFullCompression);
+      consider(sf * e.ratios.compression_ratio, LimitingCriterion::kFullCompression);
     }
+    if (!options_.allow_crushing) consider(sf * e.ratios.crush_ratio, LimitingCriterion::kCrush);
     return by;
   }
 
@@ -358,16 +372,6 @@ const char* ToString(SpeedLimitStatus status) noexcept {
     case SpeedLimitStatus::kSafeUpToSearchLimit: return "safe-up-to-search-limit";
     case SpeedLimitStatus::kNoSafeValue: return "no-safe-value";
     case SpeedLimitStatus::kEvaluationFailed: return "evaluation-failed";
-  }
-  return "unknown";
-}
-
-const char* ToString(LimitingCriterion criterion) noexcept {
-  switch (criterion) {
-    case LimitingCriterion::kNone: return "none";
-    case LimitingCriterion::kLaceration: return "laceration";
-    case LimitingCriterion::kContusion: return "contusion";
-    case LimitingCriterion::kFullCompression: return "full-compression";
   }
   return "unknown";
 }

@@ -111,15 +111,23 @@ def optimize(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
              safety_factor=None, materials=None, families=None, catalog=None, no_builtin=False,
              thickness=None, max_thickness=None, min_modulus=None, max_modulus=None,
              covering_poisson=None, thickness_step=None, allow_full_compression=False,
+             allow_crushing=False, allow_unknown_strength=False,
              global_algorithm=None, seed=None, threads=None, oracle=None, method=None, rtol=None,
              max_steps=None):
     """Which covering, how thick, with what margin, as ``covopt optimize --json``.
 
     The scene keywords are simulate's (damping, braking and a neck included), without the
     covering (it is what is designed).
-    Problem (a), the default: the thinnest admissible covering (ratios <= 1/safety_factor
-    and, unless allow_full_compression, not fully compressed at the peak), continuous and
-    for every candidate material. Problem (b), with thickness [m]: the least injury at that
+    Problem (a), the default: the thinnest admissible covering, continuous and for every
+    candidate material. Admissible: safety_factor times every ratio that counts is <= 1: the
+    laceration and contusion ratios; unless allow_full_compression, the covering's travel
+    used (not fully compressed, with the reserve the factor leaves); unless allow_crushing (a
+    sacrificial liner), the crush ratio (peak compressive stress / the material's compressive
+    strength). Materials of unknown strength are recommended only with
+    allow_unknown_strength (then with a warning). result["criterion"] names every part,
+    result["scope"] says what the verdict covers (and ISO/TS 15066's word on the head), and
+    each design carries crush_ratio, governing_criterion and governing_ratio; margin is
+    1 - safety_factor x governing_ratio. Problem (b), with thickness [m]: the least injury at that
     thickness. materials: catalog names (default: every material), families: catalog
     families, catalog: TOML catalog files added to the built-in one (no_builtin: only
     them). Design space: max_thickness [m] (0.05), min_modulus and max_modulus [Pa]
@@ -136,6 +144,11 @@ def optimize(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
     input). Raises ValueError on bad input, ComputationError when the search fails.
     """
     arguments = {name: value for name, value in locals().items() if value is not None}
+    ranged = [name for name, value in arguments.items() if isinstance(value, str) and ".." in value]
+    if ranged:
+        name = ranged[0]
+        raise ValueError(f"{name}={arguments[name]!r}: a range LO..HI asks for a design over a population; use "
+                         f"covopt.robust_optimize(ranges={{{name!r}: {arguments[name]!r}}}, ...) instead")
     return _covopt.optimize(**arguments)
 
 
@@ -331,15 +344,19 @@ def sensitivities(**scene):
 
 
 def robust_optimize(*, ranges, samples=None, seed=1, threads=0, distributions=None,
-                    max_injury_probability=None, allow_full_compression=False, **scene):
+                    max_injury_probability=None, allow_full_compression=False, allow_crushing=False,
+                    allow_unknown_strength=False, **scene):
     """The thinnest built-in catalog covering admissible for every value in the box
     (optim::FindRobustThinnestCovering), the dict ``covopt optimize --json`` prints with the
     same ranges (worst_case: the input values that set the design). With samples, the
     recommendation's injury_probability too; with max_injury_probability (and samples), the
-    thinnest covering whose probability of failing the criterion is at most that
-    (optim::FindProbabilityDesign), as ``covopt optimize --max-injury-probability P``."""
+    thinnest covering whose probability of failing the criterion is shown to be at most that
+    (the upper end of its 95 % interval, not the estimate alone; optim::FindProbabilityDesign),
+    as ``covopt optimize --max-injury-probability P``. The criterion is optimize's: crushing
+    counts unless allow_crushing, unknown strengths are refused unless allow_unknown_strength."""
     arguments = {"ranges": ranges, "samples": samples, "seed": seed, "threads": threads,
                  "distributions": distributions, "max_injury_probability": max_injury_probability,
-                 "allow_full_compression": allow_full_compression}
+                 "allow_full_compression": allow_full_compression, "allow_crushing": allow_crushing,
+                 "allow_unknown_strength": allow_unknown_strength}
     arguments = {k: v for k, v in arguments.items() if v is not None}
     return _covopt.robust_optimize(**arguments, **scene)

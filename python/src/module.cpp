@@ -608,7 +608,7 @@ py::dict Optimize(const py::kwargs& kwargs) {
   CheckKeywords(kwargs, "optimize",
                 {"materials", "families", "catalog", "no_builtin", "thickness", "max_thickness",
                  "min_modulus", "max_modulus", "thickness_step", "allow_full_compression",
-                 "global_algorithm", "seed", "threads", "oracle", "method", "rtol", "max_steps"});
+                 "allow_crushing", "allow_unknown_strength", "global_algorithm", "seed", "threads", "oracle", "method", "rtol", "max_steps"});
   for (const char* k : {"covering_modulus", "covering_thickness", "material"}) {
     if (get(k)) {
       throw std::invalid_argument(std::string(k) +
@@ -651,6 +651,8 @@ py::dict Optimize(const py::kwargs& kwargs) {
             "simulate(covering_thickness=0)");
   }
   if (const auto v = get("allow_full_compression")) d.allow_full_compression = py::bool_(*v).cast<bool>();
+  if (const auto v = get("allow_crushing")) d.allow_crushing = py::bool_(*v).cast<bool>();
+  if (const auto v = get("allow_unknown_strength")) d.allow_unknown_strength = py::bool_(*v).cast<bool>();
   if (const auto v = get("global_algorithm")) {
     const std::string g = py::str(*v).cast<std::string>();
     if (g == "direct-l") d.global_algorithm = optim::NloptAlgorithm::kDirectL;

@@ -30,7 +30,8 @@ namespace {
 
 /// The keywords of these functions besides the scene's.
 constexpr std::initializer_list<const char*> kOwn = {"ranges", "samples", "seed", "threads", "distributions",
-                                                     "max_injury_probability", "allow_full_compression"};
+                                                     "max_injury_probability", "allow_full_compression",
+                                                     "allow_crushing", "allow_unknown_strength"};
 
 std::optional<py::object> Get(const py::kwargs& kwargs, const char* name) {
   if (!kwargs.contains(name)) return std::nullopt;
@@ -196,6 +197,8 @@ py::object RobustOptimize(const py::kwargs& kwargs) {
   design.limits = b.scene.limits;
   design.safety_factor = b.scene.safety_factor;
   if (const auto v = Get(kwargs, "allow_full_compression")) design.allow_full_compression = py::bool_(*v).cast<bool>();
+  if (const auto v = Get(kwargs, "allow_crushing")) design.allow_crushing = py::bool_(*v).cast<bool>();
+  if (const auto v = Get(kwargs, "allow_unknown_strength")) design.allow_unknown_strength = py::bool_(*v).cast<bool>();
   const std::vector<optim::CandidateMaterial> materials = optim::SelectCandidates(materials::Catalog::BuiltIn());
   std::optional<optim::InjuryProbabilityOptions> sampling;
   if (const auto samples = Get(kwargs, "samples")) {
@@ -210,8 +213,8 @@ py::object RobustOptimize(const py::kwargs& kwargs) {
     options.design = design;
     options.sampling = *sampling;
     options.max_probability = p->cast<double>();
-    if (!(options.max_probability >= 0.0 && options.max_probability < 1.0)) {
-      throw std::invalid_argument("max_injury_probability must be in [0, 1) (got " + py::repr(*p).cast<std::string>() + ")");
+    if (!(options.max_probability > 0.0 && options.max_probability < 1.0)) {
+      throw std::invalid_argument("max_injury_probability must be in (0, 1) (got " + py::repr(*p).cast<std::string>() + ")");
     }
     optim::ProbabilityDesign result;
     {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "covopt/report/simulation_json.hpp"
+#include "limits_json.hpp"
 #include "oracle_json.hpp"
 
 namespace covopt::report {
@@ -30,29 +31,24 @@ ordered_json SolverJson(const optim::SolverReport& r) {
           {"seconds", r.seconds}};
 }
 
-ordered_json ScoreJson(const DesignScore& s) {
-  return {{"laceration_ratio", s.laceration_ratio},
-          {"contusion_ratio", s.contusion_ratio},
-          {"max_tensile_stress_Pa", s.peaks.max_tensile_stress_Pa},
-          {"max_energy_density_J_per_m2", s.peaks.max_energy_density_J_per_m2},
-          {"fully_compressed", s.peaks.fully_compressed},
-          {"compression_ratio", s.compression_ratio}};
-}
-
-
-ordered_json CandidateJson(const CandidateOutcome& c) {
+ordered_json CandidateJson(const CandidateOutcome& c, const optim::DesignRule& rule) {
   ordered_json j = {{"material", c.material.name},
                     {"family", c.material.family},
                     {"youngs_modulus_Pa", c.material.youngs_modulus_Pa},
                     {"poisson_ratio", c.material.poisson_ratio},
                     {"poisson_assumed", c.material.poisson_assumed},
+                    {"crush_behaviour", materials::ToString(c.material.crush_behaviour)},
+                    {"compressive_strength_Pa",
+                     c.material.crush_behaviour == materials::CrushBehaviour::kCrushes
+                         ? ordered_json(c.material.compressive_strength_Pa)
+                         : ordered_json(nullptr)},
                     {"min_safe_thickness_m", Nullable(c.min_safe_thickness_m)},
                     {"thickness_m", Nullable(c.recommended_thickness_m)},
                     {"evaluated_thickness_m", c.score.design.thickness_m},
                     {"stock_thickness_beyond_max_m", Nullable(c.stock_thickness_beyond_max_m)},
                     {"safe", c.safe},
                     {"margin", c.margin}};
-  j.update(ScoreJson(c.score));
+  j.update(internal::RatiosJson(c.score, rule));
   return j;
 }
 
@@ -62,6 +58,7 @@ std::string DesignJson(const optim::DesignRequest& request, const optim::DesignR
                        std::span<const std::string> input_warnings, int indent) {
   const double sf = request.options.safety_factor;
   const optim::DesignCriterion criterion = result.criterion;
+  const optim::DesignRule& rule = result.rule;
   const std::string& headline = result.message;
   const std::vector<CandidateOutcome>& candidates = result.candidates;
   const optim::ContinuousOptimum& continuous = result.continuous;
@@ -82,46 +79,33 @@ std::string DesignJson(const optim::DesignRequest& request, const optim::DesignR
   warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
   ordered_json j;
   j["problem"] = optim::ToString(result.problem);
-  j["criterion"] = optim::ToString(criterion);
+  j["criterion"] = internal::CriterionJson(rule);
   j["verdict"] = optim::ToString(verdict);
   j["summary"] = headline;
+  j["scope"] = result.scope;
   if (recommended) {
-    const CandidateOutcome& c = *recommended;
-    ordered_json rec = {{"material", c.material.name},
-                        {"family", c.material.family},
-                        {"thickness_m", *c.recommended_thickness_m},
-                        {"min_safe_thickness_m", Nullable(c.min_safe_thickness_m)},
-                        {"stock_thickness_beyond_max_m", Nullable(c.stock_thickness_beyond_max_m)},
-                        {"youngs_modulus_Pa", c.material.youngs_modulus_Pa},
-                        {"poisson_ratio", c.material.poisson_ratio},
-                        {"poisson_assumed", c.material.poisson_assumed},
-                        {"laceration_ratio", c.score.laceration_ratio},
-                        {"contusion_ratio", c.score.contusion_ratio},
-                        {"margin", c.margin},
-                        {"safe", c.safe},
-                        {"fully_compressed", c.score.peaks.fully_compressed},
-                        {"compression_ratio", c.score.compression_ratio}};
-    j["recommendation"] = rec;
+    j["recommendation"] = CandidateJson(*recommended, rule);
   } else {
     j["recommendation"] = nullptr;
   }
-  j["continuous_optimum"] = {{"youngs_modulus_Pa", continuous.score.design.youngs_modulus_Pa},
-                             {"thickness_m", continuous.score.design.thickness_m},
-                             {"poisson_ratio", continuous.score.poisson_ratio},
-                             {"laceration_ratio", continuous.score.laceration_ratio},
-                             {"contusion_ratio", continuous.score.contusion_ratio},
-                             {"safe", continuous.score.safe(sf)},
-                             {"admissible", continuous.score.admissible(sf, criterion)},
-                             {"fully_compressed", continuous.score.peaks.fully_compressed},
-                             {"compression_ratio", continuous.score.compression_ratio},
-                             {"every_modulus_fully_compressed", continuous.every_modulus_fully_compressed},
-                             {"needed", !bare_safe},
-                             {"source", continuous.source}};
+  ordered_json optimum = {{"youngs_modulus_Pa", continuous.score.design.youngs_modulus_Pa},
+                          {"thickness_m", continuous.score.design.thickness_m},
+                          {"poisson_ratio", continuous.score.poisson_ratio},
+                          {"safe", continuous.score.safe(sf)},
+                          {"admissible", continuous.score.admissible(sf, criterion)},
+                          {"margin", continuous.score.margin(rule)}};
+  optimum.update(internal::RatiosJson(continuous.score, rule));
+  optimum["every_modulus_fully_compressed"] = continuous.every_modulus_fully_compressed;
+  optimum["needed"] = !bare_safe;
+  optimum["source"] = continuous.source;
+  j["continuous_optimum"] = optimum;
   j["bare_robot"] = {{"laceration_ratio", bare.laceration_ratio},
                      {"contusion_ratio", bare.contusion_ratio},
+                     {"max_compressive_stress_Pa", bare.peaks.max_compressive_stress_Pa},
+                     {"peak_force_N", bare.peaks.peak_force_N},
                      {"safe", bare_safe}};
   ordered_json list = ordered_json::array();
-  for (const CandidateOutcome& c : candidates) list.push_back(CandidateJson(c));
+  for (const CandidateOutcome& c : candidates) list.push_back(CandidateJson(c, rule));
   j["candidates"] = list;
   j["solver"] = {{"termination", optim::ToString(termination)},
                  {"evaluations", evaluations},

@@ -8,6 +8,7 @@
 
 #include "covopt/core/quantity.hpp"
 #include "json_number.hpp"
+#include "limits_json.hpp"
 
 namespace covopt::report {
 namespace {
@@ -50,6 +51,7 @@ ordered_json WorstJson(const optim::UncertaintyBox& box, const optim::WorstCase&
   j["laceration_ratio"] = Number(w.laceration_ratio);
   j["contusion_ratio"] = Number(w.contusion_ratio);
   j["compression_ratio"] = Number(w.compression_ratio);
+  j["crush_ratio"] = Number(w.crush_ratio);
   j["fully_compressed"] = w.fully_compressed;
   j["governing_ratio"] = Number(w.governing_ratio);
   j["binding"] = optim::ToString(w.binding);
@@ -107,11 +109,14 @@ ordered_json LimitsJson(const InjuryLimits& limits, double safety_factor) {
 }
 
 ordered_json MaterialJson(const optim::CandidateMaterial& m) {
+  const bool crushes = m.crush_behaviour == materials::CrushBehaviour::kCrushes;
   return {{"material", m.name},
           {"family", m.family},
           {"youngs_modulus_Pa", m.youngs_modulus_Pa},
           {"poisson_ratio", m.poisson_ratio},
-          {"poisson_assumed", m.poisson_assumed}};
+          {"poisson_assumed", m.poisson_assumed},
+          {"crush_behaviour", materials::ToString(m.crush_behaviour)},
+          {"compressive_strength_Pa", crushes ? ordered_json(m.compressive_strength_Pa) : ordered_json(nullptr)}};
 }
 
 std::string Dump(const ordered_json& j, int indent) { return j.dump(indent); }
@@ -151,7 +156,7 @@ std::string RobustDesignJson(const optim::UncertaintyBox& box, const optim::Robu
                              std::span<const std::string> warnings, int indent) {
   ordered_json j;
   j["problem"] = "robust-thinnest";
-  j["criterion"] = optim::ToString(result.criterion);
+  j["criterion"] = internal::CriterionJson(options.design.rule());
   j["verdict"] = optim::ToString(result.verdict);
   ordered_json rec = nullptr, setting = nullptr;
   if (result.recommendation) {
@@ -161,6 +166,11 @@ std::string RobustDesignJson(const optim::UncertaintyBox& box, const optim::Robu
     rec["min_safe_thickness_m"] = Number(c.outcome.min_safe_thickness_m);
     rec["laceration_ratio"] = c.worst_case.laceration_ratio;
     rec["contusion_ratio"] = c.worst_case.contusion_ratio;
+    rec["crush_ratio"] = c.outcome.score.crush_check == optim::CrushCheck::kChecked
+                             ? ordered_json(c.worst_case.crush_ratio)
+                             : ordered_json(nullptr);
+    rec["governing_criterion"] = optim::ToString(c.worst_case.binding);
+    rec["governing_ratio"] = c.worst_case.governing_ratio;
     rec["margin"] = c.outcome.margin;
     rec["worst_case"] = WorstJson(box, c.worst_case);
     rec["worst_case_at_thinnest"] =
@@ -199,6 +209,8 @@ std::string RobustDesignJson(const optim::UncertaintyBox& box, const optim::Robu
     row["thickness_m"] = Number(c.outcome.recommended_thickness_m);
     row["evaluated_thickness_m"] = c.outcome.score.design.thickness_m;
     row["safe"] = c.outcome.safe;
+    row["governing_criterion"] = optim::ToString(c.worst_case.binding);
+    row["governing_ratio"] = c.worst_case.governing_ratio;
     row["margin"] = c.outcome.margin;
     row["scenario_rounds"] = c.scenario_rounds;
     row["unconfirmed"] = c.unconfirmed;
@@ -225,7 +237,7 @@ std::string ProbabilityDesignJson(const optim::UncertaintyBox& box, const optim:
   };
   ordered_json j;
   j["problem"] = "probability";
-  j["criterion"] = optim::ToString(result.criterion);
+  j["criterion"] = internal::CriterionJson(options.design.rule());
   j["verdict"] = optim::ToString(result.verdict);
   ordered_json rec = nullptr;
   if (result.recommendation) {
@@ -242,6 +254,8 @@ std::string ProbabilityDesignJson(const optim::UncertaintyBox& box, const optim:
                        : "no catalog material meets the probability target within the maximum thickness";
   }
   j["max_probability"] = result.max_probability;
+  j["target_test"] = "the upper end of the Wilson 95 % interval of P(inadmissible) is at or below max_probability";
+  j["allowed_failures"] = result.allowed_failures;
   j["samples"] = options.sampling.samples;
   j["seed"] = options.sampling.seed;
   j["uncertain_inputs"] = InputsJson(box);

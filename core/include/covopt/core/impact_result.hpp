@@ -39,6 +39,21 @@ struct ImpactPeaks {
   /// the default cumulative thresholds, max(0.8 b_c, 0.8 b_s) with the literal ones, and
   /// t1 = 0.8 b_s without a covering. fully_compressed == (δ_max > this).
   double full_compression_penetration_m = 0.0;
+  /// δ where the covering's own travel begins [m]: the start of phase 2 (covering on bone),
+  /// t1 = 0.8 b_s; 0 where the literal reading leaves no phase 2; equal to
+  /// full_compression_penetration_m without a covering (no travel).
+  double covering_travel_start_m = 0.0;
+
+  /// The share of the covering's own travel used at the peak [-]:
+  /// (δ_max − s) / (t2 − s), s = covering_travel_start_m, t2 = full_compression_penetration_m;
+  /// 0 while δ_max <= s and without a covering, 1 at full compression, > 1 beyond it. With the
+  /// default thresholds (δ_max − 0.8 b_s) / (0.8 b_c): the scalp's travel does not count
+  /// (docs/model.md §6). A safety factor SF reserves travel: SF × this <= 1.
+  double covering_compression_ratio() const noexcept {
+    const double travel = full_compression_penetration_m - covering_travel_start_m;
+    if (!(travel > 0.0) || !(max_penetration_m > covering_travel_start_m)) return 0.0;
+    return (max_penetration_m - covering_travel_start_m) / travel;
+  }
 };
 
 /// The peaks of a contact whose maximum penetration δ_max [m] lies in segment `segment` of

@@ -47,6 +47,7 @@
 
 #include <covopt/core/impact_result.hpp>
 #include <covopt/core/scene.hpp>
+#include <covopt/materials/material.hpp>
 
 #include "covopt/optim/backends.hpp"
 #include "covopt/optim/oracle.hpp"
@@ -72,7 +73,17 @@ struct CandidateMaterial {
   bool poisson_assumed = false;
   /// The catalog family ("foam", "elastomer", ...); empty when not from a catalog.
   std::string family{};
+  /// Whether it crushes (docs/model.md §12). Default: unknown, which the default rule refuses
+  /// as a recommendation; SelectCandidates copies the catalog's.
+  materials::CrushBehaviour crush_behaviour = materials::CrushBehaviour::kUnknown;
+  /// Compressive strength [Pa] (yield or 10 % strain), > 0; used when crush_behaviour is
+  /// kCrushes.
+  double compressive_strength_Pa = 0.0;
 };
+
+/// Sets score.crush_check and score.crush_ratio (σ_c,max / strength) for `material`
+/// (docs/model.md §12); a failed score keeps an infinite crush ratio.
+void CheckCrush(const CandidateMaterial& material, DesignScore& score) noexcept;
 
 /// Options of the design searches. Defaults: the bounds, DIRECT-L then Ipopt.
 struct DesignOptions {
@@ -84,8 +95,20 @@ struct DesignOptions {
   DesignCriterion criterion() const noexcept {
     return allow_full_compression ? DesignCriterion::kPaper : DesignCriterion::kNoFullCompression;
   }
-  /// Ratios must be <= 1/safety_factor, in [1, 100] [-]. Default: 1.
+  /// false (default): a catalog material whose peak compressive stress times the safety factor
+  /// exceeds its compressive strength is not admissible (criterion "no-crush"). true: a
+  /// sacrificial liner, crushed at the first impact, may be recommended (warned).
+  bool allow_crushing = false;
+  /// false (default): a material of unknown strength is never recommended. true: it may be,
+  /// with a warning that the design is unverified for crushing.
+  bool allow_unknown_strength = false;
+  /// Every ratio that counts (injury, covering travel, crush) must be <= 1/safety_factor, in
+  /// [1, 100] [-]. Default: 1.
   double safety_factor = 1.0;
+  /// The admissibility rule these options define.
+  DesignRule rule() const noexcept {
+    return DesignRule{safety_factor, criterion(), allow_crushing, allow_unknown_strength};
+  }
   /// ν_c of the continuous design [-] (docs/model.md §1: 0.25 where none is given).
   double covering_poisson_ratio = 0.25;
   /// The laceration [Pa] and contusion [J/m²] limits. Default: 1 MPa and 2.52 J/cm².
@@ -157,7 +180,7 @@ struct CandidateOutcome {
   /// Score at the recommended thickness (problem a), at the given thickness (problem b), or at
   /// the maximum thickness when the material is not safe within the bound.
   DesignScore score;
-  double margin = 0.0;  ///< score.margin(safety_factor)
+  double margin = 0.0;  ///< score.margin(rule): 1 − SF × the governing ratio over every criterion
   /// Admissible under the options' criterion (safe, and not fully compressed by default).
   bool safe = false;
 };

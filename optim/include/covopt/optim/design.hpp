@@ -64,6 +64,12 @@ struct DesignResult {
   std::string message;
   DesignProblem problem = DesignProblem::kThinnestSafeCovering;
   DesignCriterion criterion = DesignCriterion::kNoFullCompression;
+  /// Every criterion the verdicts apply (injury, full compression, crush) and the safety factor.
+  DesignRule rule;
+  /// What the verdicts cover and what they do not, one sentence each: the criteria (Park et
+  /// al.'s skin model for the head), and that ISO/TS 15066 (A.3.2) permits no transient
+  /// contact with the skull, forehead or face, with its quasi-static limits (HeadStandardNote).
+  std::vector<std::string> scope;
   DesignVerdict verdict = DesignVerdict::kNothingSafe;
   /// The thickness of problem (b) [m]; empty for problem (a).
   std::optional<double> thickness_m;
@@ -91,6 +97,12 @@ struct DesignResult {
   /// and the oracle.
   std::string BriefReport() const;
 };
+
+/// What a verdict on the head covers, for every output that judges a head impact: the
+/// criteria of `rule` in words, then what ISO/TS 15066:2016 says of the head (Annex A, A.3.2:
+/// transient contact with the skull, forehead and face is not permitted; quasi-static limits
+/// of Table A.2: skull and forehead 130 N and 130 N/cm², face 65 N and 110 N/cm²).
+std::vector<std::string> HeadVerdictScope(const DesignRule& rule);
 
 /// Candidate materials from a catalog: the entries named in `names` (catalog names, compared
 /// ignoring case, in the order given) or, when `names` is empty, every entry in catalog order;

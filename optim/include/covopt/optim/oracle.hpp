@@ -26,6 +26,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <covopt/core/impact_result.hpp>
 #include <covopt/core/scene.hpp>
@@ -47,6 +48,57 @@ enum class DesignCriterion {
 /// "no-full-compression" or "paper".
 const char* ToString(DesignCriterion criterion) noexcept;
 
+/// One criterion of the design rule, or none (docs/model.md §6, §12).
+enum class LimitingCriterion {
+  kNone,             ///< nothing binds (within a searched range)
+  kLaceration,       ///< σ_t,max against the laceration limit / safety factor
+  kContusion,        ///< e_A,max against the contusion limit / safety factor
+  kFullCompression,  ///< the covering's travel used against 1 / safety factor (default criterion)
+  kCrush,            ///< σ_c,max against the material's compressive strength / safety factor
+};
+/// "none", "laceration", "contusion", "full-compression", "crush".
+const char* ToString(LimitingCriterion criterion) noexcept;
+
+/// How the crush criterion applies to a design (docs/model.md §12).
+enum class CrushCheck {
+  kNoMaterial,       ///< a continuous design or the bare robot: no material to check
+  kChecked,          ///< the material's compressive strength is known: crush_ratio is set
+  kDoesNotCrush,     ///< an elastomer, gel or flexible foam: full compression is its limit
+  kUnknownStrength,  ///< the material's strength is unknown: the design is unverified for crushing
+};
+/// "no-material", "checked", "does-not-crush", "unknown-strength".
+const char* ToString(CrushCheck check) noexcept;
+
+/// What makes a design admissible (docs/model.md §6, §12): the safety factor SF times every
+/// ratio that counts is <= 1. The injury ratios always count; the covering's travel ratio
+/// (DesignScore::compression_ratio) under the no-full-compression criterion, with a
+/// covering; the crush ratio for a material of known strength unless crushing is allowed.
+/// A material of unknown strength is inadmissible unless crushing or unknown strengths are
+/// allowed.
+struct DesignRule {
+  /// SF in [1, 100] [-]. It derates the injury limits and the strength, and reserves the
+  /// covering's travel: SF × (δ_max − t1) / (0.8 b_c) <= 1.
+  double safety_factor = 1.0;
+  /// kNoFullCompression (default): the covering's travel counts. kPaper: it does not.
+  DesignCriterion criterion = DesignCriterion::kNoFullCompression;
+  /// A sacrificial liner: the crush ratio is reported but does not count. Default: false.
+  bool crushing_allowed = false;
+  /// Materials of unknown strength may be admissible (each is warned about). Default: false.
+  bool unknown_strength_allowed = false;
+  bool compression_counts() const noexcept { return criterion == DesignCriterion::kNoFullCompression; }
+  /// The criteria applied, in words, e.g. "laceration and contusion (Park et al. 2011), no full
+  /// compression, no crushing; safety factor 1".
+  std::string Describe() const;
+  /// The criteria applied, by name ("laceration", "contusion", "full-compression", "crush").
+  std::vector<std::string> Parts() const;
+};
+
+/// The largest ratio that counts under a rule, and its criterion.
+struct GoverningRatio {
+  LimitingCriterion criterion = LimitingCriterion::kLaceration;
+  double ratio = 0.0;  ///< unscaled (the rule's SF multiplies it) [-]
+};
+
 /// The injury ratios of one design.
 struct DesignScore {
   CoveringDesign design;  ///< thickness 0: the bare robot
@@ -54,9 +106,14 @@ struct DesignScore {
   ImpactPeaks peaks;
   double laceration_ratio = 0.0;  ///< σ_t,max / laceration limit
   double contusion_ratio = 0.0;   ///< e_A,max / contusion limit
-  /// δ_max over the penetration at which the covering is fully compressed [-]
-  /// (peaks.full_compression_penetration_m): > 1 means bottomed out. 0 for the bare robot.
+  /// The share of the covering's own travel used at the peak [-]
+  /// (ImpactPeaks::covering_compression_ratio: (δ_max − t1) / (0.8 b_c)): > 1 means bottomed
+  /// out. 0 for the bare robot and while δ_max stays within the scalp's travel.
   double compression_ratio = 0.0;
+  /// Whether and how the crush criterion applies (kNoMaterial unless scored for a material).
+  CrushCheck crush_check = CrushCheck::kNoMaterial;
+  /// σ_c,max / the material's compressive strength [-] when crush_check is kChecked; else 0.
+  double crush_ratio = 0.0;
   /// The oracle could not evaluate this design (a time-path integration failed): the
   /// ratios are +inf and peaks.fully_compressed is set, so it is never safe, admissible or
   /// best under either criterion; the oracle counts it.
@@ -65,15 +122,30 @@ struct DesignScore {
   double worst_ratio() const noexcept {
     return laceration_ratio > contusion_ratio ? laceration_ratio : contusion_ratio;
   }
-  /// Both ratios <= 1/safety_factor.
+  /// Both injury ratios <= 1/safety_factor (the skin criteria alone).
   bool safe(double safety_factor) const noexcept { return worst_ratio() * safety_factor <= 1.0; }
-  /// 1 - safety_factor * worst ratio: >= 0 when safe, the fraction of the (derated) limit
-  /// left over.
-  double margin(double safety_factor) const noexcept { return 1.0 - safety_factor * worst_ratio(); }
-  /// Safe and, under kNoFullCompression, not fully compressed (the bare robot: safe).
+  /// The covering is fully compressed, or uses more than 1/safety_factor of its travel
+  /// (never for the bare robot).
+  bool compression_exceeded(double safety_factor) const noexcept {
+    return !bare() && (peaks.fully_compressed || safety_factor * compression_ratio > 1.0);
+  }
+  /// The compressive strength a material needs for this design not to crush under a safety
+  /// factor [Pa]: SF × σ_c,max (docs/model.md §12).
+  double required_strength_Pa(double safety_factor) const noexcept {
+    return safety_factor * peaks.max_compressive_stress_Pa;
+  }
+  /// The largest ratio that counts under `rule`, and which criterion it is.
+  GoverningRatio governing(const DesignRule& rule) const noexcept;
+  /// 1 − SF × the governing ratio: >= 0 when every counted criterion holds, the fraction of
+  /// the (derated) limit left over on the one that binds.
+  double margin(const DesignRule& rule) const noexcept {
+    return 1.0 - rule.safety_factor * governing(rule).ratio;
+  }
+  /// Every criterion of `rule` holds (the bare robot: the injury ratios).
+  bool admissible(const DesignRule& rule) const noexcept;
+  /// admissible(DesignRule{safety_factor, criterion}): for designs without a material.
   bool admissible(double safety_factor, DesignCriterion criterion) const noexcept {
-    return safe(safety_factor) &&
-           (criterion == DesignCriterion::kPaper || bare() || !peaks.fully_compressed);
+    return admissible(DesignRule{safety_factor, criterion});
   }
 };
 

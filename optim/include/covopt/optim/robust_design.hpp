@@ -197,16 +197,18 @@ struct WorstCase {
   Scene scene;
   double laceration_ratio = 0.0;   ///< σ_t,max / laceration limit [-]
   double contusion_ratio = 0.0;    ///< e_A,max / contusion limit [-]
-  /// δ_max / t2 [-] (DesignScore::compression_ratio); 0 without a covering.
+  /// The covering's travel used [-] (DesignScore::compression_ratio); 0 without a covering.
   double compression_ratio = 0.0;
   bool fully_compressed = false;   ///< the covering is fully compressed at the peak
-  /// g = max(SF r_L, SF r_C, r_δ (default criterion, with a covering)) [-]: what the search
-  /// maximised.
+  /// σ_c,max / the material's compressive strength [-] when a crushing material is judged; else 0.
+  double crush_ratio = 0.0;
+  /// g = SF × max(r_L, r_C, r_δ (default criterion, with a covering), r_crush (a material of
+  /// known strength, crushing not allowed)) [-]: what the search maximised.
   double governing_ratio = 0.0;
   /// The criterion that attains g (kNone never).
   LimitingCriterion binding = LimitingCriterion::kLaceration;
-  /// SF r_L <= 1, SF r_C <= 1 and, under the default criterion, not fully compressed: the
-  /// whole box is admissible (as far as the search can tell).
+  /// g <= 1 and, under the default criterion, not fully compressed: the whole box is
+  /// admissible (as far as the search can tell).
   bool admissible = false;
   /// The largest g over the corners, when they were enumerated (GlobalSearchOptions::
   /// max_corner_inputs): how far a corners-only check would have fallen short.
@@ -364,6 +366,11 @@ struct ProbabilityEstimate {
 /// The estimate and Wilson interval of `count` events in `samples` (> 0) draws.
 ProbabilityEstimate WilsonEstimate(std::uint64_t count, std::uint64_t samples);
 
+/// The most events out of `samples` whose Wilson 95 % upper bound is still <= `probability`
+/// (the bound rises with the count); empty when even 0 events' bound, z²/(n + z²), is above
+/// it (too few samples to show the target).
+std::optional<std::uint64_t> MostEventsWithUpperBoundWithin(double probability, std::uint64_t samples);
+
 /// Options of EstimateInjuryProbability.
 struct InjuryProbabilityOptions {
   /// Scenes drawn, in [1, 1e10]. Default: 100 000.
@@ -467,6 +474,8 @@ struct ProbabilityDesign {
   DesignVerdict verdict = DesignVerdict::kNothingSafe;
   DesignCriterion criterion = DesignCriterion::kNoFullCompression;
   double max_probability = 0.0;
+  /// The most failing samples a design may have: its 95 % upper bound is then <= max_probability.
+  std::uint64_t allowed_failures = 0;
   InjuryProbability bare_robot;
   std::optional<ProbabilityContinuousOptimum> continuous;
   /// Materials meeting the target by recommended thickness, ties by estimate; then the rest by
@@ -479,14 +488,18 @@ struct ProbabilityDesign {
   double seconds = 0.0;
 };
 
-/// The thinnest covering whose estimated probability of failing the criterion (any injury or,
-/// under the default criterion, full compression) is <= max_probability. Every design is
-/// judged on the same N scenes (common random numbers: sample i is DrawInputs(box, seed, i)
-/// for every design), so designs differ by their covering alone, not by sampling noise; the
-/// sampling error of the answer is its estimate's Wilson interval (at_design). A design is
-/// rejected as soon as its failures exceed floor(P N), which does not depend on the order
-/// the samples are counted in.
-/// @throws std::invalid_argument for bad options or a range on a covering field.
+/// The thinnest covering whose probability of failing the criterion (any injury or, under the
+/// default criterion, full compression; crushing for a material of known strength) is shown
+/// to be <= max_probability: the upper end of its estimate's Wilson 95 % interval is at or
+/// below it, not just the point estimate. Every design is judged on the same N scenes (common
+/// random numbers: sample i is DrawInputs(box, seed, i) for every design), so designs differ
+/// by their covering alone, not by sampling noise. A design is rejected as soon as its
+/// failures exceed the most whose upper bound is within the target
+/// (MostEventsWithUpperBoundWithin), which does not depend on the order the samples are
+/// counted in. A material of unknown strength meets no target unless the design options allow
+/// it or crushing.
+/// @throws std::invalid_argument for bad options, a range on a covering field, or too few
+///         samples for the target (even 0 failures would leave its upper bound above it).
 ProbabilityDesign FindProbabilityDesign(const UncertaintyBox& box,
                                         std::span<const CandidateMaterial> materials,
                                         const ProbabilityDesignOptions& options = {});

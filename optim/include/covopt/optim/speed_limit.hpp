@@ -76,15 +76,7 @@ enum class SpeedLimitStatus {
 /// "limited", "safe-up-to-search-limit", "no-safe-value", "evaluation-failed".
 const char* ToString(SpeedLimitStatus status) noexcept;
 
-/// Which criterion sets the limit.
-enum class LimitingCriterion {
-  kNone,             ///< nothing binds within the searched range
-  kLaceration,       ///< σ_t,max reaches the laceration limit / safety factor
-  kContusion,        ///< e_A,max reaches the contusion limit / safety factor
-  kFullCompression,  ///< δ_max reaches t2: the covering bottoms out (default criterion)
-};
-/// "none", "laceration", "contusion", "full-compression".
-const char* ToString(LimitingCriterion criterion) noexcept;
+/// LimitingCriterion (oracle.hpp): the criterion that binds a limit.
 
 /// Options of MaxSafeSpeed and MaxSafeMass.
 struct SpeedLimitOptions {
@@ -94,7 +86,8 @@ struct SpeedLimitOptions {
   DesignCriterion criterion() const noexcept {
     return allow_full_compression ? DesignCriterion::kPaper : DesignCriterion::kNoFullCompression;
   }
-  /// Ratios must be <= 1/safety_factor, in [1, 100] [-]. Default: 1.
+  /// Every ratio that counts (injury, the covering's travel, crush) must be <= 1/safety_factor,
+  /// in [1, 100] [-]. Default: 1.
   double safety_factor = 1.0;
   /// The laceration [Pa] and contusion [J/m²] limits, each in (0, inf). Default: 1 MPa and
   /// 2.52 J/cm².
@@ -108,22 +101,36 @@ struct SpeedLimitOptions {
   /// Which path judges the impacts: auto (default; the exact path's δ-axis solve where the
   /// scene admits it, a bracketed bisection on the time path otherwise), exact, or time-path.
   OracleOptions oracle;
+  /// The covering material's compressive strength [Pa], finite and > 0, when it is a material
+  /// that crushes: the no-crush criterion SF σ_c,max <= strength then applies (docs/model.md
+  /// §12). 0 (default): no crush check (a covering given by its modulus, a material that does
+  /// not crush, or one of unknown strength; the caller says which).
+  double covering_compressive_strength_Pa = 0.0;
+  /// A sacrificial liner: the crush ratio is reported but does not limit. Default: false.
+  bool allow_crushing = false;
+  /// The admissibility rule of these options: crushing is checked where the strength is known.
+  DesignRule rule() const noexcept {
+    return DesignRule{safety_factor, criterion(), allow_crushing, !(covering_compressive_strength_Pa > 0.0)};
+  }
 };
 
 /// The ratios of the impact at a limit, as the exact path computes them there.
 struct LimitRatios {
   double laceration_ratio = 0.0;   ///< σ_t,max / laceration limit [-]
   double contusion_ratio = 0.0;    ///< e_A,max / contusion limit [-]
-  /// δ_max / t2 [-] (DesignScore::compression_ratio): > 1 fully compressed; 0 without a
-  /// covering.
+  /// The covering's travel used [-] (DesignScore::compression_ratio): > 1 fully compressed; 0
+  /// without a covering.
   double compression_ratio = 0.0;
+  /// σ_c,max / the covering's compressive strength [-]; 0 without a strength.
+  double crush_ratio = 0.0;
   double max_penetration_m = 0.0;  ///< δ_max [m]
 };
 
 /// One impact judged by the rules of a limit search.
 struct ImpactJudgement {
   LimitRatios ratios;       ///< the exact path's ratios at the scene's own speed and mass
-  /// Both ratios <= 1/safety_factor and, under the default criterion, not fully compressed.
+  /// Every ratio that counts <= 1/safety_factor and, under the default criterion, not fully
+  /// compressed.
   bool admissible = false;
   /// The time path failed on this impact (the ratios are then +inf and it is not admissible).
   bool failed = false;
