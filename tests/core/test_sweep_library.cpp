@@ -137,11 +137,15 @@ TEST_CASE("each sweep row is SolveExact on its scene, judged against the spec's 
     CHECK(row.assessment.laceration.safe == (1.5 * laceration <= 1.0));
     CHECK(row.assessment.contusion.safe == (1.5 * contusion <= 1.0));
     CHECK(row.worst_ratio == std::max(laceration, contusion));
-    // The compression ratio crosses 1 where the covering bottoms out.
-    CHECK((row.compression_ratio > 1.0) == direct.peaks.fully_compressed);
+    // The covering's travel ratio crosses 1 where it bottoms out; the bare robot has none. The
+    // safety factor reserves travel too: 1.5 × the ratio <= 1.
+    CHECK(row.compression_ratio == direct.peaks.covering_compression_ratio());
+    if (row.covered) CHECK((row.compression_ratio > 1.0) == direct.peaks.fully_compressed);
+    if (!row.covered) CHECK(row.compression_ratio == 0.0);
     CHECK(row.covered == (row.y > 0.0));
     CHECK(row.admissible ==
-          (row.assessment.safe() && !(row.covered && direct.peaks.fully_compressed)));
+          (row.assessment.safe() &&
+           !(row.covered && (direct.peaks.fully_compressed || 1.5 * row.compression_ratio > 1.0))));
     REQUIRE(row.warnings.size() == direct.coded_warnings.size());
     for (std::size_t w = 0; w < row.warnings.size(); ++w) {
       CHECK(row.warnings[w].code == direct.coded_warnings[w].code);

@@ -161,7 +161,8 @@ TEST_CASE("Within 5 % of full compression warns, and further from it, or beyond 
   const auto warnings = Check(at_share(0.98));
   const ValidityWarning* warning = Find(warnings, ValidityCode::kNearFullCompression);
   REQUIRE(warning != nullptr);
-  CHECK_THAT(warning->message, Catch::Contains("δ_max 14.2 mm, full compression at 14.4 mm (98 %"));
+  CHECK_THAT(warning->message, Catch::Contains("δ_max 14.2 mm, full compression at δ = 14.4 mm (the scalp's travel "
+                                               "2.4 mm plus the covering's 12 mm; 98 % of the covering's travel"));
   // Its wording does not claim full compression (programs and tests look for that phrase).
   CHECK(warning->message.find("fully compressed") == std::string::npos);
 }

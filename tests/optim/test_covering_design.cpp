@@ -21,11 +21,18 @@ using namespace covopt::optim;
 
 namespace {
 
+/// Materials for the tests of the injury and travel criteria: declared not to crush, so the
+/// crush criterion (tests/optim/test_crush_criterion.cpp) leaves them alone.
+std::vector<CandidateMaterial> Elastic(std::vector<CandidateMaterial> materials) {
+  for (CandidateMaterial& m : materials) m.crush_behaviour = covopt::materials::CrushBehaviour::kDoesNotCrush;
+  return materials;
+}
+
 std::vector<CandidateMaterial> TableIv() {
-  return {{"polystyrene 27.6 MPa", 27.6e6, 0.22},
-          {"polystyrene 48.3 MPa", 48.3e6, 0.25},
-          {"polyurethane 62.1 MPa", 62.1e6, 0.20},
-          {"polyurethane 137.9 MPa", 137.9e6, 0.29}};
+  return Elastic({{"polystyrene 27.6 MPa", 27.6e6, 0.22},
+                  {"polystyrene 48.3 MPa", 48.3e6, 0.25},
+                  {"polyurethane 62.1 MPa", 62.1e6, 0.20},
+                  {"polyurethane 137.9 MPa", 137.9e6, 0.29}});
 }
 
 }  // namespace
@@ -156,7 +163,7 @@ TEST_CASE("The default criterion moves the paper's optimum to a covering that do
 TEST_CASE("A 2 kg robot is not made 'safe' by a thin covering that bottoms out at once", "[design]") {
   Scene scene;
   scene.robot.mass_kg = 2.0;
-  const std::vector<CandidateMaterial> sponge = {{"sponge", 1.5e6, 0.25}};
+  const std::vector<CandidateMaterial> sponge = Elastic({{"sponge", 1.5e6, 0.25}});
   DesignOptions paper;
   paper.allow_full_compression = true;
   const ThinnestSafeCovering artefact = FindThinnestSafeCovering(scene, sponge, paper);
@@ -177,7 +184,7 @@ TEST_CASE("A 2 kg robot is not made 'safe' by a thin covering that bottoms out a
 
 TEST_CASE("Stock rounding that would pass the maximum thickness keeps the exact thickness and says so",
           "[design]") {
-  const std::vector<CandidateMaterial> foam = {{"foam", 10.3e6, 0.25}};
+  const std::vector<CandidateMaterial> foam = Elastic({{"foam", 10.3e6, 0.25}});
   const ThinnestSafeCovering free = FindThinnestSafeCovering(Scene{}, foam);
   REQUIRE(free.recommendation.has_value());
   const double exact = *free.candidates[0].min_safe_thickness_m;

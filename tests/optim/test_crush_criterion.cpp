@@ -53,7 +53,7 @@ Scene Slow() {
 
 }  // namespace
 
-TEST_CASE("A strength equal to the peak compressive stress passes; a hair less crushes", "[design][crush]") {
+TEST_CASE("A strength equal to the peak compressive stress passes, a hair less crushes", "[design][crush]") {
   // 40 mm of a 5 MPa foam on the paper's scene: injury and travel ratios well below 1/2.
   const double thickness = 0.040, modulus = 5e6;
   const DesignScore probe = ScoreOn(NotCrushing("probe", modulus), thickness, Slow());

@@ -53,12 +53,16 @@ class BruteForce {
  public:
   explicit BruteForce(const CheckScene& c) : c_(c) {}
 
-  /// Worst ratio × safety factor of a design; +inf when the criterion rejects its compression.
+  /// Worst ratio × safety factor of a design; +inf when the criterion rejects its compression:
+  /// fully compressed, or (the safety factor's travel reserve, docs/model.md §6) more than
+  /// 0.8 b_c / SF of the covering's own travel beyond the scalp's 0.8 b_s used.
   double Penalised(double log_modulus, double thickness_m) const {
     Scene s = c_.scene;
     s.covering = {std::pow(10.0, log_modulus), 0.25, thickness_m};
     const ImpactPeaks peaks = ExactPeaks(ImpactModel::FromScene(s));
-    if (!c_.allow_full_compression && peaks.fully_compressed) return kInf;
+    const double t1 = 0.8 * s.scalp.thickness_m;
+    const bool reserve_used = peaks.max_penetration_m > t1 + 0.8 * thickness_m / c_.safety_factor;
+    if (!c_.allow_full_compression && (peaks.fully_compressed || reserve_used)) return kInf;
     const InjuryAssessment a = Assess(peaks);
     return c_.safety_factor * std::max(a.laceration.ratio, a.contusion.ratio);
   }

@@ -58,10 +58,13 @@ TEST_CASE("Design answers both problems as the functions it wraps, in one call",
   REQUIRE(a.recommendation.has_value());
   REQUIRE(a.candidates.size() == direct.candidates.size());
   CHECK(a.candidates[*a.recommendation].material.name == direct.candidates[*direct.recommendation].material.name);
-  CHECK(a.message == "Recommended: " + a.candidates[*a.recommendation].material.name + " at 16.00 mm.");
+  // The old 16 mm of XPS Foamular 250 would crush (issue 21): a material that does not crush.
+  CHECK(a.message == "Recommended: elastomer Shore A60 at 20.00 mm.");
   CHECK_THAT(a.BriefReport(), Catch::StartsWith("covering-found (no-full-compression): Recommended:"));
   CHECK(a.covering_needed());
-  CHECK(a.warnings.empty());  // the default recommendation is inside the model's domain
+  // It uses 99.5 % of its travel: the near-full-compression warning says so.
+  REQUIRE(a.warnings.size() == 1);
+  CHECK_THAT(a.warnings.front(), Catch::Contains("within 5 % of full compression"));
 
   request.thickness_m = 0.010;
   const DesignResult b = Design(request);

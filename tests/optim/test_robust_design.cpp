@@ -54,7 +54,9 @@ Ratios RatiosOf(const Scene& scene) {
   r.contusion = peaks.max_energy_density_J_per_m2 / 25200.0;
   r.covered = model.has_covering();
   if (r.covered) {
-    r.compression = peaks.max_penetration_m / peaks.full_compression_penetration_m;
+    // The covering's own travel used, beyond the scalp's 0.8 b_s (docs/model.md §6).
+    const double t1 = 0.8 * scene.scalp.thickness_m;
+    r.compression = std::max(0.0, peaks.max_penetration_m - t1) / (peaks.full_compression_penetration_m - t1);
     r.fully_compressed = peaks.fully_compressed;
   }
   return r;
@@ -90,8 +92,13 @@ double LargestSafeHeadMass(Scene scene, double low, double high) {
   return low;
 }
 
+/// Three moduli for the robust searches' mechanics, declared not to crush (the crush criterion
+/// has its own tests, tests/optim/test_crush_criterion.cpp).
 std::vector<CandidateMaterial> SomeMaterials() {
-  return {{"polystyrene foam 27.6", 27.6e6, 0.22}, {"XPS Foamular 250", 16.71e6, 0.25}, {"EPS geofoam EPS39", 10.3e6, 0.25}};
+  std::vector<CandidateMaterial> materials = {
+      {"polystyrene foam 27.6", 27.6e6, 0.22}, {"XPS Foamular 250", 16.71e6, 0.25}, {"EPS geofoam EPS39", 10.3e6, 0.25}};
+  for (CandidateMaterial& m : materials) m.crush_behaviour = covopt::materials::CrushBehaviour::kDoesNotCrush;
+  return materials;
 }
 
 void RequireSameEstimate(const ProbabilityEstimate& a, const ProbabilityEstimate& b) {
@@ -276,7 +283,7 @@ TEST_CASE("Bad ranges are refused naming the field, the value and the range", "[
   ProbabilityDesignOptions certain;
   certain.max_probability = 1.0;
   CHECK_THROWS_WITH(FindProbabilityDesign(head, SomeMaterials(), certain),
-                    Contains("max injury probability must be in [0, 1) (got 1)"));
+                    Contains("max injury probability must be in (0, 1) (got 1)"));
   ElasticityOptions step;
   step.log_step = 0.5;
   CHECK_THROWS_WITH(ComputeElasticities(scene, step), Contains("log step must be in [1e-6, 0.1] (got 0.5)"));
@@ -573,7 +580,10 @@ TEST_CASE("The probability design meets its target on common samples, and a thin
   const ProbabilityDesign design = FindProbabilityDesign(box, materials, options);
   REQUIRE(design.verdict == DesignVerdict::kCoveringFound);
   CHECK(design.bare_robot.any.probability == 1.0);
-  const std::uint64_t allowed = static_cast<std::uint64_t>(std::floor(0.05 * 4000));
+  // The target is met on the upper end of the 95 % interval: fewer failures than 5 % of 4000.
+  const std::uint64_t allowed = *MostEventsWithUpperBoundWithin(0.05, 4000);
+  CHECK(allowed < 200);
+  CHECK(design.allowed_failures == allowed);
   InjuryProbabilityOptions sampling = options.sampling;
   for (const ProbabilityCandidate& c : design.candidates) {
     INFO(c.material.name);
