@@ -61,7 +61,11 @@ TEST_CASE("speed-limit prints the library's max safe speed for the paper's scene
   const covopt::optim::SpeedLimit expected = covopt::optim::MaxSafeSpeed(covopt::Scene{});
   CHECK(run.out.find(fmt::format("{:.4g} m/s", expected.max_safe_speed_m_per_s)) != std::string::npos);
   CHECK(run.out.find("contusion") != std::string::npos);
-  CHECK(run.out.find("Criterion  safe, and the covering not fully compressed") != std::string::npos);
+  CHECK(run.out.find("Criterion  no laceration and no contusion (Park et al. 2011's skin limits), the covering not "
+                     "fully compressed") != std::string::npos);
+  // No covering was given: the default one is assumed, and said so; so is the head's scope.
+  CHECK(run.out.find("no covering given: the default is assumed") != std::string::npos);
+  CHECK(run.out.find("A.3.2") != std::string::npos);
 }
 
 TEST_CASE("speed-limit --json: one row per mass of a range, each the library's answer to the bit", "[speed_limit]") {
@@ -92,7 +96,8 @@ TEST_CASE("speed-limit --json: one row per mass of a range, each the library's a
     CHECK(row["max_safe_speed_m_per_s"].get<double>() < previous);  // heavier is slower
     previous = row["max_safe_speed_m_per_s"].get<double>();
   }
-  CHECK(j["warnings"].empty());
+  REQUIRE(j["warnings"].size() == 1);  // a covering given by its modulus has no strength to check
+  CHECK_THAT(j["warnings"][0].get<std::string>(), Catch::StartsWith("the covering is given by its modulus"));
 }
 
 TEST_CASE("speed-limit --solve-for mass: one row per speed, 'fixed' when even a fixed robot is safe",
@@ -111,8 +116,8 @@ TEST_CASE("speed-limit --solve-for mass: one row per speed, 'fixed' when even a 
     CHECK(rows[i]["max_safe_mass_kg"].get<double>() == expected.max_safe_mass_kg);
     CHECK(rows[i]["limited_by"] == "contusion");
   }
-  REQUIRE(j["warnings"].size() == 1);
-  CHECK(j["warnings"][0].get<std::string>().find("fixed robot") != std::string::npos);
+  REQUIRE(j["warnings"].size() == 2);  // the assumed default covering, then the fixed robot
+  CHECK(j["warnings"][1].get<std::string>().find("fixed robot") != std::string::npos);
 }
 
 TEST_CASE("speed-limit --csv writes the JSON rows' columns, and '-' prints them", "[speed_limit]") {
@@ -170,8 +175,12 @@ TEST_CASE("speed-limit: several --material give one block of rows each", "[speed
   scene.covering.thickness_m = 0.02;
   scene.covering.youngs_modulus_Pa = catalog.Find("EPS geofoam EPS22")->youngs_modulus_Pa;
   scene.robot.mass_kg = 10.0;
+  // Each block judges crushing with its own material's strength (EPS22: 135 kPa, it binds).
+  covopt::optim::SpeedLimitOptions options;
+  options.covering_compressive_strength_Pa = *catalog.Find("EPS geofoam EPS22")->compressive_strength_Pa;
   CHECK(rows[3]["max_safe_speed_m_per_s"].get<double>() ==
-        covopt::optim::MaxSafeSpeed(scene).max_safe_speed_m_per_s);
+        covopt::optim::MaxSafeSpeed(scene, options).max_safe_speed_m_per_s);
+  CHECK(rows[3]["limited_by"] == "crush");
   const CliRun table = Run({"speed-limit", "--covering-thickness", "20mm", "--material", "XPS Foamular 250",
                             "--material", "EPS geofoam EPS22"});
   REQUIRE(table.exit_code == 0);
@@ -269,7 +278,7 @@ TEST_CASE("speed-limit --oracle: auto takes the exact path's solve on the paper'
   CHECK(j["oracle"]["search"] == "penetration-axis");
   CHECK(j["oracle"]["method"].is_null());
   CHECK_THAT(j["oracle"]["reason"].get<std::string>(), Catch::StartsWith("auto:"));
-  CHECK(j["warnings"].empty());
+  REQUIRE(j["warnings"].size() == 1);  // the assumed default covering
   // --oracle exact says the same as auto here, to the bit.
   const json exact = JsonOf(Run({"speed-limit", "--json", "--oracle", "exact"}));
   CHECK(exact["oracle"]["name"] == "exact");
@@ -277,8 +286,8 @@ TEST_CASE("speed-limit --oracle: auto takes the exact path's solve on the paper'
   // --rtol under auto on a scene the exact path answers: not used, and a warning says so.
   const json unused = JsonOf(Run({"speed-limit", "--json", "--rtol", "1e-6"}));
   CHECK(unused["oracle"]["name"] == "exact");
-  REQUIRE(unused["warnings"].size() == 1);
-  CHECK_THAT(unused["warnings"][0].get<std::string>(),
+  REQUIRE(unused["warnings"].size() == 2);
+  CHECK_THAT(unused["warnings"][1].get<std::string>(),
              Catch::Contains("--rtol is not used: auto chose the exact path") &&
                  Catch::Contains("--oracle time-path to search on the time path"));
 }

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_test_support.hpp"
+#include "covopt/materials/catalog.hpp"
 #include "covopt/optim/trajectory_check.hpp"
 #include "covopt/report/trajectory_json.hpp"
 #include "covopt/robot.hpp"
@@ -90,7 +91,11 @@ TEST_CASE("robot --trajectory --json is the library's check of the same trajecto
   const auto motion = covopt::robot::ContactMotion(chain, covopt::robot::ReadJointTrajectory(kPick, 7),
                                                    Eigen::Vector3d::Zero());
   const auto check = covopt::optim::CheckTrajectory(covopt::Scene{}, covopt::report::MotionSamples(motion));
-  CHECK(j == json::parse(covopt::report::TrajectoryCheckJson(check, motion, covopt::Scene{}, std::nullopt, {})));
+  // No covering was given: the CLI says the default is assumed.
+  const std::vector<std::string> warnings = j["warnings"].get<std::vector<std::string>>();
+  REQUIRE(warnings.size() == 1);
+  CHECK_THAT(warnings.front(), Catch::StartsWith("no covering given"));
+  CHECK(j == json::parse(covopt::report::TrajectoryCheckJson(check, motion, covopt::Scene{}, std::nullopt, {}, warnings)));
   // The numbers themselves, not only their JSON.
   REQUIRE(j["samples"].size() == 101);
   CHECK(j["safe_speed_scale"].get<double>() == check.safe_speed_scale);
@@ -195,7 +200,7 @@ TEST_CASE("robot --trajectory: --json, --csv and the table agree", "[trajectory]
   }
   CHECK(shown == expected);
   CHECK(std::find(shown.begin(), shown.end(), worst) != shown.end());
-  CHECK(table.out.find("Warnings: none") != std::string::npos);
+  CHECK(table.out.find("Warning: no covering given") != std::string::npos);
 }
 
 TEST_CASE("robot --trajectory: the covering, material, safety factor and criterion reach the check",
@@ -208,7 +213,7 @@ TEST_CASE("robot --trajectory: the covering, material, safety factor and criteri
   const json derated = JsonOf(Run(Fr3(kPick, {"--safety-factor", "2", "--json"})));
   CHECK(derated["safety_factor"] == 2.0);
   CHECK(derated["safe_speed_scale"].get<double>() < covered);
-  CHECK(derated["warnings"].size() == 1);  // the safety factor's input warning
+  CHECK(derated["warnings"].size() == 2);  // the safety factor's input warning, the assumed covering
   const json paper = JsonOf(Run(Fr3(kPick, {"--allow-full-compression", "--json"})));
   CHECK(paper["criterion"] == "paper");
 
@@ -220,8 +225,13 @@ TEST_CASE("robot --trajectory: the covering, material, safety factor and criteri
   const auto chain = covopt::robot::KinematicChain::FromUrdfFile(kFr3, {"", "fr3_link8"});
   const auto motion = covopt::robot::ContactMotion(chain, covopt::robot::ReadJointTrajectory(kPick, 7),
                                                    Eigen::Vector3d::Zero());
-  CHECK(material["safe_speed_scale"].get<double>() ==
-        covopt::optim::CheckTrajectory(scene, covopt::report::MotionSamples(motion)).safe_speed_scale);
+  // XPS crushes (25 psi): its strength reaches the check and sets a very low scale.
+  covopt::optim::TrajectoryCheckOptions crush;
+  crush.limit.covering_compressive_strength_Pa =
+      *covopt::materials::Catalog::BuiltIn().Find("XPS Foamular 250")->compressive_strength_Pa;
+  const auto checked = covopt::optim::CheckTrajectory(scene, covopt::report::MotionSamples(motion), crush);
+  CHECK(material["safe_speed_scale"].get<double>() == checked.safe_speed_scale);
+  CHECK(checked.safe_speed_scale < 0.1);
 
   // A contact point 10 cm out of the flange: its own speeds and masses.
   const json offset = JsonOf(Run(Fr3(kPick, {"--point", "0,0,100mm", "--json"})));
