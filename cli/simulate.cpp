@@ -397,36 +397,10 @@ InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const SimulationPlan& p
   return report::JudgeInjuries(peaks, plan.limits, plan.safety_factor);
 }
 
-CoveringCrushCheck CrushCheckOf(const SimulationPlan& plan) {
-  CoveringCrushCheck check;
-  if (!(plan.scene.covering.thickness_m > 0.0)) return check;
+optim::CoveringCrushCheck CrushCheckOf(const SimulationPlan& plan) {
   const bool given = std::any_of(plan.sources.begin(), plan.sources.end(),
                                  [](const auto& source) { return source.first.rfind("covering.", 0) == 0; });
-  if (!given && !plan.covering_material) {
-    check.notes.push_back(fmt::format(
-        "no covering given: the default is assumed, {} of {} (the paper's polystyrene foam, of unknown compressive "
-        "strength, so crushing is not checked); give --covering-thickness with --material (or --covering-modulus), "
-        "or --covering-thickness 0 for the bare robot",
-        FormatQuantity(plan.scene.covering.thickness_m, QuantityKind::kLength),
-        FormatQuantity(plan.scene.covering.youngs_modulus_Pa, QuantityKind::kModulus)));
-    return check;
-  }
-  if (!plan.covering_material) {
-    check.notes.push_back("the covering is given by its modulus, not a catalog material: its compressive strength is "
-                          "not known, so crushing is not checked (give --material)");
-    return check;
-  }
-  const materials::Material& material = *plan.covering_material;
-  switch (material.crush_behaviour) {
-    case materials::CrushBehaviour::kCrushes: check.compressive_strength_Pa = *material.compressive_strength_Pa; break;
-    case materials::CrushBehaviour::kDoesNotCrush: break;
-    case materials::CrushBehaviour::kUnknown:
-      check.notes.push_back(fmt::format("the compressive strength of '{}' is unknown: the limits are unverified for "
-                                        "crushing",
-                                        material.name));
-      break;
-  }
-  return check;
+  return optim::CrushCheckFor(plan.scene, plan.covering_material ? &*plan.covering_material : nullptr, given);
 }
 
 std::vector<std::string> InputWarnings(const SimulationPlan& plan) {

@@ -16,6 +16,7 @@
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/core/time_integration.hpp"
+#include "covopt/optim/speed_limit.hpp"
 #include "covopt/materials/material.hpp"
 #include "materials_command.hpp"
 #include "plot.hpp"
@@ -146,15 +147,8 @@ InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const SimulationPlan& p
 /// states).
 std::vector<std::string> InputWarnings(const SimulationPlan& plan);
 
-/// The crush check a limit search can make on a plan's covering (docs/model.md §12): the
-/// catalog material's compressive strength when it crushes [Pa] (0 otherwise), and what the
-/// reader must know when none is checked: a covering assumed because none was given, one
-/// given by its modulus (no material, no strength), or a material of unknown strength.
-struct CoveringCrushCheck {
-  double compressive_strength_Pa = 0.0;
-  std::vector<std::string> notes;
-};
-CoveringCrushCheck CrushCheckOf(const SimulationPlan& plan);
+/// The crush check a limit search can make on a plan's covering (optim::CrushCheckFor).
+optim::CoveringCrushCheck CrushCheckOf(const SimulationPlan& plan);
 
 /// Adds to a library message that names scene fields ("robot.mass must be ...") where the
 /// user set them: "... (robot.mass from --robot-mass '-10kg')".

@@ -16,6 +16,7 @@
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
+#include <covopt/core/quantity.hpp>
 #include <covopt/core/time_integration.hpp>
 
 namespace covopt::optim {
@@ -588,4 +589,31 @@ MassLimit MaxSafeMassOnPenetrationAxis(const Scene& base, const SpeedLimitOption
 }
 
 }  // namespace
+CoveringCrushCheck CrushCheckFor(const Scene& scene, const materials::Material* material, bool covering_given) {
+  CoveringCrushCheck check;
+  if (!(scene.covering.thickness_m > 0.0)) return check;
+  if (!covering_given && !material) {
+    check.notes.push_back(
+        "no covering given: the default is assumed, " + FormatQuantity(scene.covering.thickness_m, QuantityKind::kLength) +
+        " of " + FormatQuantity(scene.covering.youngs_modulus_Pa, QuantityKind::kModulus) +
+        " (the paper's polystyrene foam, of unknown compressive strength, so crushing is not checked); give the "
+        "covering's thickness with a catalog material (or its modulus), or a thickness of 0 for the bare robot");
+    return check;
+  }
+  if (!material) {
+    check.notes.push_back("the covering is given by its modulus, not a catalog material: its compressive strength is "
+                          "not known, so crushing is not checked (give a material)");
+    return check;
+  }
+  switch (material->crush_behaviour) {
+    case materials::CrushBehaviour::kCrushes: check.compressive_strength_Pa = material->compressive_strength_Pa.value_or(0.0); break;
+    case materials::CrushBehaviour::kDoesNotCrush: break;
+    case materials::CrushBehaviour::kUnknown:
+      check.notes.push_back("the compressive strength of '" + material->name +
+                            "' is unknown: the limits are unverified for crushing");
+      break;
+  }
+  return check;
+}
+
 }  // namespace covopt::optim

@@ -172,11 +172,16 @@ def max_safe_speed(*, robot_mass=None, robot_radius=None, robot_modulus=None, ro
                    scalp_thickness=None, skull_modulus=None, skull_poisson=None, damping=None,
                    reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
                    neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
-                   safety_factor=None, material=None, allow_full_compression=False, oracle=None,
+                   safety_factor=None, material=None, allow_full_compression=False, allow_crushing=False,
+                   oracle=None,
                    method=None, rtol=None, max_steps=None):
     """The largest impact speed [m/s] such that every speed up to it is safe: both injury
     ratios <= 1/safety_factor and, unless allow_full_compression, the covering not fully
-    compressed at the peak (optim::MaxSafeSpeed). The scene keywords are simulate's (damping,
+    compressed at the peak, with the travel the factor reserves; a catalog material of known
+    compressive strength also must not crush (safety_factor x peak compressive stress <= its
+    strength) unless allow_crushing (optim::MaxSafeSpeed). The result's warnings say when
+    crushing is not checked (no covering given, a covering given by its modulus, a material
+    of unknown strength). The scene keywords are simulate's (damping,
     braking and a neck included), without speed (it is what is computed). oracle, method,
     rtol, max_steps: as optimize's (a scene without an energy integral is bracketed on the
     time path).
@@ -200,7 +205,8 @@ def max_safe_mass(*, speed=None, robot_radius=None, robot_modulus=None, robot_po
                   scalp_thickness=None, skull_modulus=None, skull_poisson=None, damping=None,
                   reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
                   neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
-                  safety_factor=None, material=None, allow_full_compression=False, oracle=None,
+                  safety_factor=None, material=None, allow_full_compression=False, allow_crushing=False,
+                   oracle=None,
                   method=None, rtol=None, max_steps=None):
     """The largest reflected robot mass [kg] that is safe, with every lighter robot, at the
     scene's speed (optim::MaxSafeMass); as max_safe_speed, without robot_mass.
@@ -220,7 +226,8 @@ def speed_limit(*, solve_for="speed", robot_mass=None, speed=None, robot_radius=
                 skull_poisson=None, damping=None, reaction_delay=None, braking=None,
                 torso_mass=None, neck_stiffness=None, neck_damping=None, thresholds=None,
                 laceration_limit=None, contusion_limit=None, safety_factor=None, material=None,
-                allow_full_compression=False, oracle=None, method=None, rtol=None, max_steps=None):
+                allow_full_compression=False, allow_crushing=False, oracle=None, method=None, rtol=None,
+                max_steps=None):
     """A table of limits, as ``covopt speed-limit --json``: solve_for="speed" gives the max
     safe speed for each robot_mass (a value or a list; math.inf or "fixed" for a fixed
     robot), solve_for="mass" the max safe reflected mass for each speed (a value or a list).
@@ -282,7 +289,7 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
                      reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
                      neck_damping=None, thresholds=None, laceration_limit=None,
                      contusion_limit=None, safety_factor=None, material=None,
-                     allow_full_compression=False):
+                     allow_full_compression=False, allow_crushing=False):
     """Is a robot motion safe with this covering, and by how much may it be sped up or must
     it be slowed down? As ``covopt robot --trajectory --json``.
 

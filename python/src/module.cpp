@@ -728,6 +728,16 @@ std::string AttributeSceneError(const std::string& message, const py::kwargs& gi
 }
 py::object JsonToPython(const std::string& text) { return JsonLoads(text); }
 
+optim::CoveringCrushCheck CrushCheckOf(const SceneKeywordInputs& inputs, const py::kwargs& kwargs) {
+  bool given = false;
+  for (const char* keyword : {"covering_thickness", "covering_modulus", "covering_poisson", "material"}) {
+    given = given || (kwargs.contains(keyword) && !py::object(kwargs[keyword]).is_none());
+  }
+  const materials::Material* material =
+      inputs.covering_material ? BuiltInCatalog().Find(*inputs.covering_material) : nullptr;
+  return optim::CrushCheckFor(inputs.scene, material, given);
+}
+
 void RaiseComputationError(const std::string& message, const std::string& status) {
   py::object error_type = py::module_::import("covopt._errors").attr("ComputationError");
   py::object error = error_type(message, status);

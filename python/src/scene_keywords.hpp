@@ -14,6 +14,7 @@
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/optim/oracle.hpp"
+#include "covopt/optim/speed_limit.hpp"
 
 namespace covopt::python {
 
@@ -45,6 +46,10 @@ std::string AttributeSceneError(const std::string& message, const pybind11::kwar
 /// on a braking or neck scene is refused with the library's message).
 /// @throws std::invalid_argument naming the keyword, the value and what is allowed.
 optim::OracleOptions ReadOracleKeywords(const pybind11::kwargs& kwargs, const Scene& scene);
+
+/// The crush check of the covering the keywords describe (optim::CrushCheckFor): the built-in
+/// catalog material's strength, and the notes the CLI prints for the same input.
+optim::CoveringCrushCheck CrushCheckOf(const SceneKeywordInputs& inputs, const pybind11::kwargs& kwargs);
 
 /// json.loads(text).
 pybind11::object JsonToPython(const std::string& text);

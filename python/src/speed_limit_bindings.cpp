@@ -5,6 +5,7 @@
 /// python/covopt/__init__.py for the documentation.
 
 #include <cmath>
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -49,6 +50,8 @@ optim::SpeedLimitOptions OptionsFrom(const SceneKeywordInputs& inputs, const py:
   options.limits = inputs.limits;
   options.safety_factor = inputs.safety_factor;
   if (const auto v = Get(kwargs, "allow_full_compression")) options.allow_full_compression = py::bool_(*v).cast<bool>();
+  if (const auto v = Get(kwargs, "allow_crushing")) options.allow_crushing = py::bool_(*v).cast<bool>();
+  options.covering_compressive_strength_Pa = CrushCheckOf(inputs, kwargs).compressive_strength_Pa;
   options.oracle = ReadOracleKeywords(kwargs, inputs.scene);
   return options;
 }
@@ -99,14 +102,16 @@ py::dict OneLimit(SpeedLimitQuantity quantity, const py::kwargs& kwargs, const c
     throw std::invalid_argument(std::string(function) + "() computes " + (by_speed ? "the speed" : "the robot mass") +
                                 "; drop " + solved);
   }
-  const SceneKeywordInputs inputs = ReadSceneKeywords(kwargs, function, {"allow_full_compression", "oracle", "method", "rtol", "max_steps"});
+  const SceneKeywordInputs inputs = ReadSceneKeywords(kwargs, function, {"allow_full_compression", "allow_crushing", "oracle", "method", "rtol", "max_steps"});
   const optim::SpeedLimitOptions options = OptionsFrom(inputs, kwargs);
   const double value = by_speed ? inputs.scene.robot.mass_kg : inputs.scene.robot.speed_m_per_s;
   const SpeedLimitRow row = Compute(quantity, inputs.scene, value, options, inputs.covering_material, kwargs);
-  const py::dict table = JsonToPython(report::SpeedLimitJson(quantity, inputs.scene, options, {&row, 1}, {}, -1));
+  const std::vector<std::string> notes = CrushCheckOf(inputs, kwargs).notes;
+  const py::dict table = JsonToPython(report::SpeedLimitJson(quantity, inputs.scene, options, {&row, 1}, notes, -1));
   py::dict result = py::list(table["rows"])[0].cast<py::dict>();
   result["message"] = by_speed ? row.speed_limit.message : row.mass_limit.message;
   result["brief_report"] = by_speed ? row.speed_limit.BriefReport() : row.mass_limit.BriefReport();
+  result["warnings"] = table["warnings"];
   return result;
 }
 
@@ -153,12 +158,16 @@ py::dict SpeedLimitTable(const py::kwargs& kwargs) {
   std::vector<SpeedLimitRow> rows;
   std::optional<Scene> first_scene;
   optim::SpeedLimitOptions options;
+  std::vector<std::string> notes;  // the covering notes the CLI prints as warnings
   for (const std::optional<std::string>& name : names) {
     py::kwargs scene_kwargs = rest;
     if (name) scene_kwargs["material"] = *name;
     const SceneKeywordInputs inputs =
-        ReadSceneKeywords(scene_kwargs, "speed_limit", {"allow_full_compression", "solve_for", "oracle", "method", "rtol", "max_steps"});
-    options = OptionsFrom(inputs, kwargs);
+        ReadSceneKeywords(scene_kwargs, "speed_limit", {"allow_full_compression", "allow_crushing", "solve_for", "oracle", "method", "rtol", "max_steps"});
+    options = OptionsFrom(inputs, scene_kwargs);
+    for (std::string& note : CrushCheckOf(inputs, scene_kwargs).notes) {
+      if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(std::move(note));
+    }
     const std::vector<double> values =
         Get(kwargs, varied) ? ReadValues(*Get(kwargs, varied), spec, varied)
                             : std::vector<double>{by_speed ? inputs.scene.robot.mass_kg : inputs.scene.robot.speed_m_per_s};
@@ -167,7 +176,7 @@ py::dict SpeedLimitTable(const py::kwargs& kwargs) {
       rows.push_back(Compute(quantity, inputs.scene, value, options, inputs.covering_material, kwargs));
     }
   }
-  return JsonToPython(report::SpeedLimitJson(quantity, *first_scene, options, rows, {}, -1));
+  return JsonToPython(report::SpeedLimitJson(quantity, *first_scene, options, rows, notes, -1));
 }
 
 }  // namespace

@@ -33,13 +33,19 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
                                   " from each sample of the trajectory; drop " + keyword);
     }
   }
-  const SceneKeywordInputs inputs = ReadSceneKeywords(kwargs, "check_trajectory", {"allow_full_compression"});
+  const SceneKeywordInputs inputs =
+      ReadSceneKeywords(kwargs, "check_trajectory", {"allow_full_compression", "allow_crushing"});
+  const optim::CoveringCrushCheck crush = CrushCheckOf(inputs, kwargs);
   optim::TrajectoryCheckOptions options;
   options.limit.limits = inputs.limits;
   options.limit.safety_factor = inputs.safety_factor;
   if (kwargs.contains("allow_full_compression") && !py::object(kwargs["allow_full_compression"]).is_none()) {
     options.limit.allow_full_compression = py::bool_(kwargs["allow_full_compression"]).cast<bool>();
   }
+  if (kwargs.contains("allow_crushing") && !py::object(kwargs["allow_crushing"]).is_none()) {
+    options.limit.allow_crushing = py::bool_(kwargs["allow_crushing"]).cast<bool>();
+  }
+  options.limit.covering_compressive_strength_Pa = crush.compressive_strength_Pa;
 
   const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base);
   const robot::JointTrajectory joints = Trajectory(trajectory, chain.joint_count());
@@ -60,7 +66,7 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
     RaiseComputationError(check.message, optim::ToString(check.status));  // as the CLI's exit 1
   }
   return JsonToPython(
-      report::TrajectoryCheckJson(check, motion, inputs.scene, inputs.covering_material, options.limit, {}, -1));
+      report::TrajectoryCheckJson(check, motion, inputs.scene, inputs.covering_material, options.limit, crush.notes, -1));
 }
 
 }  // namespace

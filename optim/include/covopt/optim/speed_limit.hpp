@@ -52,6 +52,7 @@
 #include <string>
 
 #include <covopt/core/scene.hpp>
+#include <covopt/materials/material.hpp>
 
 #include "covopt/optim/covering_design.hpp"
 
@@ -113,6 +114,20 @@ struct SpeedLimitOptions {
     return DesignRule{safety_factor, criterion(), allow_crushing, !(covering_compressive_strength_Pa > 0.0)};
   }
 };
+
+/// The crush check a limit search can make on a scene's covering (docs/model.md §12): the
+/// material's compressive strength when it crushes (for SpeedLimitOptions), and what the
+/// reader must know when nothing is checked.
+struct CoveringCrushCheck {
+  /// [Pa]: the catalog material's strength when it crushes; 0 otherwise.
+  double compressive_strength_Pa = 0.0;
+  /// One sentence each: a covering assumed because none was given, one given by its modulus
+  /// (no material, no strength), or a material of unknown strength.
+  std::vector<std::string> notes;
+};
+/// `material`: the catalog entry the covering was taken from, or nullptr; `covering_given`:
+/// the user gave any covering input (thickness, modulus, ν or a material).
+CoveringCrushCheck CrushCheckFor(const Scene& scene, const materials::Material* material, bool covering_given);
 
 /// The ratios of the impact at a limit, as the exact path computes them there.
 struct LimitRatios {
