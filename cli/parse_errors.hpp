@@ -55,6 +55,16 @@ inline std::string SuggestFlag(const CLI::App& app, std::string_view typed) {
   std::string best;
   std::size_t best_distance = std::numeric_limits<std::size_t>::max();
   const std::vector<std::string> flags = LongFlags(app);
+  // Words a new user reaches for that are not a spelling away from covopt's.
+  static constexpr std::pair<std::string_view, std::string_view> kSynonyms[] = {
+      {"--velocity", "--speed"},          {"--impact-speed", "--speed"},     {"--v", "--speed"},
+      {"--mass", "--robot-mass"},         {"--reflected-mass", "--robot-mass"},
+      {"--radius", "--robot-radius"},     {"--thickness", "--covering-thickness"},
+      {"--modulus", "--covering-modulus"}, {"--youngs-modulus", "--covering-modulus"},
+      {"--sf", "--safety-factor"},        {"--factor", "--safety-factor"}};
+  for (const auto& [synonym, flag] : kSynonyms) {
+    if (word == synonym && std::find(flags.begin(), flags.end(), flag) != flags.end()) return std::string(flag);
+  }
   for (const std::string& flag : flags) {
     const std::size_t d = EditDistance(word, flag);
     if (d < best_distance) {

@@ -678,6 +678,10 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
     out << report::SimulationJson(report) << '\n';  // the object covopt.simulate() returns
   } else {
     PrintTable(out, report);
+    if (plan.history_file || plan.plot_file) {
+      fmt::print(out, "Wrote      {}{}{}\n", plan.history_file.value_or(""),
+                 plan.history_file && plan.plot_file ? ", " : "", plan.plot_file.value_or(""));
+    }
   }
   out.flush();
   if (!out) return errors.Failed("cannot write the results to standard output");

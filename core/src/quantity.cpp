@@ -1,6 +1,7 @@
 #include "covopt/core/quantity.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -372,6 +373,15 @@ double ParseQuantity(std::string_view text, const QuantitySpec& spec, std::strin
     if (near != kUnits.end()) {
       Fail(name, "unknown unit '" + std::string(rest) + "'; did you mean '" +
                      std::string(near->symbol) + "'?",
+           text);
+    }
+    // "3.7kg-5.8kg": a range written with a dash.
+    const std::size_t dash = rest.find('-');
+    if (dash != std::string_view::npos && dash + 1 < rest.size() &&
+        (std::isdigit(static_cast<unsigned char>(rest[dash + 1])) || rest[dash + 1] == '.')) {
+      const std::string low = std::string(s.substr(0, s.size() - rest.size())) + std::string(rest.substr(0, dash));
+      Fail(name, "a range is written LO..HI with two dots, e.g. '" + low + ".." + std::string(rest.substr(dash + 1)) +
+                     "' (a dash reads as part of a unit)",
            text);
     }
     if (spec.kind == QuantityKind::kDimensionless) {
