@@ -205,7 +205,11 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
              "laceration", SafeWord(lac.safe), lac.value / 1e6, lac.limit / 1e6, lac.ratio);
   fmt::print(out, "  {:<12} {:<7} energy density {:.6g} J/cm², limit {:g} J/cm², ratio {:.4g}\n",
              "contusion", SafeWord(con.safe), con.value / 1e4, con.limit / 1e4, con.ratio);
-  fmt::print(out, "  {:<12} {}\n", "overall", SafeWord(report.assessment.safe()));
+  if (report.crush) {
+    fmt::print(out, "  {:<12} {:<7} compressive stress {:.6g} MPa, strength {:.6g} MPa, ratio {:.4g}\n", "crush",
+               SafeWord(report.crush->safe), report.crush->value / 1e6, report.crush->limit / 1e6, report.crush->ratio);
+  }
+  fmt::print(out, "  {:<12} {}\n", "overall", SafeWord(report.safe()));
 
   fmt::print(out, "\nMethod  {}", ToString(r.method));
   if (report.time_options) {
@@ -226,6 +230,10 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
   }
   fmt::print(out, "\n");
 
+  if (!report.scope.empty()) {
+    fmt::print(out, "\nScope\n");
+    for (const std::string& line : report.scope) fmt::print(out, "  {}\n", line);
+  }
   if (r.warnings.empty()) {
     fmt::print(out, "\nWarnings: none\n");
   } else {

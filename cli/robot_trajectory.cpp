@@ -361,7 +361,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
     }
     fmt::print(out, "\n");
     PrintSamples(out, check);
-    PrintHeadScope(out, run.limit);
+    PrintHeadScope(out, run.limit, run.scene);
     std::vector<std::string> warnings = run.input_warnings;
     warnings.insert(warnings.end(), run.motion.warnings.begin(), run.motion.warnings.end());
     warnings.insert(warnings.end(), check.warnings.begin(), check.warnings.end());

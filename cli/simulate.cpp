@@ -393,8 +393,16 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
   return plan;
 }
 
-InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const SimulationPlan& plan) {
-  return report::JudgeInjuries(peaks, plan.limits, plan.safety_factor);
+void Judge(report::SimulationReport& report, const SimulationPlan& plan) {
+  report.assessment = report::JudgeInjuries(report.result.peaks, plan.limits, plan.safety_factor);
+  report.safety_factor = plan.safety_factor;
+  const optim::CoveringCrushCheck crush = CrushCheckOf(plan);
+  if (crush.compressive_strength_Pa > 0.0) {
+    report.crush = optim::CrushVerdict(report.result.peaks, crush.compressive_strength_Pa, plan.safety_factor);
+  }
+  // The verdict judges the skin and (with a strength) crushing; full compression is reported.
+  report.scope = optim::HeadVerdictScope(
+      optim::DesignRule{plan.safety_factor, optim::DesignCriterion::kPaper, false, !crush.notes.empty()});
 }
 
 optim::CoveringCrushCheck CrushCheckOf(const SimulationPlan& plan) {
@@ -547,8 +555,7 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
     return errors.Failed(fmt::format("the computation failed: {} ({})", ToString(report.result.status),
                                      report.result.message));
   }
-  report.assessment = JudgeInjuries(report.result.peaks, plan);
-  report.safety_factor = plan.safety_factor;
+  Judge(report, plan);
   for (const std::string& warning : InputWarnings(plan)) report.result.warnings.push_back(warning);
   try {
     if (tornado_file) {
@@ -661,8 +668,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
                               ToString(result.method), result.raw_code,
                               result.message.empty() ? "" : ": ", result.message));
   }
-  report.assessment = JudgeInjuries(result.peaks, plan);
-  report.safety_factor = plan.safety_factor;  // the chart draws the derated limits
+  Judge(report, plan);  // the chart draws the derated limits
   for (const std::string& warning : InputWarnings(plan)) report.result.warnings.push_back(warning);
 
   try {

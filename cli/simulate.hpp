@@ -136,9 +136,11 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options);
 /// @throws InputError naming the flag or the scene-file field.
 SimulationPlan ResolveSimulation(const SimulateOptions& options);
 
-/// Judges peaks against the plan's limits: each ratio is value/limit, and a verdict is safe
-/// when plan.safety_factor * ratio <= 1 (the value is within the derated limit).
-InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const SimulationPlan& plan);
+/// Judges report.result's peaks against the plan's limits (each ratio is value/limit, and a
+/// verdict is safe when plan.safety_factor * ratio <= 1), against the covering material's
+/// compressive strength when it is known (report.crush), and says what the verdict covers
+/// (report.scope).
+void Judge(report::SimulationReport& report, const SimulationPlan& plan);
 
 /// Warnings about the input itself, beside the library's about the result: values the
 /// user set that the model ignores (a covering modulus or material without a covering),

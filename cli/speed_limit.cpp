@@ -236,6 +236,12 @@ std::string SafetyMapScript(const SpeedLimitPlan& plan, const std::string& outpu
 
 }  // namespace
 
+optim::DesignRule LimitRule(const optim::SpeedLimitOptions& options, const SimulationPlan& covering) {
+  // Crushing is checked where the strength is known; the notes say when it is not.
+  const bool unchecked = !CrushCheckOf(covering).notes.empty();
+  return {options.safety_factor, options.criterion(), options.allow_crushing, unchecked};
+}
+
 void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& options,
                              const SimulationPlan& covering) {
   const double sf = options.safety_factor;
@@ -243,17 +249,15 @@ void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& 
              options.limits.laceration_tensile_stress_Pa * 1e-6,
              options.limits.contusion_energy_density_J_per_m2 * 1e-4, sf,
              sf > 1 ? fmt::format(": ratios <= {:.4g}", 1.0 / sf) : std::string());
-  optim::SpeedLimitOptions judged = options;
-  judged.covering_compressive_strength_Pa = CrushCheckOf(covering).compressive_strength_Pa;
-  const optim::DesignRule rule = judged.rule();
-  const bool unchecked = covering.scene.covering.thickness_m > 0.0 && !rule.crushing_allowed &&
-                         !(judged.covering_compressive_strength_Pa > 0.0);
-  fmt::print(out, "Criterion  {}{}\n", rule.Describe(), unchecked ? " (this covering has none known: see the warnings)" : "");
+  const optim::DesignRule rule = LimitRule(options, covering);
+  fmt::print(out, "Criterion  {}{}\n", rule.Describe(),
+             rule.unknown_strength_allowed && !rule.crushing_allowed ? " (this covering has none known: see the warnings)"
+                                                                      : "");
 }
 
-void PrintHeadScope(std::ostream& out, const optim::SpeedLimitOptions& options) {
+void PrintHeadScope(std::ostream& out, const optim::SpeedLimitOptions& options, const SimulationPlan& covering) {
   fmt::print(out, "\nScope\n");
-  for (const std::string& line : optim::HeadVerdictScope(options.rule())) fmt::print(out, "  {}\n", line);
+  for (const std::string& line : optim::HeadVerdictScope(LimitRule(options, covering))) fmt::print(out, "  {}\n", line);
 }
 
 CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
@@ -549,7 +553,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
       }
     }
     PrintRows(out, plan, rows);
-    PrintHeadScope(out, plan.options);
+    PrintHeadScope(out, plan.options, plan.coverings.front());
     for (const std::string& w : input_warnings) fmt::print(out, "Warning: {}\n", w);
     for (const std::string& w : report::SpeedLimitRowWarnings(plan.quantity, rows)) {
       fmt::print(out, "Warning: {}\n", w);

@@ -85,8 +85,10 @@ SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options);
 /// The Limits and Criterion lines of a limit search on `covering` (its crush check).
 void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& options,
                              const SimulationPlan& covering);
+/// The rule a limit search on `covering` applies (crushing checked where its strength is known).
+optim::DesignRule LimitRule(const optim::SpeedLimitOptions& options, const SimulationPlan& covering);
 /// The Scope block: what the verdicts cover (optim::HeadVerdictScope).
-void PrintHeadScope(std::ostream& out, const optim::SpeedLimitOptions& options);
+void PrintHeadScope(std::ostream& out, const optim::SpeedLimitOptions& options, const SimulationPlan& covering);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err);

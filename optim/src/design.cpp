@@ -215,14 +215,6 @@ std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalo
   return candidates;
 }
 
-std::vector<std::string> HeadVerdictScope(const DesignRule& rule) {
-  return {"Criteria: " + rule.Describe() + ".",
-          "ISO/TS 15066:2016 (Annex A, A.3.2) does not permit transient contact with the skull, forehead or face; "
-          "its quasi-static limits there (Table A.2) are 130 N and 130 N/cm² on the forehead (110 N/cm² on the "
-          "temple) and 65 N and 110 N/cm² on the face. A safe verdict here means no skin injury in Park et al.'s "
-          "model, not compliance with the standard."};
-}
-
 DesignResult Design(const DesignRequest& request) {
   DesignResult r;
   r.criterion = request.options.criterion();

@@ -181,6 +181,14 @@ std::string DesignRule::Describe() const {
   return text + "; safety factor " + Number(safety_factor) + " on each";
 }
 
+std::vector<std::string> HeadVerdictScope(const DesignRule& rule) {
+  return {"Criteria: " + rule.Describe() + ".",
+          "ISO/TS 15066:2016 (Annex A, A.3.2) does not permit transient contact with the skull, forehead or face; "
+          "its quasi-static limits there (Table A.2) are 130 N and 130 N/cm² on the forehead (110 N/cm² on the "
+          "temple) and 65 N and 110 N/cm² on the face. A safe verdict here means no skin injury in Park et al.'s "
+          "model, not compliance with the standard."};
+}
+
 GoverningRatio DesignScore::governing(const DesignRule& rule) const noexcept {
   GoverningRatio g{LimitingCriterion::kLaceration, laceration_ratio};
   auto consider = [&g](double ratio, LimitingCriterion criterion) {

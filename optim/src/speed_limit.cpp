@@ -616,4 +616,13 @@ CoveringCrushCheck CrushCheckFor(const Scene& scene, const materials::Material* 
   return check;
 }
 
+InjuryVerdict CrushVerdict(const ImpactPeaks& peaks, double compressive_strength_Pa, double safety_factor) noexcept {
+  InjuryVerdict verdict;
+  verdict.value = peaks.max_compressive_stress_Pa;
+  verdict.limit = compressive_strength_Pa;
+  verdict.ratio = verdict.value / verdict.limit;
+  verdict.safe = safety_factor * verdict.ratio <= 1.0;
+  return verdict;
+}
+
 }  // namespace covopt::optim

@@ -357,7 +357,7 @@ py::dict Simulate(const py::kwargs& kwargs) {
     }
   }
   if (!report.result.ok()) RaiseImpactFailure(report.result);
-  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor);
+  JudgeReport(report, limits, kwargs);
 
   py::dict result = JsonLoads(report::SimulationJson(report, -1));
   if (history) {
@@ -728,14 +728,32 @@ std::string AttributeSceneError(const std::string& message, const py::kwargs& gi
 }
 py::object JsonToPython(const std::string& text) { return JsonLoads(text); }
 
-optim::CoveringCrushCheck CrushCheckOf(const SceneKeywordInputs& inputs, const py::kwargs& kwargs) {
+namespace {
+
+optim::CoveringCrushCheck CrushCheckOn(const Scene& scene, const std::optional<std::string>& material_name,
+                                       const py::kwargs& kwargs) {
   bool given = false;
   for (const char* keyword : {"covering_thickness", "covering_modulus", "covering_poisson", "material"}) {
     given = given || (kwargs.contains(keyword) && !py::object(kwargs[keyword]).is_none());
   }
-  const materials::Material* material =
-      inputs.covering_material ? BuiltInCatalog().Find(*inputs.covering_material) : nullptr;
-  return optim::CrushCheckFor(inputs.scene, material, given);
+  const materials::Material* material = material_name ? BuiltInCatalog().Find(*material_name) : nullptr;
+  return optim::CrushCheckFor(scene, material, given);
+}
+
+}  // namespace
+
+optim::CoveringCrushCheck CrushCheckOf(const SceneKeywordInputs& inputs, const py::kwargs& kwargs) {
+  return CrushCheckOn(inputs.scene, inputs.covering_material, kwargs);
+}
+
+void JudgeReport(report::SimulationReport& report, const InjuryLimits& limits, const py::kwargs& kwargs) {
+  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor);
+  const optim::CoveringCrushCheck crush = CrushCheckOn(report.scene, report.covering_material, kwargs);
+  if (crush.compressive_strength_Pa > 0.0) {
+    report.crush = optim::CrushVerdict(report.result.peaks, crush.compressive_strength_Pa, report.safety_factor);
+  }
+  report.scope = optim::HeadVerdictScope(
+      optim::DesignRule{report.safety_factor, optim::DesignCriterion::kPaper, false, !crush.notes.empty()});
 }
 
 void RaiseComputationError(const std::string& message, const std::string& status) {

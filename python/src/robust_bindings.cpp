@@ -163,8 +163,8 @@ py::object UncertainSimulation(const py::kwargs& kwargs, const char* function, b
   }
   impact.covering_material = b.scene.covering_material;
   impact.covering_poisson_assumed = b.scene.covering_poisson_assumed;
-  impact.assessment = report::JudgeInjuries(impact.result.peaks, b.scene.limits, b.scene.safety_factor);
   impact.safety_factor = b.scene.safety_factor;
+  JudgeReport(impact, b.scene.limits, kwargs);
   return JsonToPython(report::UncertainSimulationJson(impact, &*b.box, &worst, probability ? &*probability : nullptr,
                                                       nullptr, -1));
 }

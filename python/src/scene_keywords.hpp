@@ -15,6 +15,7 @@
 #include "covopt/core/scene.hpp"
 #include "covopt/optim/oracle.hpp"
 #include "covopt/optim/speed_limit.hpp"
+#include "covopt/report/simulation_json.hpp"
 
 namespace covopt::python {
 
@@ -50,6 +51,11 @@ optim::OracleOptions ReadOracleKeywords(const pybind11::kwargs& kwargs, const Sc
 /// The crush check of the covering the keywords describe (optim::CrushCheckFor): the built-in
 /// catalog material's strength, and the notes the CLI prints for the same input.
 optim::CoveringCrushCheck CrushCheckOf(const SceneKeywordInputs& inputs, const pybind11::kwargs& kwargs);
+
+/// Judges a simulation report as the CLI's simulate does: its injury verdicts against
+/// `limits` with report.safety_factor, the crush verdict when report.covering_material is a
+/// built-in material of known strength, and the scope (what the verdict covers).
+void JudgeReport(report::SimulationReport& report, const InjuryLimits& limits, const pybind11::kwargs& kwargs);
 
 /// json.loads(text).
 pybind11::object JsonToPython(const std::string& text);

@@ -176,6 +176,8 @@ py::dict SpeedLimitTable(const py::kwargs& kwargs) {
       rows.push_back(Compute(quantity, inputs.scene, value, options, inputs.covering_material, kwargs));
     }
   }
+  // The table's criterion covers every material: crushing where a strength is known (as the CLI's).
+  options.covering_compressive_strength_Pa = 0.0;
   return JsonToPython(report::SpeedLimitJson(quantity, *first_scene, options, rows, notes, -1));
 }
 

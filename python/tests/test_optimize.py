@@ -24,6 +24,10 @@ CASES = [
       "--safety-factor", "1.5"]),
     ({"families": "foam", "allow_full_compression": True, "max_thickness": "30mm"},
      ["--family", "foam", "--allow-full-compression", "--max-thickness", "30mm"]),
+    ({"materials": "XPS Foamular 250", "allow_crushing": True},
+     ["--material", "XPS Foamular 250", "--allow-crushing"]),
+    ({"materials": "polystyrene foam 27.6", "allow_unknown_strength": True, "safety_factor": 2},
+     ["--material", "polystyrene foam 27.6", "--allow-unknown-strength", "--safety-factor", "2"]),
 ]
 
 
@@ -33,6 +37,41 @@ def test_optimize_returns_the_cli_json_object(cli_json, kwargs, flags):
     theirs = cli_json("optimize", "--json", *flags)
     assert list(ours) == list(theirs)
     assert without_times(ours) == without_times(theirs)
+
+
+def test_the_criterion_names_every_part_and_each_design_its_governing_ratio():
+    answer = covopt.optimize()
+    assert answer["criterion"]["parts"] == ["laceration", "contusion", "full-compression", "crush"]
+    assert "A.3.2" in answer["scope"][1]
+    for c in answer["candidates"]:
+        ratios = {"laceration": c["laceration_ratio"], "contusion": c["contusion_ratio"],
+                  "full-compression": c["compression_ratio"]}
+        if c["crush_ratio"] is not None:
+            ratios["crush"] = c["crush_ratio"]
+        # The governing ratio is the largest that counts; the margin is 1 minus it (SF 1).
+        assert c["governing_ratio"] == max(ratios.values())
+        assert ratios[c["governing_criterion"]] == c["governing_ratio"]
+        assert c["margin"] == pytest.approx(1 - c["governing_ratio"], abs=1e-15)
+        if c["crush_behaviour"] == "crushes":
+            assert c["crush_ratio"] == pytest.approx(c["max_compressive_stress_Pa"] / c["compressive_strength_Pa"],
+                                                     rel=1e-15)
+    # A material that crushes is never admissible beyond its strength.
+    for c in answer["candidates"]:
+        if c["safe"] and c["crush_ratio"] is not None:
+            assert c["crush_ratio"] <= 1.0
+
+
+def test_unknown_strengths_are_refused_unless_allowed_and_then_warned():
+    refused = covopt.optimize(materials="polystyrene foam 27.6")
+    assert refused["recommendation"] is None
+    allowed = covopt.optimize(materials="polystyrene foam 27.6", allow_unknown_strength=True)
+    assert allowed["recommendation"]["crush_check"] == "unknown-strength"
+    assert any("unverified for crushing" in w for w in allowed["warnings"])
+
+
+def test_a_range_points_to_robust_optimize():
+    with pytest.raises(ValueError, match="robust_optimize"):
+        covopt.optimize(head_mass="3.7kg..5.8kg")
 
 
 def test_the_recommendation_is_admissible_and_simulates_as_reported():

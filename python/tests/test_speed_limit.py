@@ -21,7 +21,22 @@ CASES = [
     ({"material": ["polystyrene foam 27.6", "polystyrene foam 48.3"], "covering_thickness": "25mm"},
      ["--material", "polystyrene foam 27.6", "--material", "polystyrene foam 48.3",
       "--covering-thickness", "25mm"]),
+    ({"material": ["XPS Foamular 250", "EPS geofoam EPS39"], "covering_thickness": "16mm"},
+     ["--material", "XPS Foamular 250", "--material", "EPS geofoam EPS39", "--covering-thickness", "16mm"]),
+    ({"material": "XPS Foamular 250", "covering_thickness": "16mm", "allow_crushing": True},
+     ["--material", "XPS Foamular 250", "--covering-thickness", "16mm", "--allow-crushing"]),
 ]
+
+
+def test_a_crushing_material_limits_the_speed_where_its_strength_is_reached():
+    crush = covopt.max_safe_speed(material="XPS Foamular 250", covering_thickness=0.016)
+    assert crush["limited_by"] == "crush"
+    liner = covopt.max_safe_speed(material="XPS Foamular 250", covering_thickness=0.016, allow_crushing=True)
+    assert liner["limited_by"] != "crush"
+    assert liner["max_safe_speed_m_per_s"] > 10 * crush["max_safe_speed_m_per_s"]
+    # No covering given: the assumed default is said, as the CLI says it.
+    assumed = covopt.max_safe_speed()
+    assert assumed["warnings"][0].startswith("no covering given")
 
 
 @pytest.mark.parametrize("kwargs,flags", CASES)

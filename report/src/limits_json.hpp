@@ -53,7 +53,7 @@ inline void AddCriterionAndLimits(nlohmann::ordered_json& j, const optim::SpeedL
   const double sf = options.safety_factor;
   const double laceration = options.limits.laceration_tensile_stress_Pa;
   const double contusion = options.limits.contusion_energy_density_J_per_m2;
-  j["criterion"] = optim::ToString(options.criterion());
+  j["criterion"] = CriterionJson(options.rule());
   j["safety_factor"] = sf;
   j["limits"] = {{"laceration_Pa", laceration},
                  {"contusion_J_per_m2", contusion},

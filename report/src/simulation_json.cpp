@@ -108,7 +108,15 @@ std::string SimulationJson(const SimulationReport& report, int indent) {
                     {"safe", con.safe},
                     {"derated_limit_J_per_m2", Number(con.limit / report.safety_factor)},
                     {"safety_factor", report.safety_factor}};
-  j["safe"] = report.assessment.safe();
+  j["crush"] = report.crush ? Json{{"value_Pa", Number(report.crush->value)},
+                                    {"limit_Pa", Number(report.crush->limit)},
+                                    {"ratio", Number(report.crush->ratio)},
+                                    {"safe", report.crush->safe},
+                                    {"derated_limit_Pa", Number(report.crush->limit / report.safety_factor)},
+                                    {"safety_factor", report.safety_factor}}
+                             : Json(nullptr);
+  j["safe"] = report.safe();
+  j["scope"] = report.scope;
   j["method"] = ToString(r.method);
 
   Json solver = {{"status", ToString(r.status)}, {"message", r.message}, {"raw_code", r.raw_code}};

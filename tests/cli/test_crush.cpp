@@ -95,7 +95,7 @@ TEST_CASE("optimize's default recommendation does not crush, and every candidate
   CHECK(allowed["recommendation"]["crush_check"] == "unknown-strength");
 }
 
-TEST_CASE("optimize's text names the governing criterion and the scope; --csv writes every candidate",
+TEST_CASE("optimize's text names the governing criterion and the scope, and --csv writes every candidate",
           "[optimize][crush]") {
   TempDir dir;
   const std::string csv = (dir.path() / "candidates.csv").string();

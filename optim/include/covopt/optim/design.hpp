@@ -98,12 +98,6 @@ struct DesignResult {
   std::string BriefReport() const;
 };
 
-/// What a verdict on the head covers, for every output that judges a head impact: the
-/// criteria of `rule` in words, then what ISO/TS 15066:2016 says of the head (Annex A, A.3.2:
-/// transient contact with the skull, forehead and face is not permitted; quasi-static limits
-/// of Table A.2: skull and forehead 130 N and 130 N/cm², face 65 N and 110 N/cm²).
-std::vector<std::string> HeadVerdictScope(const DesignRule& rule);
-
 /// Candidate materials from a catalog: the entries named in `names` (catalog names, compared
 /// ignoring case, in the order given) or, when `names` is empty, every entry in catalog order;
 /// then only those of the `families` (ignoring case), when any are given. A material without a

@@ -93,6 +93,12 @@ struct DesignRule {
   std::vector<std::string> Parts() const;
 };
 
+/// What a verdict on the head covers, for every output that judges a head impact: the
+/// criteria of `rule` in words, then what ISO/TS 15066:2016 says of the head (Annex A, A.3.2:
+/// transient contact with the skull, forehead and face is not permitted; quasi-static limits
+/// of Table A.2: skull and forehead 130 N and 130 N/cm², face 65 N and 110 N/cm²).
+std::vector<std::string> HeadVerdictScope(const DesignRule& rule);
+
 /// The largest ratio that counts under a rule, and its criterion.
 struct GoverningRatio {
   LimitingCriterion criterion = LimitingCriterion::kLaceration;

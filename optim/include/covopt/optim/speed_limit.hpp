@@ -129,6 +129,10 @@ struct CoveringCrushCheck {
 /// the user gave any covering input (thickness, modulus, ν or a material).
 CoveringCrushCheck CrushCheckFor(const Scene& scene, const materials::Material* material, bool covering_given);
 
+/// The crush verdict of one impact (docs/model.md §12): σ_c,max [Pa] against a compressive
+/// strength [Pa] (> 0), safe when safety_factor × ratio <= 1.
+InjuryVerdict CrushVerdict(const ImpactPeaks& peaks, double compressive_strength_Pa, double safety_factor) noexcept;
+
 /// The ratios of the impact at a limit, as the exact path computes them there.
 struct LimitRatios {
   double laceration_ratio = 0.0;   ///< σ_t,max / laceration limit [-]

@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
@@ -30,6 +31,14 @@ struct SimulationReport {
   /// The verdicts are safe when safety_factor x ratio <= 1, i.e. within the derated limits
   /// limit / safety_factor [-]; 1 = the limits themselves.
   double safety_factor = 1.0;
+  /// The crush verdict (docs/model.md §12) when the covering is a catalog material of known
+  /// compressive strength: σ_c,max [Pa] against the strength [Pa] (optim::CrushVerdict); part
+  /// of the overall verdict. Empty otherwise.
+  std::optional<InjuryVerdict> crush;
+  /// What the verdict covers, one sentence each (optim::HeadVerdictScope).
+  std::vector<std::string> scope;
+  /// The laceration, contusion and (when checked) crush verdicts are all safe.
+  bool safe() const noexcept { return assessment.safe() && (!crush || crush->safe); }
 };
 
 /// Judges peaks against limits with a safety factor [-] (>= 1): each ratio stays
