@@ -54,6 +54,7 @@ inline void AddCriterionAndLimits(nlohmann::ordered_json& j, const optim::SpeedL
   const double laceration = options.limits.laceration_tensile_stress_Pa;
   const double contusion = options.limits.contusion_energy_density_J_per_m2;
   j["criterion"] = CriterionJson(options.rule());
+  j["scope"] = optim::HeadVerdictScope(options.rule());
   j["safety_factor"] = sf;
   j["limits"] = {{"laceration_Pa", laceration},
                  {"contusion_J_per_m2", contusion},

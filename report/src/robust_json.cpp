@@ -157,6 +157,7 @@ std::string RobustDesignJson(const optim::UncertaintyBox& box, const optim::Robu
   ordered_json j;
   j["problem"] = "robust-thinnest";
   j["criterion"] = internal::CriterionJson(options.design.rule());
+  j["scope"] = optim::HeadVerdictScope(options.design.rule());
   j["verdict"] = optim::ToString(result.verdict);
   ordered_json rec = nullptr, setting = nullptr;
   if (result.recommendation) {
@@ -238,6 +239,7 @@ std::string ProbabilityDesignJson(const optim::UncertaintyBox& box, const optim:
   ordered_json j;
   j["problem"] = "probability";
   j["criterion"] = internal::CriterionJson(options.design.rule());
+  j["scope"] = optim::HeadVerdictScope(options.design.rule());
   j["verdict"] = optim::ToString(result.verdict);
   ordered_json rec = nullptr;
   if (result.recommendation) {
