@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "errors.hpp"
 #include "materials_command.hpp"
 #include "optimize.hpp"
 #include "parse_errors.hpp"
@@ -58,7 +59,7 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     // One line naming the subcommand, the flag, the value and what is allowed.
     const std::string command = ActiveCommandPath(app);
     fmt::print(err, "covopt{}{}: error: {}\n", command.empty() ? "" : " ", command,
-               DescribeParseError(app, e));
+               ShortenLongWords(DescribeParseError(app, e)));
     return 2;
   }
 
@@ -71,7 +72,7 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     if (speed_limit->parsed()) return RunSpeedLimit(speed_limit_options, out, err);
     if (robot->parsed()) return RunRobot(robot_options, out, err);
   } catch (const std::exception& e) {
-    fmt::print(err, "covopt: internal error: {}\n", e.what());
+    fmt::print(err, "covopt: internal error: {}\n", ShortenLongWords(e.what()));
     return 1;
   }
 

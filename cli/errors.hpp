@@ -26,6 +26,33 @@ class OutputError : public std::runtime_error {
   explicit OutputError(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// A message with every overlong word (a run of 200+ bytes without a space: a
+/// 100,000-digit value, a pasted file) shown as its first 60 bytes (not cutting a UTF-8
+/// character), "…" and its length, so that an error stays one readable line. The quantity
+/// parser shortens the values it echoes the same way (core/src/quantity.cpp); this catches
+/// every other echo, since every CLI error line goes through it.
+inline std::string ShortenLongWords(std::string_view message) {
+  constexpr std::size_t kLong = 200, kKept = 60;
+  std::string shortened;
+  std::size_t i = 0;
+  while (i < message.size()) {
+    std::size_t end = i;
+    while (end < message.size() && message[end] != ' ') ++end;
+    const std::string_view word = message.substr(i, end - i);
+    if (word.size() < kLong) {
+      shortened += word;
+    } else {
+      std::size_t keep = kKept;
+      while (keep > 0 && (static_cast<unsigned char>(word[keep]) & 0xC0) == 0x80) --keep;
+      shortened += std::string(word.substr(0, keep)) + "… (" + std::to_string(word.size()) +
+                   " characters)";
+    }
+    if (end < message.size()) shortened += ' ';
+    i = end + 1;
+  }
+  return shortened;
+}
+
 /// A subcommand's error exits: one line "covopt <command>: error: <message>" on `err`, and
 /// the exit code to return (BadInput 2, Failed 1).
 class CommandErrors {
@@ -36,7 +63,7 @@ class CommandErrors {
 
  private:
   int Print(std::string_view message, int exit_code) const {
-    err_ << "covopt " << command_ << ": error: " << message << '\n';
+    err_ << "covopt " << command_ << ": error: " << ShortenLongWords(message) << '\n';
     return exit_code;
   }
   std::ostream& err_;

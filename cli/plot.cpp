@@ -22,19 +22,22 @@
 #include "covopt/core/impact_model.hpp"
 
 #include "errors.hpp"
+#include "output.hpp"
 
 extern char** environ;  // NOLINT: POSIX, for posix_spawnp
 
 namespace covopt::cli {
 namespace {
 
-/// A temporary file made by mkstemp, removed when this goes out of scope.
+/// A temporary file made by mkstemp, removed when this goes out of scope, or by the
+/// SIGINT/SIGTERM/SIGHUP handlers (RegisterTemporaryFile) should the process be ended.
 class TempFile {
  public:
   /// Creates "<directory>/<prefix>XXXXXX". @throws OutputError.
   TempFile(const std::filesystem::path& directory, std::string_view prefix)
       : path_((directory / fmt::format("{}XXXXXX", prefix)).string()) {
     const int fd = ::mkstemp(path_.data());
+    if (fd >= 0) slot_ = RegisterTemporaryFile(path_);
     if (fd < 0) {
       throw OutputError(fmt::format("cannot create a temporary file in '{}': {}",
                                     directory.string(), std::strerror(errno)));
@@ -43,16 +46,16 @@ class TempFile {
   }
   ~TempFile() {
     if (!path_.empty()) ::unlink(path_.c_str());
+    UnregisterTemporaryFile(slot_);
   }
   TempFile(const TempFile&) = delete;
   TempFile& operator=(const TempFile&) = delete;
 
   const std::string& path() const noexcept { return path_; }
-  /// Keeps the file (after it has been renamed away).
-  void Release() noexcept { path_.clear(); }
 
  private:
   std::string path_;
+  int slot_ = -1;
 };
 
 /// A gnuplot single-quoted string: no escapes except '' for a quote.
@@ -263,12 +266,14 @@ void RunGnuplot(const std::filesystem::path& path,
   const std::string target = path.string();
   if (!FindOnPath("gnuplot")) throw OutputError(std::string(kGnuplotMissing));
 
-  const std::filesystem::path directory =
-      path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  TempFile output(directory, fmt::format(".{}.tmp-", path.filename().string()));
+  // The target is checked (and its temporary made) before gnuplot runs, by the one file
+  // writer's rules (OutputFile, cli/output.hpp); gnuplot draws into a scratch file that is
+  // then copied into it.
+  OutputFile file(path);
   std::error_code ec;
   const std::filesystem::path temp_directory = std::filesystem::temp_directory_path(ec);
   if (ec) throw OutputError(fmt::format("no temporary directory: {}", ec.message()));
+  TempFile output(temp_directory, "covopt-plot-output-");
   TempFile script(temp_directory, "covopt-plot-");
   TempFile log(temp_directory, "covopt-gnuplot-log-");
   {
@@ -314,13 +319,14 @@ void RunGnuplot(const std::filesystem::path& path,
                                   messages.empty() ? "" : ":\n", messages));
   }
 
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::chmod(output.path().c_str(), 0666 & ~mask);
-  if (::rename(output.path().c_str(), target.c_str()) != 0) {
-    throw OutputError(fmt::format("cannot write '{}': {}", target, std::strerror(errno)));
+  std::ifstream drawn(output.path(), std::ios::binary);
+  std::ostringstream bytes;
+  bytes << drawn.rdbuf();
+  if (!drawn) {
+    throw OutputError(fmt::format("gnuplot failed to draw '{}': cannot read its output", target));
   }
-  output.Release();
+  file.Write(bytes.str());
+  file.Commit();
 }
 
 }  // namespace covopt::cli

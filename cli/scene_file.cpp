@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
@@ -311,17 +314,34 @@ std::vector<std::string> ApplySceneFile(const std::filesystem::path& path, Scene
   if (std::filesystem::is_directory(path, ec)) {
     throw InputError(fmt::format("cannot read scene file '{}': it is a directory", path.string()));
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
     throw InputError(fmt::format("cannot read scene file '{}': {}", path.string(),
                                  std::strerror(errno)));
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    throw InputError(fmt::format("cannot read scene file '{}'", path.string()));
+  // At most kMaxSceneFileBytes + 1 bytes are read, so /dev/zero or a huge file is refused
+  // at once instead of filling the memory.
+  std::string text;
+  char buffer[65536];
+  int error = 0;
+  while (text.size() <= kMaxSceneFileBytes) {
+    const std::size_t want = std::min(sizeof buffer, kMaxSceneFileBytes + 1 - text.size());
+    const ssize_t n = ::read(fd, buffer, want);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) error = errno;
+    if (n <= 0) break;
+    text.append(buffer, static_cast<std::size_t>(n));
   }
-  return ApplySceneToml(text.str(), path.string(), scene, extras);
+  ::close(fd);
+  if (error != 0) {
+    throw InputError(fmt::format("cannot read scene file '{}': {}", path.string(),
+                                 std::strerror(error)));
+  }
+  if (text.size() > kMaxSceneFileBytes) {
+    throw InputError(fmt::format("cannot read scene file '{}': larger than the limit of {} bytes (1 MiB)",
+                                 path.string(), kMaxSceneFileBytes));
+  }
+  return ApplySceneToml(text, path.string(), scene, extras);
 }
 
 }  // namespace covopt::cli

@@ -48,6 +48,11 @@ struct SceneFileExtras {
   std::vector<SceneRange> ranges;
 };
 
+/// The largest scene file read [bytes], 1 MiB (the examples are under 2 kB). A larger file,
+/// or a device or FIFO that gives more (/dev/zero), is refused as soon as byte
+/// kMaxSceneFileBytes + 1 is read.
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{1} << 20;
+
 /// Reads the scene file at `path` into `scene` (and `extras`): the values it sets replace
 /// theirs.
 /// @param extras receives [limits] and covering.material; when null, a file that sets them

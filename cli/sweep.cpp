@@ -618,89 +618,6 @@ class ProgressBar {
   Clock::time_point last_ = start_;
 };
 
-/// A file written piece by piece and put in place atomically, as WriteFileAtomically
-/// (cli/output.hpp) does for a whole text: a temporary in the same directory, flushed to
-/// disk and renamed over the target by Commit; removed if never committed. Messages name
-/// the file and the system's reason, as WriteFileAtomically's do. On Linux the write-back
-/// of every 16 MiB written is started at once (sync_file_range), so the disk works while
-/// the sweep computes and Commit's fsync waits only for the tail (for the 327 MB of a
-/// 1000 x 1000 sweep, ~0.1 s less).
-class AtomicFileStream {
- public:
-  /// @throws OutputError when the temporary cannot be created.
-  explicit AtomicFileStream(const std::filesystem::path& path) : target_(path.string()) {
-    if (!path.has_filename()) {
-      throw OutputError(fmt::format("cannot write '{}': not a file name", target_));
-    }
-    const std::filesystem::path directory =
-        path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-    temp_ = (directory / fmt::format(".{}.tmp-XXXXXX", path.filename().string())).string();
-    fd_ = ::mkstemp(temp_.data());
-    if (fd_ < 0) {
-      throw OutputError(fmt::format("cannot write '{}': {}", target_, std::strerror(errno)));
-    }
-  }
-  ~AtomicFileStream() {
-    if (fd_ >= 0) ::close(fd_);
-    if (!committed_) ::unlink(temp_.c_str());
-  }
-  AtomicFileStream(const AtomicFileStream&) = delete;
-  AtomicFileStream& operator=(const AtomicFileStream&) = delete;
-
-  /// @throws OutputError naming the failed step.
-  void Write(std::string_view text) {
-    const char* data = text.data();
-    std::size_t left = text.size();
-    while (left > 0) {
-      const ssize_t n = ::write(fd_, data, left);
-      if (n < 0) {
-        if (errno == EINTR) continue;
-        Fail("write", errno);
-      }
-      data += n;
-      left -= static_cast<std::size_t>(n);
-    }
-    written_ += text.size();
-#ifdef __linux__
-    constexpr std::size_t kWriteBackBytes = std::size_t{16} << 20;
-    if (written_ - written_back_ >= kWriteBackBytes) {
-      // Only a hint, so its result is not checked: Commit's fsync makes the data durable.
-      ::sync_file_range(fd_, static_cast<off_t>(written_back_),
-                        static_cast<off_t>(written_ - written_back_), SYNC_FILE_RANGE_WRITE);
-      written_back_ = written_;
-    }
-#endif
-  }
-
-  /// Gives the file the permissions a plain open() would (mkstemp makes 0600), flushes it
-  /// to disk, closes it and renames it over the target.
-  /// @throws OutputError naming the failed step.
-  void Commit() {
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    if (::fchmod(fd_, 0666 & ~mask) != 0) Fail("chmod", errno);
-    if (::fsync(fd_) != 0) Fail("fsync", errno);
-    const int fd = fd_;
-    fd_ = -1;
-    if (::close(fd) != 0) Fail("close", errno);
-    if (::rename(temp_.c_str(), target_.c_str()) != 0) Fail("rename", errno);
-    committed_ = true;
-  }
-
- private:
-  [[noreturn]] void Fail(const char* step, int error) {
-    throw OutputError(
-        fmt::format("cannot write '{}': {}: {}", target_, step, std::strerror(error)));
-  }
-
-  std::string target_;
-  std::string temp_;
-  int fd_ = -1;
-  bool committed_ = false;
-  std::size_t written_ = 0;       // bytes written so far
-  std::size_t written_back_ = 0;  // bytes whose write-back has been started
-};
-
 }  // namespace
 
 SweepAxis ParseSweepAxis(std::string_view text, std::string_view flag) {
@@ -1020,7 +937,7 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
   const bool csv_to_stdout = options.csv_file && *options.csv_file == "-";
   std::vector<std::string> written;
   if (plot_format && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
-  std::optional<AtomicFileStream> csv_file;
+  std::optional<OutputFile> csv_file;  // cli/output.hpp: the one file writer
   std::optional<SweepCsvWriter> csv;
   try {
     if (options.csv_file && !csv_to_stdout) {

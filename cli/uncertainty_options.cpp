@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdlib>
 #include <charconv>
 #include <cmath>
 #include <iostream>
@@ -135,6 +137,29 @@ std::vector<optim::UncertainInput> ResolveUncertainInputs(std::span<const SceneR
     input->distribution = parts[0] == "normal" ? optim::InputDistribution::kNormal : optim::InputDistribution::kLognormal;
     input->mean = ParseQuantity(parts[1], units_only, flag + " (mean)");
     input->standard_deviation = ParseQuantity(parts[2], units_only, flag + " (standard deviation)");
+    // The distribution's own faults are blamed on --distribution, not on the range flag
+    // (the library would name only the field, which the range's origin would then claim).
+    const std::string law(parts[0]);
+    const auto value = [&](double v) { return FormatQuantity(v, field->spec.kind); };
+    const std::string range = fmt::format("{}..{}", value(input->low), value(input->high));
+    if (!(input->low < input->high)) {
+      fail(fmt::format("a {} distribution needs a range LO..HI with LO < HI; {} is the single value {}", law,
+                       field->name, value(input->low)));
+    }
+    if (!(std::isfinite(input->standard_deviation) && input->standard_deviation > 0.0)) {
+      fail(fmt::format("the standard deviation must be > 0 (got {}); expected {}=normal:MEAN:SD or "
+                       "{}=lognormal:MEAN:SD with SD > 0 and MEAN in the range {}",
+                       value(input->standard_deviation), field->name, field->name, range));
+    }
+    if (!(input->mean >= input->low && input->mean <= input->high)) {
+      fail(fmt::format("the mean {} lies outside {}'s range {}; expected {}=normal:MEAN:SD or "
+                       "{}=lognormal:MEAN:SD with MEAN in {}",
+                       value(input->mean), field->name, range, field->name, field->name, range));
+    }
+    if (input->distribution == optim::InputDistribution::kLognormal && !(input->low >= 0.0 && input->mean > 0.0)) {
+      fail(fmt::format("a lognormal distribution needs a range within [0, inf) and a mean > 0 (range {}, mean {}); "
+                       "use {}=normal:MEAN:SD", range, value(input->mean), field->name));
+    }
   }
   return inputs;
 }
@@ -154,6 +179,13 @@ optim::UncertaintyBox MakeUncertaintyBox(const Scene& nominal, std::span<const o
     return optim::UncertaintyBox::FromScene(nominal, inputs);
   } catch (const std::invalid_argument& e) {
     std::string message = e.what();
+    // A fault of a distribution (the library names the field only): blame --distribution.
+    if (message.find(" distribution") != std::string::npos || message.find(" standard deviation") != std::string::npos ||
+        message.find(" mean ") != std::string::npos) {
+      throw InputError(fmt::format("--distribution: {} (the forms are NAME=normal:MEAN:SD, NAME=lognormal:MEAN:SD "
+                                   "and NAME=uniform, MEAN in NAME's range)",
+                                   message));
+    }
     std::string origins;
     for (const SceneRange& range : ranges) {
       if (message.find(range.name) != std::string::npos || message.find(range.field) != std::string::npos) {
@@ -254,8 +286,26 @@ void PlotTornado(const std::string& path, const optim::ElasticityTable& table, b
   });
 }
 
+namespace {
+
+/// COVOPT_PROGRESS: "bar", "lines" or "none" forces a style; unset or anything else: auto.
+std::string ProgressStyle() {
+  const char* style = std::getenv("COVOPT_PROGRESS");
+  return style == nullptr ? std::string() : std::string(style);
+}
+
+}  // namespace
+
 SamplingProgressBar::SamplingProgressBar(std::ostream& err, std::string label)
-    : err_(err), label_(std::move(label)), enabled_(&err == &std::cerr && isatty(STDERR_FILENO) == 1) {}
+    : err_(err), label_(std::move(label)) {
+  const std::string style = ProgressStyle();
+  if (&err != &std::cerr || style == "none") return;  // tests' streams stay clean
+  const bool terminal = isatty(STDERR_FILENO) == 1;
+  enabled_ = true;
+  lines_ = style == "lines" || (style != "bar" && !terminal);
+  lines_forced_ = style == "lines";
+  start_ = std::chrono::steady_clock::now();
+}
 
 SamplingProgressBar::~SamplingProgressBar() {
   if (drawn_) err_ << "\r\033[K" << std::flush;  // leave the line clean for what follows
@@ -263,6 +313,23 @@ SamplingProgressBar::~SamplingProgressBar() {
 
 std::function<void(double)> SamplingProgressBar::Callback() {
   if (!enabled_) return {};
+  if (lines_) {
+    // A log, a pipe: one line at each 10 % step, once the run has taken 5 s (short runs stay
+    // quiet; COVOPT_PROGRESS=lines prints them from the start), with the time elapsed and
+    // an estimate of the time left.
+    return [this](double fraction) {
+      const int tenth = static_cast<int>(std::floor(10.0 * std::clamp(fraction, 0.0, 1.0)));
+      if (tenth <= last_percent_ || tenth == 0) return;
+      last_percent_ = tenth;
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+      if (!lines_forced_ && elapsed < 5.0) return;
+      const double left = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+      err_ << fmt::format("covopt: {} {} % done, {:.0f} s elapsed, about {:.0f} s left\n", label_, 10 * tenth,
+                          elapsed, left)
+           << std::flush;
+    };
+  }
   return [this](double fraction) {
     const int percent = static_cast<int>(std::floor(100.0 * std::clamp(fraction, 0.0, 1.0)));
     if (percent == last_percent_) return;

@@ -156,7 +156,23 @@ std::string Advice(QuantityKind kind) {
   return "use " + UnitList(kind);
 }
 
-std::string Quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+/// A user's text as a message echoes it: whole up to 80 bytes; a longer one (a
+/// 100,000-digit number) as its first 40 bytes (not cutting a UTF-8 character), "…" and
+/// its length, so that an error stays one readable line.
+std::string Shortened(std::string_view text) {
+  constexpr std::size_t kWhole = 80, kKept = 40;
+  if (text.size() <= kWhole) return std::string(text);
+  std::size_t keep = kKept;
+  while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80) --keep;
+  return std::string(text.substr(0, keep)) + "… (" + std::to_string(text.size()) + " characters)";
+}
+
+std::string Quoted(std::string_view text) {
+  if (text.size() <= 80) return "'" + std::string(text) + "'";
+  const std::string shortened = Shortened(text);
+  const std::size_t ellipsis = shortened.find("… (");
+  return "'" + shortened.substr(0, ellipsis) + "…'" + shortened.substr(ellipsis + std::string_view("…").size());
+}
 
 [[noreturn]] void Fail(std::string_view name, const std::string& problem, std::string_view text) {
   throw std::invalid_argument(std::string(name) + ": " + problem + " (got " + Quoted(text) + ")");
@@ -294,7 +310,7 @@ void CheckBareNumber(double si_value, std::string_view typed, const QuantitySpec
   if (si_value >= spec.plausible_min && si_value <= spec.plausible_max) return;
 
   const std::string_view si_unit = SiUnit(spec.kind);
-  const std::string head = std::string(name) + " " + std::string(typed) +
+  const std::string head = std::string(name) + " " + Shortened(typed) +
                            ": a bare number is in " + std::string(SiUnitName(spec.kind)) + " (" +
                            FormatNumber(si_value) + " " + std::string(si_unit) + ")";
   std::string likely_units;
@@ -302,7 +318,7 @@ void CheckBareNumber(double si_value, std::string_view typed, const QuantitySpec
     if (!likely.empty()) likely_units += std::string(likely_units.empty() ? "" : ", ") + std::string(likely);
   }
   const auto spelled = [&](std::string_view unit) {
-    return std::string(quote) + std::string(typed) + std::string(unit) + std::string(quote);
+    return std::string(quote) + Shortened(typed) + std::string(unit) + std::string(quote);
   };
   for (const std::string_view likely : spec.likely_units) {
     const Unit* unit = likely.empty() ? nullptr : FindUnit(likely);
@@ -371,7 +387,7 @@ double ParseQuantity(std::string_view text, const QuantitySpec& spec, std::strin
       return u.kind == spec.kind && EqualsIgnoringCase(u.symbol, rest);
     });
     if (near != kUnits.end()) {
-      Fail(name, "unknown unit '" + std::string(rest) + "'; did you mean '" +
+      Fail(name, "unknown unit '" + Shortened(rest) + "'; did you mean '" +
                      std::string(near->symbol) + "'?",
            text);
     }
@@ -380,25 +396,25 @@ double ParseQuantity(std::string_view text, const QuantitySpec& spec, std::strin
     if (dash != std::string_view::npos && dash + 1 < rest.size() &&
         (std::isdigit(static_cast<unsigned char>(rest[dash + 1])) || rest[dash + 1] == '.')) {
       const std::string low = std::string(s.substr(0, s.size() - rest.size())) + std::string(rest.substr(0, dash));
-      Fail(name, "a range is written LO..HI with two dots, e.g. '" + low + ".." + std::string(rest.substr(dash + 1)) +
+      Fail(name, "a range is written LO..HI with two dots, e.g. '" + Shortened(low + ".." + std::string(rest.substr(dash + 1))) +
                      "' (a dash reads as part of a unit)",
            text);
     }
     if (spec.kind == QuantityKind::kDimensionless) {
-      Fail(name, "unexpected '" + std::string(rest) + "' after the number; " + Advice(spec.kind),
+      Fail(name, "unexpected '" + Shortened(rest) + "' after the number; " + Advice(spec.kind),
            text);
     }
-    Fail(name, "unknown unit '" + std::string(rest) + "' for " + std::string(Describe(spec.kind)) +
+    Fail(name, "unknown unit '" + Shortened(rest) + "' for " + std::string(Describe(spec.kind)) +
                    "; " + Advice(spec.kind),
          text);
   }
   if (unit->kind != spec.kind) {
     if (spec.kind == QuantityKind::kDimensionless) {
-      Fail(name, "unit '" + std::string(rest) + "' does not fit a dimensionless value; " +
+      Fail(name, "unit '" + Shortened(rest) + "' does not fit a dimensionless value; " +
                      Advice(spec.kind),
            text);
     }
-    Fail(name, "unit '" + std::string(rest) + "' is not " + std::string(Describe(spec.kind)) +
+    Fail(name, "unit '" + Shortened(rest) + "' is not " + std::string(Describe(spec.kind)) +
                    "; " + Advice(spec.kind),
          text);
   }

@@ -262,3 +262,29 @@ TEST_CASE("bad ranges, distributions and sampling flags: exit 2 with one line", 
   ExpectBadInput({"optimize", "--samples", "100"}, "range");
   ExpectBadInput({"workprecision", "--head-mass", "3.7kg..5.8kg"}, "a range (an uncertain input)");
 }
+
+TEST_CASE("a bad --distribution is blamed on --distribution, not on the range flag", "[robust][bad-input]") {
+  // Issue 22: "head.mass: the normal mean must lie in the range ... (head-mass from
+  // --head-mass '3.7kg..5.8kg')" blamed the range.
+  struct Case {
+    std::string distribution;
+    std::string words;
+  };
+  for (const Case& c : {Case{"head-mass=normal:9kg:1kg", "the mean 9 kg lies outside head-mass's range"},
+                        Case{"head-mass=normal:4.5kg:-1kg", "the standard deviation must be > 0"},
+                        Case{"head-mass=lognormal:4.5kg:0kg", "the standard deviation must be > 0"}}) {
+    for (const char* command : {"simulate", "optimize"}) {
+      CAPTURE(c.distribution, command);
+      const CliRun run = Run({command, "--head-mass", "3.7kg..5.8kg", "--samples", "100", "--distribution",
+                              c.distribution});
+      CHECK(run.exit_code == 2);
+      CHECK(run.out.empty());
+      CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+      CHECK(run.err.find(": error: --distribution: ") != std::string::npos);
+      CHECK(run.err.find(c.words) != std::string::npos);
+      CHECK(run.err.find("(got '" + c.distribution + "')") != std::string::npos);
+      CHECK(run.err.find("=normal:MEAN:SD") != std::string::npos);
+      CHECK(run.err.find("from --head-mass") == std::string::npos);
+    }
+  }
+}

@@ -412,3 +412,30 @@ TEST_CASE("the energy density kind describes itself", "[quantity]") {
   CHECK(covopt::UnitList(QuantityKind::kEnergyDensity) == "J/m2, J/cm2 or kJ/m2");
   CHECK(covopt::SiUnit(QuantityKind::kEnergyDensity) == "J/m2");
 }
+
+TEST_CASE("a 100,000-character value is echoed short in the message", "[quantity]") {
+  // Issue 22: the whole value was echoed, a 100 kB error line.
+  const QuantitySpec mass{QuantityKind::kMass};
+  for (const std::string& text : {std::string(100000, '7'), "1" + std::string(99999, '0') + "kg",
+                                  "5" + std::string(100000, 'q'), "5kg" + std::string(100000, 'x'),
+                                  "3.7kg-" + std::string(100000, '5') + "kg"}) {
+    CAPTURE(text.substr(0, 20));
+    try {
+      ParseQuantity(text, mass, "robot.mass");
+      FAIL("accepted");
+    } catch (const std::invalid_argument& e) {
+      const std::string message = e.what();
+      CHECK(message.size() < 300);
+      CHECK_THAT(message, Contains("robot.mass"));
+      CHECK_THAT(message, Contains("characters)"));
+      CHECK_THAT(message, Contains(text.substr(0, 20)));
+    }
+  }
+  // A short value is still echoed whole.
+  try {
+    ParseQuantity("12 parsecs", mass, "robot.mass");
+    FAIL("accepted");
+  } catch (const std::invalid_argument& e) {
+    CHECK_THAT(std::string(e.what()), Contains("(got '12 parsecs')"));
+  }
+}
