@@ -60,6 +60,11 @@ def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
     axis, the head starting at rest, neck_force_N [N] and dissipated_work_J [J], the work of
     the dampers, the brake and a fixed robot's support so far).
 
+    The result's warnings are those of ``covopt simulate --json`` for the same input, including
+    the ones about the input itself (a catalog material's unknown Poisson ratio, "ν unknown,
+    0.25 assumed"; a safety factor; covering inputs a zero thickness makes moot), which name
+    the keyword (``safety_factor='2'``) where the CLI names the flag (``--safety-factor '2'``).
+
     Raises ValueError on bad input, ComputationError when the computation fails.
     """
     arguments = {name: value for name, value in locals().items() if value is not None}
@@ -336,7 +341,9 @@ def injury_probability(*, ranges, samples, seed=1, threads=0, distributions=None
     laceration, contusion, any, fully_compressed, inadmissible, ci95: {name: [low, high]},
     counts}, the dict ``covopt simulate --json --samples N --seed S`` prints. distributions maps
     an input to ("normal" or "lognormal", mean, sd) (of the value, with units; truncated to the
-    range); uniform otherwise. Identical for any threads (0 = all cores)."""
+    range); uniform otherwise. samples is a whole number in [1, 10000000000]; seed any whole
+    number in [0, 18446744073709551615] (2**64 - 1, as --seed); threads in [0, 4096]. Identical
+    for any threads (0 = all cores)."""
     return _covopt.injury_probability(ranges=ranges, samples=samples, seed=seed, threads=threads,
                                       distributions=distributions, **scene)
 
@@ -360,7 +367,8 @@ def robust_optimize(*, ranges, samples=None, seed=1, threads=0, distributions=No
     thinnest covering whose probability of failing the criterion is shown to be at most that
     (the upper end of its 95 % interval, not the estimate alone; optim::FindProbabilityDesign),
     as ``covopt optimize --max-injury-probability P``. The criterion is optimize's: crushing
-    counts unless allow_crushing, unknown strengths are refused unless allow_unknown_strength."""
+    counts unless allow_crushing, unknown strengths are refused unless allow_unknown_strength.
+    seed is any whole number in [0, 18446744073709551615] (2**64 - 1); threads 0 = all cores."""
     arguments = {"ranges": ranges, "samples": samples, "seed": seed, "threads": threads,
                  "distributions": distributions, "max_injury_probability": max_injury_probability,
                  "allow_full_compression": allow_full_compression, "allow_crushing": allow_crushing,

@@ -12,6 +12,7 @@
 /// .status). The computation runs without the GIL.
 
 #include <cmath>
+#include <cstdio>
 #include <cstddef>
 #include <initializer_list>
 #include <limits>
@@ -20,6 +21,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -263,6 +265,61 @@ SceneInputs ReadSceneInputs(const py::kwargs& kwargs) {
   return inputs;
 }
 
+/// "%g" of a number, as the CLI's fmt "{:g}".
+std::string ShortNumber(double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+/// The warnings `covopt simulate` adds about its inputs (cli/simulate.cpp's InputWarnings),
+/// in the same words and order: the safety factor, an unknown Poisson ratio of the catalog
+/// material, covering inputs that no covering (thickness 0) makes moot. Where the CLI names
+/// a flag or scene file as the source, these name the keyword: "(from safety_factor=2)".
+std::vector<std::string> InputWarnings(const SceneInputs& inputs, const InjuryLimits& limits,
+                                       const py::kwargs& kwargs) {
+  const auto source = [&](const char* keyword) { return std::string(keyword) + "=" + Repr(kwargs[keyword]); };
+  std::vector<std::string> warnings;
+  if (inputs.safety_factor != 1.0) {
+    char ratio[64];
+    std::snprintf(ratio, sizeof ratio, "%.4g", 1.0 / inputs.safety_factor);
+    warnings.push_back(
+        "safety factor " + ShortNumber(inputs.safety_factor) + " (from " + source("safety_factor") +
+        "): each verdict is judged against its limit divided by " + ShortNumber(inputs.safety_factor) +
+        ", laceration " +
+        FormatQuantity(limits.laceration_tensile_stress_Pa / inputs.safety_factor, QuantityKind::kModulus) +
+        " and contusion " +
+        FormatQuantity(limits.contusion_energy_density_J_per_m2 / inputs.safety_factor,
+                       QuantityKind::kEnergyDensity) +
+        " (the ratios are to the limits themselves; safe needs a ratio <= " + ratio + ")");
+  }
+  const bool covered = inputs.scene.covering.thickness_m > 0.0;
+  if (inputs.covering_material) {
+    if (!covered) {
+      warnings.push_back("no covering (covering.thickness = 0), so " + source("material") + " is ignored");
+      return warnings;
+    }
+    if (inputs.covering_poisson_assumed) {
+      warnings.push_back("the catalog gives no Poisson ratio for '" + *inputs.covering_material +
+                         "': ν unknown, " + ShortNumber(materials::kDefaultPoissonRatio) + " assumed");
+    }
+  }
+  if (!covered) {
+    std::vector<std::string> ignored;
+    for (const auto& [name, keyword] : {std::pair{"covering.modulus", "covering_modulus"},
+                                        std::pair{"covering.poisson", "covering_poisson"}}) {
+      if (Get(kwargs, keyword)) ignored.push_back(std::string(name) + " (from " + source(keyword) + ")");
+    }
+    if (!ignored.empty()) {
+      std::string joined = ignored.front();
+      if (ignored.size() == 2) joined += " and " + ignored.back();
+      warnings.push_back("no covering (covering.thickness = 0), so " + joined +
+                         (ignored.size() == 1 ? " is ignored" : " are ignored"));
+    }
+  }
+  return warnings;
+}
+
 /// covopt.simulate(**scene, ...): see python/covopt/__init__.py for the documentation.
 py::dict Simulate(const py::kwargs& kwargs) {
   const auto get = [&](const char* name) { return Get(kwargs, name); };
@@ -358,6 +415,7 @@ py::dict Simulate(const py::kwargs& kwargs) {
   }
   if (!report.result.ok()) RaiseImpactFailure(report.result);
   JudgeReport(report, limits, kwargs);
+  for (std::string& warning : InputWarnings(inputs, limits, kwargs)) report.result.warnings.push_back(std::move(warning));
 
   py::dict result = JsonLoads(report::SimulationJson(report, -1));
   if (history) {

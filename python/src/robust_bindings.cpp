@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -40,11 +41,15 @@ std::optional<py::object> Get(const py::kwargs& kwargs, const char* name) {
   return value;
 }
 
-std::uint64_t Whole(const py::object& v, const char* keyword, long double low, long double high) {
-  if (!py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v) || v.cast<long double>() < low ||
-      v.cast<long double>() > high) {
-    throw std::invalid_argument(std::string(keyword) + " must be a whole number in [" + std::to_string(static_cast<long long>(low)) +
-                                ", " + std::to_string(static_cast<unsigned long long>(high)) + "] (got " +
+/// A whole number in [low, high], compared as Python ints (exactly, up to 2^64 - 1: a
+/// seed may be any unsigned 64-bit value, 0 .. 18446744073709551615, as --seed's).
+std::uint64_t Whole(const py::object& v, const char* keyword, std::uint64_t low, std::uint64_t high) {
+  const bool whole = py::isinstance<py::int_>(v) && !py::isinstance<py::bool_>(v);
+  if (!whole || PyObject_RichCompareBool(v.ptr(), py::int_(low).ptr(), Py_LT) != 0 ||
+      PyObject_RichCompareBool(v.ptr(), py::int_(high).ptr(), Py_GT) != 0) {
+    PyErr_Clear();
+    throw std::invalid_argument(std::string(keyword) + " must be a whole number in [" + std::to_string(low) +
+                                ", " + std::to_string(high) + "] (got " +
                                 py::repr(v).cast<std::string>() + ")");
   }
   return v.cast<std::uint64_t>();
@@ -145,8 +150,8 @@ py::object UncertainSimulation(const py::kwargs& kwargs, const char* function, b
     sampling.emplace();
     const auto samples = Get(kwargs, "samples");
     if (!samples) throw std::invalid_argument("injury_probability() needs samples=N");
-    sampling->samples = Whole(*samples, "samples", 1, 1e10);
-    sampling->seed = Get(kwargs, "seed") ? Whole(*Get(kwargs, "seed"), "seed", 0, 1.8e19) : 1;
+    sampling->samples = Whole(*samples, "samples", 1, 10000000000);
+    sampling->seed = Get(kwargs, "seed") ? Whole(*Get(kwargs, "seed"), "seed", 0, std::numeric_limits<std::uint64_t>::max()) : 1;
     sampling->threads = Get(kwargs, "threads") ? static_cast<unsigned>(Whole(*Get(kwargs, "threads"), "threads", 0, 4096)) : 0;
     sampling->limits = b.scene.limits;
     sampling->safety_factor = b.scene.safety_factor;
@@ -203,8 +208,8 @@ py::object RobustOptimize(const py::kwargs& kwargs) {
   std::optional<optim::InjuryProbabilityOptions> sampling;
   if (const auto samples = Get(kwargs, "samples")) {
     sampling.emplace();
-    sampling->samples = Whole(*samples, "samples", 1, 1e10);
-    sampling->seed = Get(kwargs, "seed") ? Whole(*Get(kwargs, "seed"), "seed", 0, 1.8e19) : 1;
+    sampling->samples = Whole(*samples, "samples", 1, 10000000000);
+    sampling->seed = Get(kwargs, "seed") ? Whole(*Get(kwargs, "seed"), "seed", 0, std::numeric_limits<std::uint64_t>::max()) : 1;
     sampling->threads = Get(kwargs, "threads") ? static_cast<unsigned>(Whole(*Get(kwargs, "threads"), "threads", 0, 4096)) : 0;
   }
   if (const auto p = Get(kwargs, "max_injury_probability")) {

@@ -91,3 +91,15 @@ def test_probability_design_matches_the_cli(cli_json):
 def test_bad_input_raises_value_error(call, needle):
     with pytest.raises(ValueError, match=needle):
         call()
+
+
+def test_the_seed_is_any_unsigned_64_bit_value_and_the_message_says_so():
+    # Issue 22: the stated maximum was 18000000000000000000 and seeds above it were refused.
+    top = 2**64 - 1
+    ours = covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10, seed=top)
+    assert ours["injury_probability"]["seed"] == top
+    with pytest.raises(ValueError, match=r"seed must be a whole number in \[0, 18446744073709551615\]"):
+        covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10, seed=2**64)
+    with pytest.raises(ValueError, match="18446744073709551615"):
+        covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10, seed=-1)
+    assert "18446744073709551615" in covopt.injury_probability.__doc__

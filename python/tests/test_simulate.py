@@ -176,3 +176,40 @@ def test_threads_get_the_same_results_as_one_call():
     for thread in threads:
         thread.join()
     assert results == [expected] * 20
+
+
+# Issue 22: the warnings the CLI adds about its inputs, the same list in Python. Where the CLI
+# names a flag as a value's source ("from --safety-factor '2'"), Python names the keyword
+# ("from safety_factor='2'"); everything else is word for word.
+WARNING_SCENES = [
+    ({"material": "XPS Foamular 250"}, ["--material", "XPS Foamular 250"]),
+    ({"material": "XPS Foamular 250", "covering_thickness": 0.0},
+     ["--material", "XPS Foamular 250", "--covering-thickness", "0"]),
+    ({"covering_thickness": 0.0, "covering_modulus": "5MPa", "covering_poisson": "0.3"},
+     ["--covering-thickness", "0", "--covering-modulus", "5MPa", "--covering-poisson", "0.3"]),
+    ({"safety_factor": "2"}, ["--safety-factor", "2"]),
+    ({"safety_factor": "1.5", "material": "XPS Foamular 250"},
+     ["--safety-factor", "1.5", "--material", "XPS Foamular 250"]),
+]
+
+
+def as_keywords(warnings):
+    """The CLI's warnings with each source flag spelled as Python's keyword:
+    "--covering-modulus '5MPa'" -> "covering_modulus='5MPa'"."""
+    import re
+    return [re.sub(r"--([a-z-]+) '([^']*)'", lambda m: m[1].replace("-", "_") + "='" + m[2] + "'", w)
+            for w in warnings]
+
+
+@pytest.mark.parametrize("kwargs,flags", WARNING_SCENES)
+def test_simulate_returns_the_warnings_the_cli_prints(cli_json, kwargs, flags):
+    ours = covopt.simulate(**kwargs)["warnings"]
+    theirs = cli_json("simulate", "--json", *flags)["warnings"]
+    assert ours, "the scene has an input warning"
+    assert ours == as_keywords(theirs)
+
+
+def test_an_unknown_poisson_ratio_is_warned_word_for_word(cli_json):
+    ours = covopt.simulate(material="XPS Foamular 250")["warnings"]
+    assert ours == cli_json("simulate", "--json", "--material", "XPS Foamular 250")["warnings"]
+    assert any("ν unknown, 0.25 assumed" in w for w in ours)
