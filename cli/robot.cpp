@@ -68,7 +68,8 @@ int RunRobot(const RobotOptions& options, std::ostream& out, std::ostream& err) 
   std::string robot_line;
   try {
     const RobotModelInput input = ResolveRobotModelInput(options.model, false);
-    result = robot::ReflectedMass(input.chain, input.joint_positions, input.point_in_tip_m, input.direction);
+    result = robot::ReflectedMass(input.chain, input.joint_positions, input.point_in_tip_m, input.direction,
+                                  options.model.reflected_mass_options());
     std::string joints;
     for (std::size_t i = 0; i < input.chain.joint_names().size(); ++i) {
       joints += fmt::format("{}{} {:.6g}", i ? ", " : "", input.chain.joint_names()[i],

@@ -76,6 +76,13 @@ double ParseJoint(const std::string& item, std::size_t index, const robot::Chain
     throw InputError(fmt::format("{}: unit '{}' does not fit; expected {} (got '{}')", where, unit,
                                  allowed, item));
   }
+  // With a unit too: 1e300deg or 1e300mm is no position (robot::kMaxRotationRad, kMaxTranslationM).
+  const double bound = prismatic ? robot::kMaxTranslationM : robot::kMaxRotationRad;
+  if (!(std::abs(value * scale) <= bound)) {
+    throw InputError(fmt::format("{}: '{}' is not allowed ({}: -{:.6g}..{:.6g} {})", where, item,
+                                 prismatic ? "within 10 m" : "within a full turn", bound, bound,
+                                 prismatic ? "m" : "rad, -360deg..360deg"));
+  }
   return value * scale;
 }
 
@@ -148,6 +155,9 @@ void AddRobotModelOptions(CLI::App& sub, RobotModelOptions& options, bool direct
   sub.add_option("--point", options.point,
                  "contact point in the tip link's frame (default 0,0,0; m, or with units)")
       ->type_name("X,Y,Z")->group(group);
+  sub.add_flag("--ignore-joint-limits", options.ignore_joint_limits,
+               "do not check joint positions and velocities against the URDF's limits (a warning says so)")
+      ->group(group);
   sub.add_option("--direction", options.direction,
                  direction_required ? "impact direction in the base frame (required with --urdf)"
                                     : "impact direction in the base frame (default: only the extremes)")
@@ -204,7 +214,7 @@ RobotModelMass ResolveRobotModelMass(const RobotModelOptions& options, bool robo
   RobotModelMass mass;
   try {
     mass.result = robot::ReflectedMass(input.chain, input.joint_positions, input.point_in_tip_m,
-                                       input.direction);
+                                       input.direction, options.reflected_mass_options());
   } catch (const std::invalid_argument& e) {
     throw InputError(std::string("--urdf: ") + e.what());
   }

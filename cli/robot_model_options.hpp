@@ -34,9 +34,18 @@ struct RobotModelOptions {
   std::optional<std::string> joints;     ///< --joints Q1,Q2,...
   std::optional<std::string> point;      ///< --point X,Y,Z (tip frame)
   std::optional<std::string> direction;  ///< --direction X,Y,Z (base frame)
+  /// --ignore-joint-limits: do not check positions (and velocities) against the URDF's
+  /// <limit>s; the answer carries a warning that says so.
+  bool ignore_joint_limits = false;
   /// Any of the group's flags was given.
   bool given() const noexcept {
-    return urdf || base || tip || joints || point || direction;
+    return urdf || base || tip || joints || point || direction || ignore_joint_limits;
+  }
+  /// The library's options for these flags (check_joint_limits unless --ignore-joint-limits).
+  robot::ReflectedMassOptions reflected_mass_options() const {
+    robot::ReflectedMassOptions options;
+    options.check_joint_limits = !ignore_joint_limits;
+    return options;
   }
 };
 
@@ -62,8 +71,9 @@ RobotModelInput ResolveRobotModelChain(const RobotModelOptions& options);
 /// Reads the flags and the URDF.
 /// @throws InputError naming the flag and the value: --urdf, --tip or --joints missing, a
 ///         bad file, unknown links, a joint count that does not match (naming the joints), a
-///         non-numeric or non-finite joint, a point or direction without exactly three
-///         components, a zero direction, --direction missing when `require_direction`.
+///         non-numeric or non-finite joint, an angle beyond a full turn, a point or direction
+///         without exactly three components, a zero direction, --direction missing when
+///         `require_direction`.
 RobotModelInput ResolveRobotModelInput(const RobotModelOptions& options, bool require_direction);
 
 /// The group resolved to a reflected mass, for a scene's robot.mass.

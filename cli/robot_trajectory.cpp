@@ -241,7 +241,9 @@ TrajectoryRun Resolve(const RobotModelOptions& model, const RobotTrajectoryOptio
                                chain.joint_count() == 1 ? "" : "s", p[0], p[1], p[2], chain.tip_link());
   try {
     const robot::JointTrajectory trajectory = robot::ReadJointTrajectory(*options.file, chain.joint_count());
-    run.motion = robot::ContactMotion(chain, trajectory, robot_input.point_in_tip_m);
+    robot::ContactMotionOptions motion_options;
+    motion_options.reflected_mass = model.reflected_mass_options();
+    run.motion = robot::ContactMotion(chain, trajectory, robot_input.point_in_tip_m, motion_options);
   } catch (const std::invalid_argument& e) {
     throw InputError(fmt::format("--trajectory: {}", e.what()));
   }

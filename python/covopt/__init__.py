@@ -250,14 +250,16 @@ def speed_limit(*, solve_for="speed", robot_mass=None, speed=None, robot_radius=
 
 
 def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), direction=None, *,
-                   urdf_text=None):
+                   urdf_text=None, ignore_joint_limits=False):
     """The reflected mass of a robot at a contact point, as ``covopt robot --json``.
 
     urdf: the robot model's file (str or path; None with urdf_text=, the URDF itself);
     tip: the link that hits; base: the chain's base link (default the URDF's root);
     joints: the movable joints' positions in chain order [rad, m for prismatic joints];
     point: the contact point in the tip link's frame [m]; direction: the impact direction
-    in the base frame (any length; None: only the extremes).
+    in the base frame (any length; None: only the extremes). Joint positions must lie within a
+    full turn (|q| <= 2 pi rad: radians, not degrees; |q| <= 10 m) and within the URDF's
+    <limit>s; ignore_joint_limits=True skips the URDF's limits and adds a warning saying so.
 
     Returns a dict: reflected_mass_kg (None without a direction), direction,
     max_reflected_mass_kg, max_direction, min_reflected_mass_kg, min_direction,
@@ -265,25 +267,31 @@ def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), directio
     cannot move is the string "fixed" (infinite), with a warning.
 
     Raises ValueError on bad input (missing or malformed URDF, unknown links, a joint
-    count that does not match, non-finite numbers, a zero direction).
+    count that does not match, non-finite numbers, a zero direction, a position beyond a full
+    turn or the URDF's limits, a URDF with a cycle, implausible masses, inertias or origins).
     """
     return _covopt.reflected_mass(urdf, tip, joints, base=base, point=point,
-                                  direction=direction, urdf_text=urdf_text)
+                                  direction=direction, urdf_text=urdf_text,
+                                  ignore_joint_limits=ignore_joint_limits)
 
 
-def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, urdf_text=None):
+def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, urdf_text=None,
+                   ignore_joint_limits=False):
     """The contact point's motion along a joint trajectory.
 
-    trajectory: a CSV file (a header; time [s], the n joint positions, the n joint
-    velocities per line, in chain order) or a dict with time_s (N), positions (N x n) and
-    velocities (N x n). Other arguments as reflected_mass.
+    trajectory: a CSV file (an optional header line; time [s], the n joint positions, the n
+    joint velocities per line, in chain order; a first line of numbers only is a sample, with a
+    warning; at most 64 MiB and 10**6 samples) or a dict with exactly the keys time_s (N),
+    positions (N x n) and velocities (N x n). Positions and velocities are checked against
+    the URDF's limits (ignore_joint_limits=True: not, with a warning). Other arguments as
+    reflected_mass.
 
     Returns a dict: samples (time_s, speed_m_per_s, moving, direction (None at rest),
     velocity_m_per_s, contact_point_m, reflected_mass_kg along the motion; at rest the
     largest over all directions), joint_names, status, message, warnings.
     """
     return _covopt.contact_motion(urdf, tip, trajectory, base=base, point=point,
-                                  urdf_text=urdf_text)
+                                  urdf_text=urdf_text, ignore_joint_limits=ignore_joint_limits)
 
 
 def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, urdf_text=None,
@@ -294,7 +302,7 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
                      reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
                      neck_damping=None, thresholds=None, laceration_limit=None,
                      contusion_limit=None, safety_factor=None, material=None,
-                     allow_full_compression=False, allow_crushing=False):
+                     allow_full_compression=False, allow_crushing=False, ignore_joint_limits=False):
     """Is a robot motion safe with this covering, and by how much may it be sped up or must
     it be slowed down? As ``covopt robot --trajectory --json``.
 
@@ -317,9 +325,10 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
     """
     scene = {name: value for name, value in locals().items()
              if value is not None and name not in
-             ("urdf", "tip", "trajectory", "base", "point", "urdf_text")}
+             ("urdf", "tip", "trajectory", "base", "point", "urdf_text", "ignore_joint_limits")}
     return _covopt.check_trajectory(urdf, tip, trajectory, base=base, point=point,
-                                    urdf_text=urdf_text, **scene)
+                                    urdf_text=urdf_text, ignore_joint_limits=ignore_joint_limits,
+                                    **scene)
 
 
 # Robust design over a population (docs/model.md §11). `ranges` maps scene inputs (keyword

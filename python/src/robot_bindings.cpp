@@ -24,15 +24,28 @@ namespace py = pybind11;
 namespace covopt::python {
 namespace {
 
+/// At most 40 characters of a repr, for messages.
+std::string Excerpt(const std::string& text) { return text.size() <= 40 ? text : text.substr(0, 40) + "..."; }
+
 /// A finite float from a Python number, or ValueError naming `what`.
 double Number(const py::handle& value, const std::string& what) {
   if (py::isinstance<py::bool_>(value) || py::isinstance<py::str>(value) ||
       !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
         py::hasattr(value, "__float__"))) {
     throw std::invalid_argument(what + ": expected a number (got " +
-                                py::repr(value).cast<std::string>() + ")");
+                                Excerpt(py::repr(value).cast<std::string>()) + ")");
   }
-  const double x = value.cast<double>();
+  // float(value) as Python computes it: 10**400 is an OverflowError there, a 2-D row a
+  // TypeError; both become the ValueError that names `what`.
+  PyObject* as_float = PyNumber_Float(value.ptr());
+  if (as_float == nullptr) {
+    const bool overflow = PyErr_ExceptionMatches(PyExc_OverflowError) != 0;
+    PyErr_Clear();
+    throw std::invalid_argument(what + (overflow ? ": must be a finite number" : ": expected a number") + " (got " +
+                                Excerpt(py::repr(value).cast<std::string>()) + ")");
+  }
+  const double x = PyFloat_AsDouble(as_float);
+  Py_DECREF(as_float);
   if (!std::isfinite(x)) {
     std::ostringstream message;
     message << what << ": must be a finite number (got " << x << ")";
@@ -44,7 +57,7 @@ double Number(const py::handle& value, const std::string& what) {
 std::vector<double> Numbers(const py::handle& value, const std::string& what) {
   if (py::isinstance<py::str>(value) || !py::isinstance<py::iterable>(value)) {
     throw std::invalid_argument(what + ": expected a sequence of numbers (got " +
-                                py::repr(value).cast<std::string>() + ")");
+                                Excerpt(py::repr(value).cast<std::string>()) + ")");
   }
   std::vector<double> numbers;
   std::size_t i = 0;
@@ -71,6 +84,12 @@ Eigen::VectorXd Vector(const std::vector<double>& v) {
 
 }  // namespace
 
+robot::ReflectedMassOptions ReflectedMassOptions(bool ignore_joint_limits) {
+  robot::ReflectedMassOptions options;
+  options.check_joint_limits = !ignore_joint_limits;
+  return options;
+}
+
 robot::KinematicChain Chain(const py::object& urdf, const std::optional<std::string>& urdf_text,
                             const std::string& tip, const std::optional<std::string>& base) {
   robot::ChainSpec spec;
@@ -93,7 +112,8 @@ namespace {
 
 py::object ReflectedMass(const py::object& urdf, const std::string& tip, const py::object& joints,
                          const std::optional<std::string>& base, const py::object& point,
-                         const py::object& direction, const std::optional<std::string>& urdf_text) {
+                         const py::object& direction, const std::optional<std::string>& urdf_text,
+                         bool ignore_joint_limits) {
   const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base);
   const Eigen::VectorXd q = Vector(Numbers(joints, "joints"));
   const Eigen::Vector3d p = Triple(point, "point");
@@ -102,7 +122,7 @@ py::object ReflectedMass(const py::object& urdf, const std::string& tip, const p
   robot::ReflectedMassResult result;
   {
     py::gil_scoped_release release;
-    result = robot::ReflectedMass(chain, q, p, u);
+    result = robot::ReflectedMass(chain, q, p, u, ReflectedMassOptions(ignore_joint_limits));
   }
   return JsonToPython(report::RobotJson(result, {}, -1));
 }
@@ -114,6 +134,17 @@ py::object ReflectedMass(const py::object& urdf, const std::string& tip, const p
 robot::JointTrajectory Trajectory(const py::object& trajectory, std::size_t joint_count) {
   if (py::isinstance<py::dict>(trajectory)) {
     const py::dict d = trajectory.cast<py::dict>();
+    for (const auto& [key, value] : d) {
+      const std::string name = py::str(key).cast<std::string>();
+      if (name != "time_s" && name != "positions" && name != "velocities") {
+        throw std::invalid_argument("trajectory: unknown key '" + Excerpt(name) +
+                                    "' (a dict has time_s, positions, velocities)");
+      }
+    }
+    if (py::len(d["time_s"]) > robot::kMaxTrajectorySamples) {
+      throw std::invalid_argument("trajectory['time_s']: " + std::to_string(py::len(d["time_s"])) +
+                                  " samples is not allowed (at most 1000000)");
+    }
     for (const char* key : {"time_s", "positions", "velocities"}) {
       if (!d.contains(key)) {
         throw std::invalid_argument(std::string("trajectory: missing key '") + key +
@@ -154,14 +185,16 @@ namespace {
 
 py::object ContactMotion(const py::object& urdf, const std::string& tip, const py::object& trajectory,
                          const std::optional<std::string>& base, const py::object& point,
-                         const std::optional<std::string>& urdf_text) {
+                         const std::optional<std::string>& urdf_text, bool ignore_joint_limits) {
   const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base);
   const robot::JointTrajectory t = Trajectory(trajectory, chain.joint_count());
   const Eigen::Vector3d p = Triple(point, "point");
   robot::ContactMotionResult result;
   {
     py::gil_scoped_release release;
-    result = robot::ContactMotion(chain, t, p);
+    robot::ContactMotionOptions options;
+    options.reflected_mass = ReflectedMassOptions(ignore_joint_limits);
+    result = robot::ContactMotion(chain, t, p, options);
   }
   return JsonToPython(report::ContactMotionJson(result, {}, -1));
 }
@@ -171,10 +204,11 @@ py::object ContactMotion(const py::object& urdf, const std::string& tip, const p
 void BindRobot(py::module_& m) {
   m.def("reflected_mass", &ReflectedMass, py::arg("urdf"), py::arg("tip"), py::arg("joints"),
         py::arg("base") = py::none(), py::arg("point") = py::make_tuple(0.0, 0.0, 0.0),
-        py::arg("direction") = py::none(), py::arg("urdf_text") = py::none());
+        py::arg("direction") = py::none(), py::arg("urdf_text") = py::none(),
+        py::arg("ignore_joint_limits") = false);
   m.def("contact_motion", &ContactMotion, py::arg("urdf"), py::arg("tip"), py::arg("trajectory"),
         py::arg("base") = py::none(), py::arg("point") = py::make_tuple(0.0, 0.0, 0.0),
-        py::arg("urdf_text") = py::none());
+        py::arg("urdf_text") = py::none(), py::arg("ignore_joint_limits") = false);
 }
 
 }  // namespace covopt::python

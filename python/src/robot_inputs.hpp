@@ -23,8 +23,12 @@ robot::KinematicChain Chain(const pybind11::object& urdf, const std::optional<st
 
 /// A trajectory of `joint_count` joints: a CSV path (str or os.PathLike, read by
 /// robot::ReadJointTrajectory), or a dict with time_s (N), positions (N x n) and velocities
-/// (N x n). @throws std::invalid_argument naming the key, the sample or the line.
+/// (N x n), no other key, at most robot::kMaxTrajectorySamples samples.
+/// @throws std::invalid_argument naming the key, the sample or the line.
 robot::JointTrajectory Trajectory(const pybind11::object& trajectory, std::size_t joint_count);
+
+/// The library's options for the keyword ignore_joint_limits.
+robot::ReflectedMassOptions ReflectedMassOptions(bool ignore_joint_limits);
 
 /// Three finite numbers (x, y, z). @throws std::invalid_argument naming `what`.
 Eigen::Vector3d Triple(const pybind11::handle& value, const char* what);

@@ -25,7 +25,8 @@ namespace {
 
 py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const py::object& trajectory,
                            const std::optional<std::string>& base, const py::object& point,
-                           const std::optional<std::string>& urdf_text, const py::kwargs& kwargs) {
+                           const std::optional<std::string>& urdf_text, bool ignore_joint_limits,
+                           const py::kwargs& kwargs) {
   for (const char* keyword : {"robot_mass", "speed"}) {
     if (kwargs.contains(keyword) && !py::object(kwargs[keyword]).is_none()) {
       throw std::invalid_argument(std::string("check_trajectory() takes the robot's ") +
@@ -54,7 +55,9 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
   optim::TrajectoryCheck check;
   {
     py::gil_scoped_release release;
-    motion = robot::ContactMotion(chain, joints, p);
+    robot::ContactMotionOptions motion_options;
+    motion_options.reflected_mass = ReflectedMassOptions(ignore_joint_limits);
+    motion = robot::ContactMotion(chain, joints, p, motion_options);
     try {
       check = optim::CheckTrajectory(inputs.scene, report::MotionSamples(motion), options);
     } catch (const std::invalid_argument& e) {
@@ -74,7 +77,7 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
 void BindTrajectory(py::module_& m) {
   m.def("check_trajectory", &CheckTrajectory, py::arg("urdf"), py::arg("tip"), py::arg("trajectory"),
         py::arg("base") = py::none(), py::arg("point") = py::make_tuple(0.0, 0.0, 0.0),
-        py::arg("urdf_text") = py::none());
+        py::arg("urdf_text") = py::none(), py::arg("ignore_joint_limits") = false);
 }
 
 }  // namespace covopt::python

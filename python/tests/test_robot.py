@@ -108,3 +108,75 @@ def test_bad_trajectories_raise_value_error(tmp_path):
         covopt.contact_motion(PLANAR, "tool", short)
     with pytest.raises(ValueError, match="missing key 'velocities'"):
         covopt.contact_motion(PLANAR, "tool", {"time_s": [0], "positions": [[0, 0]]})
+
+
+@pytest.mark.parametrize("kwargs, words", [
+    # Degrees given as radians: beyond a full turn.
+    (dict(urdf=FR3, tip="fr3_link8", joints=[0, -90, 90, -90, -90, 0, 0]),
+     "joints: joint 2 (fr3_joint2): -90 rad is not allowed (within a full turn"),
+    # FR3 joint 4 at +90 degrees: outside the URDF's [-3.0421, -0.1518] rad.
+    (dict(urdf=FR3, tip="fr3_link8", joints=[0, 0, 0, math.pi / 2, 0, 1.57, 0]),
+     "outside the URDF's limits [-3.0421, -0.1518] rad of joint 'fr3_joint4'"),
+    (dict(urdf=PLANAR, tip="tool", joints=[0, 10**400]), "joints[1]: must be a finite number"),
+    (dict(urdf=PLANAR, tip="tool", joints=np.zeros((2, 2))), "joints[0]: expected a number"),
+    (dict(urdf=PLANAR, tip="tool", joints=[[0, 0]]), "joints[0]: expected a number"),
+    (dict(urdf=PLANAR, tip="tool", joints=[0, 0], point=(1e308, 0, 0)), "point: component 1 = 1e+308 m"),
+    (dict(urdf=PLANAR, tip="link2", base="link2", joints=[]), "has no movable joint"),
+    (dict(urdf="/dev/zero", tip="tool", joints=[0, 0]), "larger than 16 MiB"),
+    (dict(urdf=None, tip="b", joints=[0, 0], urdf_text=(
+        "<robot name='c'><link name='base'/><link name='a'/><link name='b'/>"
+        "<joint name='j1' type='continuous'><parent link='base'/><child link='a'/></joint>"
+        "<joint name='j2' type='continuous'><parent link='a'/><child link='b'/></joint>"
+        "<joint name='j3' type='fixed'><parent link='b'/><child link='a'/></joint></robot>")),
+     "link 'a' has two parents"),
+    (dict(urdf=None, tip="arm", joints=[0], urdf_text=(
+        "<robot name='r'><link name='base'/><joint name='j1' type='continuous'><parent link='base'/>"
+        "<child link='arm'/><axis xyz='0 0 1'/></joint><link name='arm'><inertial><mass value='2'/>"
+        "<inertia ixx='0.01' ixy='0' ixz='0' iyy='0.1' iyz='0' izz='-0.1'/></inertial></link></robot>")),
+     "link 'arm': <inertia> smallest principal moment = -0.1"),
+])
+def test_inputs_that_once_gave_wrong_answers_raise_value_error(kwargs, words):
+    with pytest.raises(ValueError) as error:
+        covopt.reflected_mass(**kwargs)
+    assert words in str(error.value)
+
+
+def test_ignore_joint_limits_answers_with_a_warning():
+    joints = [0, 0, 0, math.pi / 2, 0, 1.57, 0]
+    got = covopt.reflected_mass(FR3, "fr3_link8", joints, direction=(1, 0, 0), ignore_joint_limits=True)
+    assert any("were not checked" in w for w in got["warnings"])
+    checked = covopt.reflected_mass(FR3, "fr3_link8", FR3_READY, direction=(1, 0, 0))
+    assert not any("were not checked" in w for w in checked["warnings"])
+
+
+def test_a_huge_direction_is_normalised_not_none():
+    got = covopt.reflected_mass(PLANAR, "tool", [0.3, 1.2], direction=(1e308, 1e308, 0))
+    assert got["direction"] == pytest.approx([math.sqrt(0.5), math.sqrt(0.5), 0])
+    assert isinstance(got["reflected_mass_kg"], float)
+
+
+def test_trajectory_inputs_that_once_gave_wrong_answers(tmp_path):
+    headerless = tmp_path / "headerless.csv"
+    headerless.write_text("0,0,0,1.5,0\n0.1,0.1,0,0.1,0\n")
+    motion = covopt.contact_motion(PLANAR, "tool", headerless)
+    assert len(motion["samples"]) == 2
+    assert motion["samples"][0]["speed_m_per_s"] == pytest.approx(1.8 * 1.5)
+    assert any("no header line" in w for w in motion["warnings"])
+    degrees = tmp_path / "degrees.csv"
+    degrees.write_text("t,q1,q2,qd1,qd2\n0,0,-90,0,0\n")
+    with pytest.raises(ValueError, match=r"degrees.csv:2, column 3 \(q2 \[rad\], joint 'elbow'\): -90 rad"):
+        covopt.contact_motion(PLANAR, "tool", degrees)
+    hexfloat = tmp_path / "hex.csv"
+    hexfloat.write_text("t,q1,q2,qd1,qd2\n0,0x1p3,0,0,0\n")
+    with pytest.raises(ValueError, match="in decimal"):
+        covopt.contact_motion(PLANAR, "tool", hexfloat)
+    with pytest.raises(ValueError, match="larger than 64 MiB"):
+        covopt.contact_motion(PLANAR, "tool", "/dev/zero")
+    with pytest.raises(ValueError, match="unknown key 'velocity'"):
+        covopt.contact_motion(PLANAR, "tool", {"time_s": [0], "positions": [[0, 0]],
+                                               "velocities": [[0, 0]], "velocity": [[1, 1]]})
+    too_fast = {"time_s": [0], "positions": [[0, 0]], "velocities": [[2.5, 0]]}
+    with pytest.raises(ValueError, match="trajectory sample 1, qd1 \\(joint 'shoulder'\\): 2.5 rad/s"):
+        covopt.contact_motion(PLANAR, "tool", too_fast)
+    ignored = covopt.contact_motion(PLANAR, "tool", too_fast, ignore_joint_limits=True)
+    assert any("were not checked" in w for w in ignored["warnings"])

@@ -74,13 +74,16 @@ def test_the_safe_speed_scale_is_exact(tmp_path):
     assert worst == {"index": worst["index"], **check["samples"][worst["index"]]}
     assert all(s["speed_scale"] >= k for s in check["samples"] if s["moving"])
 
+    # Sped up k times the move exceeds FR3's joint velocity limits: the covering's limit is
+    # what is checked here, so the URDF's limits are set aside.
     at_limit = covopt.check_trajectory(
-        FR3, "fr3_link8", write_trajectory(tmp_path / "at.csv", time_s, positions, velocities * k))
+        FR3, "fr3_link8", write_trajectory(tmp_path / "at.csv", time_s, positions, velocities * k),
+        ignore_joint_limits=True)
     assert at_limit["safe_speed_scale"] == pytest.approx(1.0, abs=1e-9)
     assert at_limit["status"] == "safe"
     beyond = covopt.check_trajectory(
         FR3, "fr3_link8", {"time_s": time_s, "positions": positions,
-                           "velocities": velocities * k * (1 + 1e-6)})
+                           "velocities": velocities * k * (1 + 1e-6)}, ignore_joint_limits=True)
     assert beyond["status"] == "unsafe" and beyond["unsafe_sample_count"] >= 1
     half = covopt.check_trajectory(
         FR3, "fr3_link8", {"time_s": time_s, "positions": positions, "velocities": velocities * 0.5})
@@ -119,7 +122,12 @@ def test_a_point_at_rest_has_nothing_to_judge():
     ({"trajectory": {"time_s": [0.0], "positions": [[0.0] * 7], "velocities": [[math.nan] + [0.0] * 6]}},
      "finite"),
     ({"trajectory": {"time_s": [0.0], "positions": [[0.0, -0.78, 0, -2.35, 0, 1.57, 0.78]],
-                     "velocities": [[1000.0] + [0.0] * 6]}}, "in [0, 100] m/s"),
+                     "velocities": [[1000.0] + [0.0] * 6]}, "ignore_joint_limits": True}, "in [0, 100] m/s"),
+    ({"trajectory": {"time_s": [0.0], "positions": [[0.0, -0.78, 0, -2.35, 0, 1.57, 0.78]],
+                     "velocities": [[1000.0] + [0.0] * 6]}},
+     "1000 rad/s is not allowed (outside the URDF's velocity limit [-2.62, 2.62] rad/s of joint 'fr3_joint1'"),
+    ({"trajectory": {"time_s": [0.0], "positions": [[0.0] * 7], "velocities": [[0.0] * 7]}},
+     "outside the URDF's limits [-3.0421, -0.1518] rad of joint 'fr3_joint4'"),
     ({"covering_thickness": -0.001}, "covering_thickness"),
     ({"material": "no such foam"}, "no such foam"),
     ({"safety_factor": 0.5}, "safety_factor"),
@@ -137,3 +145,25 @@ def test_the_robot_mass_and_speed_are_not_keywords():
         covopt.check_trajectory(FR3, "fr3_link8", PICK, robot_mass=3.0)
     with pytest.raises(ValueError, match="drop speed"):
         covopt._covopt.check_trajectory(FR3, "fr3_link8", str(PICK), speed=1.0)  # the module refuses it too
+
+
+def test_a_trajectory_without_a_header_keeps_its_first_row(tmp_path):
+    rows = ("0,0,-0.78,0,-2.35,0,1.57,0.78,2.5,0,0,0,0,0,0\n"
+            "0.1,0,-0.78,0,-2.35,0,1.57,0.78,0.1,0,0,0,0,0,0\n")
+    headerless = tmp_path / "headerless.csv"
+    headerless.write_text(rows)
+    with_header = tmp_path / "header.csv"
+    with_header.write_text("t,q1,q2,q3,q4,q5,q6,q7,qd1,qd2,qd3,qd4,qd5,qd6,qd7\n" + rows)
+    a = covopt.check_trajectory(FR3, "fr3_link8", headerless)
+    b = covopt.check_trajectory(FR3, "fr3_link8", with_header)
+    assert a["sample_count"] == 2 and a["worst_sample"]["index"] == 0
+    assert a["safe_speed_scale"] == b["safe_speed_scale"]
+    assert any("no header line" in w for w in a["warnings"])
+    assert not any("no header line" in w for w in b["warnings"])
+
+
+def test_check_trajectory_ignore_joint_limits_warns():
+    beyond = {"time_s": [0.0], "positions": [[0.0, -0.78, 0, 1.57, 0, 1.57, 0.78]],
+              "velocities": [[0.5] + [0.0] * 6]}
+    check = covopt.check_trajectory(FR3, "fr3_link8", beyond, ignore_joint_limits=True)
+    assert any("were not checked" in w for w in check["warnings"])

@@ -3,6 +3,10 @@
 /// KinematicChain's insides (private to covopt_robot): the KDL chain and what the public
 /// accessors return.
 
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <istream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +35,29 @@ struct KinematicChain::Impl {
 
 namespace internal {
 
+/// Reads `in` to its end, at most `limit_bytes`: a device or FIFO is not read forever.
+/// @throws std::invalid_argument "<source>: larger than <limit> MiB, the limit for <what>"
+///         as soon as byte limit+1 arrives, or when the stream cannot be read.
+std::string ReadBounded(std::istream& in, std::size_t limit_bytes, const std::string& source,
+                        const std::string& what);
+/// As ReadBounded, from the file at `path` (a missing file or a directory is refused).
+std::string ReadBoundedFile(const std::filesystem::path& path, std::size_t limit_bytes,
+                            const std::string& what);
+
+/// "joints: joint 2 (shoulder)": where joint `index` of a q or q̇ is, for messages.
+using JointWhere = std::function<std::string(std::size_t index)>;
+
+/// Checks joint positions against the plausible range (a full turn, kMaxTranslationM) and,
+/// when `check_limits`, the URDF's position limits.
+/// @throws std::invalid_argument "<where>: <value> rad is ..." naming the allowed range.
+void CheckJointPositions(const KinematicChain& chain, const Eigen::VectorXd& q, bool check_limits,
+                         const JointWhere& where);
+/// As CheckJointPositions for joint velocities (kMaxJointVelocity, the URDF's velocity limit).
+void CheckJointVelocities(const KinematicChain& chain, const Eigen::VectorXd& qd, bool check_limits,
+                          const JointWhere& where);
+/// The warning a result carries when the joint limits were not checked.
+std::string JointLimitsIgnoredWarning(const KinematicChain& chain);
+
 /// Checks q against the chain (length, finite values) and copies it into a KDL::JntArray.
 /// @throws std::invalid_argument "joints: ..." naming the joint and value.
 KDL::JntArray ToJntArray(const KinematicChain& chain, const Eigen::VectorXd& q,
@@ -39,6 +66,10 @@ KDL::JntArray ToJntArray(const KinematicChain& chain, const Eigen::VectorXd& q,
 /// Checks that every component of `v` is finite.
 /// @throws std::invalid_argument "<what>: component <i> must be finite (got nan)".
 void CheckFinite(const Eigen::Vector3d& v, const char* what);
+
+/// CheckFinite, and every coordinate within ±kMaxLengthM.
+/// @throws std::invalid_argument "point: component <i> = <v> m is not allowed (...)".
+void CheckPoint(const Eigen::Vector3d& point_in_tip_m);
 
 /// @throws std::invalid_argument unless options.singular_relative_tolerance is in [0, 1).
 void CheckSingularTolerance(const ReflectedMassOptions& options);

@@ -56,12 +56,100 @@ KDL::JntArray ToJntArray(const KinematicChain& chain, const Eigen::VectorXd& q, 
   return array;
 }
 
+namespace {
+
+bool Rotational(JointType type) { return type == JointType::kRevolute || type == JointType::kContinuous; }
+
+const ChainJoint& MovableJoint(const KinematicChain& chain, std::size_t index) {
+  std::size_t seen = 0;
+  for (const ChainJoint& joint : chain.joints()) {
+    if (joint.type != JointType::kFixed && seen++ == index) return joint;
+  }
+  throw std::logic_error("MovableJoint: index out of range");
+}
+
+[[noreturn]] void RefuseJointValue(const std::string& where, double value, const char* unit,
+                                   const std::string& allowed) {
+  std::ostringstream message;
+  message << where << ": " << value << " " << unit << " is not allowed (" << allowed << ")";
+  throw std::invalid_argument(message.str());
+}
+
+std::string Range(double lower, double upper, const char* unit) {
+  std::ostringstream range;
+  range << "[" << lower << ", " << upper << "] " << unit;
+  return range.str();
+}
+
+constexpr const char* kIgnoreHint = "; --ignore-joint-limits or ignore_joint_limits=True skips this check";
+
+}  // namespace
+
+void CheckJointPositions(const KinematicChain& chain, const Eigen::VectorXd& q, bool check_limits,
+                         const JointWhere& where) {
+  for (Eigen::Index i = 0; i < q.size(); ++i) {
+    const auto index = static_cast<std::size_t>(i);
+    const ChainJoint& joint = MovableJoint(chain, index);
+    const bool rotational = Rotational(joint.type);
+    const char* unit = rotational ? "rad" : "m";
+    const double bound = rotational ? kMaxRotationRad : kMaxTranslationM;
+    if (!(std::abs(q[i]) <= bound)) {
+      RefuseJointValue(where(index), q[i], unit,
+                       rotational ? "within a full turn, " + Range(-bound, bound, unit) +
+                                        ": positions are in radians; degrees? multiply by pi/180"
+                                  : "within " + Range(-bound, bound, unit) + ": positions are in metres");
+    }
+    const JointLimits& limits = joint.limits;
+    if (check_limits && limits.has_position && (q[i] < limits.lower - 1e-9 || q[i] > limits.upper + 1e-9)) {
+      RefuseJointValue(where(index), q[i], unit,
+                       "outside the URDF's limits " + Range(limits.lower, limits.upper, unit) + " of joint '" +
+                           joint.name + "'" + kIgnoreHint);
+    }
+  }
+}
+
+void CheckJointVelocities(const KinematicChain& chain, const Eigen::VectorXd& qd, bool check_limits,
+                          const JointWhere& where) {
+  for (Eigen::Index i = 0; i < qd.size(); ++i) {
+    const auto index = static_cast<std::size_t>(i);
+    const ChainJoint& joint = MovableJoint(chain, index);
+    const char* unit = Rotational(joint.type) ? "rad/s" : "m/s";
+    if (!(std::abs(qd[i]) <= kMaxJointVelocity)) {
+      RefuseJointValue(where(index), qd[i], unit, "within " + Range(-kMaxJointVelocity, kMaxJointVelocity, unit));
+    }
+    const JointLimits& limits = joint.limits;
+    if (check_limits && limits.has_velocity && std::abs(qd[i]) > limits.velocity * (1.0 + 1e-9)) {
+      RefuseJointValue(where(index), qd[i], unit,
+                       "outside the URDF's velocity limit " + Range(-limits.velocity, limits.velocity, unit) +
+                           " of joint '" + joint.name + "'" + kIgnoreHint);
+    }
+  }
+}
+
+std::string JointLimitsIgnoredWarning(const KinematicChain& chain) {
+  return "the joint limits of " + chain.source_name() +
+         " were not checked (--ignore-joint-limits / ignore_joint_limits=True): the answer is for "
+         "configurations the URDF says the robot cannot reach";
+}
+
 void CheckFinite(const Eigen::Vector3d& v, const char* what) {
   for (int i = 0; i < 3; ++i) {
     if (!std::isfinite(v[i])) {
       std::ostringstream message;
       message << what << ": component " << (i + 1) << " must be a finite number (got " << v[i]
               << ")";
+      throw std::invalid_argument(message.str());
+    }
+  }
+}
+
+void CheckPoint(const Eigen::Vector3d& point_in_tip_m) {
+  CheckFinite(point_in_tip_m, "point");
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(point_in_tip_m[i]) > kMaxLengthM) {
+      std::ostringstream message;
+      message << "point: component " << (i + 1) << " = " << point_in_tip_m[i]
+              << " m is not allowed (within [-1000, 1000] m of the tip link's origin)";
       throw std::invalid_argument(message.str());
     }
   }
@@ -145,14 +233,14 @@ Eigen::Matrix<double, 3, Eigen::Dynamic> ContactJacobian(const KinematicChain& c
                                                          const Eigen::VectorXd& q,
                                                          const Eigen::Vector3d& point_in_tip_m) {
   const KDL::JntArray joints = internal::ToJntArray(chain, q);
-  internal::CheckFinite(point_in_tip_m, "point");
+  internal::CheckPoint(point_in_tip_m);
   return PointJacobian(chain, joints, point_in_tip_m, nullptr);
 }
 
 Eigen::Vector3d ContactPoint(const KinematicChain& chain, const Eigen::VectorXd& q,
                              const Eigen::Vector3d& point_in_tip_m) {
   const KDL::JntArray joints = internal::ToJntArray(chain, q);
-  internal::CheckFinite(point_in_tip_m, "point");
+  internal::CheckPoint(point_in_tip_m);
   Eigen::Vector3d point;
   PointJacobian(chain, joints, point_in_tip_m, &point);
   return point;
@@ -261,20 +349,26 @@ ReflectedMassResult ReflectedMass(const KinematicChain& chain, const Eigen::Vect
                                   const ReflectedMassOptions& options) {
   internal::CheckSingularTolerance(options);
   const KDL::JntArray joints = internal::ToJntArray(chain, q);
-  internal::CheckFinite(point_in_tip_m, "point");
+  internal::CheckJointPositions(chain, q, options.check_joint_limits, [&chain](std::size_t i) {
+    return "joints: joint " + std::to_string(i + 1) + " (" + chain.joint_names()[i] + ")";
+  });
+  internal::CheckPoint(point_in_tip_m);
   std::optional<Eigen::Vector3d> unit_direction;
   if (direction_in_base) {
     internal::CheckFinite(*direction_in_base, "direction");
-    const double norm = direction_in_base->norm();
-    if (!(norm > 0.0)) {
+    // Scaled by its largest component first: the norm of (1e308, 1e308, 0) does not overflow.
+    const double largest = direction_in_base->cwiseAbs().maxCoeff();
+    if (!(largest > 0.0)) {
       throw std::invalid_argument(
           "direction: must be a non-zero vector (got (0, 0, 0)); give the impact direction "
           "in the base frame, e.g. 1,0,0");
     }
-    unit_direction = *direction_in_base / norm;
+    unit_direction = (*direction_in_base / largest).normalized();
   }
-  return internal::ReflectedMassAt(chain, internal::ComputePointInertia(chain, joints, point_in_tip_m),
-                                   unit_direction, options);
+  ReflectedMassResult result = internal::ReflectedMassAt(
+      chain, internal::ComputePointInertia(chain, joints, point_in_tip_m), unit_direction, options);
+  if (!options.check_joint_limits) result.warnings.push_back(internal::JointLimitsIgnoredWarning(chain));
+  return result;
 }
 
 std::string ReflectedMassResult::BriefReport() const {

@@ -1,14 +1,14 @@
 #include "covopt/robot/trajectory.hpp"
 
-#include <cerrno>
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "chain_impl.hpp"
 
@@ -53,79 +53,135 @@ std::string ColumnMeaning(std::size_t index, std::size_t joint_count) {
 
 }  // namespace
 
-JointTrajectory ReadJointTrajectory(std::istream& in, std::size_t joint_count,
-                                    const std::string& source_name) {
-  const std::size_t expected = 1 + 2 * joint_count;
-  JointTrajectory trajectory;
-  std::string line;
-  std::size_t line_number = 0;
-  bool header_seen = false;
-  while (std::getline(in, line)) {
-    ++line_number;
-    const std::string_view text = Trim(line);
-    if (text.empty() || text.front() == '#') continue;
-    const std::vector<std::string_view> columns = SplitColumns(text);
-    const std::string where = source_name + ":" + std::to_string(line_number);
-    if (columns.size() != expected) {
-      std::ostringstream message;
-      message << where << ": " << columns.size() << " column" << (columns.size() == 1 ? "" : "s")
-              << ", expected " << expected << " (time [s], " << joint_count
-              << " joint positions [rad], " << joint_count << " joint velocities [rad/s])";
-      throw std::invalid_argument(message.str());
+namespace {
+
+/// "traj.csv:12, column 5 (q4 [rad], joint 'elbow')" or "trajectory sample 3, q4 (joint 'elbow')":
+/// where joint j's position (offset 0) or velocity (offset n) of sample i is.
+internal::JointWhere SampleWhere(const KinematicChain& chain, const JointTrajectory& trajectory, std::size_t i,
+                                 std::size_t offset) {
+  return [&chain, &trajectory, i, offset](std::size_t joint) {
+    const std::size_t column = 1 + offset + joint;
+    const std::string meaning = ColumnMeaning(column, chain.joint_count());
+    const std::string name = "joint '" + chain.joint_names()[joint] + "'";
+    if (i < trajectory.line_numbers.size()) {
+      return trajectory.source_name + ":" + std::to_string(trajectory.line_numbers[i]) + ", column " +
+             std::to_string(column + 1) + " (" + meaning + ", " + name + ")";
     }
-    if (!header_seen) {
+    return "trajectory sample " + std::to_string(i + 1) + ", " + meaning.substr(0, meaning.find(' ')) + " (" +
+           name + ")";
+  };
+}
+
+/// A cell as a finite decimal number ([+-]digits[.digits][e[+-]digits]): no hex, inf or nan.
+std::optional<double> ParseDecimal(std::string_view cell) {
+  if (!cell.empty() && cell.front() == '+') cell.remove_prefix(1);  // from_chars takes '-' only
+  if (cell.empty() || cell.front() == '+' || (cell.front() == '-' && cell.size() > 1 && cell[1] == '+')) {
+    return std::nullopt;
+  }
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value, std::chars_format::general);
+  if (error != std::errc() || end != cell.data() + cell.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+/// At most 40 characters of `cell`, for messages: a 100,000-digit value is not echoed.
+std::string Excerpt(std::string_view cell) {
+  return cell.size() <= 40 ? std::string(cell) : std::string(cell.substr(0, 40)) + "...";
+}
+
+bool AllNumbers(const std::vector<std::string_view>& columns) {
+  for (const std::string_view cell : columns) {
+    if (!ParseDecimal(cell)) return false;
+  }
+  return true;
+}
+
+[[noreturn]] void RefuseColumnCount(const std::string& where, std::size_t got, std::size_t joint_count) {
+  std::ostringstream message;
+  message << where << ": " << got << " column" << (got == 1 ? "" : "s") << ", expected " << 1 + 2 * joint_count
+          << " (time [s], " << joint_count << " joint positions [rad], " << joint_count
+          << " joint velocities [rad/s])";
+  throw std::invalid_argument(message.str());
+}
+
+/// One sample line's columns appended to `trajectory`.
+void AppendSample(JointTrajectory& trajectory, const std::vector<std::string_view>& columns,
+                  std::size_t joint_count, const std::string& where, std::size_t line_number) {
+  const std::size_t expected = 1 + 2 * joint_count;
+  Eigen::VectorXd values(static_cast<Eigen::Index>(expected));
+  for (std::size_t c = 0; c < expected; ++c) {
+    const std::optional<double> value = ParseDecimal(columns[c]);
+    if (!value) {
+      throw std::invalid_argument(where + ", column " + std::to_string(c + 1) + " (" + ColumnMeaning(c, joint_count) +
+                                  "): expected a finite number (got '" + Excerpt(columns[c]) + "'), in decimal");
+    }
+    values[static_cast<Eigen::Index>(c)] = *value;
+  }
+  const double time = values[0];
+  if (!trajectory.time_s.empty() && time < trajectory.time_s.back()) {
+    std::ostringstream message;
+    message << where << ", column 1 (time [s]): time goes backwards (" << time << " s after "
+            << trajectory.time_s.back() << " s)";
+    throw std::invalid_argument(message.str());
+  }
+  if (trajectory.size() == kMaxTrajectorySamples) {
+    throw std::invalid_argument(where + ": more than 1000000 samples, the limit for a trajectory");
+  }
+  const auto n = static_cast<Eigen::Index>(joint_count);
+  trajectory.time_s.push_back(time);
+  trajectory.positions.push_back(values.segment(1, n));
+  trajectory.velocities.push_back(values.segment(1 + n, n));
+  trajectory.line_numbers.push_back(line_number);
+}
+
+JointTrajectory ParseJointTrajectory(std::string_view text, std::size_t joint_count, const std::string& source_name) {
+  JointTrajectory trajectory;
+  trajectory.source_name = source_name;
+  std::size_t line_number = 0;
+  bool first_line = true;
+  bool header_seen = false;
+  std::vector<std::string_view> columns;
+  while (!text.empty()) {
+    const std::size_t newline = text.find('\n');
+    const std::string_view line = Trim(text.substr(0, newline));
+    text.remove_prefix(newline == std::string_view::npos ? text.size() : newline + 1);
+    ++line_number;
+    if (line.empty() || line.front() == '#') continue;
+    columns = SplitColumns(line);
+    const std::string where = source_name + ":" + std::to_string(line_number);
+    if (columns.size() != 1 + 2 * joint_count) RefuseColumnCount(where, columns.size(), joint_count);
+    if (std::exchange(first_line, false) && !AllNumbers(columns)) {
       header_seen = true;
       continue;
     }
-    Eigen::VectorXd values(static_cast<Eigen::Index>(expected));
-    for (std::size_t c = 0; c < expected; ++c) {
-      const std::string cell(columns[c]);
-      char* end = nullptr;
-      errno = 0;
-      const double value = std::strtod(cell.c_str(), &end);
-      const bool parsed = !cell.empty() && end == cell.c_str() + cell.size() && errno != ERANGE;
-      if (!parsed || !std::isfinite(value)) {
-        throw std::invalid_argument(where + ", column " + std::to_string(c + 1) + " (" +
-                                    ColumnMeaning(c, joint_count) + "): expected a finite number (got '" +
-                                    cell + "')");
-      }
-      values[static_cast<Eigen::Index>(c)] = value;
-    }
-    const double time = values[0];
-    if (!trajectory.time_s.empty() && time < trajectory.time_s.back()) {
-      std::ostringstream message;
-      message << where << ", column 1 (time [s]): time goes backwards (" << time << " s after "
-              << trajectory.time_s.back() << " s)";
-      throw std::invalid_argument(message.str());
-    }
-    const auto n = static_cast<Eigen::Index>(joint_count);
-    trajectory.time_s.push_back(time);
-    trajectory.positions.push_back(values.segment(1, n));
-    trajectory.velocities.push_back(values.segment(1 + n, n));
-  }
-  if (in.bad()) throw std::invalid_argument(source_name + ": cannot read the trajectory");
-  if (!header_seen) {
-    throw std::invalid_argument(source_name + ": empty trajectory; expected a header line and "
-                                "then one line per sample (time [s], positions, velocities)");
+    AppendSample(trajectory, columns, joint_count, where, line_number);
   }
   if (trajectory.time_s.empty()) {
-    throw std::invalid_argument(source_name + ": the trajectory has a header but no samples");
+    throw std::invalid_argument(source_name + (header_seen ? ": the trajectory has a header but no samples"
+                                                           : ": empty trajectory; expected an optional header "
+                                                             "line and then one line per sample (time [s], "
+                                                             "positions, velocities)"));
+  }
+  if (!header_seen) {
+    trajectory.warnings.push_back(
+        source_name + ": no header line (line 1 of the samples is all numbers): every line is read as a sample "
+        "whose columns are time [s], the " + std::to_string(joint_count) + " joint positions [rad or m], the " +
+        std::to_string(joint_count) + " joint velocities [rad/s or m/s]");
   }
   return trajectory;
 }
 
+}  // namespace
+
+JointTrajectory ReadJointTrajectory(std::istream& in, std::size_t joint_count,
+                                    const std::string& source_name) {
+  return ParseJointTrajectory(internal::ReadBounded(in, kMaxTrajectoryBytes, source_name, "trajectory"),
+                              joint_count, source_name);
+}
+
 JointTrajectory ReadJointTrajectory(const std::filesystem::path& path, std::size_t joint_count) {
-  const std::string source = path.string();
-  std::error_code error;
-  if (!std::filesystem::exists(path, error)) {
-    throw std::invalid_argument(source + ": no such trajectory file");
-  }
-  if (std::filesystem::is_directory(path, error)) {
-    throw std::invalid_argument(source + ": is a directory, not a trajectory file");
-  }
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(source + ": cannot read the trajectory file");
-  return ReadJointTrajectory(in, joint_count, source);
+  return ParseJointTrajectory(internal::ReadBoundedFile(path, kMaxTrajectoryBytes, "trajectory file"), joint_count,
+                              path.string());
 }
 
 ContactMotionResult ContactMotion(const KinematicChain& chain, const JointTrajectory& trajectory,
@@ -141,11 +197,13 @@ ContactMotionResult ContactMotion(const KinematicChain& chain, const JointTrajec
       trajectory.velocities.size() != trajectory.size()) {
     throw std::invalid_argument("trajectory: time_s, positions and velocities differ in length");
   }
-  internal::CheckFinite(point_in_tip_m, "point");
+  internal::CheckPoint(point_in_tip_m);
   internal::CheckSingularTolerance(options.reflected_mass);
   ContactMotionResult result;
   result.joint_names = chain.joint_names();
   result.warnings = chain.warnings();
+  result.warnings.insert(result.warnings.end(), trajectory.warnings.begin(), trajectory.warnings.end());
+  if (!options.reflected_mass.check_joint_limits) result.warnings.push_back(internal::JointLimitsIgnoredWarning(chain));
   std::size_t fixed_samples = 0;
   std::size_t first_fixed = 0;
   std::size_t fastest = 0;
@@ -155,6 +213,10 @@ ContactMotionResult ContactMotion(const KinematicChain& chain, const JointTrajec
     const std::string velocities_name = sample_name + " velocities";
     const KDL::JntArray joints = internal::ToJntArray(chain, trajectory.positions[i], positions_name.c_str());
     internal::ToJntArray(chain, trajectory.velocities[i], velocities_name.c_str());
+    const bool check_limits = options.reflected_mass.check_joint_limits;
+    internal::CheckJointPositions(chain, trajectory.positions[i], check_limits, SampleWhere(chain, trajectory, i, 0));
+    internal::CheckJointVelocities(chain, trajectory.velocities[i], check_limits,
+                                   SampleWhere(chain, trajectory, i, chain.joint_count()));
     if (!std::isfinite(trajectory.time_s[i])) {
       throw std::invalid_argument(sample_name + ": time must be a finite number");
     }

@@ -116,6 +116,12 @@ TEST_CASE("the --urdf options on simulate, optimize and speed-limit put the refl
 TEST_CASE("bad robot input is exit 2 with one line naming the flag and nothing on stdout") {
   TempDir dir;
   const std::string malformed = dir.Write("bad.urdf", "<robot name='x'><link").string();
+  const std::string cycle = dir.Write("cycle.urdf",
+                                      "<robot name='c'><link name='base'/><link name='a'/><link name='b'/>"
+                                      "<joint name='j1' type='continuous'><parent link='base'/><child link='a'/></joint>"
+                                      "<joint name='j2' type='continuous'><parent link='a'/><child link='b'/></joint>"
+                                      "<joint name='j3' type='fixed'><parent link='b'/><child link='a'/></joint></robot>")
+                                .string();
   const std::string floating =
       dir.Write("floating.urdf",
                 "<robot name='x'><link name='a'/><link name='b'/><joint name='free' type='floating'>"
@@ -157,6 +163,20 @@ TEST_CASE("bad robot input is exit 2 with one line naming the flag and nothing o
       {{"speed-limit", "--robot-mass", "1kg,2kg", "--urdf", kPlanar, "--tip", "tool", "--joints", "0,1",
         "--direction", "0,1,0"},
        "--robot-mass and --urdf both give the robot mass"},
+      // Inputs that once gave a wrong answer (issue 22).
+      {{"robot", "--urdf", kFr3, "--tip", "fr3_link8", "--joints", "0,0,0,90deg,0,1.57,0"},
+       "joint 4 (fr3_joint4): 1.5708 rad is not allowed (outside the URDF's limits [-3.0421, -0.1518] rad"},
+      {{"speed-limit", "--urdf", kFr3, "--tip", "fr3_link8", "--joints", "0,0,0,90deg,0,1.57,0", "--direction",
+        "1,0,0"},
+       "fr3_joint4"},
+      {{"robot", "--urdf", kPlanar, "--tip", "tool", "--joints", "0,1e300deg"},
+       "--joints: joint 2 (elbow, continuous): '1e300deg' is not allowed (within a full turn"},
+      {{"robot", "--urdf", kPlanar, "--tip", "tool", "--joints", "0,1e300rad"}, "'1e300rad' is not allowed"},
+      {{"robot", "--urdf", kPlanar, "--base", "link2", "--tip", "link2", "--joints", ""}, "has no movable joint"},
+      {{"robot", "--urdf", cycle, "--tip", "b", "--joints", "0,0"}, "link 'a' has two parents"},
+      {{"robot", "--urdf", "/dev/zero", "--tip", "b", "--joints", "0,0"}, "larger than 16 MiB"},
+      {Planar({"--point", "1e308,0,0"}), "--point"},
+      {{"robot", "--ignore-joint-limits"}, "--urdf FILE is required"},
   };
   for (const Case& c : cases) {
     const auto run = Run(c.args);
@@ -166,4 +186,24 @@ TEST_CASE("bad robot input is exit 2 with one line naming the flag and nothing o
     CHECK_THAT(run.err, Catch::Contains(c.expected));
     CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
   }
+}
+
+TEST_CASE("--ignore-joint-limits answers outside the URDF's limits and says so in a warning") {
+  for (const std::string command : {"robot", "speed-limit"}) {
+    std::vector<std::string> args = {command, "--urdf", kFr3, "--tip", "fr3_link8", "--joints", "0,0,0,90deg,0,1.57,0",
+                                     "--direction", "1,0,0", "--ignore-joint-limits"};
+    const auto run = Run(args);
+    INFO(command << " -> " << run.err);
+    CHECK(run.exit_code == 0);
+    CHECK_THAT(run.out, Catch::Contains("were not checked (--ignore-joint-limits"));
+  }
+}
+
+TEST_CASE("a direction of 1e308 components is the diagonal, not a fixed (0, 0, 0)") {
+  const auto run = Run(Planar({"--direction", "1e308,1e308,0", "--json"}));
+  REQUIRE(run.exit_code == 0);
+  const json j = json::parse(run.out);
+  CHECK(j["direction"][0].get<double>() == Approx(std::sqrt(0.5)));
+  CHECK(j["direction"][1].get<double>() == Approx(std::sqrt(0.5)));
+  CHECK(j["reflected_mass_kg"].is_number());
 }

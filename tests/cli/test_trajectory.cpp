@@ -125,11 +125,13 @@ TEST_CASE("robot --trajectory: the trajectory sped up by its safe speed scale is
   const TempDir dir;
   const double k = JsonOf(Run(Fr3(kPick, {"--json"})))["safe_speed_scale"].get<double>();
   REQUIRE(k > 1.0);
-  const json at_limit = JsonOf(Run(Fr3(ScaledTrajectory(dir, k), {"--json"})));
+  // Sped up 3x the pick move exceeds FR3's joint velocity limits (2.62 rad/s): the covering's
+  // limit is what this test checks, so the URDF's limits are set aside.
+  const json at_limit = JsonOf(Run(Fr3(ScaledTrajectory(dir, k), {"--json", "--ignore-joint-limits"})));
   CHECK(at_limit["safe_speed_scale"].get<double>() == Approx(1.0).margin(1e-9));
   CHECK(at_limit["status"] == "safe");
   CHECK(at_limit["unsafe_sample_count"] == 0);
-  const json beyond = JsonOf(Run(Fr3(ScaledTrajectory(dir, k * (1.0 + 1e-6)), {"--json"})));
+  const json beyond = JsonOf(Run(Fr3(ScaledTrajectory(dir, k * (1.0 + 1e-6)), {"--json", "--ignore-joint-limits"})));
   CHECK(beyond["status"] == "unsafe");
   CHECK(beyond["safe_speed_scale"].get<double>() < 1.0);
   CHECK(beyond["unsafe_sample_count"].get<int>() >= 1);
@@ -294,6 +296,9 @@ TEST_CASE("robot --trajectory bad input: exit 2, one line naming the flag, nothi
   const std::string too_fast =
       dir.Write("fast.csv", header + "0,0,-0.78,0,-2.35,0,1.57,0.78,1000,0,0,0,0,0,0\n").string();
   const std::string missing = (dir / "no-such-file.csv").string();
+  const std::string degrees = dir.Write("degrees.csv", header + "0,0,-45,0,-135,0,90,45,0,0,0,0,0,0,0\n").string();
+  const std::string hex = dir.Write("hex.csv", header + "0,0x1p3,-0.78,0,-2.35,0,1.57,0.78,0,0,0,0,0,0,0\n").string();
+  const std::string beyond_limit = dir.Write("limit.csv", header + "0,0,-0.78,0,1.57,0,1.57,0.78,0,0,0,0,0,0,0\n").string();
   struct Case {
     std::vector<std::string> args;
     std::string named;
@@ -302,7 +307,13 @@ TEST_CASE("robot --trajectory bad input: exit 2, one line naming the flag, nothi
       {Fr3(columns), "11 columns, expected 15"},
       {Fr3(nan), "column 9 (qd1 [rad/s])"},
       {Fr3(backwards), "time goes backwards"},
-      {Fr3(too_fast), "--trajectory '" + too_fast + "': trajectory sample 1: speed_m_per_s"},
+      {Fr3(too_fast, {"--ignore-joint-limits"}), "--trajectory '" + too_fast + "': trajectory sample 1: speed_m_per_s"},
+      {Fr3(too_fast), "column 9 (qd1 [rad/s], joint 'fr3_joint1'): 1000 rad/s is not allowed (outside the URDF's "
+                      "velocity limit [-2.62, 2.62] rad/s"},
+      {Fr3(degrees), "column 3 (q2 [rad], joint 'fr3_joint2'): -45 rad is not allowed (within a full turn"},
+      {Fr3(hex), "column 2 (q1 [rad]): expected a finite number (got '0x1p3'), in decimal"},
+      {Fr3(beyond_limit), "outside the URDF's limits [-3.0421, -0.1518] rad of joint 'fr3_joint4'"},
+      {Fr3("/dev/zero"), "larger than 64 MiB, the limit for a trajectory file"},
       {Fr3(missing), "no such trajectory file"},
       {Fr3(kPick, {"--joints", "0,0,0,0,0,0,0"}), "--joints"},
       {Fr3(kPick, {"--direction", "1,0,0"}), "--direction"},
@@ -327,4 +338,30 @@ TEST_CASE("robot --trajectory bad input: exit 2, one line naming the flag, nothi
     CHECK(SplitLines(run.err).size() == 1);
     CHECK(run.err.find(c.named) != std::string::npos);
   }
+}
+
+TEST_CASE("robot --trajectory: a file without a header is read from its first row, with a warning", "[trajectory]") {
+  const TempDir dir;
+  // The first row moves fastest: dropping it as a header would hide it.
+  const std::string rows = "0,0,-0.78,0,-2.35,0,1.57,0.78,2.5,0,0,0,0,0,0\n"
+                           "0.1,0,-0.78,0,-2.35,0,1.57,0.78,0.1,0,0,0,0,0,0\n";
+  const std::string headerless = dir.Write("headerless.csv", rows).string();
+  const std::string with_header =
+      dir.Write("header.csv", "t,q1,q2,q3,q4,q5,q6,q7,qd1,qd2,qd3,qd4,qd5,qd6,qd7\n" + rows).string();
+  const json a = JsonOf(Run(Fr3(headerless, {"--json"})));
+  const json b = JsonOf(Run(Fr3(with_header, {"--json"})));
+  CHECK(a["sample_count"] == 2);
+  CHECK(a["safe_speed_scale"] == b["safe_speed_scale"]);
+  CHECK(a["worst_sample"]["index"] == 0);
+  CHECK_THAT(a["warnings"].dump(), Catch::Contains("no header line"));
+  CHECK_THAT(b["warnings"].dump(), !Catch::Contains("no header line"));
+}
+
+TEST_CASE("robot --trajectory --ignore-joint-limits checks a motion outside the URDF's limits, with a warning",
+          "[trajectory]") {
+  const TempDir dir;
+  const std::string beyond = dir.Write("beyond.csv", "t,q1,q2,q3,q4,q5,q6,q7,qd1,qd2,qd3,qd4,qd5,qd6,qd7\n"
+                                                     "0,0,-0.78,0,1.57,0,1.57,0.78,0.5,0,0,0,0,0,0\n").string();
+  const json j = JsonOf(Run(Fr3(beyond, {"--json", "--ignore-joint-limits"})));
+  CHECK_THAT(j["warnings"].dump(), Catch::Contains("were not checked"));
 }

@@ -41,7 +41,7 @@ TEST_CASE("covopt's URDF conversion sets no rotor inertia: M is the links' inert
     <joint name="joint" type="continuous"><parent link="base"/><child link="link"/>
       <axis xyz="0 0 1"/><dynamics damping="3.0" friction="1.0"/></joint>
     <link name="link"><inertial><origin xyz="1 0 0"/><mass value="1"/>
-      <inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0.1"/></inertial></link>
+      <inertia ixx="0.05" ixy="0" ixz="0" iyy="0.05" iyz="0" izz="0.1"/></inertial></link>
   </robot>)";
   const auto chain = covopt::robot::KinematicChain::FromUrdfString(urdf, {"", "link"});
   const Eigen::MatrixXd M = covopt::robot::JointSpaceInertia(chain, Eigen::VectorXd::Zero(1));

@@ -23,11 +23,33 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <numbers>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace covopt::robot {
+
+/// The plausible ranges of the inputs (docs/model.md §9.2). Anything outside is refused with a
+/// message naming the field and the value: such values are typos, wrong units or attacks, and
+/// beyond them sums and norms could overflow into NaN directions or a false "fixed" robot.
+/// The largest URDF read [bytes]: 16 MiB (the shipped models are < 100 kB).
+inline constexpr std::size_t kMaxUrdfBytes = std::size_t{16} << 20;
+/// The most links a URDF may have (deeper trees would only be stack-deep recursion).
+inline constexpr std::size_t kMaxUrdfLinks = 10000;
+/// The largest coordinate of a joint origin, a centre of mass or a contact point [m].
+inline constexpr double kMaxLengthM = 1e3;
+/// The largest link mass [kg].
+inline constexpr double kMaxLinkMassKg = 1e6;
+/// The largest inertia tensor entry [kg m²] (kMaxLinkMassKg at kMaxLengthM).
+inline constexpr double kMaxInertiaKgM2 = 1e12;
+/// The largest |q| of a revolute or continuous joint: a full turn [rad]; more is almost surely
+/// degrees.
+inline constexpr double kMaxRotationRad = 2.0 * std::numbers::pi;
+/// The largest |q| of a prismatic joint [m]; more is almost surely millimetres.
+inline constexpr double kMaxTranslationM = 10.0;
+/// The largest |q̇| of any joint [rad/s or m/s].
+inline constexpr double kMaxJointVelocity = 1e3;
 
 /// Which part of the robot the chain spans.
 struct ChainSpec {
@@ -40,7 +62,7 @@ struct ChainSpec {
 
 /// The joint types a chain may hold.
 enum class JointType {
-  kRevolute,    ///< rotation about the joint axis, position in rad (limits not used)
+  kRevolute,    ///< rotation about the joint axis, position in rad, within the URDF's limits
   kContinuous,  ///< rotation without limits, position in rad
   kPrismatic,   ///< translation along the joint axis, position in m
   kFixed,       ///< no motion; its origin still places the links after it
@@ -48,12 +70,25 @@ enum class JointType {
 /// "revolute", "continuous", "prismatic" or "fixed".
 const char* ToString(JointType type) noexcept;
 
+/// A joint's limits from the URDF's <limit lower upper velocity>. urdfdom defaults lower and
+/// upper to 0 and requires velocity; covopt reads lower == upper (for example both left out)
+/// as "no position range given", and velocity 0 as "no velocity limit given" (as MoveIt does),
+/// each with a warning on the chain. Continuous joints have no position range.
+struct JointLimits {
+  bool has_position = false;  ///< lower < upper was given (revolute, prismatic)
+  double lower = 0.0;         ///< [rad or m]
+  double upper = 0.0;         ///< [rad or m]
+  bool has_velocity = false;  ///< velocity > 0 was given
+  double velocity = 0.0;      ///< the largest |q̇| [rad/s or m/s]
+};
+
 /// One joint of the chain, base to tip.
 struct ChainJoint {
   std::string name;
   JointType type = JointType::kFixed;
   std::string parent_link;
   std::string child_link;
+  JointLimits limits;  ///< movable joints only
 };
 
 /// A URDF chain from a base link to a tip link. Cheap to copy (the KDL chain is shared).
@@ -63,7 +98,13 @@ class KinematicChain {
   /// @throws std::invalid_argument naming the file and what is wrong: missing or unreadable
   ///         file, malformed URDF (urdfdom's own console output is silenced), unknown base or
   ///         tip link, a base that is not an ancestor of the tip, an unsupported joint type
-  ///         on the chain (naming the joint and its type), a non-finite mass or inertia.
+  ///         on the chain (naming the joint and its type), a chain without movable joints, a
+  ///         file over kMaxUrdfBytes or more than kMaxUrdfLinks links, a link with two parents
+  ///         (the joints form a cycle), and naming the link or joint, the field and the value:
+  ///         a mass outside [0, kMaxLinkMassKg], an inertia tensor that is not finite, not
+  ///         positive semi-definite or breaks the triangle inequality of its principal moments,
+  ///         an origin coordinate beyond kMaxLengthM, a zero or non-finite joint axis, joint
+  ///         limits with lower > upper or a negative velocity.
   static KinematicChain FromUrdfFile(const std::filesystem::path& path, const ChainSpec& spec);
   /// As FromUrdfFile, from the URDF text; messages call it `source_name`.
   static KinematicChain FromUrdfString(const std::string& urdf_text, const ChainSpec& spec,

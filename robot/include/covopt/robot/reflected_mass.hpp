@@ -36,6 +36,10 @@ struct ReflectedMassOptions {
   /// [0, 1). Default 1e-9 (rounding in Λ⁻¹ is ~1e-16 relative; a mass 10⁹ times the
   /// smallest is, for an impact, a fixed wall).
   double singular_relative_tolerance = 1e-9;
+  /// Check the joint positions (and, along a trajectory, velocities) against the URDF's
+  /// <limit>s (JointLimits). false: skipped, and the result carries a warning that says so.
+  /// The plausible ranges (a full turn, kMaxTranslationM, kMaxJointVelocity) are always checked.
+  bool check_joint_limits = true;
   /// Gravity does not enter the mass matrix; kept out of the API.
 };
 
@@ -103,9 +107,11 @@ Eigen::Vector3d ContactPoint(const KinematicChain& chain, const Eigen::VectorXd&
 /// link's frame] along `direction_in_base` (any length > 0, normalised here; empty: only the
 /// extremes over all directions).
 /// @throws std::invalid_argument naming the value: q of the wrong length (naming the chain's
-///         joints), a non-finite joint position, point or direction component, a zero
-///         direction, a bad tolerance, or an M that is not positive definite (a joint that
-///         moves no mass: its links need an <inertial>).
+///         joints), a non-finite joint position, a revolute position beyond a full turn
+///         (kMaxRotationRad: degrees?) or a prismatic one beyond kMaxTranslationM, a position
+///         outside the URDF's limits (options.check_joint_limits), a point coordinate beyond
+///         kMaxLengthM, a non-finite or zero direction, a bad tolerance, or an M that is not
+///         positive definite (a joint that moves no mass: its links need an <inertial>).
 ReflectedMassResult ReflectedMass(const KinematicChain& chain, const Eigen::VectorXd& q,
                                   const Eigen::Vector3d& point_in_tip_m,
                                   const std::optional<Eigen::Vector3d>& direction_in_base,

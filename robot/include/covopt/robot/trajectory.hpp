@@ -5,13 +5,18 @@
 /// (reflected_mass.hpp). This is the kinematics of a trajectory check; the injury ratios and
 /// speed limits at each sample are the caller's.
 ///
-/// The CSV file: a header line (any text), then one line per sample:
+/// The CSV file: an optional header line, then one line per sample:
 ///
 ///     time_s, q1, ..., qn, qd1, ..., qdn
 ///
 /// time [s] (non-decreasing), the n joint positions [rad, or m for a prismatic joint], the n
 /// joint velocities [rad/s or m/s], in the chain's joint order (KinematicChain::joint_names).
-/// Blank lines and lines starting with '#' are skipped.
+/// Blank lines and lines starting with '#' are skipped. The first other line is the header
+/// unless every one of its cells is a number: then the file has no header, that line is the
+/// first sample, and the trajectory carries a warning saying the columns were assumed to be
+/// time, positions, velocities. Either way every line must have exactly 1 + 2n columns.
+/// Numbers are decimal (1, -0.5, 2.5e-3; no hex, inf or nan). Limits: at most
+/// kMaxTrajectoryBytes and kMaxTrajectorySamples; larger input is refused as soon as it is seen.
 
 #include <cstddef>
 #include <filesystem>
@@ -26,19 +31,31 @@
 
 namespace covopt::robot {
 
+/// The largest trajectory file read [bytes]: 64 MiB.
+inline constexpr std::size_t kMaxTrajectoryBytes = std::size_t{64} << 20;
+/// The most samples a trajectory may have: 10⁶.
+inline constexpr std::size_t kMaxTrajectorySamples = 1000000;
+
 /// Joint positions and velocities over time.
 struct JointTrajectory {
   std::vector<double> time_s;                ///< sample times [s], non-decreasing
   std::vector<Eigen::VectorXd> positions;    ///< q per sample [rad or m]
   std::vector<Eigen::VectorXd> velocities;   ///< q̇ per sample [rad/s or m/s]
+  /// Where the samples came from, for messages: the file (ReadJointTrajectory) and each
+  /// sample's line in it; empty: "trajectory sample <i>".
+  std::string source_name;
+  std::vector<std::size_t> line_numbers;
+  /// What the reader assumed (no header line); ContactMotion repeats them.
+  std::vector<std::string> warnings;
   std::size_t size() const noexcept { return time_s.size(); }
 };
 
 /// Reads a trajectory CSV of `joint_count` joints from `in`; messages call it `source_name`.
-/// @throws std::invalid_argument "<source>:<line>: ..." for a missing header or no samples, a
-///         line with the wrong number of columns (saying how many are expected and what they
-///         are), a non-numeric or non-finite value (naming the column: "column 3 (q2 [rad])"),
-///         or a time earlier than the line before's.
+/// @throws std::invalid_argument "<source>:<line>: ..." for no samples, a line with the wrong
+///         number of columns (saying how many are expected and what they are), a value that is
+///         not a finite decimal number (naming the column: "column 3 (q2 [rad])"), a time
+///         earlier than the line before's, more than kMaxTrajectoryBytes or
+///         kMaxTrajectorySamples. Positions and velocities are checked by ContactMotion.
 JointTrajectory ReadJointTrajectory(std::istream& in, std::size_t joint_count,
                                     const std::string& source_name = "trajectory");
 /// As above, from the file at `path`.
@@ -91,7 +108,9 @@ struct ContactMotionResult {
 /// Per sample: the velocity, speed, direction and reflected mass of the point
 /// `point_in_tip_m` [m, tip frame].
 /// @throws std::invalid_argument for a trajectory whose sample sizes do not match the chain
-///         (naming the sample), non-finite values, or as ReflectedMass.
+///         (naming the sample), non-finite values, a position or velocity outside its
+///         plausible range or (options.reflected_mass.check_joint_limits) the URDF's limits,
+///         naming the file, line and column (or the sample) and the value, or as ReflectedMass.
 ContactMotionResult ContactMotion(const KinematicChain& chain, const JointTrajectory& trajectory,
                                   const Eigen::Vector3d& point_in_tip_m,
                                   const ContactMotionOptions& options = {});
