@@ -25,7 +25,12 @@ namespace covopt::python {
 namespace {
 
 /// At most 40 characters of a repr, for messages.
-std::string Excerpt(const std::string& text) { return text.size() <= 40 ? text : text.substr(0, 40) + "..."; }
+std::string Excerpt(const std::string& text) {
+  if (text.size() <= 40) return text;
+  std::string excerpt = text.substr(0, 40);
+  excerpt += "...";  // appended: GCC 12's LTO warns (-Wstringop-overread) on substr(...) + "..."
+  return excerpt;
+}
 
 /// A finite float from a Python number, or ValueError naming `what`.
 double Number(const py::handle& value, const std::string& what) {

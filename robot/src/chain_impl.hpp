@@ -87,6 +87,12 @@ struct PointInertia {
 PointInertia ComputePointInertia(const KinematicChain& chain, const KDL::JntArray& joints,
                                  const Eigen::Vector3d& point_in_tip_m);
 
+/// The reflected mass along `unit_direction`, or without one the largest over all directions
+/// [kg] (+infinity: fixed), as ReflectedMassAt computes them but without its text: what
+/// ContactMotion needs per sample.
+double ReflectedMassAlongOrMax(const PointInertia& point, const std::optional<Eigen::Vector3d>& unit_direction,
+                               const ReflectedMassOptions& options);
+
 /// ReflectedMass's answer from a computed PointInertia; `unit_direction` already normalised.
 ReflectedMassResult ReflectedMassAt(const KinematicChain& chain, const PointInertia& point,
                                     const std::optional<Eigen::Vector3d>& unit_direction,

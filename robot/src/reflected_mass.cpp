@@ -277,6 +277,29 @@ PointInertia ComputePointInertia(const KinematicChain& chain, const KDL::JntArra
   return point;
 }
 
+namespace {
+
+/// uᵀ Λ⁻¹ u or an eigenvalue at or below this is zero (ReflectedMassOptions).
+double ZeroBelow(const Eigen::Vector3d& ascending_eigenvalues, const ReflectedMassOptions& options) {
+  return options.singular_relative_tolerance * std::max(ascending_eigenvalues[2], 0.0);
+}
+
+/// 1 / value [kg], or +infinity (fixed) when value is zero by ZeroBelow.
+double Reciprocal(double value, double zero_below) {
+  return value > zero_below && value > 0.0 ? 1.0 / value : kInfinity;
+}
+
+}  // namespace
+
+double ReflectedMassAlongOrMax(const PointInertia& point, const std::optional<Eigen::Vector3d>& unit_direction,
+                               const ReflectedMassOptions& options) {
+  const Eigen::Vector3d lambda =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(point.inverse_mass).eigenvalues();  // as ReflectedMassAt
+  const double zero_below = ZeroBelow(lambda, options);
+  if (!unit_direction) return Reciprocal(lambda[0], zero_below);
+  return Reciprocal(unit_direction->dot(point.inverse_mass * *unit_direction), zero_below);
+}
+
 ReflectedMassResult ReflectedMassAt(const KinematicChain& chain, const PointInertia& point,
                                     const std::optional<Eigen::Vector3d>& unit_direction,
                                     const ReflectedMassOptions& options) {
@@ -289,9 +312,8 @@ ReflectedMassResult ReflectedMassAt(const KinematicChain& chain, const PointIner
 
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inverse_mass);
   const Eigen::Vector3d& lambda = eigen.eigenvalues();  // ascending
-  const double lambda_max = std::max(lambda[2], 0.0);
-  const double zero_below = options.singular_relative_tolerance * lambda_max;
-  auto reciprocal = [&](double value) { return value > zero_below && value > 0.0 ? 1.0 / value : kInfinity; };
+  const double zero_below = ZeroBelow(lambda, options);
+  auto reciprocal = [zero_below](double value) { return Reciprocal(value, zero_below); };
   result.max_reflected_mass_kg = reciprocal(lambda[0]);
   result.max_direction = CanonicalSign(eigen.eigenvectors().col(0));
   result.min_reflected_mass_kg = reciprocal(lambda[2]);

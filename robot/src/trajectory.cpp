@@ -47,8 +47,12 @@ std::vector<std::string_view> SplitColumns(std::string_view line) {
 /// "time [s]", "q2 [rad]", "qd1 [rad/s]": what column `index` (0-based) holds.
 std::string ColumnMeaning(std::size_t index, std::size_t joint_count) {
   if (index == 0) return "time [s]";
-  if (index <= joint_count) return "q" + std::to_string(index) + " [rad]";
-  return "qd" + std::to_string(index - joint_count) + " [rad/s]";
+  // Appended, not "q" + std::to_string(...): GCC 12 -O3 warns (-Wrestrict) on that when inlined.
+  const bool position = index <= joint_count;
+  std::string meaning = position ? "q" : "qd";
+  meaning += std::to_string(position ? index : index - joint_count);
+  meaning += position ? " [rad]" : " [rad/s]";
+  return meaning;
 }
 
 }  // namespace
@@ -232,9 +236,9 @@ ContactMotionResult ContactMotion(const KinematicChain& chain, const JointTrajec
       sample.direction = sample.velocity_m_per_s / sample.speed_m_per_s;
       direction = sample.direction;
     }
-    const ReflectedMassResult mass = internal::ReflectedMassAt(chain, point, direction, options.reflected_mass);
-    sample.contact_point_m = mass.contact_point_m;
-    sample.reflected_mass_kg = direction ? *mass.reflected_mass_kg : mass.max_reflected_mass_kg;
+    // The number only: ReflectedMassAt's sentences, formatted per sample, were most of the time.
+    sample.contact_point_m = point.contact_point_m;
+    sample.reflected_mass_kg = internal::ReflectedMassAlongOrMax(point, direction, options.reflected_mass);
     if (sample.moving && !std::isfinite(sample.reflected_mass_kg)) {
       if (fixed_samples++ == 0) first_fixed = i;
     }
