@@ -21,15 +21,20 @@ matrix, from the URDF's links through Orocos KDL), and its extremes over all
 directions (the reciprocal eigenvalues of J_v M^-1 J_v'). A direction the robot
 cannot move the point in (a singular configuration) has an infinite mass:
 "fixed", with a warning. Links beyond the tip ride along as rigid payload.
-Without --direction only the extremes are given. Robot models shipped with
-covopt: share/covopt/robots.
+Without --direction only the extremes are given. Joint positions (and a
+trajectory's velocities) must lie within the URDF's <limit>s and a full turn;
+--ignore-joint-limits skips the URDF's limits, with a warning. Robot models
+shipped with covopt: share/covopt/robots.
 
 --trajectory FILE.csv checks a motion instead (no --joints, no --direction):
 per sample the contact point's speed |J_v q'|, the reflected mass along its
 motion, the injury ratios of an impact there on the covering and head of the
 scene flags (as in 'covopt speed-limit'), the max safe speed at that mass, and
 safe_speed_scale = min over samples of max safe speed / speed: the factor by
-which the whole trajectory may be sped up (> 1) or must be slowed (< 1). The
+which the whole trajectory may be sped up (> 1) or must be slowed (< 1); the
+URDF's velocity limits are not part of it. The CSV's first line is a header
+unless it is all numbers (then it is a sample, with a warning); at most 64 MiB
+and 10^6 samples. The
 table lists every sample of a trajectory of up to 20 samples; of a longer one
 the 10 with the smallest speed scale and every unsafe one (at most 30).
 

@@ -276,8 +276,8 @@ std::optional<std::string> RobotTrajectoryOptions::FirstCheckFlag() const {
 
 void AddRobotTrajectoryOptions(CLI::App& sub, RobotTrajectoryOptions& options) {
   sub.add_option("--trajectory", options.file,
-                 "check a joint trajectory (CSV: a header, then time [s], the n joint positions, the n joint "
-                 "velocities per line) against the covering below")
+                 "check a joint trajectory (CSV: an optional header, then time [s], the n joint positions, the n "
+                 "joint velocities per line) against the covering below")
       ->type_name("FILE.csv")
       ->group("Trajectory check");
   AddSceneOptions(sub, options.scene);
