@@ -459,10 +459,17 @@ Catalog Catalog::FromTomlFile(const std::filesystem::path& path) {
     throw CatalogError("cannot read catalog file '" + name + "': " + std::strerror(errno), name,
                        "");
   }
-  std::ostringstream text;
-  text << in.rdbuf();
+  // At most kMaxCatalogFileBytes + 1 bytes: a device or FIFO is never read forever.
+  std::string text(kMaxCatalogFileBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (in.bad()) throw CatalogError("cannot read catalog file '" + name + "'", name, "");
-  return FromTomlString(text.str(), name);
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxCatalogFileBytes) {
+    throw CatalogError("catalog file '" + name + "' is larger than " + std::to_string(kMaxCatalogFileBytes >> 20) +
+                           " MiB, the most a catalog may be",
+                       name, "");
+  }
+  return FromTomlString(text, name);
 }
 
 const Catalog& Catalog::BuiltIn() {

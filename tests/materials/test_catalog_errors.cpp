@@ -553,3 +553,21 @@ TEST_CASE("Catalog::Add checks the strength fields as a file would", "[errors][s
   bad.crush_behaviour = static_cast<CrushBehaviour>(7);
   CHECK_THAT(error_for(bad), Contains("invalid crush behaviour"));
 }
+
+TEST_CASE("a catalog file larger than 1 MiB, or an endless device, is refused at once", "[errors]") {
+  // /dev/zero would be read forever: reading stops one byte past the limit.
+  CHECK_THROWS_WITH(covopt::materials::Catalog::FromTomlFile("/dev/zero"),
+                    Catch::Contains("'/dev/zero' is larger than 1 MiB"));
+  // A regular file just over the limit: refused by size, not by its (valid) contents.
+  const std::filesystem::path big =
+      std::filesystem::temp_directory_path() / ("covopt-big-catalog-" + std::to_string(::getpid()) + ".toml");
+  {
+    std::ofstream out(big);
+    out << std::string(covopt::materials::kMaxCatalogFileBytes, '#') << "\n";
+  }
+  CHECK_THROWS_WITH(covopt::materials::Catalog::FromTomlFile(big), Catch::Contains("larger than 1 MiB"));
+  // At the limit it is read (a file of comments is an empty catalog).
+  std::filesystem::resize_file(big, covopt::materials::kMaxCatalogFileBytes);
+  CHECK(covopt::materials::Catalog::FromTomlFile(big).empty());
+  std::filesystem::remove(big);
+}

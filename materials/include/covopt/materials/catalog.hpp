@@ -67,6 +67,9 @@ class CatalogError : public std::runtime_error {
   std::string key_;
 };
 
+/// The largest catalog file FromTomlFile reads [bytes]: 1 MiB, about 500 times the built-in one.
+inline constexpr std::size_t kMaxCatalogFileBytes = std::size_t{1} << 20;
+
 /// A closed interval [min, max]; an empty bound is unbounded on that side.
 struct Range {
   std::optional<double> min;
@@ -112,8 +115,9 @@ class Catalog {
   /// @throws CatalogError only if the shipped file is invalid (a build defect).
   static const Catalog& BuiltIn();
 
-  /// Reads a catalog file.
-  /// @throws CatalogError if the file cannot be read or is not a valid catalog.
+  /// Reads a catalog file of at most kMaxCatalogFileBytes (reading stops one byte past it, so
+  /// a device or a FIFO is refused at once).
+  /// @throws CatalogError if the file cannot be read, is larger, or is not a valid catalog.
   static Catalog FromTomlFile(const std::filesystem::path& path);
 
   /// Reads catalog text; `source_name` names it in messages and origins (usually the
