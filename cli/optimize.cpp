@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -179,7 +180,11 @@ Resolved Resolve(const OptimizeOptions& o) {
   }
   if (o.seed) d.seed = ParseCount(*o.seed, "--seed", 0, std::numeric_limits<unsigned long>::max());
   if (o.runners_up) r.runners_up = static_cast<int>(ParseCount(*o.runners_up, "--top", 0, 1000000));
-  if (o.threads) d.threads = static_cast<int>(ParseCount(*o.threads, "--threads", 1, 256));
+  if (o.threads) {  // 0 = every core, as simulate's sampling and sweep take it
+    const auto threads = ParseCount(*o.threads, "--threads", 0, 256);
+    d.threads = threads == 0 ? static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u))
+                             : static_cast<int>(threads);
+  }
   ResolveOracle(o, r);
 
   // The candidates: the built-in catalog and --catalog files (or only those, --no-builtin), filtered.
@@ -571,7 +576,8 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
       ->group("Solver");
   sub->add_option("--seed", options.seed, "seed of the stochastic global searches")->type_name("N")->group("Solver");
   sub->add_option("--threads", options.threads,
-                  "threads of the per-material catalog snap, 1-256 (default 1); the answer does not depend on it")
+                  "threads of the per-material catalog snap, 0-256, 0 = all cores (default 1); the answer does not "
+                  "depend on it")
       ->type_name("N")->group("Solver");
   AddOracleOptions(*sub, options.oracle_flags, "the designs", "Solver");
   AddUncertaintyOptions(*sub, options.uncertainty, false);

@@ -893,9 +893,9 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     }
     plan = ResolveSimulation(options.scene);
     if (options.threads) {
-      if (*options.threads < 1 || *options.threads > kMaxThreads) {
+      if (*options.threads < 0 || *options.threads > kMaxThreads) {  // 0 = all cores, as elsewhere
         throw InputError(
-            fmt::format("--threads must be in 1..{} (got {})", kMaxThreads, *options.threads));
+            fmt::format("--threads must be in 0..{}, 0 = all cores (got {})", kMaxThreads, *options.threads));
       }
       threads = static_cast<unsigned>(*options.threads);
     }

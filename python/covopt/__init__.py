@@ -138,7 +138,7 @@ def optimize(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
     them). Design space: max_thickness [m] (0.05), min_modulus and max_modulus [Pa]
     (0.1e6, 1e9), covering_poisson [-] of the continuous design (0.25), thickness_step [m]
     the recommendation is rounded up to (0.5e-3). Solver: global_algorithm "direct-l"
-    (default), "isres" or "mlsl"; seed; threads of the catalog snap (1..256). Oracle:
+    (default), "isres" or "mlsl"; seed; threads of the catalog snap (0..256, 0 = all cores). Oracle:
     oracle "auto" (default: the exact path where the scene has an energy integral, else the
     time path), "exact" or "time-path"; method: the time path's integrator (default
     "arkode-erk54"; "exact" means oracle="exact"); rtol: its relative tolerance (1e-8);

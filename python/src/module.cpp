@@ -11,6 +11,7 @@
 /// with the library's message; a failed computation raises covopt.ComputationError (with
 /// .status). The computation runs without the GIL.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstddef>
@@ -19,6 +20,7 @@
 #include <span>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -114,7 +116,20 @@ double ReadQuantity(const py::handle& value, const QuantitySpec& spec, std::stri
                                 std::string(SiUnit(spec.kind)) + ") or a string with a unit (got " +
                                 Repr(value) + ")");
   }
-  const double number = value.cast<double>();
+  // An int beyond a double (10**400) is no number the model takes: pybind11's cast would
+  // fail with "Unable to cast"; Python's float() raises OverflowError.
+  double number = 0.0;
+  try {
+    number = py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
+  } catch (const py::error_already_set&) {
+    const std::string typed = AsTyped(value);
+    throw std::invalid_argument(std::string(keyword) + ": " +
+                                (typed.size() > 40 ? typed.substr(0, 20) + "... (" + std::to_string(typed.size()) +
+                                                         " digits)"
+                                                   : typed) +
+                                " is beyond a double; expected a number in SI (" + std::string(SiUnit(spec.kind)) +
+                                ")");
+  }
   if (std::isinf(number) && number > 0 && (spec.allow_fixed || spec.allow_flat)) return number;
   if (!std::isfinite(number)) {
     throw std::invalid_argument(
@@ -728,7 +743,11 @@ py::dict Optimize(const py::kwargs& kwargs) {
     return v.cast<long long>();
   };
   if (get("seed")) d.seed = static_cast<unsigned long>(whole("seed", 0, std::numeric_limits<long long>::max()));
-  if (get("threads")) d.threads = static_cast<int>(whole("threads", 1, 256));
+  if (get("threads")) {  // 0 = every core, as sweep and the sampling take it
+    const long long threads = whole("threads", 0, 256);
+    d.threads = threads == 0 ? static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u))
+                             : static_cast<int>(threads);
+  }
   d.oracle = ReadOracleKeywords(kwargs, request.scene);
 
   // The candidates: the built-in catalog and the catalog files (or only those), filtered.

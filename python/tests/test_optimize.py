@@ -88,7 +88,7 @@ def test_the_recommendation_is_admissible_and_simulates_as_reported():
     ({"thickness": 0.0}, ["thickness must be in (0, 1 m]"]),
     ({"max_thickness": 2.0}, ["max_thickness 2"]),
     ({"global_algorithm": "newton"}, ["global_algorithm: expected direct-l, isres or mlsl", "newton"]),
-    ({"threads": 0}, ["threads must be a whole number in [1, 256]", "0"]),
+    ({"threads": -1}, ["threads must be a whole number in [0, 256]", "-1"]),
     ({"no_builtin": True}, ["no_builtin leaves no catalog"]),
     ({"catalog": "/nonexistent/catalog.toml"}, ["catalog: ", "/nonexistent/catalog.toml"]),
 ])

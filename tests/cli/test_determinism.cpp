@@ -57,7 +57,7 @@ TEST_CASE("simulate --json is bit-identical on repeated runs", "[determinism]") 
   }
 }
 
-TEST_CASE("optimize --json is bit-identical on repeated runs and on 1 or 2 threads",
+TEST_CASE("optimize --json is bit-identical on repeated runs and on 1, 2 or all (0) threads",
           "[determinism]") {
   const std::vector<std::vector<std::string>> commands = {
       {"optimize", "--json"},
@@ -66,9 +66,10 @@ TEST_CASE("optimize --json is bit-identical on repeated runs and on 1 or 2 threa
       {"optimize", "--json", "--global", "isres", "--seed", "7", "--max-thickness", "30mm"},
   };
   for (const std::vector<std::string>& base : commands) {
-    std::vector<std::string> one = base, two = base;
+    std::vector<std::string> one = base, two = base, every = base;
     one.insert(one.end(), {"--threads", "1"});
     two.insert(two.end(), {"--threads", "2"});
+    every.insert(every.end(), {"--threads", "0"});  // 0 = all cores, as simulate and sweep take it
     const std::string plain = WithoutWallTime(JsonOf(base));
     const std::string again = WithoutWallTime(JsonOf(base));
     const std::string single = WithoutWallTime(JsonOf(one));
@@ -78,6 +79,7 @@ TEST_CASE("optimize --json is bit-identical on repeated runs and on 1 or 2 threa
     CHECK(plain == single);  // the default is one thread
     CHECK(single == dual);
     CHECK(dual == dual_again);
+    CHECK(WithoutWallTime(JsonOf(every)) == single);
     // The comparison is not vacuous: the documents hold the answer.
     CHECK(plain.find("\"candidates\"") != std::string::npos);
     CHECK(plain.find("\"youngs_modulus_Pa\"") != std::string::npos);

@@ -323,7 +323,7 @@ TEST_CASE("bad sweep specs are exit 2 naming the flag, the value and what is all
       {{"--x", "speed=1m/s..2m/s", "--y", "speed=1m/s..3m/s"}, "--y: speed is already swept by --x"},
       {{"--x", "covering-modulus=1MPa..2MPa", "--material", "polystyrene foam 27.6"},
        "--material 'polystyrene foam 27.6' sets covering.modulus"},
-      {{"--x", "speed=1m/s..2m/s", "--threads", "0"}, "--threads must be in 1..4096 (got 0)"},
+      {{"--x", "speed=1m/s..2m/s", "--threads", "-1"}, "--threads must be in 0..4096, 0 = all cores (got -1)"},
       {{"--x", "speed=1m/s..2m/s", "--plot", "chart.pdf"}, "--plot: cannot tell the format"},
       {{"--x", "speed=1m/s..2m/s:1000", "--y", "covering-thickness=0..1mm:1001"}, "at most 1000000"},
       {{"--x", "speed=1m/s..2m/s", "--plot", "a.png", "--plot-quantity", "force"},
