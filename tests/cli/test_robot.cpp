@@ -188,7 +188,7 @@ TEST_CASE("bad robot input is exit 2 with one line naming the flag and nothing o
   }
 }
 
-TEST_CASE("--ignore-joint-limits answers outside the URDF's limits and says so in a warning") {
+TEST_CASE("robot --ignore-joint-limits answers outside the URDF's limits and says so in a warning") {
   for (const std::string command : {"robot", "speed-limit"}) {
     std::vector<std::string> args = {command, "--urdf", kFr3, "--tip", "fr3_link8", "--joints", "0,0,0,90deg,0,1.57,0",
                                      "--direction", "1,0,0", "--ignore-joint-limits"};

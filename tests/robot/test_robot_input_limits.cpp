@@ -120,7 +120,7 @@ TEST_CASE("the URDF's joint limits are checked unless the caller ignores them, w
              Contains("trajectory sample 1, q1 (joint 'shoulder'): 3.5 rad"));
 }
 
-TEST_CASE("joint limit semantics: velocity 0 and lower = upper mean not given; lower > upper is refused") {
+TEST_CASE("joint limit semantics: velocity 0 and lower = upper mean not given, and lower > upper is refused") {
   const auto unlimited = Chain(OneJointUrdf("<axis xyz='0 0 1'/><limit effort='1' velocity='0'/>", kInertial));
   CHECK_FALSE(unlimited.joints()[0].limits.has_position);
   CHECK_FALSE(unlimited.joints()[0].limits.has_velocity);
@@ -151,7 +151,7 @@ TEST_CASE("a chain without a movable joint is refused, not reported as a fixed r
   CHECK_THAT(MessageOf([] { KinematicChain::FromUrdfFile(kPlanar, {"link2", "tool"}); }), Contains("no movable joint"));
 }
 
-TEST_CASE("masses and inertias must be finite and physical; the message names link, field and value") {
+TEST_CASE("masses and inertias must be finite and physical, and the message names link, field and value") {
   CHECK_THAT(MessageOf([] { Chain(OneJointUrdf(kJoint, InertialWith("2", "0.01", "nan"))); }),
              Contains("r.urdf: malformed URDF") && Contains("izz is not a valid double") && Contains("Link [arm]"));
   CHECK_THAT(MessageOf([] { Chain(OneJointUrdf(kJoint, InertialWith("nan", "0.01", "0.1"))); }),
@@ -179,7 +179,7 @@ TEST_CASE("joint origins and axes: a zero axis and an origin of 1e308 m are refu
   CHECK(std::isfinite(result.min_reflected_mass_kg));
 }
 
-TEST_CASE("a direction of 1e308 components is normalised without overflow; a point of 1e308 m is refused") {
+TEST_CASE("a direction of 1e308 components is normalised without overflow, and a point of 1e308 m is refused") {
   const auto chain = KinematicChain::FromUrdfFile(kPlanar, {"", "tool"});
   const Eigen::Vector2d q(0.3, 0.6);
   const auto result = covopt::robot::ReflectedMass(chain, q, Eigen::Vector3d::Zero(), Eigen::Vector3d(1e308, 1e308, 0));
