@@ -13,6 +13,7 @@
 #include "covopt/core/exact.hpp"
 #include "covopt/core/impact_model.hpp"
 #include "covopt/materials/catalog.hpp"
+#include "covopt/optim/input_warnings.hpp"
 #include "covopt/optim/robust_design.hpp"
 #include "covopt/report/robust_json.hpp"
 #include "errors.hpp"
@@ -413,48 +414,16 @@ optim::CoveringCrushCheck CrushCheckOf(const SimulationPlan& plan) {
 
 std::vector<std::string> InputWarnings(const SimulationPlan& plan) {
   std::vector<std::string> warnings = plan.robot_model_notes;
-  if (plan.safety_factor != 1.0) {
-    const auto source = plan.sources.find("limits.safety_factor");
-    warnings.push_back(fmt::format(
-        "safety factor {:g}{}: each verdict is judged against its limit divided by {:g}, "
-        "laceration {} and contusion {} (the ratios are to the limits themselves; safe needs "
-        "a ratio <= {:.4g})",
-        plan.safety_factor,
-        source == plan.sources.end() ? "" : fmt::format(" (from {})", source->second),
-        plan.safety_factor,
-        FormatQuantity(plan.limits.laceration_tensile_stress_Pa / plan.safety_factor,
-                       QuantityKind::kModulus),
-        FormatQuantity(plan.limits.contusion_energy_density_J_per_m2 / plan.safety_factor,
-                       QuantityKind::kEnergyDensity),
-        1.0 / plan.safety_factor));
-  }
-  const bool covered = plan.scene.covering.thickness_m > 0.0;
-  if (plan.covering_material) {
-    const materials::Material& material = *plan.covering_material;
-    if (!covered) {
-      warnings.push_back(fmt::format("no covering (covering.thickness = 0), so {} is ignored",
-                                     plan.covering_material_source));
-      return warnings;
-    }
-    if (!material.poisson_ratio) {
-      warnings.push_back(fmt::format(
-          "the catalog gives no Poisson ratio for '{}': ν unknown, {:g} assumed", material.name,
-          materials::kDefaultPoissonRatio));
-    }
-  }
-  if (!covered) {
-    std::vector<std::string> ignored;
-    for (const char* name : {"covering.modulus", "covering.poisson"}) {
-      const auto source = plan.sources.find(name);
-      if (source != plan.sources.end()) {
-        ignored.push_back(fmt::format("{} (from {})", name, source->second));
-      }
-    }
-    if (!ignored.empty()) {
-      warnings.push_back(fmt::format("no covering (covering.thickness = 0), so {} {} ignored",
-                                     fmt::join(ignored, " and "),
-                                     ignored.size() == 1 ? "is" : "are"));
-    }
+  const auto source_of = [&plan](std::string_view field) -> std::optional<std::string> {
+    if (field == "covering.material") return plan.covering_material_source;
+    const auto source = plan.sources.find(field);
+    if (source == plan.sources.end()) return std::nullopt;
+    return source->second;
+  };
+  for (std::string& warning :
+       optim::SceneInputWarnings(plan.scene, plan.limits, plan.safety_factor,
+                                 plan.covering_material ? &*plan.covering_material : nullptr, source_of)) {
+    warnings.push_back(std::move(warning));
   }
   return warnings;
 }

@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstddef>
 #include <initializer_list>
 #include <limits>
@@ -40,6 +39,7 @@
 #include "covopt/materials/catalog.hpp"
 #include "covopt/materials/material.hpp"
 #include "covopt/optim/design.hpp"
+#include "covopt/optim/input_warnings.hpp"
 #include "covopt/report/design_json.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
@@ -280,59 +280,23 @@ SceneInputs ReadSceneInputs(const py::kwargs& kwargs) {
   return inputs;
 }
 
-/// "%g" of a number, as the CLI's fmt "{:g}".
-std::string ShortNumber(double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
-/// The warnings `covopt simulate` adds about its inputs (cli/simulate.cpp's InputWarnings),
-/// in the same words and order: the safety factor, an unknown Poisson ratio of the catalog
-/// material, covering inputs that no covering (thickness 0) makes moot. Where the CLI names
-/// a flag or scene file as the source, these name the keyword: "(from safety_factor=2)".
+/// The warnings `covopt simulate` adds about its inputs (optim::SceneInputWarnings, as the
+/// CLI's): where the CLI names a flag or scene file as the source, these name the keyword,
+/// "(from safety_factor=2)".
 std::vector<std::string> InputWarnings(const SceneInputs& inputs, const InjuryLimits& limits,
                                        const py::kwargs& kwargs) {
-  const auto source = [&](const char* keyword) { return std::string(keyword) + "=" + Repr(kwargs[keyword]); };
-  std::vector<std::string> warnings;
-  if (inputs.safety_factor != 1.0) {
-    char ratio[64];
-    std::snprintf(ratio, sizeof ratio, "%.4g", 1.0 / inputs.safety_factor);
-    warnings.push_back(
-        "safety factor " + ShortNumber(inputs.safety_factor) + " (from " + source("safety_factor") +
-        "): each verdict is judged against its limit divided by " + ShortNumber(inputs.safety_factor) +
-        ", laceration " +
-        FormatQuantity(limits.laceration_tensile_stress_Pa / inputs.safety_factor, QuantityKind::kModulus) +
-        " and contusion " +
-        FormatQuantity(limits.contusion_energy_density_J_per_m2 / inputs.safety_factor,
-                       QuantityKind::kEnergyDensity) +
-        " (the ratios are to the limits themselves; safe needs a ratio <= " + ratio + ")");
-  }
-  const bool covered = inputs.scene.covering.thickness_m > 0.0;
-  if (inputs.covering_material) {
-    if (!covered) {
-      warnings.push_back("no covering (covering.thickness = 0), so " + source("material") + " is ignored");
-      return warnings;
-    }
-    if (inputs.covering_poisson_assumed) {
-      warnings.push_back("the catalog gives no Poisson ratio for '" + *inputs.covering_material +
-                         "': ν unknown, " + ShortNumber(materials::kDefaultPoissonRatio) + " assumed");
-    }
-  }
-  if (!covered) {
-    std::vector<std::string> ignored;
-    for (const auto& [name, keyword] : {std::pair{"covering.modulus", "covering_modulus"},
-                                        std::pair{"covering.poisson", "covering_poisson"}}) {
-      if (Get(kwargs, keyword)) ignored.push_back(std::string(name) + " (from " + source(keyword) + ")");
-    }
-    if (!ignored.empty()) {
-      std::string joined = ignored.front();
-      if (ignored.size() == 2) joined += " and " + ignored.back();
-      warnings.push_back("no covering (covering.thickness = 0), so " + joined +
-                         (ignored.size() == 1 ? " is ignored" : " are ignored"));
-    }
-  }
-  return warnings;
+  const auto source_of = [&kwargs](std::string_view field) -> std::optional<std::string> {
+    const char* keyword = field == "limits.safety_factor" ? "safety_factor"
+                          : field == "covering.material"  ? "material"
+                          : field == "covering.modulus"   ? "covering_modulus"
+                          : field == "covering.poisson"   ? "covering_poisson"
+                                                          : nullptr;
+    if (keyword == nullptr || !Get(kwargs, keyword)) return std::nullopt;
+    return std::string(keyword) + "=" + Repr(kwargs[keyword]);
+  };
+  const materials::Material* material =
+      inputs.covering_material ? BuiltInCatalog().Find(*inputs.covering_material) : nullptr;
+  return optim::SceneInputWarnings(inputs.scene, limits, inputs.safety_factor, material, source_of);
 }
 
 /// covopt.simulate(**scene, ...): see python/covopt/__init__.py for the documentation.

@@ -18,6 +18,7 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <fcntl.h>
@@ -242,10 +243,10 @@ namespace {
 
 /// Runs the built covopt with `args` (stdout and stderr to files in `dir`) and, once a
 /// temporary appears in `dir`, sends `signal_number`; returns the wait status.
-int InterruptLargeSweep(const TempDir& dir, const fs::path& target, int signal_number) {
-  const std::vector<std::string> args = {COVOPT_CLI_BINARY, "sweep", "--x",
-                                         "covering-thickness=1mm..50mm:1000", "--y",
-                                         "speed=0.1..3:1000", "--csv", target.string()};
+/// Starts the built covopt with `args` (args[0] the binary), stdout and stderr into `dir`'s
+/// files "stdout" and "stderr", `environment` (NAME, VALUE pairs) set in the child.
+pid_t Spawn(const TempDir& dir, const std::vector<std::string>& args,
+            const std::vector<std::pair<std::string, std::string>>& environment = {}) {
   const pid_t pid = ::fork();
   REQUIRE(pid >= 0);
   if (pid == 0) {
@@ -253,12 +254,21 @@ int InterruptLargeSweep(const TempDir& dir, const fs::path& target, int signal_n
     const int err = ::open((dir / "stderr").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
     ::dup2(out, 1);
     ::dup2(err, 2);
+    for (const auto& [name, value] : environment) ::setenv(name.c_str(), value.c_str(), 1);
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     ::execv(argv[0], argv.data());
     ::_exit(127);
   }
+  return pid;
+}
+
+int InterruptLargeSweep(const TempDir& dir, const fs::path& target, int signal_number) {
+  const std::vector<std::string> args = {COVOPT_CLI_BINARY, "sweep", "--x",
+                                         "covering-thickness=1mm..50mm:1000", "--y",
+                                         "speed=0.1..3:1000", "--csv", target.string()};
+  const pid_t pid = Spawn(dir, args);
   // Wait (without a deadline: no timed test) for the temporary, or for the child's end.
   int status = 0;
   for (;;) {
@@ -298,18 +308,8 @@ TEST_CASE("SIGINT or SIGTERM in the middle of a sweep's CSV leaves no temporary 
 
 TEST_CASE("a sampling run on a non-terminal stderr prints progress lines", "[outputs][progress]") {
   TempDir dir;
-  const pid_t pid = ::fork();
-  REQUIRE(pid >= 0);
-  if (pid == 0) {
-    const int out = ::open((dir / "stdout").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    const int err = ::open((dir / "stderr").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    ::dup2(out, 1);
-    ::dup2(err, 2);
-    ::setenv("COVOPT_PROGRESS", "lines", 1);
-    ::execl(COVOPT_CLI_BINARY, COVOPT_CLI_BINARY, "simulate", "--head-mass", "3.7kg..5.8kg",
-            "--samples", "20000", static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+  const pid_t pid = Spawn(dir, {COVOPT_CLI_BINARY, "simulate", "--head-mass", "3.7kg..5.8kg", "--samples", "20000"},
+                          {{"COVOPT_PROGRESS", "lines"}});
   int status = 0;
   REQUIRE(::waitpid(pid, &status, 0) == pid);
   REQUIRE(WIFEXITED(status));

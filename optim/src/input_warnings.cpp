@@ -1,0 +1,64 @@
+// The warnings about a scene's inputs (input_warnings.hpp), shared by the CLI and Python.
+#include "covopt/optim/input_warnings.hpp"
+
+#include <cstdio>
+
+#include <covopt/core/quantity.hpp>
+
+namespace covopt::optim {
+namespace {
+
+/// printf's %g (or another format) of one number.
+std::string Number(double value, const char* format = "%g") {
+  char text[64];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> SceneInputWarnings(const Scene& scene, const InjuryLimits& limits,
+                                            double safety_factor,
+                                            const materials::Material* covering_material,
+                                            const InputSource& source_of) {
+  std::vector<std::string> warnings;
+  if (safety_factor != 1.0) {
+    const std::optional<std::string> source = source_of("limits.safety_factor");
+    warnings.push_back(
+        "safety factor " + Number(safety_factor) + (source ? " (from " + *source + ")" : std::string()) +
+        ": each verdict is judged against its limit divided by " + Number(safety_factor) + ", laceration " +
+        FormatQuantity(limits.laceration_tensile_stress_Pa / safety_factor, QuantityKind::kModulus) +
+        " and contusion " +
+        FormatQuantity(limits.contusion_energy_density_J_per_m2 / safety_factor, QuantityKind::kEnergyDensity) +
+        " (the ratios are to the limits themselves; safe needs a ratio <= " + Number(1.0 / safety_factor, "%.4g") +
+        ")");
+  }
+  const bool covered = scene.covering.thickness_m > 0.0;
+  if (covering_material) {
+    if (!covered) {
+      warnings.push_back("no covering (covering.thickness = 0), so " +
+                         source_of("covering.material").value_or("the material") + " is ignored");
+      return warnings;
+    }
+    if (!covering_material->poisson_ratio) {
+      warnings.push_back("the catalog gives no Poisson ratio for '" + covering_material->name + "': ν unknown, " +
+                         Number(materials::kDefaultPoissonRatio) + " assumed");
+    }
+  }
+  if (!covered) {
+    std::vector<std::string> ignored;
+    for (const char* name : {"covering.modulus", "covering.poisson"}) {
+      if (const std::optional<std::string> source = source_of(name)) {
+        ignored.push_back(std::string(name) + " (from " + *source + ")");
+      }
+    }
+    if (!ignored.empty()) {
+      warnings.push_back("no covering (covering.thickness = 0), so " + ignored.front() +
+                         (ignored.size() == 2 ? " and " + ignored.back() + " are" : std::string(" is")) +
+                         " ignored");
+    }
+  }
+  return warnings;
+}
+
+}  // namespace covopt::optim
