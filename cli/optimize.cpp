@@ -236,8 +236,8 @@ void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& can
     const std::string thickness = c.recommended_thickness_m || fixed_thickness
                                       ? Mm(c.score.design.thickness_m)
                                       : fmt::format("> {}", Mm(c.score.design.thickness_m));
-    const bool unknown_refused = c.score.crush_check == optim::CrushCheck::kUnknownStrength &&
-                                 !rule.crushing_allowed && !rule.unknown_strength_allowed;
+    const bool unknown_refused =
+        c.score.crush_check == optim::CrushCheck::kUnknownStrength && rule.refuses_unknown_strength();
     fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>6} {:>10} {:>7.3f} {:>7.3f} {:>7.3f} {:>8} {:>8}  {}{}\n", i + 1,
                c.material.name.substr(0, 28), c.material.youngs_modulus_Pa * 1e-6,
                fmt::format("{:.2f}{}", c.material.poisson_ratio, c.material.poisson_assumed ? "*" : ""),

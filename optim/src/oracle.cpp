@@ -203,7 +203,7 @@ GoverningRatio DesignScore::governing(const DesignRule& rule) const noexcept {
 bool DesignScore::admissible(const DesignRule& rule) const noexcept {
   if (failed) return false;
   if (rule.compression_counts() && compression_exceeded(rule.safety_factor)) return false;
-  if (crush_check == CrushCheck::kUnknownStrength && !rule.crushing_allowed && !rule.unknown_strength_allowed) {
+  if (crush_check == CrushCheck::kUnknownStrength && rule.refuses_unknown_strength()) {
     return false;
   }
   return rule.safety_factor * governing(rule).ratio <= 1.0;

@@ -190,13 +190,12 @@ RobustCandidate RobustSnapMaterial(const RobustContext& context, const Candidate
 
   RobustCandidate candidate;
   candidate.outcome.material = material;
-  const DesignRule material_rule = o.rule();
-  if (material.crush_behaviour == materials::CrushBehaviour::kUnknown && !material_rule.crushing_allowed &&
-      !material_rule.unknown_strength_allowed) {
+  const DesignRule rule = o.rule();
+  if (material.crush_behaviour == materials::CrushBehaviour::kUnknown && rule.refuses_unknown_strength()) {
     // Never admissible under the rule: its worst case at the maximum thickness, for the table.
     candidate.worst_case = confirm(space.max_thickness_m);
     candidate.outcome.score = ScoreOf(candidate.worst_case, material);
-    candidate.outcome.margin = candidate.outcome.score.margin(material_rule);
+    candidate.outcome.margin = candidate.outcome.score.margin(rule);
     evaluations += search_evaluations;
     return candidate;
   }
@@ -232,7 +231,6 @@ RobustCandidate RobustSnapMaterial(const RobustContext& context, const Candidate
   }
 
   CandidateOutcome& outcome = candidate.outcome;
-  const DesignRule rule = o.rule();
   if (!thinnest) {
     candidate.unconfirmed = candidate.scenario_rounds >= context.options.max_scenario_rounds;
     candidate.worst_case = confirm(space.max_thickness_m);

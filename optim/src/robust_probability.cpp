@@ -257,8 +257,7 @@ ProbabilityCandidate ProbabilitySnapMaterial(const ProbabilityJudge& judge, cons
   ProbabilityCandidate candidate;
   candidate.material = material;
   const DesignRule rule = o.rule();
-  if (material.crush_behaviour == materials::CrushBehaviour::kUnknown && !rule.crushing_allowed &&
-      !rule.unknown_strength_allowed) {
+  if (material.crush_behaviour == materials::CrushBehaviour::kUnknown && rule.refuses_unknown_strength()) {
     candidate.at_design = judge.Estimate(covering(space.max_thickness_m));  // never meets the target
     return candidate;
   }

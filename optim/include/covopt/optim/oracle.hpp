@@ -86,6 +86,8 @@ struct DesignRule {
   /// Materials of unknown strength may be admissible (each is warned about). Default: false.
   bool unknown_strength_allowed = false;
   bool compression_counts() const noexcept { return criterion == DesignCriterion::kNoFullCompression; }
+  /// A material of unknown strength is never admissible under this rule.
+  bool refuses_unknown_strength() const noexcept { return !crushing_allowed && !unknown_strength_allowed; }
   /// The criteria applied, in words, e.g. "laceration and contusion (Park et al. 2011), no full
   /// compression, no crushing; safety factor 1".
   std::string Describe() const;
