@@ -1,0 +1,336 @@
+#!/usr/bin/env python3
+"""Re-runs every shown output of README.md and docs/guide/*.md and writes it back.
+
+A shown output is a ```text block whose first line is a command:
+
+    ```text
+    $ ./build/cli/covopt simulate --speed 1m/s
+    ...what the command prints (stdout, then stderr)...
+    [exit 2]                      <- only when the exit status is not 0
+    ```
+
+- A block may hold several commands; each line starting with "$ " starts one, and a command
+  continues onto the next line when its line ends with a backslash. Pipes (`| head -n 12`)
+  and anything else bash understands are allowed.
+- A command runs with bash in a scratch directory that links every top-level entry of the
+  repository (so `robot/models/...`, `docs/...` and `cli/examples/...` resolve, and the files a
+  command writes, `--csv map.csv`, land in the scratch directory, not in the tree), with
+  `build` linked to the build directory given by --build (default: the repository's build/).
+- The output shown is stdout followed by stderr, trailing blanks removed, and a last line
+  `[exit N]` when the command exits with N != 0.
+- A block whose first command is `$ PYTHONPATH=build/python /usr/bin/python3` is a Python
+  session: each `>>> ` line (with `... ` continuation lines) is run as the interactive
+  interpreter runs it, its value or printed text shown below it; an exception is shown as its
+  one-line `Name: message` (module-qualified when not a builtin).
+
+A command fails unexpectedly when its exit status differs from the `[exit N]` the block shows
+(none shown = 0), or when a Python statement raises where the block showed no exception. Such a
+block is left as it is and the script exits 1, naming it.
+
+--check writes nothing: it reports every block whose output differs from what the binary prints
+now, and exits 1 if any does. Wall times (a number followed by s, ms or µs, the workprecision
+table's µs/impact column, JSON "seconds") are masked before comparing, since they differ from
+run to run.
+
+Usage: scripts/regen-docs.py [--check] [--build DIR] [--verbose] [FILE.md ...]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+COVOPT_PREFIX = "$ ./build/cli/covopt"
+PYTHON_PREFIX = "$ PYTHONPATH=build/python /usr/bin/python3"
+EXIT_LINE = re.compile(r"^\[exit (\d+)\]$")
+COMMAND_TIMEOUT_S = 120
+
+# The interactive interpreter, emulated: statements come on stdin separated by a marker line;
+# each statement's output (the value's repr, anything printed, or `Name: message`) is printed
+# after a marker line of its own.
+PYTHON_SESSION = r'''
+import sys, traceback
+SEP = "\x00STATEMENT\x00"
+chunks = sys.stdin.read().split(SEP + "\n")[1:]
+env = {"__name__": "__main__"}
+sys.stderr = sys.stdout
+for chunk in chunks:
+    print(SEP, flush=True)
+    try:
+        code = compile(chunk, "<stdin>", "single")
+        exec(code, env)
+    except SystemExit:
+        raise
+    except BaseException as e:
+        t = type(e)
+        name = t.__qualname__ if t.__module__ == "builtins" else t.__module__ + "." + t.__qualname__
+        print("\x00RAISED\x00" + (name + ": " + str(e) if str(e) else name))
+    sys.stdout.flush()
+'''
+STATEMENT_MARK = "\x00STATEMENT\x00"
+RAISED_MARK = "\x00RAISED\x00"
+
+
+@dataclass
+class Block:
+    path: Path
+    start: int  # index of the first line after ```text
+    end: int  # index of the closing ```
+    lines: list[str]
+    line_number: int = 0  # 1-based, of the ```text line
+
+    def where(self) -> str:
+        return f"{self.path.relative_to(REPO)}:{self.line_number}"
+
+
+@dataclass
+class Outcome:
+    new_lines: list[str] | None = None
+    problems: list[str] = field(default_factory=list)
+
+
+def find_blocks(path: Path, lines: list[str]) -> list[Block]:
+    blocks = []
+    i = 0
+    while i < len(lines):
+        if lines[i].strip() == "```text":
+            j = i + 1
+            while j < len(lines) and lines[j].strip() != "```":
+                j += 1
+            body = lines[i + 1 : j]
+            if body and (body[0].startswith(COVOPT_PREFIX) or body[0].rstrip() == PYTHON_PREFIX):
+                blocks.append(Block(path, i + 1, j, body, i + 1))
+            i = j + 1
+        else:
+            i += 1
+    return blocks
+
+
+def split_commands(lines: list[str]) -> list[tuple[list[str], list[str]]]:
+    """[(command lines as shown, output lines as shown)] of a shell block."""
+    commands = []
+    i = 0
+    while i < len(lines):
+        if not lines[i].startswith("$ "):
+            raise ValueError(f"expected a '$ ' command line, got {lines[i]!r}")
+        cmd = [lines[i]]
+        while cmd[-1].endswith("\\") and i + 1 < len(lines):
+            i += 1
+            cmd.append(lines[i])
+        i += 1
+        out = []
+        while i < len(lines) and not lines[i].startswith("$ "):
+            out.append(lines[i])
+            i += 1
+        commands.append((cmd, out))
+    return commands
+
+
+def shown_exit(out: list[str]) -> int:
+    if out:
+        m = EXIT_LINE.match(out[-1])
+        if m:
+            return int(m.group(1))
+    return 0
+
+
+def clean(text: str) -> list[str]:
+    lines = [line.rstrip() for line in text.replace("\r\n", "\n").split("\n")]
+    while lines and not lines[-1]:
+        lines.pop()
+    return lines
+
+
+def make_scratch(build: Path) -> Path:
+    scratch = Path(tempfile.mkdtemp(prefix="covopt-regen-docs-"))
+    for entry in REPO.iterdir():
+        if entry.name in ("build", ".git"):
+            continue
+        (scratch / entry.name).symlink_to(entry)
+    (scratch / "build").symlink_to(build)
+    return scratch
+
+
+def run_shell(block: Block, scratch: Path, verbose: bool) -> Outcome:
+    outcome = Outcome()
+    new = []
+    for cmd, old_out in split_commands(block.lines):
+        text = "\n".join(cmd)[2:]
+        start = time.monotonic()
+        try:
+            proc = subprocess.run(["bash", "-c", text], cwd=scratch, capture_output=True,
+                                  timeout=COMMAND_TIMEOUT_S)
+        except subprocess.TimeoutExpired:
+            outcome.problems.append(f"{block.where()}: '{cmd[0]}' ran over {COMMAND_TIMEOUT_S} s")
+            return outcome
+        if verbose:
+            print(f"  {time.monotonic() - start:6.2f} s  {cmd[0]}", file=sys.stderr)
+        out = clean(proc.stdout.decode("utf-8", "replace") + proc.stderr.decode("utf-8", "replace"))
+        if proc.returncode != 0:
+            out.append(f"[exit {proc.returncode}]")
+        expected = shown_exit(old_out)
+        if proc.returncode != expected:
+            tail = "\n    ".join(out[-5:])
+            outcome.problems.append(
+                f"{block.where()}: '{cmd[0]}' exited {proc.returncode}, the block shows {expected}:\n    {tail}")
+        new += cmd + out
+    if not outcome.problems:
+        outcome.new_lines = new
+    return outcome
+
+
+def split_session(lines: list[str]) -> list[tuple[list[str], list[str]]]:
+    """[(statement lines as shown, output lines as shown)] of a Python block (after its $ line)."""
+    statements = []
+    i = 0
+    while i < len(lines):
+        if not lines[i].startswith(">>> "):
+            raise ValueError(f"expected a '>>> ' line, got {lines[i]!r}")
+        stmt = [lines[i]]
+        i += 1
+        while i < len(lines) and lines[i].startswith("... "):
+            stmt.append(lines[i])
+            i += 1
+        out = []
+        while i < len(lines) and not lines[i].startswith(">>> "):
+            out.append(lines[i])
+            i += 1
+        statements.append((stmt, out))
+    return statements
+
+
+def looks_raised(out: list[str]) -> bool:
+    return bool(out) and re.match(r"^[A-Za-z_][\w.]*(Error|Exception|Warning)\b", out[0]) is not None
+
+
+def run_python(block: Block, scratch: Path, verbose: bool) -> Outcome:
+    outcome = Outcome()
+    statements = split_session(block.lines[1:])
+    source = "".join(f"{STATEMENT_MARK}\n" + "\n".join(line[4:] for line in stmt) + "\n"
+                     for stmt, _ in statements)
+    env = dict(os.environ, PYTHONPATH=str(scratch / "build" / "python"))
+    start = time.monotonic()
+    try:
+        proc = subprocess.run(["/usr/bin/python3", "-c", PYTHON_SESSION], cwd=scratch, input=source.encode(),
+                              capture_output=True, timeout=COMMAND_TIMEOUT_S, env=env)
+    except subprocess.TimeoutExpired:
+        outcome.problems.append(f"{block.where()}: the Python session ran over {COMMAND_TIMEOUT_S} s")
+        return outcome
+    if verbose:
+        print(f"  {time.monotonic() - start:6.2f} s  {block.lines[0]}", file=sys.stderr)
+    text = proc.stdout.decode("utf-8", "replace")
+    pieces = text.split(STATEMENT_MARK + "\n")[1:]
+    if proc.returncode != 0 or len(pieces) != len(statements):
+        outcome.problems.append(f"{block.where()}: the Python session failed (exit {proc.returncode}):\n    "
+                                + proc.stderr.decode("utf-8", "replace").strip().replace("\n", "\n    "))
+        return outcome
+    new = [block.lines[0]]
+    for (stmt, old_out), piece in zip(statements, pieces):
+        raised = RAISED_MARK in piece
+        out = clean(piece.replace(RAISED_MARK, ""))
+        if raised and not looks_raised(old_out):
+            outcome.problems.append(f"{block.where()}: '{stmt[0]}' raised where the block shows no exception:\n    "
+                                    + "\n    ".join(out))
+        new += stmt + out
+    if not outcome.problems:
+        outcome.new_lines = new
+    return outcome
+
+
+TIME_TOKEN = re.compile(r"\d+(\.\d+)?(e[-+]?\d+)? ?(ms|s|µs)\b")
+JSON_SECONDS = re.compile(r'("seconds": )[0-9.e+-]+')
+WORKPRECISION_TIME = re.compile(r"(?<=\s)\d+\.\d\d(?=\s)")  # the µs/impact column
+
+
+def masked(lines: list[str]) -> list[str]:
+    """The lines with the wall times replaced by '#', for --check."""
+    out = []
+    in_workprecision = False
+    for line in lines:
+        if line.startswith("$ "):
+            in_workprecision = " workprecision" in line
+        else:
+            line = TIME_TOKEN.sub("# s", line)
+            line = JSON_SECONDS.sub(r"\1#", line)
+            if in_workprecision:
+                line = WORKPRECISION_TIME.sub("#", line)
+        out.append(line)
+    return out
+
+
+def diff(old: list[str], new: list[str]) -> str:
+    import difflib
+    return "\n".join(difflib.unified_diff(old, new, "shown", "now", lineterm="", n=1))
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--check", action="store_true", help="report drift, write nothing")
+    parser.add_argument("--build", type=Path, default=REPO / "build",
+                        help="build directory with cli/covopt and python/ (default: build)")
+    parser.add_argument("--verbose", "-v", action="store_true", help="time each command")
+    parser.add_argument("files", nargs="*", type=Path)
+    args = parser.parse_args()
+
+    build = args.build.resolve()
+    if not os.access(build / "cli" / "covopt", os.X_OK):
+        print(f"regen-docs: no binary at {build / 'cli' / 'covopt'}; build first or give --build", file=sys.stderr)
+        return 2
+    files = [f.resolve() for f in args.files] or [REPO / "README.md", *sorted((REPO / "docs" / "guide").glob("*.md"))]
+
+    scratch = make_scratch(build)
+    problems: list[str] = []
+    drifted: list[str] = []
+    blocks_run = 0
+    start = time.monotonic()
+    try:
+        for path in files:
+            lines = path.read_text(encoding="utf-8").split("\n")
+            blocks = find_blocks(path, lines)
+            if args.verbose and blocks:
+                print(f"{path.relative_to(REPO)}: {len(blocks)} blocks", file=sys.stderr)
+            for block in reversed(blocks):  # from the end, so earlier indices stay valid
+                runner = run_python if block.lines[0].rstrip() == PYTHON_PREFIX else run_shell
+                try:
+                    outcome = runner(block, scratch, args.verbose)
+                except ValueError as e:
+                    problems.append(f"{block.where()}: {e}")
+                    continue
+                blocks_run += 1
+                problems += outcome.problems
+                if outcome.new_lines is None:
+                    continue
+                if args.check:
+                    if masked(outcome.new_lines) != masked(block.lines):
+                        drifted.append(f"{block.where()}:\n{diff(block.lines, outcome.new_lines)}")
+                else:
+                    lines[block.start:block.end] = outcome.new_lines
+            if not args.check:
+                text = "\n".join(lines)
+                if text != path.read_text(encoding="utf-8"):
+                    path.write_text(text, encoding="utf-8")
+                    print(f"regen-docs: updated {path.relative_to(REPO)}", file=sys.stderr)
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+
+    for d in reversed(drifted):
+        print(f"drift: {d}\n")
+    for p in problems:
+        print(f"regen-docs: {p}", file=sys.stderr)
+    seconds = time.monotonic() - start
+    print(f"regen-docs: {blocks_run} blocks in {len(files)} files, {len(drifted)} drifted, "
+          f"{len(problems)} failed, {seconds:.1f} s", file=sys.stderr)
+    return 1 if problems or drifted else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
