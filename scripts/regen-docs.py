@@ -296,6 +296,7 @@ def main() -> int:
         for path in files:
             lines = path.read_text(encoding="utf-8").split("\n")
             blocks = find_blocks(path, lines)
+            file_drift: list[str] = []
             if args.verbose and blocks:
                 print(f"{path.relative_to(REPO)}: {len(blocks)} blocks", file=sys.stderr)
             for block in reversed(blocks):  # from the end, so earlier indices stay valid
@@ -311,9 +312,10 @@ def main() -> int:
                     continue
                 if args.check:
                     if masked(outcome.new_lines) != masked(block.lines):
-                        drifted.append(f"{block.where()}:\n{diff(block.lines, outcome.new_lines)}")
+                        file_drift.append(f"{block.where()}:\n{diff(block.lines, outcome.new_lines)}")
                 else:
                     lines[block.start:block.end] = outcome.new_lines
+            drifted += reversed(file_drift)
             if not args.check:
                 text = "\n".join(lines)
                 if text != path.read_text(encoding="utf-8"):
@@ -322,7 +324,7 @@ def main() -> int:
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
 
-    for d in reversed(drifted):
+    for d in drifted:
         print(f"drift: {d}\n")
     for p in problems:
         print(f"regen-docs: {p}", file=sys.stderr)
