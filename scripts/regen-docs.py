@@ -115,24 +115,30 @@ def find_blocks(path: Path, lines: list[str]) -> list[Block]:
     return blocks
 
 
-def split_commands(lines: list[str]) -> list[tuple[list[str], list[str]]]:
-    """[(command lines as shown, output lines as shown)] of a shell block."""
-    commands = []
+def split_entries(lines: list[str], prompt: str, continues) -> list[tuple[list[str], list[str]]]:
+    """[(input lines as shown, output lines as shown)]: each input starts with `prompt` and goes
+    on while continues(previous line, next line); its output runs to the next prompt."""
+    entries = []
     i = 0
     while i < len(lines):
-        if not lines[i].startswith("$ "):
-            raise ValueError(f"expected a '$ ' command line, got {lines[i]!r}")
-        cmd = [lines[i]]
-        while cmd[-1].endswith("\\") and i + 1 < len(lines):
-            i += 1
-            cmd.append(lines[i])
+        if not lines[i].startswith(prompt):
+            raise ValueError(f"expected a line starting with {prompt!r}, got {lines[i]!r}")
+        head = [lines[i]]
         i += 1
+        while i < len(lines) and continues(head[-1], lines[i]):
+            head.append(lines[i])
+            i += 1
         out = []
-        while i < len(lines) and not lines[i].startswith("$ "):
+        while i < len(lines) and not lines[i].startswith(prompt):
             out.append(lines[i])
             i += 1
-        commands.append((cmd, out))
-    return commands
+        entries.append((head, out))
+    return entries
+
+
+def split_commands(lines: list[str]) -> list[tuple[list[str], list[str]]]:
+    """A shell block's commands: "$ " lines, continued by a trailing backslash."""
+    return split_entries(lines, "$ ", lambda previous, _: previous.endswith("\\"))
 
 
 def shown_exit(out: list[str]) -> int:
@@ -189,23 +195,8 @@ def run_shell(block: Block, scratch: Path, verbose: bool) -> Outcome:
 
 
 def split_session(lines: list[str]) -> list[tuple[list[str], list[str]]]:
-    """[(statement lines as shown, output lines as shown)] of a Python block (after its $ line)."""
-    statements = []
-    i = 0
-    while i < len(lines):
-        if not lines[i].startswith(">>> "):
-            raise ValueError(f"expected a '>>> ' line, got {lines[i]!r}")
-        stmt = [lines[i]]
-        i += 1
-        while i < len(lines) and lines[i].startswith("... "):
-            stmt.append(lines[i])
-            i += 1
-        out = []
-        while i < len(lines) and not lines[i].startswith(">>> "):
-            out.append(lines[i])
-            i += 1
-        statements.append((stmt, out))
-    return statements
+    """A Python block's statements (after its $ line): ">>> " lines, continued by "... " lines."""
+    return split_entries(lines, ">>> ", lambda _, line: line.startswith("... "))
 
 
 def looks_raised(out: list[str]) -> bool:
