@@ -12,11 +12,11 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
+#include <covopt/core/parallel_for.hpp>
 
 #include "robust_internal.hpp"
 #include "validation_internal.hpp"
@@ -457,37 +457,16 @@ CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMateria
   return outcome;
 }
 
-/// SnapMaterial for every material, on options.threads threads; outcome i is material i's,
-/// whatever the thread count (each thread writes only its own slots). The first exception
-/// thrown by any thread is rethrown here after all have joined.
+/// SnapMaterial for every material, on options.threads threads (ParallelFor); outcome i is
+/// material i's, whatever the thread count. The first exception thrown by any thread is
+/// rethrown here after all have joined.
 std::vector<CandidateOutcome> SnapMaterials(const DesignOracle& oracle,
                                             std::span<const CandidateMaterial> materials,
                                             const DesignOptions& o) {
   std::vector<CandidateOutcome> outcomes(materials.size());
-  const std::size_t threads =
-      std::min<std::size_t>(static_cast<std::size_t>(o.threads), materials.size());
-  if (threads <= 1) {
-    for (std::size_t i = 0; i < materials.size(); ++i) outcomes[i] = SnapMaterial(oracle, materials[i], o);
-    return outcomes;
-  }
-  std::vector<std::exception_ptr> errors(threads);
-  std::vector<std::thread> pool;
-  pool.reserve(threads);
-  for (std::size_t t = 0; t < threads; ++t) {
-    pool.emplace_back([&, t] {
-      try {
-        for (std::size_t i = t; i < materials.size(); i += threads) {
-          outcomes[i] = SnapMaterial(oracle, materials[i], o);
-        }
-      } catch (...) {
-        errors[t] = std::current_exception();
-      }
-    });
-  }
-  for (std::thread& thread : pool) thread.join();
-  for (const std::exception_ptr& error : errors) {
-    if (error) std::rethrow_exception(error);
-  }
+  ParallelFor(materials.size(), static_cast<unsigned>(o.threads), [&](std::size_t i, unsigned) {
+    outcomes[i] = SnapMaterial(oracle, materials[i], o);
+  });
   return outcomes;
 }
 

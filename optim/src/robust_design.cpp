@@ -6,14 +6,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <exception>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
+#include <covopt/core/parallel_for.hpp>
 
 #include "covopt/optim/robust_design.hpp"
 #include "robust_internal.hpp"
@@ -457,31 +456,9 @@ RobustThinnestCovering FindRobustThinnestCovering(const UncertaintyBox& box,
   // Materials, each from the same initial scenarios: results independent of the thread count.
   std::vector<RobustCandidate> candidates(materials.size());
   std::vector<long> material_evaluations(materials.size(), 0);
-  const std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(o.threads), materials.size());
-  if (threads <= 1) {
-    for (std::size_t i = 0; i < materials.size(); ++i) {
-      candidates[i] = RobustSnapMaterial(context, materials[i], out.initial_scenarios, material_evaluations[i]);
-    }
-  } else {
-    std::vector<std::exception_ptr> errors(threads);
-    std::vector<std::thread> pool;
-    pool.reserve(threads);
-    for (std::size_t t = 0; t < threads; ++t) {
-      pool.emplace_back([&, t] {
-        try {
-          for (std::size_t i = t; i < materials.size(); i += threads) {
-            candidates[i] = RobustSnapMaterial(context, materials[i], out.initial_scenarios, material_evaluations[i]);
-          }
-        } catch (...) {
-          errors[t] = std::current_exception();
-        }
-      });
-    }
-    for (std::thread& thread : pool) thread.join();
-    for (const std::exception_ptr& error : errors) {
-      if (error) std::rethrow_exception(error);
-    }
-  }
+  ParallelFor(materials.size(), static_cast<unsigned>(o.threads), [&](std::size_t i, unsigned) {
+    candidates[i] = RobustSnapMaterial(context, materials[i], out.initial_scenarios, material_evaluations[i]);
+  });
   for (long e : material_evaluations) evaluations += e;
   std::stable_sort(candidates.begin(), candidates.end(), [](const RobustCandidate& x, const RobustCandidate& y) {
     const CandidateOutcome& a = x.outcome;
