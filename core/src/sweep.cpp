@@ -11,13 +11,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "covopt/core/impact_model.hpp"
+#include "covopt/core/number_format.hpp"
 #include "covopt/core/parallel_for.hpp"
 #include "covopt/core/scene_fields.hpp"
 #include "numeric_format.hpp"
@@ -168,17 +168,10 @@ void Count(const SweepRow& row, SweepResult& r) {
 }
 
 std::string Percent(std::size_t n, std::size_t of) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f %%",
-                of == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(of));
-  return text;
+  return FormatFixed(of == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(of), 1) + " %";
 }
 
-std::string Short(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
+std::string Short(double value) { return FormatSignificant(value, 4); }
 
 }  // namespace
 
@@ -196,10 +189,8 @@ std::string SweepResult::BriefReport() const {
   if (y_values > 0) {
     text += " (" + std::to_string(x_values) + " x " + std::to_string(y_values) + ")";
   }
-  char time[48];
-  std::snprintf(time, sizeof time, " in %.3g s on %u thread%s: ", wall_time_s, threads,
-                threads == 1 ? "" : "s");
-  text += time;
+  text += " in " + FormatSignificant(wall_time_s, 3) + " s on " + std::to_string(threads) + " thread" +
+          (threads == 1 ? ": " : "s: ");
   switch (status) {
     case SweepStatus::kAllValid: text += "all valid"; break;
     case SweepStatus::kSomeInvalid:

@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <optional>
 #include <exception>
@@ -386,13 +384,6 @@ NloptOptions GlobalOptions(const DesignOptions& o) {
   return n;
 }
 
-/// A multiple of the thickness step, printed-clean: k × 0.5 mm is 0.018, not 0.018000000000000002.
-double StockThickness(double steps, double step_m) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.12g", steps * step_m);
-  return std::strtod(text, nullptr);
-}
-
 /// Thinnest admissible thickness of one material: the first admissible point of a scan, then
 /// bisection; then rounded up to stock.
 CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMaterial& material,
@@ -437,8 +428,8 @@ CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMateria
     // The admissible set need not be an interval: step up until the stock thickness is
     // admissible too.
     double steps = std::ceil(admissible / o.thickness_step_m - 1e-9);
-    for (double stock = StockThickness(steps, o.thickness_step_m);;
-         stock = StockThickness(++steps, o.thickness_step_m)) {
+    for (double stock = internal::StockThickness(steps, o.thickness_step_m);;
+         stock = internal::StockThickness(++steps, o.thickness_step_m)) {
       if (stock > space.max_thickness_m * (1 + 1e-12)) {
         outcome.stock_thickness_beyond_max_m = stock;  // keep the exact thickness instead
         break;

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -12,6 +11,7 @@
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
+#include <covopt/core/number_format.hpp>
 #include <covopt/core/parallel_for.hpp>
 
 #include "covopt/optim/robust_design.hpp"
@@ -46,9 +46,7 @@ void RefuseCoveringRanges(const UncertaintyBox& box) {
 }
 
 double StockThickness(double steps, double step_m) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.12g", steps * step_m);
-  return std::strtod(text, nullptr);
+  return std::strtod(FormatSignificant(steps * step_m, 12).c_str(), nullptr);
 }
 
 double ScanThickness(const DesignSpace& space, int points, int k) {

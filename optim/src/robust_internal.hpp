@@ -95,7 +95,8 @@ void DrawInputsInto(const UncertaintyBox& box, std::uint64_t seed, std::uint64_t
 void ValidateDesign(const DesignOptions& options);
 /// Throws for a range on covering-modulus, covering-poisson or covering-thickness.
 void RefuseCoveringRanges(const UncertaintyBox& box);
-/// A multiple of the thickness step, printed-clean (as FindThinnestSafeCovering's).
+/// A multiple of the thickness step, printed-clean (12 significant digits): k × 0.5 mm is
+/// 0.018, not 0.018000000000000002.
 double StockThickness(double steps, double step_m);
 /// Point k of the catalog scan's `points` thicknesses over the design space [m].
 double ScanThickness(const DesignSpace& space, int points, int k);
