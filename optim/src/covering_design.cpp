@@ -312,28 +312,8 @@ class ModulusSearch {
 
   /// Golden-section search for the least worst ratio on [a, c]; the best point evaluated.
   DesignScore Golden(double thickness_m, double a, double c) const {
-    constexpr double kInvPhi = 0.6180339887498949;
-    double x1 = c - kInvPhi * (c - a), x2 = a + kInvPhi * (c - a);
-    DesignScore s1 = At(x1, thickness_m), s2 = At(x2, thickness_m);
-    DesignScore best = s1.worst_ratio() <= s2.worst_ratio() ? s1 : s2;
-    while (c - a > kLogModulusTolerance) {
-      if (s1.worst_ratio() <= s2.worst_ratio()) {
-        c = x2;
-        x2 = x1;
-        s2 = s1;
-        x1 = c - kInvPhi * (c - a);
-        s1 = At(x1, thickness_m);
-        if (s1.worst_ratio() < best.worst_ratio()) best = s1;
-      } else {
-        a = x1;
-        x1 = x2;
-        s1 = s2;
-        x2 = a + kInvPhi * (c - a);
-        s2 = At(x2, thickness_m);
-        if (s2.worst_ratio() < best.worst_ratio()) best = s2;
-      }
-    }
-    return best;
+    return internal::GoldenSection([&](double u) { return At(u, thickness_m); },
+                                   [](const DesignScore& s) { return s.worst_ratio(); }, a, c, kLogModulusTolerance);
   }
 
   const DesignOracle& oracle_;

@@ -316,28 +316,8 @@ class RobustModulusSearch {
     return {u, v.governing, v.admissible};
   }
   Choice Golden(double b, double a, double c) const {
-    constexpr double kInvPhi = 0.6180339887498949;
-    double x1 = c - kInvPhi * (c - a), x2 = a + kInvPhi * (c - a);
-    Choice s1 = At(x1, b), s2 = At(x2, b);
-    Choice best = s1.governing <= s2.governing ? s1 : s2;
-    while (c - a > kLogModulusTolerance) {
-      if (s1.governing <= s2.governing) {
-        c = x2;
-        x2 = x1;
-        s2 = s1;
-        x1 = c - kInvPhi * (c - a);
-        s1 = At(x1, b);
-        if (s1.governing < best.governing) best = s1;
-      } else {
-        a = x1;
-        x1 = x2;
-        s1 = s2;
-        x2 = a + kInvPhi * (c - a);
-        s2 = At(x2, b);
-        if (s2.governing < best.governing) best = s2;
-      }
-    }
-    return best;
+    return internal::GoldenSection([&](double u) { return At(u, b); }, [](const Choice& s) { return s.governing; },
+                                   a, c, kLogModulusTolerance);
   }
 
   const ScenarioSet& set_;
