@@ -8,6 +8,7 @@ packages=(
   build-essential cmake pkg-config
   libsundials-dev        # CVODES / ARKODE time integration, CVODES sensitivities
   libeigen3-dev          # small dense linear algebra
+  libboost-math-dev      # optim: Φ, Φ⁻¹ and 1-D root/minimum searches (Boost.Math, header-only)
   catch2                 # unit tests (v2.13)
   libcli11-dev           # command-line parsing
   libtomlplusplus-dev    # scene and catalog files

@@ -1,5 +1,5 @@
 // Many exact-path impacts on several threads (covopt/core/grid.hpp). The points are handed
-// out in fixed chunks through one atomic counter; each point is written only by the thread
+// out in fixed chunks by ParallelFor; each point is written only by the thread
 // that computed it, so the order of work never changes a result.
 #include "covopt/core/grid.hpp"
 
@@ -7,9 +7,9 @@
 #include <atomic>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 #include "covopt/core/impact_model.hpp"
+#include "covopt/core/parallel_for.hpp"
 
 namespace covopt {
 namespace {
@@ -40,28 +40,14 @@ std::vector<GridPointResult> SolveExactGrid(std::span<const Scene> scenes,
   std::vector<GridPointResult> results(total);
   const std::size_t chunks = (total + kChunk - 1) / kChunk;
 
-  unsigned threads = options.threads;
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(chunks, 1)));
-
-  std::atomic<std::size_t> next_chunk{0};
   std::atomic<std::size_t> done{0};
-  const auto work = [&](bool report) {
-    for (std::size_t chunk = next_chunk.fetch_add(1); chunk < chunks;
-         chunk = next_chunk.fetch_add(1)) {
-      const std::size_t begin = chunk * kChunk;
-      const std::size_t end = std::min(total, begin + kChunk);
-      for (std::size_t i = begin; i < end; ++i) SolvePoint(scenes[i], options.exact, results[i]);
-      const std::size_t now = done.fetch_add(end - begin) + (end - begin);
-      if (report && options.progress && now < total) options.progress(now, total);
-    }
-  };
-
-  std::vector<std::thread> workers;
-  workers.reserve(threads - 1);
-  for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work, false);
-  work(true);
-  for (std::thread& worker : workers) worker.join();
+  ParallelFor(chunks, options.threads, [&](std::size_t chunk, unsigned worker) {
+    const std::size_t begin = chunk * kChunk;
+    const std::size_t end = std::min(total, begin + kChunk);
+    for (std::size_t i = begin; i < end; ++i) SolvePoint(scenes[i], options.exact, results[i]);
+    const std::size_t now = done.fetch_add(end - begin) + (end - begin);
+    if (worker == 0 && options.progress && now < total) options.progress(now, total);
+  });
   if (options.progress) options.progress(total, total);
   return results;
 }

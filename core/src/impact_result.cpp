@@ -3,13 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "covopt/core/exact.hpp"
+#include "covopt/core/number_format.hpp"
 
 namespace covopt {
 namespace {
@@ -27,9 +27,7 @@ constexpr double kNearFullCompressionShare = 0.05;  // "within 5 % of full compr
 
 /// Three significant digits and a unit, e.g. "10.7 kN".
 std::string Scaled(double value, double scale, const char* unit) {
-  char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.3g %s", value / scale, unit);
-  return buffer;
+  return FormatSignificant(value / scale, 3) + " " + unit;
 }
 
 std::string Millimetres(double metres) { return Scaled(metres, 1e-3, "mm"); }

@@ -1,17 +1,12 @@
 #pragma once
-// Private helper: numbers in error messages, shortest form that round-trips.
-#include <charconv>
-#include <cmath>
+// Private helper: numbers in error messages, shortest form that round-trips
+// (covopt::FormatShortest, covopt/core/number_format.hpp).
 #include <string>
+
+#include "covopt/core/number_format.hpp"
 
 namespace covopt::internal {
 
-inline std::string FormatNumber(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
+inline std::string FormatNumber(double value) { return FormatShortest(value); }
 
 }  // namespace covopt::internal

@@ -4,13 +4,13 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
 
+#include "covopt/core/number_format.hpp"
 #include "covopt/core/scene.hpp"
 #include "numeric_format.hpp"
 
@@ -181,13 +181,6 @@ std::string Quoted(std::string_view text) {
 std::string WhatIsExpected(QuantityKind kind) {
   return std::string(kind == QuantityKind::kDimensionless ? "a number" : Describe(kind)) +
          " such as " + std::string(Example(kind));
-}
-
-/// printf's %g: 6 significant digits.
-std::string FormatSignificant(double value) {
-  char buffer[32];
-  const int n = std::snprintf(buffer, sizeof buffer, "%g", value);
-  return std::string(buffer, static_cast<std::size_t>(std::max(n, 0)));
 }
 
 /// `number` (as from_chars accepted it) times the unit, rounded once: a decimal unit moves

@@ -1,11 +1,9 @@
 // A streamed sweep, each point on the exact path or, where the scene has no energy integral,
 // on the time path (covopt/core/sweep.hpp).
 //
-// The grid is cut into blocks of block_rows rows. Threads claim the next block in order
-// from a shared counter and fill a slot of a ring of 2 x threads slots; the calling thread
-// hands the blocks to the consumer strictly in order, and computes a block itself while the
-// one it must deliver next is not ready. A block may be claimed only when its slot is free
-// (block < delivered + slots), which bounds memory by the ring whatever the grid's size.
+// The grid is cut into blocks of block_rows rows, computed on ParallelForOrdered's threads
+// into a ring of 2 x threads slots and handed to the consumer strictly in order on the calling
+// thread, which bounds memory by the ring whatever the grid's size (parallel_for.hpp).
 // Each row is written only by the thread that computed it from its own scene, so neither
 // the order of work nor the number of threads changes a result.
 #include "covopt/core/sweep.hpp"
@@ -13,17 +11,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
-#include <cstdio>
-#include <exception>
 #include <limits>
-#include <mutex>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <utility>
 
 #include "covopt/core/impact_model.hpp"
+#include "covopt/core/number_format.hpp"
+#include "covopt/core/parallel_for.hpp"
 #include "covopt/core/scene_fields.hpp"
 #include "numeric_format.hpp"
 
@@ -173,60 +168,10 @@ void Count(const SweepRow& row, SweepResult& r) {
 }
 
 std::string Percent(std::size_t n, std::size_t of) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f %%",
-                of == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(of));
-  return text;
+  return FormatFixed(of == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(of), 1) + " %";
 }
 
-std::string Short(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
-
-/// The ring of blocks shared by the threads of one sweep.
-class BlockRing {
- public:
-  BlockRing(std::size_t blocks, std::size_t slots, std::size_t block_rows)
-      : blocks_(blocks), slots_(slots), ready_(slots, kNone), rows_(slots) {
-    for (auto& slot : rows_) slot.reserve(block_rows);
-  }
-
-  /// Claims the next block if its slot is free; false when there is none to claim now.
-  /// Call with the lock held.
-  bool TryClaim(std::size_t& block) {
-    if (stop_ || next_ >= blocks_ || next_ >= delivered_ + slots_) return false;
-    block = next_++;
-    return true;
-  }
-  /// No block left to claim, ever.
-  bool Exhausted() const { return stop_ || next_ >= blocks_; }
-
-  std::vector<SweepRow>& Slot(std::size_t block) { return rows_[block % slots_]; }
-
-  std::mutex mutex;
-  std::condition_variable changed;  // a block became ready, a slot free, or stop was set
-
-  void MarkReady(std::size_t block) { ready_[block % slots_] = block; }
-  bool Ready(std::size_t block) const { return ready_[block % slots_] == block; }
-  void MarkDelivered(std::size_t block) {
-    ready_[block % slots_] = kNone;
-    delivered_ = block + 1;
-  }
-  void Stop() { stop_ = true; }
-  bool stopped() const { return stop_; }
-
- private:
-  static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-  const std::size_t blocks_;
-  const std::size_t slots_;
-  std::size_t next_ = 0;       // the next block to claim
-  std::size_t delivered_ = 0;  // blocks handed to the consumer
-  bool stop_ = false;
-  std::vector<std::size_t> ready_;  // per slot: the block it holds, complete; or kNone
-  std::vector<std::vector<SweepRow>> rows_;
-};
+std::string Short(double value) { return FormatSignificant(value, 4); }
 
 }  // namespace
 
@@ -244,10 +189,8 @@ std::string SweepResult::BriefReport() const {
   if (y_values > 0) {
     text += " (" + std::to_string(x_values) + " x " + std::to_string(y_values) + ")";
   }
-  char time[48];
-  std::snprintf(time, sizeof time, " in %.3g s on %u thread%s: ", wall_time_s, threads,
-                threads == 1 ? "" : "s");
-  text += time;
+  text += " in " + FormatSignificant(wall_time_s, 3) + " s on " + std::to_string(threads) + " thread" +
+          (threads == 1 ? ": " : "s: ");
   switch (status) {
     case SweepStatus::kAllValid: text += "all valid"; break;
     case SweepStatus::kSomeInvalid:
@@ -308,101 +251,33 @@ SweepResult Sweep(const SweepSpec& spec, const SweepOptions& options,
   const std::size_t total = nx * ny;
   const std::size_t block_rows = options.block_rows;
   const std::size_t blocks = total / block_rows + (total % block_rows != 0 ? 1 : 0);
-  unsigned threads = options.threads;
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(blocks, 1)));
+  const unsigned threads = ParallelThreads(blocks, options.threads);
 
   SweepResult result;
   result.x_values = nx;
   result.y_values = spec.y ? ny : 0;
   result.threads = threads;
 
-  BlockRing ring(blocks, 2 * static_cast<std::size_t>(threads), std::min(block_rows, total));
-  std::exception_ptr worker_error;
-
-  // Fills one block's slot; called without the lock (the slot is the claimer's alone).
-  const auto compute = [&](std::size_t block) {
-    std::vector<SweepRow>& rows = ring.Slot(block);
-    const std::size_t begin = block * block_rows;
-    const std::size_t end = std::min(total, begin + block_rows);
-    rows.resize(end - begin);
-    for (std::size_t i = begin; i < end; ++i) {
-      SolveRow(spec, options, x_field, y_field, ny, i, rows[i - begin]);
-    }
-  };
-
-  // A worker thread: claims and computes blocks until none is left or the sweep stops.
-  const auto work = [&] {
-    std::unique_lock lock(ring.mutex);
-    while (true) {
-      std::size_t block = 0;
-      bool claimed = false;
-      ring.changed.wait(lock, [&] {
-        claimed = ring.TryClaim(block);
-        return claimed || ring.Exhausted();
-      });
-      if (!claimed) return;
-      lock.unlock();
-      try {
-        compute(block);
-      } catch (...) {
-        lock.lock();
-        if (!worker_error) worker_error = std::current_exception();
-        ring.Stop();
-        ring.changed.notify_all();
-        return;
-      }
-      lock.lock();
-      ring.MarkReady(block);
-      ring.changed.notify_all();
-    }
-  };
-
-  // Stops and joins the workers however the calling thread leaves (a consumer's exception
-  // included).
-  struct Workers {
-    BlockRing& ring;
-    std::vector<std::thread> threads;
-    ~Workers() {
-      {
-        const std::lock_guard lock(ring.mutex);
-        ring.Stop();
-      }
-      ring.changed.notify_all();
-      for (std::thread& thread : threads) thread.join();
-    }
-  } workers{ring, {}};
-  workers.threads.reserve(threads - 1);
-  for (unsigned t = 1; t < threads; ++t) workers.threads.emplace_back(work);
-
-  for (std::size_t next = 0; next < blocks; ++next) {
-    {
-      std::unique_lock lock(ring.mutex);
-      while (!ring.Ready(next) && !ring.stopped()) {
-        std::size_t block = 0;
-        if (ring.TryClaim(block)) {
-          lock.unlock();
-          compute(block);
-          lock.lock();
-          ring.MarkReady(block);
-          ring.changed.notify_all();
-          continue;
+  // One buffer per slot of ParallelForOrdered's ring: at most 2 x threads blocks at once.
+  std::vector<std::vector<SweepRow>> slots(2 * static_cast<std::size_t>(threads));
+  for (std::vector<SweepRow>& slot : slots) slot.reserve(std::min(block_rows, total));
+  ParallelForOrdered(
+      blocks, threads, slots.size(),
+      [&](std::size_t block, std::size_t slot) {
+        std::vector<SweepRow>& rows = slots[slot];
+        const std::size_t begin = block * block_rows;
+        const std::size_t end = std::min(total, begin + block_rows);
+        rows.resize(end - begin);
+        for (std::size_t i = begin; i < end; ++i) {
+          SolveRow(spec, options, x_field, y_field, ny, i, rows[i - begin]);
         }
-        ring.changed.wait(lock);
-      }
-      if (worker_error) std::rethrow_exception(worker_error);
-    }
-    // The slot is complete, and no thread writes it again before it is marked delivered.
-    const std::vector<SweepRow>& rows = ring.Slot(next);
-    for (const SweepRow& row : rows) Count(row, result);
-    consumer(std::span<const SweepRow>(rows));
-    {
-      const std::lock_guard lock(ring.mutex);
-      ring.MarkDelivered(next);
-    }
-    ring.changed.notify_all();
-    if (options.progress) options.progress(result.rows, total);
-  }
+      },
+      [&](std::size_t, std::size_t slot) {
+        const std::vector<SweepRow>& rows = slots[slot];
+        for (const SweepRow& row : rows) Count(row, result);
+        consumer(std::span<const SweepRow>(rows));
+        if (options.progress) options.progress(result.rows, total);
+      });
 
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <ctime>
 #include <limits>
 #include <stdexcept>
 #include <utility>
 
 #include "covopt/core/exact.hpp"
+#include "covopt/core/number_format.hpp"
 #include "covopt/core/time_integration.hpp"
 #include "numeric_format.hpp"
 
@@ -191,12 +191,6 @@ std::string SeriesLabel(ComputationMethod method, bool restart) {
   return std::string(ToString(method)) + (restart ? "" : ", no restart");
 }
 
-std::string Formatted(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
-}
-
 }  // namespace
 
 std::string_view ToString(RestartSeries series) noexcept {
@@ -245,13 +239,13 @@ std::string WorkPrecisionResult::BriefReport() const {
   }
   if (tightest) {
     const WorkPrecisionPoint& p = points[*tightest->point];
-    report += "; cheapest to " + Formatted("%.0e", tightest->target_error) + ": " +
+    report += "; cheapest to " + FormatScientific(tightest->target_error, 0) + ": " +
               SeriesLabel(p.method, p.restart) + " at rtol " +
-              Formatted("%.0e", p.relative_tolerance) + ", " +
-              Formatted("%.1f", p.seconds_per_impact * 1e6) + " µs per impact";
+              FormatScientific(p.relative_tolerance, 0) + ", " +
+              FormatFixed(p.seconds_per_impact * 1e6, 1) + " µs per impact";
   }
   report += "; " + std::to_string(not_kept) + " series beyond " +
-            Formatted("%g", kept_tolerance_ratio) + " x rtol or failing";
+            FormatSignificant(kept_tolerance_ratio) + " x rtol or failing";
   return report;
 }
 

@@ -1,9 +1,9 @@
 #include "text.hpp"
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <limits>
+
+#include <covopt/core/number_format.hpp>
 
 namespace covopt::materials::internal {
 
@@ -60,12 +60,7 @@ std::optional<std::string_view> Closest(std::string_view word,
   return std::nullopt;
 }
 
-std::string FormatNumber(double value) {
-  std::array<char, 64> buffer{};
-  const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  if (ec != std::errc{}) return "?";
-  return std::string(buffer.data(), end);
-}
+std::string FormatNumber(double value) { return FormatShortest(value); }
 
 std::string JoinAlternatives(const std::vector<std::string>& words, bool quote) {
   std::string joined;

@@ -4,19 +4,17 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <optional>
 #include <exception>
 #include <memory>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
+#include <covopt/core/parallel_for.hpp>
 
 #include "robust_internal.hpp"
 #include "validation_internal.hpp"
@@ -314,28 +312,8 @@ class ModulusSearch {
 
   /// Golden-section search for the least worst ratio on [a, c]; the best point evaluated.
   DesignScore Golden(double thickness_m, double a, double c) const {
-    constexpr double kInvPhi = 0.6180339887498949;
-    double x1 = c - kInvPhi * (c - a), x2 = a + kInvPhi * (c - a);
-    DesignScore s1 = At(x1, thickness_m), s2 = At(x2, thickness_m);
-    DesignScore best = s1.worst_ratio() <= s2.worst_ratio() ? s1 : s2;
-    while (c - a > kLogModulusTolerance) {
-      if (s1.worst_ratio() <= s2.worst_ratio()) {
-        c = x2;
-        x2 = x1;
-        s2 = s1;
-        x1 = c - kInvPhi * (c - a);
-        s1 = At(x1, thickness_m);
-        if (s1.worst_ratio() < best.worst_ratio()) best = s1;
-      } else {
-        a = x1;
-        x1 = x2;
-        s1 = s2;
-        x2 = a + kInvPhi * (c - a);
-        s2 = At(x2, thickness_m);
-        if (s2.worst_ratio() < best.worst_ratio()) best = s2;
-      }
-    }
-    return best;
+    return internal::GoldenSection([&](double u) { return At(u, thickness_m); },
+                                   [](const DesignScore& s) { return s.worst_ratio(); }, a, c, kLogModulusTolerance);
   }
 
   const DesignOracle& oracle_;
@@ -386,13 +364,6 @@ NloptOptions GlobalOptions(const DesignOptions& o) {
   return n;
 }
 
-/// A multiple of the thickness step, printed-clean: k × 0.5 mm is 0.018, not 0.018000000000000002.
-double StockThickness(double steps, double step_m) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.12g", steps * step_m);
-  return std::strtod(text, nullptr);
-}
-
 /// Thinnest admissible thickness of one material: the first admissible point of a scan, then
 /// bisection; then rounded up to stock.
 CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMaterial& material,
@@ -437,8 +408,8 @@ CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMateria
     // The admissible set need not be an interval: step up until the stock thickness is
     // admissible too.
     double steps = std::ceil(admissible / o.thickness_step_m - 1e-9);
-    for (double stock = StockThickness(steps, o.thickness_step_m);;
-         stock = StockThickness(++steps, o.thickness_step_m)) {
+    for (double stock = internal::StockThickness(steps, o.thickness_step_m);;
+         stock = internal::StockThickness(++steps, o.thickness_step_m)) {
       if (stock > space.max_thickness_m * (1 + 1e-12)) {
         outcome.stock_thickness_beyond_max_m = stock;  // keep the exact thickness instead
         break;
@@ -457,37 +428,16 @@ CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMateria
   return outcome;
 }
 
-/// SnapMaterial for every material, on options.threads threads; outcome i is material i's,
-/// whatever the thread count (each thread writes only its own slots). The first exception
-/// thrown by any thread is rethrown here after all have joined.
+/// SnapMaterial for every material, on options.threads threads (ParallelFor); outcome i is
+/// material i's, whatever the thread count. The first exception thrown by any thread is
+/// rethrown here after all have joined.
 std::vector<CandidateOutcome> SnapMaterials(const DesignOracle& oracle,
                                             std::span<const CandidateMaterial> materials,
                                             const DesignOptions& o) {
   std::vector<CandidateOutcome> outcomes(materials.size());
-  const std::size_t threads =
-      std::min<std::size_t>(static_cast<std::size_t>(o.threads), materials.size());
-  if (threads <= 1) {
-    for (std::size_t i = 0; i < materials.size(); ++i) outcomes[i] = SnapMaterial(oracle, materials[i], o);
-    return outcomes;
-  }
-  std::vector<std::exception_ptr> errors(threads);
-  std::vector<std::thread> pool;
-  pool.reserve(threads);
-  for (std::size_t t = 0; t < threads; ++t) {
-    pool.emplace_back([&, t] {
-      try {
-        for (std::size_t i = t; i < materials.size(); i += threads) {
-          outcomes[i] = SnapMaterial(oracle, materials[i], o);
-        }
-      } catch (...) {
-        errors[t] = std::current_exception();
-      }
-    });
-  }
-  for (std::thread& thread : pool) thread.join();
-  for (const std::exception_ptr& error : errors) {
-    if (error) std::rethrow_exception(error);
-  }
+  ParallelFor(materials.size(), static_cast<unsigned>(o.threads), [&](std::size_t i, unsigned) {
+    outcomes[i] = SnapMaterial(oracle, materials[i], o);
+  });
   return outcomes;
 }
 

@@ -3,30 +3,20 @@
 #include "covopt/optim/design.hpp"
 
 #include <algorithm>
-#include <cstdarg>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include <covopt/core/impact_model.hpp>
 #include <covopt/core/impact_result.hpp>
+#include <covopt/core/number_format.hpp>
 #include <covopt/materials/material.hpp>
 
 namespace covopt::optim {
 namespace {
 
-/// printf into a std::string (messages only; never on a hot path).
-std::string Format(const char* format, ...) {
-  char buffer[1024];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(buffer, sizeof buffer, format, args);
-  va_end(args);
-  return buffer;
-}
-
-std::string Mm(double metres) { return Format("%.2f mm", metres * 1e3); }
-std::string MPa(double pascals) { return Format("%.3g MPa", pascals * 1e-6); }
+std::string Mm(double metres) { return FormatFixed(metres * 1e3, 2) + " mm"; }
+std::string MPa(double pascals) { return FormatSignificant(pascals * 1e-6, 3) + " MPa"; }
+std::string Ratio(double ratio) { return FormatFixed(ratio, 3); }
 
 /// Why the catalog has no admissible material, when crushing or an unknown strength is part of
 /// it: " N materials would crush; M have an unknown strength (--allow-unknown-strength)."
@@ -38,11 +28,15 @@ std::string WhyNoMaterial(const DesignResult& r) {
     if (c.score.governing(r.rule).criterion == LimitingCriterion::kCrush) ++crush;
   }
   std::string why;
-  if (crush > 0) why += Format(" %d material%s would crush where %s thick enough.", crush, crush == 1 ? "" : "s",
-                               crush == 1 ? "it is" : "they are");
+  if (crush > 0) {
+    why.append(" ").append(std::to_string(crush));
+    why += crush == 1 ? " material would crush where it is thick enough."
+                      : " materials would crush where they are thick enough.";
+  }
   if (unknown > 0) {
-    why += Format(" %d of unknown strength %s not considered (--allow-unknown-strength admits them, unverified).",
-                  unknown, unknown == 1 ? "is" : "are");
+    why.append(" ").append(std::to_string(unknown));
+    why += std::string(" of unknown strength ") + (unknown == 1 ? "is" : "are") +
+           " not considered (--allow-unknown-strength admits them, unverified).";
   }
   return why;
 }
@@ -72,9 +66,9 @@ std::string Headline(const DesignResult& r, double max_thickness) {
   const std::string least =
       r.candidates.empty()
           ? std::string()
-          : Format(" The least unsafe material is %s (worst ratio %.3f%s).", r.candidates.front().material.name.c_str(),
-                   r.candidates.front().score.worst_ratio(),
-                   r.candidates.front().score.peaks.fully_compressed ? ", fully compressed" : "");
+          : " The least unsafe material is " + r.candidates.front().material.name + " (worst ratio " +
+                Ratio(r.candidates.front().score.worst_ratio()) +
+                (r.candidates.front().score.peaks.fully_compressed ? ", fully compressed" : "") + ").";
   if (r.thickness_m && r.continuous.every_modulus_fully_compressed) {
     return "Nothing is admissible at " + Mm(*r.thickness_m) +
            ": every modulus up to the search's maximum is fully compressed at the peak (the robot reaches "
@@ -83,7 +77,7 @@ std::string Headline(const DesignResult& r, double max_thickness) {
   }
   return r.thickness_m ? "Nothing is admissible at " + Mm(*r.thickness_m) + ": even the best modulus (" +
                              MPa(best.design.youngs_modulus_Pa) + ") leaves a worst ratio of " +
-                             Format("%.3f", best.worst_ratio()) + "." + least
+                             Ratio(best.worst_ratio()) + "." + least
                        : "Nothing is admissible within " + Mm(max_thickness) +
                              ": no modulus in the search range meets the criterion at any thickness." + least;
 }
@@ -94,17 +88,16 @@ std::vector<std::string> Warnings(const DesignRequest& request, const DesignResu
   const SolverReport& global = r.continuous.global;
   if (!global.backend.empty() && !EndedNormally(global.termination)) {
     // Not an error: stage 1 only brackets; the nested search answers on its own.
-    warnings.push_back(Format("the global stage failed: %s (%s code %d %s); its point was not used, the bracketed "
-                              "search answered alone",
-                              ToString(global.termination), global.backend.c_str(), global.raw_code,
-                              global.raw_name.c_str()));
+    warnings.push_back("the global stage failed: " + std::string(ToString(global.termination)) + " (" +
+                       global.backend + " code " + std::to_string(global.raw_code) + " " + global.raw_name +
+                       "); its point was not used, the bracketed search answered alone");
   }
   const SolverReport& local = r.continuous.local;
   if (!local.backend.empty() && local.termination != Termination::kConverged &&
       local.termination != Termination::kAcceptable) {
-    warnings.push_back(Format("the local polish failed: %s (%s code %d %s); the bracketed search's point is reported",
-                              ToString(local.termination), local.backend.c_str(), local.raw_code,
-                              local.raw_name.c_str()));
+    warnings.push_back("the local polish failed: " + std::string(ToString(local.termination)) + " (" +
+                       local.backend + " code " + std::to_string(local.raw_code) + " " + local.raw_name +
+                       "); the bracketed search's point is reported");
   }
   if (r.recommendation) {
     const CandidateOutcome& c = r.candidates[*r.recommendation];
@@ -122,10 +115,10 @@ std::vector<std::string> Warnings(const DesignRequest& request, const DesignResu
                          " (its peak compressive stress times the safety factor)");
     } else if (c.score.crush_check == CrushCheck::kChecked && request.options.allow_crushing &&
                request.options.safety_factor * c.score.crush_ratio > 1.0) {
-      warnings.push_back(Format("the recommended covering crushes: its peak compressive stress is %.3g times its "
-                                "compressive strength (with the safety factor); a sacrificial liner protects once "
-                                "and must be replaced after every impact (--allow-crushing)",
-                                request.options.safety_factor * c.score.crush_ratio));
+      warnings.push_back("the recommended covering crushes: its peak compressive stress is " +
+                         FormatSignificant(request.options.safety_factor * c.score.crush_ratio, 3) +
+                         " times its compressive strength (with the safety factor); a sacrificial liner protects "
+                         "once and must be replaced after every impact (--allow-crushing)");
     }
     // Where the recommended design leaves the model's domain (core's validity checks).
     Scene covered = request.scene;
@@ -135,9 +128,9 @@ std::vector<std::string> Warnings(const DesignRequest& request, const DesignResu
     }
   }
   if (r.oracle.failed_evaluations > 0) {
-    warnings.push_back(Format("%ld of %ld %s evaluations failed and counted as inadmissible (first: %s)",
-                              r.oracle.failed_evaluations, r.oracle.evaluations, r.oracle.Name().c_str(),
-                              r.oracle.first_failure.c_str()));
+    warnings.push_back(std::to_string(r.oracle.failed_evaluations) + " of " + std::to_string(r.oracle.evaluations) +
+                       " " + r.oracle.Name() + " evaluations failed and counted as inadmissible (first: " +
+                       r.oracle.first_failure + ")");
   }
   if (r.covering_needed() && r.continuous.score.peaks.fully_compressed) {
     warnings.push_back(
@@ -167,11 +160,12 @@ const char* ToString(DesignStatus status) noexcept {
 std::string DesignResult::BriefReport() const {
   std::string report = std::string(ToString(verdict)) + " (" + ToString(criterion) + "): " + message;
   if (covering_needed()) {
-    report += Format(" Continuous %s: %s at %s, worst ratio %.3f.", thickness_m ? "best" : "optimum",
-                     MPa(continuous.score.design.youngs_modulus_Pa).c_str(),
-                     Mm(continuous.score.design.thickness_m).c_str(), continuous.score.worst_ratio());
+    report += std::string(" Continuous ") + (thickness_m ? "best" : "optimum") + ": " +
+              MPa(continuous.score.design.youngs_modulus_Pa) + " at " + Mm(continuous.score.design.thickness_m) +
+              ", worst ratio " + Ratio(continuous.score.worst_ratio()) + ".";
   }
-  return report + Format(" %ld %s evaluations, %.1f ms.", evaluations, oracle.Name().c_str(), seconds * 1e3);
+  return report + " " + std::to_string(evaluations) + " " + oracle.Name() + " evaluations, " +
+         FormatFixed(seconds * 1e3, 1) + " ms.";
 }
 
 std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalog, std::span<const std::string> names,
@@ -242,9 +236,9 @@ DesignResult Design(const DesignRequest& request) {
   // optimum that is itself a failed evaluation, leaves nothing usable.
   if (r.bare_robot.failed || (r.covering_needed() && r.continuous.score.failed)) {
     r.status = DesignStatus::kOracleFailed;
-    r.message = Format("The %s failed where the answer needs it (%ld of %ld evaluations failed; first: %s).",
-                       r.oracle.Name().c_str(), r.oracle.failed_evaluations, r.oracle.evaluations,
-                       r.oracle.first_failure.c_str());
+    r.message = "The " + r.oracle.Name() + " failed where the answer needs it (" +
+                std::to_string(r.oracle.failed_evaluations) + " of " + std::to_string(r.oracle.evaluations) +
+                " evaluations failed; first: " + r.oracle.first_failure + ").";
     r.warnings = {};
     return r;
   }

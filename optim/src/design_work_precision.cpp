@@ -5,10 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include <covopt/core/number_format.hpp>
 
 namespace covopt::optim {
 namespace {
@@ -39,10 +40,8 @@ void Validate(const Scene& scene, const DesignWorkPrecisionOptions& o) {
   for (std::size_t i = 0; i < o.relative_tolerances.size(); ++i) {
     const double rtol = o.relative_tolerances[i];
     if (!(rtol >= 1e-14 && rtol <= 1e-2)) {
-      char text[64];
-      std::snprintf(text, sizeof text, "%g", rtol);
       throw std::invalid_argument("relative_tolerances[" + std::to_string(i) + "] must be in [1e-14, 1e-2] (got " +
-                                  text + ")");
+                                  FormatSignificant(rtol) + ")");
     }
   }
 }
@@ -104,12 +103,12 @@ DesignWorkPrecisionResult MeasureDesignWorkPrecision(const Scene& scene, const D
       done();
     }
   }
-  char text[256];
-  std::snprintf(text, sizeof text,
-                "%zu searches (the exact path's and %zu on the time path); b_c* within %.3g x rtol of the exact "
-                "path's at worst; %ld failed time-path evaluations",
-                study.points.size(), study.points.size() - 1, worst, failed);
-  study.message = exact.feasible ? text : "the exact path found no admissible optimum: no reference";
+  study.message = exact.feasible
+                      ? std::to_string(study.points.size()) + " searches (the exact path's and " +
+                            std::to_string(study.points.size() - 1) + " on the time path); b_c* within " +
+                            FormatSignificant(worst, 3) + " x rtol of the exact path's at worst; " +
+                            std::to_string(failed) + " failed time-path evaluations"
+                      : "the exact path found no admissible optimum: no reference";
   return study;
 }
 

@@ -1,22 +1,10 @@
 // The warnings about a scene's inputs (input_warnings.hpp), shared by the CLI and Python.
 #include "covopt/optim/input_warnings.hpp"
 
-#include <cstdio>
-
+#include <covopt/core/number_format.hpp>
 #include <covopt/core/quantity.hpp>
 
 namespace covopt::optim {
-namespace {
-
-/// printf's %g (or another format) of one number.
-std::string Number(double value, const char* format = "%g") {
-  char text[64];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
-
-}  // namespace
-
 std::vector<std::string> SceneInputWarnings(const Scene& scene, const InjuryLimits& limits,
                                             double safety_factor,
                                             const materials::Material* covering_material,
@@ -25,12 +13,12 @@ std::vector<std::string> SceneInputWarnings(const Scene& scene, const InjuryLimi
   if (safety_factor != 1.0) {
     const std::optional<std::string> source = source_of("limits.safety_factor");
     warnings.push_back(
-        "safety factor " + Number(safety_factor) + (source ? " (from " + *source + ")" : std::string()) +
-        ": each verdict is judged against its limit divided by " + Number(safety_factor) + ", laceration " +
+        "safety factor " + FormatSignificant(safety_factor) + (source ? " (from " + *source + ")" : std::string()) +
+        ": each verdict is judged against its limit divided by " + FormatSignificant(safety_factor) + ", laceration " +
         FormatQuantity(limits.laceration_tensile_stress_Pa / safety_factor, QuantityKind::kModulus) +
         " and contusion " +
         FormatQuantity(limits.contusion_energy_density_J_per_m2 / safety_factor, QuantityKind::kEnergyDensity) +
-        " (the ratios are to the limits themselves; safe needs a ratio <= " + Number(1.0 / safety_factor, "%.4g") +
+        " (the ratios are to the limits themselves; safe needs a ratio <= " + FormatSignificant(1.0 / safety_factor, 4) +
         ")");
   }
   const bool covered = scene.covering.thickness_m > 0.0;
@@ -42,7 +30,7 @@ std::vector<std::string> SceneInputWarnings(const Scene& scene, const InjuryLimi
     }
     if (!covering_material->poisson_ratio) {
       warnings.push_back("the catalog gives no Poisson ratio for '" + covering_material->name + "': ν unknown, " +
-                         Number(materials::kDefaultPoissonRatio) + " assumed");
+                         FormatSignificant(materials::kDefaultPoissonRatio) + " assumed");
     }
   }
   if (!covered) {

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -14,6 +13,7 @@
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
+#include <covopt/core/number_format.hpp>
 #include <covopt/core/sensitivity.hpp>
 #include <covopt/core/time_path_sensitivity.hpp>
 
@@ -23,18 +23,8 @@ namespace {
 constexpr double kLn10 = std::numbers::ln10;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-std::string Number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
-
-/// A design value as typed back to reproduce a failure (shortest round trip).
-std::string Exactly(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
-}
+/// A design value as typed back to reproduce a failure (17 digits: reads back exactly).
+std::string Exactly(double value) { return FormatSignificant(value, 17); }
 
 /// Why a scene has only the time path ("" when it has an energy integral: the conservative
 /// two-mass impact, or a damped two-mass contact, which keeps an energy relation,
@@ -178,7 +168,7 @@ std::string DesignRule::Describe() const {
   if (compression_counts()) text += ", the covering not fully compressed";
   text += crushing_allowed ? "; crushing allowed (a sacrificial liner)" : ", the covering not crushed";
   if (!crushing_allowed && unknown_strength_allowed) text += " where its strength is known";
-  return text + "; safety factor " + Number(safety_factor) + " on each";
+  return text + "; safety factor " + FormatSignificant(safety_factor) + " on each";
 }
 
 std::vector<std::string> HeadVerdictScope(const DesignRule& rule) {
@@ -279,9 +269,8 @@ OracleSelection ChooseOracle(const Scene& scene, OracleChoice choice) {
 
 std::string OracleReport::Name() const {
   if (kind == OracleKind::kExact) return "exact path";
-  char rtol[32];
-  std::snprintf(rtol, sizeof rtol, "%.0e", relative_tolerance);
-  return "time path (" + std::string(covopt::ToString(method)) + ", rtol " + rtol + ")";
+  return "time path (" + std::string(covopt::ToString(method)) + ", rtol " + FormatScientific(relative_tolerance, 0) +
+         ")";
 }
 
 void ValidateTimePathOptions(const TimeIntegrationOptions& o, const std::string& prefix) {
@@ -291,11 +280,11 @@ void ValidateTimePathOptions(const TimeIntegrationOptions& o, const std::string&
   }
   if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
     throw std::invalid_argument(prefix + ".relative_tolerance must be in [1e-14, 1e-2] (got " +
-                                Number(o.relative_tolerance) + ")");
+                                FormatSignificant(o.relative_tolerance) + ")");
   }
   if (!(o.absolute_tolerance == 0.0 || (o.absolute_tolerance > 0.0 && o.absolute_tolerance <= 1e-2))) {
     throw std::invalid_argument(prefix + ".absolute_tolerance must be in (0, 1e-2], or 0 for rtol (got " +
-                                Number(o.absolute_tolerance) + ")");
+                                FormatSignificant(o.absolute_tolerance) + ")");
   }
   if (o.max_steps < 10) {
     throw std::invalid_argument(prefix + ".max_steps must be >= 10 (got " + std::to_string(o.max_steps) + ")");

@@ -4,16 +4,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
-#include <exception>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
+#include <covopt/core/number_format.hpp>
+#include <covopt/core/parallel_for.hpp>
 
 #include "covopt/optim/robust_design.hpp"
 #include "robust_internal.hpp"
@@ -47,9 +46,7 @@ void RefuseCoveringRanges(const UncertaintyBox& box) {
 }
 
 double StockThickness(double steps, double step_m) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.12g", steps * step_m);
-  return std::strtod(text, nullptr);
+  return std::strtod(FormatSignificant(steps * step_m, 12).c_str(), nullptr);
 }
 
 double ScanThickness(const DesignSpace& space, int points, int k) {
@@ -319,28 +316,8 @@ class RobustModulusSearch {
     return {u, v.governing, v.admissible};
   }
   Choice Golden(double b, double a, double c) const {
-    constexpr double kInvPhi = 0.6180339887498949;
-    double x1 = c - kInvPhi * (c - a), x2 = a + kInvPhi * (c - a);
-    Choice s1 = At(x1, b), s2 = At(x2, b);
-    Choice best = s1.governing <= s2.governing ? s1 : s2;
-    while (c - a > kLogModulusTolerance) {
-      if (s1.governing <= s2.governing) {
-        c = x2;
-        x2 = x1;
-        s2 = s1;
-        x1 = c - kInvPhi * (c - a);
-        s1 = At(x1, b);
-        if (s1.governing < best.governing) best = s1;
-      } else {
-        a = x1;
-        x1 = x2;
-        s1 = s2;
-        x2 = a + kInvPhi * (c - a);
-        s2 = At(x2, b);
-        if (s2.governing < best.governing) best = s2;
-      }
-    }
-    return best;
+    return internal::GoldenSection([&](double u) { return At(u, b); }, [](const Choice& s) { return s.governing; },
+                                   a, c, kLogModulusTolerance);
   }
 
   const ScenarioSet& set_;
@@ -457,31 +434,9 @@ RobustThinnestCovering FindRobustThinnestCovering(const UncertaintyBox& box,
   // Materials, each from the same initial scenarios: results independent of the thread count.
   std::vector<RobustCandidate> candidates(materials.size());
   std::vector<long> material_evaluations(materials.size(), 0);
-  const std::size_t threads = std::min<std::size_t>(static_cast<std::size_t>(o.threads), materials.size());
-  if (threads <= 1) {
-    for (std::size_t i = 0; i < materials.size(); ++i) {
-      candidates[i] = RobustSnapMaterial(context, materials[i], out.initial_scenarios, material_evaluations[i]);
-    }
-  } else {
-    std::vector<std::exception_ptr> errors(threads);
-    std::vector<std::thread> pool;
-    pool.reserve(threads);
-    for (std::size_t t = 0; t < threads; ++t) {
-      pool.emplace_back([&, t] {
-        try {
-          for (std::size_t i = t; i < materials.size(); i += threads) {
-            candidates[i] = RobustSnapMaterial(context, materials[i], out.initial_scenarios, material_evaluations[i]);
-          }
-        } catch (...) {
-          errors[t] = std::current_exception();
-        }
-      });
-    }
-    for (std::thread& thread : pool) thread.join();
-    for (const std::exception_ptr& error : errors) {
-      if (error) std::rethrow_exception(error);
-    }
-  }
+  ParallelFor(materials.size(), static_cast<unsigned>(o.threads), [&](std::size_t i, unsigned) {
+    candidates[i] = RobustSnapMaterial(context, materials[i], out.initial_scenarios, material_evaluations[i]);
+  });
   for (long e : material_evaluations) evaluations += e;
   std::stable_sort(candidates.begin(), candidates.end(), [](const RobustCandidate& x, const RobustCandidate& y) {
     const CandidateOutcome& a = x.outcome;

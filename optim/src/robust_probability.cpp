@@ -7,13 +7,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <exception>
 #include <limits>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
+
+#include <covopt/core/parallel_for.hpp>
 
 #include "covopt/optim/robust_design.hpp"
 #include "robust_internal.hpp"
@@ -44,7 +43,7 @@ struct SampleCounts {
 struct CountRequest {
   std::uint64_t samples = 0;
   std::uint64_t seed = 0;
-  unsigned threads = 1;
+  unsigned threads = 1;  ///< 0 = the hardware's (ParallelThreads)
   std::uint64_t block_samples = 8192;
   /// Stop as soon as more than this many samples are inadmissible (kNoStop: never).
   std::uint64_t stop_above = kNoStop;
@@ -57,72 +56,45 @@ SampleCounts CountSamples(const UncertaintyBox& box, const Scene& base, const Im
   const std::uint64_t n = request.samples;
   const std::uint64_t block = request.block_samples;
   const std::uint64_t blocks = (n + block - 1) / block;
-  const unsigned threads =
-      static_cast<unsigned>(std::max<std::uint64_t>(1, std::min<std::uint64_t>(request.threads, blocks)));
-  std::atomic<std::uint64_t> next_block{0};
+  const unsigned threads = ParallelThreads(blocks, request.threads);
   std::atomic<std::uint64_t> done{0};
   std::atomic<std::uint64_t> inadmissible_total{0};
   std::atomic<bool> stop{false};
   std::vector<SampleCounts> per_thread(threads);
-  std::vector<std::exception_ptr> errors(threads);
 
-  auto work = [&](unsigned t, bool report) {
-    SampleCounts& c = per_thread[t];
+  // One block of samples, counted into its worker's counts (integers: the sums do not
+  // depend on which worker counted which block).
+  const auto count_block = [&](std::uint64_t b, unsigned worker) {
+    if (stop.load(std::memory_order_relaxed)) return;
+    SampleCounts& c = per_thread[worker];
     Scene scene = base;
     std::vector<double> values(box.size());
     std::uint64_t unreported_failures = 0;
-    for (;;) {
-      if (stop.load(std::memory_order_relaxed)) return;
-      const std::uint64_t b = next_block.fetch_add(1);
-      if (b >= blocks) return;
-      const std::uint64_t first = b * block, last = std::min(n, first + block);
-      for (std::uint64_t i = first; i < last; ++i) {
-        internal::DrawInputsInto(box, request.seed, i, values);
-        internal::ApplyInputs(box, values, scene);
-        const internal::Judged j = internal::JudgeScene(scene, criterion);
-        c.laceration += j.laceration;
-        c.contusion += j.contusion;
-        c.any += j.laceration || j.contusion;
-        c.fully_compressed += j.fully_compressed;
-        c.inadmissible += !j.admissible;
-        unreported_failures += !j.admissible;
-        ++c.evaluated;
-        if (request.stop_above != kNoStop && ((i - first) % kStopCheckSamples == kStopCheckSamples - 1 || i + 1 == last)) {
-          // The shared total only grows, so passing the threshold is final whatever the order.
-          if (inadmissible_total.fetch_add(unreported_failures) + unreported_failures > request.stop_above) {
-            stop.store(true);
-          }
-          unreported_failures = 0;
-          if (stop.load(std::memory_order_relaxed)) return;
+    const std::uint64_t first = b * block, last = std::min(n, first + block);
+    for (std::uint64_t i = first; i < last; ++i) {
+      internal::DrawInputsInto(box, request.seed, i, values);
+      internal::ApplyInputs(box, values, scene);
+      const internal::Judged j = internal::JudgeScene(scene, criterion);
+      c.laceration += j.laceration;
+      c.contusion += j.contusion;
+      c.any += j.laceration || j.contusion;
+      c.fully_compressed += j.fully_compressed;
+      c.inadmissible += !j.admissible;
+      unreported_failures += !j.admissible;
+      ++c.evaluated;
+      if (request.stop_above != kNoStop && ((i - first) % kStopCheckSamples == kStopCheckSamples - 1 || i + 1 == last)) {
+        // The shared total only grows, so passing the threshold is final whatever the order.
+        if (inadmissible_total.fetch_add(unreported_failures) + unreported_failures > request.stop_above) {
+          stop.store(true);
         }
+        unreported_failures = 0;
+        if (stop.load(std::memory_order_relaxed)) return;
       }
-      const std::uint64_t finished = done.fetch_add(last - first) + (last - first);
-      if (report && request.progress && *request.progress) (*request.progress)(static_cast<double>(finished) / n);
     }
+    const std::uint64_t finished = done.fetch_add(last - first) + (last - first);
+    if (worker == 0 && request.progress && *request.progress) (*request.progress)(static_cast<double>(finished) / n);
   };
-
-  std::vector<std::thread> pool;
-  pool.reserve(threads - 1);
-  for (unsigned t = 1; t < threads; ++t) {
-    pool.emplace_back([&, t] {
-      try {
-        work(t, false);
-      } catch (...) {
-        errors[t] = std::current_exception();
-        stop.store(true);
-      }
-    });
-  }
-  try {
-    work(0, true);
-  } catch (...) {
-    errors[0] = std::current_exception();
-    stop.store(true);
-  }
-  for (std::thread& thread : pool) thread.join();
-  for (const std::exception_ptr& error : errors) {
-    if (error) std::rethrow_exception(error);
-  }
+  ParallelFor(blocks, threads, count_block);
   SampleCounts total;
   total.threads = threads;
   for (const SampleCounts& c : per_thread) {
@@ -144,12 +116,6 @@ void ValidateSampling(const InjuryProbabilityOptions& o) {
   Require(o.block_samples >= 1 && o.block_samples <= 10'000'000ULL,
           "block samples must be in [1, 1e7] (got " + std::to_string(o.block_samples) + ")");
   Require(o.threads <= 4096, "threads must be in [0, 4096] (got " + std::to_string(o.threads) + ")");
-}
-
-unsigned ThreadCount(unsigned requested) {
-  if (requested > 0) return requested;
-  const unsigned hardware = std::thread::hardware_concurrency();
-  return hardware > 0 ? hardware : 1;
 }
 
 InjuryProbability ToProbability(const SampleCounts& c, std::uint64_t samples, std::uint64_t seed) {
@@ -174,7 +140,7 @@ InjuryProbability EstimateInjuryProbability(const UncertaintyBox& box, const Inj
   CountRequest request;
   request.samples = options.samples;
   request.seed = options.seed;
-  request.threads = ThreadCount(options.threads);
+  request.threads = options.threads;
   request.block_samples = options.block_samples;
   request.progress = &options.progress;
   const SampleCounts counts = CountSamples(box, box.nominal(), criterion, request);
@@ -198,7 +164,7 @@ class ProbabilityJudge {
     }
     request_.samples = o.sampling.samples;
     request_.seed = o.sampling.seed;
-    request_.threads = ThreadCount(o.sampling.threads);
+    request_.threads = o.sampling.threads;
     request_.block_samples = o.sampling.block_samples;
   }
 

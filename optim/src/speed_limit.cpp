@@ -5,10 +5,8 @@
 #include "covopt/optim/speed_limit.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstddef>
-#include <cstdio>
 #include <limits>
 #include <mutex>
 #include <stdexcept>
@@ -16,6 +14,7 @@
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
+#include <covopt/core/number_format.hpp>
 #include <covopt/core/quantity.hpp>
 #include <covopt/core/time_integration.hpp>
 
@@ -27,20 +26,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kMinSpeed_m_per_s = 1e-6;
 constexpr double kHertzPressureFactor = 3.0 / (2.0 * 3.14159265358979323846);  // k = 3/(2π)
 
-std::string Shortest(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
-std::string Format(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
-}
-
 [[noreturn]] void Reject(const std::string& field, const std::string& requirement, double value) {
-  throw std::invalid_argument(field + " must be " + requirement + " (got " + Shortest(value) + ")");
+  throw std::invalid_argument(field + " must be " + requirement + " (got " + FormatShortest(value) + ")");
 }
 
 void CheckOptions(const SpeedLimitOptions& o) {
@@ -359,9 +346,9 @@ BracketedLimit BracketOnOracle(const Judge& judge, const Scene& base, double low
 }
 
 std::string RatiosText(const LimitRatios& r, bool covered) {
-  std::string text = "laceration ratio " + Format("%.4g", r.laceration_ratio) + ", contusion ratio " +
-                     Format("%.4g", r.contusion_ratio);
-  if (covered) text += ", compression ratio " + Format("%.4g", r.compression_ratio);
+  std::string text = "laceration ratio " + FormatSignificant(r.laceration_ratio, 4) + ", contusion ratio " +
+                     FormatSignificant(r.contusion_ratio, 4);
+  if (covered) text += ", compression ratio " + FormatSignificant(r.compression_ratio, 4);
   return text;
 }
 
@@ -378,14 +365,14 @@ const char* ToString(SpeedLimitStatus status) noexcept {
 }
 
 std::string SpeedLimit::BriefReport() const {
-  return message + "; at " + Format("%.6g", std::max(max_safe_speed_m_per_s, kMinSpeed_m_per_s)) +
+  return message + "; at " + FormatSignificant(std::max(max_safe_speed_m_per_s, kMinSpeed_m_per_s), 6) +
          " m/s: " + RatiosText(at_limit, at_limit.compression_ratio > 0.0) + ".";
 }
 
 std::string MassLimit::BriefReport() const {
   return message + "; at " +
          (std::isinf(max_safe_mass_kg) ? std::string("a fixed robot")
-                                       : Format("%.6g", max_safe_mass_kg) + " kg") +
+                                       : FormatSignificant(max_safe_mass_kg, 6) + " kg") +
          ": " + RatiosText(at_limit, at_limit.compression_ratio > 0.0) + ".";
 }
 
@@ -415,14 +402,14 @@ SpeedLimit MaxSafeSpeedOnOracle(const Scene& base, const SpeedLimitOptions& opti
       result.message = std::string("no safe speed: unsafe even at 1e-06 m/s (") + ToString(limit.by) + ")";
       break;
     case SpeedLimitStatus::kSafeUpToSearchLimit:
-      result.message = "safe up to the search limit of " + Format("%.6g", limit.value) + " m/s" +
+      result.message = "safe up to the search limit of " + FormatSignificant(limit.value, 6) + " m/s" +
                        (options.max_speed_m_per_s == 100.0 ? " (the model's ceiling)" : "");
       break;
     case SpeedLimitStatus::kLimited:
-      result.message = "max safe speed " + Format("%.6g", limit.value) + " m/s, limited by " + ToString(limit.by);
+      result.message = "max safe speed " + FormatSignificant(limit.value, 6) + " m/s, limited by " + ToString(limit.by);
       break;
     case SpeedLimitStatus::kEvaluationFailed:
-      result.message = "no answer: the oracle failed at " + Format("%.6g", limit.failed_at) + " m/s (" +
+      result.message = "no answer: the oracle failed at " + FormatSignificant(limit.failed_at, 6) + " m/s (" +
                        judge.Report().first_failure + ")";
       break;
   }
@@ -460,15 +447,15 @@ MassLimit MaxSafeMassOnOracle(const Scene& base, const SpeedLimitOptions& option
       result.message = std::string("no safe mass: unsafe even at 1e-06 kg (") + ToString(limit.by) + ")";
       break;
     case SpeedLimitStatus::kSafeUpToSearchLimit:
-      result.message = "safe up to the search limit of " + Format("%.6g", limit.value) + " kg" +
+      result.message = "safe up to the search limit of " + FormatSignificant(limit.value, 6) + " kg" +
                        (options.max_mass_kg == 1e6 ? " (the model's ceiling)" : "");
       break;
     case SpeedLimitStatus::kLimited:
       result.message =
-          "max safe reflected mass " + Format("%.6g", limit.value) + " kg, limited by " + ToString(limit.by);
+          "max safe reflected mass " + FormatSignificant(limit.value, 6) + " kg, limited by " + ToString(limit.by);
       break;
     case SpeedLimitStatus::kEvaluationFailed:
-      result.message = "no answer: the oracle failed at " + Format("%.6g", limit.failed_at) + " kg (" +
+      result.message = "no answer: the oracle failed at " + FormatSignificant(limit.failed_at, 6) + " kg (" +
                        judge.Report().first_failure + ")";
       break;
   }
@@ -515,7 +502,7 @@ SpeedLimit MaxSafeSpeedOnPenetrationAxis(const Scene& base, const SpeedLimitOpti
     result.limited_by = LimitingCriterion::kNone;
     result.max_safe_speed_m_per_s = options.max_speed_m_per_s;
     result.at_limit = NudgeDown(result.max_safe_speed_m_per_s, base, judge, set_speed).ratios;
-    result.message = "safe up to the search limit of " + Format("%.6g", result.max_safe_speed_m_per_s) +
+    result.message = "safe up to the search limit of " + FormatSignificant(result.max_safe_speed_m_per_s, 6) +
                      " m/s" + (options.max_speed_m_per_s == 100.0 ? " (the model's ceiling)" : "");
     return result;
   }
@@ -534,7 +521,7 @@ SpeedLimit MaxSafeSpeedOnPenetrationAxis(const Scene& base, const SpeedLimitOpti
   result.status = SpeedLimitStatus::kLimited;
   result.max_safe_speed_m_per_s = value;
   result.at_limit = at.ratios;
-  result.message = "max safe speed " + Format("%.6g", value) + " m/s, limited by " + ToString(limit.by);
+  result.message = "max safe speed " + FormatSignificant(value, 6) + " m/s, limited by " + ToString(limit.by);
   return result;
 }
 
@@ -568,7 +555,7 @@ MassLimit MaxSafeMassOnPenetrationAxis(const Scene& base, const SpeedLimitOption
     result.limited_by = LimitingCriterion::kNone;
     result.max_safe_mass_kg = options.max_mass_kg;
     result.at_limit = NudgeDown(result.max_safe_mass_kg, base, judge, set_mass).ratios;
-    result.message = "safe up to the search limit of " + Format("%.6g", result.max_safe_mass_kg) + " kg" +
+    result.message = "safe up to the search limit of " + FormatSignificant(result.max_safe_mass_kg, 6) + " kg" +
                      (options.max_mass_kg == 1e6 ? " (the model's ceiling)" : "");
     return result;
   }
@@ -584,7 +571,7 @@ MassLimit MaxSafeMassOnPenetrationAxis(const Scene& base, const SpeedLimitOption
   result.status = SpeedLimitStatus::kLimited;
   result.max_safe_mass_kg = value;
   result.at_limit = at.ratios;
-  result.message = "max safe reflected mass " + Format("%.6g", value) + " kg, limited by " + ToString(limit.by);
+  result.message = "max safe reflected mass " + FormatSignificant(value, 6) + " kg, limited by " + ToString(limit.by);
   return result;
 }
 

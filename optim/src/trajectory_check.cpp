@@ -3,10 +3,11 @@
 #include "covopt/optim/trajectory_check.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include <covopt/core/number_format.hpp>
 
 namespace covopt::optim {
 namespace {
@@ -16,16 +17,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kLowestSpeed_m_per_s = 1e-6;
 constexpr double kHighestSpeed_m_per_s = 100.0;
 
-std::string Format(const char* format, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  return buffer;
-}
-
 [[noreturn]] void RejectSample(std::size_t index, const std::string& what, double value,
                                const std::string& requirement) {
   throw std::invalid_argument("trajectory sample " + std::to_string(index + 1) + ": " + what + " " +
-                              Format("%.17g", value) + " must be " + requirement);
+                              FormatSignificant(value, 17) + " must be " + requirement);
 }
 
 void CheckSample(const MotionSample& sample, std::size_t index, const MotionSample* previous,
@@ -33,7 +28,7 @@ void CheckSample(const MotionSample& sample, std::size_t index, const MotionSamp
   if (!std::isfinite(sample.time_s)) RejectSample(index, "time_s", sample.time_s, "finite");
   if (previous != nullptr && sample.time_s < previous->time_s) {
     RejectSample(index, "time_s", sample.time_s,
-                 ">= the previous sample's " + Format("%.17g", previous->time_s) + " s");
+                 ">= the previous sample's " + FormatSignificant(previous->time_s, 17) + " s");
   }
   if (!(sample.speed_m_per_s >= 0.0 && sample.speed_m_per_s <= kHighestSpeed_m_per_s)) {
     RejectSample(index, "speed_m_per_s", sample.speed_m_per_s, "in [0, 100] m/s");
@@ -48,7 +43,7 @@ void CheckSample(const MotionSample& sample, std::size_t index, const MotionSamp
   }
 }
 
-std::string TimeText(double time_s) { return "t = " + Format("%.6g", time_s) + " s"; }
+std::string TimeText(double time_s) { return "t = " + FormatSignificant(time_s, 6) + " s"; }
 
 }  // namespace
 
@@ -67,12 +62,12 @@ std::string TrajectoryCheck::BriefReport() const {
   if (worst_sample) {
     const SampleVerdict& worst = samples[*worst_sample];
     report += "\nworst sample: " + std::to_string(*worst_sample + 1) + " of " + std::to_string(samples.size()) +
-              " (" + TimeText(worst.time_s) + "): speed " + Format("%.4g", worst.speed_m_per_s) + " m/s, reflected mass " +
+              " (" + TimeText(worst.time_s) + "): speed " + FormatSignificant(worst.speed_m_per_s, 4) + " m/s, reflected mass " +
               (std::isinf(worst.reflected_mass_kg) ? std::string("fixed")
-                                                   : Format("%.4g", worst.reflected_mass_kg) + " kg") +
+                                                   : FormatSignificant(worst.reflected_mass_kg, 4) + " kg") +
               ", " + worst.speed_limit.message + ", laceration ratio " +
-              Format("%.4g", worst.laceration_ratio) + ", contusion ratio " +
-              Format("%.4g", worst.contusion_ratio);
+              FormatSignificant(worst.laceration_ratio, 4) + ", contusion ratio " +
+              FormatSignificant(worst.contusion_ratio, 4);
   }
   return report;
 }
@@ -111,7 +106,7 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
         verdict.speed_scale = 0.0;
         if (check.failed_sample_count++ == 0) {
           first_failure = "trajectory sample " + std::to_string(i + 1) + " (" + TimeText(sample.time_s) +
-                          ", speed " + Format("%.4g", sample.speed_m_per_s) + " m/s): " +
+                          ", speed " + FormatSignificant(sample.speed_m_per_s, 4) + " m/s): " +
                           (verdict.speed_limit.status == SpeedLimitStatus::kEvaluationFailed
                                ? verdict.speed_limit.message
                                : std::string("the time path failed on the impact at this speed"));
@@ -153,7 +148,7 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
   }
   const SampleVerdict& worst = check.samples[*check.worst_sample];
   check.status = check.unsafe_sample_count == 0 ? TrajectoryCheckStatus::kSafe : TrajectoryCheckStatus::kUnsafe;
-  const std::string scale = Format("%.4g", check.safe_speed_scale);
+  const std::string scale = FormatSignificant(check.safe_speed_scale, 4);
   if (check.status == TrajectoryCheckStatus::kSafe) {
     check.message = "safe: the trajectory may run up to " + scale + "x faster (set by " +
                     TimeText(worst.time_s) + ", " + ToString(worst.speed_limit.limited_by) + ")";
@@ -165,7 +160,7 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
   if (scale_set_by_ceiling) {
     check.warnings.push_back("the speed scale " + scale + " is a lower bound: at " + TimeText(worst.time_s) +
                              " the impact is safe up to the model's " +
-                             Format("%.6g", worst.speed_limit.max_safe_speed_m_per_s) +
+                             FormatSignificant(worst.speed_limit.max_safe_speed_m_per_s, 6) +
                              " m/s ceiling, the search limit");
   }
   if (no_safe_speed_count > 0) {

@@ -2,17 +2,14 @@
 #include "validation_internal.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
+#include <covopt/core/number_format.hpp>
+
 namespace covopt::optim::internal {
 
-std::string Number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
+std::string Number(double value) { return FormatSignificant(value); }
 
 void Require(bool condition, const std::string& message) {
   if (!condition) throw std::invalid_argument(message);

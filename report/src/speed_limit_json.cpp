@@ -3,11 +3,10 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <vector>
 
+#include <covopt/core/number_format.hpp>
 #include <nlohmann/json.hpp>
 
 #include "covopt/report/simulation_json.hpp"
@@ -26,18 +25,6 @@ constexpr std::array<std::string_view, 8> kSpeedColumns = {
 constexpr std::array<std::string_view, 8> kMassColumns = {
     "material", "speed_m_per_s", "max_safe_mass_kg", "limited_by", "laceration_ratio",
     "contusion_ratio", "compression_ratio", "status"};
-
-std::string Shortest(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
-std::string Readable(double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.6g", value);
-  return buffer;
-}
 
 /// The parts every row shares, whichever quantity it solves for.
 struct RowAnswer {
@@ -84,8 +71,8 @@ ordered_json RowJson(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
 std::string RowName(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
   std::string name = quantity == SpeedLimitQuantity::kSpeed
                          ? "robot mass " + (std::isinf(row.robot_mass_kg) ? std::string("fixed")
-                                                                           : Readable(row.robot_mass_kg) + " kg")
-                         : "speed " + Readable(row.speed_m_per_s) + " m/s";
+                                                                           : FormatSignificant(row.robot_mass_kg, 6) + " kg")
+                         : "speed " + FormatSignificant(row.speed_m_per_s, 6) + " m/s";
   if (row.material) name += " (" + *row.material + ")";
   return name;
 }
@@ -107,7 +94,7 @@ std::vector<std::string> SpeedLimitCsvCells(SpeedLimitQuantity quantity, const S
   for (const auto& [key, value] : j.items()) {
     if (value.is_null()) cells.emplace_back();
     else if (value.is_string()) cells.push_back(value.get<std::string>());
-    else cells.push_back(Shortest(value.get<double>()));
+    else cells.push_back(FormatShortest(value.get<double>()));
   }
   return cells;
 }

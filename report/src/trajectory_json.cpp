@@ -3,9 +3,9 @@
 #include "covopt/report/trajectory_json.hpp"
 
 #include <array>
-#include <charconv>
 #include <cmath>
 
+#include <covopt/core/number_format.hpp>
 #include <nlohmann/json.hpp>
 
 #include "covopt/report/simulation_json.hpp"
@@ -46,12 +46,6 @@ ordered_json SampleJson(const optim::SampleVerdict& v) {
   return j;
 }
 
-std::string Shortest(double value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
 }  // namespace
 
 std::vector<optim::MotionSample> MotionSamples(const robot::ContactMotionResult& motion) {
@@ -72,7 +66,7 @@ std::vector<std::string> TrajectorySampleCsvCells(const optim::SampleVerdict& sa
     if (value.is_null()) cells.emplace_back();
     else if (value.is_string()) cells.push_back(value.get<std::string>());
     else if (value.is_boolean()) cells.emplace_back(value.get<bool>() ? "true" : "false");
-    else cells.push_back(Shortest(value.get<double>()));
+    else cells.push_back(FormatShortest(value.get<double>()));
   }
   return cells;
 }

@@ -424,8 +424,8 @@ std::vector<double> DrawInputs(const UncertaintyBox& box, std::uint64_t seed, st
 
 /// Φ(z), the standard normal distribution function, 0.5 erfc(−z/√2).
 double StandardNormalCdf(double z) noexcept;
-/// Φ⁻¹(p) for p in (0, 1), Wichura's AS 241 (PPND16), relative accuracy ~1e-16; −inf at 0,
-/// +inf at 1, NaN outside [0, 1].
+/// Φ⁻¹(p) for p in (0, 1), −√2 erfc⁻¹(2p) (Boost.Math), within a few units in the last place;
+/// −inf at 0, +inf at 1, NaN outside [0, 1].
 double InverseStandardNormalCdf(double p) noexcept;
 
 // ----------------------------------------------------------------------------------------
