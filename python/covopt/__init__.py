@@ -22,7 +22,8 @@ ComputationError.__module__ = __name__  # shown as covopt.ComputationError
 
 __all__ = ["simulate", "sweep", "optimize", "materials", "material", "ComputationError",
            "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "contact_motion",
-           "check_trajectory", "worst_case", "injury_probability", "sensitivities", "robust_optimize"]
+           "check_trajectory", "worst_case", "injury_probability", "sensitivities", "robust_optimize",
+           "load_scene"]
 
 
 def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
@@ -384,3 +385,21 @@ def robust_optimize(*, ranges, samples=None, seed=1, threads=0, distributions=No
                  "allow_unknown_strength": allow_unknown_strength}
     arguments = {k: v for k, v in arguments.items() if v is not None}
     return _covopt.robust_optimize(**arguments, **scene)
+
+
+def load_scene(path):
+    """A scene file (TOML, the format of ``covopt simulate --scene``; see cli/examples/paper_scene.toml),
+    read by the library's reader with the CLI's checks and messages.
+
+    Returns a dict of the keywords the scene-taking calls accept, holding what the file sets:
+    each scene field by its keyword (``robot_mass``, ``covering_thickness``, ...; SI floats,
+    ``math.inf`` for "fixed" or "flat"), ``thresholds``, ``material`` (covering.material),
+    ``laceration_limit``, ``contusion_limit``, ``safety_factor``, and, when the file writes
+    ranges ("3.7kg..5.8kg"), ``ranges`` ({"head_mass": (low, high)} in SI) for worst_case,
+    injury_probability and robust_optimize. So ``covopt.simulate(**covopt.load_scene(path))``
+    is ``covopt simulate --scene path``. A value with a unit that is implausible as a bare
+    number (``radius = "40m"``) is kept as a string with its SI unit ("40.0m").
+
+    Raises ValueError naming file:line:column, the key and what is allowed, as the CLI does.
+    """
+    return _covopt.load_scene(str(path))

@@ -808,6 +808,7 @@ void BindSpeedLimit(py::module_& m);  // speed_limit_bindings.cpp
 void BindRobot(py::module_& m);       // robot_bindings.cpp
 void BindTrajectory(py::module_& m);  // trajectory_bindings.cpp
 void BindRobust(py::module_& m);      // robust_bindings.cpp
+void BindSceneFile(py::module_& m);   // scene_file_bindings.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -822,4 +823,5 @@ PYBIND11_MODULE(_covopt, m) {
   covopt::python::BindRobot(m);
   covopt::python::BindTrajectory(m);
   covopt::python::BindRobust(m);
+  covopt::python::BindSceneFile(m);
 }
