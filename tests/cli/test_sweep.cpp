@@ -19,7 +19,6 @@
 #include <nlohmann/json.hpp>
 
 #include <covopt/core/exact.hpp>
-#include <covopt/core/grid.hpp>
 #include <covopt/core/impact_model.hpp>
 #include <covopt/core/sweep.hpp>
 
@@ -206,44 +205,53 @@ TEST_CASE("sweep results are identical whatever the number of threads", "[sweep]
   CHECK(a.rows == c.rows);
 }
 
-TEST_CASE("SolveExactGrid matches SolveExact point by point on any number of threads", "[sweep]") {
-  std::vector<covopt::Scene> scenes;
-  for (int i = 0; i < 300; ++i) {
-    covopt::Scene s;
-    s.robot.speed_m_per_s = 0.1 + 0.02 * i;
-    s.covering.thickness_m = (i % 7) * 0.004;
-    if (i % 50 == 0) s.head.radius_m = 0.001;  // smaller than the scalp: invalid
-    scenes.push_back(s);
-  }
-  std::vector<std::size_t> progress;
-  covopt::GridOptions options;
-  options.threads = 1;
-  options.progress = [&](std::size_t done, std::size_t total) {
-    CHECK(total == scenes.size());
-    progress.push_back(done);
+TEST_CASE("a sweep matches SolveExact point by point on any number of threads", "[sweep]") {
+  // 150 speeds x 2 head radii, the second smaller than the scalp: invalid (was SolveExactGrid's
+  // test, which Sweep replaced).
+  covopt::SweepSpec spec;
+  spec.x.quantity = "speed";
+  for (int i = 0; i < 150; ++i) spec.x.values.push_back(0.1 + 0.02 * i);
+  spec.y = covopt::SweepAxis{"head-radius", {0.08, 0.001}};
+  const auto solve = [&](unsigned threads, std::vector<std::size_t>* progress) {
+    covopt::SweepOptions options;
+    options.threads = threads;
+    options.block_rows = 64;
+    if (progress) {
+      options.progress = [progress](std::size_t done, std::size_t total) {
+        CHECK(total == 300u);
+        progress->push_back(done);
+      };
+    }
+    std::vector<covopt::SweepRow> rows;
+    covopt::Sweep(spec, options, [&](std::span<const covopt::SweepRow> block) {
+      rows.insert(rows.end(), block.begin(), block.end());
+    });
+    return rows;
   };
-  const auto serial = covopt::SolveExactGrid(scenes, options);
+  std::vector<std::size_t> progress;
+  const auto serial = solve(1, &progress);
   REQUIRE(!progress.empty());
-  CHECK(progress.back() == scenes.size());
+  CHECK(progress.back() == 300u);
   CHECK(std::is_sorted(progress.begin(), progress.end()));
-  options.threads = 4;
-  options.progress = nullptr;
-  const auto parallel = covopt::SolveExactGrid(scenes, options);
-  REQUIRE(serial.size() == scenes.size());
-  for (std::size_t i = 0; i < scenes.size(); ++i) {
+  const auto parallel = solve(4, nullptr);
+  REQUIRE(serial.size() == 300u);
+  REQUIRE(parallel.size() == 300u);
+  for (std::size_t i = 0; i < serial.size(); ++i) {
     INFO("point " << i);
-    REQUIRE(serial[i].valid() == (i % 50 != 0));
-    REQUIRE(parallel[i].valid() == serial[i].valid());
-    if (!serial[i].valid()) {
+    REQUIRE(serial[i].valid == (i % 2 == 0));
+    REQUIRE(parallel[i].valid == serial[i].valid);
+    if (!serial[i].valid) {
       CHECK_THAT(serial[i].error, Contains("head.radius"));
       CHECK(parallel[i].error == serial[i].error);
       continue;
     }
-    const auto direct = covopt::SolveExact(covopt::ImpactModel::FromScene(scenes[i]));
-    CHECK(serial[i].result->peaks.peak_force_N == direct.peaks.peak_force_N);
-    CHECK(parallel[i].result->peaks.max_energy_density_J_per_m2 ==
-          direct.peaks.max_energy_density_J_per_m2);
-    CHECK(parallel[i].result->contact_duration_s == direct.contact_duration_s);
+    covopt::Scene scene = spec.scene;
+    scene.robot.speed_m_per_s = serial[i].x;
+    scene.head.radius_m = serial[i].y;
+    const auto direct = covopt::SolveExact(covopt::ImpactModel::FromScene(scene));
+    CHECK(serial[i].peaks.peak_force_N == direct.peaks.peak_force_N);
+    CHECK(parallel[i].peaks.max_energy_density_J_per_m2 == direct.peaks.max_energy_density_J_per_m2);
+    CHECK(parallel[i].contact_duration_s == direct.contact_duration_s);
     CHECK(parallel[i].assessment.contusion.ratio == serial[i].assessment.contusion.ratio);
   }
 }

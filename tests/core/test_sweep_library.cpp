@@ -146,10 +146,10 @@ TEST_CASE("each sweep row is SolveExact on its scene, judged against the spec's 
     CHECK(row.admissible ==
           (row.assessment.safe() &&
            !(row.covered && (direct.peaks.fully_compressed || 1.5 * row.compression_ratio > 1.0))));
-    REQUIRE(row.warnings.size() == direct.coded_warnings.size());
+    REQUIRE(row.warnings.size() == direct.warnings.size());
     for (std::size_t w = 0; w < row.warnings.size(); ++w) {
-      CHECK(row.warnings[w].code == direct.coded_warnings[w].code);
-      CHECK(row.warnings[w].message == direct.warnings[w]);
+      CHECK(row.warnings[w].code == direct.warnings[w].code);
+      CHECK(row.warnings[w].message == direct.warnings[w].message);
     }
   }
 }
