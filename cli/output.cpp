@@ -241,11 +241,12 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
     fmt::print(out, "\nScope\n");
     for (const std::string& line : report.scope) fmt::print(out, "  {}\n", line);
   }
-  if (r.warnings.empty()) {
+  if (r.warnings.empty() && report.input_warnings.empty()) {
     fmt::print(out, "\nWarnings: none\n");
   } else {
     fmt::print(out, "\nWarnings\n");
-    for (const std::string& warning : r.warnings) fmt::print(out, "  - {}\n", warning);
+    for (const ValidityWarning& warning : r.warnings) fmt::print(out, "  - {}\n", warning.message);
+    for (const std::string& warning : report.input_warnings) fmt::print(out, "  - {}\n", warning);
   }
 }
 

@@ -11,6 +11,7 @@
 #include <fmt/ostream.h>
 
 #include "covopt/core/exact.hpp"
+#include "covopt/core/solve.hpp"
 #include "covopt/core/impact_model.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/optim/input_warnings.hpp"
@@ -237,6 +238,107 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
   return sub;
 }
 
+namespace {
+
+/// --method, --cvode-method, --rtol, --atol and --max-steps: the path (the library's
+/// ChoosePath: exact where the scene has an energy integral, the time path for a braking robot,
+/// a neck or a history, docs/model.md §10) and the time path's options.
+void ResolveComputation(const SimulateOptions& options, SimulationPlan& plan) {
+  SolveOptions& solve = plan.solve;
+  solve.record_history = plan.history_file || plan.plot_file;
+  std::optional<ComputationMethod> integrator;
+  if (options.method && *options.method != "auto") {
+    if (*options.method == "cvode") {
+      solve.path = PathChoice::kTimePath;
+    } else if (const auto named = ParseComputationMethod(*options.method);
+               named && *named != ComputationMethod::kExact) {
+      solve.path = PathChoice::kTimePath;
+      integrator = named;
+    } else if (*options.method == "exact") {
+      solve.path = PathChoice::kExact;
+      if (!plan.scene.has_energy_integral()) {
+        throw InputError(
+            "--method exact: the exact path needs an energy integral; a scene with braking or a "
+            "neck has only the time path; use --method auto or a time integrator");
+      }
+      if (solve.record_history) {
+        throw InputError(fmt::format(
+            "--method exact computes no time history, which {} needs; drop --method exact "
+            "(the default integrator runs then) or give a time-path method",
+            plan.history_file ? "--history" : "--plot"));
+      }
+    } else {
+      throw InputError(fmt::format("--method: expected exact, cvode or one of {}, or auto "
+                                   "(the default) (got '{}')",
+                                   IntegratorNames(), *options.method));
+    }
+  }
+  plan.time_path = ChoosePath(plan.scene, solve) == PathChoice::kTimePath;
+  if (!plan.time_path) {
+    for (const auto& [flag, given] : {std::pair{"--cvode-method", options.cvode_method.has_value()},
+                                      std::pair{"--rtol", options.rtol.has_value()},
+                                      std::pair{"--atol", options.atol.has_value()},
+                                      std::pair{"--max-steps", options.max_steps.has_value()}}) {
+      if (given) {
+        throw InputError(fmt::format(
+            "{} applies to the time path only, and this scene takes the exact path; add "
+            "--method cvode (or another integrator)",
+            flag));
+      }
+    }
+    return;
+  }
+
+  TimeIntegrationOptions& time = solve.time_path;
+  if (integrator) {
+    if (options.cvode_method) {
+      throw InputError(fmt::format("--cvode-method applies with --method cvode, not with "
+                                   "--method {}",
+                                   *options.method));
+    }
+    time.method = *integrator;
+  } else if (options.method && *options.method == "cvode") {
+    time.method = ComputationMethod::kCvodeAdams;  // CVODE's default family here
+  }
+  if (options.cvode_method) {
+    if (*options.cvode_method == "adams") {
+      time.method = ComputationMethod::kCvodeAdams;
+    } else if (*options.cvode_method == "bdf") {
+      time.method = ComputationMethod::kCvodeBdf;
+    } else {
+      throw InputError(fmt::format("--cvode-method: expected 'adams' or 'bdf' (got '{}')",
+                                   *options.cvode_method));
+    }
+  }
+  // Each flag against the library's range (ValidateTimeIntegrationOptions), named in front.
+  const auto check = [&time](std::string_view flag) {
+    try {
+      ValidateTimeIntegrationOptions(time);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("{}: {}", flag, e.what()));
+    }
+  };
+  const QuantitySpec& tolerance = quantity_specs::kTolerance;
+  if (options.rtol) {
+    time.relative_tolerance = ParseQuantity(*options.rtol, tolerance, "--rtol");
+    check("--rtol");
+  }
+  if (options.atol) {
+    time.absolute_tolerance = ParseQuantity(*options.atol, tolerance, "--atol");
+    // The library reads 0 as "default: rtol", so an explicit 0 must not get through.
+    if (!(time.absolute_tolerance > 0.0)) {
+      throw InputError(fmt::format("--atol must be > 0 (got '{}')", *options.atol));
+    }
+    check("--atol");
+  }
+  if (options.max_steps) {
+    time.max_steps = *options.max_steps;
+    check("--max-steps");
+  }
+}
+
+}  // namespace
+
 SimulationPlan ResolveSimulation(const SimulateOptions& options) {
   SimulationPlan plan;
 
@@ -311,86 +413,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     plan.plot_format = *format;
   }
 
-  // The computation path. auto (the default) takes the exact path where the scene admits it
-  // (conservative or damped: an energy integral exists) and the time path for a braking robot
-  // or a neck (docs/model.md §10) or for a history.
-  const bool needs_history = plan.history_file || plan.plot_file;
-  const bool exact_admits = !plan.scene.robot_brakes() && !plan.scene.head.has_neck();
-  bool time_path = needs_history || !exact_admits;
-  std::optional<ComputationMethod> integrator;
-  if (options.method && *options.method != "auto") {
-    if (*options.method == "cvode") {
-      time_path = true;
-    } else if (const auto named = ParseComputationMethod(*options.method);
-               named && *named != ComputationMethod::kExact) {
-      time_path = true;
-      integrator = named;
-    } else if (*options.method == "exact") {
-      if (!exact_admits) {
-        throw InputError(
-            "--method exact: the exact path needs an energy integral; a scene with braking or a "
-            "neck has only the time path; use --method auto or a time integrator");
-      }
-      if (needs_history) {
-        throw InputError(fmt::format(
-            "--method exact computes no time history, which {} needs; drop --method exact "
-            "(the default integrator runs then) or give a time-path method",
-            plan.history_file ? "--history" : "--plot"));
-      }
-    } else {
-      throw InputError(fmt::format("--method: expected exact, cvode or one of {}, or auto "
-                                   "(the default) (got '{}')",
-                                   IntegratorNames(), *options.method));
-    }
-  }
-  if (!time_path) {
-    for (const auto& [flag, given] : {std::pair{"--cvode-method", options.cvode_method.has_value()},
-                                      std::pair{"--rtol", options.rtol.has_value()},
-                                      std::pair{"--atol", options.atol.has_value()},
-                                      std::pair{"--max-steps", options.max_steps.has_value()}}) {
-      if (given) {
-        throw InputError(fmt::format(
-            "{} applies to the time path only, and this scene takes the exact path; add "
-            "--method cvode (or another integrator)",
-            flag));
-      }
-    }
-    return plan;
-  }
-
-  TimeIntegrationOptions time;
-  if (integrator) {
-    if (options.cvode_method) {
-      throw InputError(fmt::format("--cvode-method applies with --method cvode, not with "
-                                   "--method {}",
-                                   *options.method));
-    }
-    time.method = *integrator;
-  } else if (options.method && *options.method == "cvode") {
-    time.method = ComputationMethod::kCvodeAdams;  // CVODE's default family here
-  }
-  if (options.cvode_method) {
-    if (*options.cvode_method == "adams") {
-      time.method = ComputationMethod::kCvodeAdams;
-    } else if (*options.cvode_method == "bdf") {
-      time.method = ComputationMethod::kCvodeBdf;
-    } else {
-      throw InputError(fmt::format("--cvode-method: expected 'adams' or 'bdf' (got '{}')",
-                                   *options.cvode_method));
-    }
-  }
-  const QuantitySpec& tolerance = quantity_specs::kTolerance;
-  if (options.rtol) time.relative_tolerance = ParseQuantity(*options.rtol, tolerance, "--rtol");
-  if (options.atol) {
-    time.absolute_tolerance = ParseQuantity(*options.atol, tolerance, "--atol");
-    // The library reads 0 as "default: rtol", so an explicit 0 must not get through.
-    if (!(time.absolute_tolerance > 0.0)) {
-      throw InputError(fmt::format("--atol must be > 0 (got '{}')", *options.atol));
-    }
-  }
-  if (options.max_steps) time.max_steps = *options.max_steps;  // range: the library's
-  time.record_history = needs_history;
-  plan.time_options = time;
+  ResolveComputation(options, plan);
   return plan;
 }
 
@@ -458,6 +481,33 @@ std::string AttributeError(const std::string& message, const SimulationPlan& pla
 
 namespace {
 
+/// The tables of an uncertain simulation: the ranges and the worst case (with ranges), the
+/// impact there, the probability of injury and the elasticities (when computed).
+void PrintUncertainSimulation(std::ostream& out, const SimulationPlan& plan, const SimulationReport& report,
+                              const optim::UncertaintyBox* box, const optim::WorstCase& worst,
+                              const optim::InjuryProbability* probability,
+                              const optim::ElasticityTable* elasticities) {
+  if (box) {
+    fmt::print(out, "Scene ranges: {} inputs; the impact below is the worst case over the box\n", box->size());
+    for (const SceneRange& range : plan.ranges) {
+      fmt::print(out, "  {:<20} {} .. {}  (from {})\n", range.name,
+                 FormatQuantity(range.low, FindSceneField(range.name)->spec.kind),
+                 FormatQuantity(range.high, FindSceneField(range.name)->spec.kind), range.source);
+    }
+    PrintWorstCase(out, *box, worst);
+    out << '\n';
+  }
+  PrintTable(out, report);
+  if (probability) {
+    out << '\n';
+    PrintInjuryProbability(out, *probability);
+  }
+  if (elasticities) {
+    out << '\n';
+    PrintElasticities(out, *elasticities);
+  }
+}
+
 /// simulate with scene ranges, --samples or --sensitivities (docs/model.md §11): the worst
 /// case over the box reported as an impact at that scene, the probability of injury and the
 /// elasticities. Everything runs on the exact path.
@@ -471,12 +521,12 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
     if (!plan.ranges.empty()) {
       box.emplace(MakeUncertaintyBox(plan.scene, ResolveUncertainInputs(plan.ranges, options.uncertainty.distributions),
                                      plan.ranges));
-      if (plan.time_options) {
+      if (plan.time_path) {
         throw InputError(fmt::format("{} with scene ranges: the worst case and the probability are computed on the "
                                      "exact path; drop it",
                                      plan.history_file ? "--history" : plan.plot_file ? "--plot" : "--method"));
       }
-    } else if (plan.time_options && options.sensitivities) {
+    } else if (plan.time_path && options.sensitivities) {
       throw InputError(fmt::format("--sensitivities are computed on the exact path; {} does not apply",
                                    plan.history_file ? "--history" : "--method"));
     }
@@ -525,7 +575,7 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
                                      report.result.message));
   }
   Judge(report, plan);
-  for (const std::string& warning : InputWarnings(plan)) report.result.warnings.push_back(warning);
+  report.input_warnings = InputWarnings(plan);
   try {
     if (tornado_file) {
       if (!FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
@@ -541,25 +591,8 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
                                            elasticities ? &*elasticities : nullptr)
         << '\n';
   } else {
-    if (box) {
-      fmt::print(out, "Scene ranges: {} inputs; the impact below is the worst case over the box\n", box->size());
-      for (const SceneRange& range : plan.ranges) {
-        fmt::print(out, "  {:<20} {} .. {}  (from {})\n", range.name,
-                   FormatQuantity(range.low, FindSceneField(range.name)->spec.kind),
-                   FormatQuantity(range.high, FindSceneField(range.name)->spec.kind), range.source);
-      }
-      PrintWorstCase(out, *box, worst);
-      out << '\n';
-    }
-    PrintTable(out, report);
-    if (probability) {
-      out << '\n';
-      PrintInjuryProbability(out, *probability);
-    }
-    if (elasticities) {
-      out << '\n';
-      PrintElasticities(out, *elasticities);
-    }
+    PrintUncertainSimulation(out, plan, report, box ? &*box : nullptr, worst, probability ? &*probability : nullptr,
+                             elasticities ? &*elasticities : nullptr);
   }
   out.flush();
   if (!out) return errors.Failed("cannot write the results to standard output");
@@ -610,23 +643,8 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
       report.covering_material = plan.covering_material->name;
       report.covering_poisson_assumed = !plan.covering_material->poisson_ratio.has_value();
     }
-    report.time_options = plan.time_options;
-    if (report.time_options && report.time_options->record_history) {
-      // Smooth charts: at least ~400 samples over the contact, by the integrator's dense
-      // output. The duration sets the spacing: the exact one (a few µs to compute) for a
-      // conservative scene, else a first run without a history; the history is integrated.
-      double duration_s = 0.0;
-      if (plan.scene.is_conservative_two_mass()) {
-        duration_s = ExactContactDuration(*model, ExactPeaks(*model));
-      } else {
-        TimeIntegrationOptions first_run = *report.time_options;
-        first_run.record_history = false;
-        duration_s = SimulateImpact(*model, first_run).contact_duration_s.value_or(0.0);
-      }
-      report.time_options->history_max_interval_s = duration_s / 400.0;  // 0: steps only
-    }
-    report.result = report.time_options ? SimulateImpact(*model, *report.time_options)
-                                        : SolveExact(*model);
+    if (plan.time_path) report.time_options = plan.solve.time_path;
+    report.result = Solve(*model, plan.solve);  // smooth histories: ~400 samples over the contact
   } catch (const std::invalid_argument& e) {  // the integrator's option checks
     return errors.BadInput(e.what());
   }
@@ -638,7 +656,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
                               result.message.empty() ? "" : ": ", result.message));
   }
   Judge(report, plan);  // the chart draws the derated limits
-  for (const std::string& warning : InputWarnings(plan)) report.result.warnings.push_back(warning);
+  report.input_warnings = InputWarnings(plan);
 
   try {
     // Check for gnuplot before writing anything, so that a missing tool leaves no files.

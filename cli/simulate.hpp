@@ -15,7 +15,7 @@
 
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
-#include "covopt/core/time_integration.hpp"
+#include "covopt/core/solve.hpp"
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/materials/material.hpp"
 #include "materials_command.hpp"
@@ -103,8 +103,10 @@ struct SimulationPlan {
   /// then --safety-factor). Ratios stay value/limit; a verdict is safe when
   /// safety_factor * ratio <= 1.
   double safety_factor = 1.0;
-  /// Set when the time path runs; empty for the exact path.
-  std::optional<TimeIntegrationOptions> time_options;
+  /// How the impact is computed (--method, --rtol, ...; --history and --plot record a history).
+  SolveOptions solve;
+  /// The time path runs (ChoosePath(scene, solve)); false for the exact path.
+  bool time_path = false;
   std::optional<std::string> history_file;
   std::optional<std::string> plot_file;
   PlotFormat plot_format = PlotFormat::kPng;

@@ -21,6 +21,7 @@
 #include "fixed_length_vector.hpp"
 #include "numeric_format.hpp"
 #include "stepper.hpp"
+#include "time_path_run.hpp"
 
 namespace covopt::internal {
 namespace {
@@ -211,6 +212,252 @@ double EnergyImbalance(const Run& run, const sunrealtype* y) noexcept {
   return (kinetic_change + elastic + neck + y[kWork]) / run.model->impact_energy_J();
 }
 
+/// The bodies and forces of `scene` for the callbacks (Run), at first contact.
+void SetUpRun(const ImpactModel& model, bool restart_at_phase_switches, Run& run) {
+  const Scene& scene = model.scene();
+  run = Run{};
+  run.model = &model;
+  run.segment = restart_at_phase_switches ? 0 : kWholeLaw;
+  const double v0 = model.impact_speed_m_per_s();
+  const std::array<double, 3> masses{scene.robot.mass_kg, scene.head.mass_kg,
+                                     scene.head.has_neck() ? scene.head.torso_mass_kg : 0.0};
+  for (int i = 0; i < 3; ++i) {
+    if (std::isinf(masses[static_cast<std::size_t>(i)])) {
+      run.bodies.held(i) = 1.0;
+    } else if (masses[static_cast<std::size_t>(i)] > 0.0) {
+      run.bodies.moving_mass(i) = masses[static_cast<std::size_t>(i)];
+      run.bodies.inverse_mass(i) = 1.0 / masses[static_cast<std::size_t>(i)];
+    }
+  }
+  run.bodies.initial_speed = Eigen::Vector3d(v0, 0.0, 0.0);
+  run.damping_s_per_m = scene.model.damping_s_per_m;
+  const bool brakes = scene.robot_brakes();
+  run.braking_m_per_s2 = scene.robot.braking_m_per_s2;
+  run.reaction_delay_s = scene.robot.reaction_delay_s;
+  run.brake_pending = brakes && run.reaction_delay_s > 0.0;
+  run.brake_on = brakes && !run.brake_pending;  // the robot moves forward at first contact
+  run.has_neck = scene.head.has_neck();
+  run.neck_stiffness_N_per_m = scene.head.neck_stiffness_N_per_m;
+  run.neck_damping_N_s_per_m = scene.head.neck_damping_N_s_per_m;
+}
+
+/// One run of the extended path: robot, head and torso, the events of docs/model.md §10.2
+/// (a restart at every kink or jump of the right-hand side), the peaks over every maximum of
+/// δ and, with damping, of F and σ_c in time, and the time bound on the contact.
+class ExtendedRun final : public TimePathRun {
+ public:
+  ExtendedRun(const ImpactModel& model, const TimeIntegrationOptions& options, Stepper& stepper,
+              Run& run, N_Vector state, N_Vector absolute_tolerances, N_Vector dense_output,
+              const std::string& log)
+      : TimePathRun(model, options, stepper, state, dense_output, log),
+        run_(run),
+        absolute_tolerances_(absolute_tolerances),
+        v0_(model.impact_speed_m_per_s()),
+        brakes_(model.scene().robot_brakes()) {
+    SetUpRun(model, options.restart_at_phase_switches, run_);
+    damped_ = run_.damping_s_per_m > 0.0;
+    SetScales();
+    SetTimeBound();
+    for (int i = 0; i < kStateSize; ++i) y_[i] = 0.0;
+    y_[kPenetrationRate] = v0_;
+  }
+  ~ExtendedRun() override { run_.model = nullptr; }
+
+ private:
+  /// Natural scales, as on the δ-only path: L from phase 1 alone, v0, the matching energy
+  /// density, and the impact energy for the work.
+  void SetScales() {
+    const ForceLawSegment& first = model_.segment(0);
+    const double p1 = first.exponent + 1.0;
+    const double conservative_length_m =
+        std::pow(p1 * model_.impact_energy_J() / first.stiffness, 1.0 / p1);
+    // A braking robot travels at most v0 t_d + v0²/(2a), which bounds δ: far below L when the
+    // brake stops it early (low speed, strong brake), and δ must stay above its tolerance.
+    const double length_scale =
+        brakes_ ? std::min(conservative_length_m,
+                           v0_ * run_.reaction_delay_s + v0_ * v0_ / (2.0 * run_.braking_m_per_s2))
+                : conservative_length_m;
+    const double energy_density_scale = kHertzPressureFactor * first.stiffness *
+                                        first.curvature_per_m *
+                                        std::pow(length_scale, first.exponent) / first.exponent;
+    time_scale_s_ = conservative_length_m / v0_;
+    horizon_s_ = 1e3 * time_scale_s_;  // only orients the first step (one-step mode)
+    run_.slope_floor_m = 1e-12 * length_scale;
+    const double atol =
+        options_.absolute_tolerance > 0.0 ? options_.absolute_tolerance : options_.relative_tolerance;
+    sunrealtype* tolerance = N_VGetArrayPointer(absolute_tolerances_);
+    tolerance[kPenetration] = atol * length_scale;
+    tolerance[kPenetrationRate] = atol * v0_;
+    tolerance[kHeadSpeed] = atol * v0_;
+    tolerance[kNeckStretch] = atol * length_scale;
+    tolerance[kNeckStretchRate] = atol * v0_;
+    tolerance[kEnergyDensity] = atol * energy_density_scale;
+    tolerance[kWork] = atol * model_.impact_energy_J();
+  }
+
+  /// The bound on the contact's length: 100 times the slower of the contact's own time
+  /// (3 L/v0 ~ the conservative duration) and the neck's (a period of all moving masses on
+  /// the neck spring, their time constant on its damper), after the reaction delay.
+  void SetTimeBound() {
+    double slowest_s = 3.0 * time_scale_s_;
+    if (run_.has_neck) {
+      const double total_mass_kg = run_.bodies.moving_mass.sum();
+      if (run_.neck_stiffness_N_per_m > 0.0) {
+        slowest_s = std::max(slowest_s, 2.0 * std::numbers::pi *
+                                            std::sqrt(total_mass_kg / run_.neck_stiffness_N_per_m));
+      }
+      if (run_.neck_damping_N_s_per_m > 0.0) {
+        slowest_s = std::max(slowest_s, total_mass_kg / run_.neck_damping_N_s_per_m);
+      }
+    }
+    time_bound_s_ = (brakes_ ? run_.reaction_delay_s : 0.0) + 100.0 * slowest_s;
+    neck_time_s_ = slowest_s > 3.0 * time_scale_s_ ? slowest_s : 0.0;
+    inverse_reduced_mass_ = run_.bodies.inverse_mass(0) + run_.bodies.inverse_mass(1);
+  }
+
+  HistorySample Sample(double time, const sunrealtype* s) const override {
+    const Dynamics d = Evaluate(run_, s);
+    return {time, s[kPenetration], s[kPenetrationRate], d.force_N, d.stress_Pa, s[kEnergyDensity],
+            d.velocity(0), d.velocity(1), d.neck_force_N, s[kWork]};
+  }
+
+  int Begin() override {
+    int flag = stepper_.BeginRun(0.0, state_);  // a new run: nothing carried over
+    if (flag == kStepTaken) flag = stepper_.SetInitStep(0.0);
+    if (flag == kStepTaken) flag = stepper_.SetTolerances(options_.relative_tolerance, absolute_tolerances_);
+    return flag;
+  }
+
+  int Restart() {
+    CountRestart();
+    int flag = stepper_.ReInit(t_, state_);
+    if (flag == kStepTaken) flag = stepper_.SetInitStep(0.0);
+    return flag;
+  }
+
+  /// With damping F and σ_c are tracked over the contact: at every step, every event (with
+  /// the formulas on both sides of a switch) and at their own maxima in time.
+  void TrackDampedPeaks() {
+    if (!damped_) return;
+    const Dynamics d = Evaluate(run_, y_);
+    largest_force_N_ = std::max(largest_force_N_, d.force_N);
+    largest_stress_Pa_ = std::max(largest_stress_Pa_, d.stress_Pa);
+  }
+  void CheckEnergy() { residual_ = std::max(residual_, std::abs(EnergyImbalance(run_, y_))); }
+
+  /// From a maximum of δ or the robot's stop on, what is left of the contact depends on the
+  /// state there, not on v0: a robot braked to rest early leaves a tiny δ that the elastic
+  /// force alone unloads, slowly (from rest at δ, for F ~ δ^n, in a time ~ δ^((1-n)/2)). So
+  /// the bound grows to 100 times the slower of the neck's time and 3 δ/v, v the relative
+  /// speed that δ' and U(δ) give.
+  void ExtendTimeBound() {
+    const double potential_J = model_.StateAt(y_[kPenetration]).potential_energy_J;
+    const double speed = std::sqrt(y_[kPenetrationRate] * y_[kPenetrationRate] +
+                                   2.0 * potential_J * inverse_reduced_mass_);
+    if (speed > 0.0) {
+      time_bound_s_ =
+          std::max(time_bound_s_, t_ + 100.0 * std::max(neck_time_s_, 3.0 * y_[kPenetration] / speed));
+    }
+  }
+
+  void AfterStep() override { TrackDampedPeaks(); }
+
+  bool PastTimeBound() override {
+    timed_out_ = t_ > time_bound_s_;
+    return timed_out_;
+  }
+
+  std::string TimeoutMessage() const override {
+    return "the contact had not ended after " + FormatNumber(time_bound_s_) +
+           " s (100 times the slower of 3 L/v0 and the neck's period or time constant" +
+           std::string(brakes_ ? ", after the reaction delay" : "") +
+           ", or from the last maximum compression" +
+           std::string(brakes_ ? " or the robot's stop" : "") +
+           " of that and 3 delta/v, v the relative speed from delta' and U(delta)): the "
+           "bodies keep pressing";
+  }
+
+  /// A maximum of δ (δ_max is the largest); smooth here: no restart.
+  void OnTurn() {
+    CheckEnergy();
+    largest_energy_density_ = std::max(largest_energy_density_, y_[kEnergyDensity]);
+    if (!turned_ || y_[kPenetration] > max_penetration_m_) {
+      turned_ = true;
+      max_penetration_m_ = y_[kPenetration];
+      segment_at_max_ = run_.segment == kWholeLaw ? model_.SegmentIndexAt(max_penetration_m_)
+                                                  : static_cast<std::size_t>(run_.segment);
+      time_at_max_s_ = t_;
+      energy_density_at_max_ = y_[kEnergyDensity];
+    }
+    ExtendTimeBound();
+  }
+
+  int OnRoot(const std::array<int, kMaxRootCount>& found) override {
+    TrackDampedPeaks();  // also the maxima of F and σ_c in time (kForcePeak, kStressPeak)
+    if (found[kTurn]) OnTurn();
+    bool kink = false;
+    if (found[kLowerSwitch]) {
+      if (run_.segment == 0 || run_.segment == kWholeLaw) {
+        Separate(v0_);
+        CheckEnergy();
+        return kRootFound;
+      }
+      --run_.segment;
+      kink = true;
+    } else if (found[kUpperSwitch]) {
+      ++run_.segment;
+      kink = true;
+    }
+    if (found[kBrakeStart]) {
+      run_.brake_pending = false;
+      run_.brake_on = Evaluate(run_, y_).velocity(0) > 0.0;
+      kink = true;
+    }
+    if (found[kRobotStops]) {
+      run_.brake_on = false;
+      ExtendTimeBound();
+      kink = true;
+    }
+    if (found[kDampingClamp]) kink = true;
+    if (!kink) return kRootFound;
+    TrackDampedPeaks();  // the new segment's formula at a switch (the literal law jumps)
+    return Restart();
+  }
+
+  void Finish() override {
+    result_.peaks = PeaksAtMaxPenetration(model_, segment_at_max_, max_penetration_m_);
+    if (damped_) {  // the largest over the contact, which the loading branch holds
+      result_.peaks.peak_force_N = largest_force_N_;
+      result_.peaks.max_compressive_stress_Pa = largest_stress_Pa_;
+      result_.peaks.max_tensile_stress_Pa = model_.TensileFromCompressive(largest_stress_Pa_);
+      result_.peaks.max_energy_density_J_per_m2 = largest_energy_density_;
+    } else {  // e is a function of δ: its value at δ_max
+      result_.peaks.max_energy_density_J_per_m2 = energy_density_at_max_;
+    }
+    result_.time_of_max_compression_s = time_at_max_s_;
+    FinishChecks(residual_, "energy residual (work accounted for)", "");
+  }
+
+  Run& run_;
+  N_Vector absolute_tolerances_;
+  const double v0_;
+  const bool brakes_;
+  bool damped_ = false;
+  double time_scale_s_ = 0.0;
+  double time_bound_s_ = 0.0;
+  double neck_time_s_ = 0.0;
+  double inverse_reduced_mass_ = 0.0;
+  // The peaks so far.
+  double max_penetration_m_ = 0.0;
+  std::size_t segment_at_max_ = 0;
+  double time_at_max_s_ = 0.0;
+  double energy_density_at_max_ = 0.0;   // e at the largest maximum of δ
+  double largest_energy_density_ = 0.0;  // e over every maximum of δ
+  double largest_force_N_ = 0.0;
+  double largest_stress_Pa_ = 0.0;
+  double residual_ = 0.0;
+};
+
 }  // namespace
 
 struct ExtendedTimePath::Workspace {
@@ -276,284 +523,9 @@ ImpactResult ExtendedTimePath::Simulate(const ImpactModel& model,
                                         const TimeIntegrationOptions& options) {
   Workspace& ws = *workspace_;
   ws.log.clear();
-  Stepper& stepper = ws.StepperFor(options.method);
-  const Scene& scene = model.scene();
-
-  ImpactResult result;
-  result.method = options.method;
-  Run& run = ws.run;
-  run = Run{};
-  run.model = &model;
-  run.segment = options.restart_at_phase_switches ? 0 : kWholeLaw;
-  const double v0 = model.impact_speed_m_per_s();
-  const std::array<double, 3> masses{scene.robot.mass_kg, scene.head.mass_kg,
-                                     scene.head.has_neck() ? scene.head.torso_mass_kg : 0.0};
-  for (int i = 0; i < 3; ++i) {
-    if (std::isinf(masses[static_cast<std::size_t>(i)])) {
-      run.bodies.held(i) = 1.0;
-    } else if (masses[static_cast<std::size_t>(i)] > 0.0) {
-      run.bodies.moving_mass(i) = masses[static_cast<std::size_t>(i)];
-      run.bodies.inverse_mass(i) = 1.0 / masses[static_cast<std::size_t>(i)];
-    }
-  }
-  run.bodies.initial_speed = Eigen::Vector3d(v0, 0.0, 0.0);
-  run.damping_s_per_m = scene.model.damping_s_per_m;
-  const bool brakes = scene.robot_brakes();
-  run.braking_m_per_s2 = scene.robot.braking_m_per_s2;
-  run.reaction_delay_s = scene.robot.reaction_delay_s;
-  run.brake_pending = brakes && run.reaction_delay_s > 0.0;
-  run.brake_on = brakes && !run.brake_pending;  // the robot moves forward at first contact
-  run.has_neck = scene.head.has_neck();
-  run.neck_stiffness_N_per_m = scene.head.neck_stiffness_N_per_m;
-  run.neck_damping_N_s_per_m = scene.head.neck_damping_N_s_per_m;
-  const bool damped = run.damping_s_per_m > 0.0;
-
-  // Natural scales, as on the δ-only path: L from phase 1 alone, v0, the matching energy
-  // density, and the impact energy for the work.
-  const ForceLawSegment& first = model.segment(0);
-  const double p1 = first.exponent + 1.0;
-  const double conservative_length_m =
-      std::pow(p1 * model.impact_energy_J() / first.stiffness, 1.0 / p1);
-  // A braking robot travels at most v0 t_d + v0²/(2a), which bounds δ: far below L when the
-  // brake stops it early (low speed, strong brake), and δ must stay above its tolerance.
-  const double length_scale =
-      brakes ? std::min(conservative_length_m,
-                        v0 * run.reaction_delay_s + v0 * v0 / (2.0 * run.braking_m_per_s2))
-             : conservative_length_m;
-  const double energy_density_scale = kHertzPressureFactor * first.stiffness *
-                                      first.curvature_per_m *
-                                      std::pow(length_scale, first.exponent) / first.exponent;
-  const double time_scale = conservative_length_m / v0;
-  run.slope_floor_m = 1e-12 * length_scale;
-  const double atol =
-      options.absolute_tolerance > 0.0 ? options.absolute_tolerance : options.relative_tolerance;
-  sunrealtype* tolerance = N_VGetArrayPointer(ws.absolute_tolerances);
-  tolerance[kPenetration] = atol * length_scale;
-  tolerance[kPenetrationRate] = atol * v0;
-  tolerance[kHeadSpeed] = atol * v0;
-  tolerance[kNeckStretch] = atol * length_scale;
-  tolerance[kNeckStretchRate] = atol * v0;
-  tolerance[kEnergyDensity] = atol * energy_density_scale;
-  tolerance[kWork] = atol * model.impact_energy_J();
-
-  // The bound on the contact's length: 100 times the slower of the contact's own time
-  // (3 L/v0 ~ the conservative duration) and the neck's (a period of all moving masses on
-  // the neck spring, their time constant on its damper), after the reaction delay.
-  double slowest_s = 3.0 * time_scale;
-  if (run.has_neck) {
-    const double total_mass_kg = run.bodies.moving_mass.sum();
-    if (run.neck_stiffness_N_per_m > 0.0) {
-      slowest_s = std::max(slowest_s, 2.0 * std::numbers::pi *
-                                          std::sqrt(total_mass_kg / run.neck_stiffness_N_per_m));
-    }
-    if (run.neck_damping_N_s_per_m > 0.0) {
-      slowest_s = std::max(slowest_s, total_mass_kg / run.neck_damping_N_s_per_m);
-    }
-  }
-  double time_bound_s = (brakes ? run.reaction_delay_s : 0.0) + 100.0 * slowest_s;
-  const double neck_time_s = slowest_s > 3.0 * time_scale ? slowest_s : 0.0;
-  const double inverse_reduced_mass = run.bodies.inverse_mass(0) + run.bodies.inverse_mass(1);
-
-  sunrealtype* y = N_VGetArrayPointer(ws.state);
-  for (int i = 0; i < kStateSize; ++i) y[i] = 0.0;
-  y[kPenetrationRate] = v0;
-  double t = 0.0;
-
-  auto push_sample = [&](double time, const sunrealtype* s) {
-    const Dynamics d = Evaluate(run, s);
-    result.history.push_back({time, s[kPenetration], s[kPenetrationRate], d.force_N, d.stress_Pa,
-                              s[kEnergyDensity], d.velocity(0), d.velocity(1), d.neck_force_N,
-                              s[kWork]});
-  };
-  // Records y at `time`; after a step or a root, first fills the gap since the last sample
-  // with dense output, valid inside the step just taken.
-  auto record = [&](double time, bool interpolate) {
-    if (!options.record_history) return;
-    const double interval = options.history_max_interval_s;
-    if (interpolate && interval > 0.0 && !result.history.empty()) {
-      const double last = result.history.back().time_s;
-      const int gaps = static_cast<int>(std::ceil((time - last) / interval));
-      for (int k = 1; k < gaps; ++k) {
-        const double tk = last + (time - last) * k / gaps;
-        if (stepper.Interpolate(tk, ws.dense_output) == kStepTaken) {
-          push_sample(tk, N_VGetArrayPointer(ws.dense_output));
-        }
-      }
-    }
-    push_sample(time, y);
-  };
-
-  // Peaks. With damping F and σ_c are tracked over the contact: at every step, every event
-  // (with the formulas on both sides of a switch) and at their own maxima in time.
-  double max_penetration_m = 0.0;
-  std::size_t segment_at_max = 0;
-  double time_at_max_s = 0.0;
-  double energy_density_at_max = 0.0;   // e at the largest maximum of δ
-  double largest_energy_density = 0.0;  // e over every maximum of δ
-  double largest_force_N = 0.0;
-  double largest_stress_Pa = 0.0;
-  double residual = 0.0;
-  auto track_damped_peaks = [&]() {
-    if (!damped) return;
-    const Dynamics d = Evaluate(run, y);
-    largest_force_N = std::max(largest_force_N, d.force_N);
-    largest_stress_Pa = std::max(largest_stress_Pa, d.stress_Pa);
-  };
-  auto check_energy = [&]() { residual = std::max(residual, std::abs(EnergyImbalance(run, y))); };
-  // From a maximum of δ or the robot's stop on, what is left of the contact depends on the
-  // state there, not on v0: a robot braked to rest early leaves a tiny δ that the elastic
-  // force alone unloads, slowly (from rest at δ, for F ~ δ^n, in a time ~ δ^((1-n)/2)). So
-  // the bound grows to 100 times the slower of the neck's time and 3 δ/v, v the relative
-  // speed that δ' and U(δ) give.
-  auto extend_time_bound = [&]() {
-    const double potential_J = model.StateAt(y[kPenetration]).potential_energy_J;
-    const double speed = std::sqrt(y[kPenetrationRate] * y[kPenetrationRate] +
-                                   2.0 * potential_J * inverse_reduced_mass);
-    if (speed > 0.0) {
-      time_bound_s =
-          std::max(time_bound_s, t + 100.0 * std::max(neck_time_s, 3.0 * y[kPenetration] / speed));
-    }
-  };
-
-  int flag = stepper.BeginRun(0.0, ws.state);  // a new run: nothing carried over
-  if (flag == kStepTaken) flag = stepper.SetInitStep(0.0);
-  if (flag == kStepTaken) flag = stepper.SetTolerances(options.relative_tolerance, ws.absolute_tolerances);
-  auto restart = [&]() {
-    stepper.AddStatistics(result.statistics);
-    ++result.statistics.restarts;
-    flag = stepper.ReInit(t, ws.state);
-    if (flag == kStepTaken) flag = stepper.SetInitStep(0.0);
-  };
-  record(0.0, false);
-
-  bool turned = false;
-  bool separated = false;
-  bool timed_out = false;
-  long steps_taken = 0;
-  const double horizon = 1e3 * time_scale;  // only orients the first step (one-step mode)
-  while (flag >= 0 && !separated) {
-    flag = stepper.Step(t + horizon, ws.state, &t);
-    if (flag == kStepTaken) {
-      record(t, true);
-      track_damped_peaks();
-      if (++steps_taken >= options.max_steps) break;
-      if (t > time_bound_s) {
-        timed_out = true;
-        break;
-      }
-      continue;
-    }
-    if (flag != kRootFound) break;
-    int found[kEventCount] = {};
-    stepper.RootInfo(found);
-    record(t, true);
-    track_damped_peaks();  // also the maxima of F and σ_c in time (kForcePeak, kStressPeak)
-    if (found[kTurn]) {  // smooth here: no restart
-      check_energy();
-      largest_energy_density = std::max(largest_energy_density, y[kEnergyDensity]);
-      if (!turned || y[kPenetration] > max_penetration_m) {
-        turned = true;
-        max_penetration_m = y[kPenetration];
-        segment_at_max = run.segment == kWholeLaw ? model.SegmentIndexAt(max_penetration_m)
-                                                  : static_cast<std::size_t>(run.segment);
-        time_at_max_s = t;
-        energy_density_at_max = y[kEnergyDensity];
-      }
-      extend_time_bound();
-    }
-    bool kink = false;
-    if (found[kLowerSwitch]) {
-      if (run.segment == 0 || run.segment == kWholeLaw) {
-        separated = true;
-        result.contact_duration_s = t;
-        result.rebound_speed_m_per_s = -y[kPenetrationRate];
-        result.coefficient_of_restitution = -y[kPenetrationRate] / v0;
-        check_energy();
-        break;
-      }
-      --run.segment;
-      kink = true;
-    } else if (found[kUpperSwitch]) {
-      ++run.segment;
-      kink = true;
-    }
-    if (found[kBrakeStart]) {
-      run.brake_pending = false;
-      run.brake_on = Evaluate(run, y).velocity(0) > 0.0;
-      kink = true;
-    }
-    if (found[kRobotStops]) {
-      run.brake_on = false;
-      extend_time_bound();
-      kink = true;
-    }
-    if (found[kDampingClamp]) kink = true;
-    if (kink) {
-      track_damped_peaks();  // the new segment's formula at a switch (the literal law jumps)
-      restart();
-    }
-  }
-  stepper.AddStatistics(result.statistics);
-
-  auto fail = [&](SolveStatus status, int code, const std::string& what) {
-    result.status = status;
-    result.raw_code = code;
-    result.message = what;
-    if (!ws.log.empty()) result.message += " (SUNDIALS: " + ws.log + ")";
-  };
-  if (flag < 0) {
-    fail(flag == kTooMuchWork ? SolveStatus::kStepLimit : SolveStatus::kSolverFailure, flag,
-         std::string(ToString(options.method)) + " returned " + stepper.FlagName(flag));
-  } else if (timed_out) {
-    fail(SolveStatus::kNoSeparation, 0,
-         "the contact had not ended after " + FormatNumber(time_bound_s) +
-             " s (100 times the slower of 3 L/v0 and the neck's period or time constant" +
-             std::string(brakes ? ", after the reaction delay" : "") +
-             ", or from the last maximum compression" +
-             std::string(brakes ? " or the robot's stop" : "") +
-             " of that and 3 delta/v, v the relative speed from delta' and U(delta)): the "
-             "bodies keep pressing");
-  } else if (!separated && steps_taken >= options.max_steps) {
-    fail(SolveStatus::kStepLimit, kTooMuchWork,
-         "step limit of " + std::to_string(options.max_steps) + " steps reached before separation");
-  } else if (!separated || !turned) {
-    fail(SolveStatus::kEventMissed, flag,
-         "the integration ended without locating maximum compression and separation");
-  }
-  if (result.ok()) {
-    result.peaks = PeaksAtMaxPenetration(model, segment_at_max, max_penetration_m);
-    if (damped) {  // the largest over the contact, which the loading branch holds
-      result.peaks.peak_force_N = largest_force_N;
-      result.peaks.max_compressive_stress_Pa = largest_stress_Pa;
-      result.peaks.max_tensile_stress_Pa = model.TensileFromCompressive(largest_stress_Pa);
-      result.peaks.max_energy_density_J_per_m2 = largest_energy_density;
-    } else {  // e is a function of δ: its value at δ_max
-      result.peaks.max_energy_density_J_per_m2 = energy_density_at_max;
-    }
-    result.time_of_max_compression_s = time_at_max_s;
-    for (ValidityWarning& warning : CheckValidity(model, result.peaks)) {
-      result.AddWarning(warning.code, std::move(warning.message));
-    }
-    result.energy_residual = residual;
-    const double allowed = std::max(100.0 * options.relative_tolerance, 1e-9);
-    if (!(residual <= allowed)) {
-      result.AddWarning(
-          ValidityCode::kToleranceNotKept,
-          "the time path did not keep its tolerance: energy residual (work accounted for) " +
-              FormatNumber(residual) + " exceeds max(100 rtol, 1e-9) = " + FormatNumber(allowed) +
-              " (" + std::string(ToString(options.method)) +
-              (options.restart_at_phase_switches ? "" : ", no restart at the phase switches") + ")");
-    }
-    if (!options.restart_at_phase_switches) {
-      result.AddWarning(
-          ValidityCode::kNoRestarts,
-          "integrated straight through the force law's C0 kinks (restart_at_phase_switches "
-          "off): the local error test does not see them, so the error may exceed the "
-          "tolerance (a numerics-study setting)");
-    }
-  }
-  run.model = nullptr;
-  return result;
+  ExtendedRun run(model, options, ws.StepperFor(options.method), ws.run, ws.state,
+                  ws.absolute_tolerances, ws.dense_output, ws.log);
+  return run.Integrate();
 }
 
 }  // namespace covopt::internal

@@ -53,7 +53,7 @@ std::string PeakSummary(const ImpactModel& model, const ImpactPeaks& peaks) {
 /// contact without them; `note` then says so in the message.
 Scene ExactComparisonScene(const Scene& scene, std::string& note) {
   Scene comparison = scene;
-  if (scene.robot_brakes() || scene.head.has_neck()) {
+  if (!scene.has_energy_integral()) {
     comparison.robot.reaction_delay_s = 0.0;
     comparison.robot.braking_m_per_s2 = 0.0;
     comparison.head.torso_mass_kg = 0.0;
@@ -167,20 +167,23 @@ std::string_view ToString(ValidityCode code) noexcept {
 }
 
 void ImpactResult::AddWarning(ValidityCode code, std::string message) {
-  warnings.push_back(message);
-  coded_warnings.push_back({code, std::move(message)});
+  warnings.push_back({code, std::move(message)});
 }
 
-std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const ImpactPeaks& peaks) {
-  std::vector<ValidityWarning> warnings;
-  auto warn = [&](ValidityCode code, std::string message) {
-    warnings.push_back({code, std::move(message)});
-  };
-  const Scene& scene = model.scene();
-  const double delta_max = peaks.max_penetration_m;
-  std::string comparison_note;
-  const Scene comparison_scene = ExactComparisonScene(scene, comparison_note);
+std::vector<std::string> ImpactResult::WarningMessages() const {
+  std::vector<std::string> messages;
+  messages.reserve(warnings.size());
+  for (const ValidityWarning& warning : warnings) messages.push_back(warning.message);
+  return messages;
+}
 
+namespace {
+
+using Warnings = std::vector<ValidityWarning>;
+
+/// Per phase reached: its Hertz contact radius against the radii it presses on.
+void WarnHertzValidity(const ImpactModel& model, const ImpactPeaks& peaks, Warnings& warnings) {
+  const double delta_max = peaks.max_penetration_m;
   for (std::size_t i = 0; i < model.segment_count(); ++i) {
     const ForceLawSegment& seg = model.segment(i);
     if (!(delta_max > seg.start_m)) break;
@@ -189,107 +192,137 @@ std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const Impac
     const double contact_radius = std::sqrt(x / seg.curvature_per_m);
     const double smallest_radius = std::min(seg.radius_a_m, seg.radius_b_m);
     if (contact_radius >= smallest_radius) {
-      warn(ValidityCode::kHertzValidity,
+      warnings.push_back(
+          {ValidityCode::kHertzValidity,
            "outside Hertz validity: in phase " + std::to_string(PhaseNumber(seg.phase)) + " (" +
                std::string(ToString(seg.phase)) + ") the contact radius " +
                Millimetres(contact_radius) + " is not smaller than the radius " +
                Millimetres(smallest_radius) +
-               " it presses on (paper footnote 7: eq. 4 needs non-sharp contact)");
+               " it presses on (paper footnote 7: eq. 4 needs non-sharp contact)"});
     }
   }
+}
 
-  if (model.has_covering() && scene.covering.youngs_modulus_Pa > scene.scalp.youngs_modulus_Pa) {
-    // The same outer geometry without a covering: a bare robot of radius R_r + b_c.
-    Scene bare_scene = comparison_scene;
-    bare_scene.covering.thickness_m = 0.0;
-    bare_scene.robot.radius_m = scene.robot.radius_m + scene.covering.thickness_m;  // ∞ stays ∞
-    std::optional<ImpactPeaks> bare;
-    try {
-      bare = ExactPeaks(ImpactModel::FromScene(bare_scene));
-    } catch (const std::invalid_argument&) {
-      // R_r + b_c beyond the model's radius range: no comparison to make.
-    }
-    if (bare && peaks.max_compressive_stress_Pa > bare->max_compressive_stress_Pa) {
-      const std::string radius = std::isinf(bare_scene.robot.radius_m)
-                                     ? std::string("a flat bare robot")
-                                     : "a bare robot of radius " +
-                                           Millimetres(bare_scene.robot.radius_m) +
-                                           " (R_r + b_c)";
-      warn(ValidityCode::kCoveringStifferThanScalp,
-           "covering stiffer than the scalp (E_c " + Modulus(scene.covering.youngs_modulus_Pa) +
-               " > E_s " + Modulus(scene.scalp.youngs_modulus_Pa) +
-               ") and worse than no covering: " + PeakSummary(model, peaks) + ", while " +
-               radius + ", the same outer shape without the covering, gives " +
-               PeakSummary(model, *bare) + comparison_note +
-               "; the layered stress law adds phase-wise Hertz pressures and overstates the "
-               "stress of a covering stiffer than the scalp (docs/model.md §5)");
-    }
+/// A covering stiffer than the scalp that gives a higher σ_c,max than a bare robot of radius
+/// R_r + b_c (the same outer shape), compared on `comparison_scene`.
+void WarnStifferCovering(const ImpactModel& model, const ImpactPeaks& peaks, const Scene& comparison_scene,
+                         const std::string& comparison_note, Warnings& warnings) {
+  const Scene& scene = model.scene();
+  if (!(model.has_covering() && scene.covering.youngs_modulus_Pa > scene.scalp.youngs_modulus_Pa)) return;
+  // The same outer geometry without a covering: a bare robot of radius R_r + b_c.
+  Scene bare_scene = comparison_scene;
+  bare_scene.covering.thickness_m = 0.0;
+  bare_scene.robot.radius_m = scene.robot.radius_m + scene.covering.thickness_m;  // ∞ stays ∞
+  std::optional<ImpactPeaks> bare;
+  try {
+    bare = ExactPeaks(ImpactModel::FromScene(bare_scene));
+  } catch (const std::invalid_argument&) {
+    // R_r + b_c beyond the model's radius range: no comparison to make.
   }
+  if (!(bare && peaks.max_compressive_stress_Pa > bare->max_compressive_stress_Pa)) return;
+  const std::string radius = std::isinf(bare_scene.robot.radius_m)
+                                 ? std::string("a flat bare robot")
+                                 : "a bare robot of radius " + Millimetres(bare_scene.robot.radius_m) +
+                                       " (R_r + b_c)";
+  warnings.push_back(
+      {ValidityCode::kCoveringStifferThanScalp,
+       "covering stiffer than the scalp (E_c " + Modulus(scene.covering.youngs_modulus_Pa) + " > E_s " +
+           Modulus(scene.scalp.youngs_modulus_Pa) + ") and worse than no covering: " +
+           PeakSummary(model, peaks) + ", while " + radius +
+           ", the same outer shape without the covering, gives " + PeakSummary(model, *bare) +
+           comparison_note +
+           "; the layered stress law adds phase-wise Hertz pressures and overstates the "
+           "stress of a covering stiffer than the scalp (docs/model.md §5)"});
+}
 
-  if (model.has_covering() && peaks.phase_at_max == Phase::kCoveringOnBone) {
+/// A covering within 5 % of full compression, or fully compressed.
+void WarnCompression(const ImpactModel& model, const ImpactPeaks& peaks, Warnings& warnings) {
+  if (!model.has_covering()) return;
+  const double delta_max = peaks.max_penetration_m;
+  if (peaks.phase_at_max == Phase::kCoveringOnBone) {
     const ForceLawSegment& seg = model.segment(model.SegmentIndexAt(delta_max));
     const double travel = seg.end_m - seg.start_m;  // t2 - t1
     if (delta_max >= seg.end_m - kNearFullCompressionShare * travel) {
-      warn(ValidityCode::kNearFullCompression,
-           "the covering is within 5 % of full compression at the peak: δ_max " +
-               Millimetres(delta_max) + ", full compression at δ = " + Millimetres(seg.end_m) +
-               " (the scalp's travel " + Millimetres(seg.start_m) + " plus the covering's " +
-               Millimetres(travel) + "; " + Percent((delta_max - seg.start_m) / travel) +
+      warnings.push_back(
+          {ValidityCode::kNearFullCompression,
+           "the covering is within 5 % of full compression at the peak: δ_max " + Millimetres(delta_max) +
+               ", full compression at δ = " + Millimetres(seg.end_m) + " (the scalp's travel " +
+               Millimetres(seg.start_m) + " plus the covering's " + Millimetres(travel) + "; " +
+               Percent((delta_max - seg.start_m) / travel) +
                " of the covering's travel used); a little more impact energy bottoms it out and "
-               "the robot reaches the bone");
+               "the robot reaches the bone"});
     }
   }
+  if (peaks.fully_compressed) {
+    warnings.push_back({ValidityCode::kFullyCompressed,
+                        "the covering is fully compressed: the robot reaches the bone through it (phase 3); "
+                        "the stresses then depend on the stiff robot-bone contact"});
+  }
+}
 
-  if (model.has_covering() && peaks.fully_compressed) {
-    warn(ValidityCode::kFullyCompressed,
-         "the covering is fully compressed: the robot reaches the bone through it (phase 3); "
-         "the stresses then depend on the stiff robot-bone contact");
+/// What the literal threshold reading changes against the default reading.
+std::string LiteralThresholdsChange(const ImpactModel& model) {
+  const Scene& scene = model.scene();
+  const ModelConstants& constants = scene.model;
+  const double t1 = constants.full_compression_fraction * scene.scalp.thickness_m;
+  const double covering_travel = constants.full_compression_fraction * scene.covering.thickness_m;
+  const ForceLawSegment& last = model.segment(model.segment_count() - 1);
+  std::string what;
+  if (!model.has_covering()) {
+    what = "without a covering, phase 3 (robot on bone) takes over at 0.8 b_s = " + Millimetres(t1) +
+           " with its law measured from δ = 0 (F = K_rb δ^n_rb)";
+  } else if (last.origin_m == last.start_m) {
+    what = "phase 3 (robot on bone) starts at 0.8 b_c = " + Millimetres(covering_travel) +
+           " instead of 0.8 b_s + 0.8 b_c = " + Millimetres(t1 + covering_travel);
+  } else {
+    what = "0.8 b_c = " + Millimetres(covering_travel) + " is not beyond 0.8 b_s = " + Millimetres(t1) +
+           ", so phase 2 vanishes and phase 3 (robot on bone) takes over at " + Millimetres(t1) +
+           " with its law measured from " + Millimetres(covering_travel);
   }
+  if (last.origin_m != last.start_m) {
+    const ContactState below = model.StateInSegment(model.segment_count() - 2, last.start_m);
+    const ContactState above = model.StateInSegment(model.segment_count() - 1, last.start_m);
+    what += ": the force jumps there from " + Force(below.force_N) + " to " + Force(above.force_N);
+  }
+  return what;
+}
 
-  if (scene.model.thresholds == ThresholdReading::kLiteral) {
-    const ModelConstants& constants = scene.model;
-    const double t1 = constants.full_compression_fraction * scene.scalp.thickness_m;
-    const double covering_travel = constants.full_compression_fraction * scene.covering.thickness_m;
-    const ForceLawSegment& last = model.segment(model.segment_count() - 1);
-    std::string what;
-    if (!model.has_covering()) {
-      what = "without a covering, phase 3 (robot on bone) takes over at 0.8 b_s = " +
-             Millimetres(t1) + " with its law measured from δ = 0 (F = K_rb δ^n_rb)";
-    } else if (last.origin_m == last.start_m) {
-      what = "phase 3 (robot on bone) starts at 0.8 b_c = " + Millimetres(covering_travel) +
-             " instead of 0.8 b_s + 0.8 b_c = " + Millimetres(t1 + covering_travel);
-    } else {
-      what = "0.8 b_c = " + Millimetres(covering_travel) + " is not beyond 0.8 b_s = " +
-             Millimetres(t1) + ", so phase 2 vanishes and phase 3 (robot on bone) takes over at " +
-             Millimetres(t1) + " with its law measured from " + Millimetres(covering_travel);
-    }
-    if (last.origin_m != last.start_m) {
-      const ContactState below = model.StateInSegment(model.segment_count() - 2, last.start_m);
-      const ContactState above = model.StateInSegment(model.segment_count() - 1, last.start_m);
-      what += ": the force jumps there from " + Force(below.force_N) + " to " +
-              Force(above.force_N);
-    }
-    Scene cumulative_scene = comparison_scene;
-    cumulative_scene.model.thresholds = ThresholdReading::kCumulative;
-    const ImpactPeaks cumulative = ExactPeaks(ImpactModel::FromScene(cumulative_scene));
-    std::string message =
-        "literal thresholds: the paper's eq. (2) read literally, not covopt's default "
-        "cumulative reading (docs/model.md §4); " +
-        what + ". Peaks: " + PeakSummary(model, peaks) + "; the default reading gives " +
-        PeakSummary(model, cumulative) + comparison_note;
-    // A drop: the largest value over the contact lies at a switch before δ_max.
-    const ContactState at_max = model.StateAt(delta_max);
-    if (peaks.peak_force_N > at_max.force_N) {
-      message += ". The force dropped at a switch: F_max = " + Force(peaks.peak_force_N) +
-                 " is reached before δ_max, where F = " + Force(at_max.force_N);
-    }
-    if (peaks.max_compressive_stress_Pa > at_max.compressive_stress_Pa) {
-      message += ". The stress dropped at a switch: σ_c,max = " +
-                 Stress(peaks.max_compressive_stress_Pa) + " is reached before δ_max, where σ_c = " +
-                 Stress(at_max.compressive_stress_Pa);
-    }
-    warn(ValidityCode::kLiteralThresholds, std::move(message));
+/// The literal threshold reading: what it changes, the peaks against the default reading's
+/// (on `comparison_scene`), and a drop of F or σ_c at a switch.
+void WarnLiteralThresholds(const ImpactModel& model, const ImpactPeaks& peaks, const Scene& comparison_scene,
+                           const std::string& comparison_note, Warnings& warnings) {
+  if (model.scene().model.thresholds != ThresholdReading::kLiteral) return;
+  Scene cumulative_scene = comparison_scene;
+  cumulative_scene.model.thresholds = ThresholdReading::kCumulative;
+  const ImpactPeaks cumulative = ExactPeaks(ImpactModel::FromScene(cumulative_scene));
+  std::string message =
+      "literal thresholds: the paper's eq. (2) read literally, not covopt's default "
+      "cumulative reading (docs/model.md §4); " +
+      LiteralThresholdsChange(model) + ". Peaks: " + PeakSummary(model, peaks) + "; the default reading gives " +
+      PeakSummary(model, cumulative) + comparison_note;
+  // A drop: the largest value over the contact lies at a switch before δ_max.
+  const ContactState at_max = model.StateAt(peaks.max_penetration_m);
+  if (peaks.peak_force_N > at_max.force_N) {
+    message += ". The force dropped at a switch: F_max = " + Force(peaks.peak_force_N) +
+               " is reached before δ_max, where F = " + Force(at_max.force_N);
   }
+  if (peaks.max_compressive_stress_Pa > at_max.compressive_stress_Pa) {
+    message += ". The stress dropped at a switch: σ_c,max = " + Stress(peaks.max_compressive_stress_Pa) +
+               " is reached before δ_max, where σ_c = " + Stress(at_max.compressive_stress_Pa);
+  }
+  warnings.push_back({ValidityCode::kLiteralThresholds, std::move(message)});
+}
+
+}  // namespace
+
+std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const ImpactPeaks& peaks) {
+  Warnings warnings;
+  std::string comparison_note;
+  const Scene comparison_scene = ExactComparisonScene(model.scene(), comparison_note);
+  WarnHertzValidity(model, peaks, warnings);
+  WarnStifferCovering(model, peaks, comparison_scene, comparison_note, warnings);
+  WarnCompression(model, peaks, warnings);
+  WarnLiteralThresholds(model, peaks, comparison_scene, comparison_note, warnings);
   return warnings;
 }
 

@@ -20,6 +20,7 @@
 #include "covopt/core/number_format.hpp"
 #include "covopt/core/parallel_for.hpp"
 #include "covopt/core/scene_fields.hpp"
+#include "covopt/core/solve.hpp"
 #include "numeric_format.hpp"
 
 namespace covopt {
@@ -52,28 +53,6 @@ const SceneField& CheckAxis(const SweepAxis& axis, const char* name) {
   return *field;
 }
 
-/// The exact path answers every peak of the scene (the rule of optim's ChooseOracle, at core
-/// level): the conservative two-mass impact, or a damped one (docs/model.md §10.1). A braking
-/// robot or a neck has no energy integral.
-bool ExactPathAnswers(const Scene& scene) noexcept { return !scene.robot_brakes() && !scene.head.has_neck(); }
-
-void ValidateTimePath(const TimeIntegrationOptions& o) {
-  if (o.method == ComputationMethod::kExact || ToString(o.method) == "unknown") {
-    throw std::invalid_argument("time_path.method must be a time integrator, not " + std::string(ToString(o.method)));
-  }
-  if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
-    throw std::invalid_argument("time_path.relative_tolerance must be in [1e-14, 1e-2] (got " +
-                                FormatNumber(o.relative_tolerance) + ")");
-  }
-  if (!(o.absolute_tolerance == 0.0 || (o.absolute_tolerance > 0.0 && o.absolute_tolerance <= 1e-2))) {
-    throw std::invalid_argument("time_path.absolute_tolerance must be in (0, 1e-2], or 0 for rtol (got " +
-                                FormatNumber(o.absolute_tolerance) + ")");
-  }
-  if (o.max_steps < 10) {
-    throw std::invalid_argument("time_path.max_steps must be >= 10 (got " + std::to_string(o.max_steps) + ")");
-  }
-}
-
 /// Solves one grid point into `row` (every field overwritten: slots are reused).
 void SolveRow(const SweepSpec& spec, const SweepOptions& options, const SceneField& x_field,
               const SceneField* y_field, std::size_t ny, std::size_t index, SweepRow& row) {
@@ -87,20 +66,16 @@ void SolveRow(const SweepSpec& spec, const SweepOptions& options, const SceneFie
   if (y_field) y_field->field(scene) = row.y;
   row.covered = scene.covering.thickness_m > 0.0;
   row.warnings.clear();
-  row.method = ExactPathAnswers(scene) ? ComputationMethod::kExact : options.time_path.method;
+  SolveOptions solve;  // the automatic choice, without a history
+  solve.exact = options.exact;
+  solve.time_path = options.time_path;
+  const bool exact = ChoosePath(scene, solve) == PathChoice::kExact;
+  row.method = exact ? ComputationMethod::kExact : options.time_path.method;
   try {
-    const ImpactModel model = ImpactModel::FromScene(scene);
-    ImpactResult result;
-    if (ExactPathAnswers(scene)) {
-      result = SolveExact(model, options.exact);
-    } else {
-      TimeIntegrationOptions time_path = options.time_path;
-      time_path.record_history = false;
-      result = SimulateImpact(model, time_path);
-      if (!result.ok()) {
-        throw std::invalid_argument("the time path (" + std::string(ToString(time_path.method)) + ") failed: " +
-                                    std::string(ToString(result.status)) + ": " + result.message);
-      }
+    ImpactResult result = Solve(scene, solve);
+    if (!result.ok()) {
+      throw std::invalid_argument("the time path (" + std::string(ToString(solve.time_path.method)) + ") failed: " +
+                                  std::string(ToString(result.status)) + ": " + result.message);
     }
     row.valid = true;
     row.error.clear();
@@ -118,7 +93,7 @@ void SolveRow(const SweepSpec& spec, const SweepOptions& options, const SceneFie
     row.admissible = row.assessment.safe() &&
                      !(row.covered && (result.peaks.fully_compressed ||
                                        spec.safety_factor * row.compression_ratio > 1.0));
-    row.warnings = std::move(result.coded_warnings);
+    row.warnings = std::move(result.warnings);
   } catch (const std::invalid_argument& e) {
     row.valid = false;
     row.error = e.what();
@@ -244,7 +219,7 @@ SweepResult Sweep(const SweepSpec& spec, const SweepOptions& options,
     throw std::invalid_argument("block_rows must be in 1..1000000 (got " +
                                 std::to_string(options.block_rows) + ")");
   }
-  ValidateTimePath(options.time_path);
+  ValidateTimeIntegrationOptions(options.time_path, "time_path.");
   if (!consumer) throw std::invalid_argument("consumer: empty; give a function to receive the rows");
 
   const auto start = std::chrono::steady_clock::now();

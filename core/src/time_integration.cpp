@@ -20,6 +20,7 @@
 #include "extended_time_path.hpp"
 #include "numeric_format.hpp"
 #include "stepper.hpp"
+#include "time_path_run.hpp"
 #include "fixed_length_vector.hpp"
 
 namespace covopt {
@@ -294,30 +295,273 @@ std::optional<GrazingTurn> GrazingTurnAtSwitch(const ImpactModel& model, std::si
   return turn;
 }
 
-void ValidateOptions(const TimeIntegrationOptions& o) {
-  using internal::FormatNumber;
-  if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
-    throw std::invalid_argument("rtol must be in [1e-14, 1e-2] (got " +
-                                FormatNumber(o.relative_tolerance) + ")");
+
+/// One run of the δ-only path: the state (δ, δ', e), the series openings and closings of the
+/// phases, the grazing turns, and the events (switches both ways, the turn, separation).
+class ConservativeRun final : public internal::TimePathRun {
+ public:
+  ConservativeRun(const ImpactModel& model, const TimeIntegrationOptions& options,
+                  internal::Stepper& stepper, internal::RunState& run, N_Vector state,
+                  N_Vector absolute_tolerances, N_Vector dense_output, const std::string& log)
+      : TimePathRun(model, options, stepper, state, dense_output, log),
+        run_(run),
+        absolute_tolerances_(absolute_tolerances),
+        v0_(model.impact_speed_m_per_s()),
+        // The bodies' speeds from momentum: m_r v_r + m_b v_b = m_r v0 with v_r - v_b = δ'
+        // gives v_b = (m / m_b)(v0 - δ') (0 for a fixed head; v0 - δ' for a fixed robot).
+        head_speed_per_closing_(model.effective_mass_kg() / model.scene().head.mass_kg) {
+    run_.model = &model;
+    run_.segment = options.restart_at_phase_switches ? 0 : internal::kWholeLaw;
+    run_.inverse_mass = 1.0 / model.effective_mass_kg();
+    run_.closing_m = {};
+    SetScales();
+    y_[0] = 0.0;
+    y_[1] = v0_;
+    y_[2] = 0.0;
   }
-  if (!(o.absolute_tolerance == 0.0 ||
-        (o.absolute_tolerance > 0.0 && o.absolute_tolerance <= 1e-2))) {
-    throw std::invalid_argument("atol must be in (0, 1e-2], or 0 for atol = rtol (got " +
-                                FormatNumber(o.absolute_tolerance) + ")");
+  ~ConservativeRun() override { run_.model = nullptr; }
+
+ private:
+  /// Natural scales: L from phase 1 alone (an upper estimate of δ_max), v0, and the energy
+  /// density phase 1 would reach at L. The absolute tolerances are relative to them.
+  void SetScales() {
+    const ForceLawSegment& first = model_.segment(0);
+    const double p1 = first.exponent + 1.0;
+    const double length_scale = std::pow(p1 * model_.impact_energy_J() / first.stiffness, 1.0 / p1);
+    const double energy_density_scale = 3.0 / (2.0 * std::numbers::pi) * first.stiffness *
+                                        first.curvature_per_m * std::pow(length_scale, first.exponent) /
+                                        first.exponent;
+    const double time_scale = length_scale / v0_;
+    const double atol =
+        options_.absolute_tolerance > 0.0 ? options_.absolute_tolerance : options_.relative_tolerance;
+    tolerance_ = N_VGetArrayPointer(absolute_tolerances_);
+    tolerance_[0] = atol * length_scale;
+    tolerance_[1] = atol * v0_;
+    tolerance_[2] = atol * energy_density_scale;
+    horizon_s_ = 1e3 * time_scale;  // only orients CVODE's first step (one-step mode)
   }
-  if (!(o.history_max_interval_s >= 0.0 && std::isfinite(o.history_max_interval_s))) {
-    throw std::invalid_argument("history_max_interval_s must be >= 0 s (got " +
-                                FormatNumber(o.history_max_interval_s) + ")");
+
+  HistorySample Sample(double time, const sunrealtype* state) const override {
+    const ContactState contact = model_.StateAt(state[0]);
+    const double head_speed = head_speed_per_closing_ * (v0_ - state[1]);
+    return {time, state[0], state[1], contact.force_N, contact.compressive_stress_Pa, state[2],
+            head_speed + state[1], head_speed};
   }
-  if (o.max_steps < 10) {
-    throw std::invalid_argument("max_steps must be >= 10 (got " + std::to_string(o.max_steps) +
-                                ")");
+
+  /// The local δ tolerance of the integrator at the current state [m].
+  double PenetrationTolerance() const { return tolerance_[0] + options_.relative_tolerance * std::abs(y_[0]); }
+
+  int Begin() override {
+    int flag = Restart(true);
+    if (flag == internal::kStepTaken) {
+      flag = stepper_.SetTolerances(options_.relative_tolerance, absolute_tolerances_);
+    }
+    return flag;
   }
-  if (o.method == ComputationMethod::kExact || ToString(o.method) == "unknown") {
-    throw std::invalid_argument("method must be a time-integration method (got " +
-                                std::string(ToString(o.method)) + ")");
+
+  /// An upward entry at x = 0 of the current phase's law: takes the phase's series opening
+  /// (sampled for the history), moves (t, y) to its end and returns the integrator's first
+  /// step after it, a tenth of it; 0 where no opening is taken.
+  double TakeOpening() {
+    const std::size_t j = static_cast<std::size_t>(run_.segment);
+    const ForceLawSegment& seg = model_.segment(j);
+    if (seg.origin_m != seg.start_m) return 0.0;
+    const double tol_v = tolerance_[1] + options_.relative_tolerance * std::abs(y_[1]);
+    const PhaseOpening opening = OpenPhase(seg, y_[1], run_.inverse_mass, PenetrationTolerance(), tol_v);
+    if (!(opening.duration_s > 0.0)) return 0.0;
+    const double t_start = t_;
+    auto set_state = [&](double tau) {
+      const auto [x, rate] = opening.At(tau);
+      y_[0] = seg.start_m + x;
+      y_[1] = rate;
+      y_[2] = model_.StateInSegment(j, y_[0]).energy_density_J_per_m2;
+    };
+    if (options_.record_history) {  // the opening, sampled
+      internal::ForEachFillPoint(opening.duration_s, options_.history_max_interval_s, [&](double tau) {
+        set_state(tau);
+        PushSample(t_start + tau, y_);
+      });
+    }
+    set_state(opening.duration_s);
+    // Unloading, the phase ends where its opening did (ClosePhase).
+    run_.closing_m[j] = y_[0] - seg.start_m;
+    t_ = t_start + opening.duration_s;
+    Record(t_, false);
+    return 0.1 * opening.duration_s;
   }
-}
+
+  /// Re-initialise at a phase switch. An upward entry (x = 0 of the new phase's law) first
+  /// takes the phase's series opening; the integrator starts after it with a step a tenth of
+  /// it. A downward entry at the end of a segment meets the same smooth law as the loading
+  /// did there (the motion is time-reversible), so it starts with the step that crossed that
+  /// end rather than the integrator's cautious estimate (about 1000 times smaller).
+  int Restart(bool upward, bool reentry_at_end = true) {
+    double first_step = 0.0;  // 0: the integrator estimates
+    if (!upward && reentry_at_end && run_.segment != internal::kWholeLaw) {
+      first_step = stepper_.ReentryStep(loading_step_at_end_[static_cast<std::size_t>(run_.segment)]);
+    }
+    if (upward && run_.segment != internal::kWholeLaw && y_[1] > 0.0) {
+      const double opening_step = TakeOpening();
+      if (opening_step > 0.0) first_step = opening_step;
+    }
+    int flag = run_started_ ? stepper_.ReInit(t_, state_) : stepper_.BeginRun(t_, state_);
+    run_started_ = true;
+    if (flag == internal::kStepTaken) flag = stepper_.SetInitStep(first_step);
+    return flag;
+  }
+
+  /// Records a sample of the grazing turn's series in time order: one that would not come
+  /// after the last sample (the excursion shorter than the rounding of t) replaces it if it is
+  /// the turn (`replaces`), and is left out otherwise.
+  void PushInOrder(double time, const sunrealtype* state, bool replaces) {
+    if (result_.history.empty() || time > result_.history.back().time_s) {
+      PushSample(time, state);
+    } else if (replaces) {
+      const double kept = result_.history.back().time_s;
+      result_.history.pop_back();
+      PushSample(kept, state);
+    }
+  }
+
+  /// A grazing turn (GrazingTurnAtSwitch) at (t, y): the history gets the excursion from its
+  /// series (sampled to the requested spacing) and the turn; y and t move to the return to
+  /// the switch.
+  void TakeGrazingTurn(const GrazingTurn& turn) {
+    const double t_switch = t_;
+    const double duration = 2.0 * turn.time_to_turn_s;  // <= 0: the turn was at the root
+    const double v = y_[1];
+    if (options_.record_history) {
+      const double delta_switch = y_[0];
+      const double e_switch = y_[2];
+      std::array<sunrealtype, 3> state{};
+      auto at = [&](double tau) {
+        const double rise = (v - 0.5 * turn.deceleration_m_per_s2 * tau) * tau;
+        state = {delta_switch + rise, v - turn.deceleration_m_per_s2 * tau,
+                 e_switch + turn.compressive_stress_Pa * rise};
+        return state.data();
+      };
+      bool turn_recorded = false;
+      auto record_turn = [&] {
+        state = {turn.max_penetration_m, 0.0, turn.max_energy_density_J_per_m2};
+        PushInOrder(t_switch + std::max(turn.time_to_turn_s, 0.0), state.data(), true);
+        turn_recorded = true;
+      };
+      internal::ForEachFillPoint(duration, options_.history_max_interval_s, [&](double tau) {
+        if (!turn_recorded && tau >= turn.time_to_turn_s) record_turn();
+        if (tau != turn.time_to_turn_s) PushInOrder(t_switch + tau, at(tau), false);
+      });
+      if (!turn_recorded) record_turn();
+    }
+    if (duration > 0.0) {
+      y_[1] = -v;  // y[0] and y[2] are back at their values at the switch
+      t_ = t_switch + duration;
+      if (options_.record_history) PushInOrder(t_, y_, false);
+    }
+  }
+
+  /// Loading reaches the end of the current segment: a grazing turn, or the next segment.
+  int OnUpperSwitch() {
+    const std::size_t j = static_cast<std::size_t>(run_.segment);
+    loading_step_at_end_[j] = stepper_.LastStep();
+    const double tol_x = PenetrationTolerance();
+    CountRestart();  // either way the run restarts here
+    if (const std::optional<GrazingTurn> turn = GrazingTurnAtSwitch(model_, j, y_, run_.inverse_mass, tol_x)) {
+      turned_ = true;
+      result_.peaks = PeaksAtMaxPenetration(model_, turn->segment, turn->max_penetration_m);
+      result_.peaks.max_energy_density_J_per_m2 = turn->max_energy_density_J_per_m2;
+      result_.time_of_max_compression_s = t_ + turn->time_to_turn_s;
+      TakeGrazingTurn(*turn);
+      // Back at the switch (v > 0: after the excursion, with speed -v; v <= 0: already
+      // there): unloading goes on in this segment, as it would after a turn below the switch.
+      return Restart(false);
+    }
+    ++run_.segment;
+    return Restart(true);
+  }
+
+  /// Maximum compression. F and σ: the largest over the loading branch (the law at δ_max and
+  /// at the switches passed), as on the exact path; e as integrated. The law is smooth here:
+  /// no restart.
+  void OnTurn() {
+    turned_ = true;
+    result_.peaks = PeaksAtMaxPenetration(model_, model_.SegmentIndexAt(y_[0]), y_[0]);
+    result_.peaks.max_energy_density_J_per_m2 = y_[2];
+    result_.time_of_max_compression_s = t_;
+  }
+
+  /// The phase's series closing from its closing point down to x = 0 (sampled for the
+  /// history); false where none was found (then integrate down to the start).
+  bool TakeClosing() {
+    const std::size_t j = static_cast<std::size_t>(run_.segment);
+    const ForceLawSegment& seg = model_.segment(j);
+    const PhaseClosing closing = ClosePhase(seg, y_[0] - seg.start_m, y_[1], run_.inverse_mass);
+    run_.closing_m[j] = 0.0;  // the phase's own start from here on
+    if (!(closing.duration_s > 0.0)) return false;
+    const double t_close = t_;
+    auto set_state = [&](double before_exit) {
+      const auto [x, rate] = closing.series.At(before_exit);
+      y_[0] = seg.start_m + x;
+      y_[1] = -rate;
+      y_[2] = model_.StateInSegment(j, y_[0]).energy_density_J_per_m2;
+    };
+    if (options_.record_history) {  // the closing, sampled
+      internal::ForEachFillPoint(closing.duration_s, options_.history_max_interval_s, [&](double tau) {
+        set_state(closing.duration_s - tau);
+        PushSample(t_close + tau, y_);
+      });
+    }
+    set_state(0.0);
+    t_ = t_close + closing.duration_s;
+    Record(t_, false);
+    return true;
+  }
+
+  /// Unloading reaches the start of the current segment (or its closing point): the segment
+  /// below, or separation.
+  int OnLowerSwitch() {
+    if (run_.segment != internal::kWholeLaw && run_.closing_m[static_cast<std::size_t>(run_.segment)] > 0.0 &&
+        !TakeClosing()) {
+      CountRestart();
+      return Restart(false, false);
+    }
+    if (run_.segment == 0 || run_.segment == internal::kWholeLaw) {
+      Separate(v0_);
+      return internal::kRootFound;
+    }
+    --run_.segment;
+    CountRestart();
+    return Restart(false);
+  }
+
+  int OnRoot(const std::array<int, internal::kMaxRootCount>& found) override {
+    // The upper switch first, so that a turn found together with the switch (both within the
+    // root finder's tolerance) is the grazing turn.
+    if (found[internal::kRootUpperSwitch] && !turned_) return OnUpperSwitch();
+    if (found[internal::kRootTurn] && !turned_) {
+      OnTurn();
+      return internal::kRootFound;
+    }
+    if (found[internal::kRootLowerSwitch] && turned_) return OnLowerSwitch();
+    return internal::kRootFound;
+  }
+
+  void Finish() override {
+    // Energy is conserved by the model, so its loss measures the error.
+    const double energy = model_.StateAt(result_.peaks.max_penetration_m).potential_energy_J;
+    const double residual = std::max(std::abs(energy / model_.impact_energy_J() - 1.0),
+                                     std::abs(*result_.rebound_speed_m_per_s / v0_ - 1.0));
+    FinishChecks(residual, "energy residual", "; the exact path is the reference for peaks");
+  }
+
+  internal::RunState& run_;
+  N_Vector absolute_tolerances_;
+  sunrealtype* tolerance_ = nullptr;
+  const double v0_;
+  const double head_speed_per_closing_;
+  /// Per segment, the step that crossed its end on the way up (Restart).
+  std::array<double, 3> loading_step_at_end_{};
+  bool run_started_ = false;  // the first start is a new run (Stepper::BeginRun), then restarts
+};
 
 }  // namespace
 
@@ -369,6 +613,38 @@ struct TimeIntegrator::Workspace {
   }
 };
 
+void ValidateTimeIntegrationOptions(const TimeIntegrationOptions& o, std::string_view prefix) {
+  using internal::FormatNumber;
+  const std::string field(prefix);
+  if (o.method == ComputationMethod::kExact || ToString(o.method) == "unknown") {
+    std::string names;
+    for (const ComputationMethod method : TimeIntegrationMethods()) {
+      names += (names.empty() ? "" : ", ") + std::string(ToString(method));
+    }
+    throw std::invalid_argument(field + "method must be a time integrator (" + names + ") (got " +
+                                std::string(ToString(o.method)) + ")");
+  }
+  if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
+    throw std::invalid_argument(field + "relative_tolerance must be in [1e-14, 1e-2] (got " +
+                                FormatNumber(o.relative_tolerance) + ")");
+  }
+  if (!(o.absolute_tolerance == 0.0 ||
+        (o.absolute_tolerance > 0.0 && o.absolute_tolerance <= 1e-2))) {
+    throw std::invalid_argument(field +
+                                "absolute_tolerance must be in (0, 1e-2], or 0 for the relative "
+                                "tolerance (got " +
+                                FormatNumber(o.absolute_tolerance) + ")");
+  }
+  if (!(o.history_max_interval_s >= 0.0 && std::isfinite(o.history_max_interval_s))) {
+    throw std::invalid_argument(field + "history_max_interval_s must be finite and >= 0 s (got " +
+                                FormatNumber(o.history_max_interval_s) + ")");
+  }
+  if (o.max_steps < 10) {
+    throw std::invalid_argument(field + "max_steps must be >= 10 (got " +
+                                std::to_string(o.max_steps) + ")");
+  }
+}
+
 TimeIntegrator::TimeIntegrator() : workspace_(std::make_unique<Workspace>()) {}
 TimeIntegrator::~TimeIntegrator() = default;
 TimeIntegrator::TimeIntegrator(TimeIntegrator&&) noexcept = default;
@@ -376,320 +652,16 @@ TimeIntegrator& TimeIntegrator::operator=(TimeIntegrator&&) noexcept = default;
 
 ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
                                       const TimeIntegrationOptions& options) {
-  ValidateOptions(options);
+  ValidateTimeIntegrationOptions(options);
   Workspace& ws = *workspace_;
   if (options.force_extended_dynamics || !model.scene().is_conservative_two_mass()) {
     if (!ws.extended) ws.extended = std::make_unique<internal::ExtendedTimePath>(ws.context);
     return ws.extended->Simulate(model, options);
   }
   ws.log.clear();
-  internal::Stepper& stepper = ws.StepperFor(options.method);
-
-  ImpactResult result;
-  result.method = options.method;
-  internal::RunState& run = ws.run;
-  run.model = &model;
-  run.segment = options.restart_at_phase_switches ? 0 : internal::kWholeLaw;
-  run.inverse_mass = 1.0 / model.effective_mass_kg();
-  run.closing_m = {};
-
-  // Natural scales: L from phase 1 alone (an upper estimate of δ_max), v0, and the energy
-  // density phase 1 would reach at L. The absolute tolerances are relative to them.
-  const ForceLawSegment& first = model.segment(0);
-  const double v0 = model.impact_speed_m_per_s();
-  const double p1 = first.exponent + 1.0;
-  const double length_scale = std::pow(p1 * model.impact_energy_J() / first.stiffness, 1.0 / p1);
-  const double energy_density_scale = 3.0 / (2.0 * std::numbers::pi) * first.stiffness *
-                                      first.curvature_per_m * std::pow(length_scale, first.exponent) /
-                                      first.exponent;
-  const double time_scale = length_scale / v0;
-  const double atol =
-      options.absolute_tolerance > 0.0 ? options.absolute_tolerance : options.relative_tolerance;
-  sunrealtype* tolerance = N_VGetArrayPointer(ws.absolute_tolerances);
-  tolerance[0] = atol * length_scale;
-  tolerance[1] = atol * v0;
-  tolerance[2] = atol * energy_density_scale;
-
-  sunrealtype* y = N_VGetArrayPointer(ws.state);
-  y[0] = 0.0;
-  y[1] = v0;
-  y[2] = 0.0;
-  double t = 0.0;
-
-  // The bodies' speeds from momentum: m_r v_r + m_b v_b = m_r v0 with v_r - v_b = δ' gives
-  // v_b = (m / m_b)(v0 - δ') (0 for a fixed head; v0 - δ' for a fixed robot).
-  const double head_speed_per_closing = model.effective_mass_kg() / model.scene().head.mass_kg;
-  auto push_sample = [&](double time, const sunrealtype* state) {
-    const ContactState contact = model.StateAt(state[0]);
-    const double head_speed = head_speed_per_closing * (v0 - state[1]);
-    result.history.push_back({time, state[0], state[1], contact.force_N,
-                              contact.compressive_stress_Pa, state[2], head_speed + state[1],
-                              head_speed});
-  };
-  // Records y at `time`; after a CVODE step (`interpolate`), first fills the gap since the
-  // last sample with dense output, which is valid inside the step just taken.
-  auto record = [&](double time, bool interpolate = false) {
-    if (!options.record_history) return;
-    const double interval = options.history_max_interval_s;
-    if (interpolate && interval > 0.0 && !result.history.empty()) {
-      const double last = result.history.back().time_s;
-      const int gaps = static_cast<int>(std::ceil((time - last) / interval));
-      for (int k = 1; k < gaps; ++k) {
-        const double tk = last + (time - last) * k / gaps;
-        if (stepper.Interpolate(tk, ws.dense_output) == internal::kStepTaken) {
-          push_sample(tk, N_VGetArrayPointer(ws.dense_output));
-        }
-      }
-    }
-    push_sample(time, y);
-  };
-  // Re-initialise at a phase switch. An upward entry (x = 0 of the new phase's law) first
-  // takes the phase's series opening; CVODE starts after it with a step a tenth of it.
-  // Per segment, the step that crossed its end on the way up: a downward entry there meets
-  // the same smooth law (the motion is time-reversible), so it starts with that step rather
-  // than the integrator's cautious estimate (about 1000 times smaller).
-  std::array<double, 3> loading_step_at_end{};
-  bool run_started = false;  // the first start is a new run (Stepper::BeginRun), then restarts
-  auto restart = [&](bool upward, bool reentry_at_end = true) {
-    double first_step = 0.0;  // 0: the integrator estimates
-    if (!upward && reentry_at_end && run.segment != internal::kWholeLaw) {
-      first_step = stepper.ReentryStep(loading_step_at_end[static_cast<std::size_t>(run.segment)]);
-    }
-    if (upward && run.segment != internal::kWholeLaw && y[1] > 0.0) {
-      const std::size_t j = static_cast<std::size_t>(run.segment);
-      const ForceLawSegment& seg = model.segment(j);
-      if (seg.origin_m == seg.start_m) {
-        const double tol_x = tolerance[0] + options.relative_tolerance * std::abs(y[0]);
-        const double tol_v = tolerance[1] + options.relative_tolerance * std::abs(y[1]);
-        const PhaseOpening opening = OpenPhase(seg, y[1], run.inverse_mass, tol_x, tol_v);
-        if (opening.duration_s > 0.0) {
-          const double t_start = t;
-          auto set_state = [&](double tau) {
-            const auto [x, rate] = opening.At(tau);
-            y[0] = seg.start_m + x;
-            y[1] = rate;
-            y[2] = model.StateInSegment(j, y[0]).energy_density_J_per_m2;
-          };
-          const double interval = options.history_max_interval_s;
-          if (options.record_history && interval > 0.0) {  // the opening, sampled
-            const int gaps = static_cast<int>(std::ceil(opening.duration_s / interval));
-            for (int k = 1; k < gaps; ++k) {
-              const double tau = opening.duration_s * k / gaps;
-              set_state(tau);
-              push_sample(t_start + tau, y);
-            }
-          }
-          set_state(opening.duration_s);
-          // Unloading, the phase ends where its opening did (ClosePhase).
-          run.closing_m[j] = y[0] - seg.start_m;
-          t = t_start + opening.duration_s;
-          first_step = 0.1 * opening.duration_s;
-          record(t);
-        }
-      }
-    }
-    int flag = run_started ? stepper.ReInit(t, ws.state) : stepper.BeginRun(t, ws.state);
-    run_started = true;
-    if (flag == internal::kStepTaken) flag = stepper.SetInitStep(first_step);
-    return flag;
-  };
-  // A grazing turn (GrazingTurnAtSwitch) at (t, y): the history gets the excursion from its
-  // series (sampled to the requested spacing) and the turn; y and t move to the return to the
-  // switch. A sample that would not come after the last one (the excursion shorter than the
-  // rounding of t) replaces it if it is the turn, and is left out otherwise.
-  auto take_grazing_turn = [&](const GrazingTurn& turn) {
-    const double t_switch = t;
-    const double duration = 2.0 * turn.time_to_turn_s;  // <= 0: the turn was at the root
-    const double v = y[1];
-    const double delta_switch = y[0];
-    const double e_switch = y[2];
-    const double deceleration = turn.deceleration_m_per_s2;
-    auto push_in_order = [&](double time, const sunrealtype* state, bool replaces) {
-      if (result.history.empty() || time > result.history.back().time_s) {
-        push_sample(time, state);
-      } else if (replaces) {
-        const double kept = result.history.back().time_s;
-        result.history.pop_back();
-        push_sample(kept, state);
-      }
-    };
-    if (options.record_history) {
-      std::array<sunrealtype, 3> state{};
-      auto at = [&](double tau) {
-        const double rise = (v - 0.5 * deceleration * tau) * tau;
-        state = {delta_switch + rise, v - deceleration * tau,
-                 e_switch + turn.compressive_stress_Pa * rise};
-        return state.data();
-      };
-      bool turn_recorded = false;
-      auto record_turn = [&] {
-        state = {turn.max_penetration_m, 0.0, turn.max_energy_density_J_per_m2};
-        push_in_order(t_switch + std::max(turn.time_to_turn_s, 0.0), state.data(), true);
-        turn_recorded = true;
-      };
-      const double interval = options.history_max_interval_s;
-      const int gaps =
-          interval > 0.0 && duration > 0.0 ? static_cast<int>(std::ceil(duration / interval)) : 1;
-      for (int k = 1; k < gaps; ++k) {  // the excursion, sampled
-        const double tau = duration * k / gaps;
-        if (!turn_recorded && tau >= turn.time_to_turn_s) record_turn();
-        if (tau != turn.time_to_turn_s) push_in_order(t_switch + tau, at(tau), false);
-      }
-      if (!turn_recorded) record_turn();
-    }
-    if (duration > 0.0) {
-      y[1] = -v;  // y[0] and y[2] are back at their values at the switch
-      t = t_switch + duration;
-      if (options.record_history) push_in_order(t, y, false);
-    }
-  };
-  auto fail = [&](SolveStatus status, int code, const std::string& what) {
-    result.status = status;
-    result.raw_code = code;
-    result.message = what;
-    if (!ws.log.empty()) result.message += " (SUNDIALS: " + ws.log + ")";
-  };
-
-  record(0.0);
-  int flag = restart(true);
-  if (flag == internal::kStepTaken) {
-    flag = stepper.SetTolerances(options.relative_tolerance, ws.absolute_tolerances);
-  }
-  bool at_max = false;
-  bool separated = false;
-  long steps_taken = 0;
-  const double horizon = 1e3 * time_scale;  // only orients CVODE's first step (one-step mode)
-
-  while (flag >= 0 && !separated) {
-    flag = stepper.Step(t + horizon, ws.state, &t);
-    if (flag == internal::kStepTaken) {
-      record(t, true);
-      if (++steps_taken >= options.max_steps) break;
-      continue;
-    }
-    if (flag != internal::kRootFound) break;
-    int found[internal::kRootCount] = {0, 0, 0};
-    stepper.RootInfo(found);
-    record(t, true);
-    // First, so that a turn found together with the switch (both within the root finder's
-    // tolerance) is the grazing turn.
-    if (found[internal::kRootUpperSwitch] && !at_max) {
-      const std::size_t j = static_cast<std::size_t>(run.segment);
-      loading_step_at_end[j] = stepper.LastStep();
-      const double tol_x = tolerance[0] + options.relative_tolerance * std::abs(y[0]);
-      stepper.AddStatistics(result.statistics);  // either way the run restarts here
-      ++result.statistics.restarts;
-      if (const std::optional<GrazingTurn> turn =
-              GrazingTurnAtSwitch(model, j, y, run.inverse_mass, tol_x)) {
-        at_max = true;
-        result.peaks = PeaksAtMaxPenetration(model, turn->segment, turn->max_penetration_m);
-        result.peaks.max_energy_density_J_per_m2 = turn->max_energy_density_J_per_m2;
-        result.time_of_max_compression_s = t + turn->time_to_turn_s;
-        take_grazing_turn(*turn);
-        // Back at the switch (v > 0: after the excursion, with speed -v; v <= 0: already
-        // there): unloading goes on in this segment, as it would after a turn below the switch.
-        flag = restart(false);
-        continue;
-      }
-      ++run.segment;
-      flag = restart(true);
-      continue;
-    }
-    if (found[internal::kRootTurn] && !at_max) {
-      at_max = true;
-      // F and σ: the largest over the loading branch (the law at δ_max and at the switches
-      // passed), as on the exact path; e as integrated.
-      result.peaks = PeaksAtMaxPenetration(model, model.SegmentIndexAt(y[0]), y[0]);
-      result.peaks.max_energy_density_J_per_m2 = y[2];
-      result.time_of_max_compression_s = t;
-      continue;  // the law is smooth here: no restart
-    }
-    if (found[internal::kRootLowerSwitch] && at_max) {
-      if (run.segment != internal::kWholeLaw && run.closing_m[static_cast<std::size_t>(run.segment)] > 0.0) {
-        const std::size_t j = static_cast<std::size_t>(run.segment);
-        const ForceLawSegment& seg = model.segment(j);
-        const PhaseClosing closing = ClosePhase(seg, y[0] - seg.start_m, y[1], run.inverse_mass);
-        run.closing_m[j] = 0.0;  // the phase's own start from here on
-        if (!(closing.duration_s > 0.0)) {  // no series end: integrate down to the start
-          stepper.AddStatistics(result.statistics);
-          ++result.statistics.restarts;
-          flag = restart(false, false);
-          continue;
-        }
-        const double t_close = t;
-        auto set_state = [&](double before_exit) {
-          const auto [x, rate] = closing.series.At(before_exit);
-          y[0] = seg.start_m + x;
-          y[1] = -rate;
-          y[2] = model.StateInSegment(j, y[0]).energy_density_J_per_m2;
-        };
-        const double interval = options.history_max_interval_s;
-        if (options.record_history && interval > 0.0) {  // the closing, sampled
-          const int gaps = static_cast<int>(std::ceil(closing.duration_s / interval));
-          for (int k = 1; k < gaps; ++k) {
-            const double tau = closing.duration_s * k / gaps;
-            set_state(closing.duration_s - tau);
-            push_sample(t_close + tau, y);
-          }
-        }
-        set_state(0.0);
-        t = t_close + closing.duration_s;
-        record(t);
-      }
-      if (run.segment == 0 || run.segment == internal::kWholeLaw) {
-        separated = true;
-        result.contact_duration_s = t;
-        result.rebound_speed_m_per_s = -y[1];
-        result.coefficient_of_restitution = -y[1] / v0;
-        break;
-      }
-      --run.segment;
-      stepper.AddStatistics(result.statistics);
-      ++result.statistics.restarts;
-      flag = restart(false);
-      continue;
-    }
-  }
-  stepper.AddStatistics(result.statistics);
-
-  if (flag < 0) {
-    fail(flag == internal::kTooMuchWork ? SolveStatus::kStepLimit : SolveStatus::kSolverFailure, flag,
-         std::string(ToString(options.method)) + " returned " + stepper.FlagName(flag));
-  } else if (!separated && steps_taken >= options.max_steps) {
-    fail(SolveStatus::kStepLimit, internal::kTooMuchWork,
-         "step limit of " + std::to_string(options.max_steps) + " steps reached before separation");
-  } else if (!separated || !at_max) {
-    fail(SolveStatus::kEventMissed, flag, "the integration ended without locating maximum compression and separation");
-  }
-  if (result.ok()) {
-    for (ValidityWarning& warning : CheckValidity(model, result.peaks)) {
-      result.AddWarning(warning.code, std::move(warning.message));
-    }
-    // The self-check: energy is conserved by the model, so its loss measures the error.
-    const double energy = model.StateAt(result.peaks.max_penetration_m).potential_energy_J;
-    const double residual = std::max(std::abs(energy / model.impact_energy_J() - 1.0),
-                                     std::abs(*result.rebound_speed_m_per_s / v0 - 1.0));
-    result.energy_residual = residual;
-    const double allowed = std::max(100.0 * options.relative_tolerance, 1e-9);
-    if (!(residual <= allowed)) {
-      result.AddWarning(
-          ValidityCode::kToleranceNotKept,
-          "the time path did not keep its tolerance: energy residual " +
-          internal::FormatNumber(residual) + " exceeds max(100 rtol, 1e-9) = " +
-          internal::FormatNumber(allowed) + " (" + std::string(ToString(options.method)) +
-          (options.restart_at_phase_switches ? "" : ", no restart at the phase switches") +
-          "); the exact path is the reference for peaks");
-    }
-    if (!options.restart_at_phase_switches) {
-      result.AddWarning(
-          ValidityCode::kNoRestarts,
-          "integrated straight through the force law's C0 kinks (restart_at_phase_switches "
-          "off): the local error test does not see them, so the error may exceed the "
-          "tolerance (a numerics-study setting)");
-    }
-  }
-  run.model = nullptr;
-  return result;
+  ConservativeRun run(model, options, ws.StepperFor(options.method), ws.run, ws.state,
+                      ws.absolute_tolerances, ws.dense_output, ws.log);
+  return run.Integrate();
 }
 
 ImpactResult SimulateImpact(const ImpactModel& model, const TimeIntegrationOptions& options) {

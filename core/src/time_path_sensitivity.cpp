@@ -15,7 +15,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "numeric_format.hpp"
 #include "sensitivity_internal.hpp"
 
 namespace covopt {
@@ -180,27 +179,17 @@ void Keep(Candidate& best, const Candidate& c) {
 }
 
 void Validate(const ImpactModel& model, const TimeIntegrationOptions& o) {
-  using internal::FormatNumber;
   const Scene& scene = model.scene();
   if (!model.has_covering()) {
     throw std::invalid_argument(
         "design sensitivities need a covering (covering.thickness > 0): b_c -> 0 is a discontinuity of the model");
   }
-  if (scene.robot_brakes() || scene.head.has_neck()) {
+  if (!scene.has_energy_integral()) {
     throw std::invalid_argument(
         "time-path forward sensitivities cover the two-mass contact (conservative or damped); a braking robot "
         "(robot.braking) or a neck (head.torso_mass) is outside that system");
   }
-  if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
-    throw std::invalid_argument("rtol must be in [1e-14, 1e-2] (got " + FormatNumber(o.relative_tolerance) + ")");
-  }
-  if (!(o.absolute_tolerance == 0.0 || (o.absolute_tolerance > 0.0 && o.absolute_tolerance <= 1e-2))) {
-    throw std::invalid_argument("atol must be in (0, 1e-2], or 0 for atol = rtol (got " +
-                                FormatNumber(o.absolute_tolerance) + ")");
-  }
-  if (o.max_steps < 10) {
-    throw std::invalid_argument("max_steps must be >= 10 (got " + std::to_string(o.max_steps) + ")");
-  }
+  ValidateTimeIntegrationOptions(o);
 }
 
 std::string FlagName(int flag) {
@@ -210,121 +199,140 @@ std::string FlagName(int flag) {
   return text + " (" + std::to_string(flag) + ")";
 }
 
-}  // namespace
+/// One forward-sensitivity run along the loading branch: the CVODES setup, the events
+/// (switches with the sensitivities' jump, with damping the interior maxima of F and σ_c, the
+/// turn) and the peaks with their derivatives.
+class SensitivityRun {
+ public:
+  SensitivityRun(const ImpactModel& model, const TimeIntegrationOptions& options)
+      : model_(model), options_(options) {
+    SetUpRun();
+    SetUpState();
+  }
+  SensitivityRun(const SensitivityRun&) = delete;
+  SensitivityRun& operator=(const SensitivityRun&) = delete;
 
-TimePathSensitivities TimePathPeakSensitivities(const ImpactModel& model, const TimeIntegrationOptions& options) {
-  Validate(model, options);
-  const Scene& scene = model.scene();
-  Run run;
-  run.model = &model;
-  run.inverse_mass = 1.0 / model.effective_mass_kg();
-  run.damping_s_per_m = scene.model.damping_s_per_m;
-  const std::array<double, kParameters> parameter = {scene.covering.youngs_modulus_Pa, scene.covering.thickness_m};
-  const std::array<DesignParameter, kParameters> which = {DesignParameter::kCoveringModulus,
-                                                          DesignParameter::kCoveringThickness};
-  for (int i = 0; i < kParameters; ++i) {
-    const auto all = internal::SegmentDerivativesOf(model, which[static_cast<std::size_t>(i)]);
-    for (std::size_t j = 0; j < all.size(); ++j) {
-      run.derivatives[static_cast<std::size_t>(i)][j] = Scaled(all[j], parameter[static_cast<std::size_t>(i)]);
+  TimePathSensitivities Integrate();
+
+ private:
+  /// What the callbacks see, with the segment derivatives per ln θ.
+  void SetUpRun() {
+    const Scene& scene = model_.scene();
+    run_.model = &model_;
+    run_.inverse_mass = 1.0 / model_.effective_mass_kg();
+    run_.damping_s_per_m = scene.model.damping_s_per_m;
+    parameter_ = {scene.covering.youngs_modulus_Pa, scene.covering.thickness_m};
+    const std::array<DesignParameter, kParameters> which = {DesignParameter::kCoveringModulus,
+                                                            DesignParameter::kCoveringThickness};
+    for (int i = 0; i < kParameters; ++i) {
+      const auto all = internal::SegmentDerivativesOf(model_, which[static_cast<std::size_t>(i)]);
+      for (std::size_t j = 0; j < all.size(); ++j) {
+        run_.derivatives[static_cast<std::size_t>(i)][j] = Scaled(all[j], parameter_[static_cast<std::size_t>(i)]);
+      }
     }
   }
 
-  Workspace ws;
-  std::string log;
-  TimePathSensitivities out;
-  auto fail = [&](SolveStatus status, int code, const std::string& what) {
-    out.status = status;
-    out.raw_code = code;
-    out.message = what + (log.empty() ? "" : " (SUNDIALS: " + log + ")");
-    return out;
-  };
-
-  // The time path's natural scales (time_integration.cpp): L from phase 1 alone, v0, and
-  // the energy density phase 1 reaches at L; s = dy/d ln θ has the same scales.
-  const ForceLawSegment& first = model.segment(0);
-  const double v0 = model.impact_speed_m_per_s();
-  const double p1 = first.exponent + 1.0;
-  const double length_scale = std::pow(p1 * model.impact_energy_J() / first.stiffness, 1.0 / p1);
-  const double density_scale = 3.0 / (2.0 * std::numbers::pi) * first.stiffness * first.curvature_per_m *
-                               std::pow(length_scale, first.exponent) / first.exponent;
-  const double rtol = options.relative_tolerance;
-  const double atol = options.absolute_tolerance > 0.0 ? options.absolute_tolerance : rtol;
-  sunrealtype* tolerance = NV_DATA_S(ws.tolerances);
-  tolerance[0] = atol * length_scale;
-  tolerance[1] = atol * v0;
-  tolerance[2] = atol * density_scale;
-  for (int i = 0; i < kParameters; ++i) N_VScale(1.0, ws.tolerances, ws.sensitivity_tolerances[i]);
-
-  sunrealtype* y = NV_DATA_S(ws.state);
-  y[0] = 0.0;
-  y[1] = v0;
-  y[2] = 0.0;
-  for (int i = 0; i < kParameters; ++i) N_VConst(0.0, ws.sensitivities[i]);
-
-  const bool damped = run.damping_s_per_m > 0.0;
-  const int roots = damped ? 4 : 2;
-  ws.cvode = CVodeCreate(CV_ADAMS, ws.context);
-  if (!ws.cvode) throw std::runtime_error("CVodeCreate failed");
-  CVodeSetErrHandlerFn(ws.cvode, CaptureMessage, &log);
-  ws.solver = SUNNonlinSol_FixedPoint(ws.state, 0, ws.context);
-  ws.sensitivity_solver = SUNNonlinSol_FixedPointSens(kParameters, ws.state, 0, ws.context);
-  int flag = CVodeInit(ws.cvode, RightHandSide, 0.0, ws.state);
-  if (flag == CV_SUCCESS) flag = CVodeSetUserData(ws.cvode, &run);
-  if (flag == CV_SUCCESS) flag = CVodeSVtolerances(ws.cvode, rtol, ws.tolerances);
-  if (flag == CV_SUCCESS) flag = CVodeSetNonlinearSolver(ws.cvode, ws.solver);
-  if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(ws.cvode, options.max_steps);
-  if (flag == CV_SUCCESS) flag = CVodeRootInit(ws.cvode, roots, RootFunctions);
-  if (flag == CV_SUCCESS) {
-    int directions[4] = {+1, -1, -1, -1};
-    flag = CVodeSetRootDirection(ws.cvode, directions);
+  /// The time path's natural scales (time_integration.cpp): L from phase 1 alone, v0, and
+  /// the energy density phase 1 reaches at L; s = dy/d ln θ has the same scales. The state
+  /// at first contact, no sensitivity yet.
+  void SetUpState() {
+    const ForceLawSegment& first = model_.segment(0);
+    const double v0 = model_.impact_speed_m_per_s();
+    const double p1 = first.exponent + 1.0;
+    const double length_scale = std::pow(p1 * model_.impact_energy_J() / first.stiffness, 1.0 / p1);
+    const double density_scale = 3.0 / (2.0 * std::numbers::pi) * first.stiffness * first.curvature_per_m *
+                                 std::pow(length_scale, first.exponent) / first.exponent;
+    const double rtol = options_.relative_tolerance;
+    const double atol = options_.absolute_tolerance > 0.0 ? options_.absolute_tolerance : rtol;
+    sunrealtype* tolerance = NV_DATA_S(ws_.tolerances);
+    tolerance[0] = atol * length_scale;
+    tolerance[1] = atol * v0;
+    tolerance[2] = atol * density_scale;
+    for (int i = 0; i < kParameters; ++i) N_VScale(1.0, ws_.tolerances, ws_.sensitivity_tolerances[i]);
+    y_ = NV_DATA_S(ws_.state);
+    y_[0] = 0.0;
+    y_[1] = v0;
+    y_[2] = 0.0;
+    for (int i = 0; i < kParameters; ++i) N_VConst(0.0, ws_.sensitivities[i]);
+    time_scale_s_ = length_scale / v0;
   }
-  if (flag == CV_SUCCESS) flag = CVodeSetNoInactiveRootWarn(ws.cvode);
-  if (flag == CV_SUCCESS) {
-    flag = CVodeSensInit(ws.cvode, kParameters, CV_STAGGERED, SensitivityRightHandSide, ws.sensitivities);
-  }
-  if (flag == CV_SUCCESS) flag = CVodeSensSVtolerances(ws.cvode, rtol, ws.sensitivity_tolerances);
-  if (flag == CV_SUCCESS) flag = CVodeSetSensErrCon(ws.cvode, SUNTRUE);
-  if (flag == CV_SUCCESS) flag = CVodeSetNonlinearSolverSensStg(ws.cvode, ws.sensitivity_solver);
-  if (flag != CV_SUCCESS) return fail(SolveStatus::kSolverFailure, flag, "CVODES setup returned " + FlagName(flag));
 
-  auto add_statistics = [&] {
+  /// CVODES Adams with fixed-point iteration, the sensitivities staggered and in the error
+  /// test; returns the first failing flag (CV_SUCCESS when all went well).
+  int SetUpCvodes() {
+    const int roots = run_.damping_s_per_m > 0.0 ? 4 : 2;
+    const double rtol = options_.relative_tolerance;
+    ws_.cvode = CVodeCreate(CV_ADAMS, ws_.context);
+    if (!ws_.cvode) throw std::runtime_error("CVodeCreate failed");
+    CVodeSetErrHandlerFn(ws_.cvode, CaptureMessage, &log_);
+    ws_.solver = SUNNonlinSol_FixedPoint(ws_.state, 0, ws_.context);
+    ws_.sensitivity_solver = SUNNonlinSol_FixedPointSens(kParameters, ws_.state, 0, ws_.context);
+    int flag = CVodeInit(ws_.cvode, RightHandSide, 0.0, ws_.state);
+    if (flag == CV_SUCCESS) flag = CVodeSetUserData(ws_.cvode, &run_);
+    if (flag == CV_SUCCESS) flag = CVodeSVtolerances(ws_.cvode, rtol, ws_.tolerances);
+    if (flag == CV_SUCCESS) flag = CVodeSetNonlinearSolver(ws_.cvode, ws_.solver);
+    if (flag == CV_SUCCESS) flag = CVodeSetMaxNumSteps(ws_.cvode, options_.max_steps);
+    if (flag == CV_SUCCESS) flag = CVodeRootInit(ws_.cvode, roots, RootFunctions);
+    if (flag == CV_SUCCESS) {
+      int directions[4] = {+1, -1, -1, -1};
+      flag = CVodeSetRootDirection(ws_.cvode, directions);
+    }
+    if (flag == CV_SUCCESS) flag = CVodeSetNoInactiveRootWarn(ws_.cvode);
+    if (flag == CV_SUCCESS) {
+      flag = CVodeSensInit(ws_.cvode, kParameters, CV_STAGGERED, SensitivityRightHandSide, ws_.sensitivities);
+    }
+    if (flag == CV_SUCCESS) flag = CVodeSensSVtolerances(ws_.cvode, rtol, ws_.sensitivity_tolerances);
+    if (flag == CV_SUCCESS) flag = CVodeSetSensErrCon(ws_.cvode, SUNTRUE);
+    if (flag == CV_SUCCESS) flag = CVodeSetNonlinearSolverSensStg(ws_.cvode, ws_.sensitivity_solver);
+    return flag;
+  }
+
+  void AddStatistics() {
     long steps = 0, rhs = 0, sens_rhs = 0, g = 0, fails = 0, iterations = 0, conv = 0;
-    CVodeGetNumSteps(ws.cvode, &steps);
-    CVodeGetNumRhsEvals(ws.cvode, &rhs);
-    CVodeGetSensNumRhsEvals(ws.cvode, &sens_rhs);
-    CVodeGetNumGEvals(ws.cvode, &g);
-    CVodeGetNumErrTestFails(ws.cvode, &fails);
-    CVodeGetNumNonlinSolvIters(ws.cvode, &iterations);
-    CVodeGetNumNonlinSolvConvFails(ws.cvode, &conv);
-    out.statistics.steps += steps;
-    out.statistics.rhs_evaluations += rhs + sens_rhs;
-    out.statistics.root_evaluations += g;
-    out.statistics.error_test_failures += fails;
-    out.statistics.nonlinear_iterations += iterations;
-    out.statistics.convergence_failures += conv;
-  };
+    CVodeGetNumSteps(ws_.cvode, &steps);
+    CVodeGetNumRhsEvals(ws_.cvode, &rhs);
+    CVodeGetSensNumRhsEvals(ws_.cvode, &sens_rhs);
+    CVodeGetNumGEvals(ws_.cvode, &g);
+    CVodeGetNumErrTestFails(ws_.cvode, &fails);
+    CVodeGetNumNonlinSolvIters(ws_.cvode, &iterations);
+    CVodeGetNumNonlinSolvConvFails(ws_.cvode, &conv);
+    out_.statistics.steps += steps;
+    out_.statistics.rhs_evaluations += rhs + sens_rhs;
+    out_.statistics.root_evaluations += g;
+    out_.statistics.error_test_failures += fails;
+    out_.statistics.nonlinear_iterations += iterations;
+    out_.statistics.convergence_failures += conv;
+  }
 
-  const double d = run.damping_s_per_m;
-  // s_e from w (the integrated third entry) at the current state: s_e = w + σ h s_δ.
-  auto energy_sensitivity = [&](int i) {
-    const sunrealtype* s = NV_DATA_S(ws.sensitivities[i]);
-    return s[2] + LawAt(run, y[0]).stress_Pa * (1.0 + d * y[1]) * s[0];
-  };
-  // The value of F (σ) = P_el h at the current state, and its total derivative when the
-  // event's time moves by dτ/dθ = `time_shift[i]`: (∂P/∂θ + P'(s_δ + δ' dτ)) h + P d (s_v + δ'' dτ).
-  auto candidates = [&](const std::array<double, kParameters>& time_shift) {
-    const Law law = LawAt(run, y[0]);
-    const double h = 1.0 + d * y[1];
-    const double acceleration = -law.force_N * h * run.inverse_mass;
-    const double stress_slope = internal::StressSlope(model.segment(run.segment), y[0]);
+  TimePathSensitivities Fail(SolveStatus status, int code, const std::string& what) {
+    out_.status = status;
+    out_.raw_code = code;
+    out_.message = what + (log_.empty() ? "" : " (SUNDIALS: " + log_ + ")");
+    return out_;
+  }
+
+  /// s_e from w (the integrated third entry) at the current state: s_e = w + σ h s_δ.
+  double EnergySensitivity(int i) const {
+    const sunrealtype* s = NV_DATA_S(ws_.sensitivities[i]);
+    return s[2] + LawAt(run_, y_[0]).stress_Pa * (1.0 + run_.damping_s_per_m * y_[1]) * s[0];
+  }
+
+  /// The value of F (σ) = P_el h at the current state, and its total derivative when the
+  /// event's time moves by dτ/dθ = `time_shift[i]`: (∂P/∂θ + P'(s_δ + δ' dτ)) h + P d (s_v + δ'' dτ).
+  std::array<Candidate, 2> Candidates(const std::array<double, kParameters>& time_shift) const {
+    const double d = run_.damping_s_per_m;
+    const Law law = LawAt(run_, y_[0]);
+    const double h = 1.0 + d * y_[1];
+    const double acceleration = -law.force_N * h * run_.inverse_mass;
+    const double stress_slope = internal::StressSlope(model_.segment(run_.segment), y_[0]);
     std::array<Candidate, 2> c;  // force, stress
     c[0].value = law.force_N * h;
     c[1].value = law.stress_Pa * h;
     for (int i = 0; i < kParameters; ++i) {
-      const sunrealtype* s = NV_DATA_S(ws.sensitivities[i]);
-      const Partials p = PartialsOf(run, i, y[0]);
+      const sunrealtype* s = NV_DATA_S(ws_.sensitivities[i]);
+      const Partials p = PartialsOf(run_, i, y_[0]);
       const double dt = time_shift[static_cast<std::size_t>(i)];
-      const double penetration = s[0] + y[1] * dt, rate = s[1] + acceleration * dt;
+      const double penetration = s[0] + y_[1] * dt, rate = s[1] + acceleration * dt;
       c[0].derivative[static_cast<std::size_t>(i)] =
           (p.force + law.stiffness_N_per_m * penetration) * h + law.force_N * d * rate;
       // σ' is unbounded at a phase start (x^(n-2)); there the penetration's motion is 0
@@ -333,105 +341,138 @@ TimePathSensitivities TimePathPeakSensitivities(const ImpactModel& model, const 
       c[1].derivative[static_cast<std::size_t>(i)] = (p.stress + slope_term) * h + law.stress_Pa * d * rate;
     }
     return c;
-  };
+  }
 
-  Candidate force_max, stress_max;
-  double t = 0.0;
-  const double time_scale = length_scale / v0;
-  const double horizon = 1e4 * time_scale;
-  bool turned = false;
-  while (!turned) {
-    flag = CVode(ws.cvode, horizon, ws.state, &t, CV_NORMAL);
+  /// Maximum compression: dτ/dθ = -s_v / δ'' at δ' = 0.
+  void OnTurn() {
+    const Law law = LawAt(run_, y_[0]);
+    const double acceleration = -law.force_N * run_.inverse_mass;
+    std::array<double, kParameters> shift{};
+    for (int i = 0; i < kParameters; ++i) {
+      shift[static_cast<std::size_t>(i)] = -NV_DATA_S(ws_.sensitivities[i])[1] / acceleration;
+    }
+    const auto c = Candidates(shift);
+    Keep(force_max_, c[0]);
+    Keep(stress_max_, c[1]);
+  }
+
+  /// A switch upward: dτ/dθ = -(s_δ - dt_j/dθ)/δ'; the left values are candidates, then the
+  /// jump s⁺ = s⁻ + (f⁻ - f⁺) dτ/dθ and w re-expressed with the next segment's σ. Returns
+  /// the restart's flag.
+  int OnSwitch() {
+    const double d = run_.damping_s_per_m;
+    const std::size_t j = run_.segment;
+    std::array<double, kParameters> shift{};
+    std::array<double, kParameters> energy{};
+    for (int i = 0; i < kParameters; ++i) {
+      const double moving_end = run_.derivatives[static_cast<std::size_t>(i)][j + 1].start;
+      shift[static_cast<std::size_t>(i)] = -(NV_DATA_S(ws_.sensitivities[i])[0] - moving_end) / y_[1];
+      energy[static_cast<std::size_t>(i)] = EnergySensitivity(i);
+    }
+    const auto c = Candidates(shift);
+    Keep(force_max_, c[0]);
+    Keep(stress_max_, c[1]);
+    const double h = 1.0 + d * y_[1];
+    const Law before = LawAt(run_, y_[0]);
+    ++run_.segment;
+    const Law after = LawAt(run_, y_[0]);
+    const double force_jump = -(before.force_N - after.force_N) * h * run_.inverse_mass;
+    const double density_jump = (before.stress_Pa - after.stress_Pa) * h * y_[1];
+    for (int i = 0; i < kParameters; ++i) {
+      sunrealtype* s = NV_DATA_S(ws_.sensitivities[i]);
+      const double dt = shift[static_cast<std::size_t>(i)];
+      s[1] += force_jump * dt;
+      const double s_e = energy[static_cast<std::size_t>(i)] + density_jump * dt;
+      s[2] = s_e - after.stress_Pa * h * s[0];
+    }
+    AddStatistics();
+    ++out_.statistics.restarts;
+    int flag = CVodeReInit(ws_.cvode, t_, ws_.state);
+    if (flag == CV_SUCCESS) flag = CVodeSensReInit(ws_.cvode, CV_STAGGERED, ws_.sensitivities);
+    return flag;
+  }
+
+  /// The peaks at maximum compression and their derivatives per E_c and b_c.
+  void SetPeaks() {
+    out_.peaks = PeaksAtMaxPenetration(model_, run_.segment, y_[0]);
+    out_.peaks.peak_force_N = force_max_.value;
+    out_.peaks.max_compressive_stress_Pa = stress_max_.value;
+    out_.peaks.max_tensile_stress_Pa = model_.TensileFromCompressive(stress_max_.value);
+    out_.peaks.max_energy_density_J_per_m2 = y_[2];
+    std::array<PeakDerivatives*, kParameters> per = {&out_.sensitivities.per_covering_modulus,
+                                                     &out_.sensitivities.per_covering_thickness};
+    for (int i = 0; i < kParameters; ++i) {
+      const std::size_t k = static_cast<std::size_t>(i);
+      const double to_parameter = 1.0 / parameter_[k];  // d/dθ = (1/θ) d/d ln θ
+      PeakDerivatives& p = *per[k];
+      p.max_penetration = NV_DATA_S(ws_.sensitivities[i])[0] * to_parameter;
+      p.peak_force = force_max_.derivative[k] * to_parameter;
+      p.max_compressive_stress = stress_max_.derivative[k] * to_parameter;
+      p.max_tensile_stress = model_.TensileFromCompressive(p.max_compressive_stress);
+      p.max_energy_density = EnergySensitivity(i) * to_parameter;
+    }
+  }
+
+  const ImpactModel& model_;
+  const TimeIntegrationOptions& options_;
+  std::array<double, kParameters> parameter_{};
+  Run run_;
+  std::string log_;  // CVODES' messages; outlives the workspace
+  Workspace ws_;
+  TimePathSensitivities out_;
+  sunrealtype* y_ = nullptr;
+  double t_ = 0.0;
+  double time_scale_s_ = 0.0;
+  Candidate force_max_, stress_max_;
+};
+
+TimePathSensitivities SensitivityRun::Integrate() {
+  int flag = SetUpCvodes();
+  if (flag != CV_SUCCESS) return Fail(SolveStatus::kSolverFailure, flag, "CVODES setup returned " + FlagName(flag));
+  const double horizon = 1e4 * time_scale_s_;
+  while (true) {
+    flag = CVode(ws_.cvode, horizon, ws_.state, &t_, CV_NORMAL);
     if (flag < 0) {
-      add_statistics();
-      return fail(flag == CV_TOO_MUCH_WORK ? SolveStatus::kStepLimit : SolveStatus::kSolverFailure, flag,
+      AddStatistics();
+      return Fail(flag == CV_TOO_MUCH_WORK ? SolveStatus::kStepLimit : SolveStatus::kSolverFailure, flag,
                   "CVODES (forward sensitivities) returned " + FlagName(flag));
     }
     if (flag != CV_ROOT_RETURN) {
-      add_statistics();
-      return fail(SolveStatus::kEventMissed, flag, "the sensitivity integration ended without reaching maximum compression");
+      AddStatistics();
+      return Fail(SolveStatus::kEventMissed, flag, "the sensitivity integration ended without reaching maximum compression");
     }
     int found[4] = {0, 0, 0, 0};
-    CVodeGetRootInfo(ws.cvode, found);
-    if (CVodeGetSens(ws.cvode, &t, ws.sensitivities) != CV_SUCCESS) {
-      add_statistics();
-      return fail(SolveStatus::kSolverFailure, flag, "CVodeGetSens failed");
+    CVodeGetRootInfo(ws_.cvode, found);
+    if (CVodeGetSens(ws_.cvode, &t_, ws_.sensitivities) != CV_SUCCESS) {
+      AddStatistics();
+      return Fail(SolveStatus::kSolverFailure, flag, "CVodeGetSens failed");
     }
     if (found[kRootTurn]) {
-      // dτ/dθ = -s_v / δ'' at δ' = 0.
-      const Law law = LawAt(run, y[0]);
-      const double acceleration = -law.force_N * run.inverse_mass;
-      std::array<double, kParameters> shift{};
-      for (int i = 0; i < kParameters; ++i) {
-        shift[static_cast<std::size_t>(i)] = -NV_DATA_S(ws.sensitivities[i])[1] / acceleration;
-      }
-      const auto c = candidates(shift);
-      Keep(force_max, c[0]);
-      Keep(stress_max, c[1]);
-      turned = true;
+      OnTurn();
       break;
     }
     if ((found[kRootForce] || found[kRootStress])) {
-      const auto c = candidates({0.0, 0.0});  // envelope: dP/dt = 0
-      if (found[kRootForce]) Keep(force_max, c[0]);
-      if (found[kRootStress]) Keep(stress_max, c[1]);
+      const auto c = Candidates({0.0, 0.0});  // envelope: dP/dt = 0
+      if (found[kRootForce]) Keep(force_max_, c[0]);
+      if (found[kRootStress]) Keep(stress_max_, c[1]);
       if (!found[kRootSwitch]) continue;  // a smooth point of the law: no restart
     }
     if (found[kRootSwitch]) {
-      // dτ/dθ = -(s_δ - dt_j/dθ)/δ'; the left values are candidates, then the jump
-      // s⁺ = s⁻ + (f⁻ - f⁺) dτ/dθ and w re-expressed with the next segment's σ.
-      const std::size_t j = run.segment;
-      std::array<double, kParameters> shift{};
-      std::array<double, kParameters> energy{};
-      for (int i = 0; i < kParameters; ++i) {
-        const double moving_end = run.derivatives[static_cast<std::size_t>(i)][j + 1].start;
-        shift[static_cast<std::size_t>(i)] = -(NV_DATA_S(ws.sensitivities[i])[0] - moving_end) / y[1];
-        energy[static_cast<std::size_t>(i)] = energy_sensitivity(i);
-      }
-      const auto c = candidates(shift);
-      Keep(force_max, c[0]);
-      Keep(stress_max, c[1]);
-      const double h = 1.0 + d * y[1];
-      const Law before = LawAt(run, y[0]);
-      ++run.segment;
-      const Law after = LawAt(run, y[0]);
-      const double force_jump = -(before.force_N - after.force_N) * h * run.inverse_mass;
-      const double density_jump = (before.stress_Pa - after.stress_Pa) * h * y[1];
-      for (int i = 0; i < kParameters; ++i) {
-        sunrealtype* s = NV_DATA_S(ws.sensitivities[i]);
-        const double dt = shift[static_cast<std::size_t>(i)];
-        s[1] += force_jump * dt;
-        const double s_e = energy[static_cast<std::size_t>(i)] + density_jump * dt;
-        s[2] = s_e - after.stress_Pa * h * s[0];
-      }
-      add_statistics();
-      ++out.statistics.restarts;
-      flag = CVodeReInit(ws.cvode, t, ws.state);
-      if (flag == CV_SUCCESS) flag = CVodeSensReInit(ws.cvode, CV_STAGGERED, ws.sensitivities);
-      if (flag != CV_SUCCESS) return fail(SolveStatus::kSolverFailure, flag, "CVodeReInit returned " + FlagName(flag));
+      flag = OnSwitch();
+      if (flag != CV_SUCCESS) return Fail(SolveStatus::kSolverFailure, flag, "CVodeReInit returned " + FlagName(flag));
     }
   }
-  add_statistics();
+  AddStatistics();
+  SetPeaks();
+  return out_;
+}
 
-  const double delta_max = y[0];
-  out.peaks = PeaksAtMaxPenetration(model, run.segment, delta_max);
-  out.peaks.peak_force_N = force_max.value;
-  out.peaks.max_compressive_stress_Pa = stress_max.value;
-  out.peaks.max_tensile_stress_Pa = model.TensileFromCompressive(stress_max.value);
-  out.peaks.max_energy_density_J_per_m2 = y[2];
-  std::array<PeakDerivatives*, kParameters> per = {&out.sensitivities.per_covering_modulus,
-                                                   &out.sensitivities.per_covering_thickness};
-  for (int i = 0; i < kParameters; ++i) {
-    const std::size_t k = static_cast<std::size_t>(i);
-    const double to_parameter = 1.0 / parameter[k];  // d/dθ = (1/θ) d/d ln θ
-    PeakDerivatives& p = *per[k];
-    p.max_penetration = NV_DATA_S(ws.sensitivities[i])[0] * to_parameter;
-    p.peak_force = force_max.derivative[k] * to_parameter;
-    p.max_compressive_stress = stress_max.derivative[k] * to_parameter;
-    p.max_tensile_stress = model.TensileFromCompressive(p.max_compressive_stress);
-    p.max_energy_density = energy_sensitivity(i) * to_parameter;
-  }
-  return out;
+}  // namespace
+
+TimePathSensitivities TimePathPeakSensitivities(const ImpactModel& model, const TimeIntegrationOptions& options) {
+  Validate(model, options);
+  SensitivityRun run(model, options);
+  return run.Integrate();
 }
 
 }  // namespace covopt

@@ -21,7 +21,7 @@ double ThreadCpuSeconds() {
 }
 
 void Validate(const Scene& scene, const DesignWorkPrecisionOptions& o) {
-  if (!ExactPathAnswers(scene)) {
+  if (!scene.has_energy_integral()) {
     throw std::invalid_argument(
         "the design study needs the exact path's optimum as its reference; this scene has only the time path "
         "(a braking robot, a neck, or contact damping)");

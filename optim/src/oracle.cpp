@@ -26,24 +26,23 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// A design value as typed back to reproduce a failure (17 digits: reads back exactly).
 std::string Exactly(double value) { return FormatSignificant(value, 17); }
 
-/// Why a scene has only the time path ("" when it has an energy integral: the conservative
-/// two-mass impact, or a damped two-mass contact, which keeps an energy relation,
-/// docs/model.md §10.1).
+/// Why a scene has only the time path ("" when it has an energy integral,
+/// Scene::has_energy_integral(): the conservative two-mass impact, or a damped two-mass
+/// contact, which keeps an energy relation, docs/model.md §10.1).
 std::string WhyNoEnergyIntegral(const Scene& scene) {
+  if (scene.has_energy_integral()) return "";
   const bool brakes = scene.robot_brakes(), neck = scene.head.has_neck();
   if (brakes && neck) return "the robot brakes (an external force) and the head hangs on a neck (three bodies)";
   if (brakes) return "the robot brakes (an external force)";
-  if (neck) return "the head hangs on a neck (three bodies)";
-  return "";
+  return "the head hangs on a neck (three bodies)";
 }
 
 /// The gradient a kind of oracle gives on a scene.
 GradientSource GradientFor(OracleKind kind, const Scene& scene) {
-  const bool two_mass = !scene.robot_brakes() && !scene.head.has_neck();
   if (kind == OracleKind::kExact) {
     return scene.is_damped() ? GradientSource::kCentralDifference : GradientSource::kAnalytic;
   }
-  return two_mass ? GradientSource::kForwardSensitivities : GradientSource::kCentralDifference;
+  return scene.has_energy_integral() ? GradientSource::kForwardSensitivities : GradientSource::kCentralDifference;
 }
 
 /// The ratio gradient from peak derivatives (per E_c [1/Pa], per b_c [1/m]).
@@ -233,14 +232,12 @@ std::string_view ToString(GradientSource source) noexcept {
   return "unknown";
 }
 
-bool ExactPathAnswers(const Scene& scene) noexcept { return WhyNoEnergyIntegral(scene).empty(); }
-
 OracleSelection ChooseOracle(const Scene& scene, OracleChoice choice) {
   const std::string why_not = WhyNoEnergyIntegral(scene);
   OracleSelection s;
   switch (choice) {
     case OracleChoice::kAuto:
-      if (why_not.empty()) {
+      if (scene.has_energy_integral()) {
         s.kind = OracleKind::kExact;
         s.reason = scene.is_damped()
                        ? "auto: the damped two-mass contact keeps an energy relation, the exact path answers every peak"
@@ -252,7 +249,7 @@ OracleSelection ChooseOracle(const Scene& scene, OracleChoice choice) {
       }
       break;
     case OracleChoice::kExact:
-      if (!why_not.empty()) {
+      if (!scene.has_energy_integral()) {
         throw std::invalid_argument("oracle exact: the exact path needs an energy integral; " + why_not +
                                     ", so this scene has only the time path; choose auto or time-path");
       }
@@ -272,24 +269,6 @@ std::string OracleReport::Name() const {
   if (kind == OracleKind::kExact) return "exact path";
   return "time path (" + std::string(covopt::ToString(method)) + ", rtol " + FormatScientific(relative_tolerance, 0) +
          ")";
-}
-
-void ValidateTimePathOptions(const TimeIntegrationOptions& o, const std::string& prefix) {
-  if (o.method == ComputationMethod::kExact || covopt::ToString(o.method) == "unknown") {
-    throw std::invalid_argument(prefix + ".method must be a time integrator, not " +
-                                std::string(covopt::ToString(o.method)));
-  }
-  if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
-    throw std::invalid_argument(prefix + ".relative_tolerance must be in [1e-14, 1e-2] (got " +
-                                FormatSignificant(o.relative_tolerance) + ")");
-  }
-  if (!(o.absolute_tolerance == 0.0 || (o.absolute_tolerance > 0.0 && o.absolute_tolerance <= 1e-2))) {
-    throw std::invalid_argument(prefix + ".absolute_tolerance must be in (0, 1e-2], or 0 for rtol (got " +
-                                FormatSignificant(o.absolute_tolerance) + ")");
-  }
-  if (o.max_steps < 10) {
-    throw std::invalid_argument(prefix + ".max_steps must be >= 10 (got " + std::to_string(o.max_steps) + ")");
-  }
 }
 
 // --- DesignOracle ----------------------------------------------------------------------
@@ -433,7 +412,7 @@ TimePathOracle::TimePathOracle(const Scene& scene, double covering_poisson_ratio
                    OracleSelection{OracleKind::kTimePath, std::move(reason), GradientFor(OracleKind::kTimePath, scene)},
                    &time_path),
       time_path_(time_path) {
-  ValidateTimePathOptions(time_path);
+  ValidateTimeIntegrationOptions(time_path, "oracle.time_path.");
   time_path_.record_history = false;
 }
 

@@ -167,7 +167,7 @@ class Judge {
   Judge(const Scene& scene, const SpeedLimitOptions& options)
       : options_(options), selection_(ChooseOracle(scene, options.oracle.choice)) {
     if (selection_.kind == OracleKind::kTimePath) {
-      ValidateTimePathOptions(options.oracle.time_path, "oracle.time_path");
+      ValidateTimeIntegrationOptions(options.oracle.time_path, "oracle.time_path.");
       time_path_ = options.oracle.time_path;
       time_path_.record_history = false;
     }

@@ -35,6 +35,7 @@
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/core/sweep.hpp"
+#include "covopt/core/solve.hpp"
 #include "covopt/core/time_integration.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/materials/material.hpp"
@@ -178,13 +179,12 @@ py::object JsonLoads(const std::string& text) {
                         std::string(ToString(result.status)));
 }
 
-/// max_steps=: an int (not a bool) >= 10.
+/// max_steps=: an int (not a bool); its range is the library's (ValidateTimeIntegrationOptions).
 long ReadMaxSteps(const py::handle& value) {
   if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
     throw std::invalid_argument("max_steps: expected an integer (got " + Repr(value) + ")");
   }
   const long steps = value.cast<long>();
-  if (steps < 10) throw std::invalid_argument("max_steps must be >= 10 (got " + std::to_string(steps) + ")");
   return steps;
 }
 
@@ -315,7 +315,7 @@ py::dict Simulate(const py::kwargs& kwargs) {
   // (conservative or damped), the time path for a braking robot or a neck (docs/model.md §10),
   // for a history, or when a time-path method is named.
   const bool history = get("history") && py::bool_(*get("history")).cast<bool>();
-  const bool exact_admits = !report.scene.robot_brakes() && !report.scene.head.has_neck();
+  const bool exact_admits = report.scene.has_energy_integral();
   bool time_path = history || !exact_admits;
   TimeIntegrationOptions time;
   if (const auto v = get("method")) {
@@ -354,14 +354,24 @@ py::dict Simulate(const py::kwargs& kwargs) {
                                   "another integrator, or history=True");
     }
   }
+  const auto check = [&time](const char* keyword) {  // the library's range, naming the keyword
+    try {
+      ValidateTimeIntegrationOptions(time);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string(keyword) + ": " + e.what());
+    }
+  };
   if (const auto v = get("rtol")) time.relative_tolerance = ReadQuantity(*v, specs::kTolerance, "rtol");
+  check("rtol");
   if (const auto v = get("atol")) {
     time.absolute_tolerance = ReadQuantity(*v, specs::kTolerance, "atol");
     if (!(time.absolute_tolerance > 0.0)) {
       throw std::invalid_argument("atol must be > 0 (got " + Repr(*v) + ")");
     }
   }
+  check("atol");
   if (const auto v = get("max_steps")) time.max_steps = ReadMaxSteps(*v);
+  check("max_steps");
   time.record_history = history;
 
   std::optional<ImpactModel> model;
@@ -372,29 +382,16 @@ py::dict Simulate(const py::kwargs& kwargs) {
   }
   {
     py::gil_scoped_release release;
-    if (time_path) {
-      if (history) {
-        // Smooth histories as the CLI's: at least ~400 samples over the contact, whose
-        // duration is the exact one for a conservative scene, else a first run's.
-        double duration_s = 0.0;
-        if (report.scene.is_conservative_two_mass()) {
-          duration_s = ExactContactDuration(*model, ExactPeaks(*model));
-        } else {
-          TimeIntegrationOptions first_run = time;
-          first_run.record_history = false;
-          duration_s = SimulateImpact(*model, first_run).contact_duration_s.value_or(0.0);
-        }
-        time.history_max_interval_s = duration_s / 400.0;  // 0: steps only
-      }
-      report.time_options = time;
-      report.result = SimulateImpact(*model, time);  // throws invalid_argument on bad options
-    } else {
-      report.result = SolveExact(*model);
-    }
+    SolveOptions solve;  // smooth histories as the CLI's: ~400 samples over the contact
+    solve.path = time_path ? PathChoice::kTimePath : PathChoice::kExact;
+    solve.time_path = time;
+    solve.record_history = history;
+    if (time_path) report.time_options = time;
+    report.result = Solve(*model, solve);  // throws invalid_argument on bad options
   }
   if (!report.result.ok()) RaiseImpactFailure(report.result);
   JudgeReport(report, limits, kwargs);
-  for (std::string& warning : InputWarnings(inputs, limits, kwargs)) report.result.warnings.push_back(std::move(warning));
+  report.input_warnings = InputWarnings(inputs, limits, kwargs);
 
   py::dict result = JsonLoads(report::SimulationJson(report, -1));
   if (history) {

@@ -133,9 +133,14 @@ std::string SimulationJson(const SimulationReport& report, int indent) {
   j["scene"] = SceneObject(report.scene);
   j["scene"]["covering"]["material"] =
       report.covering_material ? Json(*report.covering_material) : Json(nullptr);
-  j["warnings"] = r.warnings;
-  Json codes = Json::array();  // the stable code of each warning above the input's own (core's list)
-  for (const ValidityWarning& w : r.coded_warnings) codes.push_back(std::string(ToString(w.code)));
+  Json warnings = Json::array();  // the result's, then the input's
+  Json codes = Json::array();     // the stable code of each of the result's warnings (core's list)
+  for (const ValidityWarning& w : r.warnings) {
+    warnings.push_back(w.message);
+    codes.push_back(std::string(ToString(w.code)));
+  }
+  for (const std::string& w : report.input_warnings) warnings.push_back(w);
+  j["warnings"] = std::move(warnings);
   j["warning_codes"] = std::move(codes);
   return j.dump(indent);
 }

@@ -363,7 +363,7 @@ TEST_CASE("Damped scenes keep the compression flags and the validity warnings",
         (damped.peaks.max_penetration_m > damped.peaks.full_compression_penetration_m));
   CHECK(damped.peaks.full_compression_penetration_m == undamped.peaks.full_compression_penetration_m);
   const auto has = [](const ImpactResult& r, ValidityCode code) {
-    return std::any_of(r.coded_warnings.begin(), r.coded_warnings.end(),
+    return std::any_of(r.warnings.begin(), r.warnings.end(),
                        [code](const ValidityWarning& w) { return w.code == code; });
   };
   CHECK(has(undamped, ValidityCode::kFullyCompressed));

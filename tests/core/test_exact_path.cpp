@@ -176,5 +176,5 @@ TEST_CASE("A sharp robot edge is reported outside Hertz validity", "[exact]") {
   scene.robot.radius_m = 0.0005;
   const ImpactResult result = SolveExact(ImpactModel::FromScene(scene));
   REQUIRE_FALSE(result.warnings.empty());
-  CHECK_THAT(result.warnings.front(), Catch::Contains("Hertz validity"));
+  CHECK_THAT(result.warnings.front().message, Catch::Contains("Hertz validity"));
 }

@@ -369,7 +369,7 @@ TEST_CASE("The energy balance closes with the dissipated and braking work accoun
       REQUIRE(result.ok());
       REQUIRE(result.energy_residual.has_value());
       CHECK(*result.energy_residual <= 100 * rtol);
-      for (const std::string& warning : result.warnings) CHECK(warning.find("tolerance") == std::string::npos);
+      for (const ValidityWarning& warning : result.warnings) CHECK(warning.message.find("tolerance") == std::string::npos);
     }
     // Where energy leaves the bodies, the balance needs the work: it is far from 0.
     const Scene& s = named.scene;
@@ -483,8 +483,8 @@ TEST_CASE("Every braking run separates, from 1e-6 to 10 m/s and 0 to 1000 m/s²"
         CHECK(*r.contact_duration_s > 0.0);
         CHECK(*r.rebound_speed_m_per_s >= 0.0);
         CHECK(r.energy_residual <= 1e-6);  // max(100 rtol, 1e-9)
-        for (const std::string& warning : r.warnings) {
-          CHECK(warning.find("did not keep its tolerance") == std::string::npos);
+        for (const ValidityWarning& warning : r.warnings) {
+          CHECK(warning.message.find("did not keep its tolerance") == std::string::npos);
         }
         if (braking > 0.0) {  // δ_max is at most the robot's travel, v0 t_d + v0²/(2a)
           const double travel_m = speed * delay_s + speed * speed / (2.0 * braking);

@@ -63,7 +63,7 @@ double WorstError(const ImpactResult& simulated, const ImpactResult& exact) {
 
 bool HasWarning(const ImpactResult& result, const std::string& text) {
   return std::any_of(result.warnings.begin(), result.warnings.end(),
-                     [&](const std::string& w) { return w.find(text) != std::string::npos; });
+                     [&](const ValidityWarning& w) { return w.message.find(text) != std::string::npos; });
 }
 
 }  // namespace

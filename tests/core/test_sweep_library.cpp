@@ -146,10 +146,10 @@ TEST_CASE("each sweep row is SolveExact on its scene, judged against the spec's 
     CHECK(row.admissible ==
           (row.assessment.safe() &&
            !(row.covered && (direct.peaks.fully_compressed || 1.5 * row.compression_ratio > 1.0))));
-    REQUIRE(row.warnings.size() == direct.coded_warnings.size());
+    REQUIRE(row.warnings.size() == direct.warnings.size());
     for (std::size_t w = 0; w < row.warnings.size(); ++w) {
-      CHECK(row.warnings[w].code == direct.coded_warnings[w].code);
-      CHECK(row.warnings[w].message == direct.warnings[w]);
+      CHECK(row.warnings[w].code == direct.warnings[w].code);
+      CHECK(row.warnings[w].message == direct.warnings[w].message);
     }
   }
 }
@@ -338,4 +338,55 @@ TEST_CASE("bad sweep specs are refused naming the field, the value and what is a
   options.block_rows = 0;
   CHECK_THROWS_WITH(Sweep(spec, options, nothing), Contains("block_rows must be in 1..1000000 (got 0)"));
   CHECK_THROWS_WITH(Sweep(spec, {}, SweepConsumer{}), Contains("consumer"));
+}
+
+TEST_CASE("a sweep matches SolveExact point by point on any number of threads", "[sweep]") {
+  // 150 speeds x 2 head radii, the second smaller than the scalp: invalid (was SolveExactGrid's
+  // test, which Sweep replaced).
+  covopt::SweepSpec spec;
+  spec.x.quantity = "speed";
+  for (int i = 0; i < 150; ++i) spec.x.values.push_back(0.1 + 0.02 * i);
+  spec.y = covopt::SweepAxis{"head-radius", {0.08, 0.001}};
+  const auto solve = [&](unsigned threads, std::vector<std::size_t>* progress) {
+    covopt::SweepOptions options;
+    options.threads = threads;
+    options.block_rows = 64;
+    if (progress) {
+      options.progress = [progress](std::size_t done, std::size_t total) {
+        CHECK(total == 300u);
+        progress->push_back(done);
+      };
+    }
+    std::vector<covopt::SweepRow> rows;
+    covopt::Sweep(spec, options, [&](std::span<const covopt::SweepRow> block) {
+      rows.insert(rows.end(), block.begin(), block.end());
+    });
+    return rows;
+  };
+  std::vector<std::size_t> progress;
+  const auto serial = solve(1, &progress);
+  REQUIRE(!progress.empty());
+  CHECK(progress.back() == 300u);
+  CHECK(std::is_sorted(progress.begin(), progress.end()));
+  const auto parallel = solve(4, nullptr);
+  REQUIRE(serial.size() == 300u);
+  REQUIRE(parallel.size() == 300u);
+  for (std::size_t i = 0; i < serial.size(); ++i) {
+    INFO("point " << i);
+    REQUIRE(serial[i].valid == (i % 2 == 0));
+    REQUIRE(parallel[i].valid == serial[i].valid);
+    if (!serial[i].valid) {
+      CHECK_THAT(serial[i].error, Contains("head.radius"));
+      CHECK(parallel[i].error == serial[i].error);
+      continue;
+    }
+    covopt::Scene scene = spec.scene;
+    scene.robot.speed_m_per_s = serial[i].x;
+    scene.head.radius_m = serial[i].y;
+    const auto direct = covopt::SolveExact(covopt::ImpactModel::FromScene(scene));
+    CHECK(serial[i].peaks.peak_force_N == direct.peaks.peak_force_N);
+    CHECK(parallel[i].peaks.max_energy_density_J_per_m2 == direct.peaks.max_energy_density_J_per_m2);
+    CHECK(parallel[i].contact_duration_s == direct.contact_duration_s);
+    CHECK(parallel[i].assessment.contusion.ratio == serial[i].assessment.contusion.ratio);
+  }
 }

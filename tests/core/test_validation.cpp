@@ -21,8 +21,6 @@ using namespace covopt;
 
 namespace {
 
-ImpactResult Solve(const Scene& scene) { return SolveExact(ImpactModel::FromScene(scene)); }
-
 InjuryAssessment Ratios(const Scene& scene) {
   return Assess(ExactPeaks(ImpactModel::FromScene(scene)));
 }
@@ -78,7 +76,7 @@ Best BestOverModulus(double thickness_m) {
 
 bool HasWarning(const ImpactResult& r, const std::string& text) {
   return std::any_of(r.warnings.begin(), r.warnings.end(),
-                     [&](const std::string& w) { return w.find(text) != std::string::npos; });
+                     [&](const ValidityWarning& w) { return w.message.find(text) != std::string::npos; });
 }
 
 }  // namespace

@@ -95,7 +95,8 @@ TEST_CASE("15 mm of aluminium on a 15 mm robot is compared with a bare 30 mm rob
   CHECK_THAT(stiff->message, Contains("peak force 2.62 kN, compressive stress 9.37 MPa (tensile 0.5 MPa)"));
   // The result carries it too, on both paths.
   const auto carries = [&](const ImpactResult& r) {
-    return std::find(r.warnings.begin(), r.warnings.end(), stiff->message) != r.warnings.end();
+    const std::vector<std::string> messages = r.WarningMessages();
+    return std::find(messages.begin(), messages.end(), stiff->message) != messages.end();
   };
   CHECK(carries(SolveExact(model)));
   const ImpactResult simulated = SimulateImpact(model);
@@ -227,13 +228,14 @@ TEST_CASE("Results carry every warning with its code, in the order of the messag
           "[warnings]") {
   const auto codes_of = [](const ImpactResult& r) {
     std::vector<ValidityCode> codes;
-    for (const ValidityWarning& w : r.coded_warnings) codes.push_back(w.code);
+    for (const ValidityWarning& w : r.warnings) codes.push_back(w.code);
     return codes;
   };
   const auto messages_match = [](const ImpactResult& r) {
-    if (r.coded_warnings.size() != r.warnings.size()) return false;
+    const std::vector<std::string> messages = r.WarningMessages();
+    if (messages.size() != r.warnings.size()) return false;
     for (std::size_t i = 0; i < r.warnings.size(); ++i) {
-      if (r.coded_warnings[i].message != r.warnings[i]) return false;
+      if (r.warnings[i].message != messages[i]) return false;
     }
     return true;
   };
@@ -246,7 +248,7 @@ TEST_CASE("Results carry every warning with its code, in the order of the messag
                                               ValidityCode::kLiteralThresholds};
   CHECK(codes_of(exact) == expected);
   CHECK(messages_match(exact));
-  CHECK(exact.warnings == ValidityWarnings(model, exact.peaks));
+  CHECK(exact.WarningMessages() == ValidityWarnings(model, exact.peaks));
 
   // The time path adds its own, coded too.
   TimeIntegrationOptions options;

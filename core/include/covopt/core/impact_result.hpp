@@ -224,18 +224,17 @@ struct ImpactResult {
   SolverStatistics statistics;
   /// Sampled history, when requested (time path only).
   std::vector<HistorySample> history;
-  /// Every warning on this result as a message for people: those of coded_warnings, in its
-  /// order; a caller may append its own (the CLI adds warnings on its input).
-  std::vector<std::string> warnings;
-  /// The computation's warnings with their stable codes: where the result leaves the model's
-  /// domain (CheckValidity; docs/model.md §5, §7), then the time path's own (tolerance not
-  /// kept, no restarts). Same messages as the start of `warnings`.
-  std::vector<ValidityWarning> coded_warnings;
+  /// The computation's warnings, each a stable code and a message for people: where the
+  /// result leaves the model's domain (CheckValidity; docs/model.md §5, §7), then the time
+  /// path's own (tolerance not kept, no restarts).
+  std::vector<ValidityWarning> warnings;
 
   bool ok() const noexcept { return status == SolveStatus::kSuccess; }
 
-  /// Appends a warning to both lists.
+  /// Appends a warning.
   void AddWarning(ValidityCode code, std::string message);
+  /// The messages of `warnings`, in order.
+  std::vector<std::string> WarningMessages() const;
 };
 
 /// Where peaks of a model leave the model's domain (docs/model.md §5, §7), in the order of

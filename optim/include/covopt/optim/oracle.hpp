@@ -192,11 +192,6 @@ enum class GradientSource {
 /// "analytic", "cvodes-forward-sensitivities", "central-difference".
 std::string_view ToString(GradientSource source) noexcept;
 
-/// The exact path answers every peak of this scene: the conservative two-mass impact, or a
-/// damped two-mass contact (its energy relation, docs/model.md §10.1). A braking robot or a
-/// neck has only the time path.
-bool ExactPathAnswers(const Scene& scene) noexcept;
-
 /// The oracle's options.
 struct OracleOptions {
   /// auto (default), exact or time-path.
@@ -334,9 +329,5 @@ class TimePathOracle final : public DesignOracle {
 /// @throws std::invalid_argument as ChooseOracle and the oracles' constructors.
 std::unique_ptr<DesignOracle> MakeOracle(const Scene& scene, double covering_poisson_ratio,
                                          const InjuryLimits& limits, const OracleOptions& options);
-
-/// Checks the time path's options as the oracle uses them, naming `prefix`.<field>.
-/// @throws std::invalid_argument e.g. "oracle.time_path.relative_tolerance must be in [1e-14, 1e-2] (got 0)".
-void ValidateTimePathOptions(const TimeIntegrationOptions& options, const std::string& prefix = "oracle.time_path");
 
 }  // namespace covopt::optim

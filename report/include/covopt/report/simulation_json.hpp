@@ -37,6 +37,9 @@ struct SimulationReport {
   std::optional<InjuryVerdict> crush;
   /// What the verdict covers, one sentence each (optim::HeadVerdictScope).
   std::vector<std::string> scope;
+  /// What the caller noticed about its input (the CLI's and Python's input warnings),
+  /// reported after the result's own warnings, without a code.
+  std::vector<std::string> input_warnings;
   /// The laceration, contusion and (when checked) crush verdicts are all safe.
   bool safe() const noexcept { return assessment.safe() && (!crush || crush->safe); }
 };
