@@ -461,57 +461,17 @@ class ExtendedRun final : public TimePathRun {
 }  // namespace
 
 struct ExtendedTimePath::Workspace {
-  SUNContext context = nullptr;
-  N_Vector state = nullptr;
-  N_Vector absolute_tolerances = nullptr;
-  N_Vector dense_output = nullptr;
-  static constexpr std::size_t kMethodSlots =
-      static_cast<std::size_t>(ComputationMethod::kArkodeEsdirk54) + 1;
-  std::array<std::unique_ptr<Stepper>, kMethodSlots> steppers;
   Run run;
-  std::string log;
-
-  explicit Workspace(SUNContext c) : context(c) {
-    // Serial vectors with fixed-length kernels and fused operations (one call instead of a
-    // chain of axpys for the Runge-Kutta stage sums and the Adams history); the integrators'
-    // vectors are clones of `state`.
-    state = MakeFixedLengthVector(kStateSize, context);
-    absolute_tolerances = MakeFixedLengthVector(kStateSize, context);
-    dense_output = MakeFixedLengthVector(kStateSize, context);
-    if (!state || !absolute_tolerances || !dense_output) {
-      Release();
-      throw std::runtime_error("N_VNew_Serial failed");
-    }
-  }
-  ~Workspace() { Release(); }
-  Workspace(const Workspace&) = delete;
-  Workspace& operator=(const Workspace&) = delete;
-
-  void Release() noexcept {
-    for (auto& stepper : steppers) stepper.reset();  // before the vectors they were built on
-    for (N_Vector* v : {&state, &absolute_tolerances, &dense_output}) {
-      if (*v) N_VDestroy(*v);
-      *v = nullptr;
-    }
-  }
-
-  Stepper& StepperFor(ComputationMethod method) {
-    auto& slot = steppers[static_cast<std::size_t>(method)];
-    if (!slot) {
-      StepperResources resources;
-      resources.context = context;
-      resources.state = state;
-      resources.user_data = &run;
-      resources.log = &log;
-      resources.rhs = ExtendedRightHandSide;
-      resources.roots = ExtendedRootFunctions;
-      resources.root_directions = kEventDirections;
-      resources.jacobian = nullptr;  // the implicit methods use difference quotients
-      const bool cvode =
-          method == ComputationMethod::kCvodeAdams || method == ComputationMethod::kCvodeBdf;
-      slot = cvode ? MakeCvodeStepper(method, resources) : MakeArkodeStepper(method, resources);
-    }
-    return *slot;
+  StepperWorkspace steppers;
+  explicit Workspace(SUNContext context) : steppers(context, kStateSize, Callbacks(run)) {}
+  static StepperResources Callbacks(Run& run) {
+    StepperResources resources;
+    resources.user_data = &run;
+    resources.rhs = ExtendedRightHandSide;
+    resources.roots = ExtendedRootFunctions;
+    resources.root_directions = kEventDirections;
+    resources.jacobian = nullptr;  // the implicit methods use difference quotients
+    return resources;
   }
 };
 
@@ -522,9 +482,10 @@ ExtendedTimePath::~ExtendedTimePath() = default;
 ImpactResult ExtendedTimePath::Simulate(const ImpactModel& model,
                                         const TimeIntegrationOptions& options) {
   Workspace& ws = *workspace_;
-  ws.log.clear();
-  ExtendedRun run(model, options, ws.StepperFor(options.method), ws.run, ws.state,
-                  ws.absolute_tolerances, ws.dense_output, ws.log);
+  StepperWorkspace& s = ws.steppers;
+  s.log.clear();
+  ExtendedRun run(model, options, s.StepperFor(options.method), ws.run, s.state, s.absolute_tolerances,
+                  s.dense_output, s.log);
   return run.Integrate();
 }
 

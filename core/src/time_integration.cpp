@@ -566,51 +566,13 @@ class ConservativeRun final : public internal::TimePathRun {
 }  // namespace
 
 /// The SUNDIALS context, vectors and one integrator per method, created on first use and
-/// reused for every run.
+/// reused for every run; members are freed in reverse order (the context last).
 struct TimeIntegrator::Workspace {
-  SUNContext context = nullptr;
-  N_Vector state = nullptr;
-  N_Vector absolute_tolerances = nullptr;
-  N_Vector dense_output = nullptr;
-  // One slot per ComputationMethod value (the enum's last value is the largest).
-  static constexpr std::size_t kMethodSlots =
-      static_cast<std::size_t>(ComputationMethod::kArkodeEsdirk54) + 1;
-  std::array<std::unique_ptr<internal::Stepper>, kMethodSlots> steppers;
+  internal::SundialsContext context;
   internal::RunState run;
-  std::string log;
+  internal::StepperWorkspace steppers{context.get(), 3, internal::StepperResources{.user_data = &run}};
   /// Scenes beyond the conservative two-mass model (extended_time_path.cpp), on first use.
   std::unique_ptr<internal::ExtendedTimePath> extended;
-
-  Workspace() {
-    if (SUNContext_Create(nullptr, &context) != 0) throw std::runtime_error("SUNContext_Create failed");
-    // Serial vectors with fixed-length kernels (fused operations on: one call instead of
-    // q+1 for the Adams history updates and the Runge-Kutta stage sums).
-    state = internal::MakeFixedLengthVector(3, context);
-    absolute_tolerances = internal::MakeFixedLengthVector(3, context);
-    dense_output = internal::MakeFixedLengthVector(3, context);
-    if (!state || !absolute_tolerances || !dense_output) throw std::runtime_error("N_VNew_Serial failed");
-  }
-  ~Workspace() {
-    extended.reset();  // before the context it uses
-    for (auto& stepper : steppers) stepper.reset();  // before the context they use
-    if (absolute_tolerances) N_VDestroy(absolute_tolerances);
-    if (dense_output) N_VDestroy(dense_output);
-    if (state) N_VDestroy(state);
-    if (context) SUNContext_Free(&context);
-  }
-  Workspace(const Workspace&) = delete;
-  Workspace& operator=(const Workspace&) = delete;
-
-  internal::Stepper& StepperFor(ComputationMethod method) {
-    auto& slot = steppers[static_cast<std::size_t>(method)];
-    if (!slot) {
-      const internal::StepperResources resources{context, state, &run, &log};
-      const bool cvode = method == ComputationMethod::kCvodeAdams || method == ComputationMethod::kCvodeBdf;
-      slot = cvode ? internal::MakeCvodeStepper(method, resources)
-                   : internal::MakeArkodeStepper(method, resources);
-    }
-    return *slot;
-  }
 };
 
 void ValidateTimeIntegrationOptions(const TimeIntegrationOptions& o, std::string_view prefix) {
@@ -655,12 +617,13 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
   ValidateTimeIntegrationOptions(options);
   Workspace& ws = *workspace_;
   if (options.force_extended_dynamics || !model.scene().is_conservative_two_mass()) {
-    if (!ws.extended) ws.extended = std::make_unique<internal::ExtendedTimePath>(ws.context);
+    if (!ws.extended) ws.extended = std::make_unique<internal::ExtendedTimePath>(ws.context.get());
     return ws.extended->Simulate(model, options);
   }
-  ws.log.clear();
-  ConservativeRun run(model, options, ws.StepperFor(options.method), ws.run, ws.state,
-                      ws.absolute_tolerances, ws.dense_output, ws.log);
+  internal::StepperWorkspace& s = ws.steppers;
+  s.log.clear();
+  ConservativeRun run(model, options, s.StepperFor(options.method), ws.run, s.state, s.absolute_tolerances,
+                      s.dense_output, s.log);
   return run.Integrate();
 }
 

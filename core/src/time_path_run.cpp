@@ -2,8 +2,10 @@
 #include "time_path_run.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <utility>
 
+#include "fixed_length_vector.hpp"
 #include "numeric_format.hpp"
 
 namespace covopt::internal {
@@ -117,6 +119,46 @@ void TimePathRun::FinishChecks(double residual, std::string_view residual_name,
         "off): the local error test does not see them, so the error may exceed the "
         "tolerance (a numerics-study setting)");
   }
+}
+
+SundialsContext::SundialsContext() {
+  if (SUNContext_Create(nullptr, &context_) != 0) throw std::runtime_error("SUNContext_Create failed");
+}
+SundialsContext::~SundialsContext() {
+  if (context_) SUNContext_Free(&context_);
+}
+
+StepperWorkspace::StepperWorkspace(SUNContext context, int size, const StepperResources& callbacks)
+    : resources_(callbacks) {
+  state = MakeFixedLengthVector(size, context);
+  absolute_tolerances = MakeFixedLengthVector(size, context);
+  dense_output = MakeFixedLengthVector(size, context);
+  if (!state || !absolute_tolerances || !dense_output) {
+    Release();
+    throw std::runtime_error("N_VNew_Serial failed");
+  }
+  resources_.context = context;
+  resources_.state = state;
+  resources_.log = &log;
+}
+
+StepperWorkspace::~StepperWorkspace() { Release(); }
+
+void StepperWorkspace::Release() noexcept {
+  for (auto& stepper : steppers_) stepper.reset();  // before the vectors they were built on
+  for (N_Vector* v : {&state, &absolute_tolerances, &dense_output}) {
+    if (*v) N_VDestroy(*v);
+    *v = nullptr;
+  }
+}
+
+Stepper& StepperWorkspace::StepperFor(ComputationMethod method) {
+  auto& slot = steppers_[static_cast<std::size_t>(method)];
+  if (!slot) {
+    const bool cvode = method == ComputationMethod::kCvodeAdams || method == ComputationMethod::kCvodeBdf;
+    slot = cvode ? MakeCvodeStepper(method, resources_) : MakeArkodeStepper(method, resources_);
+  }
+  return *slot;
 }
 
 }  // namespace covopt::internal

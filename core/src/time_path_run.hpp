@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -97,6 +98,49 @@ class TimePathRun {
   N_Vector dense_output_;
   const std::string& log_;
   long steps_taken_ = 0;
+};
+
+/// A SUNDIALS context, created and freed with this object.
+class SundialsContext {
+ public:
+  SundialsContext();
+  ~SundialsContext();
+  SundialsContext(const SundialsContext&) = delete;
+  SundialsContext& operator=(const SundialsContext&) = delete;
+  SUNContext get() const noexcept { return context_; }
+
+ private:
+  SUNContext context_ = nullptr;
+};
+
+/// What a time path keeps between runs, on a context owned elsewhere: the state, tolerance
+/// and dense-output vectors (fixed-length serial vectors with fused operations: one call
+/// instead of a chain of axpys for the Runge-Kutta stage sums and the Adams history; the
+/// integrators' vectors are clones of `state`), the message log, and one integrator per
+/// method, made on first use. Freed in the right order (integrators before vectors).
+class StepperWorkspace {
+ public:
+  /// `size` state components; `callbacks` gives the right-hand side, roots, Jacobian and
+  /// user data (its context, state and log are filled in here).
+  StepperWorkspace(SUNContext context, int size, const StepperResources& callbacks);
+  ~StepperWorkspace();
+  StepperWorkspace(const StepperWorkspace&) = delete;
+  StepperWorkspace& operator=(const StepperWorkspace&) = delete;
+
+  /// The integrator of `method` (a time integrator), made on first use.
+  Stepper& StepperFor(ComputationMethod method);
+
+  N_Vector state = nullptr;
+  N_Vector absolute_tolerances = nullptr;
+  N_Vector dense_output = nullptr;
+  std::string log;
+
+ private:
+  void Release() noexcept;
+  StepperResources resources_;
+  // One slot per ComputationMethod value (the enum's last value is the largest).
+  static constexpr std::size_t kMethodSlots = static_cast<std::size_t>(ComputationMethod::kArkodeEsdirk54) + 1;
+  std::array<std::unique_ptr<Stepper>, kMethodSlots> steppers_;
 };
 
 }  // namespace covopt::internal
