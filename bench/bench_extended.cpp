@@ -8,6 +8,8 @@
 
 #include <covopt/core.hpp>
 
+#include "time_path_loop.hpp"
+
 namespace {
 
 const covopt::ImpactModel& ExtendedModel(int which) {
@@ -39,15 +41,7 @@ void BM_ExtendedTimePath(benchmark::State& state) {
   covopt::TimeIntegrationOptions options;
   options.method = kMethods[state.range(1)];
   options.force_extended_dynamics = true;
-  covopt::TimeIntegrator integrator;
-  long steps = 0;
-  for (auto _ : state) {
-    const covopt::ImpactResult result = integrator.Simulate(model, options);
-    steps = result.statistics.steps;
-    benchmark::DoNotOptimize(result.peaks.max_penetration_m);
-  }
-  state.counters["steps"] = static_cast<double>(steps);
-  state.SetLabel(std::string(covopt::ToString(options.method)));
+  RunTimePathLoop(state, model, options);
 }
 BENCHMARK(BM_ExtendedTimePath)
     ->ArgsProduct({{0, 1, 2}, {0, 1}})

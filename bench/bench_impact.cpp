@@ -8,6 +8,8 @@
 #include <covopt/core.hpp>
 #include <covopt/optim/covering_design.hpp>
 
+#include "time_path_loop.hpp"
+
 namespace {
 
 covopt::Scene PaperSceneWithCovering() {
@@ -69,15 +71,7 @@ void BM_TimePath(benchmark::State& state) {
   covopt::TimeIntegrationOptions options;
   options.method = kMethods[state.range(1)];
   options.relative_tolerance = std::pow(10.0, -static_cast<double>(state.range(2)));
-  covopt::TimeIntegrator integrator;
-  long steps = 0;
-  for (auto _ : state) {
-    const covopt::ImpactResult result = integrator.Simulate(model, options);
-    steps = result.statistics.steps;
-    benchmark::DoNotOptimize(result.peaks.max_penetration_m);
-  }
-  state.counters["steps"] = static_cast<double>(steps);
-  state.SetLabel(std::string(covopt::ToString(options.method)));
+  RunTimePathLoop(state, model, options);
 }
 BENCHMARK(BM_TimePath)
     ->ArgsProduct({{0, 1}, {0, 1, 2}, {6, 8, 10}})
