@@ -60,14 +60,42 @@ void ValidateCandidates(std::span<const CandidateMaterial> materials) {
   }
 }
 
+/// A design problem for Ipopt on the oracle: minimise the last of two variables (b_c/b_max, or
+/// the epigraph's s) under constraints the oracle scores. Second derivatives by central
+/// differences of the oracle's Jacobian (the objective is linear), with the oracle's step:
+/// only the polish's convergence rate depends on them, its point is fixed by the first
+/// derivatives.
+class MinimizeSecondVariable : public Problem {
+ public:
+  bool Objective(std::span<const double> x, double& value, std::span<double> g) const override {
+    value = x[1];
+    if (!g.empty()) {
+      g[0] = 0.0;
+      g[1] = 1.0;
+    }
+    return true;
+  }
+  bool provides_lagrangian_hessian() const override { return true; }
+  bool LagrangianHessian(std::span<const double> x, double objective_factor, std::span<const double> multipliers,
+                         std::span<double> lower_triangle) const override {
+    return CentralDifferenceLagrangianHessian(*this, x, objective_factor, multipliers, lower_triangle,
+                                              oracle_.DifferenceStep());
+  }
+
+ protected:
+  MinimizeSecondVariable(const DesignOracle& oracle, const DesignOptions& o) : oracle_(oracle), o_(o) {}
+  const DesignOracle& oracle_;
+  const DesignOptions& o_;
+};
+
 /// Problem (a): x = (log10 E_c, b_c / b_max), both of order one (Ipopt is sensitive to
 /// scaling: with b_c in metres it reported local infeasibility from feasible basins);
 /// min b_c/b_max s.t. ln(SF r_i) <= 0 and, under the default criterion, ln(SF r_δ) <= 0 with
 /// r_δ the covering's travel ratio (DesignScore::compression_ratio).
-class ThinnestProblem : public Problem {
+class ThinnestProblem : public MinimizeSecondVariable {
  public:
   ThinnestProblem(const DesignOracle& oracle, const DesignOptions& o)
-      : oracle_(oracle), o_(o),
+      : MinimizeSecondVariable(oracle, o),
         lower_{std::log10(o.space.min_modulus_Pa), o.space.min_thickness_m / o.space.max_thickness_m},
         upper_{std::log10(o.space.max_modulus_Pa), 1.0} {}
   std::size_t dimension() const override { return 2; }
@@ -92,14 +120,6 @@ class ThinnestProblem : public Problem {
   std::vector<double> Point(const CoveringDesign& d) const {
     return {std::log10(d.youngs_modulus_Pa), d.thickness_m / o_.space.max_thickness_m};
   }
-  bool Objective(std::span<const double> x, double& value, std::span<double> g) const override {
-    value = x[1];
-    if (!g.empty()) {
-      g[0] = 0.0;
-      g[1] = 1.0;
-    }
-    return true;
-  }
   bool Constraints(std::span<const double> x, std::span<double> c, std::span<double> jac) const override {
     RatioGradient gradient;
     const DesignScore score = jac.empty() ? oracle_.Score(Design(x)) : oracle_.Score(Design(x), gradient);
@@ -123,19 +143,7 @@ class ThinnestProblem : public Problem {
     return true;
   }
 
-  /// Second derivatives by central differences of the oracle's Jacobian (the objective is
-  /// linear), with the oracle's step: only the polish's convergence rate depends on them, its
-  /// point is fixed by the first derivatives.
-  bool provides_lagrangian_hessian() const override { return true; }
-  bool LagrangianHessian(std::span<const double> x, double objective_factor, std::span<const double> multipliers,
-                         std::span<double> lower_triangle) const override {
-    return CentralDifferenceLagrangianHessian(*this, x, objective_factor, multipliers, lower_triangle,
-                                              oracle_.DifferenceStep());
-  }
-
  private:
-  const DesignOracle& oracle_;
-  const DesignOptions& o_;
   std::vector<double> lower_, upper_;
 };
 
@@ -172,22 +180,14 @@ class WorstRatioProblem : public Problem {
 
 /// Problem (b), smooth epigraph form for Ipopt: x = (log10 E_c, s); min s s.t. ln(SF r_i) <= s,
 /// log10 E_c in [lower, log10 E_max].
-class EpigraphProblem : public Problem {
+class EpigraphProblem : public MinimizeSecondVariable {
  public:
   EpigraphProblem(const DesignOracle& oracle, const DesignOptions& o, double thickness, double lower)
-      : oracle_(oracle), o_(o), thickness_(thickness), lower_(lower) {}
+      : MinimizeSecondVariable(oracle, o), thickness_(thickness), lower_(lower) {}
   std::size_t dimension() const override { return 2; }
   std::size_t inequality_count() const override { return 2; }
   std::vector<double> lower_bounds() const override { return {lower_, -50.0}; }
   std::vector<double> upper_bounds() const override { return {std::log10(o_.space.max_modulus_Pa), 50.0}; }
-  bool Objective(std::span<const double> x, double& value, std::span<double> g) const override {
-    value = x[1];
-    if (!g.empty()) {
-      g[0] = 0.0;
-      g[1] = 1.0;
-    }
-    return true;
-  }
   bool Constraints(std::span<const double> x, std::span<double> c, std::span<double> jac) const override {
     const CoveringDesign design{std::pow(10.0, x[0]), thickness_};
     RatioGradient gradient;
@@ -203,17 +203,8 @@ class EpigraphProblem : public Problem {
     }
     return true;
   }
-  /// As ThinnestProblem's: central differences of the analytic Jacobian.
-  bool provides_lagrangian_hessian() const override { return true; }
-  bool LagrangianHessian(std::span<const double> x, double objective_factor, std::span<const double> multipliers,
-                         std::span<double> lower_triangle) const override {
-    return CentralDifferenceLagrangianHessian(*this, x, objective_factor, multipliers, lower_triangle,
-                                              oracle_.DifferenceStep());
-  }
 
  private:
-  const DesignOracle& oracle_;
-  const DesignOptions& o_;
   double thickness_;
   double lower_;
 };
