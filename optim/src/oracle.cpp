@@ -199,15 +199,6 @@ bool DesignScore::admissible(const DesignRule& rule) const noexcept {
   return rule.safety_factor * governing(rule).ratio <= 1.0;
 }
 
-std::string_view ToString(OracleChoice choice) noexcept {
-  switch (choice) {
-    case OracleChoice::kAuto: return "auto";
-    case OracleChoice::kExact: return "exact";
-    case OracleChoice::kTimePath: return "time-path";
-  }
-  return "unknown";
-}
-
 std::optional<OracleChoice> ParseOracleChoice(std::string_view name) noexcept {
   for (const OracleChoice c : {OracleChoice::kAuto, OracleChoice::kExact, OracleChoice::kTimePath}) {
     if (name == ToString(c)) return c;

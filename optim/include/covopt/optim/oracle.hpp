@@ -30,6 +30,7 @@
 
 #include <covopt/core/impact_result.hpp>
 #include <covopt/core/scene.hpp>
+#include <covopt/core/solve.hpp>
 #include <covopt/core/time_integration.hpp>
 
 namespace covopt::optim {
@@ -164,14 +165,10 @@ struct RatioGradient {
   double compression[2] = {0.0, 0.0};  ///< of DesignScore::compression_ratio
 };
 
-/// What a caller asks for.
-enum class OracleChoice {
-  kAuto,      ///< the exact path where the scene admits it, else the time path (default)
-  kExact,     ///< the exact path; refused for a scene it cannot answer
-  kTimePath,  ///< the time path, whatever the scene
-};
-/// "auto", "exact", "time-path".
-std::string_view ToString(OracleChoice choice) noexcept;
+/// What a caller asks for: core's path choice (kAuto: the exact path where the scene admits
+/// it, else the time path; kExact: refused for a scene it cannot answer; kTimePath: whatever
+/// the scene). covopt::ToString names it "auto", "exact", "time-path".
+using OracleChoice = PathChoice;
 /// The inverse of ToString; empty for an unknown name.
 std::optional<OracleChoice> ParseOracleChoice(std::string_view name) noexcept;
 
