@@ -51,7 +51,7 @@ const MappedRule<kQuadratureOrder>& Quadrature() {
 
 ImpactPeaks ExactPeaks(const ImpactModel& model) noexcept {
   // The energy integral needs a two-body contact: SolveExact refuses the other scenes.
-  assert(!model.scene().robot_brakes() && !model.scene().head.has_neck());
+  assert(model.scene().has_energy_integral());
   if (model.scene().model.damping_s_per_m > 0.0) [[unlikely]] {
     return internal::DampedExactPeaks(model);
   }
@@ -66,7 +66,7 @@ double ExactContactDuration(const ImpactModel& model, const ImpactPeaks& peaks) 
   // T/2 = ∫₀^δmax dδ / v(δ),  v = sqrt(2 (U(δ_max) - U(δ)) / m).  With δ = δ_max - s²:
   // T/2 = ∫₀^√δmax 2s ds / v(δ_max - s²), smooth at s = 0. Pieces end at the switches
   // s_j = sqrt(δ_max - t_j); each is mapped by s = a + (b - a) φ(u), φ = u²(3 - 2u).
-  assert(!model.scene().robot_brakes() && !model.scene().head.has_neck());
+  assert(model.scene().has_energy_integral());
   if (model.scene().model.damping_s_per_m > 0.0) [[unlikely]] {
     const internal::DampedContactTimes times = internal::DampedContactDurations(model, peaks);
     return times.loading_s + times.unloading_s;
@@ -126,10 +126,8 @@ double ExactContactDuration(const ImpactModel& model, const ImpactPeaks& peaks) 
   return 2.0 * half_duration;
 }
 
-namespace {
-
-/// Refuses a scene without the energy integral of a two-body contact (docs/model.md §10).
-void CheckExactPathApplies(const Scene& scene) {
+void internal::CheckExactPathApplies(const Scene& scene) {
+  if (scene.has_energy_integral()) return;
   constexpr const char* kWhy =
       "the exact path needs the energy integral of a two-body contact (conservative or with "
       "contact damping): ";
@@ -140,17 +138,13 @@ void CheckExactPathApplies(const Scene& scene) {
                                 internal::FormatNumber(scene.robot.braking_m_per_s2) + " m/s2)" +
                                 kOnlyTimePath);
   }
-  if (scene.head.has_neck()) {
-    throw std::invalid_argument(std::string(kWhy) + "a neck (head.torso_mass " +
-                                internal::FormatNumber(scene.head.torso_mass_kg) + " kg)" +
-                                kOnlyTimePath);
-  }
+  throw std::invalid_argument(std::string(kWhy) + "a neck (head.torso_mass " +
+                              internal::FormatNumber(scene.head.torso_mass_kg) + " kg)" +
+                              kOnlyTimePath);
 }
 
-}  // namespace
-
 ImpactResult SolveExact(const ImpactModel& model, const ExactOptions& options) {
-  CheckExactPathApplies(model.scene());
+  internal::CheckExactPathApplies(model.scene());
   ImpactResult result;
   result.method = ComputationMethod::kExact;
   result.peaks = ExactPeaks(model);

@@ -13,6 +13,11 @@
 
 namespace covopt::internal {
 
+/// Refuses a scene without the energy integral of a two-body contact (Scene::has_energy_integral,
+/// docs/model.md §10), naming the input that removes it.
+/// @throws std::invalid_argument for a braking robot or a neck.
+void CheckExactPathApplies(const Scene& scene);
+
 /// Gauss-Legendre nodes and weights on [0, 1], computed once by Newton on P_N.
 template <int N>
 struct GaussLegendre {

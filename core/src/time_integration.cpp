@@ -294,30 +294,6 @@ std::optional<GrazingTurn> GrazingTurnAtSwitch(const ImpactModel& model, std::si
   return turn;
 }
 
-void ValidateOptions(const TimeIntegrationOptions& o) {
-  using internal::FormatNumber;
-  if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
-    throw std::invalid_argument("rtol must be in [1e-14, 1e-2] (got " +
-                                FormatNumber(o.relative_tolerance) + ")");
-  }
-  if (!(o.absolute_tolerance == 0.0 ||
-        (o.absolute_tolerance > 0.0 && o.absolute_tolerance <= 1e-2))) {
-    throw std::invalid_argument("atol must be in (0, 1e-2], or 0 for atol = rtol (got " +
-                                FormatNumber(o.absolute_tolerance) + ")");
-  }
-  if (!(o.history_max_interval_s >= 0.0 && std::isfinite(o.history_max_interval_s))) {
-    throw std::invalid_argument("history_max_interval_s must be >= 0 s (got " +
-                                FormatNumber(o.history_max_interval_s) + ")");
-  }
-  if (o.max_steps < 10) {
-    throw std::invalid_argument("max_steps must be >= 10 (got " + std::to_string(o.max_steps) +
-                                ")");
-  }
-  if (o.method == ComputationMethod::kExact || ToString(o.method) == "unknown") {
-    throw std::invalid_argument("method must be a time-integration method (got " +
-                                std::string(ToString(o.method)) + ")");
-  }
-}
 
 }  // namespace
 
@@ -369,6 +345,38 @@ struct TimeIntegrator::Workspace {
   }
 };
 
+void ValidateTimeIntegrationOptions(const TimeIntegrationOptions& o, std::string_view prefix) {
+  using internal::FormatNumber;
+  const std::string field(prefix);
+  if (o.method == ComputationMethod::kExact || ToString(o.method) == "unknown") {
+    std::string names;
+    for (const ComputationMethod method : TimeIntegrationMethods()) {
+      names += (names.empty() ? "" : ", ") + std::string(ToString(method));
+    }
+    throw std::invalid_argument(field + "method must be a time integrator (" + names + ") (got " +
+                                std::string(ToString(o.method)) + ")");
+  }
+  if (!(o.relative_tolerance >= 1e-14 && o.relative_tolerance <= 1e-2)) {
+    throw std::invalid_argument(field + "relative_tolerance must be in [1e-14, 1e-2] (got " +
+                                FormatNumber(o.relative_tolerance) + ")");
+  }
+  if (!(o.absolute_tolerance == 0.0 ||
+        (o.absolute_tolerance > 0.0 && o.absolute_tolerance <= 1e-2))) {
+    throw std::invalid_argument(field +
+                                "absolute_tolerance must be in (0, 1e-2], or 0 for the relative "
+                                "tolerance (got " +
+                                FormatNumber(o.absolute_tolerance) + ")");
+  }
+  if (!(o.history_max_interval_s >= 0.0 && std::isfinite(o.history_max_interval_s))) {
+    throw std::invalid_argument(field + "history_max_interval_s must be finite and >= 0 s (got " +
+                                FormatNumber(o.history_max_interval_s) + ")");
+  }
+  if (o.max_steps < 10) {
+    throw std::invalid_argument(field + "max_steps must be >= 10 (got " +
+                                std::to_string(o.max_steps) + ")");
+  }
+}
+
 TimeIntegrator::TimeIntegrator() : workspace_(std::make_unique<Workspace>()) {}
 TimeIntegrator::~TimeIntegrator() = default;
 TimeIntegrator::TimeIntegrator(TimeIntegrator&&) noexcept = default;
@@ -376,7 +384,7 @@ TimeIntegrator& TimeIntegrator::operator=(TimeIntegrator&&) noexcept = default;
 
 ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
                                       const TimeIntegrationOptions& options) {
-  ValidateOptions(options);
+  ValidateTimeIntegrationOptions(options);
   Workspace& ws = *workspace_;
   if (options.force_extended_dynamics || !model.scene().is_conservative_two_mass()) {
     if (!ws.extended) ws.extended = std::make_unique<internal::ExtendedTimePath>(ws.context);

@@ -131,11 +131,16 @@ struct Scene {
   bool is_damped() const noexcept { return model.damping_s_per_m > 0.0; }
   /// The robot brakes after its reaction delay (braking > 0).
   bool robot_brakes() const noexcept { return robot.braking_m_per_s2 > 0.0; }
+  /// The scene has the energy integral of a two-body contact (conservative, or with contact
+  /// damping, docs/model.md §10.1): no braking and no neck. The one rule of where the exact path
+  /// answers every peak (SolveExact, Solve's automatic choice, the sweep, optim's oracles); a
+  /// braking robot or a neck has only the time path (docs/model.md §10.2, §10.3).
+  bool has_energy_integral() const noexcept { return !robot_brakes() && !head.has_neck(); }
   /// The scene is the paper's conservative two-mass impact: no damping, no braking, no neck.
   /// Only such a scene has the energy integral the exact path needs for every quantity
   /// (a damped scene keeps an exact path of its own; braking and a neck need the time path).
   bool is_conservative_two_mass() const noexcept {
-    return !is_damped() && !robot_brakes() && !head.has_neck();
+    return !is_damped() && has_energy_integral();
   }
 };
 

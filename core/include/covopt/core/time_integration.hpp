@@ -34,6 +34,7 @@
 /// ImpactResult::message, never printed.
 
 #include <memory>
+#include <string_view>
 
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
@@ -70,6 +71,16 @@ struct TimeIntegrationOptions {
   /// one path against the other. Scenes with damping, braking or a neck always take it.
   bool force_extended_dynamics = false;
 };
+
+/// Checks every field of `options`: a time integrator as method, relative_tolerance in
+/// [1e-14, 1e-2], absolute_tolerance in (0, 1e-2] or 0, history_max_interval_s finite and
+/// >= 0 s, max_steps >= 10. The one check of these options, behind the time path, the sweep,
+/// the sensitivities and optim's oracles.
+/// @throws std::invalid_argument naming the field (after `prefix`, e.g. "time_path."), the
+///         value and the allowed range: "time_path.relative_tolerance must be in [1e-14, 1e-2]
+///         (got 0)".
+void ValidateTimeIntegrationOptions(const TimeIntegrationOptions& options,
+                                    std::string_view prefix = "");
 
 /// Reusable SUNDIALS workspace (one integrator per method, created on first use).
 class TimeIntegrator {
