@@ -29,11 +29,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "covopt/core/exact.hpp"
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/scene.hpp"
+#include "covopt/core/solve.hpp"
 #include "covopt/core/sweep.hpp"
 #include "covopt/core/time_integration.hpp"
 #include "covopt/materials/catalog.hpp"
@@ -312,34 +312,31 @@ std::vector<std::string> InputWarnings(const SceneInputs& inputs) {
   return optim::SceneInputWarnings(inputs.scene, inputs.limits, inputs.safety_factor, material, source_of);
 }
 
-/// simulate's method=, rtol=, atol=, max_steps=: the time path's options, or none when the
-/// exact path answers (as the CLI's --method auto: exact where the scene has an energy
-/// integral, the time path for braking, a neck, a history or a named integrator).
-std::optional<TimeIntegrationOptions> ReadTimePath(const py::dict& kwargs, const Scene& scene, bool history) {
+/// simulate's method=, rtol=, atol=, max_steps=, history= as Solve's options: the path
+/// auto (the exact path where the scene has an energy integral and no history is asked for),
+/// exact, or the time path with a named integrator.
+SolveOptions ReadSolveOptions(const py::dict& kwargs, const Scene& scene) {
   const auto get = [&](const char* name) { return Option(kwargs, name); };
-  const bool exact_admits = !scene.robot_brakes() && !scene.head.has_neck();
-  bool time_path = history || !exact_admits;
-  TimeIntegrationOptions time;
+  SolveOptions options;
+  options.record_history = Flag(kwargs, "history");
   if (const auto v = get("method")) {
     const std::string method = py::str(*v).cast<std::string>();
-    if (method == "cvode") {
-      time_path = true;
-      time.method = ComputationMethod::kCvodeAdams;
-    } else if (const auto named = ParseComputationMethod(method);
-               named && *named != ComputationMethod::kExact) {
-      time_path = true;
-      time.method = *named;
-    } else if (method == "exact") {
-      if (!exact_admits) {
+    const auto named = method == "cvode" ? std::optional(ComputationMethod::kCvodeAdams) : ParseComputationMethod(method);
+    if (method == "exact") {
+      if (!scene.has_energy_integral()) {
         throw std::invalid_argument("method='exact': the exact path needs an energy integral; a scene with "
                                     "braking or a neck has only the time path; drop method (the default "
                                     "integrator runs then) or give a time-path method");
       }
-      if (history) {
+      if (options.record_history) {
         throw std::invalid_argument("method='exact' computes no time history, which history=True "
                                     "needs; drop method (the default integrator runs then) or "
                                     "give a time-path method");
       }
+      options.path = PathChoice::kExact;
+    } else if (named && *named != ComputationMethod::kExact) {
+      options.path = PathChoice::kTimePath;
+      options.time_path.method = *named;
     } else {
       std::string names;
       for (const ComputationMethod m : TimeIntegrationMethods()) {
@@ -349,6 +346,7 @@ std::optional<TimeIntegrationOptions> ReadTimePath(const py::dict& kwargs, const
                                   method + "')");
     }
   }
+  const bool time_path = ChoosePath(scene, options) == PathChoice::kTimePath;
   for (const char* k : {"rtol", "atol", "max_steps"}) {
     if (get(k) && !time_path) {
       throw std::invalid_argument(std::string(k) +
@@ -356,7 +354,7 @@ std::optional<TimeIntegrationOptions> ReadTimePath(const py::dict& kwargs, const
                                   "another integrator, or history=True");
     }
   }
-  if (!time_path) return std::nullopt;
+  TimeIntegrationOptions& time = options.time_path;
   if (const auto v = get("rtol")) time.relative_tolerance = ReadSceneQuantity(*v, specs::kTolerance, "rtol");
   if (const auto v = get("atol")) {
     time.absolute_tolerance = ReadSceneQuantity(*v, specs::kTolerance, "atol");
@@ -365,8 +363,7 @@ std::optional<TimeIntegrationOptions> ReadTimePath(const py::dict& kwargs, const
     }
   }
   if (const auto v = get("max_steps")) time.max_steps = ReadMaxSteps(*v);
-  time.record_history = history;
-  return time;
+  return options;
 }
 
 /// The columns of `--history` as numpy arrays (the extended ones beyond the two-mass model).
@@ -397,46 +394,35 @@ py::dict HistoryColumns(const std::vector<HistorySample>& h, const ImpactModel& 
 
 /// covopt.simulate(scene, method=, rtol=, atol=, max_steps=, history=): see covopt/__init__.py.
 py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
-  const bool history = Flag(kwargs, "history");
-  std::optional<TimeIntegrationOptions> time = ReadTimePath(kwargs, inputs.scene, history);
+  const SolveOptions options = ReadSolveOptions(kwargs, inputs.scene);
   report::SimulationReport report;
   report.scene = inputs.scene;
   report.covering_material = inputs.covering_material;
   report.covering_poisson_assumed = inputs.covering_poisson_assumed;
   report.safety_factor = inputs.safety_factor;
+  if (ChoosePath(inputs.scene, options) == PathChoice::kTimePath) report.time_options = options.time_path;
   std::optional<ImpactModel> model;
   try {
     model.emplace(ImpactModel::FromScene(report.scene));
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(inputs.Attributed(e.what()));
   }
-  {
+  try {
     py::gil_scoped_release release;
-    if (time) {
-      if (history) {
-        // Smooth histories as the CLI's: at least ~400 samples over the contact, whose
-        // duration is the exact one for a conservative scene, else a first run's.
-        double duration_s = 0.0;
-        if (report.scene.is_conservative_two_mass()) {
-          duration_s = ExactContactDuration(*model, ExactPeaks(*model));
-        } else {
-          TimeIntegrationOptions first_run = *time;
-          first_run.record_history = false;
-          duration_s = SimulateImpact(*model, first_run).contact_duration_s.value_or(0.0);
-        }
-        time->history_max_interval_s = duration_s / 400.0;  // 0: steps only
-      }
-      report.time_options = time;
-      report.result = SimulateImpact(*model, *time);  // throws invalid_argument on bad options
-    } else {
-      report.result = SolveExact(*model);
+    report.result = Solve(*model, options);
+  } catch (const std::invalid_argument& e) {  // an option out of range, named as the keyword
+    std::string message = e.what();
+    for (const auto& [field, keyword] : {std::pair{"time_path.relative_tolerance", "rtol"},
+                                         {"time_path.absolute_tolerance", "atol"}, {"time_path.max_steps", "max_steps"}}) {
+      if (message.rfind(field, 0) == 0) message = keyword + message.substr(std::string_view(field).size());
     }
+    throw std::invalid_argument(message);
   }
   if (!report.result.ok()) RaiseImpactFailure(report.result);
   inputs.Judge(report);
   for (std::string& warning : InputWarnings(inputs)) report.result.warnings.push_back(std::move(warning));
   py::dict result = JsonToPython(report::SimulationJson(report, -1));
-  if (history) result["history"] = HistoryColumns(report.result.history, *model, report.scene);
+  if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model, report.scene);
   return result;
 }
 
