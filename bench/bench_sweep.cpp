@@ -22,6 +22,7 @@
 #include "app.hpp"
 #include "simulate.hpp"
 #include "sweep.hpp"
+#include "sweep_csv.hpp"
 
 namespace {
 
@@ -29,8 +30,8 @@ constexpr const char* kXSpec = "speed=0.1..4:1000";
 constexpr const char* kYSpec = "robot-mass=1..50:1000";
 
 struct Grid {
-  covopt::cli::SweepAxis x = covopt::cli::ParseSweepAxis(kXSpec, "--x");
-  covopt::cli::SweepAxis y = covopt::cli::ParseSweepAxis(kYSpec, "--y");
+  covopt::cli::SweepAxisArgument x = covopt::cli::ParseSweepAxis(kXSpec, "--x");
+  covopt::cli::SweepAxisArgument y = covopt::cli::ParseSweepAxis(kYSpec, "--y");
   covopt::SweepSpec spec = covopt::cli::MakeSweepSpec(x, &y, covopt::cli::SimulationPlan{});
 };
 

@@ -39,7 +39,7 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   CLI::App* materials = SetupMaterials(app, materials_options);
   OptimizeOptions optimize_options;
   CLI::App* optimize = SetupOptimize(app, optimize_options);
-  SweepOptions sweep_options;
+  SweepCommandOptions sweep_options;
   CLI::App* sweep = SetupSweep(app, sweep_options);
   WorkPrecisionOptions workprecision_options;
   CLI::App* workprecision = SetupWorkPrecision(app, workprecision_options);

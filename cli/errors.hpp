@@ -20,6 +20,19 @@ class InputError : public std::invalid_argument {
   explicit InputError(const std::string& message) : std::invalid_argument(message) {}
 };
 
+/// Calls `f` and returns what it returns, with the library's bad-input std::invalid_argument
+/// (a scene file, a range, a limit) rethrown as InputError with the same message.
+template <class F>
+decltype(auto) AsInputError(F&& f) {
+  try {
+    return std::forward<F>(f)();
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+}
+
 /// An output file or an external tool failed. The message names the file or the tool.
 class OutputError : public std::runtime_error {
  public:

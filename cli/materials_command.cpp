@@ -17,6 +17,7 @@
 
 #include "covopt/materials/material.hpp"
 #include "covopt/report/materials_json.hpp"
+#include "covopt/scene_file/range.hpp"
 #include "errors.hpp"
 
 namespace covopt::cli {
@@ -323,50 +324,9 @@ std::string NoSuchMaterial(const materials::Catalog& catalog, std::string_view n
 
 materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
                             std::string_view name) {
-  const std::string_view s = Trim(text);
-  const auto fail = [&](std::string_view problem) {
-    throw InputError(fmt::format("{}: {} (got '{}')", name, problem, text));
-  };
-  const std::string example =
-      name == "--strength"                  ? "100kPa..1MPa"
-      : spec.kind == QuantityKind::kModulus ? "10MPa..100MPa"
-      : spec.kind == QuantityKind::kDensity ? "20kg/m3..60kg/m3"
-                                            : "0.2..0.3";
-  const auto dots = s.find("..");
-  if (dots == std::string_view::npos) {
-    fail(fmt::format("expected a range LO..HI, LO.. or ..HI, e.g. {}", example));
-  }
-  const std::string_view low = Trim(s.substr(0, dots));
-  const std::string_view high = Trim(s.substr(dots + 2));
-  if (low.empty() && high.empty()) fail(fmt::format("give at least one end, e.g. {}", example));
-  if ((!high.empty() && high.front() == '.') || (!low.empty() && low.back() == '.')) {
-    fail(fmt::format("malformed range; write LO..HI, e.g. {}", example));
-  }
-
-  // The ends' units first (a bare end beside one with a unit is the likelier slip), then, at
-  // the end, whether a bare end is plausible for the quantity.
-  const QuantitySpec units_only{spec.kind, spec.allow_fixed, spec.allow_flat};
-  materials::Range range;
-  if (!low.empty()) range.min = ParseQuantity(low, units_only, name);
-  if (!high.empty()) range.max = ParseQuantity(high, units_only, name);
-
-  if (spec.kind != QuantityKind::kDimensionless && !low.empty() && !high.empty()) {
-    const auto bare = [](std::string_view end) {
-      const char c = end.back();
-      return (c >= '0' && c <= '9') || c == '.';
-    };
-    const bool low_bare = bare(low) && *range.min != 0.0;
-    const bool high_bare = bare(high) && *range.max != 0.0;
-    if ((low_bare && !bare(high)) || (high_bare && !bare(low))) {
-      fail(fmt::format("give the unit on both ends, e.g. {}; a bare number is SI", example));
-    }
-  }
-  if (range.min && range.max && *range.min > *range.max) {
-    fail("the lower end is above the upper end");
-  }
-  if (!low.empty()) ParseQuantity(low, spec, name);
-  if (!high.empty()) ParseQuantity(high, spec, name);
-  return range;
+  return AsInputError([&] {
+    return scene_file::ParseQuantityRange(text, spec, name, name == "--strength" ? "100kPa..1MPa" : "");
+  });
 }
 
 Json MaterialToJson(const Material& m) { return Json::parse(report::MaterialJson(m)); }

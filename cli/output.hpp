@@ -20,6 +20,7 @@
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/core/time_integration.hpp"
+#include "covopt/report/csv.hpp"
 #include "covopt/report/simulation_json.hpp"
 
 namespace covopt::cli {
@@ -80,9 +81,8 @@ inline constexpr std::string_view kHistoryCsvExtendedColumns =
 /// (model.TensileFromCompressive), the stress the laceration limit judges.
 std::string HistoryCsv(const ImpactModel& model, const std::vector<HistorySample>& history);
 
-/// One CSV field: as it is, or, when it holds a comma, a quote or a line break, in double
-/// quotes with inner quotes doubled (RFC 4180).
-std::string CsvField(std::string_view text);
+/// One CSV field, by covopt's one CSV rule (covopt/report/csv.hpp, RFC 4180).
+using report::CsvField;
 
 /// An output file (--history, --csv, a plot, sweep's streamed CSV, ...), written whole or
 /// piece by piece. Every file the CLI writes goes through it. What is at the path decides

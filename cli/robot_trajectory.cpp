@@ -16,6 +16,7 @@
 #include <fmt/ostream.h>
 
 #include "covopt/optim/trajectory_check.hpp"
+#include "covopt/report/csv.hpp"
 #include "covopt/report/trajectory_json.hpp"
 #include "covopt/robot/trajectory.hpp"
 #include "errors.hpp"
@@ -49,19 +50,9 @@ std::string MassText(double kg) { return std::isinf(kg) ? std::string("fixed") :
 
 std::string CsvText(const optim::TrajectoryCheck& check) {
   std::string text;
-  for (const std::string_view column : report::TrajectorySampleColumns()) {
-    text += text.empty() ? "" : ",";
-    text += column;
-  }
-  text += '\n';
+  report::AppendCsvRecord(text, report::TrajectorySampleColumns());
   for (const optim::SampleVerdict& sample : check.samples) {
-    bool first = true;
-    for (const std::string& cell : report::TrajectorySampleCsvCells(sample)) {
-      text += first ? "" : ",";
-      text += cell;  // numbers, "fixed", criterion names, true/false: nothing to quote
-      first = false;
-    }
-    text += '\n';
+    report::AppendCsvRecord(text, report::TrajectorySampleCsvCells(sample));
   }
   return text;
 }

@@ -1,90 +1,46 @@
 #include "scene_fields.hpp"
 
-#include <array>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "errors.hpp"
 
 namespace covopt::cli {
 namespace {
 
-namespace specs = covopt::quantity_specs;
-
-/// The library's fields, each with its flag "--" + name (the flags are stored once, for
-/// the life of the program, so the string_views stay valid).
-struct FieldTable {
+/// The flags are stored once, for the life of the program, so the string_views stay valid.
+template <class CliField, class LibraryField>
+struct FlagTable {
   std::vector<std::string> flags;
-  std::vector<SceneField> fields;
+  std::vector<CliField> fields;
 
-  FieldTable() {
-    const auto library = covopt::SceneFields();
+  explicit FlagTable(std::span<const LibraryField> library) {
     flags.reserve(library.size());
-    for (const covopt::SceneField& field : library) flags.push_back("--" + std::string(field.name));
+    for (const LibraryField& field : library) flags.push_back("--" + std::string(field.name));
     fields.reserve(library.size());
-    for (std::size_t i = 0; i < library.size(); ++i) {
-      fields.push_back(SceneField{library[i], flags[i]});
-    }
+    for (std::size_t i = 0; i < library.size(); ++i) fields.push_back(CliField{library[i], flags[i]});
   }
 };
-
-const FieldTable& Fields() {
-  static const FieldTable table;
-  return table;
-}
-
-const std::array kLimitFields{
-  LimitField{"laceration", "--laceration-limit", specs::kLacerationLimit,
-             "laceration limit: the skin's tensile strength, e.g. 1MPa"},
-  LimitField{"contusion", "--contusion-limit", specs::kContusionLimit,
-             "contusion limit: the largest energy density, e.g. 2.52J/cm2"},
-  LimitField{"safety_factor", "--safety-factor", specs::kSafetyFactor,
-             "the limits are divided by this factor, 1-100"},
-};
-
-constexpr std::array<std::string_view, 7> kTables{"robot", "covering", "head", "scalp",
-                                                  "skull", "model",    "limits"};
 
 }  // namespace
 
-std::span<const SceneField> SceneFields() noexcept { return Fields().fields; }
+std::span<const SceneField> SceneFields() noexcept {
+  static const FlagTable<SceneField, covopt::SceneField> table(covopt::SceneFields());
+  return table.fields;
+}
 
-std::span<const std::string_view> SceneTables() noexcept { return kTables; }
-
-std::string LimitField::dotted_name() const { return fmt::format("limits.{}", key); }
-
-std::span<const LimitField> LimitFields() noexcept { return kLimitFields; }
+std::span<const LimitField> LimitFields() noexcept {
+  static const FlagTable<LimitField, scene_file::LimitField> table(scene_file::LimitFields());
+  return table.fields;
+}
 
 void CheckLimitValue(const LimitField& field, double value, std::string_view name,
                      std::string_view shown) {
-  if (field.spec.kind == QuantityKind::kDimensionless) {
-    if (!(value >= 1.0 && value <= kMaxSafetyFactor)) {
-      throw InputError(
-          fmt::format("{} must be in [1, {:g}] (got {})", name, kMaxSafetyFactor, shown));
-    }
-    return;
-  }
-  if (!(value > 0.0)) {
-    throw InputError(fmt::format("{} must be > 0 {} (got {})", name, SiUnit(field.spec.kind),
-                                 shown));
-  }
+  AsInputError([&] { scene_file::CheckLimitValue(field, value, name, shown); });
 }
 
 ThresholdReading ParseThresholds(std::string_view text, std::string_view name) {
-  if (text == "cumulative") return ThresholdReading::kCumulative;
-  if (text == "literal") return ThresholdReading::kLiteral;
-  throw InputError(
-      fmt::format("{}: expected 'cumulative' or 'literal' (got '{}')", name, text));
-}
-
-std::string_view ThresholdsName(ThresholdReading reading) noexcept {
-  switch (reading) {
-    case ThresholdReading::kCumulative: return "cumulative";
-    case ThresholdReading::kLiteral: return "literal";
-  }
-  return "unknown";
+  return AsInputError([&] { return scene_file::ParseThresholds(text, name); });
 }
 
 }  // namespace covopt::cli

@@ -1,72 +1,38 @@
 #pragma once
 /// @file scene_file.hpp
-/// Scene files: TOML with the tables and keys of the command line's scene flags.
-///
-///     [robot]    mass speed radius modulus poisson
-///     [covering] modulus poisson thickness material  (thickness = 0: no covering)
-///     [head]     mass radius
-///     [scalp]    modulus poisson thickness
-///     [skull]    modulus poisson
-///     [model]    thresholds = "cumulative" | "literal"
-///     [limits]   laceration contusion safety_factor
-///
-/// A value is a TOML number (SI) or a string with a unit ("15mm", "2 m/s", "fixed", "flat"),
-/// read by ParseQuantity. A bare TOML number must be plausible for its quantity, as on the
-/// command line (covopt/core/quantity.hpp): `radius = 40` is refused as 40 m, `"40mm"` and
-/// `"40m"` are taken as written. `covering.material` is a catalog material's name, which
-/// sets the covering's modulus and Poisson ratio (so it excludes covering.modulus and
-/// covering.poisson); the consumer looks it up. Every table and key is optional; what a file
-/// leaves out keeps the value it had. Unknown tables and keys, wrong types, bad values and
-/// TOML syntax errors are InputErrors that start with "file:line:column:". A string value
-/// "LO..HI" is a range (SceneFileExtras::ranges), refused where extras are not wanted.
+/// Scene files for the command line (--scene): the library's reader
+/// (covopt/scene_file/scene_file.hpp, which documents the format), with its bad-input
+/// std::invalid_argument turned into the CLI's InputError (exit 2), same message.
 
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "covopt/core/scene.hpp"
+#include "covopt/scene_file/scene_file.hpp"
 #include "scene_range.hpp"
 
 namespace covopt::cli {
 
-/// What a scene file sets besides the Scene: the [limits] table and covering.material.
-struct SceneFileExtras {
-  /// limits.laceration: the laceration limit, tensile stress [Pa], > 0.
-  std::optional<double> laceration_limit_Pa;
-  /// limits.contusion: the contusion limit, energy density [J/m²], > 0.
-  std::optional<double> contusion_limit_J_per_m2;
-  /// limits.safety_factor: the limits are divided by it [-], in [1, 100].
-  std::optional<double> safety_factor;
-  /// covering.material: a catalog material's name, as written (not looked up here).
-  std::optional<std::string> covering_material;
-  /// Where covering.material is written, "file:line:column", for the consumer's messages.
-  std::string covering_material_where;
-  /// Fields written as a range, "3.7kg..5.8kg" (an uncertain input, docs/model.md §11); the
-  /// scene keeps its value there. Only simulate, optimize and speed-limit accept them.
-  std::vector<SceneRange> ranges;
+using scene_file::kMaxSceneFileBytes;
+using scene_file::SceneFileExtras;
+
+/// covopt::scene_file::ApplySceneFile, throwing InputError. A function object, like
+/// cli::ParseQuantity, so that argument-dependent lookup does not also find the library's.
+struct ApplySceneFileToInputError {
+  /// @throws InputError with the library's message ("scene.toml:3:8: unknown key ...").
+  std::vector<std::string> operator()(const std::filesystem::path& path, Scene& scene,
+                                      SceneFileExtras* extras = nullptr) const;
 };
+inline constexpr ApplySceneFileToInputError ApplySceneFile{};
 
-/// The largest scene file read [bytes], 1 MiB (the examples are under 2 kB). A larger file,
-/// or a device or FIFO that gives more (/dev/zero), is refused as soon as byte
-/// kMaxSceneFileBytes + 1 is read.
-inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{1} << 20;
-
-/// Reads the scene file at `path` into `scene` (and `extras`): the values it sets replace
-/// theirs.
-/// @param extras receives [limits] and covering.material; when null, a file that sets them
-///        is refused (the caller does not use them, and they must not be dropped silently).
-/// @return the fields the file set, by name ("robot.mass", "model.thresholds",
-///         "limits.laceration", "covering.material").
-/// @throws InputError if the file cannot be read or is not a valid scene file; `scene` and
-///         `extras` are then unchanged.
-std::vector<std::string> ApplySceneFile(const std::filesystem::path& path, Scene& scene,
-                                        SceneFileExtras* extras = nullptr);
-
-/// The same for TOML text; `source` names it in messages (usually the file name).
-/// @throws InputError as ApplySceneFile.
-std::vector<std::string> ApplySceneToml(std::string_view toml_text, std::string_view source,
-                                        Scene& scene, SceneFileExtras* extras = nullptr);
+/// covopt::scene_file::ApplySceneToml, throwing InputError.
+struct ApplySceneTomlToInputError {
+  /// @throws InputError with the library's message.
+  std::vector<std::string> operator()(std::string_view toml_text, std::string_view source,
+                                      Scene& scene, SceneFileExtras* extras = nullptr) const;
+};
+inline constexpr ApplySceneTomlToInputError ApplySceneToml{};
 
 }  // namespace covopt::cli

@@ -16,6 +16,7 @@
 #include "uncertainty_options.hpp"
 #include "covopt/optim/design.hpp"
 #include "covopt/optim/robust_design.hpp"
+#include "covopt/report/csv.hpp"
 #include "covopt/report/robust_json.hpp"
 #include <nlohmann/json.hpp>
 
@@ -133,22 +134,9 @@ void PrintRows(std::ostream& out, const SpeedLimitPlan& plan, const std::vector<
 
 std::string CsvText(const SpeedLimitPlan& plan, const std::vector<SpeedLimitRow>& rows) {
   std::string text;
-  const auto append_cell = [&](const std::string& cell) { text += CsvField(cell); };
-  bool first = true;
-  for (const std::string_view column : report::SpeedLimitColumns(plan.quantity)) {
-    text += first ? "" : ",";
-    text += column;
-    first = false;
-  }
-  text += '\n';
+  report::AppendCsvRecord(text, report::SpeedLimitColumns(plan.quantity));
   for (const SpeedLimitRow& row : rows) {
-    first = true;
-    for (const std::string& cell : report::SpeedLimitCsvCells(plan.quantity, row)) {
-      if (!first) text += ',';
-      append_cell(cell);
-      first = false;
-    }
-    text += '\n';
+    report::AppendCsvRecord(text, report::SpeedLimitCsvCells(plan.quantity, row));
   }
   return text;
 }

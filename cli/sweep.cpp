@@ -25,10 +25,14 @@
 #include <fmt/ostream.h>
 #include <fmt/ranges.h>
 
+#include "covopt/report/csv.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
 #include "output.hpp"
+#include "charts/sweep_charts.hpp"
 #include "plot.hpp"
+#include "progress.hpp"
+#include "sweep_csv.hpp"
 #include "quantity.hpp"
 
 namespace covopt::cli {
@@ -87,473 +91,9 @@ const SceneField* FindField(std::string_view name) {
   return nullptr;
 }
 
-/// An axis value for the CSV: SI, or the word for an infinite mass/radius.
-std::string AxisValueText(const SweepAxis& axis, double value) {
-  if (std::isinf(value) && value > 0) {
-    return axis.field->spec.allow_flat ? "flat" : "fixed";
-  }
-  return fmt::format("{}", value);
-}
-
-/// Appends `text` with inner quotes doubled and line breaks as spaces, in runs.
-void AppendCsvEscaped(fmt::memory_buffer& out, std::string_view text) {
-  const char* run = text.data();
-  const char* const end = text.data() + text.size();
-  for (const char* p = run; p != end; ++p) {
-    if (*p != '"' && *p != '\n' && *p != '\r') continue;
-    out.append(run, p);
-    if (*p == '"') {
-      out.push_back('"');
-      out.push_back('"');
-    } else {
-      out.push_back(' ');
-    }
-    run = p + 1;
-  }
-  out.append(run, end);
-}
-
-/// Appends a CSV text field: quoted, with inner quotes doubled and line breaks as spaces;
-/// nothing for an empty text.
-void AppendCsvText(fmt::memory_buffer& out, std::string_view text) {
-  if (text.empty()) return;
-  out.push_back('"');
-  AppendCsvEscaped(out, text);
-  out.push_back('"');
-}
-
-/// Appends the warnings' messages joined by " | " as one CSV text field (nothing when the
-/// joined text is empty).
-void AppendCsvWarnings(fmt::memory_buffer& out, std::span<const covopt::ValidityWarning> warnings) {
-  constexpr std::string_view kSeparator = " | ";
-  std::size_t length = 0;
-  for (const covopt::ValidityWarning& warning : warnings) length += warning.message.size();
-  if (length == 0 && warnings.size() < 2) return;
-  out.push_back('"');
-  for (std::size_t i = 0; i < warnings.size(); ++i) {
-    if (i > 0) out.append(kSeparator.data(), kSeparator.data() + kSeparator.size());
-    AppendCsvEscaped(out, warnings[i].message);
-  }
-  out.push_back('"');
-}
-
-using covopt::SweepRow;
-
-/// The result columns and how each is read; the names are the keys of simulate --json
-/// (cli/output.cpp ToJson), which tests/cli/test_sweep.cpp checks.
-struct ResultColumn {
-  std::string_view name;
-  double (*value)(const SweepRow&);
-  /// The value is always one of 0..9 (a phase number or a 0/1 flag): the CSV writes its
-  /// digit directly, the text "{}" gives.
-  bool digit = false;
-};
-double Optional(const std::optional<double>& v) {
-  return v ? *v : std::numeric_limits<double>::quiet_NaN();
-}
-// clang-format off
-const std::array kResultColumns{
-  ResultColumn{"max_penetration_m", [](const SweepRow& p) { return p.peaks.max_penetration_m; }, false},
-  ResultColumn{"peak_force_N", [](const SweepRow& p) { return p.peaks.peak_force_N; }, false},
-  ResultColumn{"contact_duration_s", [](const SweepRow& p) { return Optional(p.contact_duration_s); }, false},
-  ResultColumn{"time_of_max_compression_s", [](const SweepRow& p) { return Optional(p.time_of_max_compression_s); }, false},
-  ResultColumn{"max_compressive_stress_Pa", [](const SweepRow& p) { return p.peaks.max_compressive_stress_Pa; }, false},
-  ResultColumn{"max_tensile_stress_Pa", [](const SweepRow& p) { return p.peaks.max_tensile_stress_Pa; }, false},
-  ResultColumn{"max_energy_density_J_per_m2", [](const SweepRow& p) { return p.peaks.max_energy_density_J_per_m2; }, false},
-  ResultColumn{"rebound_speed_m_per_s", [](const SweepRow& p) { return p.rebound_speed_m_per_s; }, false},
-  ResultColumn{"coefficient_of_restitution", [](const SweepRow& p) { return p.coefficient_of_restitution; }, false},
-  ResultColumn{"phase_at_max", [](const SweepRow& p) { return static_cast<double>(PhaseNumber(p.peaks.phase_at_max)); }, true},
-  ResultColumn{"scalp_fully_compressed", [](const SweepRow& p) { return p.peaks.scalp_fully_compressed ? 1.0 : 0.0; }, true},
-  ResultColumn{"fully_compressed", [](const SweepRow& p) { return p.peaks.fully_compressed ? 1.0 : 0.0; }, true},
-  ResultColumn{"safe", [](const SweepRow& p) { return p.assessment.safe() ? 1.0 : 0.0; }, true},
-  ResultColumn{"laceration_ratio", [](const SweepRow& p) { return p.assessment.laceration.ratio; }, false},
-  ResultColumn{"contusion_ratio", [](const SweepRow& p) { return p.assessment.contusion.ratio; }, false},
-  ResultColumn{"worst_ratio", [](const SweepRow& p) { return p.worst_ratio; }, false},
-};
-// clang-format on
-const std::array<std::string_view, kResultColumns.size()> kResultColumnNames = [] {
-  std::array<std::string_view, kResultColumns.size()> names{};
-  for (std::size_t i = 0; i < names.size(); ++i) names[i] = kResultColumns[i].name;
-  return names;
-}();
-
-/// How a kind is shown on a chart axis: SI value / scale, in unit.
-struct DisplayUnit {
-  double scale;
-  std::string_view unit;
-};
-DisplayUnit DisplayFor(QuantityKind kind) {
-  switch (kind) {
-    case QuantityKind::kMass: return {1.0, "kg"};
-    case QuantityKind::kLength: return {1e-3, "mm"};
-    case QuantityKind::kSpeed: return {1.0, "m/s"};
-    case QuantityKind::kModulus: return {1e6, "MPa"};
-    case QuantityKind::kDensity: return {1.0, "kg/m³"};
-    case QuantityKind::kDimensionless: return {1.0, ""};
-    case QuantityKind::kEnergyDensity: return {1e4, "J/cm²"};
-    case QuantityKind::kTime: return {1e-3, "ms"};
-    case QuantityKind::kAcceleration: return {1.0, "m/s²"};
-    case QuantityKind::kDampingCoefficient: return {1.0, "s/m"};
-    case QuantityKind::kStiffness: return {1e3, "kN/m"};
-    case QuantityKind::kViscousDamping: return {1.0, "N·s/m"};
-  }
-  return {1.0, ""};
-}
-
-std::string AxisLabel(const SweepAxis& axis) {
-  const DisplayUnit unit = DisplayFor(axis.field->spec.kind);
-  return unit.unit.empty() ? axis.name : fmt::format("{} [{}]", axis.name, unit.unit);
-}
-
-std::string Display(const SweepAxis& axis, double si) {
-  return FormatQuantity(si, axis.field->spec.kind);
-}
-
-/// One number for a gnuplot data block; NaN marks a point gnuplot must skip.
-std::string PlotNumber(double v) { return std::isfinite(v) ? fmt::format("{}", v) : "NaN"; }
-
-/// How a result column is shown on a chart: value / scale, in unit.
-struct ColumnDisplay {
-  double scale;
-  std::string_view unit;
-};
-ColumnDisplay DisplayFor(std::string_view column) {
-  const auto ends = [&](std::string_view suffix) {
-    return column.size() >= suffix.size() && column.substr(column.size() - suffix.size()) == suffix;
-  };
-  if (ends("_Pa")) return {1e6, "MPa"};
-  if (ends("_J_per_m2")) return {1e4, "J/cm²"};
-  if (ends("_m_per_s")) return {1.0, "m/s"};
-  if (ends("_m")) return {1e-3, "mm"};
-  if (ends("_s")) return {1e-3, "ms"};
-  if (ends("_N")) return {1.0, "N"};
-  return {1.0, ""};
-}
-
-const ResultColumn* FindColumn(std::string_view name) {
-  for (const ResultColumn& column : kResultColumns) {
-    if (column.name == name) return &column;
-  }
-  return nullptr;
-}
-
-std::string ColumnLabel(const ResultColumn& column) {
-  const ColumnDisplay d = DisplayFor(column.name);
-  return d.unit.empty() ? std::string(column.name) : fmt::format("{} [{}]", column.name, d.unit);
-}
-
-/// What a chart needs of one grid point: the rest of its row is not kept.
-struct ChartPoint {
-  bool valid = false;             ///< SweepRow::valid; nothing else means anything if false
-  bool fully_compressed = false;  ///< ImpactPeaks::fully_compressed
-  double laceration_ratio = 0.0;  ///< [-]
-  double contusion_ratio = 0.0;   ///< [-]
-  double worst_ratio = 0.0;       ///< [-]
-  double quantity = 0.0;          ///< the --plot-quantity column [SI], if any
-  double compression_ratio = 0.0; ///< δ_max / t2 [-]
-};
-
-ChartPoint ChartPointOf(const SweepRow& row, const ResultColumn* quantity) {
-  if (!row.valid) return {};
-  return {true,
-          row.peaks.fully_compressed,
-          row.assessment.laceration.ratio,
-          row.assessment.contusion.ratio,
-          row.worst_ratio,
-          quantity ? quantity->value(row) : 0.0,
-          row.compression_ratio};
-}
-
-struct PlotInput {
-  const ResultColumn* quantity = nullptr;  ///< --plot-quantity; null: the injury ratios
-  const SweepAxis* x = nullptr;
-  const SweepAxis* y = nullptr;
-  std::span<const ChartPoint> points;  ///< every grid point, in grid order
-  InjuryLimits limits;                 ///< the limits the ratios are taken against
-  std::string scene_line;         ///< the quantities not swept, one line
-  /// A point is safe when safety_factor x ratio <= 1: the limit lines sit at ratio
-  /// 1/safety_factor (the derated limits).
-  double safety_factor = 1.0;
-  PlotFormat format = PlotFormat::kPng;
-};
-
-std::size_t PointIndex(const PlotInput& in, std::size_t ix, std::size_t iy) {
-  const std::size_t ny = in.y ? in.y->values.size() : 1;
-  return ix * ny + iy;
-}
-const ChartPoint& At(const PlotInput& in, std::size_t ix, std::size_t iy) {
-  return in.points[PointIndex(in, ix, iy)];
-}
-
-/// The indices of an axis's finite values in ascending order of value, each value once:
-/// the order a chart draws them in (a mixed list is typed in any order).
-std::vector<std::size_t> ChartOrder(const SweepAxis& axis) {
-  std::vector<std::size_t> order;
-  for (std::size_t i = 0; i < axis.values.size(); ++i) {
-    if (std::isfinite(axis.values[i])) order.push_back(i);
-  }
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return axis.values[a] < axis.values[b]; });
-  order.erase(std::unique(order.begin(), order.end(),
-                          [&](std::size_t a, std::size_t b) {
-                            return axis.values[a] == axis.values[b];
-                          }),
-              order.end());
-  return order;
-}
-
-/// The gnuplot title: `lines` joined by gnuplot's line breaks.
-std::string TitleText(const std::vector<std::string>& lines) {
-  return fmt::format("{}", fmt::join(lines, "\\n"));
-}
-
-/// The 2-D map: worst ratio in colour, the ratio-1 contours of laceration and contusion,
-/// and the full-compression boundary (δ_max = t2: beyond it the robot reaches bone
-/// through the covering).
-std::string MapScript(const PlotInput& in, const std::string& output) {
-  const SweepAxis& x = *in.x;
-  const SweepAxis& y = *in.y;
-  const double sx = DisplayFor(x.field->spec.kind).scale;
-  const double sy = DisplayFor(y.field->spec.kind).scale;
-  const std::vector<std::size_t> x_order = ChartOrder(x);
-  const std::vector<std::size_t> y_order = ChartOrder(y);
-  std::size_t invalid = 0;
-  bool lac_below = false, lac_above = false, con_below = false, con_above = false;
-  bool full_below = false, full_above = false;
-  const double at_limit = 1.0 / in.safety_factor;  // the ratio at the (derated) limit
-  for (std::size_t i = 0; i < in.points.size(); ++i) {
-    const ChartPoint& p = in.points[i];
-    if (!p.valid) {
-      ++invalid;
-      continue;
-    }
-    (p.laceration_ratio <= at_limit ? lac_below : lac_above) = true;
-    (p.contusion_ratio <= at_limit ? con_below : con_above) = true;
-    (p.fully_compressed ? full_above : full_below) = true;
-  }
-  std::vector<std::string> notes;
-  if (!(lac_below && lac_above)) {
-    notes.push_back(fmt::format("laceration ratio {} {:.4g} everywhere", lac_above ? ">" : "<=",
-                                at_limit));
-  }
-  if (!(con_below && con_above)) {
-    notes.push_back(fmt::format("contusion ratio {} {:.4g} everywhere", con_above ? ">" : "<=",
-                                at_limit));
-  }
-  if (!(full_below && full_above)) {
-    notes.push_back(full_above ? "fully compressed everywhere" : "never fully compressed");
-  }
-  if (invalid > 0) notes.push_back(fmt::format("{} invalid points left blank", invalid));
-
-  std::vector<std::string> title{
-      fmt::format("covopt sweep: {} over {} and {}",
-                  in.quantity ? fmt::format("{} with the injury limits", in.quantity->name)
-                              : std::string("worst injury ratio max(laceration, contusion)"),
-                  x.name, y.name),
-      "scene: " + in.scene_line};
-  if (!notes.empty()) title.push_back(fmt::format("{}", fmt::join(notes, "; ")));
-
-  std::string s = "set encoding utf8\n";
-  s += GnuplotTerminal(in.format, 1000, 820);
-  s += fmt::format("set output {}\n", GnuplotQuoted(output));
-  // gnuplot grows a title downwards onto the plot: lift it by a line per extra line.
-  s += fmt::format("set title \"{}\" offset 0, {}\n", TitleText(title), title.size() - 1);
-  s += fmt::format("set xlabel {}\nset ylabel {}\n", GnuplotQuoted(AxisLabel(x)),
-                   GnuplotQuoted(AxisLabel(y)));
-  if (in.quantity) {
-    s += fmt::format("set cblabel {}\n", GnuplotQuoted(ColumnLabel(*in.quantity)));
-  } else if (in.safety_factor == 1.0) {
-    s += "set cblabel 'worst ratio (1 = at a limit; above 2 shown as 2)'\n";
-  } else {
-    s += fmt::format("set cblabel 'worst ratio ({:.4g} = at a limit / safety factor {:g}; above "
-                     "{:.4g} shown as {:.4g})'\n",
-                     at_limit, in.safety_factor, 2.0 * at_limit, 2.0 * at_limit);
-  }
-  if (x.log) s += "set logscale x\n";
-  if (y.log) s += "set logscale y\n";
-  // The axis ranges: the finite values of each axis.
-  if (!x_order.empty() && !y_order.empty()) {
-    s += fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", x.values[x_order.front()] / sx,
-                     x.values[x_order.back()] / sx, y.values[y_order.front()] / sy,
-                     y.values[y_order.back()] / sy);
-  }
-  if (in.quantity) {
-    s += "set palette defined (0 '#f7fbff', 0.35 '#9ecae1', 0.7 '#3182bd', 1 '#08306b')\n";
-  } else {
-    s += fmt::format("set cbrange [0:{}]\n", 2.0 * at_limit);
-    s += "set palette defined (0 '#1a7f3c', 0.5 '#8fd18b', 0.98 '#f4f1bb', 1.02 '#fdd49e', "
-         "1.5 '#f0793d', 2 '#a50f15')\n";
-  }
-  const double qscale = in.quantity ? DisplayFor(in.quantity->name).scale : 1.0;
-  // Columns: x, y, laceration ratio, contusion ratio, the coloured value, compression ratio.
-  s += "$grid << EOD\n";
-  for (const std::size_t ix : x_order) {
-    for (const std::size_t iy : y_order) {
-      const ChartPoint& p = At(in, ix, iy);
-      const bool ok = p.valid;
-      s += fmt::format("{} {} {} {} {} {}\n", x.values[ix] / sx, y.values[iy] / sy,
-                       PlotNumber(ok ? p.laceration_ratio : NAN),
-                       PlotNumber(ok ? p.contusion_ratio : NAN),
-                       PlotNumber(ok ? (in.quantity ? p.quantity / qscale : p.worst_ratio) : NAN),
-                       PlotNumber(ok ? p.compression_ratio : NAN));
-    }
-    s += "\n";
-  }
-  s += "EOD\n";
-  // Dots on the fully compressed side, on a coarse subgrid (about 25 x 25) so the colours
-  // stay readable. An empty block still gives the key entry.
-  s += "$stipple << EOD\n";
-  const std::size_t x_step = std::max<std::size_t>(1, x_order.size() / 25);
-  const std::size_t y_step = std::max<std::size_t>(1, y_order.size() / 25);
-  bool stippled = false;
-  for (std::size_t i = 0; i < x_order.size(); i += x_step) {
-    for (std::size_t j = 0; j < y_order.size(); j += y_step) {
-      const ChartPoint& p = At(in, x_order[i], y_order[j]);
-      if (p.valid && p.fully_compressed) {
-        s += fmt::format("{} {}\n", x.values[x_order[i]] / sx, y.values[y_order[j]] / sy);
-        stippled = true;
-      }
-    }
-  }
-  if (!stippled) s += "NaN NaN\n";
-  s += "EOD\n";
-  // The limit contours and the full-compression boundary, traced by gnuplot into data blocks.
-  s += fmt::format("set contour base\nset cntrparam levels discrete {}\nunset surface\n",
-                   at_limit);
-  s += "set table $lac\nsplot $grid using 1:2:3 notitle\nunset table\n";
-  s += "set table $con\nsplot $grid using 1:2:4 notitle\nunset table\n";
-  s += "set cntrparam levels discrete 1\n";
-  s += "set table $full\nsplot $grid using 1:2:6 notitle\nunset table\n";
-  s += "unset contour\nset surface\n";
-  s += "set view map\nset pm3d explicit at b\n";
-  // Room for the title lines above the plot, and for the key below the axis label.
-  s += fmt::format("set tmargin at screen {}\nset bmargin 6.5\n",
-                   1.0 - 0.025 * (static_cast<double>(title.size()) + 1.5));
-  s += "set key at screen 0.5, screen 0.05 center center horizontal maxrows 2 width 0 "
-       "samplen 4\n";
-  s += "set grid front linecolor rgb '#888888'\n";
-  // "limit (ratio 1)", or with a safety factor "limit / 1.5 (ratio 0.6667)".
-  const std::string limit_text =
-      in.safety_factor == 1.0
-          ? std::string("limit (ratio 1)")
-          : fmt::format("limit / {:g} (ratio {:.4g})", in.safety_factor, at_limit);
-  s += fmt::format(
-      "splot $grid using 1:2:5 with pm3d notitle, \\\n"
-      "      $lac using 1:2:(0) with lines linewidth 2.5 linecolor rgb '#1f5fa8' "
-      "title 'laceration {0}', \\\n"
-      "      $con using 1:2:(0) with lines linewidth 2.5 dashtype 2 linecolor rgb '#000000' "
-      "title 'contusion {0}', \\\n",
-      limit_text);
-  s += "      $full using 1:2:(0) with lines linewidth 3 dashtype (10,4,2,4) linecolor rgb "
-       "'#6c3483' title 'full-compression boundary (δ_max = t2)', \\\n"
-       "      $stipple using 1:2:(0) with points pointtype 7 pointsize 0.3 linecolor rgb "
-       "'#4a235a' title 'fully compressed (dots): the robot reaches bone'\n";
-  s += "unset output\n";
-  return s;
-}
-
-/// Line families: laceration and contusion ratio against the long axis, one line per
-/// value of the short axis (or one line without a second axis); the points where the
-/// covering is fully compressed are ringed.
-std::string FamiliesScript(const PlotInput& in, const std::string& output) {
-  // along: the horizontal axis; family: one line per value (may be absent).
-  const bool families_on_y = in.y == nullptr || in.y->values.size() <= kMaxFamilies;
-  const SweepAxis& along = families_on_y ? *in.x : *in.y;
-  const SweepAxis* family = families_on_y ? in.y : in.x;
-  const double scale = DisplayFor(along.field->spec.kind).scale;
-  const std::size_t lines = family ? family->values.size() : 1;
-  const double qscale = in.quantity ? DisplayFor(in.quantity->name).scale : 1.0;
-  const std::vector<std::size_t> along_order = ChartOrder(along);
-
-  std::string s = "set encoding utf8\n";
-  s += GnuplotTerminal(in.format, 1000, in.quantity ? 650 : 900);
-  s += fmt::format("set output {}\n", GnuplotQuoted(output));
-  // Columns: along, laceration ratio, contusion ratio, quantity, fully compressed (0/1).
-  s += "$data << EOD\n";
-  bool any_fully_compressed = false;
-  for (std::size_t line = 0; line < lines; ++line) {
-    for (const std::size_t i : along_order) {
-      const ChartPoint& p = families_on_y ? At(in, i, in.y ? line : 0) : At(in, line, i);
-      const bool ok = p.valid;
-      const bool full = ok && p.fully_compressed;
-      any_fully_compressed = any_fully_compressed || full;
-      s += fmt::format("{} {} {} {} {}\n", along.values[i] / scale,
-                       PlotNumber(ok ? p.laceration_ratio : NAN),
-                       PlotNumber(ok ? p.contusion_ratio : NAN),
-                       PlotNumber(ok && in.quantity ? p.quantity / qscale : NAN),
-                       full ? 1 : 0);
-    }
-    s += "\n\n";
-  }
-  s += "EOD\n";
-  const std::array<std::string_view, kMaxFamilies> colours{
-      "#1f5fa8", "#c0392b", "#2e8b57", "#8e44ad", "#d68910", "#17a2b8", "#555555", "#e84393"};
-  const auto clauses = [&](int column, bool limit) {
-    std::string c;
-    for (std::size_t line = 0; line < lines; ++line) {
-      const std::string title =
-          family ? fmt::format("{} {}", family->name, Display(*family, family->values[line]))
-                 : std::string("covopt");
-      c += fmt::format(
-          "$data index {} using 1:{} with linespoints linewidth 2 pointtype 7 "
-          "pointsize 0.4 linecolor rgb '{}' title {}, ",
-          line, column, colours[line % colours.size()], GnuplotQuoted(title));
-    }
-    if (any_fully_compressed) {
-      c += fmt::format(
-          "$data using 1:($5 > 0.5 ? ${} : NaN) with points pointtype 6 pointsize 1.3 "
-          "linewidth 1.5 linecolor rgb '#000000' title 'fully compressed (δ_max > t2)', ",
-          column);
-    }
-    if (!limit) {
-      c.resize(c.size() - 2);  // the last ", "
-      return c + "\n";
-    }
-    return c + fmt::format("{} with lines dashtype 2 linewidth 1.5 linecolor rgb '#000000' "
-                           "title {}\n",
-                           1.0 / in.safety_factor,
-                           GnuplotQuoted(in.safety_factor == 1.0
-                                             ? std::string("limit")
-                                             : fmt::format("limit / {:g}", in.safety_factor)));
-  };
-
-  if (along.log) s += "set logscale x\n";
-  s += fmt::format("set xlabel {}\n", GnuplotQuoted(AxisLabel(along)));
-  s += "set grid linecolor rgb '#dddddd'\nset key outside right top\nset yrange [0:*]\n";
-  const std::string against =
-      family ? fmt::format("against {}, one line per {}", along.name, family->name)
-             : fmt::format("against {}", along.name);
-  std::vector<std::string> title{"", "scene: " + in.scene_line};
-  if (std::any_of(along.values.begin(), along.values.end(),
-                  [](double v) { return !std::isfinite(v); })) {
-    title.push_back(fmt::format("{} {} not on the axis (see the CSV)", along.name,
-                                along.field->spec.allow_flat ? "flat" : "fixed"));
-  }
-  s += "set autoscale xfix\n";
-  if (in.quantity) {
-    const bool ratio = in.quantity->name.find("ratio") != std::string_view::npos;
-    title.front() = fmt::format("covopt sweep: {} {}", in.quantity->name, against);
-    s += fmt::format("set title \"{}\"\n", TitleText(title));
-    s += fmt::format("set ylabel {}\n", GnuplotQuoted(ColumnLabel(*in.quantity)));
-    s += "plot " + clauses(4, ratio);
-    s += "unset output\n";
-    return s;
-  }
-  title.front() = fmt::format("covopt sweep: injury ratios {}", against);
-  s += fmt::format("set multiplot layout 2,1 title \"{}\"\n", TitleText(title));
-  s += fmt::format("set ylabel 'laceration ratio (tensile stress / {:g} MPa)'\n",
-                   in.limits.laceration_tensile_stress_Pa / 1e6);
-  s += "plot " + clauses(2, true);
-  s += fmt::format("set ylabel 'contusion ratio (energy density / {:g} J/cm²)'\n",
-                   in.limits.contusion_energy_density_J_per_m2 / 1e4);
-  s += "plot " + clauses(3, true);
-  s += "unset multiplot\nunset output\n";
-  return s;
-}
-
 /// "0.1 MPa .. 1 GPa, 200 values, log", "3 values: 1 kg, 5 kg, fixed" or, for a mixed
 /// list, "11 values: 2 mm .. 500 mm (10, log), flat".
-std::string DescribeAxis(const SweepAxis& axis) {
+std::string DescribeAxis(const SweepAxisArgument& axis) {
   const auto& v = axis.values;
   const auto& parts = axis.parts;
   if (parts.size() == 1 && parts.front().range) {
@@ -573,54 +113,16 @@ std::string DescribeAxis(const SweepAxis& axis) {
                      fmt::join(shown, ", "));
 }
 
-std::string PointName(const SweepAxis& x, const SweepAxis* y, std::size_t index) {
+std::string PointName(const SweepAxisArgument& x, const SweepAxisArgument* y, std::size_t index) {
   const std::size_t ny = y ? y->values.size() : 1;
   std::string name = fmt::format("{} {}", x.name, Display(x, x.values[index / ny]));
   if (y) name += fmt::format(", {} {}", y->name, Display(*y, y->values[index % ny]));
   return name;
 }
 
-/// A progress bar on a terminal, drawn only once the sweep has run for a while.
-class ProgressBar {
- public:
-  explicit ProgressBar(bool enabled) : enabled_(enabled) {}
-  ~ProgressBar() { Finish(); }
-  ProgressBar(const ProgressBar&) = delete;
-  ProgressBar& operator=(const ProgressBar&) = delete;
-
-  void Update(std::size_t done, std::size_t total) {
-    if (!enabled_ || total == 0) return;
-    const auto now = Clock::now();
-    if (now - start_ < std::chrono::milliseconds(300)) return;
-    if (drawn_ && now - last_ < std::chrono::milliseconds(100) && done < total) return;
-    last_ = now;
-    drawn_ = true;
-    constexpr int kWidth = 40;
-    const double fraction = static_cast<double>(done) / static_cast<double>(total);
-    const int filled = static_cast<int>(fraction * kWidth);
-    fmt::print(stderr, "\rsweep [{}{}] {:3.0f} % {}/{}", std::string(filled, '#'),
-               std::string(kWidth - filled, ' '), 100.0 * fraction, done, total);
-    std::fflush(stderr);
-  }
-  void Finish() {
-    if (drawn_) {
-      fmt::print(stderr, "\r\033[K");
-      std::fflush(stderr);
-      drawn_ = false;
-    }
-  }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  bool enabled_;
-  bool drawn_ = false;
-  Clock::time_point start_ = Clock::now();
-  Clock::time_point last_ = start_;
-};
-
 }  // namespace
 
-SweepAxis ParseSweepAxis(std::string_view text, std::string_view flag) {
+SweepAxisArgument ParseSweepAxis(std::string_view text, std::string_view flag) {
   const auto fail = [&](const std::string& problem) -> void {
     throw InputError(fmt::format("{}: {} (got '{}')", flag, problem, text));
   };
@@ -631,7 +133,7 @@ SweepAxis ParseSweepAxis(std::string_view text, std::string_view flag) {
   }
   const std::string_view name = Trim(text.substr(0, eq));
   const std::string_view spec = Trim(text.substr(eq + 1));
-  SweepAxis axis;
+  SweepAxisArgument axis;
   axis.field = FindField(name);
   if (axis.field == nullptr) {
     fail(fmt::format("unknown quantity '{}'; the quantities are {}", name, AxisNames()));
@@ -736,65 +238,7 @@ SweepAxis ParseSweepAxis(std::string_view text, std::string_view flag) {
   return axis;
 }
 
-std::span<const std::string_view> SweepResultColumns() noexcept { return kResultColumnNames; }
-
-SweepCsvWriter::SweepCsvWriter(const SweepAxis& x, const SweepAxis* y, Sink sink)
-    : x_(x), y_(y), sink_(std::move(sink)) {
-  x_texts_.reserve(x.values.size());
-  for (const double value : x.values) x_texts_.push_back(AxisValueText(x, value));
-  if (y) {
-    y_texts_.reserve(y->values.size());
-    for (const double value : y->values) y_texts_.push_back(AxisValueText(*y, value));
-  }
-  const auto out = std::back_inserter(buffer_);
-  fmt::format_to(out, "{}", x.name);
-  if (y) fmt::format_to(out, ",{}", y->name);
-  fmt::format_to(out, ",status");
-  for (const ResultColumn& column : kResultColumns) fmt::format_to(out, ",{}", column.name);
-  fmt::format_to(out, ",warnings,error\n");
-}
-
-void SweepCsvWriter::Write(std::span<const SweepRow> rows) {
-  constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
-  const auto append = [this](std::string_view text) {
-    buffer_.append(text.data(), text.data() + text.size());
-  };
-  const auto out = std::back_inserter(buffer_);
-  for (const SweepRow& row : rows) {
-    append(x_texts_[row.ix]);
-    if (y_) {
-      buffer_.push_back(',');
-      append(y_texts_[row.iy]);
-    }
-    append(row.valid ? ",ok" : ",invalid");
-    for (const ResultColumn& column : kResultColumns) {
-      buffer_.push_back(',');
-      if (!row.valid) continue;
-      const double v = column.value(row);
-      if (column.digit) {
-        buffer_.push_back(static_cast<char>('0' + static_cast<int>(v)));
-      } else if (std::isfinite(v)) {
-        fmt::format_to(out, FMT_COMPILE("{}"), v);
-      }
-    }
-    buffer_.push_back(',');
-    if (row.valid) AppendCsvWarnings(buffer_, row.warnings);
-    buffer_.push_back(',');
-    AppendCsvText(buffer_, row.error);
-    buffer_.push_back('\n');
-    if (buffer_.size() >= kFlushBytes) Flush();
-  }
-}
-
-void SweepCsvWriter::Finish() { Flush(); }
-
-void SweepCsvWriter::Flush() {
-  if (buffer_.size() == 0) return;
-  sink_(std::string_view(buffer_.data(), buffer_.size()));
-  buffer_.clear();
-}
-
-covopt::SweepSpec MakeSweepSpec(const SweepAxis& x, const SweepAxis* y,
+covopt::SweepSpec MakeSweepSpec(const SweepAxisArgument& x, const SweepAxisArgument* y,
                                 const SimulationPlan& plan) {
   covopt::SweepSpec spec;
   spec.scene = plan.scene;
@@ -810,7 +254,7 @@ std::size_t SweepBlockRows(std::size_t points, unsigned threads) {
   return std::clamp<std::size_t>(per_block, 16, 1024);
 }
 
-CLI::App* SetupSweep(CLI::App& app, SweepOptions& options) {
+CLI::App* SetupSweep(CLI::App& app, SweepCommandOptions& options) {
   CLI::App* sub = app.add_subcommand(
       "sweep", "Sweep one or two scene quantities over a grid (exact path, or the time path where the "
                "scene needs it; all cores): CSV of "
@@ -852,12 +296,12 @@ CLI::App* SetupSweep(CLI::App& app, SweepOptions& options) {
   return sub;
 }
 
-int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) {
+int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "sweep");
 
   // Axes, scene and outputs.
-  SweepAxis x;
-  std::optional<SweepAxis> y;
+  SweepAxisArgument x;
+  std::optional<SweepAxisArgument> y;
   SimulationPlan plan;
   std::optional<PlotFormat> plot_format;
   unsigned threads = 0;
@@ -876,7 +320,7 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
                                    x.values.size(), y->values.size(),
                                    x.values.size() * y->values.size(), kMaxSweepPoints));
     }
-    for (const SweepAxis* axis : {&x, y ? &*y : nullptr}) {
+    for (const SweepAxisArgument* axis : {&x, y ? &*y : nullptr}) {
       if (axis == nullptr) continue;
       const std::string key = axis->field->dotted_name();
       const auto typed = options.scene.scene_values.find(key);
@@ -901,11 +345,11 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     }
     if (options.csv_file && options.csv_file->empty()) throw InputError("--csv: empty file name");
     if (options.plot_quantity) {
-      quantity = FindColumn(*options.plot_quantity);
+      quantity = FindResultColumn(*options.plot_quantity);
       if (quantity == nullptr) {
         throw InputError(fmt::format("--plot-quantity: no result column '{}'; the columns are {}",
                                      *options.plot_quantity,
-                                     fmt::join(kResultColumnNames, ", ")));
+                                     fmt::join(SweepResultColumns(), ", ")));
       }
       if (!options.plot_file) throw InputError("--plot-quantity applies only with --plot FILE");
     }
@@ -920,7 +364,7 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
   } catch (const InputError& e) {
     return errors.BadInput(e.what());
   }
-  const SweepAxis* y_axis = y ? &*y : nullptr;
+  const SweepAxisArgument* y_axis = y ? &*y : nullptr;
 
   // The scene without the swept quantities, for the summary and the chart titles.
   std::vector<std::string_view> swept_fields;
@@ -961,9 +405,9 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
   covopt::SweepOptions sweep;
   sweep.threads = wanted_threads;
   sweep.block_rows = SweepBlockRows(points, wanted_threads);
-  const bool terminal =
-      !options.no_progress && &err == &std::cerr && ::isatty(STDERR_FILENO) == 1;
-  ProgressBar bar(terminal);
+  // On a terminal only, once the sweep has run for a while.
+  ProgressBar bar(err, "sweep",
+                  ProgressBarOptions{.enabled = !options.no_progress, .delay = std::chrono::milliseconds(300)});
   sweep.progress = [&bar](std::size_t done, std::size_t total) { bar.Update(done, total); };
   std::vector<ChartPoint> chart;
   if (plot_format) chart.reserve(points);
@@ -1002,7 +446,7 @@ int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
       input.format = *plot_format;
       const bool map = y && x.values.size() > kMaxFamilies && y->values.size() > kMaxFamilies;
       RunGnuplot(*options.plot_file, [&](const std::string& output_path) {
-        return map ? MapScript(input, output_path) : FamiliesScript(input, output_path);
+        return map ? SweepMapScript(input, output_path) : SweepFamiliesScript(input, output_path);
       });
       written.push_back(*options.plot_file);
     }

@@ -46,7 +46,7 @@ class App;
 namespace covopt::cli {
 
 /// The options of `covopt sweep`, as typed.
-struct SweepOptions {
+struct SweepCommandOptions {
   /// --x NAME=SPEC: the first swept quantity (required).
   std::string x;
   /// --y NAME=SPEC: the second swept quantity, if any.
@@ -80,7 +80,7 @@ struct SweepAxisPart {
 };
 
 /// One swept quantity.
-struct SweepAxis {
+struct SweepAxisArgument {
   const SceneField* field = nullptr;  ///< the scene field it sets
   std::string name;                   ///< the flag without dashes: "covering-modulus"
   /// SI, in the order typed (each range expanded in place); kFixed/kFlat where listed as
@@ -101,47 +101,11 @@ inline constexpr std::size_t kMaxSweepPoints = 1000000;
 /// Reads "NAME=SPEC".
 /// @param flag "--x" or "--y", for messages.
 /// @throws InputError naming the flag, the value and what is allowed.
-SweepAxis ParseSweepAxis(std::string_view text, std::string_view flag);
-
-/// The result columns of the CSV after the swept quantities and `status`, in order: the
-/// numeric top-level keys of `simulate --json` (booleans as 0/1), then laceration_ratio,
-/// contusion_ratio, worst_ratio.
-std::span<const std::string_view> SweepResultColumns() noexcept;
-
-/// Writes the sweep's CSV as its rows arrive: header `<x name>[,<y name>],status,<result
-/// columns>,warnings,error`, then one row per point in the order received (grid order: x
-/// varying slowest). status is "ok" or "invalid"; an invalid point has empty result fields
-/// and the library's message in `error`; `warnings` holds the validity warnings joined by
-/// " | ". Numbers are SI, shortest round-trip decimals; an axis value of +inf is "fixed" or
-/// "flat". The text is built in one buffer and handed to the sink in pieces of about
-/// 1 MiB, so no row costs an allocation.
-class SweepCsvWriter {
- public:
-  /// Receives the CSV text in order, piece by piece; may throw (OutputError) to stop.
-  using Sink = std::function<void(std::string_view text)>;
-
-  /// Buffers the header. `x` and `y` must outlive the writer.
-  SweepCsvWriter(const SweepAxis& x, const SweepAxis* y, Sink sink);
-
-  /// Appends the rows (SweepRow::ix, iy index the axes' values).
-  void Write(std::span<const covopt::SweepRow> rows);
-  /// Hands what is buffered to the sink. Call once after the last rows.
-  void Finish();
-
- private:
-  void Flush();
-
-  const SweepAxis& x_;
-  const SweepAxis* y_;
-  Sink sink_;
-  std::vector<std::string> x_texts_;  // each axis value as the CSV shows it
-  std::vector<std::string> y_texts_;
-  fmt::memory_buffer buffer_;
-};
+SweepAxisArgument ParseSweepAxis(std::string_view text, std::string_view flag);
 
 /// The library's sweep of these axes over `plan`'s scene, limits and safety factor: what
 /// `covopt sweep` computes.
-covopt::SweepSpec MakeSweepSpec(const SweepAxis& x, const SweepAxis* y,
+covopt::SweepSpec MakeSweepSpec(const SweepAxisArgument& x, const SweepAxisArgument* y,
                                 const SimulationPlan& plan);
 
 /// Rows per block for a grid of `points` on `threads` threads: about eight blocks per
@@ -149,9 +113,9 @@ covopt::SweepSpec MakeSweepSpec(const SweepAxis& x, const SweepAxis* y,
 std::size_t SweepBlockRows(std::size_t points, unsigned threads);
 
 /// Adds the `sweep` subcommand to `app`, storing what is typed into `options`.
-CLI::App* SetupSweep(CLI::App& app, SweepOptions& options);
+CLI::App* SetupSweep(CLI::App& app, SweepCommandOptions& options);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
-int RunSweep(const SweepOptions& options, std::ostream& out, std::ostream& err);
+int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace covopt::cli

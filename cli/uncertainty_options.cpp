@@ -1,9 +1,6 @@
 #include "uncertainty_options.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cstdlib>
 #include <charconv>
 #include <cmath>
@@ -284,62 +281,6 @@ void PlotTornado(const std::string& path, const optim::ElasticityTable& table, b
               "title 'contusion ratio'\n";
     return script;
   });
-}
-
-namespace {
-
-/// COVOPT_PROGRESS: "bar", "lines" or "none" forces a style; unset or anything else: auto.
-std::string ProgressStyle() {
-  const char* style = std::getenv("COVOPT_PROGRESS");
-  return style == nullptr ? std::string() : std::string(style);
-}
-
-}  // namespace
-
-SamplingProgressBar::SamplingProgressBar(std::ostream& err, std::string label)
-    : err_(err), label_(std::move(label)) {
-  const std::string style = ProgressStyle();
-  if (&err != &std::cerr || style == "none") return;  // tests' streams stay clean
-  const bool terminal = isatty(STDERR_FILENO) == 1;
-  enabled_ = true;
-  lines_ = style == "lines" || (style != "bar" && !terminal);
-  lines_forced_ = style == "lines";
-  start_ = std::chrono::steady_clock::now();
-}
-
-SamplingProgressBar::~SamplingProgressBar() {
-  if (drawn_) err_ << "\r\033[K" << std::flush;  // leave the line clean for what follows
-}
-
-std::function<void(double)> SamplingProgressBar::Callback() {
-  if (!enabled_) return {};
-  if (lines_) {
-    // A log, a pipe: one line at each 10 % step, once the run has taken 5 s (short runs stay
-    // quiet; COVOPT_PROGRESS=lines prints them from the start), with the time elapsed and
-    // an estimate of the time left.
-    return [this](double fraction) {
-      const int tenth = static_cast<int>(std::floor(10.0 * std::clamp(fraction, 0.0, 1.0)));
-      if (tenth <= last_percent_ || tenth == 0) return;
-      last_percent_ = tenth;
-      const double elapsed =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-      if (!lines_forced_ && elapsed < 5.0) return;
-      const double left = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-      err_ << fmt::format("covopt: {} {} % done, {:.0f} s elapsed, about {:.0f} s left\n", label_, 10 * tenth,
-                          elapsed, left)
-           << std::flush;
-    };
-  }
-  return [this](double fraction) {
-    const int percent = static_cast<int>(std::floor(100.0 * std::clamp(fraction, 0.0, 1.0)));
-    if (percent == last_percent_) return;
-    last_percent_ = percent;
-    constexpr int kWidth = 40;
-    const int filled = percent * kWidth / 100;
-    err_ << '\r' << label_ << " [" << std::string(static_cast<std::size_t>(filled), '#')
-         << std::string(static_cast<std::size_t>(kWidth - filled), ' ') << "] " << percent << " %" << std::flush;
-    drawn_ = true;
-  };
 }
 
 }  // namespace covopt::cli

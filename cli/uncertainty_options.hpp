@@ -5,7 +5,6 @@
 /// --distribution into InjuryProbabilityOptions, and a progress bar on a terminal's stderr.
 
 #include <cstdint>
-#include <chrono>
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -15,6 +14,7 @@
 
 #include "covopt/core/scene.hpp"
 #include "covopt/optim/robust_design.hpp"
+#include "progress.hpp"
 #include "scene_range.hpp"
 
 namespace CLI {
@@ -76,31 +76,13 @@ void PrintElasticities(std::ostream& out, const optim::ElasticityTable& table);
 /// elasticities per input, largest at the top). @throws OutputError.
 void PlotTornado(const std::string& path, const optim::ElasticityTable& table, bool svg);
 
-/// Progress on stderr, only when `err` is std::cerr (tests' streams stay clean):
-///   - stderr a terminal: a bar redrawn in place;
-///   - stderr not a terminal (a log, a pipe): once the run has taken 5 s, one line per 10 %
-///     step, "covopt: sampling 30 % done, 41 s elapsed, about 96 s left", so a long
-///     `--samples 1e10` run in a batch job says how far it is.
-/// COVOPT_PROGRESS=bar, lines (lines from the start, however short the run) or none forces
-/// a style. Callback() is what InjuryProbabilityOptions::progress takes.
-class SamplingProgressBar {
+/// The sampling's progress (cli/progress.hpp): a bar on a terminal, and on a log or a pipe a
+/// line per 10 % step once the run has taken 5 s. Callback() is what
+/// InjuryProbabilityOptions::progress takes.
+class SamplingProgressBar : public ProgressBar {
  public:
-  SamplingProgressBar(std::ostream& err, std::string label);
-  ~SamplingProgressBar();
-  SamplingProgressBar(const SamplingProgressBar&) = delete;
-  SamplingProgressBar& operator=(const SamplingProgressBar&) = delete;
-  std::function<void(double)> Callback();
-  bool enabled() const noexcept { return enabled_; }
-
- private:
-  std::ostream& err_;
-  std::string label_;
-  bool enabled_ = false;
-  bool drawn_ = false;
-  bool lines_ = false;         // one line per 10 % instead of a bar
-  bool lines_forced_ = false;  // COVOPT_PROGRESS=lines: from the start
-  int last_percent_ = -1;      // the last percent drawn (bar) or tenth printed (lines)
-  std::chrono::steady_clock::time_point start_{};
+  SamplingProgressBar(std::ostream& err, std::string label)
+      : ProgressBar(err, std::move(label), ProgressBarOptions{.lines_when_not_terminal = true}) {}
 };
 
 }  // namespace covopt::cli

@@ -18,6 +18,7 @@
 #include "errors.hpp"
 #include "output.hpp"
 #include "plot.hpp"
+#include "progress.hpp"
 #include "quantity.hpp"
 
 namespace covopt::cli {
@@ -387,11 +388,10 @@ int RunDesignStudy(const WorkPrecisionOptions& options, std::ostream& out, std::
     return errors.BadInput(e.what());
   }
   if (!charts.empty() && !FindOnPath("gnuplot")) return errors.Failed(std::string(kGnuplotMissing));
-  const bool terminal = &err == &std::cerr && ::isatty(STDERR_FILENO) == 1;
-  if (terminal) {
-    study_options.progress = [&err](const optim::DesignWorkPrecisionProgress& progress) {
-      fmt::print(err, "\nworkprecision --design {}/{} searches", progress.completed_searches, progress.total_searches);
-      err.flush();
+  ProgressBar bar(err, "workprecision --design");
+  if (bar.enabled()) {
+    study_options.progress = [&bar](const optim::DesignWorkPrecisionProgress& progress) {
+      bar.Update(progress.completed_searches, progress.total_searches);
     };
   }
   DesignWorkPrecisionResult study;
@@ -400,10 +400,7 @@ int RunDesignStudy(const WorkPrecisionOptions& options, std::ostream& out, std::
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(AttributeError(e.what(), scene_plan));
   }
-  if (terminal) {
-    fmt::print(err, "\n[K");
-    err.flush();
-  }
+  bar.Finish();
   if (!study.IsUsable()) return errors.Failed(study.message);
   Scene shown = scene_plan.scene;
   shown.covering.thickness_m = 0.0;
@@ -627,19 +624,15 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
   }
   if (!charts.empty() && !FindOnPath("gnuplot")) return errors.Failed(std::string(kGnuplotMissing));
 
-  // A progress line on an interactive terminal only: pipes and tests see nothing.
-  const bool terminal = &err == &std::cerr && ::isatty(STDERR_FILENO) == 1;
-  if (terminal) {
-    study_options.progress = [&err](const WorkPrecisionProgress& progress) {
-      fmt::print(err, "\rworkprecision {}/{} runs", progress.completed_runs, progress.total_runs);
-      err.flush();
+  // A progress bar on an interactive terminal only: pipes and tests see nothing.
+  ProgressBar bar(err, "workprecision");
+  if (bar.enabled()) {
+    study_options.progress = [&bar](const WorkPrecisionProgress& progress) {
+      bar.Update(progress.completed_runs, progress.total_runs);
     };
   }
   const WorkPrecisionResult study = MeasureWorkPrecision(*model, study_options);
-  if (terminal) {
-    fmt::print(err, "\r\033[K");
-    err.flush();
-  }
+  bar.Finish();
   if (!study.IsUsable()) return errors.Failed(study.message);
   const std::vector<WorkPrecisionPoint>& points = study.points;
 

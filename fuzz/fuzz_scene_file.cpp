@@ -1,6 +1,6 @@
-// libFuzzer target: the scene-file parser (cli/scene_file.cpp, with its [limits] and
-// covering.material extras), then the model on what it accepts. Bad input must end in covopt::cli::InputError (scene file) or
-// std::invalid_argument (ImpactModel::FromScene); a scene that validates must give finite,
+// libFuzzer target: the scene-file parser (covopt::scene_file, with its [limits] and
+// covering.material extras), then the model on what it accepts. Bad input must end in
+// std::invalid_argument (the scene file, or ImpactModel::FromScene); a scene that validates must give finite,
 // positive exact peaks and contact duration. Anything else (a crash, a sanitizer report,
 // another exception, a NaN) is a finding.
 #include <cmath>
@@ -14,16 +14,15 @@
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
-#include "errors.hpp"
-#include "scene_file.hpp"
+#include "covopt/scene_file/scene_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   covopt::Scene scene;
-  covopt::cli::SceneFileExtras extras;
+  covopt::scene_file::SceneFileExtras extras;
   try {
-    covopt::cli::ApplySceneToml(text, "fuzz.toml", scene, &extras);
-  } catch (const covopt::cli::InputError&) {
+    covopt::scene_file::ApplySceneToml(text, "fuzz.toml", scene, &extras);
+  } catch (const std::invalid_argument&) {
     return 0;
   }
   // Limits that pass must be usable: positive and finite, the safety factor in [1, 100].

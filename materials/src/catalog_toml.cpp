@@ -16,6 +16,7 @@
 #include <toml++/toml.h>
 
 #include "builtin_catalog.hpp"
+#include "covopt/internal/toml_text.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "text.hpp"
@@ -24,6 +25,8 @@
 namespace covopt::materials {
 namespace {
 
+using covopt::internal::TypeName;
+using covopt::internal::Where;
 using internal::FormatNumber;
 
 constexpr std::array<std::string_view, 11> kKeys{
@@ -66,27 +69,6 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 24> kKeyAlia
     {"test_method", internal::kKeyStrengthMethod},
     {"strength_reference", internal::kKeyStrengthSource},
 }};
-
-std::string Where(std::string_view source, const toml::source_position& position) {
-  return std::string(source) + ":" + std::to_string(position.line) + ":" +
-         std::to_string(position.column);
-}
-
-std::string_view TypeName(const toml::node& node) {
-  switch (node.type()) {
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a floating-point number";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::date: return "a date";
-    case toml::node_type::time: return "a time";
-    case toml::node_type::date_time: return "a date-time";
-    case toml::node_type::none: break;
-  }
-  return "nothing";
-}
 
 /// What the user wrote, for messages: a string in quotes, a number as a number.
 std::string Shown(const toml::node& node) {

@@ -30,15 +30,18 @@ for _public in (Scene, ComputationError):
 __all__ = ["Scene", "Result", "simulate", "sweep", "optimize", "materials", "material",
            "ComputationError", "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass",
            "contact_motion", "check_trajectory", "worst_case", "injury_probability",
-           "sensitivities", "robust_optimize"]
+           "sensitivities", "robust_optimize", "load_scene"]
 
 
-def _scene(scene):
+def _scene(scene, ranged=False):
     if scene is None:
         return Scene()
     if not isinstance(scene, Scene):
         raise TypeError(f"scene: expected a covopt.Scene (got {type(scene).__name__}); "
                         "write covopt.Scene(**keywords)")
+    if scene.ranges and not ranged:
+        raise ValueError(f"the scene has ranges ({', '.join(scene.ranges)}): a population, not one "
+                         "scene; give it to covopt.worst_case, injury_probability or robust_optimize")
     return scene
 
 
@@ -298,20 +301,22 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
 
 
 # Robust design over a population (docs/model.md §11). `ranges` maps scene inputs (keyword
-# names, head_mass or head-mass) to (low, high) or "LO..HI", values with units as elsewhere;
-# the scene gives the rest (the exact path only: no damping, braking or neck).
+# names, head_mass or head-mass) to (low, high) or "LO..HI", values with units as elsewhere
+# (default the scene's ranges, Scene(ranges=...) or a scene file's); the scene gives the rest
+# (the exact path only: no damping, braking or neck).
 
-def worst_case(scene=None, *, ranges):
+def worst_case(scene=None, *, ranges=None):
     """The worst impact over the box (optim::FindWorstCase: corners, a Halton sample, DIRECT-L,
     COBYLA). Returns as a RobustSimulation the dict ``covopt simulate --json`` prints with the same ranges: the impact
     at the worst case (peaks, verdicts, scene) plus uncertain_inputs and worst_case {inputs,
     units, laceration_ratio, contusion_ratio, compression_ratio, governing_ratio, binding,
     admissible, corner_governing_ratio, found_by, evaluations, seconds}. ValueError on bad input.
     """
-    return RobustSimulation(_covopt.worst_case(_scene(scene), ranges=ranges))
+    scene = _scene(scene, ranged=True)
+    return RobustSimulation(_covopt.worst_case(scene, ranges=ranges or scene.ranges))
 
 
-def injury_probability(scene=None, *, ranges, samples, seed=1, threads=0, distributions=None):
+def injury_probability(scene=None, *, ranges=None, samples, seed=1, threads=0, distributions=None):
     """Monte Carlo over the box: as worst_case, plus injury_probability {samples, seed,
     laceration, contusion, any, fully_compressed, inadmissible, ci95: {name: [low, high]},
     counts}, the dict ``covopt simulate --json --samples N --seed S`` prints. distributions maps
@@ -319,8 +324,9 @@ def injury_probability(scene=None, *, ranges, samples, seed=1, threads=0, distri
     range); uniform otherwise. samples is a whole number in [1, 10000000000]; seed any whole
     number in [0, 18446744073709551615] (2**64 - 1, as --seed); threads in [0, 4096]. Identical
     for any threads (0 = all cores)."""
-    return RobustSimulation(_covopt.injury_probability(_scene(scene), **_given(
-        ranges=ranges, samples=samples, seed=seed, threads=threads, distributions=distributions)))
+    scene = _scene(scene, ranged=True)
+    return RobustSimulation(_covopt.injury_probability(scene, **_given(
+        ranges=ranges or scene.ranges, samples=samples, seed=seed, threads=threads, distributions=distributions)))
 
 
 def sensitivities(scene=None):
@@ -332,7 +338,7 @@ def sensitivities(scene=None):
     return Sensitivities(_covopt.sensitivities(_scene(scene)))
 
 
-def robust_optimize(scene=None, *, ranges, samples=None, seed=1, threads=0, distributions=None,
+def robust_optimize(scene=None, *, ranges=None, samples=None, seed=1, threads=0, distributions=None,
                     max_injury_probability=None, allow_full_compression=False, allow_crushing=False,
                     allow_unknown_strength=False):
     """The thinnest built-in catalog covering admissible for every value in the box
@@ -344,8 +350,23 @@ def robust_optimize(scene=None, *, ranges, samples=None, seed=1, threads=0, dist
     as ``covopt optimize --max-injury-probability P``. The criterion is optimize's: crushing
     counts unless allow_crushing, unknown strengths are refused unless allow_unknown_strength.
     seed is any whole number in [0, 18446744073709551615] (2**64 - 1); threads 0 = all cores."""
-    return RobustDesign(_covopt.robust_optimize(_scene(scene), **_given(
-        ranges=ranges, samples=samples, seed=seed, threads=threads, distributions=distributions,
+    scene = _scene(scene, ranged=True)
+    return RobustDesign(_covopt.robust_optimize(scene, **_given(
+        ranges=ranges or scene.ranges, samples=samples, seed=seed, threads=threads, distributions=distributions,
         max_injury_probability=max_injury_probability,
         allow_full_compression=allow_full_compression, allow_crushing=allow_crushing,
         allow_unknown_strength=allow_unknown_strength)))
+
+
+def load_scene(path):
+    """A scene file (TOML, the format of ``covopt simulate --scene``; see cli/examples/paper_scene.toml),
+    read by the library's reader with the CLI's checks and messages, as a covopt.Scene holding
+    what the file sets (its repr shows the keywords); ranges the file writes ("3.7kg..5.8kg")
+    are the Scene's ``ranges`` ({"head_mass": (low, high)} in SI), which worst_case,
+    injury_probability and robust_optimize take. So ``covopt.simulate(covopt.load_scene(path))``
+    is ``covopt simulate --scene path``.
+
+    Raises ValueError naming file:line:column, the key and what is allowed, as the CLI does.
+    """
+    return Scene(**_covopt.load_scene(str(path)))
+

@@ -208,7 +208,7 @@ SceneInputs ReadScene(const py::kwargs& keywords) {
     bool known = false;
     for (const SceneKeyword& k : kSceneKeywords) known = known || name == k.keyword;
     for (const char* k : kSceneOptionKeywords) known = known || name == k;
-    if (!known) throw py::type_error("Scene() got an unexpected keyword argument '" + name + "'");
+    if (!known && name != "ranges") throw py::type_error("Scene() got an unexpected keyword argument '" + name + "'");
     if (py::isinstance<py::str>(item.second) && item.second.cast<std::string>().find("..") != std::string::npos) {
       throw std::invalid_argument(name + "=" + Repr(item.second) + ": a range LO..HI describes a population, not "
                                   "one scene; give ranges={'" + name + "': " + Repr(item.second) +
@@ -774,7 +774,8 @@ neck). material: a built-in catalog name (sets covering_modulus and covering_poi
 thresholds: "cumulative" (default) or "literal"; laceration_limit [Pa] (1e6), contusion_limit
 [J/m2] (25200); safety_factor in [1, 100]: a verdict is safe when safety_factor x ratio <= 1.
 Bad values raise ValueError naming the keyword; an unknown keyword TypeError.
-Attributes: every keyword, in SI. replace(**keywords): a changed copy (None unsets).
+ranges: {keyword: (low, high) or "LO..HI"}, a population for worst_case, injury_probability and
+robust_optimize. Attributes: every keyword, in SI. replace(**keywords): a changed copy (None unsets).
 to_dict(): the scene object of `covopt simulate --json`.)");
   scene.def(py::init(&ReadScene));
   for (const SceneKeyword& k : kSceneKeywords) {
@@ -789,6 +790,7 @@ to_dict(): the scene object of `covopt simulate --json`.)");
       .def_property_readonly("laceration_limit", [](const SceneInputs& s) { return s.limits.laceration_tensile_stress_Pa; })
       .def_property_readonly("contusion_limit", [](const SceneInputs& s) { return s.limits.contusion_energy_density_J_per_m2; })
       .def_property_readonly("safety_factor", [](const SceneInputs& s) { return s.safety_factor; })
+      .def_property_readonly("ranges", [](const SceneInputs& s) { return Option(s.given, "ranges").value_or(py::dict()); })
       .def("replace", [](const SceneInputs& s, const py::kwargs& changes) { return s.With(changes); })
       .def("to_dict", [](const SceneInputs& s) { return JsonToPython(report::SceneJson(s.scene, -1)); })
       .def("__repr__", [](const SceneInputs& s) {
@@ -806,6 +808,7 @@ void BindSpeedLimit(py::module_& m);  // speed_limit_bindings.cpp
 void BindRobot(py::module_& m);       // robot_bindings.cpp
 void BindTrajectory(py::module_& m);  // trajectory_bindings.cpp
 void BindRobust(py::module_& m);      // robust_bindings.cpp
+void BindSceneFile(py::module_& m);   // scene_file_bindings.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -821,4 +824,5 @@ PYBIND11_MODULE(_covopt, m) {
   covopt::python::BindRobot(m);
   covopt::python::BindTrajectory(m);
   covopt::python::BindRobust(m);
+  covopt::python::BindSceneFile(m);
 }

@@ -26,6 +26,7 @@
 #include "cli_test_support.hpp"
 #include "plot.hpp"
 #include "sweep.hpp"
+#include "sweep_csv.hpp"
 
 using Catch::Matchers::Contains;
 using covopt::cli::testing::ReadFile;

@@ -1,0 +1,308 @@
+#include "covopt/scene_file/scene_file.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "covopt/core/quantity.hpp"
+#include "covopt/core/scene_fields.hpp"
+#include "covopt/internal/text.hpp"
+#include "covopt/internal/toml_text.hpp"
+
+namespace covopt::scene_file {
+namespace {
+
+using covopt::internal::Closest;
+using covopt::internal::TypeName;
+using covopt::internal::Where;
+
+std::string JoinQuoted(const std::vector<std::string_view>& words) {
+  std::string joined;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (i > 0) joined += ", ";
+    joined += words[i];
+  }
+  return joined;
+}
+
+std::vector<std::string_view> KeysOf(std::string_view table) {
+  std::vector<std::string_view> keys;
+  for (const SceneField& field : SceneFields()) {
+    if (field.table == table) keys.push_back(field.key);
+  }
+  if (table == "covering") keys.push_back("material");
+  if (table == "model") keys.push_back("thresholds");
+  if (table == "limits") {
+    for (const LimitField& field : LimitFields()) keys.push_back(field.key);
+  }
+  return keys;
+}
+
+/// A TOML number as the user wrote it, near enough: "40", "0.015", "2.76e+07".
+std::string NumberText(const toml::node& node) {
+  if (node.is_integer()) return std::to_string(**node.as_integer());
+  return fmt::format("{}", **node.as_floating_point());
+}
+
+/// What the user wrote, for messages: a string in quotes, a number as a number.
+std::string Shown(const toml::node& node) {
+  if (node.is_string()) return fmt::format("'{}'", **node.as_string());
+  return NumberText(node);
+}
+
+/// Reads one numeric value: a TOML number (SI, which must be plausible for `spec`) or a
+/// string with a unit. `example` shows a good value in the wrong-type message.
+double ReadQuantity(const toml::node& node, const QuantitySpec& spec, const std::string& name,
+                    std::string_view example, std::string_view source) {
+  const std::string where = Where(source, node.source());
+  try {
+    if (node.is_integer() || node.is_floating_point()) {
+      const double value = node.is_integer() ? static_cast<double>(**node.as_integer())
+                                             : **node.as_floating_point();
+      if (!std::isfinite(value)) {
+        throw std::invalid_argument(fmt::format("{}: not a finite number (got {})", name, value));
+      }
+      CheckBareNumber(value, NumberText(node), spec, name, "\"");
+      return value;
+    }
+    if (node.is_string()) return ParseQuantity(**node.as_string(), spec, name);
+  } catch (const std::invalid_argument& e) {  // ParseQuantity, CheckBareNumber, or not finite
+    throw std::invalid_argument(fmt::format("{}: {}", where, e.what()));
+  }
+  throw std::invalid_argument(fmt::format(
+      "{}: {}: expected a number (SI) or a string with a unit such as \"{}\", got {}", where,
+      name, example, TypeName(node)));
+}
+
+/// What one file sets, before it is applied: the scene (a copy) and the extras.
+struct Reading {
+  Scene scene;
+  SceneFileExtras extras;
+  std::vector<std::string> set_fields;
+  /// The first of covering.modulus / covering.poisson the file sets, for the clash with
+  /// covering.material.
+  std::optional<std::string> covering_elastic_field;
+  bool sets_covering_material = false;
+};
+
+[[noreturn]] void UnknownKey(std::string_view source, const toml::key& key,
+                             std::string_view table_name) {
+  const std::vector<std::string_view> keys = KeysOf(table_name);
+  const auto suggestion = Closest(key.str(), keys);
+  throw std::invalid_argument(fmt::format(
+      "{}: unknown key '{}.{}'; {}", Where(source, key.source()), table_name, key.str(),
+      suggestion ? fmt::format("did you mean '{}.{}'?", table_name, *suggestion)
+                 : fmt::format("[{}] takes {}", table_name, JoinQuoted(keys))));
+}
+
+/// Refuses what only SceneFileExtras can hold when the caller gave none.
+[[noreturn]] void RefuseExtra(std::string_view where, std::string_view name) {
+  throw std::invalid_argument(fmt::format("{}: {} is not read by this command; remove it", where, name));
+}
+
+void ApplyLimits(const toml::table& table, std::string_view source, bool extras_wanted,
+                 Reading& reading) {
+  const auto fields = LimitFields();
+  for (const auto& [key, node] : table) {
+    const std::string_view key_name = key.str();  // a structured binding is not captured
+    const auto field = std::find_if(fields.begin(), fields.end(),
+                                    [&](const LimitField& f) { return f.key == key_name; });
+    if (field == fields.end()) UnknownKey(source, key, "limits");
+    const std::string name = field->dotted_name();
+    const std::string where = Where(source, node.source());
+    if (!extras_wanted) RefuseExtra(where, name);
+    const double value = ReadQuantity(node, field->spec, name,
+                                      field->key == "laceration"  ? "1MPa"
+                                      : field->key == "contusion" ? "2.52J/cm2"
+                                                                  : "1.5",
+                                      source);
+    try {
+      CheckLimitValue(*field, value, name, Shown(node));
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(fmt::format("{}: {}", where, e.what()));
+    }
+    if (field->key == "laceration") reading.extras.laceration_limit_Pa = value;
+    if (field->key == "contusion") reading.extras.contusion_limit_J_per_m2 = value;
+    if (field->key == "safety_factor") reading.extras.safety_factor = value;
+    reading.set_fields.push_back(name);
+  }
+}
+
+void ApplyTable(std::string_view table_name, const toml::table& table, std::string_view source,
+                bool extras_wanted, Reading& reading) {
+  if (table_name == "limits") {
+    ApplyLimits(table, source, extras_wanted, reading);
+    return;
+  }
+  const auto fields = SceneFields();
+  const Scene defaults;
+  for (const auto& [key, node] : table) {
+    const std::string_view key_name = key.str();
+    const std::string where = Where(source, node.source());
+    if (table_name == "model" && key_name == "thresholds") {
+      if (!node.is_string()) {
+        throw std::invalid_argument(fmt::format(
+            "{}: model.thresholds: expected a string, \"cumulative\" or \"literal\", got {}",
+            where, TypeName(node)));
+      }
+      try {
+        reading.scene.model.thresholds = ParseThresholds(**node.as_string(), "model.thresholds");
+        reading.set_fields.emplace_back("model.thresholds");
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(fmt::format("{}: {}", where, e.what()));
+      }
+      continue;
+    }
+    if (table_name == "covering" && key_name == "material") {
+      if (!extras_wanted) RefuseExtra(where, "covering.material");
+      if (!node.is_string()) {
+        throw std::invalid_argument(fmt::format("{}: covering.material: expected a string, a catalog "
+                                     "material's name such as \"polystyrene foam 27.6\", got {}",
+                                     where, TypeName(node)));
+      }
+      const std::string& name = **node.as_string();
+      if (name.find_first_not_of(" \t") == std::string::npos) {
+        throw std::invalid_argument(fmt::format("{}: covering.material: empty name; give a catalog "
+                                     "material's name (see 'covopt materials list')",
+                                     where));
+      }
+      reading.extras.covering_material = name;
+      reading.extras.covering_material_where = where;
+      reading.sets_covering_material = true;
+      reading.set_fields.emplace_back("covering.material");
+      continue;
+    }
+    const auto field = std::find_if(fields.begin(), fields.end(), [&](const SceneField& f) {
+      return f.table == table_name && f.key == key_name;
+    });
+    if (field == fields.end()) UnknownKey(source, key, table_name);
+    if (node.is_string() && IsRangeText(**node.as_string())) {
+      const std::string name = fmt::format("{}: {}", where, field->dotted_name());
+      if (!extras_wanted) {
+        throw std::invalid_argument(fmt::format("{}: a range (an uncertain input) is taken by simulate, optimize and "
+                                     "speed-limit only (got '{}')",
+                                     name, **node.as_string()));
+      }
+      reading.extras.ranges.push_back(ParseSceneRange(**node.as_string(), *field, name));
+      reading.set_fields.push_back(field->dotted_name());
+      continue;
+    }
+    Scene example = defaults;
+    field->field(reading.scene) =
+        ReadQuantity(node, field->spec, field->dotted_name(),
+                     FormatQuantity(field->field(example), field->spec.kind), source);
+    reading.set_fields.push_back(field->dotted_name());
+    if (table_name == "covering" && (key_name == "modulus" || key_name == "poisson") &&
+        !reading.covering_elastic_field) {
+      reading.covering_elastic_field = field->dotted_name();
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> ApplySceneToml(std::string_view toml_text, std::string_view source,
+                                        Scene& scene, SceneFileExtras* extras) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, source);
+  } catch (const toml::parse_error& e) {
+    throw std::invalid_argument(fmt::format("{}: TOML syntax error: {}", Where(source, e.source()),
+                                 e.description()));
+  }
+
+  // Work on copies so that a bad file leaves `scene` and `extras` untouched.
+  Reading reading{scene, extras ? *extras : SceneFileExtras{}, {}, std::nullopt, false};
+  const auto tables = SceneTables();
+  const std::vector<std::string_view> table_names(tables.begin(), tables.end());
+  for (const auto& [key, node] : root) {
+    const std::string_view name = key.str();
+    if (std::find(tables.begin(), tables.end(), name) == tables.end()) {
+      // A known field at the top level is probably missing its table header.
+      std::string hint;
+      for (const SceneField& field : SceneFields()) {
+        if (field.key == name) {
+          hint = fmt::format("; put '{}' under a table such as [{}]", name, field.table);
+          break;
+        }
+      }
+      for (const LimitField& field : LimitFields()) {
+        if (hint.empty() && field.key == name) {
+          hint = fmt::format("; put '{}' under [limits]", name);
+        }
+      }
+      if (hint.empty()) {
+        const auto suggestion = Closest(name, table_names);
+        hint = suggestion ? fmt::format("; did you mean '{}'?", *suggestion)
+                          : fmt::format("; the tables are {}", JoinQuoted(table_names));
+      }
+      throw std::invalid_argument(
+          fmt::format("{}: unknown table '{}'{}", Where(source, key.source()), name, hint));
+    }
+    if (!node.is_table()) {
+      throw std::invalid_argument(fmt::format("{}: '{}' must be a table ([{}]), got {}",
+                                   Where(source, node.source()), name, name, TypeName(node)));
+    }
+    ApplyTable(name, *node.as_table(), source, extras != nullptr, reading);
+  }
+  if (reading.sets_covering_material && reading.covering_elastic_field) {
+    throw std::invalid_argument(fmt::format(
+        "{}: covering.material '{}' sets the covering's modulus and Poisson ratio; give "
+        "either covering.material or {}, not both",
+        reading.extras.covering_material_where, *reading.extras.covering_material,
+        *reading.covering_elastic_field));
+  }
+  scene = reading.scene;
+  if (extras) *extras = reading.extras;
+  return reading.set_fields;
+}
+
+std::vector<std::string> ApplySceneFile(const std::filesystem::path& path, Scene& scene,
+                                        SceneFileExtras* extras) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw std::invalid_argument(fmt::format("cannot read scene file '{}': it is a directory", path.string()));
+  }
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    throw std::invalid_argument(fmt::format("cannot read scene file '{}': {}", path.string(),
+                                 std::strerror(errno)));
+  }
+  // At most kMaxSceneFileBytes + 1 bytes are read, so /dev/zero or a huge file is refused
+  // at once instead of filling the memory.
+  std::string text;
+  char buffer[65536];
+  int error = 0;
+  while (text.size() <= kMaxSceneFileBytes) {
+    const std::size_t want = std::min(sizeof buffer, kMaxSceneFileBytes + 1 - text.size());
+    const ssize_t n = ::read(fd, buffer, want);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) error = errno;
+    if (n <= 0) break;
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  if (error != 0) {
+    throw std::invalid_argument(fmt::format("cannot read scene file '{}': {}", path.string(),
+                                 std::strerror(error)));
+  }
+  if (text.size() > kMaxSceneFileBytes) {
+    throw std::invalid_argument(fmt::format("cannot read scene file '{}': larger than the limit of {} bytes (1 MiB)",
+                                 path.string(), kMaxSceneFileBytes));
+  }
+  return ApplySceneToml(text, path.string(), scene, extras);
+}
+
+}  // namespace covopt::scene_file
