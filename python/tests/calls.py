@@ -2,7 +2,8 @@
 
 import covopt
 
-SCENE_KEYWORDS = {name for name in dir(covopt.Scene) if isinstance(getattr(covopt.Scene, name), property)}
+SCENE_KEYWORDS = {name for name in dir(covopt.Scene) if isinstance(getattr(covopt.Scene, name),
+                                                                   property)}
 
 
 def call(function, *args, **keywords):

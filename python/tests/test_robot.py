@@ -24,7 +24,8 @@ FR3_READY = [0.0, -math.pi / 4, 0.0, -3 * math.pi / 4, 0.0, math.pi / 2, math.pi
 @pytest.mark.parametrize("direction, flags", [((1.0, 0.0, 0.0), ["--direction", "1,0,0"]),
                                               (None, [])])
 def test_reflected_mass_returns_the_cli_json_object(cli_json, direction, flags):
-    got = covopt.reflected_mass(str(FR3), "fr3_link8", FR3_READY, point=(0.0, 0.0, 0.05), direction=direction).to_dict()
+    got = covopt.reflected_mass(str(FR3), "fr3_link8", FR3_READY, point=(0.0, 0.0, 0.05),
+                                direction=direction).to_dict()
     joints = ",".join(repr(q) for q in FR3_READY)
     expected = cli_json("robot", "--urdf", str(FR3), "--tip", "fr3_link8", f"--joints={joints}",
                         "--point", "0,0,0.05", "--json", *flags)
@@ -35,14 +36,16 @@ def test_reflected_mass_returns_the_cli_json_object(cli_json, direction, flags):
 
 def test_a_file_and_urdf_text_agree_and_paths_may_be_pathlike():
     from_file = covopt.reflected_mass(PLANAR, "tool", [0.3, 1.2], direction=(1, 2, 0)).to_dict()
-    from_text = covopt.reflected_mass(None, "tool", [0.3, 1.2], direction=(1, 2, 0), urdf_text=PLANAR.read_text()).to_dict()
+    from_text = covopt.reflected_mass(None, "tool", [0.3, 1.2], direction=(1, 2, 0),
+                                      urdf_text=PLANAR.read_text()).to_dict()
     assert from_file == from_text
 
 
 def test_the_planar_arm_has_its_closed_form_mass_and_a_fixed_stretched_direction():
     q1, q2 = 0.3, 1.2
     c2 = math.cos(q2)
-    m = np.array([[0.1 + 0.05 + 2 * 0.25 + 1.5 * (1 + 0.16 + 2 * 0.4 * c2), 0.05 + 1.5 * (0.16 + 0.4 * c2)],
+    m = np.array([[0.1 + 0.05 + 2 * 0.25 + 1.5 * (1 + 0.16 + 2 * 0.4 * c2),
+                   0.05 + 1.5 * (0.16 + 0.4 * c2)],
                   [0.05 + 1.5 * (0.16 + 0.4 * c2), 0.05 + 1.5 * 0.16]])
     s1, c1, s12, c12 = math.sin(q1), math.cos(q1), math.sin(q1 + q2), math.cos(q1 + q2)
     jac = np.array([[-s1 - 0.8 * s12, -0.8 * s12], [c1 + 0.8 * c12, 0.8 * c12]])
@@ -51,7 +54,8 @@ def test_the_planar_arm_has_its_closed_form_mass_and_a_fixed_stretched_direction
     got = covopt.reflected_mass(PLANAR, "tool", [q1, q2], direction=(0.6, 0.8, 0.0))
     assert got.reflected_mass_kg == pytest.approx(expected, rel=1e-12)
     assert got.max_reflected_mass_kg == "fixed"  # out of the plane
-    stretched = covopt.reflected_mass(PLANAR, "tool", np.array([0.5, 0.0]), direction=(math.cos(0.5), math.sin(0.5), 0.0))
+    stretched = covopt.reflected_mass(PLANAR, "tool", np.array([0.5, 0.0]), direction=(math.cos(0.5),
+                                                                                       math.sin(0.5), 0.0))
     assert stretched.reflected_mass_kg == "fixed"
     assert any("infinite (fixed)" in w for w in stretched.warnings)
 
@@ -161,7 +165,8 @@ def test_trajectory_inputs_that_once_gave_wrong_answers(tmp_path):
     assert any("no header line" in w for w in motion.warnings)
     degrees = tmp_path / "degrees.csv"
     degrees.write_text("t,q1,q2,qd1,qd2\n0,0,-90,0,0\n")
-    with pytest.raises(ValueError, match=r"degrees.csv:2, column 3 \(q2 \[rad\], joint 'elbow'\): -90 rad"):
+    with pytest.raises(ValueError,
+                       match=r"degrees.csv:2, column 3 \(q2 \[rad\], joint 'elbow'\): -90 rad"):
         covopt.contact_motion(PLANAR, "tool", degrees).to_dict()
     hexfloat = tmp_path / "hex.csv"
     hexfloat.write_text("t,q1,q2,qd1,qd2\n0,0x1p3,0,0,0\n")

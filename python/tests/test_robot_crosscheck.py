@@ -310,7 +310,8 @@ def _eigenvalue_gaps_are_clear(reference):
 
 def _compare(urdf, tip, q, point, direction, base=None):
     expected = ref.reflected_mass(urdf, tip, q, base=base, point=point, direction=direction)
-    got = covopt.reflected_mass(urdf, tip, list(q), base=base, point=tuple(point), direction=tuple(direction)).to_dict()
+    got = covopt.reflected_mass(urdf, tip, list(q), base=base, point=tuple(point),
+                                direction=tuple(direction)).to_dict()
     assert list(got["joint_names"]) == expected["joint_names"]
     np.testing.assert_allclose(got["contact_point_m"], expected["contact_point_m"], rtol=1e-12,
                                atol=1e-12)

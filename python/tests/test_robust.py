@@ -33,8 +33,10 @@ def test_worst_case_is_the_cli_simulate_object(cli_json):
 
 def test_injury_probability_is_the_cli_object_for_any_thread_count(cli_json):
     ours = call(covopt.injury_probability, ranges=RANGES, samples=5000, seed=4, threads=1, **COVERING)
-    threaded = call(covopt.injury_probability, ranges=RANGES, samples=5000, seed=4, threads=3, **COVERING)
-    theirs = cli_json("simulate", "--json", *RANGE_FLAGS, *COVERING_FLAGS, "--samples", "5000", "--seed", "4")
+    threaded = call(covopt.injury_probability, ranges=RANGES, samples=5000, seed=4, threads=3,
+                    **COVERING)
+    theirs = cli_json("simulate", "--json", *RANGE_FLAGS, *COVERING_FLAGS, "--samples", "5000",
+                      "--seed", "4")
     assert ours["injury_probability"] == theirs["injury_probability"]
     assert threaded["injury_probability"] == ours["injury_probability"]
     p = ours["injury_probability"]
@@ -44,8 +46,10 @@ def test_injury_probability_is_the_cli_object_for_any_thread_count(cli_json):
 
 def test_distributions_match_the_cli(cli_json):
     ours = call(covopt.injury_probability, ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=3000,
-                                     distributions={"head_mass": ("normal", "4.5kg", "0.5kg")}, **COVERING)
-    theirs = cli_json("simulate", "--json", "--head-mass", "3.7kg..5.8kg", *COVERING_FLAGS, "--samples", "3000",
+                                     distributions={"head_mass": ("normal", "4.5kg",
+                                                                  "0.5kg")}, **COVERING)
+    theirs = cli_json("simulate", "--json", "--head-mass", "3.7kg..5.8kg", *COVERING_FLAGS, "--samples",
+                      "3000",
                       "--distribution", "head-mass=normal:4.5kg:0.5kg")
     assert ours["injury_probability"] == theirs["injury_probability"]
     assert ours["uncertain_inputs"][0]["distribution"] == "normal"
@@ -68,8 +72,10 @@ def test_robust_optimize_is_the_cli_optimize_object(cli_json):
 
 
 def test_probability_design_matches_the_cli(cli_json):
-    ours = covopt.robust_optimize(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=2000, seed=2, max_injury_probability=0.05)
-    theirs = cli_json("optimize", "--json", "--head-mass", "3.7kg..5.8kg", "--samples", "2000", "--seed", "2",
+    ours = covopt.robust_optimize(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=2000, seed=2,
+                                  max_injury_probability=0.05)
+    theirs = cli_json("optimize", "--json", "--head-mass", "3.7kg..5.8kg", "--samples", "2000",
+                      "--seed", "2",
                       "--max-injury-probability", "0.05")
     assert ours.recommendation.material == theirs["recommendation"]["material"]
     assert ours.recommendation.thickness_m == theirs["recommendation"]["thickness_m"]
@@ -81,10 +87,15 @@ def test_probability_design_matches_the_cli(cli_json):
     (lambda: covopt.worst_case(ranges={"head_mass": ("5.8kg", "3.7kg")}).to_dict(), "head"),
     (lambda: covopt.worst_case(ranges={"brain_mass": ("1kg", "2kg")}).to_dict(), "unknown input"),
     (lambda: covopt.worst_case(ranges={}).to_dict(), "ranges"),
-    (lambda: covopt.worst_case(covopt.Scene(damping="0.2s/m"), ranges={"head_mass": ("3.7kg", "5.8kg")}).to_dict(), "damping"),
-    (lambda: covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=0).to_dict(), "samples"),
-    (lambda: covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10, distributions={"speed": ("normal", "2m/s", "0.1m/s")}).to_dict(), "no range"),
-    (lambda: covopt.robust_optimize(ranges={"head_mass": ("3.7kg", "5.8kg")}, max_injury_probability=0.1).to_dict(),
+    (lambda: covopt.worst_case(covopt.Scene(damping="0.2s/m"), ranges={"head_mass": ("3.7kg",
+                                                                                     "5.8kg")}).to_dict(), "damping"),
+    (lambda: covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=0).to_dict(),
+     "samples"),
+    (lambda: covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10,
+                                       distributions={"speed": ("normal", "2m/s",
+                                                                "0.1m/s")}).to_dict(), "no range"),
+    (lambda: covopt.robust_optimize(ranges={"head_mass": ("3.7kg", "5.8kg")},
+                                    max_injury_probability=0.1).to_dict(),
      "samples"),
 ])
 def test_bad_input_raises_value_error(call, needle):
@@ -98,7 +109,9 @@ def test_the_seed_is_any_unsigned_64_bit_value_and_the_message_says_so():
     ours = covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10, seed=top)
     assert ours.injury_probability.seed == top
     with pytest.raises(ValueError, match=r"seed must be a whole number in \[0, 18446744073709551615\]"):
-        covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10, seed=2**64).to_dict()
+        covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10,
+                                  seed=2**64).to_dict()
     with pytest.raises(ValueError, match="18446744073709551615"):
-        covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10, seed=-1).to_dict()
+        covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10,
+                                  seed=-1).to_dict()
     assert "18446744073709551615" in covopt.injury_probability.__doc__

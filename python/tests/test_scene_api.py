@@ -56,6 +56,7 @@ def test_results_are_attributes_with_the_cli_keys():
 
 
 def test_an_object_keyed_by_scene_flag_stays_a_dict():
-    worst = covopt.worst_case(covopt.Scene(covering_thickness="15mm"), ranges={"head_mass": ("3.7kg", "5.8kg")})
+    worst = covopt.worst_case(covopt.Scene(covering_thickness="15mm"), ranges={"head_mass": ("3.7kg",
+                                                                                             "5.8kg")})
     assert isinstance(worst.worst_case.inputs, dict)
     assert set(worst.worst_case.inputs) == {"head-mass"}

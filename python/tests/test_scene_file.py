@@ -19,7 +19,8 @@ def write(tmp_path, text, name="scene.toml"):
 
 def test_the_shipped_example_is_the_papers_scene():
     scene = covopt.load_scene(EXAMPLE)
-    assert (scene.robot_mass, scene.speed, scene.robot_radius, scene.covering_thickness) == (10.0, 2.0, 0.015, 0.015)
+    assert (scene.robot_mass, scene.speed, scene.robot_radius, scene.covering_thickness) == (10.0, 2.0,
+                                                                                             0.015, 0.015)
     assert scene.thresholds == "cumulative" and scene.safety_factor == 1.0
     assert covopt.simulate(scene) == covopt.simulate()
 

@@ -61,7 +61,8 @@ def test_an_implausible_number_is_accepted_with_an_explicit_unit():
 
 
 def test_values_with_units_equal_si_floats():
-    assert covopt.simulate(covopt.Scene(robot_mass="10kg", speed="250mm/s", covering_thickness="18mm")).to_dict() == \
+    assert covopt.simulate(covopt.Scene(robot_mass="10kg", speed="250mm/s",
+                                        covering_thickness="18mm")).to_dict() == \
         covopt.simulate(covopt.Scene(robot_mass=10.0, speed=0.25, covering_thickness=0.018)).to_dict()
 
 

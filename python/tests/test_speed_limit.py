@@ -23,7 +23,8 @@ CASES = [
      ["--material", "polystyrene foam 27.6", "--material", "polystyrene foam 48.3",
       "--covering-thickness", "25mm"]),
     ({"materials": ["XPS Foamular 250", "EPS geofoam EPS39"], "covering_thickness": "16mm"},
-     ["--material", "XPS Foamular 250", "--material", "EPS geofoam EPS39", "--covering-thickness", "16mm"]),
+     ["--material", "XPS Foamular 250", "--material", "EPS geofoam EPS39", "--covering-thickness",
+      "16mm"]),
     ({"material": "XPS Foamular 250", "covering_thickness": "16mm", "allow_crushing": True},
      ["--material", "XPS Foamular 250", "--covering-thickness", "16mm", "--allow-crushing"]),
 ]
@@ -32,7 +33,8 @@ CASES = [
 def test_a_crushing_material_limits_the_speed_where_its_strength_is_reached():
     crush = covopt.max_safe_speed(covopt.Scene(material="XPS Foamular 250", covering_thickness=0.016))
     assert crush.limited_by == "crush"
-    liner = covopt.max_safe_speed(covopt.Scene(material="XPS Foamular 250", covering_thickness=0.016), allow_crushing=True)
+    liner = covopt.max_safe_speed(covopt.Scene(material="XPS Foamular 250", covering_thickness=0.016),
+                                  allow_crushing=True)
     assert liner.limited_by != "crush"
     assert liner.max_safe_speed_m_per_s > 10 * crush.max_safe_speed_m_per_s
     # No covering given: the assumed default is said, as the CLI says it.
@@ -83,7 +85,8 @@ def test_the_max_safe_mass_and_speed_describe_one_boundary():
 
 
 def test_edges_are_answers():
-    top = covopt.max_safe_speed(covopt.Scene(robot_mass="0.1g", covering_thickness=0, laceration_limit="1GPa", contusion_limit="1000J/cm2"))
+    top = covopt.max_safe_speed(covopt.Scene(robot_mass="0.1g", covering_thickness=0,
+                                             laceration_limit="1GPa", contusion_limit="1000J/cm2"))
     assert top.max_safe_speed_m_per_s == 100.0
     assert top.limited_by == "none"
     none = covopt.max_safe_speed(covopt.Scene(laceration_limit="0.001Pa"))

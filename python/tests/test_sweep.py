@@ -13,13 +13,15 @@ import covopt
 def test_each_point_is_the_simulation_of_its_scene():
     speeds = [0.5, 1.0, 2.0, 3.0]
     thicknesses = [0.0, 0.005, 0.015]
-    grid = covopt.sweep(("speed", speeds), ("covering_thickness", thicknesses), scene=covopt.Scene(robot_mass=20.0)).to_dict()
+    grid = covopt.sweep(("speed", speeds), ("covering_thickness", thicknesses),
+                        scene=covopt.Scene(robot_mass=20.0)).to_dict()
     assert grid["x_quantity"] == "speed" and grid["y_quantity"] == "covering-thickness"
     np.testing.assert_array_equal(grid["x"], speeds)
     np.testing.assert_array_equal(grid["y"], thicknesses)
     for i, speed in enumerate(speeds):
         for j, thickness in enumerate(thicknesses):
-            one = covopt.simulate(covopt.Scene(speed=speed, covering_thickness=thickness, robot_mass=20.0))
+            one = covopt.simulate(covopt.Scene(speed=speed, covering_thickness=thickness,
+                                               robot_mass=20.0))
             assert grid["peak_force_N"][i, j] == one.peak_force_N
             assert grid["max_energy_density_J_per_m2"][i, j] == one.max_energy_density_J_per_m2
             assert grid["contact_duration_s"][i, j] == one.contact_duration_s
@@ -31,7 +33,8 @@ def test_each_point_is_the_simulation_of_its_scene():
 
 
 def test_shapes_and_types():
-    grid = covopt.sweep(("speed", np.linspace(0.5, 3, 7)), ("robot_mass", [1, 10, 100, "fixed"])).to_dict()
+    grid = covopt.sweep(("speed", np.linspace(0.5, 3, 7)), ("robot_mass", [1, 10, 100,
+                                                                           "fixed"])).to_dict()
     assert grid["worst_ratio"].shape == (7, 4)
     assert grid["worst_ratio"].dtype == np.float64
     assert grid["safe"].dtype == np.bool_
@@ -78,7 +81,8 @@ def test_bad_axes_are_value_errors(x, words):
 
 
 def test_scene_keywords_apply_as_in_simulate():
-    grid = covopt.sweep(("speed", [2.0]), scene=covopt.Scene(material="polystyrene foam 48.3", safety_factor=2.0))
+    grid = covopt.sweep(("speed", [2.0]), scene=covopt.Scene(material="polystyrene foam 48.3",
+                                                             safety_factor=2.0))
     one = covopt.simulate(covopt.Scene(speed=2.0, material="polystyrene foam 48.3", safety_factor=2.0))
     assert grid.worst_ratio[0] == max(one.laceration.ratio, one.contusion.ratio)
     assert grid.safe[0] == one.safe

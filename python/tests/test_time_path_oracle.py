@@ -58,10 +58,12 @@ def test_a_failed_time_path_raises_computation_error_never_a_limit():
             call(covopt.Scene(braking="200m/s2"), max_steps=10)
         assert error.value.status == "evaluation-failed"
         assert "the oracle failed at" in str(error.value) and "step-limit" in str(error.value)
-    answered = covopt.max_safe_speed(covopt.Scene(braking="200m/s2"), max_steps=200000)  # the failure was the step limit's
+    answered = covopt.max_safe_speed(covopt.Scene(braking="200m/s2"),
+                                     max_steps=200000)  # the failure was the step limit's
     assert answered.status == "limited"
     with pytest.raises(covopt.ComputationError) as error:
-        covopt.optimize(covopt.Scene(braking="50m/s2"), max_steps=10, materials=["polystyrene foam 27.6"]).to_dict()
+        covopt.optimize(covopt.Scene(braking="50m/s2"), max_steps=10,
+                        materials=["polystyrene foam 27.6"]).to_dict()
     assert error.value.status == "oracle-failed"
 
 

@@ -31,7 +31,9 @@ def pick_arrays():
 
 def write_trajectory(path, time_s, positions, velocities):
     rows = np.column_stack([time_s, positions, velocities])
-    header = "time_s," + ",".join(f"q{i}" for i in range(1, 8)) + "," + ",".join(f"qd{i}" for i in range(1, 8))
+    header = "time_s," + ",".join(f"q{i}" for i in range(1,
+                                                         8)) + "," + ",".join(f"qd{i}" for i in range(1,
+                                                                                                      8))
     path.write_text(header + "\n" + "\n".join(",".join(repr(float(x)) for x in row) for row in rows) + "\n")
     return path
 
@@ -77,26 +79,31 @@ def test_the_safe_speed_scale_is_exact(tmp_path):
 
     # Sped up k times the move exceeds FR3's joint velocity limits: the covering's limit is
     # what is checked here, so the URDF's limits are set aside.
-    at_limit = covopt.check_trajectory(FR3, "fr3_link8", write_trajectory(tmp_path / "at.csv", time_s, positions, velocities * k), ignore_joint_limits=True)
+    at_limit = covopt.check_trajectory(FR3, "fr3_link8", write_trajectory(tmp_path / "at.csv", time_s,
+                                                                          positions, velocities * k), ignore_joint_limits=True)
     assert at_limit.safe_speed_scale == pytest.approx(1.0, abs=1e-9)
     assert at_limit.status == "safe"
     beyond = covopt.check_trajectory(FR3, "fr3_link8", {"time_s": time_s, "positions": positions,
                            "velocities": velocities * k * (1 + 1e-6)}, ignore_joint_limits=True)
     assert beyond.status == "unsafe" and beyond.unsafe_sample_count >= 1
-    half = covopt.check_trajectory(FR3, "fr3_link8", {"time_s": time_s, "positions": positions, "velocities": velocities * 0.5})
+    half = covopt.check_trajectory(FR3, "fr3_link8", {"time_s": time_s, "positions": positions,
+                                                      "velocities": velocities * 0.5})
     assert half.safe_speed_scale == pytest.approx(2 * k, rel=1e-12)
 
 
 def test_every_verdict_is_simulate_at_the_sample_speed_and_mass():
-    check = covopt.check_trajectory(FR3, "fr3_link8", PICK, scene=covopt.Scene(covering_thickness="10mm")).to_dict()
+    check = covopt.check_trajectory(FR3, "fr3_link8", PICK,
+                                    scene=covopt.Scene(covering_thickness="10mm")).to_dict()
     for sample in check["samples"][::10]:
         if not sample["moving"]:
             assert sample["laceration_ratio"] == 0.0 and sample["speed_scale"] is None
             continue
-        impact = covopt.simulate(covopt.Scene(robot_mass=sample["reflected_mass_kg"], speed=sample["speed_m_per_s"], covering_thickness=0.01))
+        impact = covopt.simulate(covopt.Scene(robot_mass=sample["reflected_mass_kg"],
+                                              speed=sample["speed_m_per_s"], covering_thickness=0.01))
         assert sample["laceration_ratio"] == pytest.approx(impact.laceration.ratio, rel=1e-12)
         assert sample["contusion_ratio"] == pytest.approx(impact.contusion.ratio, rel=1e-12)
-        limit = covopt.max_safe_speed(covopt.Scene(robot_mass=sample["reflected_mass_kg"], covering_thickness=0.01))
+        limit = covopt.max_safe_speed(covopt.Scene(robot_mass=sample["reflected_mass_kg"],
+                                                   covering_thickness=0.01))
         assert sample["max_safe_speed_m_per_s"] == limit.max_safe_speed_m_per_s
         assert sample["speed_scale"] == pytest.approx(
             limit.max_safe_speed_m_per_s / sample["speed_m_per_s"], rel=1e-15)
@@ -112,9 +119,11 @@ def test_a_point_at_rest_has_nothing_to_judge():
 
 @pytest.mark.parametrize("kwargs, words", [
     ({"trajectory": "no-such-file.csv"}, "no such trajectory file"),
-    ({"trajectory": {"time_s": [0.0, -1.0], "positions": [[0.0] * 7] * 2, "velocities": [[0.0] * 7] * 2}},
+    ({"trajectory": {"time_s": [0.0, -1.0], "positions": [[0.0] * 7] * 2,
+                     "velocities": [[0.0] * 7] * 2}},
      "time goes backwards"),
-    ({"trajectory": {"time_s": [0.0], "positions": [[0.0] * 6], "velocities": [[0.0] * 7]}}, "positions"),
+    ({"trajectory": {"time_s": [0.0], "positions": [[0.0] * 6], "velocities": [[0.0] * 7]}},
+     "positions"),
     ({"trajectory": {"time_s": [0.0], "positions": [[0.0] * 7], "velocities": [[math.nan] + [0.0] * 6]}},
      "finite"),
     ({"trajectory": {"time_s": [0.0], "positions": [[0.0, -0.78, 0, -2.35, 0, 1.57, 0.78]],
