@@ -58,7 +58,7 @@ def _wrap(value, key=None):
     if isinstance(value, dict):
         return {k: _wrap(v, k) for k, v in value.items()}
     if isinstance(value, list):
-        return [_wrap(v, key) for v in value]
+        return [_wrap(v, key[:-1] if key and key.endswith("s") else key) for v in value]  # rows: Row
     return value
 
 

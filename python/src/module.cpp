@@ -630,6 +630,29 @@ optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& s
 
 namespace {
 
+/// optimize's candidates: the built-in catalog and the catalog files (or only those), filtered
+/// by materials= and families=.
+std::vector<optim::CandidateMaterial> Candidates(const py::kwargs& kwargs) {
+  const auto get = [&](const char* name) { return Option(kwargs, name); };
+  const bool no_builtin = Flag(kwargs, "no_builtin");
+  const std::vector<std::string> files = get("catalog") ? ReadNames(*get("catalog"), "catalog") : std::vector<std::string>{};
+  if (no_builtin && files.empty()) throw std::invalid_argument("no_builtin leaves no catalog; add catalog=FILE");
+  materials::Catalog catalog = no_builtin ? materials::Catalog() : BuiltInCatalog();
+  try {
+    for (const std::string& file : files) catalog.Add(materials::Catalog::FromTomlFile(file));
+  } catch (const materials::CatalogError& e) {
+    throw std::invalid_argument(std::string("catalog: ") + e.what());
+  }
+  const std::vector<std::string> names = get("materials") ? ReadNames(*get("materials"), "materials") : std::vector<std::string>{};
+  const std::vector<std::string> families = get("families") ? ReadNames(*get("families"), "families") : std::vector<std::string>{};
+  try {
+    return optim::SelectCandidates(catalog, names, families);
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
+  }
+}
+
 /// covopt.optimize(**scene, ...): see python/covopt/__init__.py.
 py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
   const auto get = [&](const char* name) { return Option(kwargs, name); };
@@ -704,24 +727,7 @@ py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
   }
   d.oracle = ReadOracleKeywords(kwargs, request.scene);
 
-  // The candidates: the built-in catalog and the catalog files (or only those), filtered.
-  const bool no_builtin = Flag(kwargs, "no_builtin");
-  const std::vector<std::string> files = get("catalog") ? ReadNames(*get("catalog"), "catalog") : std::vector<std::string>{};
-  if (no_builtin && files.empty()) throw std::invalid_argument("no_builtin leaves no catalog; add catalog=FILE");
-  materials::Catalog catalog = no_builtin ? materials::Catalog() : BuiltInCatalog();
-  try {
-    for (const std::string& file : files) catalog.Add(materials::Catalog::FromTomlFile(file));
-  } catch (const materials::CatalogError& e) {
-    throw std::invalid_argument(std::string("catalog: ") + e.what());
-  }
-  const std::vector<std::string> names = get("materials") ? ReadNames(*get("materials"), "materials") : std::vector<std::string>{};
-  const std::vector<std::string> families = get("families") ? ReadNames(*get("families"), "families") : std::vector<std::string>{};
-  try {
-    request.materials = optim::SelectCandidates(catalog, names, families);
-  } catch (const std::invalid_argument& e) {
-    const std::string what = e.what();
-    throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
-  }
+  request.materials = Candidates(kwargs);
 
   optim::DesignResult result;
   {

@@ -43,6 +43,19 @@ std::uint64_t Whole(const py::object& v, const char* keyword, std::uint64_t low,
   return v.cast<std::uint64_t>();
 }
 
+/// samples=, seed= and threads= of the sampling; none without samples.
+std::optional<optim::InjuryProbabilityOptions> ReadSampling(const py::kwargs& kwargs) {
+  const auto samples = Option(kwargs, "samples");
+  if (!samples) return std::nullopt;
+  optim::InjuryProbabilityOptions sampling;
+  sampling.samples = Whole(*samples, "samples", 1, 10000000000);
+  const auto seed = Option(kwargs, "seed");
+  sampling.seed = seed ? Whole(*seed, "seed", 0, std::numeric_limits<std::uint64_t>::max()) : 1;
+  const auto threads = Option(kwargs, "threads");
+  sampling.threads = threads ? static_cast<unsigned>(Whole(*threads, "threads", 0, 4096)) : 0;
+  return sampling;
+}
+
 /// The scene field of a keyword ("head_mass" or "head-mass").
 const SceneField& FieldOf(const std::string& key) {
   std::string name = key;
@@ -134,12 +147,8 @@ py::object UncertainSimulation(const SceneInputs& scene, const py::kwargs& kwarg
   worst_options.safety_factor = b.scene.safety_factor;
   std::optional<optim::InjuryProbabilityOptions> sampling;
   if (sample) {
-    sampling.emplace();
-    const auto samples = Option(kwargs, "samples");
-    if (!samples) throw std::invalid_argument("injury_probability() needs samples=N");
-    sampling->samples = Whole(*samples, "samples", 1, 10000000000);
-    sampling->seed = Option(kwargs, "seed") ? Whole(*Option(kwargs, "seed"), "seed", 0, std::numeric_limits<std::uint64_t>::max()) : 1;
-    sampling->threads = Option(kwargs, "threads") ? static_cast<unsigned>(Whole(*Option(kwargs, "threads"), "threads", 0, 4096)) : 0;
+    sampling = ReadSampling(kwargs);
+    if (!sampling) throw std::invalid_argument("injury_probability() needs samples=N");
     sampling->limits = b.scene.limits;
     sampling->safety_factor = b.scene.safety_factor;
   }
@@ -192,13 +201,7 @@ py::object RobustOptimize(const SceneInputs& scene, const py::kwargs& kwargs) {
   design.allow_crushing = Flag(kwargs, "allow_crushing");
   design.allow_unknown_strength = Flag(kwargs, "allow_unknown_strength");
   const std::vector<optim::CandidateMaterial> materials = optim::SelectCandidates(materials::Catalog::BuiltIn());
-  std::optional<optim::InjuryProbabilityOptions> sampling;
-  if (const auto samples = Option(kwargs, "samples")) {
-    sampling.emplace();
-    sampling->samples = Whole(*samples, "samples", 1, 10000000000);
-    sampling->seed = Option(kwargs, "seed") ? Whole(*Option(kwargs, "seed"), "seed", 0, std::numeric_limits<std::uint64_t>::max()) : 1;
-    sampling->threads = Option(kwargs, "threads") ? static_cast<unsigned>(Whole(*Option(kwargs, "threads"), "threads", 0, 4096)) : 0;
-  }
+  std::optional<optim::InjuryProbabilityOptions> sampling = ReadSampling(kwargs);
   if (const auto p = Option(kwargs, "max_injury_probability")) {
     if (!sampling) throw std::invalid_argument("max_injury_probability needs samples=N (the probability is estimated)");
     optim::ProbabilityDesignOptions options;
