@@ -63,8 +63,7 @@ BENCHMARK(BM_ContactMotionFr3Pick);
 void BM_CheckTrajectoryFr3Pick(benchmark::State& state) {
   const covopt::robot::ContactMotionResult motion =
       covopt::robot::ContactMotion(Fr3(), Pick(), Eigen::Vector3d::Zero());
-  std::vector<covopt::optim::MotionSample> samples;
-  for (const auto& s : motion.samples) samples.push_back({s.time_s, s.speed_m_per_s, s.reflected_mass_kg});
+  const std::vector<covopt::optim::MotionSample> samples = covopt::optim::MotionSamples(motion.samples);
   const covopt::Scene scene;  // the paper's covering and head
   for (auto _ : state) benchmark::DoNotOptimize(covopt::optim::CheckTrajectory(scene, samples));
   state.SetItemsProcessed(state.iterations() * static_cast<benchmark::IterationCount>(samples.size()));

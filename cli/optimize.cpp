@@ -86,8 +86,8 @@ void ResolveOracle(const OptimizeOptions& o, Resolved& r) {
   r.request.options.oracle = ResolveOracleFlags(o.oracle_flags, r.request.scene, "optimise", r.warnings);
 }
 
-Resolved Resolve(const OptimizeOptions& o) {
-  Resolved r;
+/// The scene (file, flags, ranges, --urdf) into `r`, with the scene file's limits.
+void ResolveScene(const OptimizeOptions& o, Resolved& r) {
   DesignOptions& d = r.request.options;
   if (o.scene_file) {
     SceneFileExtras extras;
@@ -123,7 +123,12 @@ Resolved Resolve(const OptimizeOptions& o) {
     std::erase_if(r.ranges, [](const SceneRange& range) { return range.field == kRobotMassField; });
     r.warnings.insert(r.warnings.begin(), mass.notes.begin(), mass.notes.end());
   }
+}
 
+/// The design flags (criterion, space, limits, safety factor, ν, step, --thickness) into `r`,
+/// each checked against its range with the flag's name.
+void ResolveDesignFlags(const OptimizeOptions& o, Resolved& r) {
+  DesignOptions& d = r.request.options;
   namespace specs = covopt::quantity_specs;
   d.allow_full_compression = o.allow_full_compression;
   d.allow_crushing = o.allow_crushing;
@@ -171,6 +176,13 @@ Resolved Resolve(const OptimizeOptions& o) {
                                    *o.thickness, *o.max_thickness));
     }
   }
+}
+
+Resolved Resolve(const OptimizeOptions& o) {
+  Resolved r;
+  DesignOptions& d = r.request.options;
+  ResolveScene(o, r);
+  ResolveDesignFlags(o, r);
   if (o.global_algorithm) {
     const std::string& g = *o.global_algorithm;
     if (g == "direct-l") d.global_algorithm = optim::NloptAlgorithm::kDirectL;
@@ -319,171 +331,134 @@ std::string CandidatesCsv(const std::vector<CandidateOutcome>& candidates, const
   return csv;
 }
 
-/// optimize with scene ranges (docs/model.md §11): the thinnest covering admissible for every
-/// value in the box (FindRobustThinnestCovering), or with --max-injury-probability the
-/// thinnest whose probability of failing the criterion is <= P (FindProbabilityDesign).
-int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream& out, std::ostream& err) {
-  const CommandErrors errors(err, "optimize");
-  std::optional<optim::UncertaintyBox> box;
-  std::optional<optim::InjuryProbabilityOptions> sampling;
-  std::optional<double> max_probability;
-  try {
-    if (o.thickness) {
-      throw InputError("--thickness with scene ranges: the robust design finds the thickness; for one covering over "
-                       "the box use 'covopt simulate --covering-thickness ... --material ...' with the ranges");
-    }
-    if (o.oracle_flags.given()) {
-      throw InputError(fmt::format("--{} with scene ranges: the robust searches run on the exact path",
-                                   o.oracle_flags.oracle ? "oracle" : o.oracle_flags.method ? "method" : "rtol"));
-    }
-    UncertaintyFlags flags = o.uncertainty;
-    flags.seed = o.seed;
-    flags.threads = o.threads ? o.threads : std::optional<std::string>{};
-    sampling = ResolveSampling(flags, r.ranges);
-    if (o.max_injury_probability) {
-      const double p = ParseQuantity(*o.max_injury_probability, quantity_specs::kTolerance, "--max-injury-probability");
-      if (!(p > 0.0 && p < 1.0)) {
-        throw InputError(fmt::format("--max-injury-probability must be in (0, 1) (got '{}')", *o.max_injury_probability));
-      }
-      if (!sampling) throw InputError("--max-injury-probability needs --samples N (the probability is estimated)");
-      max_probability = p;
-    }
-    box.emplace(MakeUncertaintyBox(r.request.scene, ResolveUncertainInputs(r.ranges, o.uncertainty.distributions),
-                                   r.ranges));
-  } catch (const std::invalid_argument& e) {
-    return errors.BadInput(e.what());
-  }
-  const DesignOptions& design = r.request.options;
-  const double sf = design.safety_factor;
-  const optim::DesignRule rule = design.rule();
+/// "Scene ..." of the reports: the (nominal) scene, its covering to be designed.
+std::string DesignSceneLine(const Resolved& r) {
   Scene nominal = r.request.scene;
   nominal.covering.thickness_m = 0.0;
   std::string scene_line = SceneHeadline(nominal);
   if (const auto at = scene_line.find("no covering"); at != std::string::npos) {
     scene_line.replace(at, 11, "covering to be designed");
   }
-  const auto print_scope = [&out, &rule] {
-    fmt::print(out, "\nScope\n");
-    for (const std::string& line : optim::HeadVerdictScope(rule)) fmt::print(out, "  {}\n", line);
-  };
+  return scene_line;
+}
 
-  if (max_probability) {
-    optim::ProbabilityDesignOptions options;
-    options.design = design;
-    options.sampling = *sampling;
-    options.max_probability = *max_probability;
-    optim::ProbabilityDesign result;
-    try {
-      SamplingProgressBar bar(err, "designing");
-      options.sampling.progress = bar.Callback();
-      result = optim::FindProbabilityDesign(*box, r.request.materials, options);
-    } catch (const std::invalid_argument& e) {
-      return errors.BadInput(e.what());
-    }
-    if (o.json) {
-      out << report::ProbabilityDesignJson(*box, options, result, r.warnings) << '\n';
-      return 0;
-    }
-    fmt::print(out, "Scene      {} (nominal; the ranges below vary)\n", scene_line);
-    fmt::print(out, "Design for a probability of failing the criterion <= {:g} over {} input{}, {} samples, seed {}\n",
-               *max_probability, box->size(), box->size() == 1 ? "" : "s", options.sampling.samples,
-               options.sampling.seed);
-    fmt::print(out, "Criterion  {}\n", rule.Describe());
-    fmt::print(out, "Target     met when the upper end of the 95 % (Wilson) interval of P(inadmissible) is <= {:g}: at "
-                    "most {} failing samples of {}\n",
-               *max_probability, result.allowed_failures, options.sampling.samples);
-    for (const SceneRange& range : r.ranges) fmt::print(out, "  {:<20} {}  (from {})\n", range.name, range.text, range.source);
-    const auto line = [&](const optim::InjuryProbability& p) {
-      return fmt::format("P(inadmissible) {:.6f} [{:.6f}, {:.6f}], P(laceration) {:.6f}, P(contusion) {:.6f}",
-                         p.inadmissible.probability, p.inadmissible.ci95_low, p.inadmissible.ci95_high,
-                         p.laceration.probability, p.contusion.probability);
-    };
-    fmt::print(out, "\nVerdict: {}\n", optim::ToString(result.verdict));
-    if (result.recommendation) {
-      const optim::ProbabilityCandidate& c = result.candidates[*result.recommendation];
-      fmt::print(out, "Recommended: {} (E {}), {} (thinnest meeting the target {})\n", c.material.name,
-                 MPa(c.material.youngs_modulus_Pa), Mm(*c.recommended_thickness_m), Mm(*c.min_thickness_m));
-      fmt::print(out, "  {}\n  the 95 % upper bound {:.6f} is <= the target {:g}\n", line(c.at_design),
-                 c.at_design.inadmissible.ci95_high, *max_probability);
-    }
-    if (result.continuous) {
-      fmt::print(out, "Continuous optimum: {}: E_c {}, b_c {}; {}\n",
-                 result.continuous->feasible ? "meets the target" : "misses the target",
-                 MPa(result.continuous->design.youngs_modulus_Pa), Mm(result.continuous->design.thickness_m),
-                 line(result.continuous->at_design));
-    }
-    fmt::print(out, "Bare robot: {}\n", line(result.bare_robot));
-    fmt::print(out, "\nCandidates:\n  {:<3} {:<28} {:>9} {:>10} {:>14}  {}\n", "#", "material", "E [MPa]", "thickness",
-               "P(inadmiss.)", "95 % interval");
-    const int shown = std::min<int>(r.runners_up, static_cast<int>(result.candidates.size()));
-    for (int i = 0; i < shown; ++i) {
-      const optim::ProbabilityCandidate& c = result.candidates[static_cast<std::size_t>(i)];
-      fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>10} {:>14.6f}  [{:.6f}, {:.6f}]\n", i + 1,
-                 c.material.name.substr(0, 28), c.material.youngs_modulus_Pa * 1e-6,
-                 c.recommended_thickness_m ? Mm(*c.recommended_thickness_m) : "> max",
-                 c.at_design.inadmissible.probability, c.at_design.inadmissible.ci95_low,
-                 c.at_design.inadmissible.ci95_high);
-    }
-    fmt::print(out, "\nSearch: {} sampled impacts, {:.2f} s\n", result.sample_evaluations, result.seconds);
-    print_scope();
-    for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
-    return 0;
+void PrintScope(std::ostream& out, const optim::DesignRule& rule) {
+  fmt::print(out, "\nScope\n");
+  for (const std::string& line : optim::HeadVerdictScope(rule)) fmt::print(out, "  {}\n", line);
+}
+
+/// What optimize with scene ranges reads beyond the deterministic request: the box, and the
+/// sampling (--samples) and probability target (--max-injury-probability) when given.
+struct RobustInputs {
+  optim::UncertaintyBox box;
+  std::optional<optim::InjuryProbabilityOptions> sampling;
+  std::optional<double> max_probability;
+};
+
+/// The robust inputs. @throws std::invalid_argument (InputError and the library's checks).
+RobustInputs ResolveRobust(const OptimizeOptions& o, const Resolved& r) {
+  if (o.thickness) {
+    throw InputError("--thickness with scene ranges: the robust design finds the thickness; for one covering over "
+                     "the box use 'covopt simulate --covering-thickness ... --material ...' with the ranges");
   }
-
-  optim::RobustDesignOptions options;
-  options.design = design;
-  optim::RobustThinnestCovering result;
-  std::optional<optim::InjuryProbability> probability;
-  try {
-    result = optim::FindRobustThinnestCovering(*box, r.request.materials, options);
-    if (sampling && result.recommendation) {
-      const optim::RobustCandidate& c = result.candidates[*result.recommendation];
-      Scene designed = box->nominal();
-      designed.covering.youngs_modulus_Pa = c.outcome.material.youngs_modulus_Pa;
-      designed.covering.poisson_ratio = c.outcome.material.poisson_ratio;
-      designed.covering.thickness_m = *c.outcome.recommended_thickness_m;
-      const auto inputs = ResolveUncertainInputs(r.ranges, o.uncertainty.distributions);
-      const optim::UncertaintyBox at_design = optim::UncertaintyBox::FromScene(designed, inputs);
-      SamplingProgressBar bar(err, "sampling");
-      sampling->safety_factor = sf;
-      sampling->limits = design.limits;
-      sampling->allow_full_compression = design.allow_full_compression;
-      sampling->progress = bar.Callback();
-      probability = optim::EstimateInjuryProbability(at_design, *sampling);
+  if (o.oracle_flags.given()) {
+    throw InputError(fmt::format("--{} with scene ranges: the robust searches run on the exact path",
+                                 o.oracle_flags.oracle ? "oracle" : o.oracle_flags.method ? "method" : "rtol"));
+  }
+  UncertaintyFlags flags = o.uncertainty;
+  flags.seed = o.seed;
+  flags.threads = o.threads ? o.threads : std::optional<std::string>{};
+  std::optional<optim::InjuryProbabilityOptions> sampling = ResolveSampling(flags, r.ranges);
+  std::optional<double> max_probability;
+  if (o.max_injury_probability) {
+    const double p = ParseQuantity(*o.max_injury_probability, quantity_specs::kTolerance, "--max-injury-probability");
+    if (!(p > 0.0 && p < 1.0)) {
+      throw InputError(fmt::format("--max-injury-probability must be in (0, 1) (got '{}')", *o.max_injury_probability));
     }
+    if (!sampling) throw InputError("--max-injury-probability needs --samples N (the probability is estimated)");
+    max_probability = p;
+  }
+  return {MakeUncertaintyBox(r.request.scene, ResolveUncertainInputs(r.ranges, o.uncertainty.distributions), r.ranges),
+          std::move(sampling), max_probability};
+}
+
+/// The report of FindProbabilityDesign (optimize --max-injury-probability).
+void PrintProbabilityDesign(std::ostream& out, const Resolved& r, const optim::UncertaintyBox& box,
+                            const optim::ProbabilityDesignOptions& options, const optim::ProbabilityDesign& result) {
+  const optim::DesignRule rule = options.design.rule();
+  const double max_probability = options.max_probability;
+  fmt::print(out, "Scene      {} (nominal; the ranges below vary)\n", DesignSceneLine(r));
+  fmt::print(out, "Design for a probability of failing the criterion <= {:g} over {} input{}, {} samples, seed {}\n",
+             max_probability, box.size(), box.size() == 1 ? "" : "s", options.sampling.samples, options.sampling.seed);
+  fmt::print(out, "Criterion  {}\n", rule.Describe());
+  fmt::print(out, "Target     met when the upper end of the 95 % (Wilson) interval of P(inadmissible) is <= {:g}: at "
+                  "most {} failing samples of {}\n",
+             max_probability, result.allowed_failures, options.sampling.samples);
+  for (const SceneRange& range : r.ranges) fmt::print(out, "  {:<20} {}  (from {})\n", range.name, range.text, range.source);
+  const auto line = [&](const optim::InjuryProbability& p) {
+    return fmt::format("P(inadmissible) {:.6f} [{:.6f}, {:.6f}], P(laceration) {:.6f}, P(contusion) {:.6f}",
+                       p.inadmissible.probability, p.inadmissible.ci95_low, p.inadmissible.ci95_high,
+                       p.laceration.probability, p.contusion.probability);
+  };
+  fmt::print(out, "\nVerdict: {}\n", optim::ToString(result.verdict));
+  if (result.recommendation) {
+    const optim::ProbabilityCandidate& c = result.candidates[*result.recommendation];
+    fmt::print(out, "Recommended: {} (E {}), {} (thinnest meeting the target {})\n", c.material.name,
+               MPa(c.material.youngs_modulus_Pa), Mm(*c.recommended_thickness_m), Mm(*c.min_thickness_m));
+    fmt::print(out, "  {}\n  the 95 % upper bound {:.6f} is <= the target {:g}\n", line(c.at_design),
+               c.at_design.inadmissible.ci95_high, max_probability);
+  }
+  if (result.continuous) {
+    fmt::print(out, "Continuous optimum: {}: E_c {}, b_c {}; {}\n",
+               result.continuous->feasible ? "meets the target" : "misses the target",
+               MPa(result.continuous->design.youngs_modulus_Pa), Mm(result.continuous->design.thickness_m),
+               line(result.continuous->at_design));
+  }
+  fmt::print(out, "Bare robot: {}\n", line(result.bare_robot));
+  fmt::print(out, "\nCandidates:\n  {:<3} {:<28} {:>9} {:>10} {:>14}  {}\n", "#", "material", "E [MPa]", "thickness",
+             "P(inadmiss.)", "95 % interval");
+  const int shown = std::min<int>(r.runners_up, static_cast<int>(result.candidates.size()));
+  for (int i = 0; i < shown; ++i) {
+    const optim::ProbabilityCandidate& c = result.candidates[static_cast<std::size_t>(i)];
+    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>10} {:>14.6f}  [{:.6f}, {:.6f}]\n", i + 1,
+               c.material.name.substr(0, 28), c.material.youngs_modulus_Pa * 1e-6,
+               c.recommended_thickness_m ? Mm(*c.recommended_thickness_m) : "> max",
+               c.at_design.inadmissible.probability, c.at_design.inadmissible.ci95_low,
+               c.at_design.inadmissible.ci95_high);
+  }
+  fmt::print(out, "\nSearch: {} sampled impacts, {:.2f} s\n", result.sample_evaluations, result.seconds);
+  PrintScope(out, rule);
+  for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
+}
+
+/// optimize --max-injury-probability: the thinnest covering whose probability of failing the
+/// criterion is <= P (FindProbabilityDesign).
+int RunProbabilityDesign(const OptimizeOptions& o, const Resolved& r, const RobustInputs& inputs, std::ostream& out,
+                         std::ostream& err) {
+  const CommandErrors errors(err, "optimize");
+  optim::ProbabilityDesignOptions options;
+  options.design = r.request.options;
+  options.sampling = *inputs.sampling;
+  options.max_probability = *inputs.max_probability;
+  optim::ProbabilityDesign result;
+  try {
+    SamplingProgressBar bar(err, "designing");
+    options.sampling.progress = bar.Callback();
+    result = optim::FindProbabilityDesign(inputs.box, r.request.materials, options);
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
   if (o.json) {
-    out << report::RobustDesignJson(*box, options, result, probability ? &*probability : nullptr, r.warnings) << '\n';
-    return 0;
+    out << report::ProbabilityDesignJson(inputs.box, options, result, r.warnings) << '\n';
+  } else {
+    PrintProbabilityDesign(out, r, inputs.box, options, result);
   }
-  fmt::print(out, "Scene      {} (nominal; the ranges below vary)\n", scene_line);
-  fmt::print(out, "Criterion  {}\n", rule.Describe());
-  fmt::print(out, "Robust design over {} uncertain input{}:\n", box->size(), box->size() == 1 ? "" : "s");
-  for (const SceneRange& range : r.ranges) fmt::print(out, "  {:<20} {}  (from {})\n", range.name, range.text, range.source);
-  fmt::print(out, "\nVerdict: {}\n", optim::ToString(result.verdict));
-  if (result.recommendation) {
-    const optim::RobustCandidate& c = result.candidates[*result.recommendation];
-    fmt::print(out, "Recommended: {} (E {}, ν {:.2f}{}), {} — admissible for every value in the box (thinnest {})\n",
-               c.outcome.material.name, MPa(c.outcome.material.youngs_modulus_Pa), c.outcome.material.poisson_ratio,
-               c.outcome.material.poisson_assumed ? " assumed" : "", Mm(*c.outcome.recommended_thickness_m),
-               Mm(*c.outcome.min_safe_thickness_m));
-    if (c.worst_case_at_thinnest) {
-      fmt::print(out, "  What sets the design, at {}:\n", Mm(*c.outcome.min_safe_thickness_m));
-      PrintWorstCase(out, *box, *c.worst_case_at_thinnest, "  ");
-    }
-    fmt::print(out, "  At {}:\n", Mm(*c.outcome.recommended_thickness_m));
-    PrintWorstCase(out, *box, c.worst_case, "  ");
-  }
-  if (result.continuous) {
-    const optim::RobustContinuousOptimum& c = *result.continuous;
-    fmt::print(out, "Continuous optimum: E_c {}, b_c {}{}\n", MPa(c.design.youngs_modulus_Pa), Mm(c.design.thickness_m),
-               c.feasible ? "" : " (not admissible for the whole box within the search space)");
-    PrintWorstCase(out, *box, c.worst_case, "  ");
-  }
-  fmt::print(out, "Bare robot over the box:\n");
-  PrintWorstCase(out, *box, result.bare_robot, "  ");
+  return 0;
+}
+
+/// The candidate table of the robust design, each at its worst case over the box.
+void PrintRobustCandidates(std::ostream& out, const Resolved& r, const optim::RobustThinnestCovering& result,
+                           const optim::DesignRule& rule) {
   fmt::print(out, "\nCandidates (each at its worst case over the box):\n  {:<3} {:<28} {:>9} {:>10} {:>7} {:>7} {:>7} {:>8} {:>8}  {:<16} {:>6}\n",
              "#", "material", "E [MPa]", "thickness", "lacer.", "contus.", "compr.", "crush", "margin", "governs",
              "rounds");
@@ -502,13 +477,200 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
   if (static_cast<int>(result.candidates.size()) > shown) {
     fmt::print(out, "  ... {} more (--top N, or --json for all)\n", result.candidates.size() - static_cast<std::size_t>(shown));
   }
+}
+
+/// The report of FindRobustThinnestCovering, with the recommendation's probability when sampled.
+void PrintRobustDesign(std::ostream& out, const Resolved& r, const optim::UncertaintyBox& box,
+                       const optim::RobustDesignOptions& options, const optim::RobustThinnestCovering& result,
+                       const std::optional<optim::InjuryProbability>& probability) {
+  const optim::DesignRule rule = options.design.rule();
+  fmt::print(out, "Scene      {} (nominal; the ranges below vary)\n", DesignSceneLine(r));
+  fmt::print(out, "Criterion  {}\n", rule.Describe());
+  fmt::print(out, "Robust design over {} uncertain input{}:\n", box.size(), box.size() == 1 ? "" : "s");
+  for (const SceneRange& range : r.ranges) fmt::print(out, "  {:<20} {}  (from {})\n", range.name, range.text, range.source);
+  fmt::print(out, "\nVerdict: {}\n", optim::ToString(result.verdict));
+  if (result.recommendation) {
+    const optim::RobustCandidate& c = result.candidates[*result.recommendation];
+    fmt::print(out, "Recommended: {} (E {}, ν {:.2f}{}), {} — admissible for every value in the box (thinnest {})\n",
+               c.outcome.material.name, MPa(c.outcome.material.youngs_modulus_Pa), c.outcome.material.poisson_ratio,
+               c.outcome.material.poisson_assumed ? " assumed" : "", Mm(*c.outcome.recommended_thickness_m),
+               Mm(*c.outcome.min_safe_thickness_m));
+    if (c.worst_case_at_thinnest) {
+      fmt::print(out, "  What sets the design, at {}:\n", Mm(*c.outcome.min_safe_thickness_m));
+      PrintWorstCase(out, box, *c.worst_case_at_thinnest, "  ");
+    }
+    fmt::print(out, "  At {}:\n", Mm(*c.outcome.recommended_thickness_m));
+    PrintWorstCase(out, box, c.worst_case, "  ");
+  }
+  if (result.continuous) {
+    const optim::RobustContinuousOptimum& c = *result.continuous;
+    fmt::print(out, "Continuous optimum: E_c {}, b_c {}{}\n", MPa(c.design.youngs_modulus_Pa), Mm(c.design.thickness_m),
+               c.feasible ? "" : " (not admissible for the whole box within the search space)");
+    PrintWorstCase(out, box, c.worst_case, "  ");
+  }
+  fmt::print(out, "Bare robot over the box:\n");
+  PrintWorstCase(out, box, result.bare_robot, "  ");
+  PrintRobustCandidates(out, r, result, rule);
   if (probability) {
     fmt::print(out, "\nThe recommendation over the box's distribution:\n");
     PrintInjuryProbability(out, *probability, "  ");
   }
   fmt::print(out, "\nSearch: {} exact-path evaluations, {:.1f} ms\n", result.evaluations, result.seconds * 1e3);
-  print_scope();
+  PrintScope(out, rule);
   for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
+}
+
+/// The recommendation of a deterministic design: its material, ratios, margin and thickness.
+void PrintRecommendation(std::ostream& out, const Resolved& r, const optim::DesignResult& result) {
+  const CandidateOutcome& c = result.candidates[*result.recommendation];
+  const optim::DesignRule& rule = result.rule;
+  const double sf = r.request.options.safety_factor;
+  const optim::GoverningRatio governing = c.score.governing(rule);
+  fmt::print(out, "  {} ({}), E {}, ν {:.2f}{}\n", c.material.name, c.material.family,
+             MPa(c.material.youngs_modulus_Pa), c.material.poisson_ratio,
+             c.material.poisson_assumed ? " (ν unknown, 0.25 assumed)" : "");
+  fmt::print(out, "  laceration ratio {:.3f}, contusion ratio {:.3f}, compression ratio {:.3f}; {}\n",
+             c.score.laceration_ratio, c.score.contusion_ratio, c.score.compression_ratio, CrushWords(c.score, c));
+  fmt::print(out, "  governed by {} (ratio {:.3f}): margin {} of the {}; {}\n", optim::ToString(governing.criterion),
+             governing.ratio, Percent(c.margin), sf > 1 ? "derated limit" : "limit", CompressionWords(c.score));
+  if (c.min_safe_thickness_m && !r.request.thickness_m) {
+    if (c.stock_thickness_beyond_max_m) {
+      fmt::print(out,
+                 "  thinnest admissible thickness {}; rounding up to stock ({}) would pass the maximum {}, "
+                 "so {} is recommended (cut to size)\n",
+                 Mm(*c.min_safe_thickness_m), Mm(*c.stock_thickness_beyond_max_m),
+                 Mm(r.request.options.space.max_thickness_m), Mm(*c.recommended_thickness_m));
+    } else if (*c.recommended_thickness_m > *c.min_safe_thickness_m) {
+      fmt::print(out, "  thinnest admissible thickness {}, rounded up to {} (a multiple of {})\n",
+                 Mm(*c.min_safe_thickness_m), Mm(*c.recommended_thickness_m), Mm(r.request.options.thickness_step_m));
+    } else {
+      fmt::print(out, "  thinnest admissible thickness {}\n", Mm(*c.min_safe_thickness_m));
+    }
+  }
+}
+
+/// The bare robot and the continuous optimum (or best design at a fixed thickness).
+void PrintBareAndContinuous(std::ostream& out, const Resolved& r, const optim::DesignResult& result) {
+  const optim::ContinuousOptimum& continuous = result.continuous;
+  const DesignScore& bare = result.bare_robot;
+  const bool bare_safe = !result.covering_needed();
+  const double sf = r.request.options.safety_factor;
+  fmt::print(out, "\nBare robot          laceration ratio {:.3f}, contusion ratio {:.3f}: {}\n", bare.laceration_ratio,
+             bare.contusion_ratio, bare_safe ? "safe" : "UNSAFE");
+  if (bare_safe && !r.request.thickness_m) {
+    fmt::print(out, "Continuous optimum  none needed: the bare robot is safe\n");
+    return;
+  }
+  const DesignScore& best = continuous.score;
+  fmt::print(out, "Continuous {}  E_c* = {}, b_c* = {} (ν {:.2f}): laceration {:.3f}, contusion {:.3f}, {}{}\n",
+             r.request.thickness_m ? "best   " : "optimum", MPa(best.design.youngs_modulus_Pa), Mm(best.design.thickness_m),
+             best.poisson_ratio, best.laceration_ratio, best.contusion_ratio, CompressionWords(best),
+             best.admissible(sf, result.criterion) ? "" : " (not admissible)");
+  if (!result.rule.crushing_allowed) {
+    fmt::print(out, "                    needs a material of compressive strength >= {} (peak compressive stress {} "
+                    "x safety factor {:g}), or one that does not crush\n",
+               MPa(best.required_strength_Pa(sf)), MPa(best.peaks.max_compressive_stress_Pa), sf);
+  }
+  if (result.recommendation && !r.request.thickness_m && continuous.feasible) {
+    const CandidateOutcome& c = result.candidates[*result.recommendation];
+    const double extra = *c.recommended_thickness_m - best.design.thickness_m;
+    fmt::print(out, "                    the recommendation is {:.2f}x its modulus and {} {}\n",
+               c.material.youngs_modulus_Pa / best.design.youngs_modulus_Pa, Mm(std::abs(extra)),
+               extra >= 0 ? "thicker" : "thinner");
+  }
+}
+
+/// The solver and oracle lines, the scope and the warnings.
+void PrintSolverAndWarnings(std::ostream& out, const Resolved& r, const optim::DesignResult& result) {
+  const optim::ContinuousOptimum& continuous = result.continuous;
+  const optim::SolverReport& global = continuous.global;
+  const optim::SolverReport& local = continuous.local;
+  fmt::print(out, "\nSolver  global {}: {} ({} evaluations); bracket: {} ({} evaluations); local {}; {} {} "
+                  "evaluations, {:.1f} ms\n",
+             global.backend, optim::ToString(global.termination), global.objective_evaluations,
+             optim::ToString(continuous.bracket.termination), continuous.bracket.objective_evaluations,
+             local.backend.empty() ? std::string("not run")
+                                   : fmt::format("{}: {} ({})", local.backend, optim::ToString(local.termination),
+                                                 local.raw_name),
+             result.evaluations, result.oracle.kind == optim::OracleKind::kExact ? "exact-path" : "time-path",
+             result.seconds * 1e3);
+  fmt::print(out, "        kept: {}\n", continuous.source);
+  fmt::print(out, "Oracle  {}, {} gradients; {}\n", result.oracle.Name(), GradientWords(result.oracle.gradient),
+             result.oracle.reason);
+  fmt::print(out, "\nScope\n");
+  for (const std::string& line : result.scope) fmt::print(out, "  {}\n", line);
+  for (const std::string& w : r.warnings) fmt::print(out, "Warning: {}\n", w);       // about the input
+  for (const std::string& w : result.warnings) fmt::print(out, "Warning: {}\n", w);  // about the answer
+}
+
+/// The report of a deterministic design (optim::Design).
+void PrintDesign(std::ostream& out, const Resolved& r, const optim::DesignResult& result) {
+  const double sf = r.request.options.safety_factor;
+  const double laceration_limit = r.request.options.limits.laceration_tensile_stress_Pa;
+  const double contusion_limit = r.request.options.limits.contusion_energy_density_J_per_m2;
+  fmt::print(out, "Scene      {}\n", DesignSceneLine(r));
+  fmt::print(out, "Limits     laceration {:g} MPa, contusion {:g} J/cm², safety factor {:g}{}{}\n", laceration_limit * 1e-6,
+             contusion_limit * 1e-4, sf,
+             sf > 1 ? fmt::format(": designed to {:.4g} MPa and {:.4g} J/cm²", laceration_limit * 1e-6 / sf,
+                                  contusion_limit * 1e-4 / sf)
+                    : std::string(),
+             r.request.thickness_m ? fmt::format("; thickness fixed at {}", Mm(*r.request.thickness_m))
+                                   : fmt::format("; thickness up to {}", Mm(r.request.options.space.max_thickness_m)));
+  const optim::DesignRule& rule = result.rule;
+  fmt::print(out, "Criterion  {}{}\n", rule.Describe(),
+             result.criterion == optim::DesignCriterion::kNoFullCompression && !rule.crushing_allowed
+                 ? " (--allow-full-compression for the paper's criterion, --allow-crushing for a sacrificial liner)"
+                 : "");
+  fmt::print(out, "\n{}\n", result.message);
+  if (result.recommendation) PrintRecommendation(out, r, result);
+  PrintBareAndContinuous(out, r, result);
+  const std::vector<CandidateOutcome>& candidates = result.candidates;
+  fmt::print(out, "\nCandidates ({})\n",
+             candidates.empty()      ? "none: the catalog filter left nothing"
+             : r.request.thickness_m ? "admissible first, then by margin at this thickness"
+                                     : "admissible first, by stock thickness then margin; then the rest by margin at "
+                                       "the maximum thickness");
+  PrintCandidates(out, candidates, r.runners_up, r.request.thickness_m.has_value(), rule);
+  fmt::print(out, "  ratios: laceration, contusion, compression (the covering's own travel used, 0.8 b_c beyond the "
+                  "scalp's 0.8 b_s), crush (peak compressive stress / compressive strength); margin = 1 - SF x the "
+                  "governing one\n");
+  PrintSolverAndWarnings(out, r, result);
+}
+
+/// optimize with scene ranges (docs/model.md §11): the thinnest covering admissible for every
+/// value in the box (FindRobustThinnestCovering), or with --max-injury-probability the
+/// thinnest whose probability of failing the criterion is <= P (FindProbabilityDesign).
+int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream& out, std::ostream& err) {
+  const CommandErrors errors(err, "optimize");
+  std::optional<RobustInputs> inputs;
+  try {
+    inputs.emplace(ResolveRobust(o, r));
+  } catch (const std::invalid_argument& e) {
+    return errors.BadInput(e.what());
+  }
+  if (inputs->max_probability) return RunProbabilityDesign(o, r, *inputs, out, err);
+
+  optim::RobustDesignOptions options;
+  options.design = r.request.options;
+  optim::RobustThinnestCovering result;
+  std::optional<optim::InjuryProbability> probability;
+  try {
+    result = optim::FindRobustThinnestCovering(inputs->box, r.request.materials, options);
+    if (inputs->sampling && result.recommendation) {
+      SamplingProgressBar bar(err, "sampling");
+      optim::InjuryProbabilityOptions sampling = *inputs->sampling;
+      sampling.progress = bar.Callback();
+      probability = optim::EstimateRecommendationInjuryProbability(inputs->box, result, options, sampling);
+    }
+  } catch (const std::invalid_argument& e) {
+    return errors.BadInput(e.what());
+  }
+  if (o.json) {
+    out << report::RobustDesignJson(inputs->box, options, result, probability ? &*probability : nullptr, r.warnings)
+        << '\n';
+  } else {
+    PrintRobustDesign(out, r, inputs->box, options, result, probability);
+  }
   return 0;
 }
 
@@ -614,7 +776,6 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                                                                               : "--distribution"));
   }
 
-  const double sf = r.request.options.safety_factor;
   optim::DesignResult result;
   try {
     result = optim::Design(r.request);  // the whole computation: one library call
@@ -635,115 +796,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   }
   if (options.csv) fmt::print(out, "Wrote {} ({} candidates)\n\n", *options.csv, result.candidates.size());
 
-  const std::string& headline = result.message;
-  const std::vector<CandidateOutcome>& candidates = result.candidates;
-  const optim::ContinuousOptimum& continuous = result.continuous;
-  const DesignScore& bare = result.bare_robot;
-  const long evaluations = result.evaluations;
-  const double seconds = result.seconds;
-  const optim::SolverReport& global = continuous.global;
-  const optim::SolverReport& local = continuous.local;
-  const optim::DesignCriterion criterion = result.criterion;
-  const bool bare_safe = !result.covering_needed();
-  std::optional<CandidateOutcome> recommended;
-  if (result.recommendation) recommended = candidates[*result.recommendation];
-  const double laceration_limit = r.request.options.limits.laceration_tensile_stress_Pa;
-  const double contusion_limit = r.request.options.limits.contusion_energy_density_J_per_m2;
-
-  Scene shown = r.request.scene;
-  shown.covering.thickness_m = 0.0;
-  std::string headline_scene = SceneHeadline(shown);
-  if (const auto at = headline_scene.find("no covering"); at != std::string::npos) {
-    headline_scene.replace(at, 11, "covering to be designed");
-  }
-  fmt::print(out, "Scene      {}\n", headline_scene);
-  fmt::print(out, "Limits     laceration {:g} MPa, contusion {:g} J/cm², safety factor {:g}{}{}\n", laceration_limit * 1e-6,
-             contusion_limit * 1e-4, sf,
-             sf > 1 ? fmt::format(": designed to {:.4g} MPa and {:.4g} J/cm²", laceration_limit * 1e-6 / sf,
-                                  contusion_limit * 1e-4 / sf)
-                    : std::string(),
-             r.request.thickness_m ? fmt::format("; thickness fixed at {}", Mm(*r.request.thickness_m))
-                           : fmt::format("; thickness up to {}", Mm(r.request.options.space.max_thickness_m)));
-  const optim::DesignRule& rule = result.rule;
-  fmt::print(out, "Criterion  {}{}\n", rule.Describe(),
-             criterion == optim::DesignCriterion::kNoFullCompression && !rule.crushing_allowed
-                 ? " (--allow-full-compression for the paper's criterion, --allow-crushing for a sacrificial liner)"
-                 : "");
-  fmt::print(out, "\n{}\n", headline);
-  if (recommended) {
-    const CandidateOutcome& c = *recommended;
-    const optim::GoverningRatio governing = c.score.governing(rule);
-    fmt::print(out, "  {} ({}), E {}, ν {:.2f}{}\n", c.material.name, c.material.family,
-               MPa(c.material.youngs_modulus_Pa), c.material.poisson_ratio,
-               c.material.poisson_assumed ? " (ν unknown, 0.25 assumed)" : "");
-    fmt::print(out, "  laceration ratio {:.3f}, contusion ratio {:.3f}, compression ratio {:.3f}; {}\n",
-               c.score.laceration_ratio, c.score.contusion_ratio, c.score.compression_ratio,
-               CrushWords(c.score, c));
-    fmt::print(out, "  governed by {} (ratio {:.3f}): margin {} of the {}; {}\n", optim::ToString(governing.criterion),
-               governing.ratio, Percent(c.margin), sf > 1 ? "derated limit" : "limit", CompressionWords(c.score));
-    if (c.min_safe_thickness_m && !r.request.thickness_m) {
-      if (c.stock_thickness_beyond_max_m) {
-        fmt::print(out,
-                   "  thinnest admissible thickness {}; rounding up to stock ({}) would pass the maximum {}, "
-                   "so {} is recommended (cut to size)\n",
-                   Mm(*c.min_safe_thickness_m), Mm(*c.stock_thickness_beyond_max_m),
-                   Mm(r.request.options.space.max_thickness_m), Mm(*c.recommended_thickness_m));
-      } else if (*c.recommended_thickness_m > *c.min_safe_thickness_m) {
-        fmt::print(out, "  thinnest admissible thickness {}, rounded up to {} (a multiple of {})\n",
-                   Mm(*c.min_safe_thickness_m), Mm(*c.recommended_thickness_m), Mm(r.request.options.thickness_step_m));
-      } else {
-        fmt::print(out, "  thinnest admissible thickness {}\n", Mm(*c.min_safe_thickness_m));
-      }
-    }
-  }
-  fmt::print(out, "\nBare robot          laceration ratio {:.3f}, contusion ratio {:.3f}: {}\n", bare.laceration_ratio,
-             bare.contusion_ratio, bare_safe ? "safe" : "UNSAFE");
-  if (bare_safe && !r.request.thickness_m) {
-    fmt::print(out, "Continuous optimum  none needed: the bare robot is safe\n");
-  } else {
-    const DesignScore& best = continuous.score;
-    fmt::print(out, "Continuous {}  E_c* = {}, b_c* = {} (ν {:.2f}): laceration {:.3f}, contusion {:.3f}, {}{}\n",
-               r.request.thickness_m ? "best   " : "optimum", MPa(best.design.youngs_modulus_Pa), Mm(best.design.thickness_m),
-               best.poisson_ratio, best.laceration_ratio, best.contusion_ratio, CompressionWords(best),
-               best.admissible(sf, criterion) ? "" : " (not admissible)");
-    if (!rule.crushing_allowed) {
-      fmt::print(out, "                    needs a material of compressive strength >= {} (peak compressive stress {} "
-                      "x safety factor {:g}), or one that does not crush\n",
-                 MPa(best.required_strength_Pa(sf)), MPa(best.peaks.max_compressive_stress_Pa), sf);
-    }
-    if (recommended && !r.request.thickness_m && continuous.feasible) {
-      const CandidateOutcome& c = *recommended;
-      const double extra = *c.recommended_thickness_m - best.design.thickness_m;
-      fmt::print(out, "                    the recommendation is {:.2f}x its modulus and {} {}\n",
-                 c.material.youngs_modulus_Pa / best.design.youngs_modulus_Pa, Mm(std::abs(extra)),
-                 extra >= 0 ? "thicker" : "thinner");
-    }
-  }
-  fmt::print(out, "\nCandidates ({})\n",
-             candidates.empty() ? "none: the catalog filter left nothing"
-             : r.request.thickness_m    ? "admissible first, then by margin at this thickness"
-                                : "admissible first, by stock thickness then margin; then the rest by margin at the "
-                                  "maximum thickness");
-  PrintCandidates(out, candidates, r.runners_up, r.request.thickness_m.has_value(), rule);
-  fmt::print(out, "  ratios: laceration, contusion, compression (the covering's own travel used, 0.8 b_c beyond the "
-                  "scalp's 0.8 b_s), crush (peak compressive stress / compressive strength); margin = 1 - SF x the "
-                  "governing one\n");
-  fmt::print(out, "\nSolver  global {}: {} ({} evaluations); bracket: {} ({} evaluations); local {}; {} {} "
-                  "evaluations, {:.1f} ms\n",
-             global.backend, optim::ToString(global.termination), global.objective_evaluations,
-             optim::ToString(continuous.bracket.termination), continuous.bracket.objective_evaluations,
-             local.backend.empty() ? std::string("not run")
-                                   : fmt::format("{}: {} ({})", local.backend, optim::ToString(local.termination),
-                                                 local.raw_name),
-             evaluations, result.oracle.kind == optim::OracleKind::kExact ? "exact-path" : "time-path",
-             seconds * 1e3);
-  fmt::print(out, "        kept: {}\n", continuous.source);
-  fmt::print(out, "Oracle  {}, {} gradients; {}\n", result.oracle.Name(), GradientWords(result.oracle.gradient),
-             result.oracle.reason);
-  fmt::print(out, "\nScope\n");
-  for (const std::string& line : result.scope) fmt::print(out, "  {}\n", line);
-  for (const std::string& w : r.warnings) fmt::print(out, "Warning: {}\n", w);         // about the input
-  for (const std::string& w : result.warnings) fmt::print(out, "Warning: {}\n", w);    // about the answer
+  PrintDesign(out, r, result);
   return 0;
 }
 

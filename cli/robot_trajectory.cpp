@@ -239,7 +239,7 @@ TrajectoryRun Resolve(const RobotModelOptions& model, const RobotTrajectoryOptio
     throw InputError(fmt::format("--trajectory: {}", e.what()));
   }
   try {
-    run.check = optim::CheckTrajectory(run.scene.scene, report::MotionSamples(run.motion), {run.limit});
+    run.check = optim::CheckTrajectory(run.scene.scene, optim::MotionSamples(run.motion.samples), {run.limit});
   } catch (const std::invalid_argument& e) {
     throw InputError(Attribute(e.what(), run.scene, *options.file));
   }

@@ -9,7 +9,7 @@
 ///                  [--json] [--csv FILE|-] [--plot FILE.png|FILE.svg]
 ///
 /// The pipeline: robot::ReadJointTrajectory -> robot::ContactMotion (per sample the contact
-/// point's speed |J_v q̇| and the reflected mass along its motion) -> report::MotionSamples ->
+/// point's speed |J_v q̇| and the reflected mass along its motion) -> optim::MotionSamples ->
 /// optim::CheckTrajectory, the one library call that judges the motion. The covering, head
 /// and limits come from the scene flags as in `covopt speed-limit` (ResolveSimulation); the
 /// robot's mass and speed come from each sample, so --robot-mass, --speed, --joints and

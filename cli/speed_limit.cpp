@@ -16,15 +16,16 @@
 #include "uncertainty_options.hpp"
 #include "covopt/optim/design.hpp"
 #include "covopt/optim/robust_design.hpp"
+#include "covopt/optim/speed_limit_table.hpp"
 #include "covopt/report/csv.hpp"
 #include "covopt/report/robust_json.hpp"
-#include <nlohmann/json.hpp>
+#include "covopt/report/speed_limit_json.hpp"
 
 namespace covopt::cli {
 namespace {
 
-using report::SpeedLimitQuantity;
-using report::SpeedLimitRow;
+using optim::SpeedLimitQuantity;
+using optim::SpeedLimitRow;
 
 constexpr std::string_view kFooter = R"(Values take a unit as in 'covopt simulate' (10kg, 2m/s, 15mm, 27.6MPa).
 The max safe speed is the largest v0 such that every speed up to it is safe:
@@ -69,36 +70,22 @@ std::vector<double> ParseValues(const std::string& text, std::string_view axis_n
 
 std::string MassText(double kg) { return std::isinf(kg) ? std::string("fixed") : fmt::format("{:.4g} kg", kg); }
 
-/// The rows of every covering: one library call each.
+/// The rows of every covering: one library call.
 std::vector<SpeedLimitRow> ComputeRows(const SpeedLimitPlan& plan, std::string* bad_input) {
-  std::vector<SpeedLimitRow> rows;
+  std::vector<optim::SpeedLimitCovering> coverings;
   for (const SimulationPlan& covering : plan.coverings) {
-    for (const double value : plan.values) {
-      SpeedLimitRow row;
-      if (covering.covering_material && covering.scene.covering.thickness_m > 0.0) {
-        row.material = covering.covering_material->name;
-      }
-      Scene scene = covering.scene;
-      optim::SpeedLimitOptions options = plan.options;
-      options.covering_compressive_strength_Pa = CrushCheckOf(covering).compressive_strength_Pa;
-      try {
-        if (plan.quantity == SpeedLimitQuantity::kSpeed) {
-          scene.robot.mass_kg = value;
-          row.robot_mass_kg = value;
-          row.speed_limit = optim::MaxSafeSpeed(scene, options);
-        } else {
-          scene.robot.speed_m_per_s = value;
-          row.speed_m_per_s = value;
-          row.mass_limit = optim::MaxSafeMass(scene, options);
-        }
-      } catch (const std::invalid_argument& e) {
-        *bad_input = AttributeError(e.what(), covering);
-        return {};
-      }
-      rows.push_back(std::move(row));
-    }
+    optim::SpeedLimitOptions options = plan.options;
+    options.covering_compressive_strength_Pa = CrushCheckOf(covering).compressive_strength_Pa;
+    coverings.push_back({covering.scene,
+                         covering.covering_material ? std::optional(covering.covering_material->name) : std::nullopt,
+                         options});
   }
-  return rows;
+  try {
+    return optim::SpeedLimitTable(plan.quantity, coverings, plan.values);
+  } catch (const optim::SpeedLimitTableError& e) {
+    *bad_input = AttributeError(e.what(), plan.coverings[e.covering_index()]);
+    return {};
+  }
 }
 
 void PrintRows(std::ostream& out, const SpeedLimitPlan& plan, const std::vector<SpeedLimitRow>& rows) {
@@ -394,8 +381,8 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
                                        "the exact path; drop it",
                                        plan.csv_file ? "--csv" : plan.plot_file ? "--plot" : "--oracle/--method/--rtol"));
   }
-  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  nlohmann::ordered_json inputs;
+  std::vector<optim::RobustSpeedLimitRow> rows;
+  std::optional<optim::UncertaintyBox> first_box;
   std::string text;
   try {
     for (const SimulationPlan& covering : plan.coverings) {
@@ -404,14 +391,14 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
         Scene nominal = covering.scene;
         (by_speed ? nominal.robot.mass_kg : nominal.robot.speed_m_per_s) = value;
         const optim::UncertaintyBox box = MakeUncertaintyBox(nominal, uncertain, covering.ranges);
-        if (inputs.is_null()) inputs = nlohmann::ordered_json::parse(report::UncertainInputsJson(box, -1));
-        const std::string material = covering.covering_material ? covering.covering_material->name : std::string();
-        nlohmann::ordered_json row;
-        if (!material.empty()) row["material"] = material;
+        if (!first_box) first_box = box;
+        optim::RobustSpeedLimitRow row;
+        if (covering.covering_material) row.material = covering.covering_material->name;
+        const std::string material = row.material.value_or("");
         if (by_speed) {
-          const optim::RobustSpeedLimit limit = optim::MaxSafeSpeedOverBox(box, plan.options);
-          row["robot_mass_kg"] = std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
-          row.update(nlohmann::ordered_json::parse(report::RobustSpeedLimitJson(box, limit, -1)));
+          row.robot_mass_kg = value;
+          row.speed_limit = optim::MaxSafeSpeedOverBox(box, plan.options);
+          const optim::RobustSpeedLimit& limit = row.speed_limit;
           text += fmt::format("{}{}robot {}: max safe speed {} for every value in the box ({}), limited by {}\n",
                               material, material.empty() ? "" : ", ", FormatQuantity(value, QuantityKind::kMass),
                               FormatQuantity(limit.limit.max_safe_speed_m_per_s, QuantityKind::kSpeed),
@@ -419,23 +406,9 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
           text += fmt::format("  set at: {} (found by {}, {} evaluations)\n", DescribeValues(box, limit.values),
                               limit.found_by, limit.evaluations);
         } else {
-          const optim::RobustMassLimit limit = optim::MaxSafeMassOverBox(box, plan.options);
-          const nlohmann::ordered_json where = nlohmann::ordered_json::parse(report::WorstCaseJson(box, [&] {
-            optim::WorstCase w;
-            w.values = limit.values;
-            return w;
-          }(), -1));
-          row["speed_m_per_s"] = value;
-          row["max_safe_mass_kg"] = std::isfinite(limit.limit.max_safe_mass_kg)
-                                        ? nlohmann::ordered_json(limit.limit.max_safe_mass_kg)
-                                        : nlohmann::ordered_json(nullptr);
-          row["status"] = optim::ToString(limit.limit.status);
-          row["limited_by"] = optim::ToString(limit.limit.limited_by);
-          row["message"] = limit.limit.message;
-          row["worst_case"] = {{"inputs", where["inputs"]}, {"units", where["units"]}};
-          row["found_by"] = limit.found_by;
-          row["evaluations"] = limit.evaluations;
-          row["seconds"] = limit.seconds;
+          row.speed_m_per_s = value;
+          row.mass_limit = optim::MaxSafeMassOverBox(box, plan.options);
+          const optim::RobustMassLimit& limit = row.mass_limit;
           text += fmt::format("{}{}at {}: max safe robot mass {} for every value in the box ({}), limited by {}\n",
                               material, material.empty() ? "" : ", ", FormatQuantity(value, QuantityKind::kSpeed),
                               FormatQuantity(limit.limit.max_safe_mass_kg, QuantityKind::kMass),
@@ -443,18 +416,14 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
           text += fmt::format("  set at: {} (found by {}, {} evaluations)\n", DescribeValues(box, limit.values),
                               limit.found_by, limit.evaluations);
         }
-        rows.push_back(row);
+        rows.push_back(std::move(row));
       }
     }
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
   if (plan.json) {
-    nlohmann::ordered_json j;
-    j["solve_for"] = by_speed ? "speed" : "mass";
-    j["uncertain_inputs"] = inputs;
-    j["rows"] = rows;
-    out << j.dump(2) << '\n';
+    out << report::RobustSpeedLimitTableJson(plan.quantity, *first_box, rows) << '\n';
   } else {
     out << "Limits over the box of " << plan.coverings.front().ranges.size() << " uncertain inputs:\n";
     for (const SceneRange& range : plan.coverings.front().ranges) {
@@ -480,13 +449,9 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
   const std::vector<SpeedLimitRow> rows = ComputeRows(plan, &bad_input);
   if (!bad_input.empty()) return errors.BadInput(bad_input);
   // A row the oracle could not answer is no answer at all: exit 1 with its message.
-  for (const SpeedLimitRow& row : rows) {
-    const bool by_speed = plan.quantity == SpeedLimitQuantity::kSpeed;
-    const optim::SpeedLimitStatus status = by_speed ? row.speed_limit.status : row.mass_limit.status;
-    if (status == optim::SpeedLimitStatus::kEvaluationFailed) {
-      return errors.Failed((by_speed ? row.speed_limit.message : row.mass_limit.message) +
-                           (row.material ? " (" + *row.material + ")" : std::string()));
-    }
+  if (const SpeedLimitRow* failed = optim::FirstFailedRow(plan.quantity, rows)) {
+    return errors.Failed(optim::RowMessage(plan.quantity, *failed) +
+                         (failed->material ? " (" + *failed->material + ")" : std::string()));
   }
 
   std::vector<std::string> input_warnings;
@@ -532,7 +497,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
                                       std::isinf(scene.head.mass_kg) ? "" : ", and a fixed robot"));
     if (!rows.empty()) {
       // The δ-axis solve of the exact path goes without saying; a bisection on an oracle is said.
-      const optim::OracleReport oracle = report::SpeedLimitOracle(plan.quantity, rows);
+      const optim::OracleReport oracle = optim::SpeedLimitOracle(plan.quantity, rows);
       const bool bracketed = by_speed ? rows.front().speed_limit.bracketed : rows.front().mass_limit.bracketed;
       if (bracketed) {
         fmt::print(out, "Oracle     {}, a bracketed bisection ({} runs{}): {}\n\n", oracle.Name(), oracle.evaluations,

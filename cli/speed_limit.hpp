@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "covopt/optim/speed_limit.hpp"
+#include "covopt/optim/speed_limit_table.hpp"
 #include "covopt/report/speed_limit_json.hpp"
 #include "oracle_options.hpp"
 #include "plot.hpp"
@@ -57,7 +58,7 @@ struct SpeedLimitCommandOptions {
 
 /// What the options resolve to.
 struct SpeedLimitPlan {
-  report::SpeedLimitQuantity quantity = report::SpeedLimitQuantity::kSpeed;
+  optim::SpeedLimitQuantity quantity = optim::SpeedLimitQuantity::kSpeed;
   /// One resolved scene per covering (per --material, or the scene's own covering).
   std::vector<SimulationPlan> coverings;
   /// The values the rows vary: reflected masses [kg] (solving for the speed; +inf = fixed)

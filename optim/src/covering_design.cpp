@@ -506,7 +506,7 @@ void CheckCrush(const CandidateMaterial& material, DesignScore& score) noexcept 
   }
 }
 
-const char* ToString(DesignVerdict verdict) noexcept {
+std::string_view ToString(DesignVerdict verdict) noexcept {
   switch (verdict) {
     case DesignVerdict::kCoveringFound: return "covering-found";
     case DesignVerdict::kBareRobotSafe: return "bare-robot-safe";
@@ -536,6 +536,30 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
 
 std::string Ended(const SolverReport& r) {
   return std::string(ToString(r.termination)) + (r.raw_name.empty() ? "" : " / " + r.raw_name);
+}
+
+/// Stage 3 of FindThinnestSafeCovering: Ipopt from the bracketed optimum `best`, kept (into
+/// `best`) only if admissible and not thicker; `continuous` gets the local report and source.
+void PolishWithIpopt(const ThinnestProblem& problem, const DesignOracle& oracle, const DesignOptions& options,
+                     DesignScore& best, ContinuousOptimum& continuous) {
+  const std::vector<double> centre = problem.Point(best.design);
+  const ThinnestProblem region = problem.Around(centre, 0.25, 0.05);
+  IpoptOptions polish = options.ipopt;
+  polish.warm_start = true;  // the bracket's point is the optimum to ~1e-11 m: confirm it
+  const SolveResult local = SolveWithIpopt(region, centre, polish);
+  continuous.local = local.report;
+  if (local.is_usable()) {
+    const DesignScore polished = oracle.Score(problem.Design(local.x));
+    // Not thicker than the bracket, to the bracket's own resolution.
+    if (polished.admissible(options.safety_factor, options.criterion()) &&
+        polished.design.thickness_m <= best.design.thickness_m + kThicknessTolerance_m) {
+      best = polished;
+      continuous.source = "ipopt";
+      return;
+    }
+  }
+  continuous.source = "bracket (ipopt ended " + Ended(local.report) +
+                      (local.is_usable() ? "; its point was not admissible or not thinner)" : ")");
 }
 
 }  // namespace
@@ -582,30 +606,7 @@ ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
   if (bracketed) {
     DesignScore best = bracketed->score;
     out.continuous.source = "bracket";
-    // Stage 3: Ipopt from the bracketed optimum, kept only if admissible and not thicker.
-    if (options.local_polish) {
-      const std::vector<double> centre = problem.Point(best.design);
-      const ThinnestProblem region = problem.Around(centre, 0.25, 0.05);
-      IpoptOptions polish = options.ipopt;
-      polish.warm_start = true;  // the bracket's point is the optimum to ~1e-11 m: confirm it
-      const SolveResult local = SolveWithIpopt(region, centre, polish);
-      out.continuous.local = local.report;
-      bool kept = false;
-      if (local.is_usable()) {
-        const DesignScore polished = oracle.Score(problem.Design(local.x));
-        // Not thicker than the bracket, to the bracket's own resolution.
-        if (polished.admissible(sf, criterion) &&
-            polished.design.thickness_m <= best.design.thickness_m + kThicknessTolerance_m) {
-          best = polished;
-          kept = true;
-          out.continuous.source = "ipopt";
-        }
-      }
-      if (!kept) {
-        out.continuous.source = "bracket (ipopt ended " + Ended(local.report) +
-                                (local.is_usable() ? "; its point was not admissible or not thinner)" : ")");
-      }
-    }
+    if (options.local_polish) PolishWithIpopt(problem, oracle, options, best, out.continuous);
     out.continuous.score = best;
     out.continuous.feasible = true;
   } else {

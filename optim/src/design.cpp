@@ -148,7 +148,7 @@ std::vector<std::string> Warnings(const DesignRequest& request, const DesignResu
 
 }  // namespace
 
-const char* ToString(DesignProblem problem) noexcept {
+std::string_view ToString(DesignProblem problem) noexcept {
   switch (problem) {
     case DesignProblem::kThinnestSafeCovering: return "thinnest-safe-covering";
     case DesignProblem::kLeastInjuryAtThickness: return "least-injury-at-thickness";
@@ -156,7 +156,7 @@ const char* ToString(DesignProblem problem) noexcept {
   return "unknown";
 }
 
-const char* ToString(DesignStatus status) noexcept {
+std::string_view ToString(DesignStatus status) noexcept {
   switch (status) {
     case DesignStatus::kSuccess: return "success";
     case DesignStatus::kOracleFailed: return "oracle-failed";
@@ -165,7 +165,7 @@ const char* ToString(DesignStatus status) noexcept {
 }
 
 std::string DesignResult::BriefReport() const {
-  std::string report = std::string(ToString(verdict)) + " (" + ToString(criterion) + "): " + message;
+  std::string report = std::string(ToString(verdict)) + " (" + std::string(ToString(criterion)) + "): " + message;
   if (covering_needed()) {
     report += Format(" Continuous %s: %s at %s, worst ratio %.3f.", thickness_m ? "best" : "optimum",
                      MPa(continuous.score.design.youngs_modulus_Pa).c_str(),

@@ -121,7 +121,7 @@ void ConstraintBlockFunction(unsigned m, double* result, unsigned n, const doubl
 
 }  // namespace
 
-const char* ToString(NloptAlgorithm algorithm) noexcept {
+std::string_view ToString(NloptAlgorithm algorithm) noexcept {
   switch (algorithm) {
     case NloptAlgorithm::kDirectL: return "GN_DIRECT_L";
     case NloptAlgorithm::kIsres: return "GN_ISRES";
@@ -138,7 +138,7 @@ SolveResult SolveWithNlopt(const Problem& problem, std::span<const double> x0,
   const auto started = std::chrono::steady_clock::now();
   const std::size_t n = problem.dimension();
   SolveResult result;
-  result.report.backend = std::string("nlopt:") + ToString(options.algorithm);
+  result.report.backend = std::string("nlopt:").append(ToString(options.algorithm));
   const std::vector<double> lower = problem.lower_bounds();
   const std::vector<double> upper = problem.upper_bounds();
   if (n == 0 || x0.size() != n || lower.size() != n || upper.size() != n ||

@@ -137,7 +137,7 @@ constexpr double kExactDampedAccuracy = 1e-12;
 
 }  // namespace
 
-const char* ToString(DesignCriterion criterion) noexcept {
+std::string_view ToString(DesignCriterion criterion) noexcept {
   switch (criterion) {
     case DesignCriterion::kNoFullCompression: return "no-full-compression";
     case DesignCriterion::kPaper: return "paper";
@@ -145,7 +145,7 @@ const char* ToString(DesignCriterion criterion) noexcept {
   return "unknown";
 }
 
-const char* ToString(LimitingCriterion criterion) noexcept {
+std::string_view ToString(LimitingCriterion criterion) noexcept {
   switch (criterion) {
     case LimitingCriterion::kNone: return "none";
     case LimitingCriterion::kLaceration: return "laceration";
@@ -156,7 +156,7 @@ const char* ToString(LimitingCriterion criterion) noexcept {
   return "unknown";
 }
 
-const char* ToString(CrushCheck check) noexcept {
+std::string_view ToString(CrushCheck check) noexcept {
   switch (check) {
     case CrushCheck::kNoMaterial: return "no-material";
     case CrushCheck::kChecked: return "checked";
@@ -167,7 +167,8 @@ const char* ToString(CrushCheck check) noexcept {
 }
 
 std::vector<std::string> DesignRule::Parts() const {
-  std::vector<std::string> parts = {ToString(LimitingCriterion::kLaceration), ToString(LimitingCriterion::kContusion)};
+  std::vector<std::string> parts = {std::string(ToString(LimitingCriterion::kLaceration)),
+                                    std::string(ToString(LimitingCriterion::kContusion))};
   if (compression_counts()) parts.emplace_back(ToString(LimitingCriterion::kFullCompression));
   if (!crushing_allowed) parts.emplace_back(ToString(LimitingCriterion::kCrush));
   return parts;
@@ -209,7 +210,7 @@ bool DesignScore::admissible(const DesignRule& rule) const noexcept {
   return rule.safety_factor * governing(rule).ratio <= 1.0;
 }
 
-const char* ToString(OracleChoice choice) noexcept {
+std::string_view ToString(OracleChoice choice) noexcept {
   switch (choice) {
     case OracleChoice::kAuto: return "auto";
     case OracleChoice::kExact: return "exact";
@@ -225,7 +226,7 @@ std::optional<OracleChoice> ParseOracleChoice(std::string_view name) noexcept {
   return std::nullopt;
 }
 
-const char* ToString(OracleKind kind) noexcept {
+std::string_view ToString(OracleKind kind) noexcept {
   switch (kind) {
     case OracleKind::kExact: return "exact";
     case OracleKind::kTimePath: return "time-path";
@@ -233,7 +234,7 @@ const char* ToString(OracleKind kind) noexcept {
   return "unknown";
 }
 
-const char* ToString(GradientSource source) noexcept {
+std::string_view ToString(GradientSource source) noexcept {
   switch (source) {
     case GradientSource::kAnalytic: return "analytic";
     case GradientSource::kForwardSensitivities: return "cvodes-forward-sensitivities";

@@ -9,7 +9,7 @@
 
 namespace covopt::optim {
 
-const char* ToString(Termination termination) noexcept {
+std::string_view ToString(Termination termination) noexcept {
   switch (termination) {
     case Termination::kConverged: return "converged";
     case Termination::kAcceptable: return "acceptable";

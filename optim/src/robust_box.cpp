@@ -15,7 +15,7 @@
 #include <covopt/core/impact_model.hpp>
 #include <covopt/core/quantity.hpp>
 
-#include "covopt/optim/robust_design.hpp"
+#include "covopt/optim/robust_box.hpp"
 #include "robust_internal.hpp"
 
 namespace covopt::optim {
@@ -120,9 +120,11 @@ class SampleStream {
 
 }  // namespace
 
-void DrawInputsInto(const UncertaintyBox& box, std::uint64_t seed, std::uint64_t index,
-                    std::span<double> values) {
-  SampleStream stream(seed, index);
+}  // namespace internal
+
+void UncertaintyBox::DrawInto(std::uint64_t seed, std::uint64_t index, std::span<double> values) const {
+  const UncertaintyBox& box = *this;
+  internal::SampleStream stream(seed, index);
   for (std::size_t i = 0; i < box.size(); ++i) {
     const UncertainInput& input = box.inputs_[i];
     const double u = stream.Uniform();  // drawn for every input, so input j always takes draw j
@@ -148,12 +150,10 @@ void DrawInputsInto(const UncertaintyBox& box, std::uint64_t seed, std::uint64_t
   }
 }
 
-}  // namespace internal
-
 using internal::Number;
 using internal::Require;
 
-const char* ToString(InputDistribution distribution) noexcept {
+std::string_view ToString(InputDistribution distribution) noexcept {
   switch (distribution) {
     case InputDistribution::kUniform: return "uniform";
     case InputDistribution::kNormal: return "normal";
@@ -253,6 +253,58 @@ std::string ValueText(const SceneField& field, double value) {
   return std::isnan(value) ? std::string("nan") : FormatQuantity(value, field.spec.kind);
 }
 
+/// Throws unless [low, high] is a range `field` can take in `nominal`: finite ends, low <= high,
+/// a field the nominal scene does not hold at +inf, and no covering-thickness range from 0.
+void CheckRange(const SceneField& field, double low, double high, const Scene& nominal) {
+  const std::string name = field.dotted_name();
+  if (!std::isfinite(low) || !std::isfinite(high)) {
+    throw std::invalid_argument(name + " range " + ValueText(field, low) + ".." + ValueText(field, high) +
+                                ": both ends must be finite (a range cannot reach 'fixed' or 'flat')");
+  }
+  Require(low <= high, name + " range " + Range(field, low, high) + ": low must not exceed high");
+  const double nominal_value = field.value(nominal);
+  if (std::isinf(nominal_value)) {
+    throw std::invalid_argument(name + " range " + Range(field, low, high) + ": the scene holds " + name +
+                                " at " + FormatQuantity(nominal_value, field.spec.kind) +
+                                " (a body held still, or a flat robot); a range cannot apply to it");
+  }
+  if (field.name == "covering-thickness" && low == 0.0 && high > 0.0) {
+    throw std::invalid_argument(name + " range " + Range(field, low, high) +
+                                ": must not include 0 (no covering) with thicker coverings: no covering is "
+                                "not the limit of a thin one (docs/model.md §5 item 4)");
+  }
+}
+
+/// Throws unless every corner of the box is a valid scene (the model's input domain is a box and
+/// one linear condition, so then every point is), naming the corner.
+void CheckCorners(const UncertaintyBox& box, const Scene& nominal) {
+  std::vector<std::size_t> ranged;
+  for (std::size_t i = 0; i < box.size(); ++i) {
+    if (box.inputs()[i].low < box.inputs()[i].high) ranged.push_back(i);
+  }
+  std::vector<double> values(box.size());
+  const std::uint64_t corners = std::uint64_t{1} << ranged.size();  // at most 2^15 fields
+  for (std::uint64_t mask = 0; mask < corners; ++mask) {
+    for (std::size_t i = 0; i < box.size(); ++i) values[i] = box.inputs()[i].low;
+    for (std::size_t k = 0; k < ranged.size(); ++k) {
+      if (mask >> k & 1U) values[ranged[k]] = box.inputs()[ranged[k]].high;
+    }
+    Scene scene = nominal;
+    internal::ApplyInputs(box, values, scene);
+    try {
+      (void)ImpactModel::FromScene(scene);
+    } catch (const std::invalid_argument& error) {
+      std::string corner;
+      for (std::size_t i = 0; i < box.size(); ++i) {
+        corner += (corner.empty() ? "" : ", ") + std::string(box.field(i).name) + " = " +
+                  FormatQuantity(values[i], box.field(i).spec.kind);
+      }
+      throw std::invalid_argument("the box leaves the model's input range at the corner " + corner + ": " +
+                                  error.what());
+    }
+  }
+}
+
 }  // namespace
 
 UncertaintyBox UncertaintyBox::FromScene(const Scene& nominal, std::span<const UncertainInput> inputs) {
@@ -278,27 +330,12 @@ UncertaintyBox UncertaintyBox::FromScene(const Scene& nominal, std::span<const U
                                          "which covers the conservative two-mass scene only (docs/model.md §10)");
     }
     const double low = given.low, high = given.high;
-    if (!std::isfinite(low) || !std::isfinite(high)) {
-      throw std::invalid_argument(name + " range " + ValueText(*field, low) + ".." + ValueText(*field, high) +
-                                  ": both ends must be finite (a range cannot reach 'fixed' or 'flat')");
-    }
-    Require(low <= high, name + " range " + Range(*field, low, high) + ": low must not exceed high");
-    const double nominal_value = field->value(nominal);
-    if (std::isinf(nominal_value)) {
-      throw std::invalid_argument(name + " range " + Range(*field, low, high) + ": the scene holds " + name +
-                                  " at " + FormatQuantity(nominal_value, field->spec.kind) +
-                                  " (a body held still, or a flat robot); a range cannot apply to it");
-    }
-    if (field->name == "covering-thickness" && low == 0.0 && high > 0.0) {
-      throw std::invalid_argument(name + " range " + Range(*field, low, high) +
-                                  ": must not include 0 (no covering) with thicker coverings: no covering is "
-                                  "not the limit of a thin one (docs/model.md §5 item 4)");
-    }
+    CheckRange(*field, low, high, nominal);
     UncertainInput input = given;
     input.field = std::string(field->name);
     Sampling sampling;
     if (input.distribution != InputDistribution::kUniform) {
-      const std::string law = ToString(input.distribution);
+      const std::string law(ToString(input.distribution));
       Require(low < high, name + ": a " + law + " distribution needs a range (low < high); got the point " +
                               FormatQuantity(low, field->spec.kind));
       const double mean = input.mean, sd = input.standard_deviation;
@@ -337,33 +374,7 @@ UncertaintyBox UncertaintyBox::FromScene(const Scene& nominal, std::span<const U
     box.sampling_.push_back(sampling);
   }
 
-  // Every corner must be a valid scene (the model's input domain is a box and one linear
-  // condition, so then every point is).
-  std::vector<std::size_t> ranged;
-  for (std::size_t i = 0; i < box.size(); ++i) {
-    if (box.inputs_[i].low < box.inputs_[i].high) ranged.push_back(i);
-  }
-  std::vector<double> values(box.size());
-  const std::uint64_t corners = std::uint64_t{1} << ranged.size();  // at most 2^15 fields
-  for (std::uint64_t mask = 0; mask < corners; ++mask) {
-    for (std::size_t i = 0; i < box.size(); ++i) values[i] = box.inputs_[i].low;
-    for (std::size_t k = 0; k < ranged.size(); ++k) {
-      if (mask >> k & 1U) values[ranged[k]] = box.inputs_[ranged[k]].high;
-    }
-    Scene scene = nominal;
-    internal::ApplyInputs(box, values, scene);
-    try {
-      (void)ImpactModel::FromScene(scene);
-    } catch (const std::invalid_argument& error) {
-      std::string corner;
-      for (std::size_t i = 0; i < box.size(); ++i) {
-        corner += (corner.empty() ? "" : ", ") + std::string(box.fields_[i]->name) + " = " +
-                  FormatQuantity(values[i], box.fields_[i]->spec.kind);
-      }
-      throw std::invalid_argument("the box leaves the model's input range at the corner " + corner + ": " +
-                                  error.what());
-    }
-  }
+  CheckCorners(box, nominal);
   return box;
 }
 
@@ -394,7 +405,7 @@ std::vector<double> UncertaintyBox::Centre() const {
 
 std::vector<double> DrawInputs(const UncertaintyBox& box, std::uint64_t seed, std::uint64_t index) {
   std::vector<double> values(box.size());
-  internal::DrawInputsInto(box, seed, index, values);
+  box.DrawInto(seed, index, values);
   return values;
 }
 

@@ -415,6 +415,23 @@ RobustContinuousOptimum RobustContinuous(const RobustContext& context,
 
 }  // namespace
 
+std::optional<InjuryProbability> EstimateRecommendationInjuryProbability(const UncertaintyBox& box,
+                                                                         const RobustThinnestCovering& result,
+                                                                         const RobustDesignOptions& options,
+                                                                         InjuryProbabilityOptions sampling) {
+  if (!result.recommendation) return std::nullopt;
+  const CandidateOutcome& c = result.candidates[*result.recommendation].outcome;
+  Scene designed = box.nominal();
+  designed.covering.youngs_modulus_Pa = c.material.youngs_modulus_Pa;
+  designed.covering.poisson_ratio = c.material.poisson_ratio;
+  designed.covering.thickness_m = *c.recommended_thickness_m;
+  const UncertaintyBox at_design = UncertaintyBox::FromScene(designed, box.inputs());
+  sampling.safety_factor = options.design.safety_factor;
+  sampling.limits = options.design.limits;
+  sampling.allow_full_compression = options.design.allow_full_compression;
+  return EstimateInjuryProbability(at_design, sampling);
+}
+
 RobustThinnestCovering FindRobustThinnestCovering(const UncertaintyBox& box,
                                                   std::span<const CandidateMaterial> materials,
                                                   const RobustDesignOptions& options) {

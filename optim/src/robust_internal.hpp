@@ -88,8 +88,10 @@ WorstCase WorstCaseOnScene(const UncertaintyBox& box, const Scene& base,
 void FillWorstCase(const Judged& judged, WorstCase& worst);
 
 /// The input values [SI] of sample `index` into `values` (size box.size()).
-void DrawInputsInto(const UncertaintyBox& box, std::uint64_t seed, std::uint64_t index,
-                    std::span<double> values);
+inline void DrawInputsInto(const UncertaintyBox& box, std::uint64_t seed, std::uint64_t index,
+                           std::span<double> values) {
+  box.DrawInto(seed, index, values);
+}
 
 /// Checks the fields of DesignOptions the robust designs use.
 void ValidateDesign(const DesignOptions& options);

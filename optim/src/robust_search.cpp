@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "covopt/optim/backends.hpp"
-#include "covopt/optim/robust_design.hpp"
+#include "covopt/optim/robust_search.hpp"
 #include "robust_internal.hpp"
 
 namespace covopt::optim {

@@ -12,7 +12,7 @@
 #include <covopt/core/impact_model.hpp>
 #include <covopt/core/sensitivity.hpp>
 
-#include "covopt/optim/robust_design.hpp"
+#include "covopt/optim/robust_sensitivity.hpp"
 #include "robust_internal.hpp"
 
 namespace covopt::optim {
@@ -85,7 +85,7 @@ double Disagreement(double a, double b) { return std::abs(a - b) / std::max({std
 
 }  // namespace
 
-const char* ToString(DerivativeMethod method) noexcept {
+std::string_view ToString(DerivativeMethod method) noexcept {
   switch (method) {
     case DerivativeMethod::kAnalytic: return "analytic";
     case DerivativeMethod::kCentralDifference: return "central-difference";

@@ -367,7 +367,7 @@ std::string RatiosText(const LimitRatios& r, bool covered) {
 
 }  // namespace
 
-const char* ToString(SpeedLimitStatus status) noexcept {
+std::string_view ToString(SpeedLimitStatus status) noexcept {
   switch (status) {
     case SpeedLimitStatus::kLimited: return "limited";
     case SpeedLimitStatus::kSafeUpToSearchLimit: return "safe-up-to-search-limit";
@@ -412,14 +412,14 @@ SpeedLimit MaxSafeSpeedOnOracle(const Scene& base, const SpeedLimitOptions& opti
   result.at_limit = limit.at.ratios;
   switch (limit.status) {
     case SpeedLimitStatus::kNoSafeValue:
-      result.message = std::string("no safe speed: unsafe even at 1e-06 m/s (") + ToString(limit.by) + ")";
+      result.message = std::string("no safe speed: unsafe even at 1e-06 m/s (") + std::string(ToString(limit.by)) + ")";
       break;
     case SpeedLimitStatus::kSafeUpToSearchLimit:
       result.message = "safe up to the search limit of " + Format("%.6g", limit.value) + " m/s" +
                        (options.max_speed_m_per_s == 100.0 ? " (the model's ceiling)" : "");
       break;
     case SpeedLimitStatus::kLimited:
-      result.message = "max safe speed " + Format("%.6g", limit.value) + " m/s, limited by " + ToString(limit.by);
+      result.message = "max safe speed " + Format("%.6g", limit.value) + " m/s, limited by " + std::string(ToString(limit.by));
       break;
     case SpeedLimitStatus::kEvaluationFailed:
       result.message = "no answer: the oracle failed at " + Format("%.6g", limit.failed_at) + " m/s (" +
@@ -457,7 +457,7 @@ MassLimit MaxSafeMassOnOracle(const Scene& base, const SpeedLimitOptions& option
   result.at_limit = limit.at.ratios;
   switch (limit.status) {
     case SpeedLimitStatus::kNoSafeValue:
-      result.message = std::string("no safe mass: unsafe even at 1e-06 kg (") + ToString(limit.by) + ")";
+      result.message = std::string("no safe mass: unsafe even at 1e-06 kg (") + std::string(ToString(limit.by)) + ")";
       break;
     case SpeedLimitStatus::kSafeUpToSearchLimit:
       result.message = "safe up to the search limit of " + Format("%.6g", limit.value) + " kg" +
@@ -465,7 +465,7 @@ MassLimit MaxSafeMassOnOracle(const Scene& base, const SpeedLimitOptions& option
       break;
     case SpeedLimitStatus::kLimited:
       result.message =
-          "max safe reflected mass " + Format("%.6g", limit.value) + " kg, limited by " + ToString(limit.by);
+          "max safe reflected mass " + Format("%.6g", limit.value) + " kg, limited by " + std::string(ToString(limit.by));
       break;
     case SpeedLimitStatus::kEvaluationFailed:
       result.message = "no answer: the oracle failed at " + Format("%.6g", limit.failed_at) + " kg (" +
@@ -528,13 +528,13 @@ SpeedLimit MaxSafeSpeedOnPenetrationAxis(const Scene& base, const SpeedLimitOpti
     Scene floor = base;
     floor.robot.speed_m_per_s = kMinSpeed_m_per_s;
     result.at_limit = judge(floor).ratios;
-    result.message = std::string("no safe speed: unsafe even at 1e-06 m/s (") + ToString(limit.by) + ")";
+    result.message = std::string("no safe speed: unsafe even at 1e-06 m/s (") + std::string(ToString(limit.by)) + ")";
     return result;
   }
   result.status = SpeedLimitStatus::kLimited;
   result.max_safe_speed_m_per_s = value;
   result.at_limit = at.ratios;
-  result.message = "max safe speed " + Format("%.6g", value) + " m/s, limited by " + ToString(limit.by);
+  result.message = "max safe speed " + Format("%.6g", value) + " m/s, limited by " + std::string(ToString(limit.by));
   return result;
 }
 
@@ -578,13 +578,13 @@ MassLimit MaxSafeMassOnPenetrationAxis(const Scene& base, const SpeedLimitOption
   if (!(value > 0.0) || !at.admissible) {
     result.status = SpeedLimitStatus::kNoSafeValue;
     result.max_safe_mass_kg = 0.0;
-    result.message = std::string("no safe mass: the limit underflows (") + ToString(limit.by) + ")";
+    result.message = std::string("no safe mass: the limit underflows (") + std::string(ToString(limit.by)) + ")";
     return result;
   }
   result.status = SpeedLimitStatus::kLimited;
   result.max_safe_mass_kg = value;
   result.at_limit = at.ratios;
-  result.message = "max safe reflected mass " + Format("%.6g", value) + " kg, limited by " + ToString(limit.by);
+  result.message = "max safe reflected mass " + Format("%.6g", value) + " kg, limited by " + std::string(ToString(limit.by));
   return result;
 }
 

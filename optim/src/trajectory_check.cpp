@@ -52,7 +52,7 @@ std::string TimeText(double time_s) { return "t = " + Format("%.6g", time_s) + "
 
 }  // namespace
 
-const char* ToString(TrajectoryCheckStatus status) noexcept {
+std::string_view ToString(TrajectoryCheckStatus status) noexcept {
   switch (status) {
     case TrajectoryCheckStatus::kSafe: return "safe";
     case TrajectoryCheckStatus::kUnsafe: return "unsafe";
@@ -156,11 +156,11 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
   const std::string scale = Format("%.4g", check.safe_speed_scale);
   if (check.status == TrajectoryCheckStatus::kSafe) {
     check.message = "safe: the trajectory may run up to " + scale + "x faster (set by " +
-                    TimeText(worst.time_s) + ", " + ToString(worst.speed_limit.limited_by) + ")";
+                    TimeText(worst.time_s) + ", " + std::string(ToString(worst.speed_limit.limited_by)) + ")";
   } else {
     check.message = "unsafe at " + std::to_string(check.unsafe_sample_count) + " of " +
                     std::to_string(check.samples.size()) + " samples: slow the trajectory to " + scale +
-                    "x (set by " + TimeText(worst.time_s) + ", " + ToString(worst.speed_limit.limited_by) + ")";
+                    "x (set by " + TimeText(worst.time_s) + ", " + std::string(ToString(worst.speed_limit.limited_by)) + ")";
   }
   if (scale_set_by_ceiling) {
     check.warnings.push_back("the speed scale " + scale + " is a lower bound: at " + TimeText(worst.time_s) +

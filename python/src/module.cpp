@@ -802,7 +802,10 @@ to_dict(): the scene object of `covopt simulate --json`.)");
       .def("__repr__", [](const SceneInputs& s) {
         std::string text;
         for (const auto& item : s.given) {
-          text += (text.empty() ? "" : ", ") + py::str(item.first).cast<std::string>() + "=" + Repr(item.second);
+          if (!text.empty()) text += ", ";  // appended: GCC 12's LTO warns on "literal" + std::string
+          text += py::str(item.first).cast<std::string>();
+          text += "=";
+          text += Repr(item.second);
         }
         return "Scene(" + text + ")";
       });

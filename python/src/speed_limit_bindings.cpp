@@ -7,6 +7,7 @@
 #include <cmath>
 #include <algorithm>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 
 #include "covopt/core/quantity.hpp"
 #include "covopt/optim/speed_limit.hpp"
+#include "covopt/optim/speed_limit_table.hpp"
 #include "covopt/report/speed_limit_json.hpp"
 #include "scene_keywords.hpp"
 
@@ -23,8 +25,8 @@ namespace py = pybind11;
 namespace covopt::python {
 namespace {
 
-using report::SpeedLimitQuantity;
-using report::SpeedLimitRow;
+using optim::SpeedLimitQuantity;
+using optim::SpeedLimitRow;
 
 optim::SpeedLimitOptions OptionsFrom(const SceneInputs& inputs, const py::kwargs& kwargs) {
   optim::SpeedLimitOptions options;
@@ -48,32 +50,21 @@ std::vector<double> ReadValues(const py::handle& value, const QuantitySpec& spec
   return {ReadSceneQuantity(value, spec, keyword)};
 }
 
-/// One row computed by the library; bad scenes raise ValueError naming the keyword.
-SpeedLimitRow Compute(SpeedLimitQuantity quantity, const SceneInputs& inputs, double value,
-                      const optim::SpeedLimitOptions& options) {
-  SpeedLimitRow row;
-  Scene scene = inputs.scene;
-  if (inputs.covering_material && scene.covering.thickness_m > 0.0) row.material = inputs.covering_material;
+/// The rows computed by the library (optim::SpeedLimitTable); bad scenes raise ValueError
+/// naming the keyword, and a failed search, as the CLI's exit 1, a ComputationError.
+std::vector<SpeedLimitRow> Compute(SpeedLimitQuantity quantity, std::span<const optim::SpeedLimitCovering> coverings,
+                                   std::span<const double> values, const SceneInputs& inputs) {
+  std::vector<SpeedLimitRow> rows;
   try {
     py::gil_scoped_release release;
-    if (quantity == SpeedLimitQuantity::kSpeed) {
-      scene.robot.mass_kg = value;
-      row.robot_mass_kg = value;
-      row.speed_limit = optim::MaxSafeSpeed(scene, options);
-    } else {
-      scene.robot.speed_m_per_s = value;
-      row.speed_m_per_s = value;
-      row.mass_limit = optim::MaxSafeMass(scene, options);
-    }
+    rows = optim::SpeedLimitTable(quantity, coverings, values);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(inputs.Attributed(e.what()));
   }
-  const bool by_speed = quantity == SpeedLimitQuantity::kSpeed;
-  if ((by_speed ? row.speed_limit.status : row.mass_limit.status) == optim::SpeedLimitStatus::kEvaluationFailed) {
-    // As the CLI's exit 1: a failed search is no limit.
-    RaiseComputationError(by_speed ? row.speed_limit.message : row.mass_limit.message, "evaluation-failed");
+  if (const SpeedLimitRow* failed = optim::FirstFailedRow(quantity, rows)) {
+    RaiseComputationError(optim::RowMessage(quantity, *failed), "evaluation-failed");
   }
-  return row;
+  return rows;
 }
 
 /// The one row as a dict: the row's keys, and message and brief_report.
@@ -87,7 +78,8 @@ py::dict OneLimit(SpeedLimitQuantity quantity, const SceneInputs& inputs, const 
   }
   const optim::SpeedLimitOptions options = OptionsFrom(inputs, kwargs);
   const double value = by_speed ? inputs.scene.robot.mass_kg : inputs.scene.robot.speed_m_per_s;
-  const SpeedLimitRow row = Compute(quantity, inputs, value, options);
+  const optim::SpeedLimitCovering covering{inputs.scene, inputs.covering_material, options};
+  const SpeedLimitRow row = Compute(quantity, {&covering, 1}, {&value, 1}, inputs).front();
   const std::vector<std::string> notes = inputs.CrushCheck().notes;
   const py::dict table = JsonToPython(report::SpeedLimitJson(quantity, inputs.scene, options, {&row, 1}, notes, -1));
   py::dict result = py::list(table["rows"])[0].cast<py::dict>();
@@ -142,8 +134,7 @@ py::dict SpeedLimitTable(const SceneInputs& scene, const py::kwargs& kwargs) {
       Option(kwargs, "values") ? ReadValues(*Option(kwargs, "values"), spec, "values")
                                : std::vector<double>{by_speed ? scene.scene.robot.mass_kg : scene.scene.robot.speed_m_per_s};
 
-  std::vector<SpeedLimitRow> rows;
-  std::optional<Scene> first_scene;
+  std::vector<optim::SpeedLimitCovering> coverings;
   optim::SpeedLimitOptions options;
   std::vector<std::string> notes;  // the covering notes the CLI prints as warnings
   for (const std::optional<std::string>& name : names) {
@@ -154,12 +145,12 @@ py::dict SpeedLimitTable(const SceneInputs& scene, const py::kwargs& kwargs) {
     for (std::string& note : inputs.CrushCheck().notes) {
       if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(std::move(note));
     }
-    if (!first_scene) first_scene = inputs.scene;
-    for (const double value : values) rows.push_back(Compute(quantity, inputs, value, options));
+    coverings.push_back({inputs.scene, inputs.covering_material, options});
   }
+  const std::vector<SpeedLimitRow> rows = Compute(quantity, coverings, values, scene);
   // The table's criterion covers every material: crushing where a strength is known (as the CLI's).
   options.covering_compressive_strength_Pa = 0.0;
-  return JsonToPython(report::SpeedLimitJson(quantity, *first_scene, options, rows, notes, -1));
+  return JsonToPython(report::SpeedLimitJson(quantity, coverings.front().scene, options, rows, notes, -1));
 }
 
 }  // namespace

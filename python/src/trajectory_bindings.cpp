@@ -2,7 +2,7 @@
 /// covopt.check_trajectory: a robot motion judged against a covering, as `covopt robot
 /// --trajectory --json`. The robot and trajectory are read as covopt.contact_motion reads them
 /// (robot_inputs.hpp), the scene as a covopt.Scene (scene_keywords.hpp);
-/// robot::ContactMotion -> report::MotionSamples -> optim::CheckTrajectory; the dict is
+/// robot::ContactMotion -> optim::MotionSamples -> optim::CheckTrajectory; the dict is
 /// report::TrajectoryCheckJson. See python/covopt/__init__.py for the documentation.
 
 #include <optional>
@@ -53,14 +53,14 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
     motion_options.reflected_mass = ReflectedMassOptions(ignore_joint_limits);
     motion = robot::ContactMotion(chain, joints, p, motion_options);
     try {
-      check = optim::CheckTrajectory(inputs.scene, report::MotionSamples(motion), options);
+      check = optim::CheckTrajectory(inputs.scene, optim::MotionSamples(motion.samples), options);
     } catch (const std::invalid_argument& e) {
       py::gil_scoped_acquire acquire;  // Attributed reads the keywords
       throw std::invalid_argument(inputs.Attributed(e.what()));
     }
   }
   if (check.status == optim::TrajectoryCheckStatus::kEvaluationFailed) {
-    RaiseComputationError(check.message, optim::ToString(check.status));  // as the CLI's exit 1
+    RaiseComputationError(check.message, std::string(optim::ToString(check.status)));  // as the CLI's exit 1
   }
   return JsonToPython(
       report::TrajectoryCheckJson(check, motion, inputs.scene, inputs.covering_material, options.limit, crush.notes, -1));

@@ -1,6 +1,7 @@
 // Robust design over an uncertainty box as JSON text (docs/model.md §11).
 #include "covopt/report/robust_json.hpp"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -120,6 +121,37 @@ ordered_json MaterialJson(const optim::CandidateMaterial& m) {
 }
 
 std::string Dump(const ordered_json& j, int indent) { return j.dump(indent); }
+
+/// What a limit over the box adds after its value: status, limited_by, message, worst_case
+/// {inputs, units}, found_by, evaluations, seconds.
+template <typename Limit>
+void AddLimitOverBox(ordered_json& j, const optim::UncertaintyBox& box, const Limit& limit) {
+  j["status"] = optim::ToString(limit.limit.status);
+  j["limited_by"] = optim::ToString(limit.limit.limited_by);
+  j["message"] = limit.limit.message;
+  j["worst_case"] = ValuesJson(box, limit.values);
+  j["found_by"] = limit.found_by;
+  j["evaluations"] = limit.evaluations;
+  j["seconds"] = limit.seconds;
+}
+
+ordered_json SpeedLimitOverBoxJson(const optim::UncertaintyBox& box, const optim::RobustSpeedLimit& limit) {
+  ordered_json j;
+  const bool limited = limit.limit.status != optim::SpeedLimitStatus::kNoSafeValue;
+  j["speed_limit_m_per_s"] = limited ? Number(limit.limit.max_safe_speed_m_per_s) : ordered_json(nullptr);
+  AddLimitOverBox(j, box, limit);
+  return j;
+}
+
+ordered_json MassLimitOverBoxJson(const optim::UncertaintyBox& box, double speed_m_per_s,
+                                  const optim::RobustMassLimit& limit) {
+  ordered_json j;
+  j["speed_m_per_s"] = speed_m_per_s;
+  j["max_safe_mass_kg"] =
+      std::isfinite(limit.limit.max_safe_mass_kg) ? ordered_json(limit.limit.max_safe_mass_kg) : ordered_json(nullptr);
+  AddLimitOverBox(j, box, limit);
+  return j;
+}
 
 }  // namespace
 
@@ -290,16 +322,28 @@ std::string ProbabilityDesignJson(const optim::UncertaintyBox& box, const optim:
 }
 
 std::string RobustSpeedLimitJson(const optim::UncertaintyBox& box, const optim::RobustSpeedLimit& limit, int indent) {
+  return Dump(SpeedLimitOverBoxJson(box, limit), indent);
+}
+
+std::string RobustSpeedLimitTableJson(optim::SpeedLimitQuantity quantity, const optim::UncertaintyBox& box,
+                                      std::span<const optim::RobustSpeedLimitRow> rows, int indent) {
+  const bool by_speed = quantity == optim::SpeedLimitQuantity::kSpeed;
+  ordered_json list = ordered_json::array();
+  for (const optim::RobustSpeedLimitRow& row : rows) {
+    ordered_json j;
+    if (row.material) j["material"] = *row.material;
+    if (by_speed) {
+      j["robot_mass_kg"] = std::isfinite(row.robot_mass_kg) ? ordered_json(row.robot_mass_kg) : ordered_json(nullptr);
+      j.update(SpeedLimitOverBoxJson(box, row.speed_limit));
+    } else {
+      j.update(MassLimitOverBoxJson(box, row.speed_m_per_s, row.mass_limit));
+    }
+    list.push_back(j);
+  }
   ordered_json j;
-  const bool limited = limit.limit.status != optim::SpeedLimitStatus::kNoSafeValue;
-  j["speed_limit_m_per_s"] = limited ? Number(limit.limit.max_safe_speed_m_per_s) : ordered_json(nullptr);
-  j["status"] = optim::ToString(limit.limit.status);
-  j["limited_by"] = optim::ToString(limit.limit.limited_by);
-  j["message"] = limit.limit.message;
-  j["worst_case"] = ValuesJson(box, limit.values);
-  j["found_by"] = limit.found_by;
-  j["evaluations"] = limit.evaluations;
-  j["seconds"] = limit.seconds;
+  j["solve_for"] = optim::ToString(quantity);
+  j["uncertain_inputs"] = InputsJson(box);
+  j["rows"] = list;
   return Dump(j, indent);
 }
 

@@ -92,10 +92,6 @@ std::string RowName(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
 
 }  // namespace
 
-const char* ToString(SpeedLimitQuantity quantity) noexcept {
-  return quantity == SpeedLimitQuantity::kSpeed ? "speed" : "mass";
-}
-
 std::span<const std::string_view> SpeedLimitColumns(SpeedLimitQuantity quantity) noexcept {
   return quantity == SpeedLimitQuantity::kSpeed ? std::span<const std::string_view>(kSpeedColumns)
                                                 : std::span<const std::string_view>(kMassColumns);
@@ -128,25 +124,11 @@ std::vector<std::string> SpeedLimitRowWarnings(SpeedLimitQuantity quantity, std:
   return warnings;
 }
 
-optim::OracleReport SpeedLimitOracle(SpeedLimitQuantity quantity, std::span<const SpeedLimitRow> rows) {
-  const auto of = [quantity](const SpeedLimitRow& row) -> const optim::OracleReport& {
-    return quantity == SpeedLimitQuantity::kSpeed ? row.speed_limit.oracle : row.mass_limit.oracle;
-  };
-  optim::OracleReport merged = rows.empty() ? optim::OracleReport{} : of(rows.front());
-  for (std::size_t i = 1; i < rows.size(); ++i) {
-    const optim::OracleReport& r = of(rows[i]);
-    merged.evaluations += r.evaluations;
-    merged.failed_evaluations += r.failed_evaluations;
-    if (merged.first_failure.empty()) merged.first_failure = r.first_failure;
-  }
-  return merged;
-}
-
 std::string SpeedLimitJson(SpeedLimitQuantity quantity, const Scene& scene, const optim::SpeedLimitOptions& options,
                            std::span<const SpeedLimitRow> rows, std::span<const std::string> input_warnings,
                            int indent) {
   ordered_json j;
-  j["solve_for"] = ToString(quantity);
+  j["solve_for"] = optim::ToString(quantity);
   internal::AddCriterionAndLimits(j, options);
   if (quantity == SpeedLimitQuantity::kSpeed) {
     j["search_limit"] = {{"max_speed_m_per_s", options.max_speed_m_per_s}};
@@ -154,7 +136,7 @@ std::string SpeedLimitJson(SpeedLimitQuantity quantity, const Scene& scene, cons
     j["search_limit"] = {{"max_mass_kg", options.max_mass_kg}};
   }
   if (!rows.empty()) {
-    ordered_json oracle = internal::OracleJson(SpeedLimitOracle(quantity, rows), false);
+    ordered_json oracle = internal::OracleJson(optim::SpeedLimitOracle(quantity, rows), false);
     const SpeedLimitRow& first = rows.front();
     const bool bracketed = quantity == SpeedLimitQuantity::kSpeed ? first.speed_limit.bracketed : first.mass_limit.bracketed;
     oracle["search"] = bracketed ? "bracketed-bisection" : "penetration-axis";

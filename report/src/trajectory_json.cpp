@@ -54,15 +54,6 @@ std::string Shortest(double value) {
 
 }  // namespace
 
-std::vector<optim::MotionSample> MotionSamples(const robot::ContactMotionResult& motion) {
-  std::vector<optim::MotionSample> samples;
-  samples.reserve(motion.samples.size());
-  for (const robot::ContactMotionSample& s : motion.samples) {
-    samples.push_back({s.time_s, s.speed_m_per_s, s.reflected_mass_kg});
-  }
-  return samples;
-}
-
 std::span<const std::string_view> TrajectorySampleColumns() noexcept { return kSampleColumns; }
 
 std::vector<std::string> TrajectorySampleCsvCells(const optim::SampleVerdict& sample) {

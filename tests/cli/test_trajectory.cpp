@@ -90,7 +90,7 @@ TEST_CASE("robot --trajectory --json is the library's check of the same trajecto
   const auto chain = covopt::robot::KinematicChain::FromUrdfFile(kFr3, {"", "fr3_link8"});
   const auto motion = covopt::robot::ContactMotion(chain, covopt::robot::ReadJointTrajectory(kPick, 7),
                                                    Eigen::Vector3d::Zero());
-  const auto check = covopt::optim::CheckTrajectory(covopt::Scene{}, covopt::report::MotionSamples(motion));
+  const auto check = covopt::optim::CheckTrajectory(covopt::Scene{}, covopt::optim::MotionSamples(motion.samples));
   // No covering was given: the CLI says the default is assumed.
   const std::vector<std::string> warnings = j["warnings"].get<std::vector<std::string>>();
   REQUIRE(warnings.size() == 1);
@@ -231,7 +231,7 @@ TEST_CASE("robot --trajectory: the covering, material, safety factor and criteri
   covopt::optim::TrajectoryCheckOptions crush;
   crush.limit.covering_compressive_strength_Pa =
       *covopt::materials::Catalog::BuiltIn().Find("XPS Foamular 250")->compressive_strength_Pa;
-  const auto checked = covopt::optim::CheckTrajectory(scene, covopt::report::MotionSamples(motion), crush);
+  const auto checked = covopt::optim::CheckTrajectory(scene, covopt::optim::MotionSamples(motion.samples), crush);
   CHECK(material["safe_speed_scale"].get<double>() == checked.safe_speed_scale);
   CHECK(checked.safe_speed_scale < 0.1);
 

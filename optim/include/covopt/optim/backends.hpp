@@ -3,6 +3,7 @@
 /// NLopt and Ipopt behind covopt::optim::Problem.
 
 #include <span>
+#include <string_view>
 
 #include "covopt/optim/problem.hpp"
 
@@ -17,7 +18,7 @@ enum class NloptAlgorithm {
   kSlsqp,    ///< LD_SLSQP: local, gradient-based, native constraints
   kLbfgs,    ///< LD_LBFGS: local, gradient-based, bounds only
 };
-const char* ToString(NloptAlgorithm algorithm) noexcept;
+std::string_view ToString(NloptAlgorithm algorithm) noexcept;
 
 struct NloptOptions {
   NloptAlgorithm algorithm = NloptAlgorithm::kDirectL;

@@ -43,6 +43,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <covopt/core/impact_result.hpp>
@@ -192,7 +193,7 @@ enum class DesignVerdict {
   kNoSafeMaterial,     ///< no catalog material is safe within the bound (continuous may be)
   kNothingSafe,        ///< not even the continuous optimum is safe within the bound
 };
-const char* ToString(DesignVerdict verdict) noexcept;
+std::string_view ToString(DesignVerdict verdict) noexcept;
 
 /// Problem (a): the thinnest admissible covering (safe, and by default not fully compressed).
 struct ThinnestSafeCovering {

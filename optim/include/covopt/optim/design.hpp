@@ -16,6 +16,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <covopt/core/scene.hpp>
@@ -31,7 +32,7 @@ enum class DesignProblem {
   kLeastInjuryAtThickness,  ///< the least injury at a given thickness (problem b)
 };
 /// "thinnest-safe-covering" or "least-injury-at-thickness".
-const char* ToString(DesignProblem problem) noexcept;
+std::string_view ToString(DesignProblem problem) noexcept;
 
 /// Everything `covopt optimize` is asked.
 struct DesignRequest {
@@ -55,7 +56,7 @@ enum class DesignStatus {
   kOracleFailed,
 };
 /// "success", "oracle-failed".
-const char* ToString(DesignStatus status) noexcept;
+std::string_view ToString(DesignStatus status) noexcept;
 
 /// The answer to a DesignRequest.
 struct DesignResult {

@@ -46,7 +46,7 @@ enum class DesignCriterion {
   kPaper,              ///< safe (both injury ratios) only, as the paper designs
 };
 /// "no-full-compression" or "paper".
-const char* ToString(DesignCriterion criterion) noexcept;
+std::string_view ToString(DesignCriterion criterion) noexcept;
 
 /// One criterion of the design rule, or none (docs/model.md §6, §12).
 enum class LimitingCriterion {
@@ -57,7 +57,7 @@ enum class LimitingCriterion {
   kCrush,            ///< σ_c,max against the material's compressive strength / safety factor
 };
 /// "none", "laceration", "contusion", "full-compression", "crush".
-const char* ToString(LimitingCriterion criterion) noexcept;
+std::string_view ToString(LimitingCriterion criterion) noexcept;
 
 /// How the crush criterion applies to a design (docs/model.md §12).
 enum class CrushCheck {
@@ -67,7 +67,7 @@ enum class CrushCheck {
   kUnknownStrength,  ///< the material's strength is unknown: the design is unverified for crushing
 };
 /// "no-material", "checked", "does-not-crush", "unknown-strength".
-const char* ToString(CrushCheck check) noexcept;
+std::string_view ToString(CrushCheck check) noexcept;
 
 /// What makes a design admissible (docs/model.md §6, §12): the safety factor SF times every
 /// ratio that counts is <= 1. The injury ratios always count; the covering's travel ratio
@@ -171,7 +171,7 @@ enum class OracleChoice {
   kTimePath,  ///< the time path, whatever the scene
 };
 /// "auto", "exact", "time-path".
-const char* ToString(OracleChoice choice) noexcept;
+std::string_view ToString(OracleChoice choice) noexcept;
 /// The inverse of ToString; empty for an unknown name.
 std::optional<OracleChoice> ParseOracleChoice(std::string_view name) noexcept;
 
@@ -181,7 +181,7 @@ enum class OracleKind {
   kTimePath,  ///< TimePathOracle
 };
 /// "exact", "time-path".
-const char* ToString(OracleKind kind) noexcept;
+std::string_view ToString(OracleKind kind) noexcept;
 
 /// Where an oracle's gradients come from.
 enum class GradientSource {
@@ -190,7 +190,7 @@ enum class GradientSource {
   kCentralDifference,      ///< a central difference of the oracle's own values
 };
 /// "analytic", "cvodes-forward-sensitivities", "central-difference".
-const char* ToString(GradientSource source) noexcept;
+std::string_view ToString(GradientSource source) noexcept;
 
 /// The exact path answers every peak of this scene: the conservative two-mass impact, or a
 /// damped two-mass contact (its energy relation, docs/model.md §10.1). A braking robot or a

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace covopt::optim {
@@ -78,7 +79,7 @@ enum class Termination {
 };
 
 /// "converged", "evaluation-limit", ...
-const char* ToString(Termination termination) noexcept;
+std::string_view ToString(Termination termination) noexcept;
 
 /// The backend ended normally: converged, acceptable, a budget, or roundoff (its point may
 /// be used); false for infeasible, failed evaluations, invalid problems and solver errors.

@@ -50,6 +50,7 @@
 /// dense scan in the tests. About 70 runs per answer (a few ms on the time path).
 
 #include <string>
+#include <string_view>
 
 #include <covopt/core/scene.hpp>
 #include <covopt/materials/material.hpp>
@@ -75,7 +76,7 @@ enum class SpeedLimitStatus {
   kEvaluationFailed,
 };
 /// "limited", "safe-up-to-search-limit", "no-safe-value", "evaluation-failed".
-const char* ToString(SpeedLimitStatus status) noexcept;
+std::string_view ToString(SpeedLimitStatus status) noexcept;
 
 /// LimitingCriterion (oracle.hpp): the criterion that binds a limit.
 

@@ -15,9 +15,11 @@
 /// safe exactly when k <= safe_speed_scale (> 1: it may be sped up; < 1: it must be slowed).
 
 #include <cstddef>
+#include <iterator>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <covopt/core/scene.hpp>
@@ -32,6 +34,18 @@ struct MotionSample {
   double speed_m_per_s = 0.0;      ///< contact speed [m/s], in [0, 100]; 0 (or < 1e-6) = at rest
   double reflected_mass_kg = 0.0;  ///< along the motion [kg], > 0; kFixed (+inf) allowed
 };
+
+/// The MotionSamples of any sequence of samples that carry time_s, speed_m_per_s and
+/// reflected_mass_kg, such as covopt::robot::ContactMotionResult::samples (robot::ContactMotion):
+/// `CheckTrajectory(scene, MotionSamples(motion.samples))`. The one adapter from the robot
+/// library's motion to the check; a template, so that optim does not depend on covopt::robot.
+template <typename Samples>
+std::vector<MotionSample> MotionSamples(const Samples& samples) {
+  std::vector<MotionSample> motion;
+  motion.reserve(std::size(samples));
+  for (const auto& s : samples) motion.push_back({s.time_s, s.speed_m_per_s, s.reflected_mass_kg});
+  return motion;
+}
 
 /// Options of CheckTrajectory.
 struct TrajectoryCheckOptions {
@@ -73,7 +87,7 @@ enum class TrajectoryCheckStatus {
   kEvaluationFailed,
 };
 /// "safe", "unsafe", "at-rest", "evaluation-failed".
-const char* ToString(TrajectoryCheckStatus status) noexcept;
+std::string_view ToString(TrajectoryCheckStatus status) noexcept;
 
 /// The answer of CheckTrajectory.
 struct TrajectoryCheck {

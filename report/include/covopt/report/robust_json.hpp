@@ -11,6 +11,7 @@
 #include <string>
 
 #include "covopt/optim/robust_design.hpp"
+#include "covopt/optim/speed_limit_table.hpp"
 #include "covopt/report/simulation_json.hpp"
 
 namespace covopt::report {
@@ -72,5 +73,14 @@ std::string ProbabilityDesignJson(const optim::UncertaintyBox& box, const optim:
 /// when none), limited_by, worst_case: {inputs, units}, found_by, evaluations, seconds}.
 std::string RobustSpeedLimitJson(const optim::UncertaintyBox& box, const optim::RobustSpeedLimit& limit,
                                  int indent = 2);
+
+/// What `covopt speed-limit` prints with ranges: {solve_for ("speed" or "mass"),
+/// uncertain_inputs (UncertainInputsJson of `box`), rows}. Each row: material (only when
+/// from the catalog), then solving for the speed robot_mass_kg (null: fixed) and
+/// RobustSpeedLimitJson's keys; solving for the mass speed_m_per_s, max_safe_mass_kg (null:
+/// fixed), status, limited_by, message, worst_case {inputs, units}, found_by, evaluations,
+/// seconds. `box`: the box of the rows (they share its inputs; its field names and units).
+std::string RobustSpeedLimitTableJson(optim::SpeedLimitQuantity quantity, const optim::UncertaintyBox& box,
+                                      std::span<const optim::RobustSpeedLimitRow> rows, int indent = 2);
 
 }  // namespace covopt::report

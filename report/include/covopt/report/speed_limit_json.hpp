@@ -13,29 +13,12 @@
 
 #include "covopt/core/scene.hpp"
 #include "covopt/optim/speed_limit.hpp"
+#include "covopt/optim/speed_limit_table.hpp"
 
 namespace covopt::report {
 
-/// What a speed-limit table solves for.
-enum class SpeedLimitQuantity {
-  kSpeed,  ///< the max safe speed, one row per reflected mass (MaxSafeSpeed)
-  kMass,   ///< the max safe reflected mass, one row per speed (MaxSafeMass)
-};
-/// "speed" or "mass".
-const char* ToString(SpeedLimitQuantity quantity) noexcept;
-
-/// One row: the input that varies and the library's answer.
-struct SpeedLimitRow {
-  /// The catalog name of the row's covering, if it came from the catalog.
-  std::optional<std::string> material;
-  /// The row's reflected robot mass [kg] (+inf: fixed); used when solving for the speed.
-  double robot_mass_kg = 0.0;
-  /// The row's impact speed [m/s]; used when solving for the mass.
-  double speed_m_per_s = 0.0;
-  /// MaxSafeSpeed's answer (solving for the speed) or MaxSafeMass's (for the mass).
-  optim::SpeedLimit speed_limit;
-  optim::MassLimit mass_limit;
-};
+using optim::SpeedLimitQuantity;
+using optim::SpeedLimitRow;
 
 /// The rows' column names in order, as the JSON rows' keys and the CSV header:
 ///   speed: material, robot_mass_kg, max_safe_speed_m_per_s, limited_by, laceration_ratio,
@@ -50,13 +33,9 @@ std::span<const std::string_view> SpeedLimitColumns(SpeedLimitQuantity quantity)
 /// round-trip form, "fixed" for an infinite mass, "" for null (no material, no safe value).
 std::vector<std::string> SpeedLimitCsvCells(SpeedLimitQuantity quantity, const SpeedLimitRow& row);
 
-/// The oracle that judged the rows (they share the scene's kind, so the same choice): the
-/// first row's OracleReport with every row's evaluations and failures added up.
-optim::OracleReport SpeedLimitOracle(SpeedLimitQuantity quantity, std::span<const SpeedLimitRow> rows);
-
 /// The table as one JSON object: solve_for, criterion, safety_factor, limits (and the derated
 /// ones), search_limit ({max_speed_m_per_s} or {max_mass_kg}), oracle ({name, reason, method,
-/// rtol, evaluations, failed_evaluations, first_failure: SpeedLimitOracle; search:
+/// rtol, evaluations, failed_evaluations, first_failure: optim::SpeedLimitOracle; search:
 /// "penetration-axis" or "bracketed-bisection"}), rows (SpeedLimitColumns; a
 /// limit that does not exist is null, "limited_by" "none" when safe up to the ceiling),
 /// scene (SceneJson of `scene` without the quantity solved for, and without the one the rows

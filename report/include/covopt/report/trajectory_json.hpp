@@ -17,11 +17,6 @@
 
 namespace covopt::report {
 
-/// The samples optim::CheckTrajectory judges for a robot's contact motion: per sample its
-/// time [s], the contact point's speed [m/s] and the reflected mass along the motion [kg]
-/// (+inf: fixed). The CLI and Python build them here, so both judge the same numbers.
-std::vector<optim::MotionSample> MotionSamples(const robot::ContactMotionResult& motion);
-
 /// The per-sample keys in order, as the JSON samples' keys and the CSV header: time_s,
 /// speed_m_per_s, reflected_mass_kg, moving, max_safe_speed_m_per_s, speed_scale,
 /// limited_by, laceration_ratio, contusion_ratio, compression_ratio, safe.
