@@ -16,8 +16,8 @@
 #include "uncertainty_options.hpp"
 #include "covopt/optim/design.hpp"
 #include "covopt/optim/robust_design.hpp"
-#include "covopt/report/csv.hpp"
 #include "covopt/optim/speed_limit_table.hpp"
+#include "covopt/report/csv.hpp"
 #include "covopt/report/robust_json.hpp"
 #include "covopt/report/speed_limit_json.hpp"
 

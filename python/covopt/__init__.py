@@ -1,60 +1,64 @@
 """covopt: safe soft coverings for collaborative robots (multi-layer Hertz head-impact model).
 
-The C++ library behind the ``covopt`` command, as Python calls. Values are SI floats in
-and out; keyword names are the CLI's scene flags with underscores (``--robot-mass`` is
-``robot_mass``). A scene value may also be a string with a unit, read as the CLI reads it
-(``"15mm"``, ``"27.6MPa"``); ``math.inf`` or ``"fixed"`` is an immovable body (robot_mass,
-head_mass), ``math.inf`` or ``"flat"`` a flat robot surface (robot_radius). A number, like a
-bare number on the command line, must be plausible for its quantity: ``robot_radius=40``
-(40 m, a radius typed in mm) is refused; write ``"40mm"``, or ``"40m"`` if you mean it.
-Unset values are the paper's scene. Results are dicts with the keys of the CLI's ``--json``
-output.
+The C++ library behind the ``covopt`` command, as Python calls. A ``covopt.Scene`` holds the
+impact scene, its injury limits and safety factor, read once from keywords named as the
+CLI's scene flags with underscores (``--robot-mass`` is ``robot_mass``); every call takes one
+(default: the paper's scene) and its own options::
 
-Bad input raises ``ValueError`` with the library's (the CLI's) message; a computation that
-fails raises ``covopt.ComputationError``, whose ``status`` is the library's status name.
-Long calls release the GIL.
+    scene = covopt.Scene(robot_mass=10.0, speed=1.5, covering_thickness="20mm")
+    result = covopt.simulate(scene)
+    result.laceration.ratio, result.safe, result.to_dict()
+
+Values are SI floats in and out; a scene value may also be a string with a unit (``"15mm"``).
+Results are read-only objects whose attributes are the keys of the CLI's ``--json`` output
+(``to_dict()`` gives that object). Bad input raises ``ValueError`` with the library's (the
+CLI's) message naming the keyword; a computation that fails raises
+``covopt.ComputationError``, whose ``status`` is the library's status name. Long calls
+release the GIL.
 """
 
 from . import _covopt
 from ._errors import ComputationError
+from ._results import (ContactMotion, Design, Material, ReflectedMass, Result, RobustDesign,
+                       RobustSimulation, Sensitivities, Simulation, SpeedLimit, SpeedLimitTable,
+                       Sweep, TrajectoryCheck)
 
-ComputationError.__module__ = __name__  # shown as covopt.ComputationError
+Scene = _covopt.Scene
+for _public in (Scene, ComputationError):
+    _public.__module__ = __name__  # shown as covopt.Scene, covopt.ComputationError
 
-__all__ = ["simulate", "sweep", "optimize", "materials", "material", "ComputationError",
-           "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "contact_motion",
-           "check_trajectory", "worst_case", "injury_probability", "sensitivities", "robust_optimize",
-           "load_scene"]
+__all__ = ["Scene", "Result", "simulate", "sweep", "optimize", "materials", "material",
+           "ComputationError", "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass",
+           "contact_motion", "check_trajectory", "worst_case", "injury_probability",
+           "sensitivities", "robust_optimize", "load_scene"]
 
 
-def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
-             robot_poisson=None, covering_modulus=None, covering_poisson=None,
-             covering_thickness=None, head_mass=None, head_radius=None, scalp_modulus=None,
-             scalp_poisson=None, scalp_thickness=None, skull_modulus=None, skull_poisson=None,
-             damping=None, reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
-             neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
-             safety_factor=None, material=None, method=None, rtol=None, atol=None, max_steps=None,
-             history=False):
+def _scene(scene, ranged=False):
+    if scene is None:
+        return Scene()
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene: expected a covopt.Scene (got {type(scene).__name__}); "
+                        "write covopt.Scene(**keywords)")
+    if scene.ranges and not ranged:
+        raise ValueError(f"the scene has ranges ({', '.join(scene.ranges)}): a population, not one "
+                         "scene; give it to covopt.worst_case, injury_probability or robust_optimize")
+    return scene
+
+
+def _given(**options):
+    return {name: value for name, value in options.items() if value is not None}
+
+
+def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, history=False):
     """One impact: its peaks and the injury verdicts, as ``covopt simulate --json``.
 
-    Scene (SI, default the paper's scene): robot_mass [kg], speed [m/s], robot_radius [m],
-    robot_modulus [Pa], robot_poisson [-], covering_modulus [Pa], covering_poisson [-],
-    covering_thickness [m] (0 = no covering), head_mass [kg], head_radius [m],
-    scalp_modulus [Pa], scalp_poisson [-], scalp_thickness [m], skull_modulus [Pa],
-    skull_poisson [-]; thresholds "cumulative" (default) or "literal".
-    Beyond the paper's conservative two-mass impact (docs/model.md §10; each 0 = off, the
-    default): damping [s/m], the Hunt-Crossley contact damping d (F = F_el (1 + d δ'));
-    reaction_delay [s] and braking [m/s²], the robot braking that long after first contact
-    while it still moves forward; torso_mass [kg] (math.inf or "fixed": a fixed torso),
-    neck_stiffness [N/m] and neck_damping [N·s/m], the head hung on a torso by a neck (no
-    default values: give your own). A damped scene reports coefficient_of_restitution.
-    material: a built-in catalog name; sets covering_modulus and covering_poisson.
-    laceration_limit [Pa] (default 1e6), contusion_limit [J/m²] (default 25200),
-    safety_factor [-] in [1, 100]: a verdict is safe when safety_factor x ratio <= 1.
+    scene: a covopt.Scene (default the paper's scene). A damped scene reports
+    coefficient_of_restitution.
     method: None (auto: the exact path where the scene has an energy integral, conservative
     or damped; the default integrator for braking, a neck or history=True), "exact" (refused
     with braking or a neck), "cvode" or an integrator name ("arkode-erk54", "cvode-bdf",
     ...); rtol, atol [-] and max_steps apply to the time path only.
-    history: also return ``result["history"]``, a dict of 1-D numpy arrays of equal length
+    history: also give ``result.history``, 1-D numpy arrays of equal length
     (time_s, penetration_m, penetration_rate_m_per_s, force_N, compressive_stress_Pa,
     tensile_stress_Pa, energy_density_J_per_m2: the columns of ``--history``; with damping,
     braking or a neck also robot_speed_m_per_s, head_speed_m_per_s [m/s] along the impact
@@ -66,23 +70,17 @@ def simulate(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
     0.25 assumed"; a safety factor; covering inputs a zero thickness makes moot), which name
     the keyword (``safety_factor='2'``) where the CLI names the flag (``--safety-factor '2'``).
 
-    Raises ValueError on bad input, ComputationError when the computation fails.
+    Returns a Simulation. Raises ValueError on bad input, ComputationError when the
+    computation fails.
     """
-    arguments = {name: value for name, value in locals().items() if value is not None}
-    return _covopt.simulate(**arguments)
+    return Simulation(_covopt.simulate(_scene(scene), **_given(
+        method=method, rtol=rtol, atol=atol, max_steps=max_steps, history=history)))
 
 
-def sweep(x, y=None, *, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
-          robot_poisson=None, covering_modulus=None, covering_poisson=None,
-          covering_thickness=None, head_mass=None, head_radius=None, scalp_modulus=None,
-          scalp_poisson=None, scalp_thickness=None, skull_modulus=None, skull_poisson=None,
-          damping=None, reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
-          neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
-          safety_factor=None, material=None, threads=None):
+def sweep(x, y=None, *, scene=None, threads=None):
     """A grid of impacts, as ``covopt sweep``: one or two scene quantities over lists of
-    values, everything else from the scene keywords (as for simulate, the extended ones
-    included). Each point takes the exact path where its scene has an energy integral, the
-    time path (ARKODE ERK 5(4), rtol 1e-8) with braking or a neck.
+    values, everything else from the scene. Each point takes the exact path where its scene
+    has an energy integral, the time path (ARKODE ERK 5(4), rtol 1e-8) with braking or a neck.
 
     x, y: ``(quantity, values)``; the quantity is a scene keyword or CLI flag name
     ("speed", "robot_mass" or "robot-mass", "covering_thickness", ...), the values SI
@@ -90,7 +88,7 @@ def sweep(x, y=None, *, robot_mass=None, speed=None, robot_radius=None, robot_mo
     or the robot flat). threads: worker threads, None or 0 = all cores; results are the
     same for any number.
 
-    Returns a dict: ``x`` (and ``y``) as numpy arrays with ``x_quantity`` (``y_quantity``);
+    Returns a Sweep: ``x`` (and ``y``) as numpy arrays with ``x_quantity`` (``y_quantity``);
     one numpy array per result, ``a[i, j]`` at ``x[i]``, ``y[j]`` (``a[i]`` with one axis):
     the peaks (max_penetration_m, peak_force_N, contact_duration_s,
     time_of_max_compression_s, max_compressive_stress_Pa, max_tensile_stress_Pa,
@@ -104,26 +102,18 @@ def sweep(x, y=None, *, robot_mass=None, speed=None, robot_radius=None, robot_mo
     Raises ValueError on bad input (an unknown quantity, no values, ...), ComputationError
     when no point is a valid scene.
     """
-    arguments = {name: value for name, value in locals().items()
-                 if value is not None and name not in ("x", "y")}
-    return _covopt.sweep(x, y, **arguments)
+    return Sweep(_covopt.sweep(x, y, _scene(scene), threads))
 
 
-def optimize(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=None,
-             robot_poisson=None, head_mass=None, head_radius=None, scalp_modulus=None,
-             scalp_poisson=None, scalp_thickness=None, skull_modulus=None, skull_poisson=None,
-             damping=None, reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
-             neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
-             safety_factor=None, materials=None, families=None, catalog=None, no_builtin=False,
+def optimize(scene=None, *, materials=None, families=None, catalog=None, no_builtin=False,
              thickness=None, max_thickness=None, min_modulus=None, max_modulus=None,
              covering_poisson=None, thickness_step=None, allow_full_compression=False,
-             allow_crushing=False, allow_unknown_strength=False,
-             global_algorithm=None, seed=None, threads=None, oracle=None, method=None, rtol=None,
-             max_steps=None):
+             allow_crushing=False, allow_unknown_strength=False, global_algorithm=None, seed=None,
+             threads=None, oracle=None, method=None, rtol=None, max_steps=None):
     """Which covering, how thick, with what margin, as ``covopt optimize --json``.
 
-    The scene keywords are simulate's (damping, braking and a neck included), without the
-    covering (it is what is designed).
+    scene: a covopt.Scene without a covering (it is what is designed); damping, braking and a
+    neck included.
     Problem (a), the default: the thinnest admissible covering, continuous and for every
     candidate material. Admissible: safety_factor times every ratio that counts is <= 1: the
     laceration and contusion ratios; unless allow_full_compression, the covering's travel
@@ -146,40 +136,34 @@ def optimize(*, robot_mass=None, speed=None, robot_radius=None, robot_modulus=No
     max_steps: its step limit per impact (an int >= 10; default 200000).
     result["solver"]["oracle"] says which ran and why.
 
-    Returns the dict of ``covopt optimize --json`` (without the CLI's warnings about its own
+    Returns a Design: ``covopt optimize --json`` (without the CLI's warnings about its own
     input). Raises ValueError on bad input, ComputationError when the search fails.
     """
-    arguments = {name: value for name, value in locals().items() if value is not None}
-    ranged = [name for name, value in arguments.items() if isinstance(value, str) and ".." in value]
-    if ranged:
-        name = ranged[0]
-        raise ValueError(f"{name}={arguments[name]!r}: a range LO..HI asks for a design over a population; use "
-                         f"covopt.robust_optimize(ranges={{{name!r}: {arguments[name]!r}}}, ...) instead")
-    return _covopt.optimize(**arguments)
+    return Design(_covopt.optimize(_scene(scene), **_given(
+        materials=materials, families=families, catalog=catalog, no_builtin=no_builtin,
+        thickness=thickness, max_thickness=max_thickness, min_modulus=min_modulus,
+        max_modulus=max_modulus, covering_poisson=covering_poisson, thickness_step=thickness_step,
+        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing,
+        allow_unknown_strength=allow_unknown_strength, global_algorithm=global_algorithm,
+        seed=seed, threads=threads, oracle=oracle, method=method, rtol=rtol,
+        max_steps=max_steps)))
 
 
 def materials():
-    """Every built-in catalog material, as ``covopt materials list --json``: a list of dicts
+    """Every built-in catalog material, as ``covopt materials list --json``: a list of Materials
     (name, family, youngs_modulus_Pa, poisson_ratio, density_kg_per_m3, modulus_basis,
     source, note, defined_at; None where the catalog gives nothing)."""
-    return _covopt.materials()
+    return [Material(row) for row in _covopt.materials()]
 
 
 def material(name):
     """One built-in catalog material by name (ignoring case), as ``covopt materials show NAME
     --json``. An unknown name raises ValueError: "no material 'X' in the catalog; did you
     mean ...?"."""
-    return _covopt.material(name)
+    return Material(_covopt.material(name))
 
 
-def max_safe_speed(*, robot_mass=None, robot_radius=None, robot_modulus=None, robot_poisson=None,
-                   covering_modulus=None, covering_poisson=None, covering_thickness=None,
-                   head_mass=None, head_radius=None, scalp_modulus=None, scalp_poisson=None,
-                   scalp_thickness=None, skull_modulus=None, skull_poisson=None, damping=None,
-                   reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
-                   neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
-                   safety_factor=None, material=None, allow_full_compression=False, allow_crushing=False,
-                   oracle=None,
+def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=False, oracle=None,
                    method=None, rtol=None, max_steps=None):
     """The largest impact speed [m/s] such that every speed up to it is safe: both injury
     ratios <= 1/safety_factor and, unless allow_full_compression, the covering not fully
@@ -187,12 +171,12 @@ def max_safe_speed(*, robot_mass=None, robot_radius=None, robot_modulus=None, ro
     compressive strength also must not crush (safety_factor x peak compressive stress <= its
     strength) unless allow_crushing (optim::MaxSafeSpeed). The result's warnings say when
     crushing is not checked (no covering given, a covering given by its modulus, a material
-    of unknown strength). The scene keywords are simulate's (damping,
-    braking and a neck included), without speed (it is what is computed). oracle, method,
+    of unknown strength). The scene (damping,
+    braking and a neck included) gives no speed (it is what is computed). oracle, method,
     rtol, max_steps: as optimize's (a scene without an energy integral is bracketed on the
     time path).
 
-    Returns a dict: max_safe_speed_m_per_s (None when not even 1e-6 m/s is safe; 100 when
+    Returns a SpeedLimit: max_safe_speed_m_per_s (None when not even 1e-6 m/s is safe; 100 when
     safe up to the model's ceiling), limited_by ("laceration", "contusion",
     "full-compression", "none" at the ceiling), laceration_ratio, contusion_ratio,
     compression_ratio (of the impact at the limit), status ("limited",
@@ -201,53 +185,45 @@ def max_safe_speed(*, robot_mass=None, robot_radius=None, robot_modulus=None, ro
     "evaluation-failed") when the time path fails on an impact of the search: a failed
     search is no limit.
     """
-    arguments = {name: value for name, value in locals().items() if value is not None}
-    return _covopt.max_safe_speed(**arguments)
+    return SpeedLimit(_covopt.max_safe_speed(_scene(scene), **_given(
+        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing,
+        oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
-def max_safe_mass(*, speed=None, robot_radius=None, robot_modulus=None, robot_poisson=None,
-                  covering_modulus=None, covering_poisson=None, covering_thickness=None,
-                  head_mass=None, head_radius=None, scalp_modulus=None, scalp_poisson=None,
-                  scalp_thickness=None, skull_modulus=None, skull_poisson=None, damping=None,
-                  reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
-                  neck_damping=None, thresholds=None, laceration_limit=None, contusion_limit=None,
-                  safety_factor=None, material=None, allow_full_compression=False, allow_crushing=False,
-                   oracle=None,
+def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=False, oracle=None,
                   method=None, rtol=None, max_steps=None):
     """The largest reflected robot mass [kg] that is safe, with every lighter robot, at the
-    scene's speed (optim::MaxSafeMass); as max_safe_speed, without robot_mass.
+    scene's speed (optim::MaxSafeMass); as max_safe_speed, the scene without robot_mass.
 
-    Returns a dict like max_safe_speed's with max_safe_mass_kg ("fixed" when even a fixed
-    robot is safe) and speed_m_per_s. Raises ValueError on bad input, ComputationError as
-    max_safe_speed.
+    Returns a SpeedLimit like max_safe_speed's with max_safe_mass_kg ("fixed" when even a
+    fixed robot is safe) and speed_m_per_s. Raises ValueError on bad input,
+    ComputationError as max_safe_speed.
     """
-    arguments = {name: value for name, value in locals().items() if value is not None}
-    return _covopt.max_safe_mass(**arguments)
+    return SpeedLimit(_covopt.max_safe_mass(_scene(scene), **_given(
+        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing,
+        oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
-def speed_limit(*, solve_for="speed", robot_mass=None, speed=None, robot_radius=None,
-                robot_modulus=None, robot_poisson=None, covering_modulus=None,
-                covering_poisson=None, covering_thickness=None, head_mass=None, head_radius=None,
-                scalp_modulus=None, scalp_poisson=None, scalp_thickness=None, skull_modulus=None,
-                skull_poisson=None, damping=None, reaction_delay=None, braking=None,
-                torso_mass=None, neck_stiffness=None, neck_damping=None, thresholds=None,
-                laceration_limit=None, contusion_limit=None, safety_factor=None, material=None,
-                allow_full_compression=False, allow_crushing=False, oracle=None, method=None, rtol=None,
-                max_steps=None):
+def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
+                allow_full_compression=False, allow_crushing=False, oracle=None, method=None,
+                rtol=None, max_steps=None):
     """A table of limits, as ``covopt speed-limit --json``: solve_for="speed" gives the max
-    safe speed for each robot_mass (a value or a list; math.inf or "fixed" for a fixed
-    robot), solve_for="mass" the max safe reflected mass for each speed (a value or a list).
-    material: a catalog name or a list of names, one block of rows each.
+    safe speed for each robot mass in values [kg] (math.inf or "fixed" for a fixed robot;
+    default the scene's), solve_for="mass" the max safe reflected mass for each speed in
+    values [m/s] (default the scene's). materials: a catalog name or a list of names, one
+    block of rows each (default the scene's covering).
 
     oracle, method, rtol, max_steps: as optimize's.
 
-    Returns the dict of ``covopt speed-limit --json`` (solve_for, criterion, safety_factor,
-    limits, search_limit, oracle, rows, scene, warnings; without the CLI's warnings about its own
-    input). Raises ValueError on bad input, ComputationError (status "evaluation-failed")
-    when the time path fails on an impact of a row's search.
+    Returns a SpeedLimitTable (solve_for, criterion, safety_factor, limits, search_limit,
+    oracle, rows, scene, warnings; without the CLI's warnings about its own input). Raises
+    ValueError on bad input, ComputationError (status "evaluation-failed") when the time path
+    fails on an impact of a row's search.
     """
-    arguments = {name: value for name, value in locals().items() if value is not None}
-    return _covopt.speed_limit(**arguments)
+    return SpeedLimitTable(_covopt.speed_limit(_scene(scene), **_given(
+        solve_for=solve_for, values=values, materials=materials,
+        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing,
+        oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
 def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), direction=None, *,
@@ -262,7 +238,7 @@ def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), directio
     full turn (|q| <= 2 pi rad: radians, not degrees; |q| <= 10 m) and within the URDF's
     <limit>s; ignore_joint_limits=True skips the URDF's limits and adds a warning saying so.
 
-    Returns a dict: reflected_mass_kg (None without a direction), direction,
+    Returns a ReflectedMass: reflected_mass_kg (None without a direction), direction,
     max_reflected_mass_kg, max_direction, min_reflected_mass_kg, min_direction,
     contact_point_m (base frame), joint_names, status, message, warnings. A mass the robot
     cannot move is the string "fixed" (infinite), with a warning.
@@ -271,9 +247,9 @@ def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), directio
     count that does not match, non-finite numbers, a zero direction, a position beyond a full
     turn or the URDF's limits, a URDF with a cycle, implausible masses, inertias or origins).
     """
-    return _covopt.reflected_mass(urdf, tip, joints, base=base, point=point,
-                                  direction=direction, urdf_text=urdf_text,
-                                  ignore_joint_limits=ignore_joint_limits)
+    return ReflectedMass(_covopt.reflected_mass(urdf, tip, joints, base=base, point=point,
+                                                direction=direction, urdf_text=urdf_text,
+                                                ignore_joint_limits=ignore_joint_limits))
 
 
 def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, urdf_text=None,
@@ -287,34 +263,29 @@ def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, u
     the URDF's limits (ignore_joint_limits=True: not, with a warning). Other arguments as
     reflected_mass.
 
-    Returns a dict: samples (time_s, speed_m_per_s, moving, direction (None at rest),
+    Returns a ContactMotion: samples (time_s, speed_m_per_s, moving, direction (None at rest),
     velocity_m_per_s, contact_point_m, reflected_mass_kg along the motion; at rest the
     largest over all directions), joint_names, status, message, warnings.
     """
-    return _covopt.contact_motion(urdf, tip, trajectory, base=base, point=point,
-                                  urdf_text=urdf_text, ignore_joint_limits=ignore_joint_limits)
+    return ContactMotion(_covopt.contact_motion(urdf, tip, trajectory, base=base, point=point,
+                                                urdf_text=urdf_text,
+                                                ignore_joint_limits=ignore_joint_limits))
 
 
-def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, urdf_text=None,
-                     robot_radius=None, robot_modulus=None, robot_poisson=None,
-                     covering_modulus=None, covering_poisson=None, covering_thickness=None,
-                     head_mass=None, head_radius=None, scalp_modulus=None, scalp_poisson=None,
-                     scalp_thickness=None, skull_modulus=None, skull_poisson=None, damping=None,
-                     reaction_delay=None, braking=None, torso_mass=None, neck_stiffness=None,
-                     neck_damping=None, thresholds=None, laceration_limit=None,
-                     contusion_limit=None, safety_factor=None, material=None,
-                     allow_full_compression=False, allow_crushing=False, ignore_joint_limits=False):
+def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, scene=None,
+                     urdf_text=None, allow_full_compression=False, allow_crushing=False,
+                     ignore_joint_limits=False):
     """Is a robot motion safe with this covering, and by how much may it be sped up or must
     it be slowed down? As ``covopt robot --trajectory --json``.
 
-    The robot and trajectory as contact_motion takes them; the covering, head and limits as
-    max_safe_speed takes them (no robot_mass or speed: each sample brings its reflected mass
+    The robot and trajectory as contact_motion takes them; the covering, head and limits from
+    the scene (no robot_mass or speed: each sample brings its reflected mass
     along the motion and the contact point's speed). Per sample: the injury ratios of an
     impact at that speed and mass, and the largest safe speed at that mass
     (optim::CheckTrajectory). safe_speed_scale = min over moving samples of max safe speed /
     speed: running the whole trajectory k times faster is safe exactly when k <= it.
 
-    Returns a dict: status ("safe", "unsafe", "at-rest"), message, safe_speed_scale (None
+    Returns a TrajectoryCheck: status ("safe", "unsafe", "at-rest"), message, safe_speed_scale (None
     when at rest throughout), worst_sample (index and the sample's keys; None at rest),
     sample_count, unsafe_sample_count, criterion, safety_factor, limits, search_limit, scene,
     joint_names, samples (time_s, speed_m_per_s, reflected_mass_kg ("fixed" if infinite),
@@ -324,29 +295,28 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
     ComputationError (status "evaluation-failed") when the time path (a scene with braking or
     a neck) fails at a sample: the trajectory then has no verdict.
     """
-    scene = {name: value for name, value in locals().items()
-             if value is not None and name not in
-             ("urdf", "tip", "trajectory", "base", "point", "urdf_text", "ignore_joint_limits")}
-    return _covopt.check_trajectory(urdf, tip, trajectory, base=base, point=point,
-                                    urdf_text=urdf_text, ignore_joint_limits=ignore_joint_limits,
-                                    **scene)
+    return TrajectoryCheck(_covopt.check_trajectory(
+        urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, _scene(scene),
+        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing))
 
 
 # Robust design over a population (docs/model.md §11). `ranges` maps scene inputs (keyword
-# names, head_mass or head-mass) to (low, high) or "LO..HI", values with units as elsewhere;
-# the other scene keywords are simulate's (the exact path only: no damping, braking or neck).
+# names, head_mass or head-mass) to (low, high) or "LO..HI", values with units as elsewhere
+# (default the scene's ranges, Scene(ranges=...) or a scene file's); the scene gives the rest
+# (the exact path only: no damping, braking or neck).
 
-def worst_case(*, ranges, **scene):
+def worst_case(scene=None, *, ranges=None):
     """The worst impact over the box (optim::FindWorstCase: corners, a Halton sample, DIRECT-L,
-    COBYLA). Returns the dict ``covopt simulate --json`` prints with the same ranges: the impact
+    COBYLA). Returns as a RobustSimulation the dict ``covopt simulate --json`` prints with the same ranges: the impact
     at the worst case (peaks, verdicts, scene) plus uncertain_inputs and worst_case {inputs,
     units, laceration_ratio, contusion_ratio, compression_ratio, governing_ratio, binding,
     admissible, corner_governing_ratio, found_by, evaluations, seconds}. ValueError on bad input.
     """
-    return _covopt.worst_case(ranges=ranges, **scene)
+    scene = _scene(scene, ranged=True)
+    return RobustSimulation(_covopt.worst_case(scene, ranges=ranges or scene.ranges))
 
 
-def injury_probability(*, ranges, samples, seed=1, threads=0, distributions=None, **scene):
+def injury_probability(scene=None, *, ranges=None, samples, seed=1, threads=0, distributions=None):
     """Monte Carlo over the box: as worst_case, plus injury_probability {samples, seed,
     laceration, contusion, any, fully_compressed, inadmissible, ci95: {name: [low, high]},
     counts}, the dict ``covopt simulate --json --samples N --seed S`` prints. distributions maps
@@ -354,22 +324,23 @@ def injury_probability(*, ranges, samples, seed=1, threads=0, distributions=None
     range); uniform otherwise. samples is a whole number in [1, 10000000000]; seed any whole
     number in [0, 18446744073709551615] (2**64 - 1, as --seed); threads in [0, 4096]. Identical
     for any threads (0 = all cores)."""
-    return _covopt.injury_probability(ranges=ranges, samples=samples, seed=seed, threads=threads,
-                                      distributions=distributions, **scene)
+    scene = _scene(scene, ranged=True)
+    return RobustSimulation(_covopt.injury_probability(scene, **_given(
+        ranges=ranges or scene.ranges, samples=samples, seed=seed, threads=threads, distributions=distributions)))
 
 
-def sensitivities(**scene):
+def sensitivities(scene=None):
     """The elasticities d ln r / d ln x of the laceration, contusion and compression ratios to
     every scene input at this scene (optim::ComputeElasticities), the ``sensitivities`` object
     of ``covopt simulate --json --sensitivities``: {laceration_ratio, contusion_ratio,
     compression_ratio, evaluations, rows: [{field, unit, value, laceration, contusion,
     compression, method, reliable, discrepancy}]} in tornado order."""
-    return _covopt.sensitivities(**scene)
+    return Sensitivities(_covopt.sensitivities(_scene(scene)))
 
 
-def robust_optimize(*, ranges, samples=None, seed=1, threads=0, distributions=None,
+def robust_optimize(scene=None, *, ranges=None, samples=None, seed=1, threads=0, distributions=None,
                     max_injury_probability=None, allow_full_compression=False, allow_crushing=False,
-                    allow_unknown_strength=False, **scene):
+                    allow_unknown_strength=False):
     """The thinnest built-in catalog covering admissible for every value in the box
     (optim::FindRobustThinnestCovering), the dict ``covopt optimize --json`` prints with the
     same ranges (worst_case: the input values that set the design). With samples, the
@@ -379,27 +350,23 @@ def robust_optimize(*, ranges, samples=None, seed=1, threads=0, distributions=No
     as ``covopt optimize --max-injury-probability P``. The criterion is optimize's: crushing
     counts unless allow_crushing, unknown strengths are refused unless allow_unknown_strength.
     seed is any whole number in [0, 18446744073709551615] (2**64 - 1); threads 0 = all cores."""
-    arguments = {"ranges": ranges, "samples": samples, "seed": seed, "threads": threads,
-                 "distributions": distributions, "max_injury_probability": max_injury_probability,
-                 "allow_full_compression": allow_full_compression, "allow_crushing": allow_crushing,
-                 "allow_unknown_strength": allow_unknown_strength}
-    arguments = {k: v for k, v in arguments.items() if v is not None}
-    return _covopt.robust_optimize(**arguments, **scene)
+    scene = _scene(scene, ranged=True)
+    return RobustDesign(_covopt.robust_optimize(scene, **_given(
+        ranges=ranges or scene.ranges, samples=samples, seed=seed, threads=threads, distributions=distributions,
+        max_injury_probability=max_injury_probability,
+        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing,
+        allow_unknown_strength=allow_unknown_strength)))
 
 
 def load_scene(path):
     """A scene file (TOML, the format of ``covopt simulate --scene``; see cli/examples/paper_scene.toml),
-    read by the library's reader with the CLI's checks and messages.
-
-    Returns a dict of the keywords the scene-taking calls accept, holding what the file sets:
-    each scene field by its keyword (``robot_mass``, ``covering_thickness``, ...; SI floats,
-    ``math.inf`` for "fixed" or "flat"), ``thresholds``, ``material`` (covering.material),
-    ``laceration_limit``, ``contusion_limit``, ``safety_factor``, and, when the file writes
-    ranges ("3.7kg..5.8kg"), ``ranges`` ({"head_mass": (low, high)} in SI) for worst_case,
-    injury_probability and robust_optimize. So ``covopt.simulate(**covopt.load_scene(path))``
-    is ``covopt simulate --scene path``. A value with a unit that is implausible as a bare
-    number (``radius = "40m"``) is kept as a string with its SI unit ("40.0m").
+    read by the library's reader with the CLI's checks and messages, as a covopt.Scene holding
+    what the file sets (its repr shows the keywords); ranges the file writes ("3.7kg..5.8kg")
+    are the Scene's ``ranges`` ({"head_mass": (low, high)} in SI), which worst_case,
+    injury_probability and robust_optimize take. So ``covopt.simulate(covopt.load_scene(path))``
+    is ``covopt simulate --scene path``.
 
     Raises ValueError naming file:line:column, the key and what is allowed, as the CLI does.
     """
-    return _covopt.load_scene(str(path))
+    return Scene(**_covopt.load_scene(str(path)))
+

@@ -24,8 +24,8 @@ def main(output="speed_mass_map.png"):
     speeds = np.linspace(0.25, 4.0, 200)     # m/s
     masses = np.geomspace(1.0, 50.0, 200)    # kg
     grid = covopt.sweep(("speed", speeds), ("robot_mass", masses))
-    worst = grid["worst_ratio"]              # worst[i, j] at speeds[i], masses[j]
-    full = grid["fully_compressed"].astype(float)
+    worst = grid.worst_ratio                 # worst[i, j] at speeds[i], masses[j]
+    full = grid.fully_compressed.astype(float)
 
     fig, ax = plt.subplots(figsize=(7, 5))
     mesh = ax.pcolormesh(masses, speeds, worst, shading="auto", cmap="RdYlGn_r",
@@ -40,7 +40,7 @@ def main(output="speed_mass_map.png"):
                  "safe below the black line; hatched = covering fully compressed")
     fig.tight_layout()
     fig.savefig(output, dpi=120)
-    print(f"wrote {output}; {grid['brief_report']}")
+    print(f"wrote {output}; {grid.brief_report}")
 
 
 if __name__ == "__main__":

@@ -1,20 +1,20 @@
 /// @file module.cpp
 /// covopt._covopt: the pybind11 extension behind `import covopt` (python/covopt/__init__.py).
 ///
-/// SI floats in and out; keyword names are the CLI's scene flags with underscores. A scene
-/// value is a number in SI (math.inf for a fixed mass or a flat robot), or a string read as
-/// the CLI reads a flag ("15mm", "fixed", "flat"). A number, like a bare number on the
-/// command line, must be plausible for its quantity (robot_radius=40 is refused: 40 m;
-/// write "40mm", or "40m" if meant). Results are the CLI's JSON objects, built by
-/// covopt::report and turned into dicts by json.loads, so their keys and numbers are those of
-/// `covopt simulate --json` and `covopt materials ... --json`. Bad input raises ValueError
-/// with the library's message; a failed computation raises covopt.ComputationError (with
-/// .status). The computation runs without the GIL.
+/// covopt.Scene holds a scene read from keywords named as the CLI's scene flags with
+/// underscores. A scene value is a number in SI (math.inf for a fixed mass or a flat robot),
+/// or a string read as the CLI reads a flag ("15mm", "fixed", "flat"). A number, like a bare
+/// number on the command line, must be plausible for its quantity (robot_radius=40 is
+/// refused: 40 m; write "40mm", or "40m" if meant). Every call takes a Scene and its own
+/// options. Results are the CLI's JSON objects, built by covopt::report and loaded by
+/// json.loads (covopt/_results.py makes them attribute objects), so their keys and numbers
+/// are those of `covopt simulate --json` and `covopt materials ... --json`. Bad input raises
+/// ValueError with the library's message; a failed computation raises
+/// covopt.ComputationError (with .status). The computation runs without the GIL.
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <initializer_list>
 #include <limits>
 #include <span>
 #include <optional>
@@ -29,13 +29,12 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "covopt/core/exact.hpp"
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/scene.hpp"
-#include "covopt/core/sweep.hpp"
 #include "covopt/core/solve.hpp"
+#include "covopt/core/sweep.hpp"
 #include "covopt/core/time_integration.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/materials/material.hpp"
@@ -91,6 +90,10 @@ const SceneKeyword kSceneKeywords[] = {
 
 constexpr double kMaxSafetyFactor = 100.0;
 
+/// The scene's keywords besides the scene fields'.
+const char* const kSceneOptionKeywords[] = {"thresholds", "laceration_limit", "contusion_limit",
+                                            "safety_factor", "material"};
+
 std::string Repr(const py::handle& value) { return py::repr(value).cast<std::string>(); }
 
 /// A number as a person would type it: 40.0 as "40", 0.25 as "0.25".
@@ -104,10 +107,9 @@ std::string AsTyped(const py::handle& number) {
   return py::str(number).cast<std::string>();
 }
 
-/// A Python value as SI: a float or int (SI; math.inf where the spec allows "fixed" or
-/// "flat"), or a string read with the CLI's unit parser.
-/// @throws std::invalid_argument naming the keyword, the value and what is allowed.
-double ReadQuantity(const py::handle& value, const QuantitySpec& spec, std::string_view keyword) {
+}  // namespace
+
+double ReadSceneQuantity(const py::handle& value, const QuantitySpec& spec, std::string_view keyword) {
   if (py::isinstance<py::str>(value)) {
     return ParseQuantity(value.cast<std::string>(), spec, keyword);
   }
@@ -146,18 +148,19 @@ double ReadQuantity(const py::handle& value, const QuantitySpec& spec, std::stri
   return number;
 }
 
-/// A library message naming scene fields ("robot.mass must be ...") with the keywords the
-/// caller gave: "... (robot.mass is robot_mass=-10.0)".
-std::string AttributeError(std::string message, const py::kwargs& given) {
-  std::string origins;
-  for (const SceneKeyword& k : kSceneKeywords) {
-    if (given.contains(k.keyword) && message.find(k.field) != std::string::npos) {
-      origins += std::string(origins.empty() ? "" : "; ") + k.field + " is " + k.keyword + "=" +
-                 Repr(given[k.keyword]);
-    }
-  }
-  return origins.empty() ? message : message + " (" + origins + ")";
+std::optional<py::object> Option(const py::dict& kwargs, const char* name) {
+  if (!kwargs.contains(name)) return std::nullopt;
+  py::object value = kwargs[name];
+  if (value.is_none()) return std::nullopt;
+  return value;
 }
+
+bool Flag(const py::dict& kwargs, const char* name) {
+  const auto value = Option(kwargs, name);
+  return value && py::bool_(*value).cast<bool>();
+}
+
+namespace {
 
 const materials::Catalog& BuiltInCatalog() { return materials::Catalog::BuiltIn(); }
 
@@ -165,10 +168,6 @@ const materials::Material& FindMaterial(std::string_view name) {
   const materials::Material* m = BuiltInCatalog().Find(name);
   if (m == nullptr) throw std::invalid_argument(BuiltInCatalog().MissingMaterialMessage(name));
   return *m;
-}
-
-py::object JsonLoads(const std::string& text) {
-  return py::module_::import("json").attr("loads")(text);
 }
 
 /// Raises covopt.ComputationError for a failed impact computation.
@@ -179,57 +178,45 @@ py::object JsonLoads(const std::string& text) {
                         std::string(ToString(result.status)));
 }
 
-/// max_steps=: an int (not a bool); its range is the library's (ValidateTimeIntegrationOptions).
+/// max_steps=: an int (not a bool) >= 10.
 long ReadMaxSteps(const py::handle& value) {
   if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
     throw std::invalid_argument("max_steps: expected an integer (got " + Repr(value) + ")");
   }
   const long steps = value.cast<long>();
+  if (steps < 10) throw std::invalid_argument("max_steps must be >= 10 (got " + std::to_string(steps) + ")");
   return steps;
 }
 
-/// The keywords every scene-taking call shares, beside the scene's own.
-const char* const kSceneOptionKeywords[] = {"thresholds", "laceration_limit", "contusion_limit",
-                                            "safety_factor", "material"};
-
-/// `kwargs[name]` unless absent or None.
-std::optional<py::object> Get(const py::kwargs& kwargs, const char* name) {
-  if (!kwargs.contains(name)) return std::nullopt;
-  py::object value = kwargs[name];
-  if (value.is_none()) return std::nullopt;
+/// A limit or factor of the scene: `fallback` when not given, else read and checked by `ok`
+/// (`range`: what the message says is allowed).
+double ReadChecked(const py::dict& given, const char* keyword, const QuantitySpec& spec, bool (*ok)(double),
+                   const char* range, double fallback) {
+  const auto v = Option(given, keyword);
+  if (!v) return fallback;
+  const double value = ReadSceneQuantity(*v, spec, keyword);
+  if (!ok(value)) throw std::invalid_argument(std::string(keyword) + " must be " + range + " (got " + Repr(*v) + ")");
   return value;
 }
 
-/// Refuses a keyword that is neither a scene keyword nor one of `own`.
-void CheckKeywords(const py::kwargs& kwargs, const char* function,
-                   std::initializer_list<const char*> own) {
-  for (const auto& item : kwargs) {
+}  // namespace
+
+SceneInputs ReadScene(const py::kwargs& keywords) {
+  SceneInputs inputs;
+  for (const auto& item : keywords) {
     const std::string name = py::str(item.first).cast<std::string>();
     bool known = false;
     for (const SceneKeyword& k : kSceneKeywords) known = known || name == k.keyword;
     for (const char* k : kSceneOptionKeywords) known = known || name == k;
-    for (const char* k : own) known = known || name == k;
-    if (!known) {
-      throw std::invalid_argument(std::string(function) + "() got an unknown keyword '" + name + "'");
+    if (!known && name != "ranges") throw py::type_error("Scene() got an unexpected keyword argument '" + name + "'");
+    if (py::isinstance<py::str>(item.second) && item.second.cast<std::string>().find("..") != std::string::npos) {
+      throw std::invalid_argument(name + "=" + Repr(item.second) + ": a range LO..HI describes a population, not "
+                                  "one scene; give ranges={'" + name + "': " + Repr(item.second) +
+                                  "} to covopt.worst_case, injury_probability or robust_optimize");
     }
+    if (!item.second.is_none()) inputs.given[item.first] = item.second;
   }
-}
-
-/// What the scene keywords describe: the scene (Scene{} with the keywords applied), the
-/// catalog material, the limits and the safety factor.
-struct SceneInputs {
-  Scene scene;
-  std::optional<std::string> covering_material;  ///< the catalog name, if material= was given
-  bool covering_poisson_assumed = false;         ///< the material's ν is unknown: 0.25 used
-  InjuryLimits limits;
-  double safety_factor = 1.0;  ///< [-], in [1, 100]
-};
-
-/// Reads the scene keywords (the scene itself is checked later, by ImpactModel::FromScene).
-/// @throws std::invalid_argument naming the keyword, the value and what is allowed.
-SceneInputs ReadSceneInputs(const py::kwargs& kwargs) {
-  const auto get = [&](const char* name) { return Get(kwargs, name); };
-  SceneInputs inputs;
+  const auto get = [&](const char* name) { return Option(inputs.given, name); };
   Scene& scene = inputs.scene;
   if (const auto name = get("material")) {
     for (const char* k : {"covering_modulus", "covering_poisson"}) {
@@ -245,7 +232,7 @@ SceneInputs ReadSceneInputs(const py::kwargs& kwargs) {
     inputs.covering_poisson_assumed = !m.poisson_ratio.has_value();
   }
   for (const SceneKeyword& k : kSceneKeywords) {
-    if (const auto value = get(k.keyword)) k.value(scene) = ReadQuantity(*value, *k.spec, k.keyword);
+    if (const auto value = get(k.keyword)) k.value(scene) = ReadSceneQuantity(*value, *k.spec, k.keyword);
   }
   if (const auto thresholds = get("thresholds")) {
     const std::string text = py::str(*thresholds).cast<std::string>();
@@ -257,87 +244,99 @@ SceneInputs ReadSceneInputs(const py::kwargs& kwargs) {
       throw std::invalid_argument("thresholds: expected 'cumulative' or 'literal' (got '" + text + "')");
     }
   }
-
   InjuryLimits& limits = inputs.limits;
-  if (const auto v = get("laceration_limit")) {
-    limits.laceration_tensile_stress_Pa = ReadQuantity(*v, specs::kLacerationLimit, "laceration_limit");
-    if (!(limits.laceration_tensile_stress_Pa > 0.0)) {
-      throw std::invalid_argument("laceration_limit must be > 0 Pa (got " + Repr(*v) + ")");
-    }
-  }
-  if (const auto v = get("contusion_limit")) {
-    limits.contusion_energy_density_J_per_m2 = ReadQuantity(*v, specs::kContusionLimit, "contusion_limit");
-    if (!(limits.contusion_energy_density_J_per_m2 > 0.0)) {
-      throw std::invalid_argument("contusion_limit must be > 0 J/m2 (got " + Repr(*v) + ")");
-    }
-  }
-  if (const auto v = get("safety_factor")) {
-    inputs.safety_factor = ReadQuantity(*v, specs::kSafetyFactor, "safety_factor");
-    if (!(inputs.safety_factor >= 1.0 && inputs.safety_factor <= kMaxSafetyFactor)) {
-      throw std::invalid_argument("safety_factor must be in [1, 100] (got " + Repr(*v) + ")");
-    }
-  }
+  const auto positive = [](double v) { return v > 0.0; };
+  limits.laceration_tensile_stress_Pa = ReadChecked(inputs.given, "laceration_limit", specs::kLacerationLimit,
+                                                    positive, "> 0 Pa", limits.laceration_tensile_stress_Pa);
+  limits.contusion_energy_density_J_per_m2 = ReadChecked(inputs.given, "contusion_limit", specs::kContusionLimit,
+                                                         positive, "> 0 J/m2", limits.contusion_energy_density_J_per_m2);
+  inputs.safety_factor = ReadChecked(inputs.given, "safety_factor", specs::kSafetyFactor,
+                                     [](double v) { return v >= 1.0 && v <= kMaxSafetyFactor; }, "in [1, 100]", 1.0);
   return inputs;
 }
+
+SceneInputs SceneInputs::With(const py::dict& changes) const {
+  py::kwargs merged;
+  for (const auto& item : given) merged[item.first] = item.second;
+  for (const auto& item : changes) merged[item.first] = item.second;
+  return ReadScene(merged);
+}
+
+std::string SceneInputs::Attributed(const std::string& message) const {
+  std::string origins;
+  for (const SceneKeyword& k : kSceneKeywords) {
+    if (Gave(k.keyword) && message.find(k.field) != std::string::npos) {
+      origins += std::string(origins.empty() ? "" : "; ") + k.field + " is " + k.keyword + "=" +
+                 Repr(given[k.keyword]);
+    }
+  }
+  return origins.empty() ? message : message + " (" + origins + ")";
+}
+
+optim::CoveringCrushCheck SceneInputs::CrushCheck() const {
+  bool covering_given = false;
+  for (const char* keyword : {"covering_thickness", "covering_modulus", "covering_poisson", "material"}) {
+    covering_given = covering_given || Gave(keyword);
+  }
+  const materials::Material* material = covering_material ? BuiltInCatalog().Find(*covering_material) : nullptr;
+  return optim::CrushCheckFor(scene, material, covering_given);
+}
+
+void SceneInputs::Judge(report::SimulationReport& report) const {
+  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor);
+  const optim::CoveringCrushCheck crush = CrushCheck();
+  if (crush.compressive_strength_Pa > 0.0) {
+    report.crush = optim::CrushVerdict(report.result.peaks, crush.compressive_strength_Pa, report.safety_factor);
+  }
+  report.scope = optim::HeadVerdictScope(
+      optim::DesignRule{report.safety_factor, optim::DesignCriterion::kPaper, false, !crush.notes.empty()});
+}
+
+namespace {
 
 /// The warnings `covopt simulate` adds about its inputs (optim::SceneInputWarnings, as the
 /// CLI's): where the CLI names a flag or scene file as the source, these name the keyword,
 /// "(from safety_factor=2)".
-std::vector<std::string> InputWarnings(const SceneInputs& inputs, const InjuryLimits& limits,
-                                       const py::kwargs& kwargs) {
-  const auto source_of = [&kwargs](std::string_view field) -> std::optional<std::string> {
+std::vector<std::string> InputWarnings(const SceneInputs& inputs) {
+  const auto source_of = [&inputs](std::string_view field) -> std::optional<std::string> {
     const char* keyword = field == "limits.safety_factor" ? "safety_factor"
                           : field == "covering.material"  ? "material"
                           : field == "covering.modulus"   ? "covering_modulus"
                           : field == "covering.poisson"   ? "covering_poisson"
                                                           : nullptr;
-    if (keyword == nullptr || !Get(kwargs, keyword)) return std::nullopt;
-    return std::string(keyword) + "=" + Repr(kwargs[keyword]);
+    if (keyword == nullptr || !inputs.Gave(keyword)) return std::nullopt;
+    return std::string(keyword) + "=" + Repr(inputs.given[keyword]);
   };
   const materials::Material* material =
       inputs.covering_material ? BuiltInCatalog().Find(*inputs.covering_material) : nullptr;
-  return optim::SceneInputWarnings(inputs.scene, limits, inputs.safety_factor, material, source_of);
+  return optim::SceneInputWarnings(inputs.scene, inputs.limits, inputs.safety_factor, material, source_of);
 }
 
-/// covopt.simulate(**scene, ...): see python/covopt/__init__.py for the documentation.
-py::dict Simulate(const py::kwargs& kwargs) {
-  const auto get = [&](const char* name) { return Get(kwargs, name); };
-  CheckKeywords(kwargs, "simulate", {"method", "rtol", "atol", "max_steps", "history"});
-  SceneInputs inputs = ReadSceneInputs(kwargs);
-  report::SimulationReport report;
-  report.scene = inputs.scene;
-  report.covering_material = inputs.covering_material;
-  report.covering_poisson_assumed = inputs.covering_poisson_assumed;
-  report.safety_factor = inputs.safety_factor;
-  const InjuryLimits& limits = inputs.limits;
-
-  // The path, as the CLI's --method auto: exact where the scene has an energy integral
-  // (conservative or damped), the time path for a braking robot or a neck (docs/model.md §10),
-  // for a history, or when a time-path method is named.
-  const bool history = get("history") && py::bool_(*get("history")).cast<bool>();
-  const bool exact_admits = report.scene.has_energy_integral();
-  bool time_path = history || !exact_admits;
-  TimeIntegrationOptions time;
+/// simulate's method=, rtol=, atol=, max_steps=, history= as Solve's options: the path
+/// auto (the exact path where the scene has an energy integral and no history is asked for),
+/// exact, or the time path with a named integrator.
+SolveOptions ReadSolveOptions(const py::dict& kwargs, const Scene& scene) {
+  const auto get = [&](const char* name) { return Option(kwargs, name); };
+  SolveOptions options;
+  options.record_history = Flag(kwargs, "history");
   if (const auto v = get("method")) {
     const std::string method = py::str(*v).cast<std::string>();
-    if (method == "cvode") {
-      time_path = true;
-      time.method = ComputationMethod::kCvodeAdams;
-    } else if (const auto named = ParseComputationMethod(method);
-               named && *named != ComputationMethod::kExact) {
-      time_path = true;
-      time.method = *named;
-    } else if (method == "exact") {
-      if (!exact_admits) {
+    const auto named = method == "cvode" ? std::optional(ComputationMethod::kCvodeAdams) : ParseComputationMethod(method);
+    if (method == "exact") {
+      if (!scene.has_energy_integral()) {
         throw std::invalid_argument("method='exact': the exact path needs an energy integral; a scene with "
                                     "braking or a neck has only the time path; drop method (the default "
                                     "integrator runs then) or give a time-path method");
       }
-      if (history) {
+      if (options.record_history) {
         throw std::invalid_argument("method='exact' computes no time history, which history=True "
                                     "needs; drop method (the default integrator runs then) or "
                                     "give a time-path method");
       }
+      options.path = PathChoice::kExact;
+    } else if (named && *named != ComputationMethod::kExact) {
+      options.path = PathChoice::kTimePath;
+      options.time_path.method = *named;
     } else {
       std::string names;
       for (const ComputationMethod m : TimeIntegrationMethods()) {
@@ -347,6 +346,7 @@ py::dict Simulate(const py::kwargs& kwargs) {
                                   method + "')");
     }
   }
+  const bool time_path = ChoosePath(scene, options) == PathChoice::kTimePath;
   for (const char* k : {"rtol", "atol", "max_steps"}) {
     if (get(k) && !time_path) {
       throw std::invalid_argument(std::string(k) +
@@ -354,78 +354,75 @@ py::dict Simulate(const py::kwargs& kwargs) {
                                   "another integrator, or history=True");
     }
   }
-  const auto check = [&time](const char* keyword) {  // the library's range, naming the keyword
-    try {
-      ValidateTimeIntegrationOptions(time);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(std::string(keyword) + ": " + e.what());
-    }
-  };
-  if (const auto v = get("rtol")) time.relative_tolerance = ReadQuantity(*v, specs::kTolerance, "rtol");
-  check("rtol");
+  TimeIntegrationOptions& time = options.time_path;
+  if (const auto v = get("rtol")) time.relative_tolerance = ReadSceneQuantity(*v, specs::kTolerance, "rtol");
   if (const auto v = get("atol")) {
-    time.absolute_tolerance = ReadQuantity(*v, specs::kTolerance, "atol");
+    time.absolute_tolerance = ReadSceneQuantity(*v, specs::kTolerance, "atol");
     if (!(time.absolute_tolerance > 0.0)) {
       throw std::invalid_argument("atol must be > 0 (got " + Repr(*v) + ")");
     }
   }
-  check("atol");
   if (const auto v = get("max_steps")) time.max_steps = ReadMaxSteps(*v);
-  check("max_steps");
-  time.record_history = history;
+  return options;
+}
 
+/// The columns of `--history` as numpy arrays (the extended ones beyond the two-mass model).
+py::dict HistoryColumns(const std::vector<HistorySample>& h, const ImpactModel& model, const Scene& scene) {
+  py::dict columns;
+  const auto column = [&](const char* name, auto field) {
+    py::array_t<double> array(static_cast<py::ssize_t>(h.size()));
+    double* data = array.mutable_data();
+    for (std::size_t i = 0; i < h.size(); ++i) data[i] = field(h[i]);
+    columns[name] = array;
+  };
+  column("time_s", [](const HistorySample& s) { return s.time_s; });
+  column("penetration_m", [](const HistorySample& s) { return s.penetration_m; });
+  column("penetration_rate_m_per_s", [](const HistorySample& s) { return s.penetration_rate_m_per_s; });
+  column("force_N", [](const HistorySample& s) { return s.force_N; });
+  column("compressive_stress_Pa", [](const HistorySample& s) { return s.compressive_stress_Pa; });
+  column("tensile_stress_Pa",
+         [&model](const HistorySample& s) { return model.TensileFromCompressive(s.compressive_stress_Pa); });
+  column("energy_density_J_per_m2", [](const HistorySample& s) { return s.energy_density_J_per_m2; });
+  if (!scene.is_conservative_two_mass()) {  // the CLI's extra --history columns
+    column("robot_speed_m_per_s", [](const HistorySample& s) { return s.robot_speed_m_per_s; });
+    column("head_speed_m_per_s", [](const HistorySample& s) { return s.head_speed_m_per_s; });
+    column("neck_force_N", [](const HistorySample& s) { return s.neck_force_N; });
+    column("dissipated_work_J", [](const HistorySample& s) { return s.dissipated_work_J; });
+  }
+  return columns;
+}
+
+/// covopt.simulate(scene, method=, rtol=, atol=, max_steps=, history=): see covopt/__init__.py.
+py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
+  const SolveOptions options = ReadSolveOptions(kwargs, inputs.scene);
+  report::SimulationReport report;
+  report.scene = inputs.scene;
+  report.covering_material = inputs.covering_material;
+  report.covering_poisson_assumed = inputs.covering_poisson_assumed;
+  report.safety_factor = inputs.safety_factor;
+  if (ChoosePath(inputs.scene, options) == PathChoice::kTimePath) report.time_options = options.time_path;
   std::optional<ImpactModel> model;
   try {
     model.emplace(ImpactModel::FromScene(report.scene));
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(AttributeError(e.what(), kwargs));
+    throw std::invalid_argument(inputs.Attributed(e.what()));
   }
-  {
+  try {
     py::gil_scoped_release release;
-    SolveOptions solve;  // smooth histories as the CLI's: ~400 samples over the contact
-    solve.path = time_path ? PathChoice::kTimePath : PathChoice::kExact;
-    solve.time_path = time;
-    solve.record_history = history;
-    if (time_path) report.time_options = time;
-    report.result = Solve(*model, solve);  // throws invalid_argument on bad options
+    report.result = Solve(*model, options);
+  } catch (const std::invalid_argument& e) {  // an option out of range, named as the keyword
+    std::string message = e.what();
+    for (const auto& [field, keyword] : {std::pair{"time_path.relative_tolerance", "rtol"},
+                                         {"time_path.absolute_tolerance", "atol"}, {"time_path.max_steps", "max_steps"}}) {
+      if (message.rfind(field, 0) == 0) message = keyword + message.substr(std::string_view(field).size());
+    }
+    throw std::invalid_argument(message);
   }
   if (!report.result.ok()) RaiseImpactFailure(report.result);
-  JudgeReport(report, limits, kwargs);
-  report.input_warnings = InputWarnings(inputs, limits, kwargs);
-
-  py::dict result = JsonLoads(report::SimulationJson(report, -1));
-  if (history) {
-    const std::vector<HistorySample>& h = report.result.history;
-    const auto column = [&](auto field) {
-      py::array_t<double> array(static_cast<py::ssize_t>(h.size()));
-      double* data = array.mutable_data();
-      for (std::size_t i = 0; i < h.size(); ++i) data[i] = field(h[i]);
-      return array;
-    };
-    py::dict columns;
-    columns["time_s"] = column([](const HistorySample& s) { return s.time_s; });
-    columns["penetration_m"] = column([](const HistorySample& s) { return s.penetration_m; });
-    columns["penetration_rate_m_per_s"] =
-        column([](const HistorySample& s) { return s.penetration_rate_m_per_s; });
-    columns["force_N"] = column([](const HistorySample& s) { return s.force_N; });
-    columns["compressive_stress_Pa"] =
-        column([](const HistorySample& s) { return s.compressive_stress_Pa; });
-    const ImpactModel& m = *model;
-    columns["tensile_stress_Pa"] = column(
-        [&m](const HistorySample& s) { return m.TensileFromCompressive(s.compressive_stress_Pa); });
-    columns["energy_density_J_per_m2"] =
-        column([](const HistorySample& s) { return s.energy_density_J_per_m2; });
-    if (!report.scene.is_conservative_two_mass()) {  // the CLI's extra --history columns
-      columns["robot_speed_m_per_s"] =
-          column([](const HistorySample& s) { return s.robot_speed_m_per_s; });
-      columns["head_speed_m_per_s"] =
-          column([](const HistorySample& s) { return s.head_speed_m_per_s; });
-      columns["neck_force_N"] = column([](const HistorySample& s) { return s.neck_force_N; });
-      columns["dissipated_work_J"] =
-          column([](const HistorySample& s) { return s.dissipated_work_J; });
-    }
-    result["history"] = columns;
-  }
+  inputs.Judge(report);
+  for (std::string& warning : InputWarnings(inputs)) report.result.warnings.push_back(std::move(warning));
+  py::dict result = JsonToPython(report::SimulationJson(report, -1));
+  if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model, report.scene);
   return result;
 }
 
@@ -462,10 +459,8 @@ SweepAxis ReadAxis(const py::handle& axis, const char* keyword) {
   return result;
 }
 
-/// covopt.sweep(x, y=None, **scene, threads=None): see python/covopt/__init__.py.
-py::dict SweepGrid(const py::object& x, const py::object& y, const py::kwargs& kwargs) {
-  CheckKeywords(kwargs, "sweep", {"threads"});
-  const SceneInputs inputs = ReadSceneInputs(kwargs);
+/// covopt.sweep(x, y, scene, threads=None): see python/covopt/__init__.py.
+py::dict SweepGrid(const py::object& x, const py::object& y, const SceneInputs& inputs, const py::object& threads_) {
   SweepSpec spec;
   spec.scene = inputs.scene;
   spec.limits = inputs.limits;
@@ -473,12 +468,11 @@ py::dict SweepGrid(const py::object& x, const py::object& y, const py::kwargs& k
   spec.x = ReadAxis(x, "x");
   if (!y.is_none()) spec.y = ReadAxis(y, "y");
   SweepOptions options;
-  if (const auto threads = Get(kwargs, "threads")) {
-    if (!py::isinstance<py::int_>(*threads) || threads->cast<long long>() < 0) {
-      throw std::invalid_argument("threads: expected an integer >= 0, 0 = all cores (got " +
-                                  Repr(*threads) + ")");
+  if (!threads_.is_none()) {
+    if (!py::isinstance<py::int_>(threads_) || threads_.cast<long long>() < 0) {
+      throw std::invalid_argument("threads: expected an integer >= 0, 0 = all cores (got " + Repr(threads_) + ")");
     }
-    options.threads = threads->cast<unsigned>();
+    options.threads = threads_.cast<unsigned>();
   }
 
   // The arrays, a[i, j] at x[i], y[j]; invalid points are NaN (numbers) or False (flags).
@@ -581,7 +575,7 @@ std::vector<std::string> ReadNames(const py::handle& value, const char* keyword)
 
 /// oracle=, method=, rtol=, max_steps= as optimize() and speed_limit() take them (scene_keywords.hpp).
 optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& scene) {
-  const auto get = [&](const char* name) { return Get(kwargs, name); };
+  const auto get = [&](const char* name) { return Option(kwargs, name); };
   optim::OracleOptions oracle;
   if (const auto v = get("oracle")) {
     const std::string name = py::str(*v).cast<std::string>();
@@ -616,7 +610,7 @@ optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& s
     if (oracle.choice == optim::OracleChoice::kExact) {
       throw std::invalid_argument("rtol applies to the time path; oracle='exact' runs none");
     }
-    oracle.time_path.relative_tolerance = ReadQuantity(*v, specs::kTolerance, "rtol");
+    oracle.time_path.relative_tolerance = ReadSceneQuantity(*v, specs::kTolerance, "rtol");
     if (!(oracle.time_path.relative_tolerance >= 1e-14 && oracle.time_path.relative_tolerance <= 1e-2)) {
       throw std::invalid_argument("rtol must be in [1e-14, 1e-2] (got " + Repr(*v) + ")");
     }
@@ -636,28 +630,50 @@ optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& s
 
 namespace {
 
+/// optimize's candidates: the built-in catalog and the catalog files (or only those), filtered
+/// by materials= and families=.
+std::vector<optim::CandidateMaterial> Candidates(const py::kwargs& kwargs) {
+  const auto get = [&](const char* name) { return Option(kwargs, name); };
+  const bool no_builtin = Flag(kwargs, "no_builtin");
+  const std::vector<std::string> files = get("catalog") ? ReadNames(*get("catalog"), "catalog") : std::vector<std::string>{};
+  if (no_builtin && files.empty()) throw std::invalid_argument("no_builtin leaves no catalog; add catalog=FILE");
+  materials::Catalog catalog = no_builtin ? materials::Catalog() : BuiltInCatalog();
+  try {
+    for (const std::string& file : files) catalog.Add(materials::Catalog::FromTomlFile(file));
+  } catch (const materials::CatalogError& e) {
+    throw std::invalid_argument(std::string("catalog: ") + e.what());
+  }
+  const std::vector<std::string> names = get("materials") ? ReadNames(*get("materials"), "materials") : std::vector<std::string>{};
+  const std::vector<std::string> families = get("families") ? ReadNames(*get("families"), "families") : std::vector<std::string>{};
+  try {
+    return optim::SelectCandidates(catalog, names, families);
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
+  }
+}
+
 /// covopt.optimize(**scene, ...): see python/covopt/__init__.py.
-py::dict Optimize(const py::kwargs& kwargs) {
-  const auto get = [&](const char* name) { return Get(kwargs, name); };
-  CheckKeywords(kwargs, "optimize",
-                {"materials", "families", "catalog", "no_builtin", "thickness", "max_thickness",
-                 "min_modulus", "max_modulus", "thickness_step", "allow_full_compression",
-                 "allow_crushing", "allow_unknown_strength", "global_algorithm", "seed", "threads", "oracle", "method", "rtol", "max_steps"});
+py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
+  const auto get = [&](const char* name) { return Option(kwargs, name); };
   for (const char* k : {"covering_modulus", "covering_thickness", "material"}) {
-    if (get(k)) {
+    if (inputs.Gave(k)) {
       throw std::invalid_argument(std::string(k) +
                                   ": the covering is what optimize designs; give thickness= for the "
                                   "least injury at a thickness, materials= to choose candidates");
     }
   }
-  const SceneInputs inputs = ReadSceneInputs(kwargs);
+  if (inputs.Gave("covering_poisson")) {
+    throw std::invalid_argument("covering_poisson: the covering is what optimize designs; give "
+                                "optimize(covering_poisson=...) for the continuous design's");
+  }
   optim::DesignRequest request;
   request.scene = inputs.scene;
   optim::DesignOptions& d = request.options;
   d.limits = inputs.limits;
   d.safety_factor = inputs.safety_factor;
   const auto read = [&](const char* keyword, const QuantitySpec& spec, double& into) {
-    if (const auto v = get(keyword)) into = ReadQuantity(*v, spec, keyword);
+    if (const auto v = get(keyword)) into = ReadSceneQuantity(*v, spec, keyword);
   };
   read("max_thickness", specs::kCoveringThickness, d.space.max_thickness_m);
   read("min_modulus", specs::kCoveringModulus, d.space.min_modulus_Pa);
@@ -679,14 +695,14 @@ py::dict Optimize(const py::kwargs& kwargs) {
   require(d.thickness_step_m >= 0.0 && d.thickness_step_m <= 0.01,
           "thickness_step must be in [0, 10 mm] (got " + shown("thickness_step") + ")");
   if (const auto v = get("thickness")) {
-    request.thickness_m = ReadQuantity(*v, specs::kCoveringThickness, "thickness");
+    request.thickness_m = ReadSceneQuantity(*v, specs::kCoveringThickness, "thickness");
     require(*request.thickness_m > 0.0 && *request.thickness_m <= 1.0,
             "thickness must be in (0, 1 m] (got " + Repr(*v) + "); for no covering use "
             "simulate(covering_thickness=0)");
   }
-  if (const auto v = get("allow_full_compression")) d.allow_full_compression = py::bool_(*v).cast<bool>();
-  if (const auto v = get("allow_crushing")) d.allow_crushing = py::bool_(*v).cast<bool>();
-  if (const auto v = get("allow_unknown_strength")) d.allow_unknown_strength = py::bool_(*v).cast<bool>();
+  d.allow_full_compression = Flag(kwargs, "allow_full_compression");
+  d.allow_crushing = Flag(kwargs, "allow_crushing");
+  d.allow_unknown_strength = Flag(kwargs, "allow_unknown_strength");
   if (const auto v = get("global_algorithm")) {
     const std::string g = py::str(*v).cast<std::string>();
     if (g == "direct-l") d.global_algorithm = optim::NloptAlgorithm::kDirectL;
@@ -711,24 +727,7 @@ py::dict Optimize(const py::kwargs& kwargs) {
   }
   d.oracle = ReadOracleKeywords(kwargs, request.scene);
 
-  // The candidates: the built-in catalog and the catalog files (or only those), filtered.
-  const bool no_builtin = get("no_builtin") && py::bool_(*get("no_builtin")).cast<bool>();
-  const std::vector<std::string> files = get("catalog") ? ReadNames(*get("catalog"), "catalog") : std::vector<std::string>{};
-  if (no_builtin && files.empty()) throw std::invalid_argument("no_builtin leaves no catalog; add catalog=FILE");
-  materials::Catalog catalog = no_builtin ? materials::Catalog() : BuiltInCatalog();
-  try {
-    for (const std::string& file : files) catalog.Add(materials::Catalog::FromTomlFile(file));
-  } catch (const materials::CatalogError& e) {
-    throw std::invalid_argument(std::string("catalog: ") + e.what());
-  }
-  const std::vector<std::string> names = get("materials") ? ReadNames(*get("materials"), "materials") : std::vector<std::string>{};
-  const std::vector<std::string> families = get("families") ? ReadNames(*get("families"), "families") : std::vector<std::string>{};
-  try {
-    request.materials = optim::SelectCandidates(catalog, names, families);
-  } catch (const std::invalid_argument& e) {
-    const std::string what = e.what();
-    throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
-  }
+  request.materials = Candidates(kwargs);
 
   optim::DesignResult result;
   {
@@ -736,63 +735,22 @@ py::dict Optimize(const py::kwargs& kwargs) {
     result = optim::Design(request);  // throws invalid_argument naming the field
   }
   if (!result.ok()) RaiseComputationError(result.message, std::string(optim::ToString(result.status)));
-  return JsonLoads(report::DesignJson(request, result, {}, -1));
+  return JsonToPython(report::DesignJson(request, result, {}, -1));
 }
 
 py::list Materials() {
   std::vector<const materials::Material*> rows;
   for (const materials::Material& m : BuiltInCatalog().materials()) rows.push_back(&m);
-  return JsonLoads(report::MaterialsJson(rows, -1));
+  return JsonToPython(report::MaterialsJson(rows, -1));
 }
 
 py::dict Material(const std::string& name) {
-  return JsonLoads(report::MaterialJson(FindMaterial(name), -1));
+  return JsonToPython(report::MaterialJson(FindMaterial(name), -1));
 }
 
 }  // namespace
 
-// For the other binding files (scene_keywords.hpp).
-SceneKeywordInputs ReadSceneKeywords(const py::kwargs& kwargs, const char* function,
-                                     std::initializer_list<const char*> own) {
-  CheckKeywords(kwargs, function, own);
-  SceneInputs in = ReadSceneInputs(kwargs);
-  return {in.scene, in.covering_material, in.covering_poisson_assumed, in.limits, in.safety_factor};
-}
-double ReadSceneQuantity(const py::handle& value, const QuantitySpec& spec, std::string_view keyword) {
-  return ReadQuantity(value, spec, keyword);
-}
-std::string AttributeSceneError(const std::string& message, const py::kwargs& given) {
-  return AttributeError(message, given);
-}
-py::object JsonToPython(const std::string& text) { return JsonLoads(text); }
-
-namespace {
-
-optim::CoveringCrushCheck CrushCheckOn(const Scene& scene, const std::optional<std::string>& material_name,
-                                       const py::kwargs& kwargs) {
-  bool given = false;
-  for (const char* keyword : {"covering_thickness", "covering_modulus", "covering_poisson", "material"}) {
-    given = given || (kwargs.contains(keyword) && !py::object(kwargs[keyword]).is_none());
-  }
-  const materials::Material* material = material_name ? BuiltInCatalog().Find(*material_name) : nullptr;
-  return optim::CrushCheckFor(scene, material, given);
-}
-
-}  // namespace
-
-optim::CoveringCrushCheck CrushCheckOf(const SceneKeywordInputs& inputs, const py::kwargs& kwargs) {
-  return CrushCheckOn(inputs.scene, inputs.covering_material, kwargs);
-}
-
-void JudgeReport(report::SimulationReport& report, const InjuryLimits& limits, const py::kwargs& kwargs) {
-  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor);
-  const optim::CoveringCrushCheck crush = CrushCheckOn(report.scene, report.covering_material, kwargs);
-  if (crush.compressive_strength_Pa > 0.0) {
-    report.crush = optim::CrushVerdict(report.result.peaks, crush.compressive_strength_Pa, report.safety_factor);
-  }
-  report.scope = optim::HeadVerdictScope(
-      optim::DesignRule{report.safety_factor, optim::DesignCriterion::kPaper, false, !crush.notes.empty()});
-}
+py::object JsonToPython(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
 void RaiseComputationError(const std::string& message, const std::string& status) {
   py::object error_type = py::module_::import("covopt._errors").attr("ComputationError");
@@ -800,6 +758,60 @@ void RaiseComputationError(const std::string& message, const std::string& status
   PyErr_SetObject(error_type.ptr(), error.ptr());
   throw py::error_already_set();
 }
+
+namespace {
+
+/// covopt.Scene: read-only attributes from the keyword table, replace(), to_dict(), repr.
+void BindScene(py::module_& m) {
+  py::class_<SceneInputs> scene(m, "Scene", R"(An impact scene, its injury limits and safety factor (SI).
+
+Scene(**keywords): the keywords are the CLI's scene flags with underscores (--robot-mass is
+robot_mass); unset values are the paper's scene. A value is an SI number or a string with a
+unit ("15mm", "27.6MPa"); math.inf or "fixed" is an immovable body (robot_mass, head_mass,
+torso_mass), math.inf or "flat" a flat robot (robot_radius). A bare number must be plausible
+for its quantity: robot_radius=40 (40 m) is refused; write "40mm", or "40m" if meant.
+Keywords: robot_mass [kg], speed [m/s], robot_radius [m], robot_modulus [Pa], robot_poisson,
+covering_modulus [Pa], covering_poisson, covering_thickness [m] (0 = no covering), head_mass
+[kg], head_radius [m], scalp_modulus [Pa], scalp_poisson, scalp_thickness [m], skull_modulus
+[Pa], skull_poisson; beyond the conservative two-mass model (docs/model.md section 10; 0 = off):
+damping [s/m] (Hunt-Crossley), reaction_delay [s] and braking [m/s2] (the robot brakes that long
+after first contact), torso_mass [kg], neck_stiffness [N/m], neck_damping [N s/m] (the head on a
+neck). material: a built-in catalog name (sets covering_modulus and covering_poisson);
+thresholds: "cumulative" (default) or "literal"; laceration_limit [Pa] (1e6), contusion_limit
+[J/m2] (25200); safety_factor in [1, 100]: a verdict is safe when safety_factor x ratio <= 1.
+Bad values raise ValueError naming the keyword; an unknown keyword TypeError.
+ranges: {keyword: (low, high) or "LO..HI"}, a population for worst_case, injury_probability and
+robust_optimize. Attributes: every keyword, in SI. replace(**keywords): a changed copy (None unsets).
+to_dict(): the scene object of `covopt simulate --json`.)");
+  scene.def(py::init(&ReadScene));
+  for (const SceneKeyword& k : kSceneKeywords) {
+    const std::string doc = std::string(k.field) + " [" + std::string(SiUnit(k.spec->kind)) + "]";
+    scene.def_property_readonly(
+        k.keyword, [&k](const SceneInputs& s) { Scene copy = s.scene; return k.value(copy); }, doc.c_str());
+  }
+  scene.def_property_readonly("material", [](const SceneInputs& s) { return s.covering_material; })
+      .def_property_readonly("thresholds", [](const SceneInputs& s) {
+        return s.scene.model.thresholds == ThresholdReading::kLiteral ? "literal" : "cumulative";
+      })
+      .def_property_readonly("laceration_limit", [](const SceneInputs& s) { return s.limits.laceration_tensile_stress_Pa; })
+      .def_property_readonly("contusion_limit", [](const SceneInputs& s) { return s.limits.contusion_energy_density_J_per_m2; })
+      .def_property_readonly("safety_factor", [](const SceneInputs& s) { return s.safety_factor; })
+      .def_property_readonly("ranges", [](const SceneInputs& s) { return Option(s.given, "ranges").value_or(py::dict()); })
+      .def("replace", [](const SceneInputs& s, const py::kwargs& changes) { return s.With(changes); })
+      .def("to_dict", [](const SceneInputs& s) { return JsonToPython(report::SceneJson(s.scene, -1)); })
+      .def("__repr__", [](const SceneInputs& s) {
+        std::string text;
+        for (const auto& item : s.given) {
+          if (!text.empty()) text += ", ";  // appended: GCC 12's LTO warns on "literal" + std::string
+          text += py::str(item.first).cast<std::string>();
+          text += "=";
+          text += Repr(item.second);
+        }
+        return "Scene(" + text + ")";
+      });
+}
+
+}  // namespace
 
 void BindSpeedLimit(py::module_& m);  // speed_limit_bindings.cpp
 void BindRobot(py::module_& m);       // robot_bindings.cpp
@@ -810,9 +822,10 @@ void BindSceneFile(py::module_& m);   // scene_file_bindings.cpp
 
 PYBIND11_MODULE(_covopt, m) {
   m.doc() = "covopt's C++ library (use the covopt package, which documents it)";
-  // std::invalid_argument already becomes ValueError; say so for the reader.
+  // std::invalid_argument becomes ValueError.
+  covopt::python::BindScene(m);
   m.def("simulate", &covopt::python::Simulate);
-  m.def("sweep", &covopt::python::SweepGrid, py::arg("x"), py::arg("y") = py::none());
+  m.def("sweep", &covopt::python::SweepGrid, py::arg("x"), py::arg("y"), py::arg("scene"), py::arg("threads"));
   m.def("optimize", &covopt::python::Optimize);
   m.def("materials", &covopt::python::Materials);
   m.def("material", &covopt::python::Material, py::arg("name"));

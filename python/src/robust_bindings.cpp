@@ -29,18 +29,6 @@ namespace py = pybind11;
 namespace covopt::python {
 namespace {
 
-/// The keywords of these functions besides the scene's.
-constexpr std::initializer_list<const char*> kOwn = {"ranges", "samples", "seed", "threads", "distributions",
-                                                     "max_injury_probability", "allow_full_compression",
-                                                     "allow_crushing", "allow_unknown_strength"};
-
-std::optional<py::object> Get(const py::kwargs& kwargs, const char* name) {
-  if (!kwargs.contains(name)) return std::nullopt;
-  py::object value = kwargs[name];
-  if (value.is_none()) return std::nullopt;
-  return value;
-}
-
 /// A whole number in [low, high], compared as Python ints (exactly, up to 2^64 - 1: a
 /// seed may be any unsigned 64-bit value, 0 .. 18446744073709551615, as --seed's).
 std::uint64_t Whole(const py::object& v, const char* keyword, std::uint64_t low, std::uint64_t high) {
@@ -53,6 +41,19 @@ std::uint64_t Whole(const py::object& v, const char* keyword, std::uint64_t low,
                                 py::repr(v).cast<std::string>() + ")");
   }
   return v.cast<std::uint64_t>();
+}
+
+/// samples=, seed= and threads= of the sampling; none without samples.
+std::optional<optim::InjuryProbabilityOptions> ReadSampling(const py::kwargs& kwargs) {
+  const auto samples = Option(kwargs, "samples");
+  if (!samples) return std::nullopt;
+  optim::InjuryProbabilityOptions sampling;
+  sampling.samples = Whole(*samples, "samples", 1, 10000000000);
+  const auto seed = Option(kwargs, "seed");
+  sampling.seed = seed ? Whole(*seed, "seed", 0, std::numeric_limits<std::uint64_t>::max()) : 1;
+  const auto threads = Option(kwargs, "threads");
+  sampling.threads = threads ? static_cast<unsigned>(Whole(*threads, "threads", 0, 4096)) : 0;
+  return sampling;
 }
 
 /// The scene field of a keyword ("head_mass" or "head-mass").
@@ -69,7 +70,7 @@ const SceneField& FieldOf(const std::string& key) {
 /// ranges={"head_mass": ("3.7kg", "5.8kg"), ...} (or "3.7kg..5.8kg") and distributions=
 /// {"head_mass": ("normal", "4.5kg", "0.5kg")} into the library's inputs.
 std::vector<optim::UncertainInput> ReadRanges(const py::kwargs& kwargs) {
-  const auto ranges = Get(kwargs, "ranges");
+  const auto ranges = Option(kwargs, "ranges");
   if (!ranges || !py::isinstance<py::dict>(*ranges) || py::len(*ranges) == 0) {
     throw std::invalid_argument("ranges: expected a dict of scene inputs to (low, high), e.g. "
                                 "{'head_mass': ('3.7kg', '5.8kg')}");
@@ -95,7 +96,7 @@ std::vector<optim::UncertainInput> ReadRanges(const py::kwargs& kwargs) {
     }
     inputs.push_back(input);
   }
-  if (const auto d = Get(kwargs, "distributions")) {
+  if (const auto d = Option(kwargs, "distributions")) {
     if (!py::isinstance<py::dict>(*d)) {
       throw std::invalid_argument("distributions: expected a dict, e.g. {'head_mass': ('normal', '4.5kg', '0.5kg')}");
     }
@@ -120,13 +121,12 @@ std::vector<optim::UncertainInput> ReadRanges(const py::kwargs& kwargs) {
 
 /// The nominal scene (the middle of every range) and the box.
 struct Box {
-  SceneKeywordInputs scene;
+  SceneInputs scene;
   std::optional<optim::UncertaintyBox> box;
 };
 
-Box ReadBox(const py::kwargs& kwargs, const char* function) {
-  Box b;
-  b.scene = ReadSceneKeywords(kwargs, function, kOwn);
+Box ReadBox(const SceneInputs& scene, const py::kwargs& kwargs) {
+  Box b{scene, std::nullopt};
   const std::vector<optim::UncertainInput> inputs = ReadRanges(kwargs);
   for (const optim::UncertainInput& input : inputs) {
     FindSceneField(input.field)->field(b.scene.scene) = 0.5 * (input.low + input.high);
@@ -140,19 +140,15 @@ Box ReadBox(const py::kwargs& kwargs, const char* function) {
 }
 
 /// The dict `covopt simulate --json` prints with ranges (and --samples when asked).
-py::object UncertainSimulation(const py::kwargs& kwargs, const char* function, bool sample) {
-  Box b = ReadBox(kwargs, function);
+py::object UncertainSimulation(const SceneInputs& scene, const py::kwargs& kwargs, bool sample) {
+  Box b = ReadBox(scene, kwargs);
   optim::WorstCaseOptions worst_options;
   worst_options.limits = b.scene.limits;
   worst_options.safety_factor = b.scene.safety_factor;
   std::optional<optim::InjuryProbabilityOptions> sampling;
   if (sample) {
-    sampling.emplace();
-    const auto samples = Get(kwargs, "samples");
-    if (!samples) throw std::invalid_argument("injury_probability() needs samples=N");
-    sampling->samples = Whole(*samples, "samples", 1, 10000000000);
-    sampling->seed = Get(kwargs, "seed") ? Whole(*Get(kwargs, "seed"), "seed", 0, std::numeric_limits<std::uint64_t>::max()) : 1;
-    sampling->threads = Get(kwargs, "threads") ? static_cast<unsigned>(Whole(*Get(kwargs, "threads"), "threads", 0, 4096)) : 0;
+    sampling = ReadSampling(kwargs);
+    if (!sampling) throw std::invalid_argument("injury_probability() needs samples=N");
     sampling->limits = b.scene.limits;
     sampling->safety_factor = b.scene.safety_factor;
   }
@@ -169,20 +165,20 @@ py::object UncertainSimulation(const py::kwargs& kwargs, const char* function, b
   impact.covering_material = b.scene.covering_material;
   impact.covering_poisson_assumed = b.scene.covering_poisson_assumed;
   impact.safety_factor = b.scene.safety_factor;
-  JudgeReport(impact, b.scene.limits, kwargs);
+  b.scene.Judge(impact);
   return JsonToPython(report::UncertainSimulationJson(impact, &*b.box, &worst, probability ? &*probability : nullptr,
                                                       nullptr, -1));
 }
 
-py::object WorstCase(const py::kwargs& kwargs) {
-  if (Get(kwargs, "samples")) throw std::invalid_argument("worst_case() takes no samples; see injury_probability()");
-  return UncertainSimulation(kwargs, "worst_case", false);
+py::object WorstCase(const SceneInputs& scene, const py::kwargs& kwargs) {
+  return UncertainSimulation(scene, kwargs, false);
 }
 
-py::object InjuryProbability(const py::kwargs& kwargs) { return UncertainSimulation(kwargs, "injury_probability", true); }
+py::object InjuryProbability(const SceneInputs& scene, const py::kwargs& kwargs) {
+  return UncertainSimulation(scene, kwargs, true);
+}
 
-py::object Sensitivities(const py::kwargs& kwargs) {
-  const SceneKeywordInputs inputs = ReadSceneKeywords(kwargs, "sensitivities", {});
+py::object Sensitivities(const SceneInputs& inputs) {
   optim::ElasticityOptions options;
   options.limits = inputs.limits;
   optim::ElasticityTable table;
@@ -193,26 +189,20 @@ py::object Sensitivities(const py::kwargs& kwargs) {
   return JsonToPython(report::ElasticitiesJson(table, -1));
 }
 
-py::object RobustOptimize(const py::kwargs& kwargs) {
+py::object RobustOptimize(const SceneInputs& scene, const py::kwargs& kwargs) {
   for (const char* k : {"covering_modulus", "covering_thickness", "covering_poisson", "material"}) {
-    if (Get(kwargs, k)) throw std::invalid_argument(std::string(k) + ": the covering is what robust_optimize designs");
+    if (scene.Gave(k)) throw std::invalid_argument(std::string(k) + ": the covering is what robust_optimize designs");
   }
-  Box b = ReadBox(kwargs, "robust_optimize");
+  Box b = ReadBox(scene, kwargs);
   optim::DesignOptions design;
   design.limits = b.scene.limits;
   design.safety_factor = b.scene.safety_factor;
-  if (const auto v = Get(kwargs, "allow_full_compression")) design.allow_full_compression = py::bool_(*v).cast<bool>();
-  if (const auto v = Get(kwargs, "allow_crushing")) design.allow_crushing = py::bool_(*v).cast<bool>();
-  if (const auto v = Get(kwargs, "allow_unknown_strength")) design.allow_unknown_strength = py::bool_(*v).cast<bool>();
+  design.allow_full_compression = Flag(kwargs, "allow_full_compression");
+  design.allow_crushing = Flag(kwargs, "allow_crushing");
+  design.allow_unknown_strength = Flag(kwargs, "allow_unknown_strength");
   const std::vector<optim::CandidateMaterial> materials = optim::SelectCandidates(materials::Catalog::BuiltIn());
-  std::optional<optim::InjuryProbabilityOptions> sampling;
-  if (const auto samples = Get(kwargs, "samples")) {
-    sampling.emplace();
-    sampling->samples = Whole(*samples, "samples", 1, 10000000000);
-    sampling->seed = Get(kwargs, "seed") ? Whole(*Get(kwargs, "seed"), "seed", 0, std::numeric_limits<std::uint64_t>::max()) : 1;
-    sampling->threads = Get(kwargs, "threads") ? static_cast<unsigned>(Whole(*Get(kwargs, "threads"), "threads", 0, 4096)) : 0;
-  }
-  if (const auto p = Get(kwargs, "max_injury_probability")) {
+  std::optional<optim::InjuryProbabilityOptions> sampling = ReadSampling(kwargs);
+  if (const auto p = Option(kwargs, "max_injury_probability")) {
     if (!sampling) throw std::invalid_argument("max_injury_probability needs samples=N (the probability is estimated)");
     optim::ProbabilityDesignOptions options;
     options.design = design;

@@ -1,13 +1,12 @@
 /// @file scene_file_bindings.cpp
 /// covopt.load_scene(path): a scene file read by the library's reader
 /// (covopt/scene_file/scene_file.hpp), the one `covopt simulate --scene` uses, with the same
-/// errors (ValueError with the library's "file:line:column: ..." message). For now it returns
-/// a dict of the keywords the scene-taking calls accept (simulate, optimize, sweep,
-/// speed_limit, ...), holding only what the file sets: each scene field by its keyword
-/// (`robot_mass`, SI float, math.inf for "fixed"/"flat"), `thresholds` ("cumulative" or
-/// "literal"), `material` (covering.material), `laceration_limit`, `contusion_limit`,
-/// `safety_factor`, and `ranges` ({"head_mass": (low, high)} in SI, as the robust calls take
-/// them) when the file writes ranges.
+/// errors (ValueError with the library's "file:line:column: ..." message). It returns the
+/// keywords of covopt.Scene (covopt/__init__.py makes the Scene), holding only what the file
+/// sets: each scene field by its keyword (`robot_mass`, SI float, math.inf for "fixed"/"flat"),
+/// `thresholds` ("cumulative" or "literal"), `material` (covering.material),
+/// `laceration_limit`, `contusion_limit`, `safety_factor`, and `ranges` ({"head_mass": (low,
+/// high)} in SI, as the robust calls take them) when the file writes ranges.
 
 #include <algorithm>
 #include <cmath>

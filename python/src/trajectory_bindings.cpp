@@ -1,7 +1,7 @@
 /// @file trajectory_bindings.cpp
 /// covopt.check_trajectory: a robot motion judged against a covering, as `covopt robot
 /// --trajectory --json`. The robot and trajectory are read as covopt.contact_motion reads them
-/// (robot_inputs.hpp), the scene keywords as covopt.speed_limit reads them (scene_keywords.hpp);
+/// (robot_inputs.hpp), the scene as a covopt.Scene (scene_keywords.hpp);
 /// robot::ContactMotion -> optim::MotionSamples -> optim::CheckTrajectory; the dict is
 /// report::TrajectoryCheckJson. See python/covopt/__init__.py for the documentation.
 
@@ -26,26 +26,20 @@ namespace {
 py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const py::object& trajectory,
                            const std::optional<std::string>& base, const py::object& point,
                            const std::optional<std::string>& urdf_text, bool ignore_joint_limits,
-                           const py::kwargs& kwargs) {
+                           const SceneInputs& inputs, const py::kwargs& kwargs) {
   for (const char* keyword : {"robot_mass", "speed"}) {
-    if (kwargs.contains(keyword) && !py::object(kwargs[keyword]).is_none()) {
+    if (inputs.Gave(keyword)) {
       throw std::invalid_argument(std::string("check_trajectory() takes the robot's ") +
                                   (std::string(keyword) == "speed" ? "contact-point speed" : "reflected mass") +
-                                  " from each sample of the trajectory; drop " + keyword);
+                                  " from each sample of the trajectory; drop " + keyword + " from the scene");
     }
   }
-  const SceneKeywordInputs inputs =
-      ReadSceneKeywords(kwargs, "check_trajectory", {"allow_full_compression", "allow_crushing"});
-  const optim::CoveringCrushCheck crush = CrushCheckOf(inputs, kwargs);
+  const optim::CoveringCrushCheck crush = inputs.CrushCheck();
   optim::TrajectoryCheckOptions options;
   options.limit.limits = inputs.limits;
   options.limit.safety_factor = inputs.safety_factor;
-  if (kwargs.contains("allow_full_compression") && !py::object(kwargs["allow_full_compression"]).is_none()) {
-    options.limit.allow_full_compression = py::bool_(kwargs["allow_full_compression"]).cast<bool>();
-  }
-  if (kwargs.contains("allow_crushing") && !py::object(kwargs["allow_crushing"]).is_none()) {
-    options.limit.allow_crushing = py::bool_(kwargs["allow_crushing"]).cast<bool>();
-  }
+  options.limit.allow_full_compression = Flag(kwargs, "allow_full_compression");
+  options.limit.allow_crushing = Flag(kwargs, "allow_crushing");
   options.limit.covering_compressive_strength_Pa = crush.compressive_strength_Pa;
 
   const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base);
@@ -61,8 +55,8 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
     try {
       check = optim::CheckTrajectory(inputs.scene, optim::MotionSamples(motion.samples), options);
     } catch (const std::invalid_argument& e) {
-      py::gil_scoped_acquire acquire;  // AttributeSceneError reads the keywords
-      throw std::invalid_argument(AttributeSceneError(e.what(), kwargs));
+      py::gil_scoped_acquire acquire;  // Attributed reads the keywords
+      throw std::invalid_argument(inputs.Attributed(e.what()));
     }
   }
   if (check.status == optim::TrajectoryCheckStatus::kEvaluationFailed) {
@@ -76,8 +70,7 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
 
 void BindTrajectory(py::module_& m) {
   m.def("check_trajectory", &CheckTrajectory, py::arg("urdf"), py::arg("tip"), py::arg("trajectory"),
-        py::arg("base") = py::none(), py::arg("point") = py::make_tuple(0.0, 0.0, 0.0),
-        py::arg("urdf_text") = py::none(), py::arg("ignore_joint_limits") = false);
+        py::arg("base"), py::arg("point"), py::arg("urdf_text"), py::arg("ignore_joint_limits"), py::arg("scene"));
 }
 
 }  // namespace covopt::python

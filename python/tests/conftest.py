@@ -1,18 +1,34 @@
-"""Shared fixtures of the covopt Python tests: the built CLI (COVOPT_CLI, set by CTest)."""
+"""Shared fixtures of the covopt Python tests: the covopt binary, to compare with the CLI."""
 
 import json
 import os
+import pathlib
+import shutil
 import subprocess
 
 import pytest
 
+import covopt
+
+
+def covopt_binary():
+    """The covopt binary: $COVOPT_CLI (CTest sets it), else the build tree's beside the module
+    (build/python/covopt -> build/cli/covopt), else covopt on PATH; None if none is found."""
+    if os.environ.get("COVOPT_CLI"):
+        return os.environ["COVOPT_CLI"]
+    beside = pathlib.Path(covopt.__file__).resolve().parents[2] / "cli" / "covopt"
+    if beside.is_file() and os.access(beside, os.X_OK):
+        return str(beside)
+    return shutil.which("covopt")
+
 
 @pytest.fixture(scope="session")
 def cli():
-    """run(*args) -> (exit code, stdout, stderr) of the built covopt binary."""
-    path = os.environ.get("COVOPT_CLI")
+    """run(*args) -> (exit code, stdout, stderr) of the covopt binary; fails without one."""
+    path = covopt_binary()
     if not path:
-        pytest.skip("COVOPT_CLI (the built covopt binary) is not set; CTest sets it")
+        pytest.fail("no covopt binary to compare with: set COVOPT_CLI, build the covopt target "
+                    "(build/cli/covopt beside build/python) or put covopt on PATH")
 
     def run(*args):
         done = subprocess.run([path, *args], capture_output=True, text=True, check=False)

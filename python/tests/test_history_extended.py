@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import covopt
+from calls import call
 
 BRAKING = {"braking": "200m/s2", "reaction_delay": "2ms"}
 BRAKING_FLAGS = ["--braking", "200m/s2", "--reaction-delay", "2ms"]
@@ -23,7 +24,7 @@ EXTRA = ["robot_speed_m_per_s", "head_speed_m_per_s", "neck_force_N", "dissipate
 
 
 def test_a_braking_history_has_the_bodies_speeds_and_the_brakes_work():
-    result = covopt.simulate(history=True, **BRAKING)
+    result = call(covopt.simulate, history=True, **BRAKING)
     history = result["history"]
     assert list(history) == BASE + EXTRA
     samples = result["solver"]["history_samples"]
@@ -62,14 +63,14 @@ def test_a_braking_history_equals_the_cli_history_csv(cli, tmp_path):
     code, _, err = cli("simulate", *BRAKING_FLAGS, "--history", str(csv))
     assert code == 0, err
     table = np.genfromtxt(csv, delimiter=",", names=True)
-    history = covopt.simulate(history=True, **BRAKING)["history"]
+    history = call(covopt.simulate, history=True, **BRAKING)["history"]
     assert list(table.dtype.names) == list(history)
     for name in history:
         np.testing.assert_array_equal(history[name], table[name])
 
 
 def test_a_neck_history_carries_the_neck_force():
-    history = covopt.simulate(history=True, **NECK)["history"]
+    history = call(covopt.simulate, history=True, **NECK)["history"]
     assert list(history) == BASE + EXTRA
     assert history["neck_force_N"][0] == 0.0  # the neck starts relaxed
     assert history["neck_force_N"].max() > 0.0  # then the head pulls on the torso
@@ -78,4 +79,4 @@ def test_a_neck_history_carries_the_neck_force():
 
 @pytest.mark.parametrize("kwargs", [{}, {"method": "cvode"}])
 def test_a_conservative_history_keeps_seven_columns(kwargs):
-    assert list(covopt.simulate(history=True, **kwargs)["history"]) == BASE
+    assert list(call(covopt.simulate, history=True, **kwargs)["history"]) == BASE

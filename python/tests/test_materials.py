@@ -7,17 +7,17 @@ import covopt
 
 
 def test_materials_is_the_cli_list(cli_json):
-    assert covopt.materials() == cli_json("materials", "list", "--json")
+    assert [m.to_dict() for m in covopt.materials()] == cli_json("materials", "list", "--json")
 
 
 def test_material_is_the_cli_show(cli_json):
-    name = covopt.materials()[0]["name"]
-    assert covopt.material(name) == cli_json("materials", "show", name, "--json")
+    name = covopt.materials()[0].name
+    assert covopt.material(name).to_dict() == cli_json("materials", "show", name, "--json")
 
 
 def test_material_ignores_case():
     first = covopt.materials()[0]
-    assert covopt.material(first["name"].upper()) == first
+    assert covopt.material(first.name.upper()) == first
 
 
 def test_every_material_has_the_documented_keys_in_si():
@@ -25,14 +25,14 @@ def test_every_material_has_the_documented_keys_in_si():
             "modulus_basis", "source", "note", "crush_behaviour", "compressive_strength_Pa",
             "strength_method", "strength_source", "defined_at"]
     for m in covopt.materials():
-        assert list(m) == keys
-        assert 1e3 <= m["youngs_modulus_Pa"] <= 1e12
-        assert m["poisson_ratio"] is None or -1 < m["poisson_ratio"] <= 0.5
+        assert list(m.to_dict()) == keys
+        assert 1e3 <= m.youngs_modulus_Pa <= 1e12
+        assert m.poisson_ratio is None or -1 < m.poisson_ratio <= 0.5
 
 
 def test_an_unknown_name_is_a_value_error_with_the_clis_suggestions(cli):
     with pytest.raises(ValueError) as error:
-        covopt.material("polystyrene")
+        covopt.material("polystyrene").to_dict()
     message = str(error.value)
     assert message.startswith("no material 'polystyrene' in the catalog; did you mean ")
     code, out, err = cli("materials", "show", "polystyrene")
@@ -42,31 +42,31 @@ def test_an_unknown_name_is_a_value_error_with_the_clis_suggestions(cli):
 
 def test_a_material_sets_the_covering_of_a_simulation():
     m = covopt.material("polystyrene foam 48.3")
-    covering = covopt.simulate(material=m["name"])["scene"]["covering"]
-    assert covering["youngs_modulus_Pa"] == m["youngs_modulus_Pa"]
-    assert covering["material"] == m["name"]
+    covering = covopt.simulate(covopt.Scene(material=m.name)).scene.covering
+    assert covering.youngs_modulus_Pa == m.youngs_modulus_Pa
+    assert covering.material == m.name
 
 
 def test_every_material_states_its_crush_behaviour():
     materials = covopt.materials()
     assert len(materials) >= 45
     for m in materials:
-        assert m["crush_behaviour"] in ("crushes", "does-not-crush", "unknown")
-        if m["crush_behaviour"] == "crushes":
-            assert m["compressive_strength_Pa"] > 0
-            assert m["strength_method"] and m["strength_source"]
+        assert m.crush_behaviour in ("crushes", "does-not-crush", "unknown")
+        if m.crush_behaviour == "crushes":
+            assert m.compressive_strength_Pa > 0
+            assert m.strength_method and m.strength_source
         else:
-            assert m["compressive_strength_Pa"] is None
-        if m["crush_behaviour"] == "does-not-crush":
-            assert m["strength_method"] and m["strength_source"]
-        if m["crush_behaviour"] == "unknown":
-            assert m["strength_method"] is None and m["strength_source"] is None
+            assert m.compressive_strength_Pa is None
+        if m.crush_behaviour == "does-not-crush":
+            assert m.strength_method and m.strength_source
+        if m.crush_behaviour == "unknown":
+            assert m.strength_method is None and m.strength_source is None
 
 
 def test_the_strength_agrees_with_the_cli(cli_json):
     m = covopt.material("XPS Foamular 250")
     shown = cli_json("materials", "show", "XPS Foamular 250", "--json")
-    assert m["compressive_strength_Pa"] == shown["compressive_strength_Pa"]
-    assert m["compressive_strength_Pa"] == pytest.approx(25 * 6894.757)
-    assert m["strength_method"] == shown["strength_method"]
-    assert covopt.material("silicone Sylgard 184")["crush_behaviour"] == "does-not-crush"
+    assert m.compressive_strength_Pa == shown["compressive_strength_Pa"]
+    assert m.compressive_strength_Pa == pytest.approx(25 * 6894.757)
+    assert m.strength_method == shown["strength_method"]
+    assert covopt.material("silicone Sylgard 184").crush_behaviour == "does-not-crush"

@@ -4,6 +4,7 @@ both come from covopt::report::DesignJson) and its bad input."""
 import pytest
 
 import covopt
+from calls import call
 
 
 def without_times(value):
@@ -33,7 +34,7 @@ CASES = [
 
 @pytest.mark.parametrize("kwargs,flags", CASES)
 def test_optimize_returns_the_cli_json_object(cli_json, kwargs, flags):
-    ours = covopt.optimize(**kwargs)
+    ours = call(covopt.optimize, **kwargs)
     theirs = cli_json("optimize", "--json", *flags)
     assert list(ours) == list(theirs)
     assert without_times(ours) == without_times(theirs)
@@ -41,45 +42,45 @@ def test_optimize_returns_the_cli_json_object(cli_json, kwargs, flags):
 
 def test_the_criterion_names_every_part_and_each_design_its_governing_ratio():
     answer = covopt.optimize()
-    assert answer["criterion"]["parts"] == ["laceration", "contusion", "full-compression", "crush"]
-    assert "A.3.2" in answer["scope"][1]
-    for c in answer["candidates"]:
-        ratios = {"laceration": c["laceration_ratio"], "contusion": c["contusion_ratio"],
-                  "full-compression": c["compression_ratio"]}
-        if c["crush_ratio"] is not None:
-            ratios["crush"] = c["crush_ratio"]
+    assert answer.criterion.parts == ["laceration", "contusion", "full-compression", "crush"]
+    assert "A.3.2" in answer.scope[1]
+    for c in answer.candidates:
+        ratios = {"laceration": c.laceration_ratio, "contusion": c.contusion_ratio,
+                  "full-compression": c.compression_ratio}
+        if c.crush_ratio is not None:
+            ratios["crush"] = c.crush_ratio
         # The governing ratio is the largest that counts; the margin is 1 minus it (SF 1).
-        assert c["governing_ratio"] == max(ratios.values())
-        assert ratios[c["governing_criterion"]] == c["governing_ratio"]
-        assert c["margin"] == pytest.approx(1 - c["governing_ratio"], abs=1e-15)
-        if c["crush_behaviour"] == "crushes":
-            assert c["crush_ratio"] == pytest.approx(c["max_compressive_stress_Pa"] / c["compressive_strength_Pa"],
+        assert c.governing_ratio == max(ratios.values())
+        assert ratios[c.governing_criterion] == c.governing_ratio
+        assert c.margin == pytest.approx(1 - c.governing_ratio, abs=1e-15)
+        if c.crush_behaviour == "crushes":
+            assert c.crush_ratio == pytest.approx(c.max_compressive_stress_Pa / c.compressive_strength_Pa,
                                                      rel=1e-15)
     # A material that crushes is never admissible beyond its strength.
-    for c in answer["candidates"]:
-        if c["safe"] and c["crush_ratio"] is not None:
-            assert c["crush_ratio"] <= 1.0
+    for c in answer.candidates:
+        if c.safe and c.crush_ratio is not None:
+            assert c.crush_ratio <= 1.0
 
 
 def test_unknown_strengths_are_refused_unless_allowed_and_then_warned():
     refused = covopt.optimize(materials="polystyrene foam 27.6")
-    assert refused["recommendation"] is None
+    assert refused.recommendation is None
     allowed = covopt.optimize(materials="polystyrene foam 27.6", allow_unknown_strength=True)
-    assert allowed["recommendation"]["crush_check"] == "unknown-strength"
-    assert any("unverified for crushing" in w for w in allowed["warnings"])
+    assert allowed.recommendation.crush_check == "unknown-strength"
+    assert any("unverified for crushing" in w for w in allowed.warnings)
 
 
 def test_a_range_points_to_robust_optimize():
     with pytest.raises(ValueError, match="robust_optimize"):
-        covopt.optimize(head_mass="3.7kg..5.8kg")
+        covopt.optimize(covopt.Scene(head_mass="3.7kg..5.8kg")).to_dict()
 
 
 def test_the_recommendation_is_admissible_and_simulates_as_reported():
     answer = covopt.optimize()
-    best = answer["recommendation"]
+    best = answer.recommendation
     assert best is not None
-    one = covopt.simulate(material=best["material"], covering_thickness=best["thickness_m"])
-    assert one["safe"] and not one["fully_compressed"]
+    one = covopt.simulate(covopt.Scene(material=best.material, covering_thickness=best.thickness_m))
+    assert one.safe and not one.fully_compressed
 
 
 @pytest.mark.parametrize("kwargs,words", [
@@ -94,12 +95,13 @@ def test_the_recommendation_is_admissible_and_simulates_as_reported():
 ])
 def test_bad_input_names_the_keyword(kwargs, words):
     with pytest.raises(ValueError) as error:
-        covopt.optimize(**kwargs)
+        call(covopt.optimize, **kwargs)
     for word in words:
         assert word in str(error.value)
 
 
-@pytest.mark.parametrize("keyword", ["covering_thickness", "covering_modulus", "material"])
-def test_the_covering_is_not_an_input(keyword):
-    with pytest.raises(TypeError):
-        covopt.optimize(**{keyword: 0.01})
+@pytest.mark.parametrize("keyword,value", [("covering_thickness", 0.01), ("covering_modulus", 1e6),
+                                           ("material", "polystyrene foam 48.3")])
+def test_the_covering_is_not_an_input(keyword, value):
+    with pytest.raises(ValueError, match="the covering is what optimize designs"):
+        covopt.optimize(covopt.Scene(**{keyword: value}))

@@ -311,7 +311,7 @@ def _eigenvalue_gaps_are_clear(reference):
 def _compare(urdf, tip, q, point, direction, base=None):
     expected = ref.reflected_mass(urdf, tip, q, base=base, point=point, direction=direction)
     got = covopt.reflected_mass(urdf, tip, list(q), base=base, point=tuple(point),
-                                direction=tuple(direction))
+                                direction=tuple(direction)).to_dict()
     assert list(got["joint_names"]) == expected["joint_names"]
     np.testing.assert_allclose(got["contact_point_m"], expected["contact_point_m"], rtol=1e-12,
                                atol=1e-12)
@@ -389,21 +389,21 @@ def test_covopt_contact_motion_along_the_example_trajectory_agrees_with_the_refe
     rows = np.array([[float(x) for x in line.split(",")] for line in data[1:]])  # no header
     point = (0.0, 0.0, 0.05)
     got = covopt.contact_motion(FR3, "fr3_link8", csv, point=point)
-    assert list(got["joint_names"]) == [f"fr3_joint{k}" for k in range(1, 8)]
-    assert len(got["samples"]) == len(rows)
+    assert list(got.joint_names) == [f"fr3_joint{k}" for k in range(1, 8)]
+    assert len(got.samples) == len(rows)
     model = ref.read_urdf(FR3)
-    for row, sample in zip(rows, got["samples"]):
+    for row, sample in zip(rows, got.samples):
         q, qdot = row[1:8], row[8:15]
         jv, p = ref.contact_jacobian(model, "base", "fr3_link8", q, point)
         velocity = jv @ qdot
         speed = float(np.linalg.norm(velocity))
-        assert sample["time_s"] == row[0]
-        np.testing.assert_allclose(sample["contact_point_m"], p, atol=1e-12)
-        np.testing.assert_allclose(sample["velocity_m_per_s"], velocity, rtol=1e-9, atol=1e-13)
-        assert sample["speed_m_per_s"] == pytest.approx(speed, rel=1e-9, abs=1e-13)
+        assert sample.time_s == row[0]
+        np.testing.assert_allclose(sample.contact_point_m, p, atol=1e-12)
+        np.testing.assert_allclose(sample.velocity_m_per_s, velocity, rtol=1e-9, atol=1e-13)
+        assert sample.speed_m_per_s == pytest.approx(speed, rel=1e-9, abs=1e-13)
         if speed > 1e-6:
             expected = ref.reflected_mass(model, "fr3_link8", q, point=point, direction=velocity)
-            _assert_same_mass(sample["reflected_mass_kg"], expected["reflected_mass_kg"])
-        elif not sample["moving"]:
+            _assert_same_mass(sample.reflected_mass_kg, expected["reflected_mass_kg"])
+        elif not sample.moving:
             expected = ref.reflected_mass(model, "fr3_link8", q, point=point)
-            _assert_same_mass(sample["reflected_mass_kg"], expected["max_reflected_mass_kg"])
+            _assert_same_mass(sample.reflected_mass_kg, expected["max_reflected_mass_kg"])

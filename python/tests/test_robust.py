@@ -4,6 +4,7 @@ cross-checked against the CLI's JSON with the same ranges."""
 import pytest
 
 import covopt
+from calls import call
 
 COVERING = {"covering_thickness": "16mm", "material": "XPS Foamular 250"}
 COVERING_FLAGS = ["--covering-thickness", "16mm", "--material", "XPS Foamular 250"]
@@ -21,7 +22,7 @@ def without_timing(value):
 
 
 def test_worst_case_is_the_cli_simulate_object(cli_json):
-    ours = covopt.worst_case(ranges=RANGES, **COVERING)
+    ours = call(covopt.worst_case, ranges=RANGES, **COVERING)
     theirs = cli_json("simulate", "--json", *RANGE_FLAGS, *COVERING_FLAGS)
     assert without_timing(ours["worst_case"]) == without_timing(theirs["worst_case"])
     assert ours["uncertain_inputs"] == theirs["uncertain_inputs"]
@@ -31,9 +32,11 @@ def test_worst_case_is_the_cli_simulate_object(cli_json):
 
 
 def test_injury_probability_is_the_cli_object_for_any_thread_count(cli_json):
-    ours = covopt.injury_probability(ranges=RANGES, samples=5000, seed=4, threads=1, **COVERING)
-    threaded = covopt.injury_probability(ranges=RANGES, samples=5000, seed=4, threads=3, **COVERING)
-    theirs = cli_json("simulate", "--json", *RANGE_FLAGS, *COVERING_FLAGS, "--samples", "5000", "--seed", "4")
+    ours = call(covopt.injury_probability, ranges=RANGES, samples=5000, seed=4, threads=1, **COVERING)
+    threaded = call(covopt.injury_probability, ranges=RANGES, samples=5000, seed=4, threads=3,
+                    **COVERING)
+    theirs = cli_json("simulate", "--json", *RANGE_FLAGS, *COVERING_FLAGS, "--samples", "5000",
+                      "--seed", "4")
     assert ours["injury_probability"] == theirs["injury_probability"]
     assert threaded["injury_probability"] == ours["injury_probability"]
     p = ours["injury_probability"]
@@ -42,16 +45,18 @@ def test_injury_probability_is_the_cli_object_for_any_thread_count(cli_json):
 
 
 def test_distributions_match_the_cli(cli_json):
-    ours = covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=3000,
-                                     distributions={"head_mass": ("normal", "4.5kg", "0.5kg")}, **COVERING)
-    theirs = cli_json("simulate", "--json", "--head-mass", "3.7kg..5.8kg", *COVERING_FLAGS, "--samples", "3000",
+    ours = call(covopt.injury_probability, ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=3000,
+                                     distributions={"head_mass": ("normal", "4.5kg",
+                                                                  "0.5kg")}, **COVERING)
+    theirs = cli_json("simulate", "--json", "--head-mass", "3.7kg..5.8kg", *COVERING_FLAGS, "--samples",
+                      "3000",
                       "--distribution", "head-mass=normal:4.5kg:0.5kg")
     assert ours["injury_probability"] == theirs["injury_probability"]
     assert ours["uncertain_inputs"][0]["distribution"] == "normal"
 
 
 def test_sensitivities_are_the_cli_object(cli_json):
-    ours = covopt.sensitivities(**COVERING)
+    ours = call(covopt.sensitivities, **COVERING)
     theirs = cli_json("simulate", "--json", "--sensitivities", *COVERING_FLAGS)["sensitivities"]
     assert ours == theirs
     assert ours["rows"][0]["field"] == "speed"
@@ -60,32 +65,37 @@ def test_sensitivities_are_the_cli_object(cli_json):
 def test_robust_optimize_is_the_cli_optimize_object(cli_json):
     ours = covopt.robust_optimize(ranges=RANGES)
     theirs = cli_json("optimize", "--json", *RANGE_FLAGS)
-    assert without_timing(ours["recommendation"]) == without_timing(theirs["recommendation"])
-    assert without_timing(ours["worst_case"]) == without_timing(theirs["worst_case"])
-    assert ours["verdict"] == "covering-found"
-    assert ours["recommendation"]["thickness_m"] > 0.016  # thicker than for the nominal head
+    assert without_timing(ours.recommendation.to_dict()) == without_timing(theirs["recommendation"])
+    assert without_timing(ours.worst_case.to_dict()) == without_timing(theirs["worst_case"])
+    assert ours.verdict == "covering-found"
+    assert ours.recommendation.thickness_m > 0.016  # thicker than for the nominal head
 
 
 def test_probability_design_matches_the_cli(cli_json):
     ours = covopt.robust_optimize(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=2000, seed=2,
                                   max_injury_probability=0.05)
-    theirs = cli_json("optimize", "--json", "--head-mass", "3.7kg..5.8kg", "--samples", "2000", "--seed", "2",
+    theirs = cli_json("optimize", "--json", "--head-mass", "3.7kg..5.8kg", "--samples", "2000",
+                      "--seed", "2",
                       "--max-injury-probability", "0.05")
-    assert ours["recommendation"]["material"] == theirs["recommendation"]["material"]
-    assert ours["recommendation"]["thickness_m"] == theirs["recommendation"]["thickness_m"]
-    assert ours["recommendation"]["injury_probability"] == theirs["recommendation"]["injury_probability"]
-    assert ours["recommendation"]["injury_probability"]["inadmissible"] <= 0.05
+    assert ours.recommendation.material == theirs["recommendation"]["material"]
+    assert ours.recommendation.thickness_m == theirs["recommendation"]["thickness_m"]
+    assert ours.recommendation.injury_probability == theirs["recommendation"]["injury_probability"]
+    assert ours.recommendation.injury_probability.inadmissible <= 0.05
 
 
 @pytest.mark.parametrize("call, needle", [
-    (lambda: covopt.worst_case(ranges={"head_mass": ("5.8kg", "3.7kg")}), "head"),
-    (lambda: covopt.worst_case(ranges={"brain_mass": ("1kg", "2kg")}), "unknown input"),
-    (lambda: covopt.worst_case(ranges={}), "ranges"),
-    (lambda: covopt.worst_case(ranges={"head_mass": ("3.7kg", "5.8kg")}, damping="0.2s/m"), "damping"),
-    (lambda: covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=0), "samples"),
+    (lambda: covopt.worst_case(ranges={"head_mass": ("5.8kg", "3.7kg")}).to_dict(), "head"),
+    (lambda: covopt.worst_case(ranges={"brain_mass": ("1kg", "2kg")}).to_dict(), "unknown input"),
+    (lambda: covopt.worst_case(ranges={}).to_dict(), "ranges"),
+    (lambda: covopt.worst_case(covopt.Scene(damping="0.2s/m"), ranges={"head_mass": ("3.7kg",
+                                                                                     "5.8kg")}).to_dict(), "damping"),
+    (lambda: covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=0).to_dict(),
+     "samples"),
     (lambda: covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10,
-                                       distributions={"speed": ("normal", "2m/s", "0.1m/s")}), "no range"),
-    (lambda: covopt.robust_optimize(ranges={"head_mass": ("3.7kg", "5.8kg")}, max_injury_probability=0.1),
+                                       distributions={"speed": ("normal", "2m/s",
+                                                                "0.1m/s")}).to_dict(), "no range"),
+    (lambda: covopt.robust_optimize(ranges={"head_mass": ("3.7kg", "5.8kg")},
+                                    max_injury_probability=0.1).to_dict(),
      "samples"),
 ])
 def test_bad_input_raises_value_error(call, needle):
@@ -97,9 +107,11 @@ def test_the_seed_is_any_unsigned_64_bit_value_and_the_message_says_so():
     # Issue 22: the stated maximum was 18000000000000000000 and seeds above it were refused.
     top = 2**64 - 1
     ours = covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10, seed=top)
-    assert ours["injury_probability"]["seed"] == top
+    assert ours.injury_probability.seed == top
     with pytest.raises(ValueError, match=r"seed must be a whole number in \[0, 18446744073709551615\]"):
-        covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10, seed=2**64)
+        covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10,
+                                  seed=2**64).to_dict()
     with pytest.raises(ValueError, match="18446744073709551615"):
-        covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10, seed=-1)
+        covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10,
+                                  seed=-1).to_dict()
     assert "18446744073709551615" in covopt.injury_probability.__doc__

@@ -1,8 +1,7 @@
 """covopt.load_scene(path) reads scene files with the library's reader, the one behind
-``covopt simulate --scene``: the keywords it returns give the CLI's result, and a bad file
+``covopt simulate --scene``: the Scene it returns gives the CLI's result, and a bad file
 raises ValueError with the CLI's message (file:line:column, the key, what is allowed)."""
 
-import math
 import os
 
 import pytest
@@ -19,38 +18,39 @@ def write(tmp_path, text, name="scene.toml"):
 
 
 def test_the_shipped_example_is_the_papers_scene():
-    keywords = covopt.load_scene(EXAMPLE)
-    assert keywords["robot_mass"] == 10.0
-    assert keywords["speed"] == 2.0
-    assert keywords["robot_radius"] == 0.015
-    assert keywords["covering_thickness"] == 0.015
-    assert keywords["thresholds"] == "cumulative"
-    assert keywords["safety_factor"] == 1.0
-    assert covopt.simulate(**keywords) == covopt.simulate()
+    scene = covopt.load_scene(EXAMPLE)
+    assert (scene.robot_mass, scene.speed, scene.robot_radius, scene.covering_thickness) == (10.0, 2.0,
+                                                                                             0.015, 0.015)
+    assert scene.thresholds == "cumulative" and scene.safety_factor == 1.0
+    assert covopt.simulate(scene) == covopt.simulate()
 
 
 def test_only_what_the_file_sets_with_fixed_flat_and_extras(tmp_path):
     path = write(tmp_path, '[robot]\nspeed = "250 mm/s"\nradius = "flat"\n[head]\nmass = "fixed"\n'
                            '[covering]\nmaterial = "EPS geofoam EPS39"\n[limits]\nsafety_factor = 2\n')
-    assert covopt.load_scene(path) == {"speed": 0.25, "robot_radius": math.inf, "head_mass": math.inf,
-                                       "material": "EPS geofoam EPS39", "safety_factor": 2.0}
+    assert repr(covopt.load_scene(path)) == ("Scene(head_mass=inf, robot_radius=inf, speed=0.25, "
+                                             "material='EPS geofoam EPS39', safety_factor=2.0)")
 
 
 def test_a_unit_that_is_implausible_bare_stays_readable(tmp_path):
-    keywords = covopt.load_scene(write(tmp_path, '[robot]\nradius = "2m"\n'))
-    assert keywords == {"robot_radius": "2.0m"}
-    assert covopt.simulate(**keywords)["scene"]["robot"]["radius_m"] == 2.0
+    scene = covopt.load_scene(write(tmp_path, '[robot]\nradius = "2m"\n'))
+    assert repr(scene) == "Scene(robot_radius='2.0m')"
+    assert covopt.simulate(scene).scene.robot.radius_m == 2.0
 
 
 def test_ranges_are_returned_for_the_robust_calls(tmp_path):
-    keywords = covopt.load_scene(write(tmp_path, '[head]\nmass = "3.7kg..5.8kg"\n'))
-    assert keywords == {"ranges": {"head_mass": (3.7, 5.8)}}
+    scene = covopt.load_scene(write(tmp_path, '[head]\nmass = "3.7kg..5.8kg"\n'))
+    assert scene.ranges == {"head_mass": (3.7, 5.8)}
+    assert covopt.worst_case(scene).worst_case.inputs == \
+        covopt.worst_case(ranges={"head_mass": ("3.7kg", "5.8kg")}).worst_case.inputs
+    with pytest.raises(ValueError, match="the scene has ranges"):
+        covopt.simulate(scene)
 
 
 def test_the_result_is_the_clis_for_the_same_file(tmp_path, cli_json):
     path = write(tmp_path, '[robot]\nmass = "7.5 kg"\nspeed = 1.2\n[covering]\nthickness = "20mm"\n'
                            '[limits]\nlaceration = "0.8 MPa"\n')
-    assert covopt.simulate(**covopt.load_scene(path)) == cli_json("simulate", "--scene", path, "--json")
+    assert covopt.simulate(covopt.load_scene(path)) == cli_json("simulate", "--scene", path, "--json")
 
 
 @pytest.mark.parametrize("text", ['[robot]\nmas = 10\n', '[robot]\nradius = 40\n', '[robt]\n',
