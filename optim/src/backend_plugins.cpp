@@ -72,17 +72,17 @@ void* LoadPlugin(const std::string& name, const char* symbol) {
     void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (handle == nullptr) {
       const char* why = dlerror();
-      throw std::runtime_error("covopt: cannot load the " + name + " solver plugin " + path.string() + ": " +
+      throw std::runtime_error("cannot load the " + name + " solver plugin " + path.string() + ": " +
                                (why != nullptr ? why : "unknown error"));
     }
     void* entry = dlsym(handle, symbol);
     if (entry == nullptr) {
-      throw std::runtime_error("covopt: the " + name + " solver plugin " + path.string() + " has no entry " +
+      throw std::runtime_error("the " + name + " solver plugin " + path.string() + " has no entry " +
                                symbol + " (a plugin from another covopt version?)");
     }
     return entry;
   }
-  throw std::runtime_error("covopt: the " + name + " solver plugin " + file + " was not found on the run path of " +
+  throw std::runtime_error("the " + name + " solver plugin " + file + " was not found on the run path of " +
                            object_name + " (searched: " + searched + "); it is built with covopt and installed in " +
                            COVOPT_PLUGIN_INSTALL_DIR + " of covopt's prefix, or add its directory to LD_LIBRARY_PATH");
 }
