@@ -1,12 +1,13 @@
 // Ipopt through its TNLP interface: silent, no options file, exact first derivatives, and the
-// problem's Hessian of the Lagrangian when it gives one (else L-BFGS).
+// problem's Hessian of the Lagrangian when it gives one (else L-BFGS). Built as the plugin
+// libcovopt_ipopt.so, opened by SolveWithIpopt (backend_plugins.cpp) when first needed.
 #include <IpIpoptApplication.hpp>
 #include <IpTNLP.hpp>
 
-#include <chrono>
 #include <mutex>
 #include <vector>
 
+#include "backend_plugins.hpp"
 #include "covopt/optim/backends.hpp"
 #include "evaluation_guard.hpp"
 
@@ -176,17 +177,15 @@ std::mutex& IpoptMutex() {
 
 }  // namespace
 
-SolveResult SolveWithIpopt(const Problem& problem, std::span<const double> x0,
-                           const IpoptOptions& options) {
-  const auto started = std::chrono::steady_clock::now();
-  SolveResult result;
-  result.report.backend = "ipopt";
+// The plugin's entry (backend_plugins.hpp): SolveWithIpopt names the backend and finishes the result.
+COVOPT_PLUGIN_ENTRY bool covopt_ipopt_solve_v1(const Problem& problem, std::span<const double> x0,
+                                               const IpoptOptions& options, SolveResult& result) {
   const std::size_t n = problem.dimension();
   if (n == 0 || x0.size() != n) {
     result.report.termination = Termination::kInvalidProblem;
     result.report.raw_code = Ipopt::Invalid_Problem_Definition;
     result.report.raw_name = StatusName(Ipopt::Invalid_Problem_Definition);
-    return result;
+    return false;
   }
   internal::EvaluationGuard guard(problem);
   Ipopt::ApplicationReturnStatus status = Ipopt::Internal_Error;
@@ -240,10 +239,7 @@ SolveResult SolveWithIpopt(const Problem& problem, std::span<const double> x0,
   result.report.raw_name = StatusName(status);
   result.report.termination = MapStatus(status);
   guard.CopyCounters(result.report);
-  internal::FinishResult(problem, result);
-  result.report.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  return result;
+  return true;
 }
 
 }  // namespace covopt::optim

@@ -1,12 +1,13 @@
-// NLopt through its C API (no exceptions: every outcome is an nlopt_result we map).
+// NLopt through its C API (no exceptions: every outcome is an nlopt_result we map). Built as
+// the plugin libcovopt_nlopt.so, opened by SolveWithNlopt (backend_plugins.cpp) when first needed.
 #include <nlopt.h>
 
-#include <chrono>
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
 
+#include "backend_plugins.hpp"
 #include "covopt/optim/backends.hpp"
 #include "evaluation_guard.hpp"
 
@@ -121,24 +122,10 @@ void ConstraintBlockFunction(unsigned m, double* result, unsigned n, const doubl
 
 }  // namespace
 
-std::string_view ToString(NloptAlgorithm algorithm) noexcept {
-  switch (algorithm) {
-    case NloptAlgorithm::kDirectL: return "GN_DIRECT_L";
-    case NloptAlgorithm::kIsres: return "GN_ISRES";
-    case NloptAlgorithm::kMlsl: return "G_MLSL_LDS+LD_LBFGS";
-    case NloptAlgorithm::kCobyla: return "LN_COBYLA";
-    case NloptAlgorithm::kSlsqp: return "LD_SLSQP";
-    case NloptAlgorithm::kLbfgs: return "LD_LBFGS";
-  }
-  return "unknown";
-}
-
-SolveResult SolveWithNlopt(const Problem& problem, std::span<const double> x0,
-                           const NloptOptions& options) {
-  const auto started = std::chrono::steady_clock::now();
+// The plugin's entry (backend_plugins.hpp): SolveWithNlopt names the backend and finishes the result.
+COVOPT_PLUGIN_ENTRY bool covopt_nlopt_solve_v1(const Problem& problem, std::span<const double> x0,
+                                               const NloptOptions& options, SolveResult& result) {
   const std::size_t n = problem.dimension();
-  SolveResult result;
-  result.report.backend = std::string("nlopt:").append(ToString(options.algorithm));
   const std::vector<double> lower = problem.lower_bounds();
   const std::vector<double> upper = problem.upper_bounds();
   if (n == 0 || x0.size() != n || lower.size() != n || upper.size() != n ||
@@ -146,7 +133,7 @@ SolveResult SolveWithNlopt(const Problem& problem, std::span<const double> x0,
     result.report.termination = Termination::kInvalidProblem;
     result.report.raw_code = NLOPT_INVALID_ARGS;
     result.report.raw_name = nlopt_result_to_string(NLOPT_INVALID_ARGS);
-    return result;
+    return false;
   }
 
   internal::EvaluationGuard guard(problem);
@@ -203,10 +190,7 @@ SolveResult SolveWithNlopt(const Problem& problem, std::span<const double> x0,
     result.report.termination = Termination::kEvaluationFailure;
   }
   guard.CopyCounters(result.report);
-  internal::FinishResult(problem, result);
-  result.report.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  return result;
+  return true;
 }
 
 }  // namespace covopt::optim
