@@ -420,7 +420,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   }
   if (!report.result.ok()) RaiseImpactFailure(report.result);
   inputs.Judge(report);
-  for (std::string& warning : InputWarnings(inputs)) report.result.warnings.push_back(std::move(warning));
+  report.input_warnings = InputWarnings(inputs);
   py::dict result = JsonToPython(report::SimulationJson(report, -1));
   if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model, report.scene);
   return result;
