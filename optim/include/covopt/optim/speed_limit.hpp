@@ -163,15 +163,12 @@ struct ImpactJudgement {
 ///         braking or a neck.
 ImpactJudgement JudgeImpact(const Scene& scene, const SpeedLimitOptions& options = {});
 
-/// The answer of MaxSafeSpeed.
-struct SpeedLimit {
+/// What MaxSafeSpeed and MaxSafeMass answer besides the limit itself.
+struct LimitAnswer {
   SpeedLimitStatus status = SpeedLimitStatus::kLimited;
-  /// The largest safe impact speed [m/s] (kLimited); the search ceiling
-  /// (kSafeUpToSearchLimit); 0 (kNoSafeValue).
-  double max_safe_speed_m_per_s = 0.0;
   LimitingCriterion limited_by = LimitingCriterion::kNone;
-  /// The impact at max_safe_speed_m_per_s (at the bottom of the range, 1e-6 m/s, for
-  /// kNoSafeValue).
+  /// The impact at the limit (at the bottom of the range, 1e-6 m/s or kg, for kNoSafeValue;
+  /// a fixed robot when that is MaxSafeMass's answer).
   LimitRatios at_limit;
   /// One sentence, e.g. "max safe speed 1.234 m/s, limited by contusion".
   std::string message;
@@ -180,24 +177,23 @@ struct SpeedLimit {
   /// Found by the bracketed bisection on the oracle (a scene beyond the conservative two-mass
   /// model, or the time path asked for), not by the δ-axis solve.
   bool bracketed = false;
+};
+
+/// The answer of MaxSafeSpeed.
+struct SpeedLimit : LimitAnswer {
+  /// The largest safe impact speed [m/s] (kLimited); the search ceiling
+  /// (kSafeUpToSearchLimit); 0 (kNoSafeValue).
+  double max_safe_speed_m_per_s = 0.0;
   /// The message with the ratios at the limit.
   std::string BriefReport() const;
 };
 
 /// The answer of MaxSafeMass.
-struct MassLimit {
-  SpeedLimitStatus status = SpeedLimitStatus::kLimited;
+struct MassLimit : LimitAnswer {
   /// The largest safe reflected robot mass [kg] (kLimited); kFixed (+inf) when even a fixed
   /// robot is safe, or options.max_mass_kg, for kSafeUpToSearchLimit; 0 (kNoSafeValue).
   double max_safe_mass_kg = 0.0;
-  LimitingCriterion limited_by = LimitingCriterion::kNone;
-  /// The impact at max_safe_mass_kg (a fixed robot when that is the answer).
-  LimitRatios at_limit;
-  std::string message;
-  /// Which path judged the impacts (exact or time path), why, and its evaluations.
-  OracleReport oracle;
-  /// Found by the bracketed bisection on the oracle, not by the δ-axis solve.
-  bool bracketed = false;
+  /// The message with the ratios at the limit.
   std::string BriefReport() const;
 };
 
