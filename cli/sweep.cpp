@@ -296,75 +296,156 @@ CLI::App* SetupSweep(CLI::App& app, SweepCommandOptions& options) {
   return sub;
 }
 
-int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream& err) {
-  const CommandErrors errors(err, "sweep");
-
-  // Axes, scene and outputs.
+/// What RunSweep reads from its options before any computation.
+struct SweepRun {
   SweepAxisArgument x;
   std::optional<SweepAxisArgument> y;
   SimulationPlan plan;
   std::optional<PlotFormat> plot_format;
-  unsigned threads = 0;
+  unsigned threads = 0;  ///< 0 = all cores
   const ResultColumn* quantity = nullptr;
+  const SweepAxisArgument* y_axis() const { return y ? &*y : nullptr; }
+};
+
+/// The axes, the scene and the outputs of a sweep, checked.
+/// @throws InputError naming the flag, the value and what is allowed.
+SweepRun ResolveSweep(const SweepCommandOptions& options) {
+  SweepRun run;
+  run.x = ParseSweepAxis(options.x, "--x");
+  if (options.y) {
+    run.y = ParseSweepAxis(*options.y, "--y");
+    if (run.y->field == run.x.field) {
+      throw InputError(fmt::format("--y: {} is already swept by --x (got '{}')", run.y->name,
+                                   *options.y));
+    }
+  }
+  if (run.x.values.size() * (run.y ? run.y->values.size() : 1) > kMaxSweepPoints) {
+    throw InputError(fmt::format("the grid has {} x {} = {} points; at most {} are allowed",
+                                 run.x.values.size(), run.y->values.size(),
+                                 run.x.values.size() * run.y->values.size(), kMaxSweepPoints));
+  }
+  for (const SweepAxisArgument* axis : {static_cast<const SweepAxisArgument*>(&run.x), run.y_axis()}) {
+    if (axis == nullptr) continue;
+    const std::string key = axis->field->dotted_name();
+    const auto typed = options.scene.scene_values.find(key);
+    if (typed != options.scene.scene_values.end()) {
+      throw InputError(fmt::format("{} '{}' sets {}, which {} sweeps; give it one way",
+                                   axis->field->flag, typed->second, key,
+                                   axis == &run.x ? "--x" : "--y"));
+    }
+    if (options.scene.material &&
+        (key == "covering.modulus" || key == "covering.poisson")) {
+      throw InputError(fmt::format("--material '{}' sets {}, which {} sweeps; give it one way",
+                                   *options.scene.material, key, axis == &run.x ? "--x" : "--y"));
+    }
+  }
+  run.plan = ResolveSimulation(options.scene);
+  if (options.threads) {
+    if (*options.threads < 0 || *options.threads > kMaxThreads) {  // 0 = all cores, as elsewhere
+      throw InputError(
+          fmt::format("--threads must be in 0..{}, 0 = all cores (got {})", kMaxThreads, *options.threads));
+    }
+    run.threads = static_cast<unsigned>(*options.threads);
+  }
+  if (options.csv_file && options.csv_file->empty()) throw InputError("--csv: empty file name");
+  if (options.plot_quantity) {
+    run.quantity = FindResultColumn(*options.plot_quantity);
+    if (run.quantity == nullptr) {
+      throw InputError(fmt::format("--plot-quantity: no result column '{}'; the columns are {}",
+                                   *options.plot_quantity,
+                                   fmt::join(SweepResultColumns(), ", ")));
+    }
+    if (!options.plot_file) throw InputError("--plot-quantity applies only with --plot FILE");
+  }
+  if (options.plot_file) {
+    run.plot_format = PlotFormatFor(*options.plot_file);
+    if (!run.plot_format) {
+      throw InputError(fmt::format(
+          "--plot: cannot tell the format of '{}'; name the file *.png or *.svg",
+          *options.plot_file));
+    }
+  }
+  return run;
+}
+
+/// The summary of a finished sweep, counted by the library on the stream.
+void PrintSweepSummary(std::ostream& out, const SweepRun& run, const covopt::SweepResult& result,
+                       const std::string& scene_line, const std::vector<std::string>& written) {
+  const SweepAxisArgument& x = run.x;
+  const SweepAxisArgument* y_axis = run.y_axis();
+  const std::optional<SweepAxisArgument>& y = run.y;
+  const SimulationPlan& plan = run.plan;
+  const std::size_t valid = result.valid;
+  const auto percent = [&](std::size_t n) {
+    return valid == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(valid);
+  };
+  fmt::print(out, "Sweep   {}: {}\n", x.name, DescribeAxis(x));
+  if (y) fmt::print(out, "        {}: {}\n", y->name, DescribeAxis(*y));
+  fmt::print(out, "Scene   {}\n", scene_line);
+  fmt::print(out, "Points  {} in {:.3g} s on {} thread{}: {} valid, {} invalid{}\n",
+             result.rows, result.wall_time_s, result.threads, result.threads == 1 ? "" : "s",
+             valid, result.rows - valid,
+             result.time_path_rows == 0
+                 ? std::string()
+                 : fmt::format("; {} on the time path (no energy integral)", result.time_path_rows));
+  if (valid > 0) {
+    // With a safety factor s, a ratio above 1/s is unsafe (InputWarnings says so).
+    fmt::print(out, "Safe    {} ({:.1f} %); laceration ratio > {:.4g} at {} ({:.1f} %), "
+                    "contusion ratio > {:.4g} at {} ({:.1f} %)\n",
+               result.safe, percent(result.safe), 1.0 / plan.safety_factor,
+               result.laceration_unsafe, percent(result.laceration_unsafe),
+               1.0 / plan.safety_factor, result.contusion_unsafe,
+               percent(result.contusion_unsafe));
+    // The design criterion: safe, and a covering not fully compressed (a bare robot has
+    // no covering to bottom out, so safe is enough for it).
+    if (result.covered > 0) {
+      fmt::print(out, "Full    covering fully compressed at {} of {} covered points ({:.1f} %); "
+                      "safe and not fully compressed at {} ({:.1f} %)\n",
+                 result.fully_compressed, result.covered,
+                 100.0 * static_cast<double>(result.fully_compressed) /
+                     static_cast<double>(result.covered),
+                 result.admissible, percent(result.admissible));
+    }
+    for (const auto& [label, extreme] :
+         {std::pair{"Least", *result.least}, std::pair{"Most", *result.most}}) {
+      fmt::print(out, "{:<7} worst ratio {:.4g} at {} (laceration {:.4g}, contusion {:.4g})\n",
+                 label, extreme.worst_ratio, PointName(x, y_axis, extreme.index),
+                 extreme.laceration_ratio, extreme.contusion_ratio);
+    }
+  }
+  if (result.first_invalid) {
+    const std::size_t invalid = result.rows - valid;
+    fmt::print(out, "Invalid {} point{} outside the model's input range, e.g. at {}: {}\n",
+               invalid, invalid == 1 ? "" : "s", PointName(x, y_axis, *result.first_invalid),
+               result.first_invalid_error);
+  }
+  if (result.first_warned) {
+    fmt::print(out, "Warned  {} point{} with validity warnings, e.g. at {}: {}\n",
+               result.warned, result.warned == 1 ? "" : "s",
+               PointName(x, y_axis, *result.first_warned), result.first_warning.message);
+  }
+  for (const std::string& warning : InputWarnings(plan)) {
+    fmt::print(out, "Note    {}\n", warning);
+  }
+  if (!written.empty()) fmt::print(out, "Wrote   {}\n", fmt::join(written, ", "));
+}
+
+int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream& err) {
+  const CommandErrors errors(err, "sweep");
+
+  SweepRun run;
   try {
-    x = ParseSweepAxis(options.x, "--x");
-    if (options.y) {
-      y = ParseSweepAxis(*options.y, "--y");
-      if (y->field == x.field) {
-        throw InputError(fmt::format("--y: {} is already swept by --x (got '{}')", y->name,
-                                     *options.y));
-      }
-    }
-    if (x.values.size() * (y ? y->values.size() : 1) > kMaxSweepPoints) {
-      throw InputError(fmt::format("the grid has {} x {} = {} points; at most {} are allowed",
-                                   x.values.size(), y->values.size(),
-                                   x.values.size() * y->values.size(), kMaxSweepPoints));
-    }
-    for (const SweepAxisArgument* axis : {&x, y ? &*y : nullptr}) {
-      if (axis == nullptr) continue;
-      const std::string key = axis->field->dotted_name();
-      const auto typed = options.scene.scene_values.find(key);
-      if (typed != options.scene.scene_values.end()) {
-        throw InputError(fmt::format("{} '{}' sets {}, which {} sweeps; give it one way",
-                                     axis->field->flag, typed->second, key,
-                                     axis == &x ? "--x" : "--y"));
-      }
-      if (options.scene.material &&
-          (key == "covering.modulus" || key == "covering.poisson")) {
-        throw InputError(fmt::format("--material '{}' sets {}, which {} sweeps; give it one way",
-                                     *options.scene.material, key, axis == &x ? "--x" : "--y"));
-      }
-    }
-    plan = ResolveSimulation(options.scene);
-    if (options.threads) {
-      if (*options.threads < 0 || *options.threads > kMaxThreads) {  // 0 = all cores, as elsewhere
-        throw InputError(
-            fmt::format("--threads must be in 0..{}, 0 = all cores (got {})", kMaxThreads, *options.threads));
-      }
-      threads = static_cast<unsigned>(*options.threads);
-    }
-    if (options.csv_file && options.csv_file->empty()) throw InputError("--csv: empty file name");
-    if (options.plot_quantity) {
-      quantity = FindResultColumn(*options.plot_quantity);
-      if (quantity == nullptr) {
-        throw InputError(fmt::format("--plot-quantity: no result column '{}'; the columns are {}",
-                                     *options.plot_quantity,
-                                     fmt::join(SweepResultColumns(), ", ")));
-      }
-      if (!options.plot_file) throw InputError("--plot-quantity applies only with --plot FILE");
-    }
-    if (options.plot_file) {
-      plot_format = PlotFormatFor(*options.plot_file);
-      if (!plot_format) {
-        throw InputError(fmt::format(
-            "--plot: cannot tell the format of '{}'; name the file *.png or *.svg",
-            *options.plot_file));
-      }
-    }
+    run = ResolveSweep(options);
   } catch (const InputError& e) {
     return errors.BadInput(e.what());
   }
-  const SweepAxisArgument* y_axis = y ? &*y : nullptr;
+  const SweepAxisArgument& x = run.x;
+  const std::optional<SweepAxisArgument>& y = run.y;
+  const SimulationPlan& plan = run.plan;
+  const std::optional<PlotFormat>& plot_format = run.plot_format;
+  const unsigned threads = run.threads;
+  const ResultColumn* quantity = run.quantity;
+  const SweepAxisArgument* y_axis = run.y_axis();
 
   // The scene without the swept quantities, for the summary and the chart titles.
   std::vector<std::string_view> swept_fields;
@@ -454,62 +535,7 @@ int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream
     return errors.Failed(e.what());
   }
 
-  if (!csv_to_stdout) {
-    // The summary, counted by the library on the stream.
-    const std::size_t valid = result.valid;
-    const auto percent = [&](std::size_t n) {
-      return valid == 0 ? 0.0 : 100.0 * static_cast<double>(n) / static_cast<double>(valid);
-    };
-    fmt::print(out, "Sweep   {}: {}\n", x.name, DescribeAxis(x));
-    if (y) fmt::print(out, "        {}: {}\n", y->name, DescribeAxis(*y));
-    fmt::print(out, "Scene   {}\n", scene_line);
-    fmt::print(out, "Points  {} in {:.3g} s on {} thread{}: {} valid, {} invalid{}\n",
-               result.rows, result.wall_time_s, result.threads, result.threads == 1 ? "" : "s",
-               valid, result.rows - valid,
-               result.time_path_rows == 0
-                   ? std::string()
-                   : fmt::format("; {} on the time path (no energy integral)", result.time_path_rows));
-    if (valid > 0) {
-      // With a safety factor s, a ratio above 1/s is unsafe (InputWarnings says so).
-      fmt::print(out, "Safe    {} ({:.1f} %); laceration ratio > {:.4g} at {} ({:.1f} %), "
-                      "contusion ratio > {:.4g} at {} ({:.1f} %)\n",
-                 result.safe, percent(result.safe), 1.0 / plan.safety_factor,
-                 result.laceration_unsafe, percent(result.laceration_unsafe),
-                 1.0 / plan.safety_factor, result.contusion_unsafe,
-                 percent(result.contusion_unsafe));
-      // The design criterion: safe, and a covering not fully compressed (a bare robot has
-      // no covering to bottom out, so safe is enough for it).
-      if (result.covered > 0) {
-        fmt::print(out, "Full    covering fully compressed at {} of {} covered points ({:.1f} %); "
-                        "safe and not fully compressed at {} ({:.1f} %)\n",
-                   result.fully_compressed, result.covered,
-                   100.0 * static_cast<double>(result.fully_compressed) /
-                       static_cast<double>(result.covered),
-                   result.admissible, percent(result.admissible));
-      }
-      for (const auto& [label, extreme] :
-           {std::pair{"Least", *result.least}, std::pair{"Most", *result.most}}) {
-        fmt::print(out, "{:<7} worst ratio {:.4g} at {} (laceration {:.4g}, contusion {:.4g})\n",
-                   label, extreme.worst_ratio, PointName(x, y_axis, extreme.index),
-                   extreme.laceration_ratio, extreme.contusion_ratio);
-      }
-    }
-    if (result.first_invalid) {
-      const std::size_t invalid = result.rows - valid;
-      fmt::print(out, "Invalid {} point{} outside the model's input range, e.g. at {}: {}\n",
-                 invalid, invalid == 1 ? "" : "s", PointName(x, y_axis, *result.first_invalid),
-                 result.first_invalid_error);
-    }
-    if (result.first_warned) {
-      fmt::print(out, "Warned  {} point{} with validity warnings, e.g. at {}: {}\n",
-                 result.warned, result.warned == 1 ? "" : "s",
-                 PointName(x, y_axis, *result.first_warned), result.first_warning.message);
-    }
-    for (const std::string& warning : InputWarnings(plan)) {
-      fmt::print(out, "Note    {}\n", warning);
-    }
-    if (!written.empty()) fmt::print(out, "Wrote   {}\n", fmt::join(written, ", "));
-  }
+  if (!csv_to_stdout) PrintSweepSummary(out, run, result, scene_line, written);
   out.flush();
   if (!out) return errors.Failed("cannot write the results to standard output");
   return 0;
