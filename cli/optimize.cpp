@@ -109,7 +109,7 @@ void ResolveScene(const OptimizeOptions& o, Resolved& r) {
     if (typed != o.scene_values.end()) {
       std::erase_if(r.ranges, [&](const SceneRange& range) { return range.field == field.dotted_name(); });
       if (IsRangeText(typed->second)) {
-        r.ranges.push_back(ParseSceneRange(typed->second, field, field.flag));
+        r.ranges.push_back(AsInputError([&] { return scene_file::ParseSceneRange(typed->second, field, field.flag); }));
       } else {
         field.field(r.request.scene) = ParseQuantity(typed->second, field.spec, field.flag);
       }

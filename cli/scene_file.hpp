@@ -11,11 +11,13 @@
 
 #include "covopt/core/scene.hpp"
 #include "covopt/scene_file/scene_file.hpp"
-#include "scene_range.hpp"
+#include "covopt/scene_file/range.hpp"
 
 namespace covopt::cli {
 
+using scene_file::IsRangeText;  // a scene input given as a range, LO..HI (docs/model.md §11)
 using scene_file::kMaxSceneFileBytes;
+using scene_file::SceneRange;
 using scene_file::SceneFileExtras;
 
 /// covopt::scene_file::ApplySceneFile, throwing InputError. A function object, like

@@ -364,14 +364,18 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
       // A flag replaces the scene file's value or range.
       std::erase_if(plan.ranges, [&](const SceneRange& r) { return r.field == field.dotted_name(); });
       if (IsRangeText(typed->second)) {
-        plan.ranges.push_back(ParseSceneRange(typed->second, field, field.flag));
+        plan.ranges.push_back(AsInputError([&] { return scene_file::ParseSceneRange(typed->second, field, field.flag); }));
       } else {
         field.field(plan.scene) = ParseQuantity(typed->second, field.spec, field.flag);
       }
       plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, typed->second);
     }
   }
-  if (!plan.ranges.empty() && !options.accept_ranges) throw InputError(RangeRefusal(plan.ranges.front(), "this command"));
+  if (!plan.ranges.empty() && !options.accept_ranges) {
+    throw InputError(fmt::format("{} '{}': a range (an uncertain input) is taken by simulate, optimize and speed-limit "
+                                 "only; this command needs one value",
+                                 plan.ranges.front().source, plan.ranges.front().text));
+  }
   if (options.robot_model.given()) {  // --urdf ...: robot.mass from the robot model
     RobotModelMass mass =
         ResolveRobotModelMass(options.robot_model, options.scene_values.count(kRobotMassField) != 0);

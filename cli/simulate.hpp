@@ -21,7 +21,7 @@
 #include "materials_command.hpp"
 #include "plot.hpp"
 #include "robot_model_options.hpp"
-#include "scene_range.hpp"
+#include "scene_file.hpp"
 #include "uncertainty_options.hpp"
 
 namespace CLI {

@@ -15,7 +15,7 @@
 #include "covopt/core/scene.hpp"
 #include "covopt/optim/robust_design.hpp"
 #include "progress.hpp"
-#include "scene_range.hpp"
+#include "scene_file.hpp"
 
 namespace CLI {
 class App;
