@@ -43,6 +43,7 @@
 #include "covopt/report/design_json.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
+#include "covopt/scene_file/fields.hpp"
 #include "scene_keywords.hpp"
 
 namespace py = pybind11;
@@ -88,7 +89,7 @@ const SceneKeyword kSceneKeywords[] = {
 };
 // clang-format on
 
-constexpr double kMaxSafetyFactor = 100.0;
+using scene_file::kMaxSafetyFactor;  // the one bound of the safety factor, as scene files and the CLI
 
 /// The scene's keywords besides the scene fields'.
 const char* const kSceneOptionKeywords[] = {"thresholds", "laceration_limit", "contusion_limit",
