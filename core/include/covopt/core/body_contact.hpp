@@ -1,0 +1,180 @@
+#pragma once
+/// @file body_contact.hpp
+/// A robot striking a body region of ISO/TS 15066:2016 Annex A, with or without the covering
+/// (docs/model.md §13). The standard models the region as an effective mass m_H on a linear
+/// spring k_H; covopt puts the covering in series, as a Hertz layer on the robot's curved
+/// surface. This is the body-region model beside the head's (scene.hpp, solve.hpp): the same
+/// Scene → Model → Solve shape, an exact path (an energy balance with one monotone root, no
+/// integration) and a time path that checks it.
+///
+///     mu  = 1/(1/m_R + 1/m_H)                          m_H = inf when clamped
+///     bare robot (b_c = 0):   F_max = v sqrt(mu k_H)    (Annex A exactly: F²/(2k) = mu v²/2)
+///                             p_max = F_max / A         A: the contact area, when given
+///     covering (E_c, nu_c, b_c) on a robot surface of radius R_r, R_c = R_r + b_c:
+///       K_c = 4/3 E_c/(1 - nu_c²) sqrt(R_c)             [N/m^1.5]
+///       delta_c(F) = (F/K_c)^(2/3)  up to  0.8 b_c      the covering's deflection
+///       F_b = K_c (0.8 b_c)^1.5                         the force at which it bottoms out
+///       mu v²/2 = F²/(2 k_H) + W_c(F),  W_c(F) = 2/5 K_c^(-2/3) min(F, F_b)^(5/3)
+///       a² = R_c delta_c(min(F, F_b)),  p_max = 3 F_max / (2 pi a²)   (Hertz peak pressure)
+///
+/// Everything is SI; limits and verdicts are not here (a region's limits are data,
+/// covopt/materials/body_regions.hpp; the verdicts and speed limits are optim's,
+/// covopt/optim/body_region_check.hpp).
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "covopt/core/scene.hpp"
+#include "covopt/core/solve.hpp"
+
+namespace covopt {
+
+/// How the body region meets the robot (ISO/TS 15066:2016, 5.5.5.2 and Annex A).
+enum class ContactType {
+  /// Transient: the region is free and recoils (its effective mass m_H moves). The standard
+  /// allows twice the quasi-static limits where Table A.2 permits transient contact at all.
+  kTransient,
+  /// Quasi-static (clamped): the region is held against a fixed object, m_H = inf; the
+  /// quasi-static limits apply.
+  kClamped,
+};
+/// "transient" or "clamped".
+std::string_view ToString(ContactType type) noexcept;
+/// The inverse of ToString ("quasi-static" is accepted for kClamped); empty for other text.
+std::optional<ContactType> ParseContactType(std::string_view text) noexcept;
+
+/// One robot–body-region contact: plain SI inputs, checked by BodyContactModel::FromScene.
+struct BodyContactScene {
+  /// The robot's effective (reflected) mass m_R along the impact direction [kg], > 0 and
+  /// <= 1e6; kFixed for an immovable robot (then the contact must be transient).
+  double robot_mass_kg = 10.0;
+  /// Relative approach speed at first contact [m/s], in [1e-6, 100].
+  double speed_m_per_s = 0.25;
+  /// Radius of curvature of the robot surface under the covering [m], > 0; kFlat if flat.
+  /// A covering needs a finite radius (its Hertz contact is sphere-on-flat).
+  double robot_radius_m = kFlat;
+  /// The covering. thickness_m == 0 (the default): the bare robot, modulus and Poisson ratio
+  /// ignored.
+  CoveringSpec covering{27.6e6, 0.25, 0.0};
+  /// The body region's effective spring constant k_H [N/m], > 0 and <= 1e9 (Table A.3).
+  double body_stiffness_N_per_m = 25e3;
+  /// The body region's effective mass m_H [kg], > 0 (Table A.3); not read when clamped.
+  double body_mass_kg = 40.0;
+  /// Transient (default) or clamped.
+  ContactType contact = ContactType::kTransient;
+  /// The bare robot's contact area A [m²], > 0 and <= 1; 0 (default): not given, and the bare
+  /// robot's pressure is not evaluated. With a covering the pressure is the Hertz pressure
+  /// and this is not read.
+  double contact_area_m2 = 0.0;
+  /// The covering is fully compressed at this fraction of its thickness [-], in (0, 1].
+  double full_compression_fraction = 0.8;
+  bool has_covering() const noexcept { return covering.thickness_m > 0.0; }
+};
+
+/// A validated, immutable BodyContactScene with the derived constants and the force law.
+class BodyContactModel {
+ public:
+  /// Checks every field of `scene`.
+  /// @throws std::invalid_argument naming the field, the value and the allowed range, e.g.
+  ///         "robot_radius_m: a covering needs a finite robot radius (got a flat robot)", or
+  ///         "robot_mass_kg: a fixed robot needs a transient contact (the clamped body and the
+  ///         robot would both be immovable)".
+  static BodyContactModel FromScene(const BodyContactScene& scene);
+
+  const BodyContactScene& scene() const noexcept { return scene_; }
+  /// mu = 1/(1/m_R + 1/m_H) [kg]; m_H = inf when clamped.
+  double reduced_mass_kg() const noexcept { return reduced_mass_kg_; }
+  /// ½ mu v² [J]: the energy the contact stores at its peak (transferred to the springs).
+  double impact_energy_J() const noexcept { return impact_energy_J_; }
+  bool has_covering() const noexcept { return scene_.has_covering(); }
+  /// K_c [N/m^1.5]; 0 without a covering.
+  double covering_stiffness() const noexcept { return covering_stiffness_; }
+  /// R_c = R_r + b_c [m]; 0 without a covering.
+  double covering_outer_radius_m() const noexcept { return outer_radius_m_; }
+  /// The covering's travel 0.8 b_c [m]; 0 without a covering.
+  double covering_travel_m() const noexcept { return travel_m_; }
+  /// F_b = K_c (0.8 b_c)^1.5 [N]: above it the covering is fully compressed; +inf without a
+  /// covering (nothing to bottom out).
+  double bottom_out_force_N() const noexcept { return bottom_out_force_N_; }
+
+  /// The energy stored at contact force F [J], F >= 0: F²/(2 k_H) + W_c(F).
+  double EnergyAtForce(double force_N) const noexcept;
+  /// The covering's deflection at force F [m]: (min(F, F_b)/K_c)^(2/3); 0 bare.
+  double CoveringDeflectionAtForce(double force_N) const noexcept;
+  /// The total approach (robot toward the region's mass) at force F [m]: F/k_H + deflection.
+  double ApproachAtForce(double force_N) const noexcept;
+  /// The peak pressure at force F [Pa]: Hertz 3F/(2 pi a²) with a covering, F/A bare with an
+  /// area; empty bare without an area.
+  std::optional<double> PressureAtForce(double force_N) const noexcept;
+  /// The speed [m/s] at which the peak force is F: sqrt(2 EnergyAtForce(F) / mu).
+  double SpeedAtPeakForce(double force_N) const noexcept;
+  /// The force of the energy balance EnergyAtForce(F) = energy [N], energy >= 0: one
+  /// monotone root, solved in s = F^(1/3) (a polynomial: no pow in the iteration), to ~1e-15
+  /// relative.
+  double ForceAtEnergy(double energy_J) const noexcept;
+
+ private:
+  BodyContactScene scene_;
+  double reduced_mass_kg_ = 0.0;
+  double impact_energy_J_ = 0.0;
+  double covering_stiffness_ = 0.0;
+  double outer_radius_m_ = 0.0;
+  double travel_m_ = 0.0;
+  double bottom_out_force_N_ = 0.0;
+};
+
+/// One sample of a body-contact history (time path).
+struct BodyContactSample {
+  double time_s = 0.0;
+  double approach_m = 0.0;              ///< total approach δ = δ_c + δ_b [m]
+  double approach_rate_m_per_s = 0.0;   ///< δ' [m/s]
+  double force_N = 0.0;                 ///< contact force [N]
+};
+
+/// The peaks of one robot–body-region contact.
+struct BodyContactResult {
+  /// kSuccess, or the time path's failure (then the peaks are not an answer).
+  SolveStatus status = SolveStatus::kSuccess;
+  std::string message;  ///< empty on success; the integrator's flag and message otherwise
+  /// "exact (energy balance, no integration)" or the time path's integrator and tolerance.
+  std::string method;
+  double reduced_mass_kg = 0.0;          ///< mu [kg]
+  double energy_transferred_J = 0.0;     ///< ½ mu v², stored at the peak [J]
+  double peak_force_N = 0.0;             ///< F_max [N]
+  /// p_max [Pa]: the covering's Hertz peak pressure, or F_max/A bare with an area; empty bare
+  /// without a contact area (not evaluated).
+  std::optional<double> peak_pressure_Pa;
+  /// The Hertz contact radius a at the peak [m] (with a covering; 0 bare).
+  double contact_radius_m = 0.0;
+  double covering_deflection_m = 0.0;    ///< δ_c at the peak [m]; 0 bare
+  double body_deflection_m = 0.0;        ///< F_max / k_H [m]
+  double max_approach_m = 0.0;           ///< δ_c + δ_b at the peak [m]
+  double body_energy_J = 0.0;            ///< F_max²/(2 k_H) [J]
+  double covering_energy_J = 0.0;        ///< W_c(F_max) [J]
+  /// δ_c / (0.8 b_c) at the peak [-]: 1 at full compression; 0 bare. Past F_b it is 1 and
+  /// fully_compressed is set.
+  double compression_ratio = 0.0;
+  /// The covering bottomed out (F_max > F_b): the robot pressed on the region through it.
+  bool fully_compressed = false;
+  /// Contact duration [s] (time path only; the bare exact value is pi sqrt(mu/k_H); NaN on the
+  /// exact path with a covering).
+  double contact_duration_s = 0.0;
+  /// Speed of separation [m/s] (time path only; equal to v for this conservative contact).
+  double rebound_speed_m_per_s = 0.0;
+  /// The time-path history (with SolveOptions::record_history).
+  std::vector<BodyContactSample> history;
+  bool ok() const noexcept { return status == SolveStatus::kSuccess; }
+};
+
+/// Solves one body-region contact. kAuto and kExact take the exact path (a record_history
+/// takes the time path under kAuto and is refused under kExact); kTimePath integrates
+/// mu δ'' = -F(δ) with SUNDIALS (SolveOptions::time_path), stopping at the covering's
+/// bottoming out to restart, at the peak (δ' = 0) and at separation.
+/// @throws std::invalid_argument for a scene field or an option out of range (naming it).
+BodyContactResult Solve(const BodyContactModel& model, const SolveOptions& options = {});
+/// Validates `scene` (BodyContactModel::FromScene) and solves it.
+BodyContactResult Solve(const BodyContactScene& scene, const SolveOptions& options = {});
+
+}  // namespace covopt

@@ -1,0 +1,188 @@
+#pragma once
+/// @file body_region_check.hpp
+/// ISO/TS 15066 body regions with the covering (docs/model.md §13): the verdict of one contact,
+/// the largest safe speed per region, the all-regions table an integrator wants, and the
+/// covering that lets the robot reach a speed for every region named.
+///
+/// The verdict of a contact with one area of one region (limits from
+/// covopt/materials/body_regions.hpp), under a DesignRule with safety factor SF:
+///
+///     force         SF × F_max / F_lim <= 1
+///     pressure      SF × p_max / p_lim <= 1     (not evaluated for a bare robot without an area)
+///     compression   SF × δ_c / (0.8 b_c) <= 1   (with a covering, under the default criterion;
+///                                                fully compressed is never admissible then)
+///     crush         SF × p_max / strength <= 1  (a catalog material of known strength, unless
+///                                                crushing is allowed: the covering's peak
+///                                                pressure is its compressive stress)
+///
+/// The speed limit: each ratio grows with the speed, and each limit is a force on the energy
+/// balance (F_lim/SF; the force at which p_max reaches p_lim/SF or strength/SF; the force at
+/// δ_c = 0.8 b_c/SF), so v_max = min over the counted limits of SpeedAtPeakForce(F*), in
+/// closed form. Bare robot: F_lim / sqrt(mu k_H) (Annex A).
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <covopt/core/body_contact.hpp>
+#include <covopt/core/scene.hpp>
+#include <covopt/materials/body_regions.hpp>
+
+#include "covopt/optim/covering_design.hpp"
+#include "covopt/optim/oracle.hpp"
+#include "covopt/optim/speed_limit.hpp"
+
+namespace covopt::optim {
+
+/// Which limit of a body-region verdict binds.
+enum class BodyLimitKind {
+  kNone,             ///< nothing binds within the searched range
+  kForce,            ///< F_max against F_lim / SF
+  kPressure,         ///< p_max against p_lim / SF
+  kFullCompression,  ///< the covering's travel against 1 / SF
+  kCrush,            ///< p_max against the covering's compressive strength / SF
+};
+/// "none", "force", "pressure", "full-compression", "crush".
+std::string_view ToString(BodyLimitKind kind) noexcept;
+
+/// How a body-region contact is judged.
+struct BodyRegionOptions {
+  /// Safety factor, criterion (no-full-compression by default), crushing and unknown strengths.
+  DesignRule rule;
+  /// The covering's material, when it is a catalog one: its crush behaviour and strength.
+  /// Empty: a covering given by its modulus (no crush check: CrushCheck::kNoMaterial).
+  std::optional<CandidateMaterial> material;
+};
+
+/// `scene` with the region's k_H, m_H and contact type from `limits`.
+BodyContactScene WithRegion(BodyContactScene scene, const materials::BodyLimits& limits);
+
+/// One contact judged against one region's limits.
+struct BodyRegionJudgement {
+  materials::BodyLimits limits;
+  BodyContactResult contact;   ///< the exact path's peaks
+  double force_ratio = 0.0;    ///< F_max / F_lim [-]
+  /// p_max / p_lim [-]; empty when the pressure is not evaluated (bare robot, no area).
+  std::optional<double> pressure_ratio;
+  double compression_ratio = 0.0;  ///< δ_c / (0.8 b_c) [-]; 0 bare
+  CrushCheck crush_check = CrushCheck::kNoMaterial;
+  double crush_ratio = 0.0;        ///< p_max / strength [-] when crush_check is kChecked
+  BodyLimitKind governing = BodyLimitKind::kForce;  ///< the largest counted ratio
+  double governing_ratio = 0.0;    ///< unscaled [-]
+  /// SF × every counted ratio <= 1 (and not fully compressed under the default criterion;
+  /// a material of unknown strength only where the rule allows it).
+  bool admissible = false;
+  /// 1 − SF × governing_ratio.
+  double margin = 0.0;
+  /// Whose criteria, e.g. "ISO/TS 15066:2016 transient, chest (sternum): 280 N, 240 N/cm²".
+  std::string scope;
+};
+
+/// Judges `scene` (its robot, speed and covering; the region's fields are taken from
+/// `limits`) against `limits` under `options`.
+/// @throws std::invalid_argument naming the field for a bad scene or options.
+BodyRegionJudgement JudgeBodyContact(const BodyContactScene& scene,
+                                     const materials::BodyLimits& limits,
+                                     const BodyRegionOptions& options = {});
+
+/// The largest speed safe against one region (every lower speed is safe too).
+struct BodyRegionSpeedLimit {
+  /// kLimited, kSafeUpToSearchLimit (above the model's 100 m/s; the value is 100), or
+  /// kNoSafeValue (a material that crushes or bottoms out at any speed cannot; 0).
+  SpeedLimitStatus status = SpeedLimitStatus::kLimited;
+  double max_safe_speed_m_per_s = 0.0;  ///< [m/s]
+  BodyLimitKind limited_by = BodyLimitKind::kNone;
+  /// The contact at the limit speed, judged (the binding ratio is 1/SF there within rounding).
+  BodyRegionJudgement at_limit;
+  /// One sentence: "chest (sternum), transient: 0.626 m/s, limited by force (ISO/TS 15066 ...)".
+  std::string message;
+};
+
+/// The largest safe speed of `scene`'s robot and covering against `limits` (scene's speed is
+/// ignored), in closed form on the energy balance.
+/// @throws std::invalid_argument as JudgeBodyContact.
+BodyRegionSpeedLimit MaxSafeSpeed(const BodyContactScene& scene,
+                                  const materials::BodyLimits& limits,
+                                  const BodyRegionOptions& options = {});
+
+/// One row of the all-regions table: one area of one region, bare and with the covering.
+struct BodyRegionSpeedLimitRow {
+  materials::BodyLimits limits;
+  BodyRegionSpeedLimit bare;
+  /// With the scene's covering; empty when the scene has none.
+  std::optional<BodyRegionSpeedLimit> covered;
+  /// covered / bare speed [-] (empty without a covering or a bare limit of 0).
+  std::optional<double> gain() const noexcept;
+};
+
+/// The table for every entry of `regions` (e.g. BodyRegionTable::AllLimits(contact)), in order.
+/// About 1 µs per row.
+/// @throws std::invalid_argument as JudgeBodyContact.
+std::vector<BodyRegionSpeedLimitRow> BodyRegionSpeedLimitTable(
+    const BodyContactScene& scene, std::span<const materials::BodyLimits> regions,
+    const BodyRegionOptions& options = {});
+
+/// `covopt optimize --body-region ... --speed V`: the covering (catalog material and
+/// thickness) that lets the robot reach the speed for every region named.
+struct BodyRegionDesignRequest {
+  /// The robot (mass, radius, contact area) and the target speed; its covering is designed.
+  BodyContactScene scene;
+  /// The regions (areas, contact types) to protect; may be empty when the head is judged.
+  std::vector<materials::BodyLimits> regions;
+  /// Set: the head too, judged by Park et al.'s skin model (its robot mass, radius and speed
+  /// are taken from `scene`; its covering from each candidate).
+  std::optional<Scene> head;
+  /// The candidates, in catalog order (SelectCandidates).
+  std::vector<CandidateMaterial> materials;
+  /// Safety factor, criterion, crushing, unknown strengths.
+  DesignRule rule;
+  /// Thickness range [m] scanned per material, and the resolution of the bisection.
+  double min_thickness_m = 0.1e-3;
+  double max_thickness_m = 0.05;
+  int thickness_scan_points = 250;
+  double thickness_resolution_m = 1e-6;
+  /// The recommended thickness is rounded up to a multiple of this [m] (0: not rounded) and
+  /// checked again.
+  double thickness_step_m = 0.5e-3;
+};
+
+/// One candidate material's outcome.
+struct BodyRegionDesignCandidate {
+  CandidateMaterial material;
+  /// The thinnest admissible thickness [m] (rounded up to the step), if any in range.
+  std::optional<double> thickness_m;
+  /// At that thickness (or at the thickest scanned, when none is admissible): one judgement
+  /// per region, in the request's order.
+  std::vector<BodyRegionJudgement> regions;
+  /// The head's score at that thickness, when the head is judged.
+  std::optional<DesignScore> head;
+  /// The governing ratio over every region (and the head), unscaled, and where it is.
+  double governing_ratio = 0.0;
+  std::string governing_where;  ///< e.g. "hands-fingers (palm-dominant): pressure"
+  bool admissible() const noexcept { return thickness_m.has_value(); }
+};
+
+/// The answer of DesignForBodyRegions.
+struct BodyRegionDesignResult {
+  /// One sentence: "Recommended: ... at 6.5 mm (every region safe at 1.2 m/s)", or why not.
+  std::string message;
+  /// Every region's verdict for the bare robot at the speed (and the head's, if judged).
+  std::vector<BodyRegionJudgement> bare_robot;
+  std::optional<DesignScore> bare_head;
+  bool bare_robot_safe = false;
+  /// Admissible first (thinnest, then by margin), then the others by governing ratio.
+  std::vector<BodyRegionDesignCandidate> candidates;
+  std::optional<std::size_t> recommendation;
+  /// What every verdict covers: one line per standard or model applied.
+  std::vector<std::string> scope;
+  std::vector<std::string> warnings;
+};
+
+/// Designs the covering for every region named in `request`.
+/// @throws std::invalid_argument naming the field for bad input (no regions and no head, a
+///         flat robot, an out-of-range thickness range or speed).
+BodyRegionDesignResult DesignForBodyRegions(const BodyRegionDesignRequest& request);
+
+}  // namespace covopt::optim
