@@ -1,6 +1,6 @@
 // The time paths' state vectors: SUNDIALS' serial N_Vector with fixed-length kernels in its
-// operations table (see fixed_length_vector.hpp), for the δ-only path's 3 entries and the
-// extended path's 7.
+// operations table (see fixed_length_vector.hpp), for the body-contact time path's 2 entries,
+// the δ-only path's 3 and the extended path's 7.
 //
 // Why: the generic serial kernels loop over a run-time length and, in the fused operations,
 // over the vectors first; for a few entries the loop set-up dominates (the profile of the
@@ -271,13 +271,15 @@ void SetFixedLengthKernels(N_Vector_Ops ops) {
 }  // namespace
 
 N_Vector MakeFixedLengthVector(int length, SUNContext context) {
-  if (length != 3 && length != 7) return nullptr;
+  if (length != 2 && length != 3 && length != 7) return nullptr;
   N_Vector v = N_VNew_Serial(length, context);
   if (!v) return nullptr;
   // The serial vector's fused and vector-array operations (used by CVODE's Adams history
   // updates and ARKODE's stage sums); those not replaced below stay the serial ones.
   N_VEnableFusedOps_Serial(v, SUNTRUE);
-  if (length == 3) {
+  if (length == 2) {
+    SetFixedLengthKernels<2>(v->ops);
+  } else if (length == 3) {
     SetFixedLengthKernels<3>(v->ops);
   } else {
     SetFixedLengthKernels<7>(v->ops);

@@ -1,0 +1,368 @@
+// The time path of the body-contact model (body_contact_time_path.hpp): the covering and the
+// body spring in series, integrated in the covering's (or the body's) deflection so that F(δ)
+// is never inverted, by any integrator of the Stepper abstraction (stepper.hpp) on a 2-entry
+// state, with a restart where the covering bottoms out and where it comes back.
+#include "body_contact_time_path.hpp"
+
+#include <nvector/nvector_serial.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include "numeric_format.hpp"
+#include "stepper.hpp"
+#include "time_path_run.hpp"
+
+namespace covopt::internal {
+namespace {
+
+/// Entries of the state vector.
+enum StateEntry : int {
+  kDeflection = 0,  // q: δ_c in phase 1, δ_b in phase 2 [m]
+  kApproachRate,    // δ' [m/s]
+  kStateSize,
+};
+
+/// Root functions, in the order (and with the directions) of stepper.hpp's kRootDirections.
+enum EventEntry : int {
+  kBottomsOut = 0,  // phase 1: q - travel, rising: restart in phase 2
+  kLowerEnd,        // phase 1: q falling through 0 (separation); phase 2: q - F_b/k_H falling
+                    // (back to phase 1), or q falling through 0 bare (separation)
+  kTurn,            // δ' falling through 0: maximum compression
+  kEventCount,
+};
+constexpr std::array<int, kEventCount> kEventDirections{+1, -1, -1};
+
+/// The phases of the contact.
+enum class Phase { kCovering, kBody };
+
+/// What the C callbacks see: the constants of the model and the phase.
+struct Run {
+  Phase phase = Phase::kBody;
+  bool covered = false;
+  double covering_stiffness = 0.0;  // K_c [N/m^1.5]
+  double body_stiffness = 0.0;      // k_H [N/m]
+  double inverse_mass = 0.0;        // 1/mu [1/kg]
+  double series_factor = 0.0;       // 1.5 K_c/k_H [1/m^0.5]: dδ/dδ_c = 1 + this sqrt(δ_c)
+  double travel_m = 0.0;            // the covering's travel 0.8 b_c [m]
+  double body_at_bottom_m = 0.0;    // F_b/k_H: δ_b where the covering bottoms out [m]
+  double root_floor_m = 0.0;        // floor on δ_c in the Jacobian (sqrt(δ_c) in a denominator)
+};
+
+/// The contact at one state: its force, the two deflections and the approach.
+struct Contact {
+  double force_N = 0.0;
+  double covering_m = 0.0;  // δ_c
+  double body_m = 0.0;      // δ_b
+  double approach_m = 0.0;  // δ = δ_c + δ_b
+};
+
+/// Phase 1 takes δ_c clamped at 0 (an overshooting step past separation never takes the pow of
+/// a negative base); phase 2 is linear and continued past its lower end as it is.
+Contact ContactAt(const Run& run, const sunrealtype* y) noexcept {
+  Contact c;
+  if (run.phase == Phase::kCovering) {
+    c.covering_m = std::max(y[kDeflection], 0.0);
+    c.force_N = run.covering_stiffness * c.covering_m * std::sqrt(c.covering_m);
+    c.body_m = c.force_N / run.body_stiffness;
+  } else {
+    c.covering_m = run.travel_m;  // 0 bare
+    c.body_m = y[kDeflection];
+    c.force_N = run.body_stiffness * c.body_m;
+  }
+  c.approach_m = c.covering_m + c.body_m;
+  return c;
+}
+
+int BodyRightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) {
+  const auto& run = *static_cast<const Run*>(user_data);
+  const sunrealtype* s = NV_DATA_S(y);
+  sunrealtype* rate = NV_DATA_S(ydot);
+  if (run.phase == Phase::kCovering) {
+    const double q = std::max(s[kDeflection], 0.0);
+    const double root = std::sqrt(q);
+    rate[kDeflection] = s[kApproachRate] / (1.0 + run.series_factor * root);
+    rate[kApproachRate] = -run.covering_stiffness * q * root * run.inverse_mass;
+  } else {
+    rate[kDeflection] = s[kApproachRate];
+    rate[kApproachRate] = -run.body_stiffness * s[kDeflection] * run.inverse_mass;
+  }
+  return std::isfinite(rate[kDeflection]) && std::isfinite(rate[kApproachRate]) ? 0 : 1;  // 1: recoverable
+}
+
+int BodyRootFunctions(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user_data) {
+  const auto& run = *static_cast<const Run*>(user_data);
+  const sunrealtype* s = NV_DATA_S(y);
+  const bool covering = run.phase == Phase::kCovering;
+  g[kBottomsOut] = covering ? s[kDeflection] - run.travel_m : -1.0;
+  g[kLowerEnd] = s[kDeflection] - (covering ? 0.0 : run.body_at_bottom_m);
+  g[kTurn] = s[kApproachRate];
+  return 0;
+}
+
+/// The analytic Jacobian for the implicit methods; in phase 1 d/dq of δ'/(1 + c sqrt(q)) is
+/// unbounded at q = 0, so q is floored there (Newton's matrix need only be approximate).
+int BodyJacobian(sunrealtype /*t*/, N_Vector y, N_Vector /*fy*/, SUNMatrix jac, void* user_data,
+                 N_Vector, N_Vector, N_Vector) {
+  const auto& run = *static_cast<const Run*>(user_data);
+  const sunrealtype* s = NV_DATA_S(y);
+  if (run.phase == Phase::kCovering) {
+    const double root = std::sqrt(std::max(s[kDeflection], run.root_floor_m));
+    const double divisor = 1.0 + run.series_factor * root;
+    SM_ELEMENT_D(jac, 0, 0) = -s[kApproachRate] * run.series_factor / (2.0 * root * divisor * divisor);
+    SM_ELEMENT_D(jac, 0, 1) = 1.0 / divisor;
+    SM_ELEMENT_D(jac, 1, 0) = -1.5 * run.covering_stiffness * root * run.inverse_mass;
+  } else {
+    SM_ELEMENT_D(jac, 0, 0) = 0.0;
+    SM_ELEMENT_D(jac, 0, 1) = 1.0;
+    SM_ELEMENT_D(jac, 1, 0) = -run.body_stiffness * run.inverse_mass;
+  }
+  SM_ELEMENT_D(jac, 1, 1) = 0.0;
+  return 0;
+}
+
+/// "time path (arkode-erk54, rtol 1e-08)", with the absolute tolerance when it differs.
+std::string MethodText(const TimeIntegrationOptions& o) {
+  std::string text = "time path (" + std::string(ToString(o.method)) + ", rtol " +
+                     FormatNumber(o.relative_tolerance);
+  if (o.absolute_tolerance > 0.0 && o.absolute_tolerance != o.relative_tolerance) {
+    text += ", atol " + FormatNumber(o.absolute_tolerance);
+  }
+  return text + ")";
+}
+
+/// One run: the event loop over the integrator's steps, the history and the peaks.
+class BodyContactRun {
+ public:
+  BodyContactRun(const BodyContactModel& model, const TimeIntegrationOptions& options,
+                 double history_samples, Stepper& stepper, Run& run, StepperWorkspace& workspace)
+      : record_(options.record_history),
+        model_(model),
+        options_(options),
+        stepper_(stepper),
+        run_(run),
+        state_(workspace.state),
+        tolerances_(workspace.absolute_tolerances),
+        dense_output_(workspace.dense_output),
+        log_(workspace.log),
+        y_(N_VGetArrayPointer(workspace.state)),
+        v0_(model.scene().speed_m_per_s) {
+    SetUpRun();
+    SetScales(record_ ? history_samples : 0.0);
+    result_.method = MethodText(options);
+    result_.reduced_mass_kg = model.reduced_mass_kg();
+    result_.energy_transferred_J = model.impact_energy_J();
+  }
+
+  BodyContactResult Integrate() {
+    y_[kDeflection] = 0.0;
+    y_[kApproachRate] = v0_;
+    Record(false);
+    int flag = stepper_.BeginRun(0.0, state_);
+    if (flag == kStepTaken) flag = StartInterval();
+    long steps = 0;
+    while (flag >= 0 && !separated_) {
+      flag = stepper_.Step(t_ + horizon_s_, state_, &t_);
+      if (flag == kStepTaken) {
+        Record(true);
+        if (++steps >= options_.max_steps) break;
+        continue;
+      }
+      if (flag != kRootFound) break;
+      std::array<int, kEventCount> found{};
+      stepper_.RootInfo(found.data());
+      Record(true);
+      flag = OnRoot(found);
+    }
+    if (flag < 0) {
+      Fail(flag == kTooMuchWork ? SolveStatus::kStepLimit : SolveStatus::kSolverFailure,
+           std::string(ToString(options_.method)) + " returned " + stepper_.FlagName(flag));
+    } else if (!separated_ && steps >= options_.max_steps) {
+      Fail(SolveStatus::kStepLimit, "step limit of " + std::to_string(options_.max_steps) +
+                                        " steps reached before separation");
+    } else if (!separated_ || !turned_) {
+      Fail(SolveStatus::kEventMissed,
+           "the integration ended without locating maximum compression and separation");
+    }
+    return std::move(result_);
+  }
+
+ private:
+  void SetUpRun() {
+    run_ = Run{};
+    run_.covered = model_.has_covering();
+    run_.phase = run_.covered ? Phase::kCovering : Phase::kBody;
+    run_.covering_stiffness = model_.covering_stiffness();
+    run_.body_stiffness = model_.scene().body_stiffness_N_per_m;
+    run_.inverse_mass = 1.0 / model_.reduced_mass_kg();
+    run_.series_factor = 1.5 * run_.covering_stiffness / run_.body_stiffness;
+    run_.travel_m = model_.covering_travel_m();
+    run_.body_at_bottom_m = run_.covered ? model_.bottom_out_force_N() / run_.body_stiffness : 0.0;
+  }
+
+  /// The natural scales of q in each phase and of δ' (v0), from the exact peak force: they
+  /// set the absolute tolerances, the first step's orientation and the history's spacing.
+  void SetScales(double history_samples) {
+    const double force_N = model_.ForceAtEnergy(model_.impact_energy_J());
+    const double approach_m = model_.ApproachAtForce(force_N);
+    const double atol =
+        options_.absolute_tolerance > 0.0 ? options_.absolute_tolerance : options_.relative_tolerance;
+    covering_tolerance_m_ = atol * model_.CoveringDeflectionAtForce(force_N);
+    body_tolerance_m_ = atol * force_N / run_.body_stiffness;
+    rate_tolerance_ = atol * v0_;
+    run_.root_floor_m = 1e-12 * run_.travel_m;
+    horizon_s_ = 1e3 * approach_m / v0_;  // only orients the first step (one-step mode)
+    if (history_samples > 0.0) {
+      // The contact lasts pi sqrt(mu/k_H) bare; with a covering at least 2 δ_max/v0 (|δ'| <= v0
+      // throughout), so spacing by that gives at least the samples asked for (about 1.5 times).
+      const double duration_s = run_.covered
+                                    ? 2.0 * approach_m / v0_
+                                    : std::numbers::pi / std::sqrt(run_.body_stiffness * run_.inverse_mass);
+      history_interval_s_ = duration_s / history_samples;
+    }
+  }
+
+  /// The tolerances of the current phase and a first step the integrator estimates.
+  int StartInterval() {
+    sunrealtype* tolerance = N_VGetArrayPointer(tolerances_);
+    tolerance[kDeflection] = run_.phase == Phase::kCovering ? covering_tolerance_m_ : body_tolerance_m_;
+    tolerance[kApproachRate] = rate_tolerance_;
+    int flag = stepper_.SetTolerances(options_.relative_tolerance, tolerances_);
+    if (flag == kStepTaken) flag = stepper_.SetInitStep(0.0);
+    return flag;
+  }
+
+  /// Continues in `phase` from deflection q at the current δ': the integrator restarts.
+  int Switch(Phase phase, double q) {
+    run_.phase = phase;
+    y_[kDeflection] = q;
+    int flag = stepper_.ReInit(t_, state_);
+    if (flag == kStepTaken) flag = StartInterval();
+    return flag;
+  }
+
+  int OnRoot(const std::array<int, kEventCount>& found) {
+    if (found[kTurn] && !turned_) Peaks();
+    if (found[kBottomsOut]) return Switch(Phase::kBody, run_.body_at_bottom_m);
+    if (found[kLowerEnd]) {
+      if (run_.phase == Phase::kBody && run_.covered) return Switch(Phase::kCovering, run_.travel_m);
+      separated_ = true;
+      result_.contact_duration_s = t_;
+      result_.rebound_speed_m_per_s = -y_[kApproachRate];
+    }
+    return kRootFound;
+  }
+
+  /// Maximum compression: the peaks from the state (δ' = 0 here).
+  void Peaks() {
+    turned_ = true;
+    const Contact c = ContactAt(run_, y_);
+    const bool bottomed = run_.covered && run_.phase == Phase::kBody;
+    result_.peak_force_N = c.force_N;
+    result_.peak_pressure_Pa = model_.PressureAtForce(c.force_N);
+    result_.covering_deflection_m = run_.covered ? c.covering_m : 0.0;
+    result_.body_deflection_m = c.body_m;
+    result_.max_approach_m = c.approach_m;
+    result_.contact_radius_m =
+        run_.covered ? std::sqrt(model_.covering_outer_radius_m() * c.covering_m) : 0.0;
+    result_.body_energy_J = 0.5 * c.force_N * c.body_m;
+    // W_c = 2/5 K_c^(-2/3) F^(5/3) = 2/5 K_c δ_c^2.5
+    result_.covering_energy_J =
+        0.4 * run_.covering_stiffness * c.covering_m * c.covering_m * std::sqrt(c.covering_m);
+    result_.compression_ratio = run_.covered ? (bottomed ? 1.0 : c.covering_m / run_.travel_m) : 0.0;
+    result_.fully_compressed = bottomed;
+  }
+
+  /// Records the state y_ at t_ (with a history); after a step or at a root (`interpolate`),
+  /// first fills the gap since the last sample with the integrator's dense output.
+  void Record(bool interpolate) {
+    if (!record_) return;
+    if (interpolate && !result_.history.empty()) {
+      const double last = result_.history.back().time_s;
+      ForEachFillPoint(t_ - last, history_interval_s_, [&](double since_last) {
+        const double tk = last + since_last;
+        if (stepper_.Interpolate(tk, dense_output_) == kStepTaken) {
+          Push(tk, N_VGetArrayPointer(dense_output_));
+        }
+      });
+    }
+    Push(t_, y_);
+  }
+  void Push(double time, const sunrealtype* s) {
+    const Contact c = ContactAt(run_, s);
+    result_.history.push_back({time, c.approach_m, s[kApproachRate], c.force_N});
+  }
+
+  void Fail(SolveStatus status, std::string what) {
+    // No peaks from a failed run: only the status, the message and the history so far.
+    BodyContactResult failed;
+    failed.status = status;
+    failed.message = std::move(what);
+    if (!log_.empty()) failed.message += " (SUNDIALS: " + log_ + ")";
+    failed.method = std::move(result_.method);
+    failed.reduced_mass_kg = result_.reduced_mass_kg;
+    failed.energy_transferred_J = result_.energy_transferred_J;
+    failed.history = std::move(result_.history);
+    result_ = std::move(failed);
+  }
+
+  const bool record_;
+  const BodyContactModel& model_;
+  const TimeIntegrationOptions& options_;
+  Stepper& stepper_;
+  Run& run_;
+  N_Vector state_;
+  N_Vector tolerances_;
+  N_Vector dense_output_;
+  const std::string& log_;
+  sunrealtype* y_;
+  const double v0_;
+  BodyContactResult result_;
+  double t_ = 0.0;
+  double horizon_s_ = 0.0;
+  double history_interval_s_ = 0.0;
+  double covering_tolerance_m_ = 0.0;
+  double body_tolerance_m_ = 0.0;
+  double rate_tolerance_ = 0.0;
+  bool turned_ = false;
+  bool separated_ = false;
+};
+
+/// The SUNDIALS context, the 2-entry vectors and one integrator per method, made on first use
+/// per thread and reused for every run; members are freed in reverse order (the context last).
+struct Workspace {
+  SundialsContext context;
+  Run run;
+  StepperWorkspace steppers{context.get(), kStateSize, Callbacks(run)};
+  static StepperResources Callbacks(Run& run) {
+    StepperResources resources;
+    resources.user_data = &run;
+    resources.rhs = BodyRightHandSide;
+    resources.roots = BodyRootFunctions;
+    resources.root_directions = kEventDirections;
+    resources.jacobian = BodyJacobian;
+    return resources;
+  }
+};
+
+}  // namespace
+
+BodyContactResult SolveBodyContactTimePath(const BodyContactModel& model, const SolveOptions& options) {
+  TimeIntegrationOptions time_path = options.time_path;
+  time_path.record_history = options.record_history;
+  time_path.history_max_interval_s = 0.0;  // the spacing comes from history_samples_per_contact
+  ValidateTimeIntegrationOptions(time_path, "time_path.");
+  thread_local Workspace workspace;
+  StepperWorkspace& s = workspace.steppers;
+  s.log.clear();
+  BodyContactRun run(model, time_path, options.history_samples_per_contact,
+                     s.StepperFor(time_path.method), workspace.run, s);
+  return run.Integrate();
+}
+
+}  // namespace covopt::internal
