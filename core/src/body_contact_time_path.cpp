@@ -139,11 +139,11 @@ std::string MethodText(const TimeIntegrationOptions& o) {
 /// One run: the event loop over the integrator's steps, the history and the peaks.
 class BodyContactRun {
  public:
-  BodyContactRun(const BodyContactModel& model, const TimeIntegrationOptions& options,
-                 double history_samples, Stepper& stepper, Run& run, StepperWorkspace& workspace)
+  BodyContactRun(const BodyContactModel& model, const SolveOptions& options, Stepper& stepper,
+                 Run& run, StepperWorkspace& workspace)
       : record_(options.record_history),
         model_(model),
-        options_(options),
+        options_(options.time_path),
         stepper_(stepper),
         run_(run),
         state_(workspace.state),
@@ -153,8 +153,8 @@ class BodyContactRun {
         y_(N_VGetArrayPointer(workspace.state)),
         v0_(model.scene().speed_m_per_s) {
     SetUpRun();
-    SetScales(record_ ? history_samples : 0.0);
-    result_.method = MethodText(options);
+    SetScales(record_ ? options.history_samples_per_contact : 0.0);
+    result_.method = MethodText(options_);
     result_.reduced_mass_kg = model.reduced_mass_kg();
     result_.energy_transferred_J = model.impact_energy_J();
   }
@@ -353,15 +353,10 @@ struct Workspace {
 }  // namespace
 
 BodyContactResult SolveBodyContactTimePath(const BodyContactModel& model, const SolveOptions& options) {
-  TimeIntegrationOptions time_path = options.time_path;
-  time_path.record_history = options.record_history;
-  time_path.history_max_interval_s = 0.0;  // the spacing comes from history_samples_per_contact
-  ValidateTimeIntegrationOptions(time_path, "time_path.");
   thread_local Workspace workspace;
   StepperWorkspace& s = workspace.steppers;
   s.log.clear();
-  BodyContactRun run(model, time_path, options.history_samples_per_contact,
-                     s.StepperFor(time_path.method), workspace.run, s);
+  BodyContactRun run(model, options, s.StepperFor(options.time_path.method), workspace.run, s);
   return run.Integrate();
 }
 

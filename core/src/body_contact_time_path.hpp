@@ -1,21 +1,25 @@
 #pragma once
-// Private: the time path of the body-contact model (covopt/core/body_contact.hpp), which
-// Solve(BodyContactModel) calls for PathChoice::kTimePath and for a history.
+// Private: the time path of the body-region contact (docs/model.md §13), and the peaks of a
+// contact at a given peak force, shared by both paths.
 #include "covopt/core/body_contact.hpp"
 #include "covopt/core/solve.hpp"
 
 namespace covopt::internal {
 
+/// Every peak quantity of `model`'s contact when its peak force is `force_N` [N] (status,
+/// method, duration and rebound speed are left for the caller).
+BodyContactResult PeaksAtForce(const BodyContactModel& model, double force_N);
+
 /// Integrates mu δ'' = -F with the covering (Hertz, K_c) and the body spring k_H in series,
 /// by SUNDIALS (options.time_path: method, tolerances, max_steps), without inverting F(δ):
 ///   phase 1 (the covering not bottomed out): q = δ_c,  q' = δ' / (1 + 1.5 K_c sqrt(q)/k_H),
 ///            (δ')' = -K_c q^1.5 / mu;
-///   phase 2 (bottomed out at q = travel, or the bare robot): q = δ_b,  q' = δ',
+///   phase 2 (bottomed out at q = 0.8 b_c, or the bare robot): q = δ_b,  q' = δ',
 ///            (δ')' = -k_H q / mu,
-/// with events at the phase switch (both ways: restart), maximum compression (δ' = 0: the
-/// peaks) and separation (δ = 0: duration and rebound speed). With options.record_history,
-/// (t, δ, δ', F) at every step and event, and by dense output at least
-/// options.history_samples_per_contact samples over the contact. Failures (step limit,
+/// with events at the phase switch (both ways: a restart), maximum compression (δ' = 0: the
+/// peaks, read from the state) and separation (δ = 0: duration and rebound speed). With
+/// options.record_history, (t, δ, δ', F) at every step and event and, by dense output, at
+/// least options.history_samples_per_contact samples over the contact. Failures (step limit,
 /// integrator errors, an event not located) come back as the result's status and message,
 /// with no peaks. `options` are validated by the caller (Solve).
 BodyContactResult SolveBodyContactTimePath(const BodyContactModel& model, const SolveOptions& options);
