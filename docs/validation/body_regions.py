@@ -167,27 +167,27 @@ def mm(x):
 def report_contact(title, c, v, F_lim, p_lim, sf=1.0, time_path=True):
     F = c.peak_force(v)
     print(f"-- {title}")
-    print(f"   mu = {c.mu:.6g} kg, k_H = {c.k / 1e3:g} N/mm, E = 1/2 mu v^2 = {0.5 * c.mu * v * v:.6g} J at v = {v} m/s")
+    print(f"   mu = {c.mu:.9g} kg, k_H = {c.k / 1e3:g} N/mm, E = 1/2 mu v^2 = {0.5 * c.mu * v * v:.9g} J at v = {v} m/s")
     if c.covered:
-        print(f"   K_c = {c.Kc:.6g} N/m^1.5, R_c = {mm(c.Rc):g} mm, travel 0.8 b_c = {mm(c.travel):g} mm, F_b = {c.Fb:.6g} N")
+        print(f"   K_c = {c.Kc:.9g} N/m^1.5, R_c = {mm(c.Rc):g} mm, travel 0.8 b_c = {mm(c.travel):g} mm, F_b = {c.Fb:.9g} N")
     p = c.pressure(F)
     dc = c.covering_deflection(F)
-    line = f"   F_max = {F:.6g} N"
+    line = f"   F_max = {F:.9g} N"
     if p is not None:
-        line += f", p_max = {p / 1e6:.6g} MPa ({p / 1e4:.5g} N/cm^2)"
+        line += f", p_max = {p / 1e6:.9g} MPa ({p / 1e4:.5g} N/cm^2)"
     if c.covered:
-        line += (f", delta_c = {mm(dc):.6g} mm, compression ratio = {dc / c.travel:.6g}, "
-                 f"a = {mm(c.contact_radius(F)):.6g} mm, fully compressed = {F > c.Fb}")
+        line += (f", delta_c = {mm(dc):.9g} mm, compression ratio = {dc / c.travel:.9g}, "
+                 f"a = {mm(c.contact_radius(F)):.9g} mm, fully compressed = {F > c.Fb}")
     print(line)
-    print(f"   body deflection F/k = {mm(F / c.k):.6g} mm, energy in body {F * F / (2 * c.k):.6g} J, in covering {c.covering_energy(F):.6g} J")
+    print(f"   body deflection F/k = {mm(F / c.k):.9g} mm, energy in body {F * F / (2 * c.k):.9g} J, in covering {c.covering_energy(F):.9g} J")
     if time_path:
         Ft = c.time_path_peak(v)
         print(f"   time path (RK4): F_max = {Ft:.9g} N, relative difference {abs(Ft / F - 1):.1e}")
     vmax, binding, speeds = c.speed_limit(F_lim, p_lim, sf)
     forces = c.limit_forces(F_lim, p_lim, sf)
-    detail = ", ".join(f"{n} {speeds[n]:.6g} m/s (F* {forces[n]:.6g} N)" for n in speeds)
+    detail = ", ".join(f"{n} {speeds[n]:.9g} m/s (F* {forces[n]:.9g} N)" for n in speeds)
     print(f"   limits F_lim {F_lim:g} N, p_lim {p_lim / 1e4:g} N/cm^2, SF {sf:g}: {detail}")
-    print(f"   v_max = {vmax:.6g} m/s, limited by {binding}")
+    print(f"   v_max = {vmax:.9g} m/s, limited by {binding}")
     return vmax
 
 
