@@ -293,6 +293,12 @@ def part2():
         need = (g * g - 1.0) / 0.8
         print(f"   gain {g:g}: delta_c = {need:.4g} F_lim/k;"
               f" hand 280 N on 75 N/mm: {mm(need * 280 / 75e3):.3g} mm (thickness >= {mm(need * 280 / 75e3 / 0.8):.3g} mm)")
+    print("   the pads of S2 (40 % at a bare 200 N) at a force limit of 280 N, no bottoming out:")
+    for k in (10e3, 25e3, 75e3):
+        F, F0r = 120.0, 200.0
+        Kc = (0.4 * F ** (5.0 / 3.0) * 2.0 * k / (F0r * F0r - F * F)) ** 1.5
+        dc, db = (280.0 / Kc) ** (2.0 / 3.0), 280.0 / k
+        print(f"   k {k / 1e3:g} N/mm: delta_c {mm(dc):.3g} mm, delta_b {mm(db):.3g} mm, gain {math.sqrt(1 + 0.8 * dc / db):.3f}")
 
 
 if __name__ == "__main__":
