@@ -123,6 +123,8 @@ class BodyContactModel {
   double outer_radius_m_ = 0.0;
   double travel_m_ = 0.0;
   double bottom_out_force_N_ = 0.0;
+  double compliance_factor_ = 0.0;  // K_c^(-2/3) [m/N^(2/3)]
+  double bottom_out_root_ = 0.0;    // F_b^(1/3) [N^(1/3)]
 };
 
 /// One sample of a body-contact history (time path).
@@ -158,10 +160,11 @@ struct BodyContactResult {
   double compression_ratio = 0.0;
   /// The covering bottomed out (F_max > F_b): the robot pressed on the region through it.
   bool fully_compressed = false;
-  /// Contact duration [s] (time path only; the bare exact value is pi sqrt(mu/k_H); NaN on the
-  /// exact path with a covering).
-  double contact_duration_s = 0.0;
-  /// Speed of separation [m/s] (time path only; equal to v for this conservative contact).
+  /// Contact duration [s]: the time path's; on the exact path the bare robot's pi sqrt(mu/k_H),
+  /// and empty with a covering (not computed: the peaks need no integration).
+  std::optional<double> contact_duration_s;
+  /// Speed of separation [m/s]: the time path's; the impact speed on the exact path (the
+  /// contact is conservative).
   double rebound_speed_m_per_s = 0.0;
   /// The time-path history (with SolveOptions::record_history).
   std::vector<BodyContactSample> history;
