@@ -4,11 +4,13 @@
 #include "covopt/optim/body_region_check.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -55,28 +57,46 @@ void ValidateOptions(const BodyRegionOptions& options) {
   if (options.material) ValidateMaterial(*options.material);
 }
 
-/// The criteria of `rule` that count for one contact, in words, and the safety factor:
-/// "force, pressure, the covering not fully compressed, not crushed; safety factor 2".
-std::string CriteriaText(const DesignRule& rule, bool covered, bool pressure_evaluated, CrushCheck crush) {
-  std::string text = "criteria: force";
-  if (pressure_evaluated) text += ", pressure";
-  if (covered && rule.compression_counts()) text += ", the covering not fully compressed";
+/// What a judgement's scope is built from: the limits' Describe() and the safety factor as
+/// text, made once per region (the speed limits and the table judge each region several times).
+struct ScopeText {
+  std::string description;
+  std::string safety_factor;
+};
+
+ScopeText ScopeTextOf(const materials::BodyLimits& limits, const DesignRule& rule) {
+  return {limits.Describe(), FormatSignificant(rule.safety_factor)};
+}
+
+/// The scope of one contact: the limits, then the criteria of `rule` that count, in words,
+/// and the safety factor: "...: 280 N, 240 N/cm²; criteria: force, pressure, the covering not
+/// fully compressed, the covering not crushed; safety factor 2 on each".
+std::string ScopeOf(const ScopeText& text, const DesignRule& rule, bool covered, bool pressure_evaluated,
+                    CrushCheck crush) {
+  std::string scope;
+  scope.reserve(text.description.size() + 192);
+  scope += text.description;
+  scope += "; criteria: force";
+  if (pressure_evaluated) scope += ", pressure";
+  if (covered && rule.compression_counts()) scope += ", the covering not fully compressed";
   if (covered) {
     switch (crush) {
       case CrushCheck::kChecked:
-        text += rule.crushing_allowed ? ", crushing allowed (a sacrificial liner)" : ", the covering not crushed";
+        scope += rule.crushing_allowed ? ", crushing allowed (a sacrificial liner)" : ", the covering not crushed";
         break;
       case CrushCheck::kUnknownStrength:
-        text += rule.refuses_unknown_strength() ? "; the covering's strength is unknown: refused"
-                                                : "; the covering's strength is unknown: unverified for crushing";
+        scope += rule.refuses_unknown_strength() ? "; the covering's strength is unknown: refused"
+                                                 : "; the covering's strength is unknown: unverified for crushing";
         break;
-      case CrushCheck::kDoesNotCrush: text += " (the covering does not crush)"; break;
-      case CrushCheck::kNoMaterial: text += " (no material given: crushing not checked)"; break;
+      case CrushCheck::kDoesNotCrush: scope += " (the covering does not crush)"; break;
+      case CrushCheck::kNoMaterial: scope += " (no material given: crushing not checked)"; break;
     }
   }
-  text += "; safety factor " + FormatSignificant(rule.safety_factor) + " on each";
-  if (!pressure_evaluated) text += "; pressure not evaluated: no contact area given";
-  return text;
+  scope += "; safety factor ";
+  scope += text.safety_factor;
+  scope += " on each";
+  if (!pressure_evaluated) scope += "; pressure not evaluated: no contact area given";
+  return scope;
 }
 
 /// The crush check of `material` at a covering stress, by CheckCrush's rule.
@@ -89,9 +109,9 @@ void ApplyCrushCheck(const CandidateMaterial& material, double stress_Pa, BodyRe
 }
 
 /// JudgeBodyContact on a validated model (the region's fields already in it); the scope is
-/// written only when `description` (limits.Describe()) is given.
+/// written only when `text` is given.
 BodyRegionJudgement Judge(const BodyContactModel& model, const materials::BodyLimits& limits,
-                          const BodyRegionOptions& options, const std::string* description) {
+                          const BodyRegionOptions& options, const ScopeText* text) {
   BodyRegionJudgement j;
   j.limits = limits;
   j.contact = Solve(model);
@@ -120,9 +140,7 @@ BodyRegionJudgement Judge(const BodyContactModel& model, const materials::BodyLi
   j.margin = 1.0 - sf * j.governing_ratio;
   j.admissible = sf * j.governing_ratio <= 1.0 && !(compression_counts && c.fully_compressed) &&
                  !(j.crush_check == CrushCheck::kUnknownStrength && rule.refuses_unknown_strength());
-  if (description) {
-    j.scope = *description + "; " + CriteriaText(rule, covered, j.pressure_ratio.has_value(), j.crush_check);
-  }
+  if (text) j.scope = ScopeOf(*text, rule, covered, j.pressure_ratio.has_value(), j.crush_check);
   return j;
 }
 
@@ -151,9 +169,9 @@ BodyContactScene AtSpeed(BodyContactScene scene, double speed_m_per_s) {
   return scene;
 }
 
-/// MaxSafeSpeed with the scene already carrying the region, and the description given.
+/// MaxSafeSpeed with the scene already carrying the region, and the scope's text given.
 BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, const materials::BodyLimits& limits,
-                                const BodyRegionOptions& options, const std::string& description) {
+                                const BodyRegionOptions& options, const ScopeText& text) {
   const BodyContactModel model = BodyContactModel::FromScene(AtSpeed(region_scene, 1.0));
   const DesignRule& rule = options.rule;
   const double sf = rule.safety_factor;
@@ -184,22 +202,30 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
   }
 
   BodyRegionSpeedLimit out;
-  const std::string where = RegionName(limits) + ", " + std::string(ToString(limits.contact)) + ": ";
+  // "chest (sternum), transient: <what> (<the limits>)", in one allocation.
+  const auto message = [&](std::string_view what) {
+    std::string m;
+    m.reserve(limits.region->name.size() + limits.area->name.size() + what.size() + text.description.size() + 24);
+    m.append(limits.region->name).append(" (").append(limits.area->name).append("), ");
+    m.append(ToString(limits.contact)).append(": ").append(what);
+    m.append(" (").append(text.description).append(")");
+    return m;
+  };
   double speed = force > 0.0 ? model.SpeedAtPeakForce(force) : 0.0;
   if (!refused && speed > kMaxSpeed_m_per_s) {
     out.status = SpeedLimitStatus::kSafeUpToSearchLimit;
     out.limited_by = BodyLimitKind::kNone;
     out.max_safe_speed_m_per_s = kMaxSpeed_m_per_s;
     out.at_limit = Judge(BodyContactModel::FromScene(AtSpeed(region_scene, kMaxSpeed_m_per_s)), limits, options,
-                         &description);
-    out.message = where + "safe up to the model's 100 m/s (" + description + ")";
+                         &text);
+    out.message = message("safe up to the model's 100 m/s");
     return out;
   }
   if (!refused && speed >= kMinSpeed_m_per_s) {
     // The limit's own verdict can round past 1/SF (or past the bottoming out at SF 1): step
     // the speed down by a few ulps until it holds.
     for (int i = 0; i <= kMaxNudges; ++i) {
-      out.at_limit = Judge(BodyContactModel::FromScene(AtSpeed(region_scene, speed)), limits, options, &description);
+      out.at_limit = Judge(BodyContactModel::FromScene(AtSpeed(region_scene, speed)), limits, options, &text);
       if (out.at_limit.admissible) break;
       speed *= 1.0 - std::ldexp(1.0, -52 + i);
     }
@@ -207,8 +233,12 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
       out.status = SpeedLimitStatus::kLimited;
       out.max_safe_speed_m_per_s = speed;
       out.limited_by = by;
-      out.message = where + FormatSignificant(speed, 6) + " m/s, limited by " + std::string(ToString(by)) + " (" +
-                    description + ")";
+      // The speed to 6 significant digits, as FormatSignificant writes it, without its buffer.
+      char digits[32];
+      const auto end = std::to_chars(digits, digits + sizeof digits, speed, std::chars_format::general, 6).ptr;
+      std::string what(digits, end);
+      what.append(" m/s, limited by ").append(ToString(by));
+      out.message = message(what);
       return out;
     }
   }
@@ -216,12 +246,11 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
   out.max_safe_speed_m_per_s = 0.0;
   out.limited_by = refused ? BodyLimitKind::kCrush : by;
   out.at_limit =
-      Judge(BodyContactModel::FromScene(AtSpeed(region_scene, kMinSpeed_m_per_s)), limits, options, &description);
-  out.message = where + "no safe speed" +
-                (refused ? ": the compressive strength of '" + options.material->name +
-                               "' is unknown (allow unknown strengths, or crushing, to accept it)"
-                         : ", unsafe even at 1e-06 m/s (" + std::string(ToString(out.limited_by)) + ")") +
-                " (" + description + ")";
+      Judge(BodyContactModel::FromScene(AtSpeed(region_scene, kMinSpeed_m_per_s)), limits, options, &text);
+  out.message = message(refused ? "no safe speed: the compressive strength of '" + options.material->name +
+                                        "' is unknown (allow unknown strengths, or crushing, to accept it)"
+                                  : "no safe speed, unsafe even at 1e-06 m/s (" +
+                                        std::string(ToString(out.limited_by)) + ")");
   return out;
 }
 
@@ -250,14 +279,14 @@ BodyRegionJudgement JudgeBodyContact(const BodyContactScene& scene, const materi
                                      const BodyRegionOptions& options) {
   ValidateOptions(options);
   const BodyContactModel model = BodyContactModel::FromScene(WithRegion(scene, limits));
-  const std::string description = limits.Describe();
-  return Judge(model, limits, options, &description);
+  const ScopeText text = ScopeTextOf(limits, options.rule);
+  return Judge(model, limits, options, &text);
 }
 
 BodyRegionSpeedLimit MaxSafeSpeed(const BodyContactScene& scene, const materials::BodyLimits& limits,
                                   const BodyRegionOptions& options) {
   ValidateOptions(options);
-  return RegionSpeedLimit(WithRegion(scene, limits), limits, options, limits.Describe());
+  return RegionSpeedLimit(WithRegion(scene, limits), limits, options, ScopeTextOf(limits, options.rule));
 }
 
 std::optional<double> BodyRegionSpeedLimitRow::gain() const noexcept {
@@ -274,11 +303,11 @@ std::vector<BodyRegionSpeedLimitRow> BodyRegionSpeedLimitTable(const BodyContact
   std::vector<BodyRegionSpeedLimitRow> rows;
   rows.reserve(regions.size());
   for (const materials::BodyLimits& limits : regions) {
-    const std::string description = limits.Describe();
+    const ScopeText text = ScopeTextOf(limits, options.rule);
     BodyRegionSpeedLimitRow row;
     row.limits = limits;
-    row.bare = RegionSpeedLimit(WithRegion(bare_scene, limits), limits, options, description);
-    if (scene.has_covering()) row.covered = RegionSpeedLimit(WithRegion(scene, limits), limits, options, description);
+    row.bare = RegionSpeedLimit(WithRegion(bare_scene, limits), limits, options, text);
+    if (scene.has_covering()) row.covered = RegionSpeedLimit(WithRegion(scene, limits), limits, options, text);
     rows.push_back(std::move(row));
   }
   return rows;
@@ -311,13 +340,13 @@ void ValidateRequest(const BodyRegionDesignRequest& r) {
   }
 }
 
-/// The request's regions with their scenes and descriptions, judged together.
+/// The request's regions with their scenes and scope texts, judged together.
 class RegionSet {
  public:
   explicit RegionSet(const BodyRegionDesignRequest& request) : request_(request) {
     for (const materials::BodyLimits& limits : request.regions) {
       scenes_.push_back(WithRegion(request.scene, limits));
-      descriptions_.push_back(limits.Describe());
+      texts_.push_back(ScopeTextOf(limits, request.rule));
     }
     if (request.head) {
       Scene head = *request.head;
@@ -343,7 +372,7 @@ class RegionSet {
       BodyContactScene scene = scenes_[i];
       scene.covering = covering;
       v.regions.push_back(Judge(BodyContactModel::FromScene(scene), request_.regions[i], options,
-                                scopes ? &descriptions_[i] : nullptr));
+                                scopes ? &texts_[i] : nullptr));
       v.admissible = v.admissible && v.regions.back().admissible;
     }
     if (head_oracle_) {
@@ -375,7 +404,7 @@ class RegionSet {
  private:
   const BodyRegionDesignRequest& request_;
   std::vector<BodyContactScene> scenes_;
-  std::vector<std::string> descriptions_;
+  std::vector<ScopeText> texts_;
   std::optional<ExactPathOracle> head_oracle_;
 };
 
