@@ -193,7 +193,7 @@ TEST_CASE("the closed-form speed limit agrees with a bisection on JudgeBodyConta
   CHECK(seen.count(co::BodyLimitKind::kCrush) == 1);
 }
 
-TEST_CASE("a softer covering raises the speed limit while force binds; pressure binds stiff ones, compression soft ones",
+TEST_CASE("a softer covering raises the speed limit while force binds, pressure binds stiff ones, compression soft ones",
           "[body_region]") {
   const BodyLimits chest = Table().Limits("chest", "", ContactType::kTransient);
   const BodyContactScene robot = Robot(10.0, 0.1);
