@@ -248,8 +248,16 @@ class TableReader {
     return value;
   }
 
+  /// "<kind> 'name'" when the table has a string name, else "<kind> #index".
+  static std::string Label(const toml::table& table, std::string_view kind, std::size_t index) {
+    if (const auto* name = table.get_as<std::string>("name")) {
+      return std::string(kind) + " '" + name->get() + "'";
+    }
+    return std::string(kind) + " #" + std::to_string(index);
+  }
+
   BodyRegion ReadRegion(const toml::table& table, std::size_t index) {
-    std::string label = "region #" + std::to_string(index);
+    std::string label = Label(table, "region", index);
     RejectUnknownKeys(table, kRegionKeys, label, "a [[region]]");
     BodyRegion region;
     region.name = Name(table, label, kRegionRequired);
@@ -308,7 +316,7 @@ class TableReader {
 
   BodyArea ReadArea(const toml::table& table, std::string_view region_name) {
     const std::string of = " of region '" + std::string(region_name) + "'";
-    std::string label = "area #" + std::to_string(area_count_ + 1) + of;
+    std::string label = Label(table, "area", area_count_ + 1) + of;
     RejectUnknownKeys(table, kAreaKeys, label, "a [[region.area]]");
     BodyArea area;
     area.name = Name(table, label, kAreaRequired);
