@@ -129,17 +129,9 @@ CLI::App* SetupBodyRegions(CLI::App& app, BodyRegionsOptions& options) {
 
   CLI::App* show = command->add_subcommand(
       "show", "Show one region: its limits, k, m_H, areas and sources");
-  show->add_option_function<std::vector<std::string>>(
-          "name",
-          [&options](const std::vector<std::string>& words) {
-            options.name.clear();
-            for (const std::string& word : words) {
-              if (!options.name.empty()) options.name += ' ';
-              options.name += word;
-            }
-          },
-          "the region's name, ignoring case, \"_\", \"/\" and \" \" read as \"-\", e.g. "
-          "hands-fingers, chest")
+  show->add_option("name", options.name,
+                   "the region's name, ignoring case, \"_\", \"/\" and \" \" read as \"-\", e.g. "
+                   "hands-fingers, chest, \"hands and fingers\"")
       ->type_name("NAME")
       ->required();
   show->add_flag("--json", options.json, "print the region as one JSON object (SI units)");

@@ -161,15 +161,7 @@ class TableReader {
   template <std::size_t N>
   void RejectUnknownKeys(const toml::table& table, const std::array<std::string_view, N>& keys,
                          std::string_view label, std::string_view what) const {
-    const toml::key* first = nullptr;
-    for (const auto& [key, node] : table) {
-      if (std::find(keys.begin(), keys.end(), key.str()) != keys.end()) continue;
-      const auto& at = key.source().begin;
-      if (first == nullptr || at.line < first->source().begin.line ||
-          (at.line == first->source().begin.line && at.column < first->source().begin.column)) {
-        first = &key;
-      }
-    }
+    const toml::key* first = covopt::internal::FirstUnknownKey(table, keys);
     if (first == nullptr) return;
     const std::vector<std::string_view> candidates(keys.begin(), keys.end());
     const auto near = internal::Closest(first->str(), candidates);

@@ -184,7 +184,7 @@ TEST_CASE("cli body-regions show: the skull and face say transient contact is no
 
 TEST_CASE("cli body-regions show --json: the library's region, and names as the library reads them") {
   for (const std::vector<std::string>& name : std::vector<std::vector<std::string>>{
-           {"hands-fingers"}, {"Hands/Fingers"}, {"hands_fingers"}, {"hands", "and", "fingers"}}) {
+           {"hands-fingers"}, {"Hands/Fingers"}, {"hands_fingers"}, {"Hands and fingers"}}) {
     std::vector<std::string> args{"body-regions", "show"};
     args.insert(args.end(), name.begin(), name.end());
     args.emplace_back("--json");
