@@ -161,15 +161,7 @@ class TableReader {
   template <std::size_t N>
   void RejectUnknownKeys(const toml::table& table, const std::array<std::string_view, N>& keys,
                          std::string_view label, std::string_view what) const {
-    const toml::key* first = nullptr;
-    for (const auto& [key, node] : table) {
-      if (std::find(keys.begin(), keys.end(), key.str()) != keys.end()) continue;
-      const auto& at = key.source().begin;
-      if (first == nullptr || at.line < first->source().begin.line ||
-          (at.line == first->source().begin.line && at.column < first->source().begin.column)) {
-        first = &key;
-      }
-    }
+    const toml::key* first = covopt::internal::FirstUnknownKey(table, keys);
     if (first == nullptr) return;
     const std::vector<std::string_view> candidates(keys.begin(), keys.end());
     const auto near = internal::Closest(first->str(), candidates);
@@ -248,8 +240,16 @@ class TableReader {
     return value;
   }
 
+  /// "<kind> 'name'" when the table has a string name, else "<kind> #index".
+  static std::string Label(const toml::table& table, std::string_view kind, std::size_t index) {
+    if (const auto* name = table.get_as<std::string>("name")) {
+      return std::string(kind) + " '" + name->get() + "'";
+    }
+    return std::string(kind) + " #" + std::to_string(index);
+  }
+
   BodyRegion ReadRegion(const toml::table& table, std::size_t index) {
-    std::string label = "region #" + std::to_string(index);
+    std::string label = Label(table, "region", index);
     RejectUnknownKeys(table, kRegionKeys, label, "a [[region]]");
     BodyRegion region;
     region.name = Name(table, label, kRegionRequired);
@@ -308,7 +308,7 @@ class TableReader {
 
   BodyArea ReadArea(const toml::table& table, std::string_view region_name) {
     const std::string of = " of region '" + std::string(region_name) + "'";
-    std::string label = "area #" + std::to_string(area_count_ + 1) + of;
+    std::string label = Label(table, "area", area_count_ + 1) + of;
     RejectUnknownKeys(table, kAreaKeys, label, "a [[region.area]]");
     BodyArea area;
     area.name = Name(table, label, kAreaRequired);
