@@ -151,15 +151,7 @@ class EntryReader {
 
   /// The first unknown key in file order is reported.
   void RejectUnknownKeys() {
-    const toml::key* first = nullptr;
-    for (const auto& [key, node] : table_) {
-      if (std::find(kKeys.begin(), kKeys.end(), key.str()) != kKeys.end()) continue;
-      const auto& at = key.source().begin;
-      if (first == nullptr || at.line < first->source().begin.line ||
-          (at.line == first->source().begin.line && at.column < first->source().begin.column)) {
-        first = &key;
-      }
-    }
+    const toml::key* first = covopt::internal::FirstUnknownKey(table_, kKeys);
     if (first == nullptr) return;
     const std::string where = Where(source_, first->source().begin);
     const auto suggestion = KeySuggestion(first->str());

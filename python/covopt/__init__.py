@@ -163,6 +163,39 @@ def material(name):
     return Material(_covopt.material(name))
 
 
+from ._results import BodyLimits, BodyRegion  # beside the functions that use them
+
+__all__ += ["body_regions", "body_region_limits"]
+
+
+def body_regions():
+    """ISO/TS 15066:2016's body regions (Tables A.2 and A.3), as ``covopt body-regions list
+    --json``: a list of 12 BodyRegions, in SI units named in the keys (name, title,
+    quasi_static_force_N, transient_permitted, transient_factor and transient_force_N (None
+    where A.3.2 forbids transient contact: the skull/forehead and the face), transient_rule,
+    stiffness_N_per_m, effective_mass_kg, default_area, areas (name, title, number,
+    quasi_static_pressure_Pa, transient_pressure_Pa), sources)."""
+    return [BodyRegion(row) for row in _covopt.body_regions()]
+
+
+def body_region_limits(region, area=None, contact="transient"):
+    """The limits ISO/TS 15066:2016 sets for one area of one body region.
+
+    region: a region's name ("chest", "hands-fingers"; ignoring case, "_", "/" and " " read
+    as "-"). area: one of its areas ("sternum"); None: the area with the lowest pressure.
+    contact: "transient" (the region recoils: twice the quasi-static limits) or "clamped"
+    (also "quasi-static": held against a fixed object, the quasi-static limits, and
+    effective_mass_kg = math.inf).
+
+    Returns a BodyLimits: region, area, area_number, contact, force_N [N], pressure_Pa [Pa],
+    stiffness_N_per_m [N/m], effective_mass_kg [kg] and describe, who sets the limits
+    ("ISO/TS 15066:2016 Table A.2, transient (2× quasi-static), chest (sternum): 280 N,
+    240 N/cm²"). Raises ValueError for an unknown region or area (naming the choices) and for
+    transient contact with the skull/forehead or the face (naming A.3.2).
+    """
+    return BodyLimits(_covopt.body_region_limits(region, area, contact))
+
+
 def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=False, oracle=None,
                    method=None, rtol=None, max_steps=None):
     """The largest impact speed [m/s] such that every speed up to it is safe: both injury

@@ -108,3 +108,11 @@ class Sensitivities(Result):
 
 class RobustDesign(Result):
     """covopt.robust_optimize's result: ``covopt optimize --json`` with ranges."""
+
+
+class BodyRegion(Result):
+    """An ISO/TS 15066 body region: ``covopt body-regions show NAME --json``."""
+
+
+class BodyLimits(Result):
+    """covopt.body_region_limits' result: the limits of one body area under one contact."""

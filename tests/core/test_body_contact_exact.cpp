@@ -192,3 +192,29 @@ TEST_CASE("the exact path refuses a history, which needs the time path", "[body_
   CHECK_THROWS_WITH(covopt::Solve(Chest(10.0, 0.5), options),
                     Catch::Contains("a history needs the time path"));
 }
+
+TEST_CASE("the check numbers of docs/model.md §13, computed by docs/validation/body_regions.py", "[body_contact]") {
+  // Robot 10 kg at 0.25 m/s, transient. The script solves the balance by bisection (not the
+  // library's Newton iteration) and prints 9 digits.
+  struct Check {
+    double modulus_Pa, poisson, thickness_m, radius_m, stiffness_N_per_m, body_mass_kg;
+    double covering_stiffness, bottom_out_force_N, force_N, pressure_Pa, deflection_m;
+  };
+  const Check check = GENERATE(
+      Check{0.5e6, 0.3, 10e-3, 0.04, 25e3, 40.0, 163814.504, 117.216117, 68.9529000, 0.117234957e6, 5.61651328e-3},
+      Check{0.5e6, 0.3, 20e-3, 0.04, 25e3, 40.0, 179449.798, 363.180856, 70.394744, 0.104535916e6, 5.35876658e-3},
+      Check{27.6e6, 0.25, 5e-3, 0.015, 25e3, 40.0, 5551259.64, 1404.36995, 104.932384, 3.53027819e6, 0.709597373e-3},
+      Check{0.5e6, 0.3, 20e-3, 0.04, 75e3, 0.6, 179449.798, 363.180856, 17.9911007, 0.0663393732e6, 2.15812456e-3});
+  BodyContactScene s = Covered(check.modulus_Pa, check.thickness_m, check.radius_m, 0.25);
+  s.covering.poisson_ratio = check.poisson;
+  s.body_stiffness_N_per_m = check.stiffness_N_per_m;
+  s.body_mass_kg = check.body_mass_kg;
+  const BodyContactModel model = BodyContactModel::FromScene(s);
+  CHECK(model.covering_stiffness() == Approx(check.covering_stiffness).epsilon(1e-8));
+  CHECK(model.bottom_out_force_N() == Approx(check.bottom_out_force_N).epsilon(1e-8));
+  const covopt::BodyContactResult r = covopt::Solve(model);
+  CHECK(r.peak_force_N == Approx(check.force_N).epsilon(1e-8));
+  REQUIRE(r.peak_pressure_Pa.has_value());
+  CHECK(*r.peak_pressure_Pa == Approx(check.pressure_Pa).epsilon(1e-8));
+  CHECK(r.covering_deflection_m == Approx(check.deflection_m).epsilon(1e-8));
+}

@@ -2,6 +2,7 @@
 // same results on 1 and N threads, exceptions rethrown on the calling thread.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <stdexcept>
 #include <thread>
@@ -64,6 +65,10 @@ TEST_CASE("ParallelFor rethrows a body's exception on the calling thread and sto
                                         [&](std::size_t i, unsigned) {
                                           started.fetch_add(1);
                                           if (i == 10) throw std::runtime_error("index 10");
+                                          // Each other index takes a while, so that running all
+                                          // of them (~0.7 s) cannot happen while the throwing
+                                          // thread is merely descheduled on a loaded machine.
+                                          std::this_thread::sleep_for(std::chrono::microseconds(20));
                                         }),
                     std::runtime_error);
     CHECK(started.load() < 100000u);

@@ -4,6 +4,8 @@
 /// files) for their messages: where a node is ("file:line:column") and what type it has ("a
 /// string"). Header-only and not installed (target covopt_text_internal); needs toml++.
 
+#include <algorithm>
+#include <iterator>
 #include <string>
 #include <string_view>
 
@@ -37,6 +39,22 @@ inline std::string_view TypeName(const toml::node& node) {
     case toml::node_type::none: break;
   }
   return "nothing";
+}
+
+/// The first key of `table` in file order that is not among `known` (a range of
+/// std::string_view); nullptr when every key is known. Readers report that one.
+template <class Keys>
+const toml::key* FirstUnknownKey(const toml::table& table, const Keys& known) {
+  const toml::key* first = nullptr;
+  for (const auto& [key, node] : table) {
+    if (std::find(std::begin(known), std::end(known), key.str()) != std::end(known)) continue;
+    const auto& at = key.source().begin;
+    if (first == nullptr || at.line < first->source().begin.line ||
+        (at.line == first->source().begin.line && at.column < first->source().begin.column)) {
+      first = &key;
+    }
+  }
+  return first;
 }
 
 }  // namespace covopt::internal

@@ -1,0 +1,62 @@
+/// @file body_regions.cpp
+/// covopt.body_regions and covopt.body_region_limits: ISO/TS 15066:2016's body-region table
+/// (materials::BodyRegionTable::BuiltIn()). The regions are report::BodyRegionsJson's
+/// objects, those `covopt body-regions list --json` prints. See python/covopt/__init__.py for
+/// the documentation.
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "covopt/core/body_contact.hpp"
+#include "covopt/materials/body_regions.hpp"
+#include "covopt/report/body_regions_json.hpp"
+#include "scene_keywords.hpp"
+
+namespace py = pybind11;
+
+namespace covopt::python {
+namespace {
+
+using materials::BodyRegionTable;
+
+py::object BodyRegions() {
+  return JsonToPython(report::BodyRegionsJson(BodyRegionTable::BuiltIn().regions(), -1));
+}
+
+/// The limits of one area under one contact; bad names raise ValueError with the library's
+/// message.
+py::dict BodyRegionLimits(const std::string& region, const std::optional<std::string>& area,
+                          const std::string& contact) {
+  const std::optional<ContactType> type = ParseContactType(contact);
+  if (!type) {
+    throw std::invalid_argument("contact: expected 'transient' or 'clamped' (got '" + contact +
+                                "')");
+  }
+  const materials::BodyLimits limits =
+      BodyRegionTable::BuiltIn().Limits(region, area.value_or(""), *type);
+  py::dict result;
+  result["region"] = limits.region->name;
+  result["area"] = limits.area->name;
+  result["area_number"] = limits.area->number;
+  result["contact"] = std::string(ToString(limits.contact));
+  result["force_N"] = limits.force_N;
+  result["pressure_Pa"] = limits.pressure_Pa;
+  result["stiffness_N_per_m"] = limits.stiffness_N_per_m();
+  result["effective_mass_kg"] = limits.effective_mass_kg();
+  result["describe"] = limits.Describe();
+  return result;
+}
+
+}  // namespace
+
+void RegisterBodyRegions(py::module_& m) {
+  m.def("body_regions", &BodyRegions);
+  m.def("body_region_limits", &BodyRegionLimits, py::arg("region"), py::arg("area"),
+        py::arg("contact"));
+}
+
+}  // namespace covopt::python
