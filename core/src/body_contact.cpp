@@ -122,8 +122,9 @@ BodyContactModel BodyContactModel::FromScene(const BodyContactScene& scene) {
                             std::sqrt(m.outer_radius_m_);
     m.travel_m_ = scene.full_compression_fraction * c.thickness_m;
     m.bottom_out_force_N_ = m.covering_stiffness_ * m.travel_m_ * std::sqrt(m.travel_m_);
-    m.compliance_factor_ = std::cbrt(1.0 / (m.covering_stiffness_ * m.covering_stiffness_));
-    m.bottom_out_root_ = std::cbrt(m.bottom_out_force_N_);
+    const double stiffness_root = std::cbrt(m.covering_stiffness_);  // one cube root for both
+    m.compliance_factor_ = 1.0 / (stiffness_root * stiffness_root);
+    m.bottom_out_root_ = stiffness_root * std::sqrt(m.travel_m_);
   } else {
     m.bottom_out_force_N_ = std::numeric_limits<double>::infinity();
   }
@@ -177,7 +178,8 @@ double BodyContactModel::ForceAtEnergy(double energy_J) const noexcept {
   // Each of the three starting values bounds the root from above.
   const double c = 0.4 * compliance_factor_;
   double s = std::cbrt(std::sqrt(2.0 * k * energy_J));    // the spring alone
-  s = std::min(s, std::pow(energy_J / c, 0.2));           // the covering alone
+  const double s5 = s * s * s * s * s;
+  if (c * s5 > energy_J) s = std::pow(energy_J / c, 0.2);  // the covering alone is the lower bound
   s = std::min(s, bottom_out_root_);                      // the bottoming out
   const double inverse_2k = 0.5 / k;
   for (int iteration = 0; iteration < 100; ++iteration) {
@@ -201,17 +203,22 @@ BodyContactResult PeaksAtForce(const BodyContactModel& model, double force_N) {
   r.reduced_mass_kg = model.reduced_mass_kg();
   r.energy_transferred_J = model.impact_energy_J();
   r.peak_force_N = force_N;
-  r.peak_pressure_Pa = model.PressureAtForce(force_N);
-  r.covering_deflection_m = model.CoveringDeflectionAtForce(force_N);
   r.body_deflection_m = force_N / scene.body_stiffness_N_per_m;
-  r.max_approach_m = r.covering_deflection_m + r.body_deflection_m;
   r.body_energy_J = 0.5 * force_N * r.body_deflection_m;
-  r.covering_energy_J = model.EnergyAtForce(force_N) - r.body_energy_J;
   if (model.has_covering()) {
-    r.contact_radius_m = std::sqrt(model.covering_outer_radius_m() * r.covering_deflection_m);
-    r.compression_ratio = r.covering_deflection_m / model.covering_travel_m();
+    // One deflection for every covering quantity (the accessors would each take a cube root).
+    const double deflection = model.CoveringDeflectionAtForce(force_N);
+    const double contact_radius_sq = model.covering_outer_radius_m() * deflection;
+    r.covering_deflection_m = deflection;
+    r.contact_radius_m = std::sqrt(contact_radius_sq);
+    r.peak_pressure_Pa = contact_radius_sq > 0.0 ? kHertzPressureFactor * force_N / contact_radius_sq : 0.0;
+    r.covering_energy_J = 0.4 * std::min(force_N, model.bottom_out_force_N()) * deflection;
+    r.compression_ratio = deflection / model.covering_travel_m();
     r.fully_compressed = force_N > model.bottom_out_force_N();
+  } else {
+    r.peak_pressure_Pa = model.PressureAtForce(force_N);
   }
+  r.max_approach_m = r.covering_deflection_m + r.body_deflection_m;
   return r;
 }
 
@@ -221,7 +228,7 @@ namespace {
 
 BodyContactResult SolveExactBodyContact(const BodyContactModel& model) {
   BodyContactResult r = internal::PeaksAtForce(model, model.ForceAtEnergy(model.impact_energy_J()));
-  r.method = "exact (energy balance, no integration)";
+  r.method = "exact";  // short enough for the string's small buffer: no allocation
   r.rebound_speed_m_per_s = model.scene().speed_m_per_s;  // conservative: no energy is lost
   if (!model.has_covering()) {
     // The linear spring's half period.

@@ -140,7 +140,8 @@ struct BodyContactResult {
   /// kSuccess, or the time path's failure (then the peaks are not an answer).
   SolveStatus status = SolveStatus::kSuccess;
   std::string message;  ///< empty on success; the integrator's flag and message otherwise
-  /// "exact (energy balance, no integration)" or the time path's integrator and tolerance.
+  /// "exact" (the energy balance, no integration) or the time path's integrator and tolerance,
+  /// e.g. "time path (arkode-erk54, rtol 1e-08)".
   std::string method;
   double reduced_mass_kg = 0.0;          ///< mu [kg]
   double energy_transferred_J = 0.0;     ///< ½ mu v², stored at the peak [J]
