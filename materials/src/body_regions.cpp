@@ -375,13 +375,18 @@ const BodyArea& BodyRegion::LowestPressureArea() const {
 
 std::string BodyLimits::Describe() const {
   if (region == nullptr || area == nullptr) return "no body region";
-  const std::string basis =
-      contact == ContactType::kTransient
-          ? "transient (" + Short(region->transient_factor) + "× quasi-static)"
-          : std::string("quasi-static");
-  return std::string(kStandard) + " Table A.2, " + basis + ", " + region->name + " (" +
-         area->name + "): " + Short(force_N) + " N, " + Short(pressure_Pa / kPaPerNPerCm2) +
-         " N/cm²";
+  // Appended into one buffer: the all-regions table writes this for every row.
+  std::string text;
+  text.reserve(120);
+  text.append(kStandard).append(" Table A.2, ");
+  if (contact == ContactType::kTransient) {
+    text.append("transient (").append(Short(region->transient_factor)).append("× quasi-static)");
+  } else {
+    text.append("quasi-static");
+  }
+  text.append(", ").append(region->name).append(" (").append(area->name).append("): ");
+  text.append(Short(force_N)).append(" N, ").append(Short(pressure_Pa / kPaPerNPerCm2)).append(" N/cm²");
+  return text;
 }
 
 double BodyLimits::effective_mass_kg() const noexcept {

@@ -32,24 +32,34 @@ constexpr double kMaxSpeed_m_per_s = 100.0;
 /// 2^-52 × 2^i, at most this many (the last below 1e-12 relative).
 constexpr int kMaxNudges = 12;
 
+// The checks below run for every verdict and table row: each message is built only when
+// its check fails.
 void ValidateLimits(const materials::BodyLimits& limits) {
-  Require(limits.region != nullptr && limits.area != nullptr, "limits: no body region and area given");
-  Require(std::isfinite(limits.force_N) && limits.force_N > 0.0,
-          "limits.force_N must be finite and > 0 N (got " + Number(limits.force_N) + ")");
-  Require(std::isfinite(limits.pressure_Pa) && limits.pressure_Pa > 0.0,
-          "limits.pressure_Pa must be finite and > 0 Pa (got " + Number(limits.pressure_Pa) + ")");
+  if (limits.region == nullptr || limits.area == nullptr) {
+    throw std::invalid_argument("limits: no body region and area given");
+  }
+  if (!(std::isfinite(limits.force_N) && limits.force_N > 0.0)) {
+    throw std::invalid_argument("limits.force_N must be finite and > 0 N (got " + Number(limits.force_N) + ")");
+  }
+  if (!(std::isfinite(limits.pressure_Pa) && limits.pressure_Pa > 0.0)) {
+    throw std::invalid_argument("limits.pressure_Pa must be finite and > 0 Pa (got " + Number(limits.pressure_Pa) +
+                                ")");
+  }
 }
 
 void ValidateRule(const DesignRule& rule) {
-  Require(std::isfinite(rule.safety_factor) && rule.safety_factor >= 1.0 && rule.safety_factor <= 100.0,
-          "safety factor must be in [1, 100] (got " + Number(rule.safety_factor) + ")");
+  if (!(std::isfinite(rule.safety_factor) && rule.safety_factor >= 1.0 && rule.safety_factor <= 100.0)) {
+    throw std::invalid_argument("safety factor must be in [1, 100] (got " + Number(rule.safety_factor) + ")");
+  }
 }
 
 void ValidateMaterial(const CandidateMaterial& m) {
   if (m.crush_behaviour != materials::CrushBehaviour::kCrushes) return;
-  Require(std::isfinite(m.compressive_strength_Pa) && m.compressive_strength_Pa > 0.0,
-          "material '" + m.name + "': compressive strength must be finite and > 0 Pa for a material that crushes (got " +
-              Number(m.compressive_strength_Pa) + ")");
+  if (!(std::isfinite(m.compressive_strength_Pa) && m.compressive_strength_Pa > 0.0)) {
+    throw std::invalid_argument("material '" + m.name +
+                                "': compressive strength must be finite and > 0 Pa for a material that crushes (got " +
+                                Number(m.compressive_strength_Pa) + ")");
+  }
 }
 
 void ValidateOptions(const BodyRegionOptions& options) {
@@ -225,10 +235,12 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
     // The limit's own verdict can round past 1/SF (or past the bottoming out at SF 1): step
     // the speed down by a few ulps until it holds.
     for (int i = 0; i <= kMaxNudges; ++i) {
-      out.at_limit = Judge(BodyContactModel::FromScene(AtSpeed(region_scene, speed)), limits, options, &text);
+      out.at_limit = Judge(BodyContactModel::FromScene(AtSpeed(region_scene, speed)), limits, options, nullptr);
       if (out.at_limit.admissible) break;
       speed *= 1.0 - std::ldexp(1.0, -52 + i);
     }
+    // The scope once, for the verdict kept.
+    out.at_limit.scope = ScopeOf(text, rule, covered, out.at_limit.pressure_ratio.has_value(), out.at_limit.crush_check);
     if (out.at_limit.admissible) {
       out.status = SpeedLimitStatus::kLimited;
       out.max_safe_speed_m_per_s = speed;
