@@ -819,6 +819,7 @@ void BindRobot(py::module_& m);       // robot_bindings.cpp
 void BindTrajectory(py::module_& m);  // trajectory_bindings.cpp
 void BindRobust(py::module_& m);      // robust_bindings.cpp
 void BindSceneFile(py::module_& m);   // scene_file_bindings.cpp
+void RegisterBodyContact(py::module_& m);  // body_contact.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -835,4 +836,5 @@ PYBIND11_MODULE(_covopt, m) {
   covopt::python::BindTrajectory(m);
   covopt::python::BindRobust(m);
   covopt::python::BindSceneFile(m);
+  covopt::python::RegisterBodyContact(m);
 }
