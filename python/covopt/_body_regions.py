@@ -42,7 +42,7 @@ class BodyRegionSpeedLimitTable(Result):
     None without a covering), gain (covered / bare speed). With body_region="all" and a
     transient contact the last row is the head's, judged by Park et al.'s skin model (its
     limited_by is "laceration", "contusion" or "full-compression"). Also contact,
-    safety_factor, criterion, scene, warnings.
+    safety_factor, criteria (the limits counted), scene, warnings.
     """
 
     def __iter__(self):

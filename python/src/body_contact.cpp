@@ -462,7 +462,12 @@ py::dict SpeedLimitTable(const SceneInputs& inputs, const py::kwargs& kwargs) {
   py::dict table;
   table["contact"] = std::string(ToString(choice.contact));
   table["safety_factor"] = inputs.safety_factor;
-  table["criterion"] = options.rule.Describe();
+  py::list criteria;  // the limits counted (a row's scope says which apply to its area)
+  criteria.append("force");
+  criteria.append("pressure");
+  if (options.rule.compression_counts()) criteria.append("full-compression");
+  if (!options.rule.crushing_allowed) criteria.append("crush");
+  table["criteria"] = criteria;
   table["scene"] = SceneDict(scene, inputs);
   table["rows"] = out;
   table["head"] = choice.head;  // covopt/_body_regions.py appends the head's row
