@@ -17,7 +17,8 @@ CLI's) message naming the keyword; a computation that fails raises
 release the GIL.
 """
 
-from . import _covopt
+from . import _body_regions, _covopt
+from ._body_regions import BodyContact, BodyRegionDesign, BodyRegionSpeedLimitTable
 from ._errors import ComputationError
 from ._results import (ContactMotion, Design, Material, ReflectedMass, Result, RobustDesign,
                        RobustSimulation, Sensitivities, Simulation, SpeedLimit, SpeedLimitTable,
@@ -30,7 +31,8 @@ for _public in (Scene, ComputationError):
 __all__ = ["Scene", "Result", "simulate", "sweep", "optimize", "materials", "material",
            "ComputationError", "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass",
            "contact_motion", "check_trajectory", "worst_case", "injury_probability",
-           "sensitivities", "robust_optimize", "load_scene"]
+           "sensitivities", "robust_optimize", "load_scene", "BodyContact", "BodyRegionSpeedLimitTable",
+           "BodyRegionDesign"]
 
 
 def _scene(scene, ranged=False):
@@ -49,7 +51,8 @@ def _given(**options):
     return {name: value for name, value in options.items() if value is not None}
 
 
-def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, history=False):
+def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, history=False,
+             body_region=None, body_area=None, contact=None, contact_area=None):
     """One impact: its peaks and the injury verdicts, as ``covopt simulate --json``.
 
     scene: a covopt.Scene (default the paper's scene). A damped scene reports
@@ -70,9 +73,17 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
     0.25 assumed"; a safety factor; covering inputs a zero thickness makes moot), which name
     the keyword (``safety_factor='2'``) where the CLI names the flag (``--safety-factor '2'``).
 
+    body_region: an ISO/TS 15066 region ("chest", "hands-fingers", ...; "head" is the skin
+    model above), with body_area, contact ("transient" or "clamped") and contact_area [m²]:
+    returns a BodyContact (covopt/_body_regions.py); method None or "exact" is the exact
+    path, "time-path" or an integrator the time path (its peaks; the verdict is the exact
+    path's).
+
     Returns a Simulation. Raises ValueError on bad input, ComputationError when the
     computation fails.
     """
+    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
+        return _body_regions.simulate(_scene(scene), **_given(**{k: v for k, v in locals().items() if k != "scene"}))
     return Simulation(_covopt.simulate(_scene(scene), **_given(
         method=method, rtol=rtol, atol=atol, max_steps=max_steps, history=history)))
 
@@ -109,7 +120,8 @@ def optimize(scene=None, *, materials=None, families=None, catalog=None, no_buil
              thickness=None, max_thickness=None, min_modulus=None, max_modulus=None,
              covering_poisson=None, thickness_step=None, allow_full_compression=False,
              allow_crushing=False, allow_unknown_strength=False, global_algorithm=None, seed=None,
-             threads=None, oracle=None, method=None, rtol=None, max_steps=None):
+             threads=None, oracle=None, method=None, rtol=None, max_steps=None, body_region=None,
+             body_area=None, contact=None, contact_area=None):
     """Which covering, how thick, with what margin, as ``covopt optimize --json``.
 
     scene: a covopt.Scene without a covering (it is what is designed); damping, braking and a
@@ -136,9 +148,16 @@ def optimize(scene=None, *, materials=None, families=None, catalog=None, no_buil
     max_steps: its step limit per impact (an int >= 10; default 200000).
     result["solver"]["oracle"] says which ran and why.
 
+    body_region: ISO/TS 15066 regions (a name, a list, "all"; "head" among them is judged by
+    Park et al.'s model), with body_area, contact, contact_area: the thinnest catalog covering
+    (materials, families, max_thickness, thickness_step, allow_*) that keeps every region
+    named safe at the scene's speed; returns a BodyRegionDesign (covopt/_body_regions.py).
+
     Returns a Design: ``covopt optimize --json`` (without the CLI's warnings about its own
     input). Raises ValueError on bad input, ComputationError when the search fails.
     """
+    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
+        return _body_regions.design(_scene(scene), **_given(**{k: v for k, v in locals().items() if k != "scene"}))
     return Design(_covopt.optimize(_scene(scene), **_given(
         materials=materials, families=families, catalog=catalog, no_builtin=no_builtin,
         thickness=thickness, max_thickness=max_thickness, min_modulus=min_modulus,
@@ -239,7 +258,8 @@ def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=Fa
 
 def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
                 allow_full_compression=False, allow_crushing=False, oracle=None, method=None,
-                rtol=None, max_steps=None):
+                rtol=None, max_steps=None, body_region=None, body_area=None, contact=None,
+                contact_area=None):
     """A table of limits, as ``covopt speed-limit --json``: solve_for="speed" gives the max
     safe speed for each robot mass in values [kg] (math.inf or "fixed" for a fixed robot;
     default the scene's), solve_for="mass" the max safe reflected mass for each speed in
@@ -248,11 +268,20 @@ def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
 
     oracle, method, rtol, max_steps: as optimize's.
 
+    body_region: ISO/TS 15066 regions (a name, a list, "all"), with body_area, contact,
+    contact_area: the max safe speed for the scene's robot mass per area, bare and with the
+    scene's covering, and which limit binds; "all" with a transient contact adds the head's
+    row (Park et al.'s skin model, max_safe_speed). Returns a BodyRegionSpeedLimitTable
+    (covopt/_body_regions.py).
+
     Returns a SpeedLimitTable (solve_for, criterion, safety_factor, limits, search_limit,
     oracle, rows, scene, warnings; without the CLI's warnings about its own input). Raises
     ValueError on bad input, ComputationError (status "evaluation-failed") when the time path
     fails on an impact of a row's search.
     """
+    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
+        return _body_regions.speed_limit(_scene(scene), max_safe_speed,
+                                         **_given(**{k: v for k, v in locals().items() if k != "scene"}))
     return SpeedLimitTable(_covopt.speed_limit(_scene(scene), **_given(
         solve_for=solve_for, values=values, materials=materials,
         allow_full_compression=allow_full_compression, allow_crushing=allow_crushing,

@@ -820,6 +820,7 @@ void BindTrajectory(py::module_& m);  // trajectory_bindings.cpp
 void BindRobust(py::module_& m);      // robust_bindings.cpp
 void BindSceneFile(py::module_& m);   // scene_file_bindings.cpp
 void RegisterBodyRegions(py::module_& m);  // body_regions.cpp
+void RegisterBodyContact(py::module_& m);  // body_contact.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -837,4 +838,5 @@ PYBIND11_MODULE(_covopt, m) {
   covopt::python::BindRobust(m);
   covopt::python::BindSceneFile(m);
   covopt::python::RegisterBodyRegions(m);
+  covopt::python::RegisterBodyContact(m);
 }
