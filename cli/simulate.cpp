@@ -40,6 +40,7 @@ std::string_view TypeName(QuantityKind kind) {
     case QuantityKind::kDampingCoefficient: return "DAMPING";
     case QuantityKind::kStiffness: return "STIFFNESS";
     case QuantityKind::kViscousDamping: return "DAMPING";
+    case QuantityKind::kArea: return "AREA";
   }
   return "VALUE";
 }
