@@ -11,6 +11,7 @@
 
 #include "errors.hpp"
 #include "quantity.hpp"
+#include "simulate.hpp"
 
 namespace covopt::cli {
 namespace {

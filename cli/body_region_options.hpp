@@ -23,14 +23,16 @@
 
 #include "covopt/core/body_contact.hpp"
 #include "covopt/materials/body_regions.hpp"
+#include "covopt/core/scene.hpp"
 #include "covopt/optim/body_region_check.hpp"
-#include "simulate.hpp"
 
 namespace CLI {
 class App;
 }
 
 namespace covopt::cli {
+
+struct SimulationPlan;  // simulate.hpp
 
 /// The four options as typed.
 struct BodyRegionFlags {
