@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "body_regions_command.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
 #include "optimize.hpp"
@@ -47,6 +48,8 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   CLI::App* speed_limit = SetupSpeedLimit(app, speed_limit_options);
   RobotOptions robot_options;
   CLI::App* robot = SetupRobot(app, robot_options);
+  BodyRegionsOptions body_regions_options;
+  CLI::App* body_regions = SetupBodyRegions(app, body_regions_options);
 
   try {
     app.parse(argc, argv);
@@ -71,6 +74,7 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     if (workprecision->parsed()) return RunWorkPrecision(workprecision_options, out, err);
     if (speed_limit->parsed()) return RunSpeedLimit(speed_limit_options, out, err);
     if (robot->parsed()) return RunRobot(robot_options, out, err);
+    if (body_regions->parsed()) return RunBodyRegions(body_regions_options, out, err);
   } catch (const std::exception& e) {
     fmt::print(err, "covopt: internal error: {}\n", ShortenLongWords(e.what()));
     return 1;

@@ -291,6 +291,8 @@ std::string DescribeFilter(const MaterialsOptions& o) {
 
 }  // namespace
 
+std::vector<std::string> WrapWords(std::string_view text, std::size_t width) { return Wrap(text, width); }
+
 void AddCatalogOptions(CLI::App& command, CatalogOptions& options) {
   command
       .add_option("--catalog", options.files,

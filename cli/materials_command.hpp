@@ -75,6 +75,10 @@ materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
 /// strength_source, defined_at.
 nlohmann::ordered_json MaterialToJson(const materials::Material& material);
 
+/// `text` broken at spaces into lines of at most `width` characters (longer words, such as
+/// URLs, stay whole): how `materials show` and `body-regions show` wrap long values.
+std::vector<std::string> WrapWords(std::string_view text, std::size_t width);
+
 /// Which `materials` subcommand ran.
 enum class MaterialsAction { kNone, kList, kShow, kFind };
 
