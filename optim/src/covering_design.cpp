@@ -369,48 +369,20 @@ CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMateria
   auto admissible_at = [&](double b) { return score_at(b).admissible(rule); };
   CandidateOutcome outcome;
   outcome.material = material;
-  const int points = o.thickness_scan_points;
-  double inadmissible = 0.0, admissible = 0.0;
-  bool found = false;
-  for (int k = 0; k < points && !found; ++k) {
-    const double b = k == points - 1 ? space.max_thickness_m
-                                     : space.min_thickness_m + (space.max_thickness_m - space.min_thickness_m) * k / (points - 1);
-    if (admissible_at(b)) {
-      found = true;
-      admissible = b;
-    } else {
-      inadmissible = b;
-    }
-  }
-  if (!found) {
+  const std::optional<double> thinnest =
+      internal::ThinnestAdmissibleThickness(space, o.thickness_scan_points, o.thickness_resolution_m, admissible_at);
+  if (!thinnest) {
     outcome.score = score_at(space.max_thickness_m);
     outcome.margin = outcome.score.margin(rule);
     return outcome;
   }
-  if (inadmissible > 0.0) {
-    while (admissible - inadmissible > o.thickness_resolution_m) {
-      const double mid = 0.5 * (inadmissible + admissible);
-      (admissible_at(mid) ? admissible : inadmissible) = mid;
-    }
-  }
+  const double admissible = *thinnest;
   outcome.min_safe_thickness_m = admissible;
   std::optional<DesignScore> at_stock;  // the admissible stock thickness's score, once found
   if (o.thickness_step_m > 0.0) {
-    // The admissible set need not be an interval: step up until the stock thickness is
-    // admissible too.
-    double steps = std::ceil(admissible / o.thickness_step_m - 1e-9);
-    for (double stock = internal::StockThickness(steps, o.thickness_step_m);;
-         stock = internal::StockThickness(++steps, o.thickness_step_m)) {
-      if (stock > space.max_thickness_m * (1 + 1e-12)) {
-        outcome.stock_thickness_beyond_max_m = stock;  // keep the exact thickness instead
-        break;
-      }
-      DesignScore score = score_at(stock);
-      if (score.admissible(rule)) {
-        at_stock = score;
-        break;
-      }
-    }
+    at_stock = internal::FirstAdmissibleStock(
+        admissible, o.thickness_step_m, space.max_thickness_m, score_at,
+        [&](const DesignScore& score) { return score.admissible(rule); }, outcome.stock_thickness_beyond_max_m);
   }
   outcome.score = at_stock ? *at_stock : score_at(admissible);
   outcome.recommended_thickness_m = outcome.score.design.thickness_m;

@@ -2,6 +2,7 @@
 // Shared internals of the robust design (optim/robust_design.hpp): judging one impact, the
 // global search over a box, formatting and validation helpers. Not installed.
 
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -102,6 +103,53 @@ void RefuseCoveringRanges(const UncertaintyBox& box);
 double StockThickness(double steps, double step_m);
 /// Point k of the catalog scan's `points` thicknesses over the design space [m].
 double ScanThickness(const DesignSpace& space, int points, int k);
+/// The thinnest admissible thickness of a catalog snap: the first of `points` scan
+/// thicknesses over `space` (ScanThickness, thin to thick) at which `admissible_at(b)` holds,
+/// bisected against the scan point before it to `resolution_m` [m]. The admissible set need
+/// not be an interval, hence the scan first. Empty when no scan point is admissible.
+template <class Admissible>
+std::optional<double> ThinnestAdmissibleThickness(const DesignSpace& space, int points, double resolution_m,
+                                                  const Admissible& admissible_at) {
+  double inadmissible = 0.0, admissible = 0.0;
+  bool found = false;
+  for (int k = 0; k < points && !found; ++k) {
+    const double b = ScanThickness(space, points, k);
+    if (admissible_at(b)) {
+      found = true;
+      admissible = b;
+    } else {
+      inadmissible = b;
+    }
+  }
+  if (!found) return std::nullopt;
+  if (inadmissible > 0.0) {
+    while (admissible - inadmissible > resolution_m) {
+      const double mid = 0.5 * (inadmissible + admissible);
+      (admissible_at(mid) ? admissible : inadmissible) = mid;
+    }
+  }
+  return admissible;
+}
+
+/// The snap's rounding up to stock: the score `score_at(stock)` of the first multiple of
+/// `step_m` (StockThickness) at or above `thickness_m` that `admissible(score)` accepts (the
+/// admissible set need not be an interval: it steps up until one is). Empty when the next
+/// multiple passes `max_thickness_m`; `beyond_max_m` then gets that multiple.
+template <class ScoreAt, class Admissible>
+auto FirstAdmissibleStock(double thickness_m, double step_m, double max_thickness_m, const ScoreAt& score_at,
+                          const Admissible& admissible, std::optional<double>& beyond_max_m)
+    -> std::optional<decltype(score_at(0.0))> {
+  double steps = std::ceil(thickness_m / step_m - 1e-9);
+  for (double stock = StockThickness(steps, step_m);; stock = StockThickness(++steps, step_m)) {
+    if (stock > max_thickness_m * (1 + 1e-12)) {
+      beyond_max_m = stock;
+      return std::nullopt;
+    }
+    auto score = score_at(stock);
+    if (admissible(score)) return score;
+  }
+}
+
 /// The nested search's thickness grid: half linear, half geometric [m], with
 /// `extra_thickness_m` (an admissible thickness known beforehand) when given. Shared with
 /// FindThinnestSafeCovering's stage 2.

@@ -51,8 +51,10 @@ std::string_view ToString(BodyLimitKind kind) noexcept;
 struct BodyRegionOptions {
   /// Safety factor, criterion (no-full-compression by default), crushing and unknown strengths.
   DesignRule rule;
-  /// The covering's material, when it is a catalog one: its crush behaviour and strength.
-  /// Empty: a covering given by its modulus (no crush check: CrushCheck::kNoMaterial).
+  /// The covering's material, when it is a catalog one: its crush behaviour and strength
+  /// (only these are read; the covering's modulus, Poisson ratio and thickness are the
+  /// scene's). Empty: a covering given by its modulus (no crush check: CrushCheck::kNoMaterial).
+  /// Not read for the bare robot.
   std::optional<CandidateMaterial> material;
 };
 
@@ -118,7 +120,7 @@ struct BodyRegionSpeedLimitRow {
 };
 
 /// The table for every entry of `regions` (e.g. BodyRegionTable::AllLimits(contact)), in order.
-/// About 1 µs per row.
+/// About 1-2 µs per row, most of it the rows' text (bench/bench_body_region_check.cpp).
 /// @throws std::invalid_argument as JudgeBodyContact.
 std::vector<BodyRegionSpeedLimitRow> BodyRegionSpeedLimitTable(
     const BodyContactScene& scene, std::span<const materials::BodyLimits> regions,
@@ -180,9 +182,14 @@ struct BodyRegionDesignResult {
   std::vector<std::string> warnings;
 };
 
-/// Designs the covering for every region named in `request`.
+/// Designs the covering for every region named in `request`: per material, the thinnest
+/// admissible thickness by a scan of thickness_scan_points over [min, max] then bisection
+/// (the admissible set need not be an interval), rounded up to the step and checked again,
+/// as the catalog snap of FindThinnestSafeCovering. The head is scored as that snap scores a
+/// material: ExactPathOracle::ScoreMaterial, CheckCrush, DesignScore::admissible(rule).
 /// @throws std::invalid_argument naming the field for bad input (no regions and no head, a
-///         flat robot, an out-of-range thickness range or speed).
+///         flat robot, an out-of-range thickness range or speed, a material's modulus, Poisson
+///         ratio or strength, a head scene the exact path cannot answer).
 BodyRegionDesignResult DesignForBodyRegions(const BodyRegionDesignRequest& request);
 
 }  // namespace covopt::optim
