@@ -16,8 +16,8 @@ namespace {
 using internal::Number;
 using nlohmann::ordered_json;
 
-constexpr std::array<std::string_view, 12> kTableColumns = {
-    "robot_mass_kg", "region", "area", "contact", "force_limit_N", "pressure_limit_Pa", "bare_max_speed_m_per_s",
+constexpr std::array<std::string_view, 13> kTableColumns = {
+    "material", "robot_mass_kg", "region", "area", "contact", "force_limit_N", "pressure_limit_Pa", "bare_max_speed_m_per_s",
     "bare_limited_by", "covered_max_speed_m_per_s", "covered_limited_by", "gain", "criteria"};
 
 ordered_json MassValue(double kg) { return std::isinf(kg) ? ordered_json("fixed") : Number(kg); }
@@ -93,6 +93,7 @@ ordered_json HeadScore(const optim::DesignScore& score, const std::string& crite
 
 ordered_json TableRowObject(const BodyRegionTableRow& row) {
   ordered_json j;
+  j["material"] = row.material.empty() ? ordered_json(nullptr) : ordered_json(row.material);
   j["robot_mass_kg"] = MassValue(row.robot_mass_kg);
   j["region"] = row.region;
   j["area"] = row.area.empty() ? ordered_json(nullptr) : ordered_json(row.area);
@@ -202,7 +203,8 @@ BodyRegionTableRow HeadTableRow(double robot_mass_kg, const optim::SpeedLimit& b
 std::span<const std::string_view> BodyRegionTableColumns() noexcept { return kTableColumns; }
 
 std::vector<std::string> BodyRegionTableCsvCells(const BodyRegionTableRow& row) {
-  return {std::isinf(row.robot_mass_kg) ? std::string("fixed") : FormatShortest(row.robot_mass_kg),
+  return {row.material,
+          std::isinf(row.robot_mass_kg) ? std::string("fixed") : FormatShortest(row.robot_mass_kg),
           row.region,
           row.area,
           row.contact,

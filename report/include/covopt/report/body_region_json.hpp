@@ -43,6 +43,7 @@ std::string BodyContactSimulationJson(const BodyContactScene& scene, const std::
 /// One row of the all-regions speed-limit table, whatever judged it (an ISO region's
 /// optim::BodyRegionSpeedLimitRow, or the head's pair of optim::SpeedLimit).
 struct BodyRegionTableRow {
+  std::string material;        ///< the covering's catalog material; "" if none
   double robot_mass_kg = 0.0;  ///< [kg]; +inf: fixed
   std::string region;          ///< "chest", or "head"
   std::string area;            ///< "sternum"; "" for the head
@@ -69,7 +70,7 @@ BodyRegionTableRow TableRow(double robot_mass_kg, const optim::BodyRegionSpeedLi
 BodyRegionTableRow HeadTableRow(double robot_mass_kg, const optim::SpeedLimit& bare,
                                 const std::optional<optim::SpeedLimit>& covered, std::string criteria);
 
-/// The columns, as the JSON rows' keys and the CSV header: robot_mass_kg, region, area,
+/// The columns, as the JSON rows' keys and the CSV header: material, robot_mass_kg, region, area,
 /// contact, force_limit_N, pressure_limit_Pa, bare_max_speed_m_per_s, bare_limited_by,
 /// covered_max_speed_m_per_s, covered_limited_by, gain, criteria.
 std::span<const std::string_view> BodyRegionTableColumns() noexcept;
