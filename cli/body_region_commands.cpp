@@ -9,7 +9,7 @@
 #include <fmt/ostream.h>
 
 #include "covopt/core/quantity.hpp"
-#include "covopt/report/body_region_json.hpp"
+#include "covopt/report/body_contact_json.hpp"
 #include "covopt/report/csv.hpp"
 #include "errors.hpp"
 #include "output.hpp"

@@ -3,7 +3,7 @@
 /// The --body-region forms of `simulate`, `speed-limit` and `optimize` (docs/model.md §13): each
 /// reads its command's options as the command does, then makes the library's body-region calls
 /// (optim::JudgeBodyContact, optim::BodyRegionSpeedLimitTable, optim::DesignForBodyRegions) and
-/// prints a table or JSON (report/body_region_json.hpp). The head, when named, keeps its model
+/// prints a table or JSON (report/body_contact_json.hpp). The head, when named, keeps its model
 /// and Park et al.'s criteria.
 
 #include <ostream>

@@ -1,6 +1,6 @@
 // ISO/TS 15066 body-region results as JSON text and CSV cells (covopt simulate, speed-limit
 // and optimize with --body-region).
-#include "covopt/report/body_region_json.hpp"
+#include "covopt/report/body_contact_json.hpp"
 
 #include <array>
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-/// @file body_region_json.hpp
+/// @file body_contact_json.hpp
 /// ISO/TS 15066 body-region results as JSON text and CSV cells (docs/model.md §13): the
 /// verdicts of `covopt simulate --body-region`, the all-regions speed-limit table of
 /// `covopt speed-limit --body-region`, and the design of `covopt optimize --body-region`. SI
