@@ -55,10 +55,10 @@ std::string_view Mark(double ratio, double sf) { return sf * ratio <= 1.0 ? "ok"
 /// The verdict block of one judgement (simulate; optimize's recommendation).
 void PrintJudgement(std::ostream& out, const BodyRegionJudgement& v, double sf, std::string_view indent) {
   const BodyContactResult& c = v.contact;
-  fmt::print(out, "{}{:<12} {}  limit {:<12} ratio {:.3f}  {}\n", indent, "force", Newtons(c.peak_force_N),
+  fmt::print(out, "{}{:<12} {:<12} limit {:<12} ratio {:.3f}  {}\n", indent, "force", Newtons(c.peak_force_N),
              Newtons(v.limits.force_N), v.force_ratio, Mark(v.force_ratio, sf));
   if (v.pressure_ratio && c.peak_pressure_Pa) {
-    fmt::print(out, "{}{:<12} {}  limit {:<12} ratio {:.3f}  {}\n", indent, "pressure", NPerCm2(*c.peak_pressure_Pa),
+    fmt::print(out, "{}{:<12} {:<12} limit {:<12} ratio {:.3f}  {}\n", indent, "pressure", NPerCm2(*c.peak_pressure_Pa),
                NPerCm2(v.limits.pressure_Pa), *v.pressure_ratio, Mark(*v.pressure_ratio, sf));
   } else {
     fmt::print(out, "{}{:<12} not evaluated (no --contact-area); limit {}\n", indent, "pressure",
@@ -176,8 +176,7 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
       fmt::print(out, "  Verdicts\n");
       PrintJudgement(out, v, sf, "    ");
       fmt::print(out, "  Verdict    {}\n", VerdictWord(v));
-      fmt::print(out, "  Scope      {}\n", v.limits.Describe());
-      fmt::print(out, "  Criteria   {}\n", v.scope);
+      fmt::print(out, "  Scope      {}\n", v.scope);  // begins with the limits' Describe()
       ++iso;
     }
     if (!warnings.empty()) out << '\n';
@@ -285,7 +284,7 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
   const BodyContactScene first_scene = BodyContactSceneOf(first.scene, regions);
   if (plan.json) {
     out << report::BodyRegionSpeedLimitJson(first_scene, plan.coverings.size() == 1 ? MaterialName(first) : std::nullopt,
-                                            rule, rows, warnings)
+                                            BodyCriterion(rule, regions.has_head()), rule.safety_factor, rows, warnings)
         << '\n';
   } else if (plan.csv_file && *plan.csv_file == "-") {
     out << csv_text();
@@ -295,8 +294,7 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
                                           : fmt::format("{}; {} coverings", RobotSurface(first_scene, std::nullopt),
                                                         plan.coverings.size()));
     fmt::print(out, "Contact    {}\n", ContactText(regions));
-    fmt::print(out, "Criterion  force and pressure (ISO/TS 15066:2016 Table A.2){}; safety factor {:g}\n",
-               rule.compression_counts() ? ", no full compression of the covering" : "", rule.safety_factor);
+    fmt::print(out, "Criterion  {}\n", BodyCriterion(rule, regions.has_head()));
     fmt::print(out, "Speeds     the largest safe impact speed, bare and with the covering; 'binds' is the limit reached\n");
     std::string block;
     for (const report::BodyRegionTableRow& row : rows) {
@@ -305,14 +303,14 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
         block = key;
         fmt::print(out, "\n{}robot mass {}\n", row.material.empty() ? "" : "Material " + row.material + ", ",
                    Mass(row.robot_mass_kg));
-        fmt::print(out, "  {:<18} {:<26} {:>7} {:>8}  {:>9}  {:<16} {:>11}  {:<16} {:>7}\n", "region", "area",
+        fmt::print(out, "  {:<18} {:<34} {:>7} {:>8}  {:>9}  {:<16} {:>11}  {:<16} {:>7}\n", "region", "area",
                    "F_lim N", "p_lim", "bare m/s", "bare binds", "covered m/s", "covered binds", "gain");
       }
       const auto speed = [](const std::optional<double>& v, const std::string& status) {
         if (!v) return std::string("none");
         return fmt::format("{}{:.4f}", status == "safe-up-to-search-limit" ? ">=" : "", *v);
       };
-      fmt::print(out, "  {:<18} {:<26} {:>7} {:>8}  {:>9}  {:<16} {:>11}  {:<16} {:>7}\n", row.region,
+      fmt::print(out, "  {:<18} {:<34} {:>7} {:>8}  {:>9}  {:<16} {:>11}  {:<16} {:>7}\n", row.region,
                  row.area.empty() ? "-" : row.area,
                  row.force_limit_N ? fmt::format("{:.0f}", *row.force_limit_N) : std::string("-"),
                  row.pressure_limit_Pa ? fmt::format("{:.0f}", *row.pressure_limit_Pa * 1e-4) : std::string("-"),
@@ -398,7 +396,8 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
     return errors.BadInput(e.what());
   }
   if (options.json) {
-    out << report::BodyRegionDesignJson(request, result, input_warnings) << '\n';
+    out << report::BodyRegionDesignJson(request, result, BodyCriterion(request.rule, regions.has_head()), input_warnings)
+        << '\n';
     out.flush();
     return out ? 0 : errors.Failed("cannot write the results to standard output");
   }
@@ -410,7 +409,7 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
   fmt::print(out, "Robot      {}, {}\n", Mass(request.scene.robot_mass_kg),
              std::isinf(request.scene.robot_radius_m) ? std::string("flat") : "radius " + Mm(request.scene.robot_radius_m));
   fmt::print(out, "Contact    {}\n", ContactText(regions));
-  fmt::print(out, "Criterion  {}\n", request.rule.Describe());
+  fmt::print(out, "Criterion  {}\n", BodyCriterion(request.rule, regions.has_head()));
   fmt::print(out, "\n{}\n", result.message);
   const auto print_head = [&](const optim::DesignScore& score) {
     fmt::print(out, "  head ({}): laceration ratio {:.3f}, contusion ratio {:.3f}{}\n", HeadCriteriaName(),

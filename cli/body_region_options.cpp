@@ -206,10 +206,13 @@ void CheckBodyRegionScene(const BodyRegionPlan& regions, const SimulationPlan& p
   const Scene& scene = plan.scene;
   if (std::isinf(scene.robot.radius_m) && scene.covering.thickness_m > 0.0) {
     const auto source = plan.sources.find("robot.radius");
+    const std::string given = source == plan.sources.end()               ? std::string("--robot-radius flat")
+                              : source->second.rfind("--robot-radius", 0) == 0 ? source->second
+                                                                                : "robot.radius flat (from " + source->second + ")";
     throw InputError(fmt::format(
-        "--robot-radius flat{}: a covering on the body region ({}) needs a finite robot radius (its Hertz contact is "
-        "sphere-on-flat); give the radius, e.g. --robot-radius 15mm, or --covering-thickness 0 for the bare robot",
-        source == plan.sources.end() ? "" : fmt::format(" (from {})", source->second), names));
+        "{}: a covering on the body region ({}) needs a finite robot radius (its Hertz contact is sphere-on-flat); "
+        "give the radius, e.g. --robot-radius 15mm, or --covering-thickness 0 for the bare robot",
+        given, names));
   }
 }
 
@@ -256,6 +259,14 @@ std::optional<std::string> ContactAreaNote(const BodyRegionPlan& regions, const 
                      FormatQuantity(regions.contact_area_m2, QuantityKind::kArea));
 }
 
-std::string HeadCriteriaName() { return "skin injury, Park et al. 2011 (laceration and contusion)"; }
+std::string HeadCriteriaName() { return "skin injury, Park et al. 2011"; }
+
+std::string BodyCriterion(const optim::DesignRule& rule, bool head) {
+  return fmt::format("each region's force and pressure (ISO/TS 15066:2016 Table A.2){}{}{}; safety factor {:g} on each",
+                     head ? ", the head's laceration and contusion (Park et al. 2011)" : "",
+                     rule.compression_counts() ? ", the covering not fully compressed" : "",
+                     rule.crushing_allowed ? "" : ", the covering not crushed where its strength is known",
+                     rule.safety_factor);
+}
 
 }  // namespace covopt::cli

@@ -99,7 +99,11 @@ optim::BodyRegionOptions BodyRegionOptionsOf(const SimulationPlan& plan, bool al
 std::optional<std::string> ContactAreaNote(const BodyRegionPlan& regions, const Scene& scene,
                                            bool bare_robot_judged);
 
-/// The one-line head verdict scope: "skin injury, Park et al. 2011 (laceration, contusion)".
+/// Whose criteria judge the head: "skin injury, Park et al. 2011".
 std::string HeadCriteriaName();
+
+/// The criteria a body-region verdict applies under `rule`, in words ("each region's force and
+/// pressure (ISO/TS 15066:2016 Table A.2), ..., safety factor 1 on each"); `head`: the head too.
+std::string BodyCriterion(const optim::DesignRule& rule, bool head);
 
 }  // namespace covopt::cli

@@ -219,13 +219,14 @@ std::vector<std::string> BodyRegionTableCsvCells(const BodyRegionTableRow& row) 
 }
 
 std::string BodyRegionSpeedLimitJson(const BodyContactScene& scene, const std::optional<std::string>& material,
-                                     const optim::DesignRule& rule, std::span<const BodyRegionTableRow> rows,
+                                     std::string_view criterion, double safety_factor,
+                                     std::span<const BodyRegionTableRow> rows,
                                      std::span<const std::string> warnings) {
   ordered_json j;
   j["solve_for"] = "speed";
   j["scene"] = SceneObject(scene, material, true);
-  j["criterion"] = rule.Describe();
-  j["safety_factor"] = Number(rule.safety_factor);
+  j["criterion"] = criterion;
+  j["safety_factor"] = Number(safety_factor);
   j["rows"] = ordered_json::array();
   for (const BodyRegionTableRow& row : rows) j["rows"].push_back(TableRowObject(row));
   j["warnings"] = Strings(warnings);
@@ -233,7 +234,8 @@ std::string BodyRegionSpeedLimitJson(const BodyContactScene& scene, const std::o
 }
 
 std::string BodyRegionDesignJson(const optim::BodyRegionDesignRequest& request,
-                                 const optim::BodyRegionDesignResult& result, std::span<const std::string> warnings) {
+                                 const optim::BodyRegionDesignResult& result, std::string_view criterion,
+                                 std::span<const std::string> warnings) {
   const double sf = request.rule.safety_factor;
   const std::string head_criteria = "skin injury, Park et al. 2011";
   const auto candidate_json = [&](const optim::BodyRegionDesignCandidate& c) {
@@ -255,7 +257,7 @@ std::string BodyRegionDesignJson(const optim::BodyRegionDesignRequest& request,
   j["speed_m_per_s"] = Number(request.scene.speed_m_per_s);
   j["scene"] = SceneObject(request.scene, std::nullopt, false);
   j["safety_factor"] = Number(sf);
-  j["criterion"] = request.rule.Describe();
+  j["criterion"] = criterion;
   j["recommendation"] =
       result.recommendation ? candidate_json(result.candidates.at(*result.recommendation)) : ordered_json(nullptr);
   ordered_json bare;

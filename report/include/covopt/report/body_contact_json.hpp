@@ -77,11 +77,12 @@ std::span<const std::string_view> BodyRegionTableColumns() noexcept;
 /// One row's cells (shortest round-trip numbers, "fixed", "" for null).
 std::vector<std::string> BodyRegionTableCsvCells(const BodyRegionTableRow& row);
 
-/// `speed-limit --body-region`: {scene (without the robot's mass and speed), criterion,
+/// `speed-limit --body-region`: {solve_for "speed", scene (without the robot's mass and speed), criterion (in words),
 /// safety_factor, rows [BodyRegionTableColumns keys, plus bare_status, covered_status],
 /// warnings}.
 std::string BodyRegionSpeedLimitJson(const BodyContactScene& scene, const std::optional<std::string>& material,
-                                     const optim::DesignRule& rule, std::span<const BodyRegionTableRow> rows,
+                                     std::string_view criterion, double safety_factor,
+                                     std::span<const BodyRegionTableRow> rows,
                                      std::span<const std::string> warnings);
 
 /// `optimize --body-region --speed V`: {message, speed_m_per_s, recommendation (the
@@ -90,6 +91,7 @@ std::string BodyRegionSpeedLimitJson(const BodyContactScene& scene, const std::o
 /// governing_where, regions [...], head}], scope, warnings}. A head score is {laceration_ratio,
 /// contusion_ratio, compression_ratio, criteria}.
 std::string BodyRegionDesignJson(const optim::BodyRegionDesignRequest& request,
-                                 const optim::BodyRegionDesignResult& result, std::span<const std::string> warnings);
+                                 const optim::BodyRegionDesignResult& result, std::string_view criterion,
+                                 std::span<const std::string> warnings);
 
 }  // namespace covopt::report
