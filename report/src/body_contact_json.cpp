@@ -275,4 +275,51 @@ std::string BodyRegionDesignJson(const optim::BodyRegionDesignRequest& request,
   return j.dump(2);
 }
 
+std::string BodyRegionTrajectoryJson(const optim::BodyRegionTrajectoryCheck& check,
+                                     std::span<const materials::BodyLimits> regions, const BodyContactScene& scene,
+                                     const std::optional<HeadTrajectorySummary>& head, std::string_view criterion,
+                                     std::span<const std::string> warnings) {
+  ordered_json j;
+  j["status"] = optim::ToString(check.status);
+  j["message"] = check.message;
+  j["safe_speed_scale"] = Number(check.safe_speed_scale);
+  j["worst_sample"] = check.worst_sample ? ordered_json(*check.worst_sample) : ordered_json(nullptr);
+  j["unsafe_sample_count"] = check.unsafe_sample_count;
+  j["criterion"] = criterion;
+  j["scene"] = SceneObject(scene, std::nullopt, true);
+  j["regions"] = ordered_json::array();
+  for (const materials::BodyLimits& limits : regions) {
+    j["regions"].push_back({{"region", limits.region->name},
+                            {"area", limits.area->name},
+                            {"contact", ToString(limits.contact)},
+                            {"scope", limits.Describe()}});
+  }
+  if (head) {
+    j["head"] = {{"status", head->status},
+                 {"safe_speed_scale", Number(head->safe_speed_scale)},
+                 {"message", head->message}};
+  } else {
+    j["head"] = nullptr;
+  }
+  j["samples"] = ordered_json::array();
+  for (const optim::BodyRegionSampleVerdict& v : check.samples) {
+    ordered_json s;
+    s["time_s"] = Number(v.time_s);
+    s["speed_m_per_s"] = Number(v.speed_m_per_s);
+    s["reflected_mass_kg"] = MassValue(v.reflected_mass_kg);
+    s["moving"] = v.moving;
+    s["worst_ratio"] = Number(v.worst_ratio);
+    s["binding"] = optim::ToString(v.binding);
+    s["worst_region"] = v.moving ? ordered_json(v.worst_region) : ordered_json(nullptr);
+    s["safe"] = v.safe;
+    s["max_safe_speed_m_per_s"] = v.moving ? Number(v.max_safe_speed_m_per_s) : ordered_json(nullptr);
+    s["limiting_region"] = v.moving ? ordered_json(v.limiting_region) : ordered_json(nullptr);
+    s["limited_by"] = optim::ToString(v.limited_by);
+    s["speed_scale"] = Number(v.speed_scale);
+    j["samples"].push_back(std::move(s));
+  }
+  j["warnings"] = Strings(warnings);
+  return j.dump(2);
+}
+
 }  // namespace covopt::report

@@ -5,6 +5,7 @@
 // pressure F/A), the head keeps simulate's own answer, and bad input is exit 2 with one line
 // on stderr naming the choices and nothing on stdout.
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -246,4 +247,38 @@ TEST_CASE("--body-region bad input: exit 2 with one line naming the choices", "[
   const json face = JsonOf({"simulate", "--body-region", "face", "--contact", "clamped", "--covering-thickness", "0",
                             "--speed", "0.1m/s", "--json"});
   CHECK(face["regions"][0]["contact"] == "clamped");
+}
+
+TEST_CASE("robot --trajectory --body-region: the speed scale is Annex A's limit over each sample's speed",
+          "[body_regions][trajectory]") {
+  const std::string urdf = COVOPT_ROBOT_MODELS_DIR "/franka_fr3.urdf";
+  const std::string csv = COVOPT_ROBOT_MODELS_DIR "/franka_fr3_pick.csv";
+  const json j = JsonOf({"robot", "--urdf", urdf, "--tip", "fr3_link8", "--trajectory", csv, "--body-region", "chest",
+                         "--covering-thickness", "0", "--json"});
+  const auto chest = BodyRegionTable::BuiltIn().Limits("chest", "", ContactType::kTransient);
+  double scale = std::numeric_limits<double>::infinity();
+  std::size_t worst = 0;
+  const json& samples = j["samples"];
+  REQUIRE(samples.size() > 10);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (!samples[i]["moving"].get<bool>()) continue;
+    const double mass = samples[i]["reflected_mass_kg"].get<double>();
+    const double v_max = AnnexASpeed(mass, chest);
+    CHECK(samples[i]["max_safe_speed_m_per_s"].get<double>() == Approx(v_max).epsilon(1e-12));
+    const double s = v_max / samples[i]["speed_m_per_s"].get<double>();
+    if (s < scale) scale = s, worst = i;
+  }
+  CHECK(j["safe_speed_scale"].get<double>() == Approx(scale).epsilon(1e-12));
+  CHECK(j["worst_sample"] == worst);
+  CHECK(j["status"] == (scale >= 1.0 ? "safe" : "unsafe"));
+  // The head is judged by its own check when named, and its scale is the plain trajectory check's.
+  const json with_head = JsonOf({"robot", "--urdf", urdf, "--tip", "fr3_link8", "--trajectory", csv, "--body-region",
+                                 "chest,head", "--covering-thickness", "0", "--json"});
+  const json plain = JsonOf({"robot", "--urdf", urdf, "--tip", "fr3_link8", "--trajectory", csv,
+                             "--covering-thickness", "0", "--json"});
+  CHECK(with_head["head"]["safe_speed_scale"] == plain["safe_speed_scale"]);
+  ExpectRefused({"robot", "--urdf", urdf, "--tip", "fr3_link8", "--trajectory", csv, "--body-region", "chest",
+                 "--head-mass", "5kg"},
+                {"head.mass"});
+  ExpectRefused({"robot", "--urdf", urdf, "--tip", "fr3_link8", "--body-region", "chest"}, {"--body-region"});
 }

@@ -15,6 +15,7 @@
 
 #include "covopt/core/body_contact.hpp"
 #include "covopt/optim/body_region_check.hpp"
+#include "covopt/optim/body_region_trajectory.hpp"
 #include "covopt/optim/speed_limit.hpp"
 
 namespace covopt::report {
@@ -93,5 +94,21 @@ std::string BodyRegionSpeedLimitJson(const BodyContactScene& scene, const std::o
 std::string BodyRegionDesignJson(const optim::BodyRegionDesignRequest& request,
                                  const optim::BodyRegionDesignResult& result, std::string_view criterion,
                                  std::span<const std::string> warnings);
+
+/// `robot --trajectory --body-region`: {status, message, safe_speed_scale (null at rest),
+/// worst_sample (index or null), unsafe_sample_count, criterion, scene (without the robot's mass
+/// and speed), regions [{region, area, contact, scope}], head ({status, safe_speed_scale,
+/// message} of the head's own check, or null), samples [{time_s, speed_m_per_s,
+/// reflected_mass_kg, moving, worst_ratio, binding, worst_region, safe,
+/// max_safe_speed_m_per_s, limiting_region, limited_by, speed_scale}], warnings}.
+struct HeadTrajectorySummary {
+  std::string status;
+  double safe_speed_scale = 0.0;
+  std::string message;
+};
+std::string BodyRegionTrajectoryJson(const optim::BodyRegionTrajectoryCheck& check,
+                                     std::span<const materials::BodyLimits> regions, const BodyContactScene& scene,
+                                     const std::optional<HeadTrajectorySummary>& head, std::string_view criterion,
+                                     std::span<const std::string> warnings);
 
 }  // namespace covopt::report
