@@ -434,7 +434,9 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
              result.bare_robot_safe ? "safe for every region named" : "NOT safe for every region named");
   print_regions(result.bare_robot);
   if (result.bare_head) print_head(*result.bare_head);
-  const std::size_t shown = std::min<std::size_t>(result.candidates.size(), 8);
+  // --top N (checked by optimize's Resolve), default 8.
+  const std::size_t top = options.runners_up ? std::stoul(*options.runners_up) : 8;
+  const std::size_t shown = std::min<std::size_t>(result.candidates.size(), top);
   if (shown > 0) {
     fmt::print(out, "\nCandidates (first {} of {})\n", shown, result.candidates.size());
     fmt::print(out, "  {:<3} {:<28} {:>10} {:>10} {:>9}  {}\n", "#", "material", "E", "thickness", "governing",

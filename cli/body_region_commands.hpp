@@ -15,6 +15,7 @@
 #include "optimize.hpp"
 #include "simulate.hpp"
 #include "speed_limit.hpp"
+#include "sweep.hpp"
 
 namespace covopt::cli {
 
@@ -34,5 +35,10 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
 int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignRequest& head,
                           const std::vector<std::string>& warnings, const BodyRegionPlan& regions, std::ostream& out,
                           std::ostream& err);
+
+/// `sweep --body-region R` (one ISO region): the body contact's ratios per grid point, as CSV
+/// columns (or a summary), computed point by point on the exact path; no chart.
+int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan& regions, std::ostream& out,
+                       std::ostream& err);
 
 }  // namespace covopt::cli

@@ -282,3 +282,30 @@ TEST_CASE("robot --trajectory --body-region: the speed scale is Annex A's limit 
                 {"head.mass"});
   ExpectRefused({"robot", "--urdf", urdf, "--tip", "fr3_link8", "--body-region", "chest"}, {"--body-region"});
 }
+
+TEST_CASE("sweep --body-region: one CSV row per point, each the body contact simulate reports", "[body_regions][sweep]") {
+  const CliRun run = Run({"sweep", "--x", "speed=0.2..1.2:6", "--y", "covering-thickness=0,10mm", "--covering-modulus",
+                          "1MPa", "--body-region", "chest", "--csv", "-"});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const auto lines = SplitLines(run.out);
+  REQUIRE(lines.size() == 1 + 12);
+  CHECK(lines[0].rfind("speed,covering-thickness,peak_force_N,peak_pressure_Pa", 0) == 0);
+  // The bare rows (thickness 0) are Annex A's force v sqrt(mu k); a covered row is simulate's.
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const std::string& line = lines[i];
+    const std::size_t c1 = line.find(','), c2 = line.find(',', c1 + 1), c3 = line.find(',', c2 + 1);
+    const std::string speed = line.substr(0, c1), thickness = line.substr(c1 + 1, c2 - c1 - 1);
+    const double force = std::stod(line.substr(c2 + 1, c3 - c2 - 1));
+    CAPTURE(line);
+    if (thickness == "0") {
+      CHECK(force == Approx(std::stod(speed) * std::sqrt(8.0 * 25e3)).epsilon(1e-12));
+    } else {
+      const json j = JsonOf({"simulate", "--body-region", "chest", "--speed", speed, "--covering-thickness",
+                             thickness + "m", "--covering-modulus", "1MPa", "--json"});
+      CHECK(force == Approx(j["regions"][0]["peak_force_N"].get<double>()).epsilon(1e-12));
+    }
+  }
+  ExpectRefused({"sweep", "--x", "head-mass=3kg..5kg:3", "--body-region", "chest"}, {"head-mass", "does not read"});
+  ExpectRefused({"sweep", "--x", "speed=1..2:3", "--body-region", "chest,head"}, {"one ISO region"});
+}
