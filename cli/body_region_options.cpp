@@ -173,6 +173,18 @@ std::optional<BodyRegionPlan> ResolveBodyRegions(const BodyRegionFlags& flags) {
   return plan;
 }
 
+int RunWithBodyRegions(const BodyRegionFlags& flags, const CommandErrors& errors,
+                       const std::function<int(const BodyRegionPlan&)>& run) {
+  std::optional<BodyRegionPlan> regions;
+  try {
+    regions = ResolveBodyRegions(flags);
+  } catch (const InputError& e) {
+    return errors.BadInput(e.what());
+  }
+  if (!regions) return errors.BadInput("--body-region: no region named");
+  return run(*regions);
+}
+
 void CheckBodyRegionScene(const BodyRegionPlan& regions, const SimulationPlan& plan) {
   if (!regions.has_iso()) return;
   const std::string names = [&] {

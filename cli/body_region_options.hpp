@@ -17,6 +17,7 @@
 /// the command's robot (mass, speed, radius) and covering; the head model's other inputs do not
 /// apply to an ISO region and are refused when only ISO regions are named.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +34,7 @@ class App;
 namespace covopt::cli {
 
 struct SimulationPlan;  // simulate.hpp
+class CommandErrors;    // errors.hpp
 
 /// The four options as typed.
 struct BodyRegionFlags {
@@ -75,6 +77,11 @@ struct BodyRegionPlan {
 ///         region or area, transient contact with the skull/forehead or face: the table's
 ///         messages; --body-area with other than one ISO region; the head clamped).
 std::optional<BodyRegionPlan> ResolveBodyRegions(const BodyRegionFlags& flags);
+
+/// ResolveBodyRegions(flags) handed to `run`, a refusal being exit 2 through `errors`: how each
+/// command enters its --body-region form.
+int RunWithBodyRegions(const BodyRegionFlags& flags, const CommandErrors& errors,
+                       const std::function<int(const BodyRegionPlan&)>& run);
 
 /// Refuses, with only ISO regions named, a scene input they do not read (the head, scalp,
 /// skull, the robot's modulus and Poisson ratio, damping, braking, a neck, the phase

@@ -771,17 +771,13 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     return errors.BadInput(e.what());
   }
   if (options.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
-    std::optional<BodyRegionPlan> regions;
-    try {
-      regions = ResolveBodyRegions(options.body);
-      if (!r.ranges.empty()) {
-        throw InputError(fmt::format("{} '{}': scene ranges (uncertain inputs) are not taken with --body-region",
-                                     r.ranges.front().source, r.ranges.front().text));
-      }
-    } catch (const InputError& e) {
-      return errors.BadInput(e.what());
+    if (!r.ranges.empty()) {
+      return errors.BadInput(fmt::format("{} '{}': scene ranges (uncertain inputs) are not taken with --body-region",
+                                         r.ranges.front().source, r.ranges.front().text));
     }
-    return RunBodyRegionOptimize(options, r.request, r.warnings, *regions, out, err);
+    return RunWithBodyRegions(options.body, errors, [&](const BodyRegionPlan& regions) {
+      return RunBodyRegionOptimize(options, r.request, r.warnings, regions, out, err);
+    });
   }
   if (!r.ranges.empty()) return RunRobustOptimize(options, r, out, err);
   if (options.uncertainty.samples || !options.uncertainty.distributions.empty() || options.max_injury_probability) {

@@ -387,13 +387,9 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
     return errors.BadInput(e.what());
   }
   if (options.scene.body.any()) {  // ISO/TS 15066 body regions
-    std::optional<BodyRegionPlan> regions;
-    try {
-      regions = ResolveBodyRegions(options.scene.body);
-    } catch (const InputError& e) {
-      return errors.BadInput(e.what());
-    }
-    return RunBodyRegionTrajectory(run, options, *regions, json, out, err);
+    return RunWithBodyRegions(options.scene.body, errors, [&](const BodyRegionPlan& regions) {
+      return RunBodyRegionTrajectory(run, options, regions, json, out, err);
+    });
   }
   const optim::TrajectoryCheck& check = run.check;
   // A failed evaluation leaves the trajectory without a verdict: no table, file or chart.

@@ -611,13 +611,9 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
 int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "simulate");
   if (options.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
-    std::optional<BodyRegionPlan> regions;
-    try {
-      regions = ResolveBodyRegions(options.body);
-    } catch (const InputError& e) {
-      return errors.BadInput(e.what());
-    }
-    return RunBodyRegionSimulate(options, *regions, out, err);
+    return RunWithBodyRegions(options.body, errors, [&](const BodyRegionPlan& regions) {
+      return RunBodyRegionSimulate(options, regions, out, err);
+    });
   }
 
   SimulationPlan plan;

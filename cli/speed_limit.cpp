@@ -441,13 +441,9 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
 int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "speed-limit");
   if (options.scene.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
-    std::optional<BodyRegionPlan> regions;
-    try {
-      regions = ResolveBodyRegions(options.scene.body);
-    } catch (const InputError& e) {
-      return errors.BadInput(e.what());
-    }
-    return RunBodyRegionSpeedLimit(options, *regions, out, err);
+    return RunWithBodyRegions(options.scene.body, errors, [&](const BodyRegionPlan& regions) {
+      return RunBodyRegionSpeedLimit(options, regions, out, err);
+    });
   }
   SpeedLimitPlan plan;
   try {

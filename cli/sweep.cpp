@@ -435,13 +435,9 @@ void PrintSweepSummary(std::ostream& out, const SweepRun& run, const covopt::Swe
 int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "sweep");
   if (options.scene.body.any()) {  // ISO/TS 15066 body regions (body_region_sweep.cpp)
-    std::optional<BodyRegionPlan> regions;
-    try {
-      regions = ResolveBodyRegions(options.scene.body);
-    } catch (const InputError& e) {
-      return errors.BadInput(e.what());
-    }
-    return RunBodyRegionSweep(options, *regions, out, err);
+    return RunWithBodyRegions(options.scene.body, errors, [&](const BodyRegionPlan& regions) {
+      return RunBodyRegionSweep(options, regions, out, err);
+    });
   }
 
   SweepRun run;
