@@ -213,7 +213,7 @@ TEST_CASE("optimize --body-region --speed: every region named is safe at the rec
   CHECK(text.out.find("Scope") != std::string::npos);
 }
 
-TEST_CASE("--contact-area reads an area with its unit", "[body_regions][quantity]") {
+TEST_CASE("the contact area is read with its unit", "[body_regions][quantity]") {
   namespace specs = covopt::quantity_specs;
   CHECK(covopt::ParseQuantity("1cm2", specs::kContactArea, "--contact-area") == 1e-4);
   CHECK(covopt::ParseQuantity("100 mm2", specs::kContactArea, "--contact-area") == 1e-4);
@@ -224,7 +224,7 @@ TEST_CASE("--contact-area reads an area with its unit", "[body_regions][quantity
   CHECK_THROWS(covopt::ParseQuantity("1cm", specs::kContactArea, "--contact-area"));
 }
 
-TEST_CASE("--body-region bad input: exit 2 with one line naming the choices", "[body_regions]") {
+TEST_CASE("body-region bad input is exit 2 with one line naming the choices", "[body_regions]") {
   for (const std::string command : {"simulate", "speed-limit", "optimize"}) {
     CAPTURE(command);
     ExpectRefused({command, "--body-region", "face"}, {"A.3.2", "face", "--contact clamped"});
