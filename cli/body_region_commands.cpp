@@ -291,8 +291,11 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
   } else {
     fmt::print(out, "Robot      {}\n",
                plan.coverings.size() == 1 ? RobotSurface(first_scene, MaterialName(first))
-                                          : fmt::format("{}; {} coverings", RobotSurface(first_scene, std::nullopt),
-                                                        plan.coverings.size()));
+                                          : fmt::format("{}; covering {} of {} materials, one block each",
+                                                        std::isinf(first_scene.robot_radius_m)
+                                                            ? std::string("flat robot")
+                                                            : "robot radius " + Mm(first_scene.robot_radius_m),
+                                                        Mm(first_scene.covering.thickness_m), plan.coverings.size()));
     fmt::print(out, "Contact    {}\n", ContactText(regions));
     fmt::print(out, "Criterion  {}\n", BodyCriterion(rule, regions.has_head()));
     fmt::print(out, "Speeds     the largest safe impact speed, bare and with the covering; 'binds' is the limit reached\n");
