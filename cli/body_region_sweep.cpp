@@ -1,5 +1,6 @@
 // `covopt sweep --body-region R`: the body contact's verdict over the grid (the simplest correct
-// form: the exact path point by point, on one thread, into a CSV or a summary; no chart).
+// form: the exact path point by point, on one thread, into a CSV or a summary, and a chart of the
+// governing ratio: a line over one axis, a map with its contour at 1/SF over two).
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "covopt/report/csv.hpp"
 #include "errors.hpp"
 #include "output.hpp"
+#include "plot.hpp"
 #include "sweep.hpp"
 
 namespace covopt::cli {
@@ -43,10 +45,12 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
       throw InputError("--body-region with sweep: name one ISO region (the CSV's columns are one verdict's); for "
                        "several, run one sweep each, or use speed-limit --body-region");
     }
-    if (options.plot_file || options.plot_quantity) {
-      throw InputError(fmt::format("{} with --body-region: the body-region sweep writes its CSV (--csv) and a "
-                                   "summary, no chart; drop it",
-                                   options.plot_file ? "--plot" : "--plot-quantity"));
+    if (options.plot_quantity) {
+      throw InputError("--plot-quantity with --body-region: the body-region chart draws the governing ratio; drop it");
+    }
+    if (options.plot_file && !PlotFormatFor(*options.plot_file)) {
+      throw InputError(fmt::format("--plot: cannot tell the format of '{}'; name the file *.png or *.svg",
+                                   *options.plot_file));
     }
     x = ParseSweepAxis(options.x, "--x");
     if (options.y) y = ParseSweepAxis(*options.y, "--y");
@@ -76,6 +80,7 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
   header.insert(header.end(), columns.begin(), columns.end());
   report::AppendCsvRecord(csv, header);
   std::size_t points = 0, admissible = 0, invalid = 0;
+  std::string chart_data;  // x [y] governing ratio, a blank line between y blocks (gnuplot's grid)
   double worst = -1.0;
   std::string worst_at;
   const std::vector<double> y_values = y ? y->values : std::vector<double>{0.0};
@@ -100,6 +105,9 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
           row.push_back(cell);
         }
         if (v.admissible) ++admissible;
+        if (std::isfinite(xv) && std::isfinite(yv)) {
+          chart_data += y ? fmt::format("{} {} {}\n", xv, yv, v.governing_ratio) : fmt::format("{} {}\n", xv, v.governing_ratio);
+        }
         if (v.governing_ratio > worst) {
           worst = v.governing_ratio;
           worst_at = fmt::format("{} = {}{}, {}", x.name, AxisText(x, xv),
@@ -113,10 +121,37 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
       }
       report::AppendCsvRecord(csv, row);
     }
+    chart_data += "\n";
   }
   const bool csv_to_stdout = options.csv_file && *options.csv_file == "-";
   try {
+    if (options.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (options.csv_file && !csv_to_stdout) WriteFileAtomically(*options.csv_file, csv);
+    if (options.plot_file) {
+      const PlotFormat format = *PlotFormatFor(*options.plot_file);
+      const double bound = 1.0 / plan.safety_factor;
+      RunGnuplot(*options.plot_file, [&](const std::string& output) {
+        std::string s = "set encoding utf8\n" + GnuplotTerminal(format, 1000, 700);
+        s += fmt::format("set output {}\n$data << EOD\n{}EOD\n", GnuplotQuoted(output), chart_data);
+        s += fmt::format("set title {}\n", GnuplotQuoted(fmt::format(
+                                              "governing ratio (line: {:g}); {}", 1.0 / plan.safety_factor, limits.Describe())));
+        s += fmt::format("set xlabel {}\n", GnuplotQuoted(x.name + " [" + std::string(SiUnit(x.field->spec.kind)) + "]"));
+        if (x.log) s += "set logscale x\n";
+        if (y) {
+          s += fmt::format("set ylabel {}\n", GnuplotQuoted(y->name + " [" + std::string(SiUnit(y->field->spec.kind)) + "]"));
+          if (y->log) s += "set logscale y\n";
+          s += "set view map\nset contour base\nunset surface\nset pm3d at b\nunset key\n";
+          s += fmt::format("set cntrparam levels discrete {}\nset cblabel 'governing ratio'\n", bound);
+          s += fmt::format("splot $data using 1:2:3 with pm3d notitle, $data using 1:2:3 with lines linewidth 2 "
+                           "linecolor rgb '#000000' title 'ratio = {:g}'\n", bound);
+        } else {
+          s += "set ylabel 'governing ratio'\nset grid\n";
+          s += fmt::format("plot $data using 1:2 with lines linewidth 2 title 'governing ratio', {:g} with lines "
+                           "dashtype 2 linecolor rgb '#c0392b' title 'limit (1/SF)'\n", bound);
+        }
+        return s + "unset output\n";
+      });
+    }
   } catch (const OutputError& e) {
     return errors.Failed(e.what());
   }
@@ -127,7 +162,10 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
                regions.targets.front().Name(), ToString(limits.contact), points, admissible, invalid);
     if (worst >= 0.0) fmt::print(out, "Worst       governing ratio {:.4g} at {}\n", worst, worst_at);
     fmt::print(out, "Scope       {}\n", limits.Describe());
-    if (options.csv_file) fmt::print(out, "Wrote       {}\n", *options.csv_file);
+    if (options.csv_file || options.plot_file) {
+      fmt::print(out, "Wrote       {}{}{}\n", options.csv_file.value_or(""), options.csv_file && options.plot_file ? ", " : "",
+                 options.plot_file.value_or(""));
+    }
   }
   out.flush();
   if (!out) return errors.Failed("cannot write the results to standard output");

@@ -17,6 +17,7 @@
 #include "cli_test_support.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/materials/body_regions.hpp"
+#include "plot.hpp"
 
 namespace {
 
@@ -308,4 +309,24 @@ TEST_CASE("sweep --body-region: one CSV row per point, each the body contact sim
   }
   ExpectRefused({"sweep", "--x", "head-mass=3kg..5kg:3", "--body-region", "chest"}, {"head-mass", "does not read"});
   ExpectRefused({"sweep", "--x", "speed=1..2:3", "--body-region", "chest,head"}, {"one ISO region"});
+}
+
+TEST_CASE("sweep --body-region --plot draws the governing ratio", "[body_regions][sweep][plot]") {
+  if (!covopt::cli::FindOnPath("gnuplot")) {
+    WARN("gnuplot not on PATH: chart not drawn");
+    return;
+  }
+  covopt::cli::testing::TempDir dir;
+  for (const std::string y : {"", "covering-thickness=5mm..30mm:4"}) {
+    const std::string chart = (dir / (y.empty() ? "line.svg" : "map.svg")).string();
+    std::vector<std::string> args{"sweep", "--x", "covering-modulus=0.5MPa..50MPa:log:5", "--body-region", "chest",
+                                  "--speed", "1m/s", "--plot", chart};
+    if (!y.empty()) args.insert(args.end(), {"--y", y});
+    const CliRun run = Run(args);
+    INFO(run.err);
+    REQUIRE(run.exit_code == 0);
+    const std::string svg = covopt::cli::testing::ReadFile(chart);
+    CHECK(svg.find("<svg") != std::string::npos);
+    CHECK(svg.find("chest (sternum): 280 N") != std::string::npos);
+  }
 }
