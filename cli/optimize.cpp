@@ -22,6 +22,7 @@
 #include "covopt/optim/design.hpp"
 #include "covopt/report/design_json.hpp"
 #include "covopt/report/robust_json.hpp"
+#include "body_region_commands.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
 #include "oracle_options.hpp"
@@ -750,6 +751,7 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
       ->type_name("P")
       ->group("Uncertainty");
   sub->add_option("--top", options.runners_up, "rows of the candidate table (default 8)")->type_name("N")->group("Output");
+  AddBodyRegionOptions(*sub, options.body);
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the report")->group("Output");
   sub->add_option("--csv", options.csv, "write every candidate to FILE as CSV (SI units in the header)")
       ->type_name("FILE")
@@ -767,6 +769,15 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     (void)ImpactModel::FromScene(bare);  // scene range checks, naming the field
   } catch (const std::invalid_argument& e) {  // InputError and the library's checks
     return errors.BadInput(e.what());
+  }
+  if (options.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
+    if (!r.ranges.empty()) {
+      return errors.BadInput(fmt::format("{} '{}': scene ranges (uncertain inputs) are not taken with --body-region",
+                                         r.ranges.front().source, r.ranges.front().text));
+    }
+    return RunWithBodyRegions(options.body, errors, [&](const BodyRegionPlan& regions) {
+      return RunBodyRegionOptimize(options, r.request, r.warnings, regions, out, err);
+    });
   }
   if (!r.ranges.empty()) return RunRobustOptimize(options, r, out, err);
   if (options.uncertainty.samples || !options.uncertainty.distributions.empty() || options.max_injury_probability) {

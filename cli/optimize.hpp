@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "body_region_options.hpp"
 #include "materials_command.hpp"
 #include "oracle_options.hpp"
 #include "robot_model_options.hpp"
@@ -66,6 +67,9 @@ struct OptimizeOptions {
   /// probability of failing the criterion is <= P (FindProbabilityDesign).
   std::optional<std::string> max_injury_probability;
   bool json = false;
+  /// --body-region, --body-area, --contact, --contact-area: design for ISO/TS 15066 body
+  /// regions (optim::DesignForBodyRegions) instead of the head alone.
+  BodyRegionFlags body;
   /// --csv FILE: the candidate table as CSV (every candidate, SI units in the header).
   std::optional<std::string> csv;
 };

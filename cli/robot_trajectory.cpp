@@ -15,7 +15,10 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "body_region_options.hpp"
+#include "covopt/optim/body_region_trajectory.hpp"
 #include "covopt/optim/trajectory_check.hpp"
+#include "covopt/report/body_contact_json.hpp"
 #include "covopt/report/csv.hpp"
 #include "covopt/report/trajectory_json.hpp"
 #include "covopt/robot/trajectory.hpp"
@@ -246,6 +249,84 @@ TrajectoryRun Resolve(const RobotModelOptions& model, const RobotTrajectoryOptio
   return run;
 }
 
+/// --trajectory with --body-region: every sample against the ISO regions named
+/// (optim::CheckTrajectoryForBodyRegions); the head, when named, by the head's own check.
+int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptions& options,
+                            const BodyRegionPlan& regions, bool json, std::ostream& out, std::ostream& err) {
+  const CommandErrors errors(err, "robot");
+  const std::vector<materials::BodyLimits> iso = regions.IsoLimits();
+  const optim::BodyRegionOptions body_options = BodyRegionOptionsOf(run.scene, options.allow_full_compression, false);
+  std::optional<optim::BodyRegionTrajectoryCheck> check;
+  try {
+    if (options.csv_file || options.plot_file) {
+      throw InputError(fmt::format("{} with --body-region: the samples' table is printed (or --json); drop it",
+                                   options.csv_file ? "--csv" : "--plot"));
+    }
+    CheckBodyRegionScene(regions, run.scene);
+    if (!iso.empty()) {
+      check = optim::CheckTrajectoryForBodyRegions(BodyContactSceneOf(run.scene.scene, regions), iso,
+                                                   optim::MotionSamples(run.motion.samples), body_options);
+    }
+  } catch (const std::invalid_argument& e) {
+    return errors.BadInput(e.what());
+  }
+  std::optional<report::HeadTrajectorySummary> head;
+  if (regions.has_head()) {
+    if (run.check.status == optim::TrajectoryCheckStatus::kEvaluationFailed) return errors.Failed(run.check.message);
+    head = report::HeadTrajectorySummary{std::string(optim::ToString(run.check.status)), run.check.safe_speed_scale,
+                                         run.check.message};
+  }
+  const std::string criterion = BodyCriterion(body_options.rule, regions.has_head());
+  std::vector<std::string> warnings = run.input_warnings;
+  warnings.insert(warnings.end(), run.motion.warnings.begin(), run.motion.warnings.end());
+  if (json) {
+    const optim::BodyRegionTrajectoryCheck empty;
+    out << report::BodyRegionTrajectoryJson(check ? *check : empty, iso, BodyContactSceneOf(run.scene.scene, regions),
+                                            head, criterion, warnings)
+        << '\n';
+  } else {
+    fmt::print(out, "Robot      {}\n", run.robot_line);
+    fmt::print(out, "Trajectory {}: {} samples\n", *options.file, run.motion.samples.size());
+    fmt::print(out, "Contact    {} contact; bare robot's contact area {}\n", ToString(regions.contact),
+               regions.contact_area_m2 > 0.0 ? FormatQuantity(regions.contact_area_m2, QuantityKind::kArea) : "not given");
+    fmt::print(out, "Criterion  {}\n", criterion);
+    if (check) {
+      fmt::print(out, "Verdict    {}\n", check->message);
+      fmt::print(out, "\n  {:>9} {:>10} {:>10} {:>8}  {:<16} {:<34} {:>11} {:>8}\n", "t [s]", "speed m/s", "mass kg",
+                 "worst", "binds", "where", "max safe", "scale");
+      // Up to 20 samples: all; else the 10 moving samples with the smallest scale, in time order.
+      std::vector<std::size_t> shown(check->samples.size());
+      std::iota(shown.begin(), shown.end(), std::size_t{0});
+      if (shown.size() > 20) {
+        std::erase_if(shown, [&](std::size_t i) { return !check->samples[i].moving; });
+        std::sort(shown.begin(), shown.end(), [&](std::size_t a, std::size_t b) {
+          return check->samples[a].speed_scale < check->samples[b].speed_scale;
+        });
+        if (shown.size() > 10) shown.resize(10);
+        std::sort(shown.begin(), shown.end());
+      }
+      for (const std::size_t i : shown) {
+        const optim::BodyRegionSampleVerdict& v = check->samples[i];
+        const materials::BodyLimits& worst = iso[v.worst_region];
+        fmt::print(out, "  {:>9.4g} {:>10.4g} {:>10} {:>8.3f}  {:<16} {:<34} {:>11} {:>8}\n", v.time_s, v.speed_m_per_s,
+                   MassText(v.reflected_mass_kg), v.worst_ratio, v.moving ? optim::ToString(v.binding) : "-",
+                   v.moving ? worst.region->name + " (" + worst.area->name + ")" : "at rest",
+                   v.moving ? fmt::format("{:.4g}", v.max_safe_speed_m_per_s) : "-",
+                   v.moving ? fmt::format("{:.3f}", v.speed_scale) : "-");
+      }
+      fmt::print(out, "\nScope\n");
+      for (const materials::BodyLimits& limits : iso) fmt::print(out, "  {}\n", limits.Describe());
+    }
+    if (head) {
+      fmt::print(out, "{}Head ({}): {}\n", check ? "" : "\n", HeadCriteriaName(), head->message);
+    }
+    for (const std::string& w : warnings) fmt::print(out, "Warning: {}\n", w);
+  }
+  out.flush();
+  if (!out) return errors.Failed("cannot write the results to standard output");
+  return 0;
+}
+
 }  // namespace
 
 std::optional<std::string> RobotTrajectoryOptions::FirstCheckFlag() const {
@@ -258,6 +339,7 @@ std::optional<std::string> RobotTrajectoryOptions::FirstCheckFlag() const {
   if (scene.catalog.given()) return scene.catalog.files.empty() ? "--no-builtin" : "--catalog";
   if (scene.laceration_limit) return "--laceration-limit";
   if (scene.contusion_limit) return "--contusion-limit";
+  if (scene.body.any()) return "--body-region";
   if (scene.safety_factor) return "--safety-factor";
   if (allow_full_compression) return "--allow-full-compression";
   if (csv_file) return "--csv";
@@ -272,6 +354,7 @@ void AddRobotTrajectoryOptions(CLI::App& sub, RobotTrajectoryOptions& options) {
       ->type_name("FILE.csv")
       ->group("Trajectory check");
   AddSceneOptions(sub, options.scene);
+  AddBodyRegionOptions(sub, options.scene.body);
   // Each sample brings the robot's mass and speed: refused with a message, hidden from --help.
   sub.get_option("--robot-mass")->group("");
   sub.get_option("--speed")->group("");
@@ -302,6 +385,11 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
     run = Resolve(model, options, json);
   } catch (const std::invalid_argument& e) {  // InputError and the library's own checks
     return errors.BadInput(e.what());
+  }
+  if (options.scene.body.any()) {  // ISO/TS 15066 body regions
+    return RunWithBodyRegions(options.scene.body, errors, [&](const BodyRegionPlan& regions) {
+      return RunBodyRegionTrajectory(run, options, regions, json, out, err);
+    });
   }
   const optim::TrajectoryCheck& check = run.check;
   // A failed evaluation leaves the trajectory without a verdict: no table, file or chart.

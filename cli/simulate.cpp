@@ -17,6 +17,7 @@
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/optim/robust_design.hpp"
 #include "covopt/report/robust_json.hpp"
+#include "body_region_commands.hpp"
 #include "errors.hpp"
 #include "output.hpp"
 #include "quantity.hpp"
@@ -40,6 +41,7 @@ std::string_view TypeName(QuantityKind kind) {
     case QuantityKind::kDampingCoefficient: return "DAMPING";
     case QuantityKind::kStiffness: return "STIFFNESS";
     case QuantityKind::kViscousDamping: return "DAMPING";
+    case QuantityKind::kArea: return "AREA";
   }
   return "VALUE";
 }
@@ -219,6 +221,7 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
       ->group("Computation");
 
   AddRobotModelOptions(*sub, options.robot_model, true, "Robot model (instead of --robot-mass)");
+  AddBodyRegionOptions(*sub, options.body);
   options.accept_ranges = true;
   AddUncertaintyOptions(*sub, options.uncertainty, true);
   sub->add_flag("--sensitivities", options.sensitivities,
@@ -607,6 +610,11 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
 
 int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "simulate");
+  if (options.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
+    return RunWithBodyRegions(options.body, errors, [&](const BodyRegionPlan& regions) {
+      return RunBodyRegionSimulate(options, regions, out, err);
+    });
+  }
 
   SimulationPlan plan;
   std::optional<ImpactModel> model;

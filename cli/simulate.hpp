@@ -18,6 +18,7 @@
 #include "covopt/core/solve.hpp"
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/materials/material.hpp"
+#include "body_region_options.hpp"
 #include "materials_command.hpp"
 #include "plot.hpp"
 #include "robot_model_options.hpp"
@@ -80,6 +81,9 @@ struct SimulateOptions {
   UncertaintyFlags uncertainty;
   /// --sensitivities: the elasticity of each ratio to every scene input (docs/model.md §11).
   bool sensitivities = false;
+  /// --body-region, --body-area, --contact, --contact-area: judge ISO/TS 15066 body regions
+  /// (body_region_options.hpp). Filled by the subcommands that add the group.
+  BodyRegionFlags body;
   /// Not typed: set by the subcommands that take scene ranges (simulate, speed-limit); for
   /// the others ResolveSimulation refuses a range with one line.
   bool accept_ranges = false;

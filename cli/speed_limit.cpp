@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "body_region_commands.hpp"
 #include "errors.hpp"
 #include "output.hpp"
 #include "sweep.hpp"
@@ -242,6 +243,7 @@ CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
   sub->footer(std::string(kFooter));
   AddSceneOptions(*sub, options.scene);
   AddRobotModelOptions(*sub, options.scene.robot_model, true, "Robot model (instead of --robot-mass)");
+  AddBodyRegionOptions(*sub, options.scene.body);
   // --material is repeatable here (one block of rows and one chart curve each).
   sub->remove_option(sub->get_option("--material"));
   sub->add_option("--material", options.materials,
@@ -438,6 +440,11 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
 
 int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "speed-limit");
+  if (options.scene.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
+    return RunWithBodyRegions(options.scene.body, errors, [&](const BodyRegionPlan& regions) {
+      return RunBodyRegionSpeedLimit(options, regions, out, err);
+    });
+  }
   SpeedLimitPlan plan;
   try {
     plan = ResolveSpeedLimit(options);

@@ -26,6 +26,7 @@
 #include <fmt/ranges.h>
 
 #include "covopt/report/csv.hpp"
+#include "body_region_commands.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
 #include "output.hpp"
@@ -273,6 +274,7 @@ CLI::App* SetupSweep(CLI::App& app, SweepCommandOptions& options) {
       ->group("Sweep");
 
   AddSceneOptions(*sub, options.scene);
+  AddBodyRegionOptions(*sub, options.scene.body);
 
   sub->add_option("--csv", options.csv_file,
                   "write one row per point (SI units); '-' prints it on stdout instead of the "
@@ -432,6 +434,11 @@ void PrintSweepSummary(std::ostream& out, const SweepRun& run, const covopt::Swe
 
 int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "sweep");
+  if (options.scene.body.any()) {  // ISO/TS 15066 body regions (body_region_sweep.cpp)
+    return RunWithBodyRegions(options.scene.body, errors, [&](const BodyRegionPlan& regions) {
+      return RunBodyRegionSweep(options, regions, out, err);
+    });
+  }
 
   SweepRun run;
   try {

@@ -34,6 +34,7 @@ DisplayUnit DisplayFor(QuantityKind kind) {
     case QuantityKind::kDampingCoefficient: return {1.0, "s/m"};
     case QuantityKind::kStiffness: return {1e3, "kN/m"};
     case QuantityKind::kViscousDamping: return {1.0, "N·s/m"};
+    case QuantityKind::kArea: return {1e-4, "cm²"};
   }
   return {1.0, ""};
 }

@@ -79,6 +79,12 @@ constexpr std::array kUnits{
     Unit{"Ns/m", QuantityKind::kViscousDamping, 0, 1.0, true},
     Unit{"kN*s/m", QuantityKind::kViscousDamping, 3, 1.0, true},
     Unit{"N\u00b7s/m", QuantityKind::kViscousDamping, 0, 1.0, false},
+    Unit{"m2", QuantityKind::kArea, 0, 1.0, true},
+    Unit{"cm2", QuantityKind::kArea, -4, 1.0, true},
+    Unit{"mm2", QuantityKind::kArea, -6, 1.0, true},
+    Unit{"m\u00b2", QuantityKind::kArea, 0, 1.0, false},
+    Unit{"cm\u00b2", QuantityKind::kArea, -4, 1.0, false},
+    Unit{"mm\u00b2", QuantityKind::kArea, -6, 1.0, false},
 };
 
 constexpr std::string_view kSpaces = " \t";
@@ -127,6 +133,7 @@ std::string_view Example(QuantityKind kind) {
     case QuantityKind::kDampingCoefficient: return "0.2s/m";
     case QuantityKind::kStiffness: return "20kN/m";
     case QuantityKind::kViscousDamping: return "50N*s/m";
+    case QuantityKind::kArea: return "1cm2";
   }
   return "";
 }
@@ -146,6 +153,7 @@ std::string_view SiUnitName(QuantityKind kind) {
     case QuantityKind::kDampingCoefficient: return "seconds per metre";
     case QuantityKind::kStiffness: return "newtons per metre";
     case QuantityKind::kViscousDamping: return "newton-seconds per metre";
+    case QuantityKind::kArea: return "square metres";
   }
   return "SI units";
 }
@@ -230,6 +238,7 @@ std::string_view Describe(QuantityKind kind) noexcept {
     case QuantityKind::kDampingCoefficient: return "a damping coefficient";
     case QuantityKind::kStiffness: return "a stiffness";
     case QuantityKind::kViscousDamping: return "a viscous damping";
+    case QuantityKind::kArea: return "an area";
   }
   return "unknown";
 }
@@ -248,6 +257,7 @@ std::string_view SiUnit(QuantityKind kind) noexcept {
     case QuantityKind::kDampingCoefficient: return "s/m";
     case QuantityKind::kStiffness: return "N/m";
     case QuantityKind::kViscousDamping: return "N*s/m";
+    case QuantityKind::kArea: return "m2";
   }
   return "";
 }
@@ -293,6 +303,7 @@ std::string FormatQuantity(double si_value, QuantityKind kind) {
       if (std::abs(si_value) >= 1e3) return FormatSignificant(si_value / 1e3) + " kN/m";
       return FormatSignificant(si_value) + " N/m";
     case QuantityKind::kViscousDamping: return FormatSignificant(si_value) + " N\u00b7s/m";
+    case QuantityKind::kArea: return FormatSignificant(si_value * 1e4) + " cm\u00b2";
   }
   return FormatSignificant(si_value);
 }

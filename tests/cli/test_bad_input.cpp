@@ -65,6 +65,7 @@ std::string WithUnit(QuantityKind kind, const std::string& number) {
     case QuantityKind::kDampingCoefficient: return number + "s/m";
     case QuantityKind::kStiffness: return number + "N/m";
     case QuantityKind::kViscousDamping: return number + "N*s/m";
+    case QuantityKind::kArea: return number + "m2";
   }
   return number;
 }

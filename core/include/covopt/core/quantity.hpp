@@ -19,6 +19,7 @@
 ///     damping coefficient (Hunt-Crossley) s/m, ms/m
 ///     stiffness       N/m, kN/m, N/mm
 ///     viscous damping N*s/m, Ns/m, kN*s/m  (also N·s/m)
+///     area            m2, cm2, mm2  (also m², cm², mm²)
 ///     dimensionless   (Poisson ratios, tolerances, safety factors): a plain number
 ///
 /// Decimal units are applied to the decimal number itself, not by a multiplication in
@@ -57,6 +58,7 @@ enum class QuantityKind {
   kDampingCoefficient,
   kStiffness,       ///< a spring's stiffness [N/m]
   kViscousDamping,  ///< a dashpot's coefficient [N·s/m]
+  kArea,            ///< an area [m²] (the bare robot's contact area)
 };
 
 /// How to read one value.
@@ -106,7 +108,7 @@ void CheckBareNumber(double si_value, std::string_view typed, const QuantitySpec
 
 /// "a mass", "a length", "a speed", "a modulus or pressure", "a density", "dimensionless",
 /// "an energy density", "a time", "an acceleration", "a damping coefficient", "a stiffness",
-/// "a viscous damping".
+/// "a viscous damping", "an area".
 std::string_view Describe(QuantityKind kind) noexcept;
 
 /// The units that fit a kind, for messages and help: "kg, g or t"; "" for dimensionless.
@@ -173,6 +175,9 @@ inline constexpr QuantitySpec kTorsoMass{Kind::kMass, true, false, 0.0, 500.0, {
 inline constexpr QuantitySpec kNeckStiffness{Kind::kStiffness, false, false, 0.0, 1e8, {"kN/m", "N/mm"}, "neck stiffness"};
 /// The neck's damping [N·s/m] (head.neck_damping).
 inline constexpr QuantitySpec kNeckDamping{Kind::kViscousDamping, false, false, 0.0, 1e5, {"kN*s/m"}, "neck damping"};
+// ISO/TS 15066 body regions (covopt/core/body_contact.hpp).
+/// The bare robot's contact area [m²] (--contact-area): 1 mm² to 1000 cm².
+inline constexpr QuantitySpec kContactArea{Kind::kArea, false, false, 1e-6, 1e-1, {"cm2", "mm2"}, "contact area"};
 /// Integrator tolerances [-].
 inline constexpr QuantitySpec kTolerance{Kind::kDimensionless, false, false, 0.0, kNoUpperBound, {}, "tolerance"};
 // clang-format on
@@ -184,7 +189,7 @@ inline constexpr std::array kWithPlausibleRange{
     &kRobotModulus,    &kCoveringModulus, &kScalpModulus,    &kSkullModulus,
     &kMaterialDensity, &kLacerationLimit, &kContusionLimit,
     &kContactDamping,  &kReactionDelay,   &kBraking,         &kTorsoMass,
-    &kNeckStiffness,   &kNeckDamping,
+    &kNeckStiffness,   &kNeckDamping,     &kContactArea,
 };
 
 }  // namespace quantity_specs

@@ -1,0 +1,116 @@
+#pragma once
+/// @file body_region_options.hpp
+/// The option group "Body region (ISO/TS 15066)" of `simulate`, `speed-limit`, `optimize`,
+/// `robot --trajectory` and `sweep`: --body-region, --body-area, --contact and --contact-area,
+/// resolved into the targets a command judges (docs/model.md §13).
+///
+///     --body-region chest,hands-fingers --body-region head   (a list; may be repeated)
+///     --body-region all        every region/area ISO/TS 15066 permits under --contact, and
+///                              (transient) the head under Park et al.'s skin model
+///     --body-area palm-dominant   one area of the one region named (default: the region's
+///                                 lowest pressure limit)
+///     --contact transient|clamped (default transient; clamped = quasi-static)
+///     --contact-area 1cm2         the bare robot's contact area (its pressure F/A)
+///
+/// A target is an area of an ISO region (its materials::BodyLimits), or the head judged by
+/// the head model and Park et al.'s criteria, unchanged. The body contact's scene is built from
+/// the command's robot (mass, speed, radius) and covering; the head model's other inputs do not
+/// apply to an ISO region and are refused when only ISO regions are named.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "covopt/core/body_contact.hpp"
+#include "covopt/materials/body_regions.hpp"
+#include "covopt/core/scene.hpp"
+#include "covopt/optim/body_region_check.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace covopt::cli {
+
+struct SimulationPlan;  // simulate.hpp
+class CommandErrors;    // errors.hpp
+
+/// The four options as typed.
+struct BodyRegionFlags {
+  /// --body-region (repeatable; each a comma-separated list): region names, "head", "all".
+  std::vector<std::string> regions;
+  std::optional<std::string> area;          ///< --body-area NAME
+  std::optional<std::string> contact;       ///< --contact transient|clamped
+  std::optional<std::string> contact_area;  ///< --contact-area AREA (e.g. 1cm2)
+  /// Any of the four was given.
+  bool any() const noexcept { return !regions.empty() || area || contact || contact_area; }
+};
+
+/// Adds the group "Body region (ISO/TS 15066)" to `sub`, filling `flags`.
+void AddBodyRegionOptions(CLI::App& sub, BodyRegionFlags& flags);
+
+/// One thing a command judges: an area of an ISO region, or the head (Park et al.).
+struct BodyTarget {
+  /// The region's limits; empty for the head.
+  std::optional<materials::BodyLimits> limits;
+  bool is_head() const noexcept { return !limits.has_value(); }
+  /// "chest (sternum)" or "head".
+  std::string Name() const;
+};
+
+/// What the flags resolve to.
+struct BodyRegionPlan {
+  std::vector<BodyTarget> targets;  ///< in the order named (table order for "all")
+  ContactType contact = ContactType::kTransient;
+  /// The bare robot's contact area [m²]; 0: not given (the bare pressure is not evaluated).
+  double contact_area_m2 = 0.0;
+  bool has_head() const noexcept;
+  bool has_iso() const noexcept;
+  /// The ISO targets' limits, in order (the head left out).
+  std::vector<materials::BodyLimits> IsoLimits() const;
+};
+
+/// Reads the flags; empty when --body-region is not given (then --body-area, --contact and
+/// --contact-area are bad input).
+/// @throws InputError one line naming the flag, the value and the choices (an unknown
+///         region or area, transient contact with the skull/forehead or face: the table's
+///         messages; --body-area with other than one ISO region; the head clamped).
+std::optional<BodyRegionPlan> ResolveBodyRegions(const BodyRegionFlags& flags);
+
+/// ResolveBodyRegions(flags) handed to `run`, a refusal being exit 2 through `errors`: how each
+/// command enters its --body-region form.
+int RunWithBodyRegions(const BodyRegionFlags& flags, const CommandErrors& errors,
+                       const std::function<int(const BodyRegionPlan&)>& run);
+
+/// Refuses, with only ISO regions named, a scene input they do not read (the head, scalp,
+/// skull, the robot's modulus and Poisson ratio, damping, braking, a neck, the phase
+/// thresholds, the laceration and contusion limits, scene ranges, a history or plot of the
+/// head's time path) wherever it was set (a flag or the scene file); and a covering on a flat
+/// robot (naming --robot-radius).
+/// @throws InputError.
+void CheckBodyRegionScene(const BodyRegionPlan& regions, const SimulationPlan& plan);
+
+/// The body contact of `plan`'s robot (mass, speed, radius) and covering, with the region's
+/// contact type and the bare robot's contact area; k_H and m_H are set per region by the
+/// library (optim::WithRegion).
+BodyContactScene BodyContactSceneOf(const Scene& scene, const BodyRegionPlan& regions);
+
+/// The rule and the covering's material (its crush behaviour and strength) a body-region
+/// verdict applies: the command's safety factor, criterion and crushing flag.
+optim::BodyRegionOptions BodyRegionOptionsOf(const SimulationPlan& plan, bool allow_full_compression,
+                                             bool allow_crushing);
+
+/// A warning when --contact-area was given and the contact has a covering (its pressure is
+/// the Hertz pressure; the area is the bare robot's); empty otherwise.
+std::optional<std::string> ContactAreaNote(const BodyRegionPlan& regions, const Scene& scene,
+                                           bool bare_robot_judged);
+
+/// Whose criteria judge the head: "skin injury, Park et al. 2011".
+std::string HeadCriteriaName();
+
+/// The criteria a body-region verdict applies under `rule`, in words ("each region's force and
+/// pressure (ISO/TS 15066:2016 Table A.2), ..., safety factor 1 on each"); `head`: the head too.
+std::string BodyCriterion(const optim::DesignRule& rule, bool head);
+
+}  // namespace covopt::cli

@@ -1,0 +1,325 @@
+// ISO/TS 15066 body-region results as JSON text and CSV cells (covopt simulate, speed-limit
+// and optimize with --body-region).
+#include "covopt/report/body_contact_json.hpp"
+
+#include <array>
+#include <cmath>
+
+#include <covopt/core/number_format.hpp>
+#include <nlohmann/json.hpp>
+
+#include "json_number.hpp"
+
+namespace covopt::report {
+namespace {
+
+using internal::Number;
+using nlohmann::ordered_json;
+
+constexpr std::array<std::string_view, 13> kTableColumns = {
+    "material", "robot_mass_kg", "region", "area", "contact", "force_limit_N", "pressure_limit_Pa", "bare_max_speed_m_per_s",
+    "bare_limited_by", "covered_max_speed_m_per_s", "covered_limited_by", "gain", "criteria"};
+
+ordered_json MassValue(double kg) { return std::isinf(kg) ? ordered_json("fixed") : Number(kg); }
+
+ordered_json SceneObject(const BodyContactScene& scene, const std::optional<std::string>& material, bool without_robot) {
+  ordered_json j;
+  if (!without_robot) {
+    j["robot_mass_kg"] = MassValue(scene.robot_mass_kg);
+    j["speed_m_per_s"] = Number(scene.speed_m_per_s);
+  }
+  j["robot_radius_m"] = std::isinf(scene.robot_radius_m) ? ordered_json("flat") : Number(scene.robot_radius_m);
+  if (scene.has_covering()) {
+    j["covering"] = {{"youngs_modulus_Pa", Number(scene.covering.youngs_modulus_Pa)},
+                     {"poisson_ratio", Number(scene.covering.poisson_ratio)},
+                     {"thickness_m", Number(scene.covering.thickness_m)},
+                     {"material", material ? ordered_json(*material) : ordered_json(nullptr)}};
+  } else {
+    j["covering"] = nullptr;
+  }
+  j["contact"] = ToString(scene.contact);
+  j["contact_area_m2"] = scene.contact_area_m2 > 0.0 ? Number(scene.contact_area_m2) : ordered_json(nullptr);
+  return j;
+}
+
+ordered_json JudgementObject(const optim::BodyRegionJudgement& v, double safety_factor) {
+  const BodyContactResult& c = v.contact;
+  ordered_json j;
+  j["region"] = v.limits.region->name;
+  j["area"] = v.limits.area->name;
+  j["area_title"] = v.limits.area->title;
+  j["contact"] = ToString(v.limits.contact);
+  j["criteria"] = v.scope;
+  j["scope"] = v.limits.Describe();
+  j["method"] = c.method;
+  j["reduced_mass_kg"] = Number(c.reduced_mass_kg);
+  j["energy_transferred_J"] = Number(c.energy_transferred_J);
+  j["peak_force_N"] = Number(c.peak_force_N);
+  j["peak_pressure_Pa"] = Number(c.peak_pressure_Pa);
+  j["contact_radius_m"] = Number(c.contact_radius_m);
+  j["covering_deflection_m"] = Number(c.covering_deflection_m);
+  j["body_deflection_m"] = Number(c.body_deflection_m);
+  j["compression_ratio"] = Number(v.compression_ratio);
+  j["fully_compressed"] = c.fully_compressed;
+  j["force"] = {{"value_N", Number(c.peak_force_N)},
+                {"limit_N", Number(v.limits.force_N)},
+                {"ratio", Number(v.force_ratio)}};
+  j["pressure"] = {{"value_Pa", Number(c.peak_pressure_Pa)},
+                   {"limit_Pa", Number(v.limits.pressure_Pa)},
+                   {"ratio", Number(v.pressure_ratio)},
+                   {"evaluated", v.pressure_ratio.has_value()}};
+  j["crush"] = {{"check", optim::ToString(v.crush_check)},
+                {"ratio", v.crush_check == optim::CrushCheck::kChecked ? Number(v.crush_ratio) : ordered_json(nullptr)}};
+  j["governing"] = optim::ToString(v.governing);
+  j["governing_ratio"] = Number(v.governing_ratio);
+  j["safety_factor"] = Number(safety_factor);
+  j["admissible"] = v.admissible;
+  j["margin"] = Number(v.margin);
+  return j;
+}
+
+ordered_json Strings(std::span<const std::string> lines) {
+  ordered_json j = ordered_json::array();
+  for (const std::string& line : lines) j.push_back(line);
+  return j;
+}
+
+ordered_json HeadScore(const optim::DesignScore& score, const std::string& criteria) {
+  return {{"laceration_ratio", Number(score.laceration_ratio)},
+          {"contusion_ratio", Number(score.contusion_ratio)},
+          {"compression_ratio", Number(score.compression_ratio)},
+          {"criteria", criteria}};
+}
+
+ordered_json TableRowObject(const BodyRegionTableRow& row) {
+  ordered_json j;
+  j["material"] = row.material.empty() ? ordered_json(nullptr) : ordered_json(row.material);
+  j["robot_mass_kg"] = MassValue(row.robot_mass_kg);
+  j["region"] = row.region;
+  j["area"] = row.area.empty() ? ordered_json(nullptr) : ordered_json(row.area);
+  j["contact"] = row.contact;
+  j["force_limit_N"] = Number(row.force_limit_N);
+  j["pressure_limit_Pa"] = Number(row.pressure_limit_Pa);
+  j["bare_max_speed_m_per_s"] = Number(row.bare_max_speed_m_per_s);
+  j["bare_limited_by"] = row.bare_limited_by;
+  j["covered_max_speed_m_per_s"] = Number(row.covered_max_speed_m_per_s);
+  j["covered_limited_by"] = row.has_covering ? ordered_json(row.covered_limited_by) : ordered_json(nullptr);
+  j["gain"] = Number(row.gain);
+  j["criteria"] = row.criteria;
+  j["bare_status"] = row.bare_status;
+  j["covered_status"] = row.has_covering ? ordered_json(row.covered_status) : ordered_json(nullptr);
+  return j;
+}
+
+std::optional<double> SpeedOrNone(optim::SpeedLimitStatus status, double speed) {
+  if (status == optim::SpeedLimitStatus::kNoSafeValue || status == optim::SpeedLimitStatus::kEvaluationFailed) {
+    return std::nullopt;
+  }
+  return speed;
+}
+
+std::string Cell(const std::optional<double>& value) { return value ? FormatShortest(*value) : std::string(); }
+
+}  // namespace
+
+std::string BodyContactSceneJson(const BodyContactScene& scene, const std::optional<std::string>& material,
+                                 bool without_robot) {
+  return SceneObject(scene, material, without_robot).dump(2);
+}
+
+std::string BodyRegionJudgementJson(const optim::BodyRegionJudgement& judgement, double safety_factor) {
+  return JudgementObject(judgement, safety_factor).dump(2);
+}
+
+std::string BodyContactSimulationJson(const BodyContactScene& scene, const std::optional<std::string>& material,
+                                      std::span<const optim::BodyRegionJudgement> regions, double safety_factor,
+                                      const std::optional<std::string>& head_json,
+                                      std::span<const std::string> warnings) {
+  ordered_json j;
+  j["scene"] = SceneObject(scene, material, false);
+  j["safety_factor"] = Number(safety_factor);
+  j["regions"] = ordered_json::array();
+  bool safe = true;
+  for (const optim::BodyRegionJudgement& v : regions) {
+    j["regions"].push_back(JudgementObject(v, safety_factor));
+    safe = safe && v.admissible;
+  }
+  if (head_json) {
+    j["head"] = ordered_json::parse(*head_json);
+    const auto& head_safe = j["head"]["safe"];
+    safe = safe && head_safe.is_boolean() && head_safe.get<bool>();
+  } else {
+    j["head"] = nullptr;
+  }
+  j["safe"] = safe;
+  j["warnings"] = Strings(warnings);
+  return j.dump(2);
+}
+
+BodyRegionTableRow TableRow(double robot_mass_kg, const optim::BodyRegionSpeedLimitRow& row) {
+  BodyRegionTableRow r;
+  r.robot_mass_kg = robot_mass_kg;
+  r.region = row.limits.region->name;
+  r.area = row.limits.area->name;
+  r.contact = std::string(ToString(row.limits.contact));
+  r.force_limit_N = row.limits.force_N;
+  r.pressure_limit_Pa = row.limits.pressure_Pa;
+  r.bare_max_speed_m_per_s = SpeedOrNone(row.bare.status, row.bare.max_safe_speed_m_per_s);
+  r.bare_limited_by = std::string(optim::ToString(row.bare.limited_by));
+  r.bare_status = std::string(optim::ToString(row.bare.status));
+  if (row.covered) {
+    r.has_covering = true;
+    r.covered_max_speed_m_per_s = SpeedOrNone(row.covered->status, row.covered->max_safe_speed_m_per_s);
+    r.covered_limited_by = std::string(optim::ToString(row.covered->limited_by));
+    r.covered_status = std::string(optim::ToString(row.covered->status));
+  }
+  r.gain = row.gain();
+  r.criteria = row.bare.at_limit.scope.empty() ? row.limits.Describe() : row.bare.at_limit.scope;
+  return r;
+}
+
+BodyRegionTableRow HeadTableRow(double robot_mass_kg, const optim::SpeedLimit& bare,
+                                const std::optional<optim::SpeedLimit>& covered, std::string criteria) {
+  BodyRegionTableRow r;
+  r.robot_mass_kg = robot_mass_kg;
+  r.region = "head";
+  r.contact = std::string(ToString(ContactType::kTransient));
+  r.bare_max_speed_m_per_s = SpeedOrNone(bare.status, bare.max_safe_speed_m_per_s);
+  r.bare_limited_by = std::string(optim::ToString(bare.limited_by));
+  r.bare_status = std::string(optim::ToString(bare.status));
+  if (covered) {
+    r.has_covering = true;
+    r.covered_max_speed_m_per_s = SpeedOrNone(covered->status, covered->max_safe_speed_m_per_s);
+    r.covered_limited_by = std::string(optim::ToString(covered->limited_by));
+    r.covered_status = std::string(optim::ToString(covered->status));
+    if (r.bare_max_speed_m_per_s && *r.bare_max_speed_m_per_s > 0.0 && r.covered_max_speed_m_per_s) {
+      r.gain = *r.covered_max_speed_m_per_s / *r.bare_max_speed_m_per_s;
+    }
+  }
+  r.criteria = std::move(criteria);
+  return r;
+}
+
+std::span<const std::string_view> BodyRegionTableColumns() noexcept { return kTableColumns; }
+
+std::vector<std::string> BodyRegionTableCsvCells(const BodyRegionTableRow& row) {
+  return {row.material,
+          std::isinf(row.robot_mass_kg) ? std::string("fixed") : FormatShortest(row.robot_mass_kg),
+          row.region,
+          row.area,
+          row.contact,
+          Cell(row.force_limit_N),
+          Cell(row.pressure_limit_Pa),
+          Cell(row.bare_max_speed_m_per_s),
+          row.bare_limited_by,
+          Cell(row.covered_max_speed_m_per_s),
+          row.covered_limited_by,
+          Cell(row.gain),
+          row.criteria};
+}
+
+std::string BodyRegionSpeedLimitJson(const BodyContactScene& scene, const std::optional<std::string>& material,
+                                     std::string_view criterion, double safety_factor,
+                                     std::span<const BodyRegionTableRow> rows,
+                                     std::span<const std::string> warnings) {
+  ordered_json j;
+  j["solve_for"] = "speed";
+  j["scene"] = SceneObject(scene, material, true);
+  j["criterion"] = criterion;
+  j["safety_factor"] = Number(safety_factor);
+  j["rows"] = ordered_json::array();
+  for (const BodyRegionTableRow& row : rows) j["rows"].push_back(TableRowObject(row));
+  j["warnings"] = Strings(warnings);
+  return j.dump(2);
+}
+
+std::string BodyRegionDesignJson(const optim::BodyRegionDesignRequest& request,
+                                 const optim::BodyRegionDesignResult& result, std::string_view criterion,
+                                 std::span<const std::string> warnings) {
+  const double sf = request.rule.safety_factor;
+  const std::string head_criteria = "skin injury, Park et al. 2011";
+  const auto candidate_json = [&](const optim::BodyRegionDesignCandidate& c) {
+    ordered_json j;
+    j["material"] = c.material.name;
+    j["youngs_modulus_Pa"] = Number(c.material.youngs_modulus_Pa);
+    j["poisson_ratio"] = Number(c.material.poisson_ratio);
+    j["thickness_m"] = Number(c.thickness_m);
+    j["admissible"] = c.admissible();
+    j["governing_ratio"] = Number(c.governing_ratio);
+    j["governing_where"] = c.governing_where;
+    j["regions"] = ordered_json::array();
+    for (const optim::BodyRegionJudgement& v : c.regions) j["regions"].push_back(JudgementObject(v, sf));
+    j["head"] = c.head ? HeadScore(*c.head, head_criteria) : ordered_json(nullptr);
+    return j;
+  };
+  ordered_json j;
+  j["message"] = result.message;
+  j["speed_m_per_s"] = Number(request.scene.speed_m_per_s);
+  j["scene"] = SceneObject(request.scene, std::nullopt, false);
+  j["safety_factor"] = Number(sf);
+  j["criterion"] = criterion;
+  j["recommendation"] =
+      result.recommendation ? candidate_json(result.candidates.at(*result.recommendation)) : ordered_json(nullptr);
+  ordered_json bare;
+  bare["safe"] = result.bare_robot_safe;
+  bare["regions"] = ordered_json::array();
+  for (const optim::BodyRegionJudgement& v : result.bare_robot) bare["regions"].push_back(JudgementObject(v, sf));
+  bare["head"] = result.bare_head ? HeadScore(*result.bare_head, head_criteria) : ordered_json(nullptr);
+  j["bare_robot"] = std::move(bare);
+  j["candidates"] = ordered_json::array();
+  for (const optim::BodyRegionDesignCandidate& c : result.candidates) j["candidates"].push_back(candidate_json(c));
+  j["scope"] = Strings(result.scope);
+  std::vector<std::string> all_warnings(warnings.begin(), warnings.end());
+  all_warnings.insert(all_warnings.end(), result.warnings.begin(), result.warnings.end());
+  j["warnings"] = Strings(all_warnings);
+  return j.dump(2);
+}
+
+std::string BodyRegionTrajectoryJson(const optim::BodyRegionTrajectoryCheck& check,
+                                     std::span<const materials::BodyLimits> regions, const BodyContactScene& scene,
+                                     const std::optional<HeadTrajectorySummary>& head, std::string_view criterion,
+                                     std::span<const std::string> warnings) {
+  ordered_json j;
+  j["status"] = optim::ToString(check.status);
+  j["message"] = check.message;
+  j["safe_speed_scale"] = Number(check.safe_speed_scale);
+  j["worst_sample"] = check.worst_sample ? ordered_json(*check.worst_sample) : ordered_json(nullptr);
+  j["unsafe_sample_count"] = check.unsafe_sample_count;
+  j["criterion"] = criterion;
+  j["scene"] = SceneObject(scene, std::nullopt, true);
+  j["regions"] = ordered_json::array();
+  for (const materials::BodyLimits& limits : regions) {
+    j["regions"].push_back({{"region", limits.region->name},
+                            {"area", limits.area->name},
+                            {"contact", ToString(limits.contact)},
+                            {"scope", limits.Describe()}});
+  }
+  if (head) {
+    j["head"] = {{"status", head->status},
+                 {"safe_speed_scale", Number(head->safe_speed_scale)},
+                 {"message", head->message}};
+  } else {
+    j["head"] = nullptr;
+  }
+  j["samples"] = ordered_json::array();
+  for (const optim::BodyRegionSampleVerdict& v : check.samples) {
+    ordered_json s;
+    s["time_s"] = Number(v.time_s);
+    s["speed_m_per_s"] = Number(v.speed_m_per_s);
+    s["reflected_mass_kg"] = MassValue(v.reflected_mass_kg);
+    s["moving"] = v.moving;
+    s["worst_ratio"] = Number(v.worst_ratio);
+    s["binding"] = optim::ToString(v.binding);
+    s["worst_region"] = v.moving ? ordered_json(v.worst_region) : ordered_json(nullptr);
+    s["safe"] = v.safe;
+    s["max_safe_speed_m_per_s"] = v.moving ? Number(v.max_safe_speed_m_per_s) : ordered_json(nullptr);
+    s["limiting_region"] = v.moving ? ordered_json(v.limiting_region) : ordered_json(nullptr);
+    s["limited_by"] = optim::ToString(v.limited_by);
+    s["speed_scale"] = Number(v.speed_scale);
+    j["samples"].push_back(std::move(s));
+  }
+  j["warnings"] = Strings(warnings);
+  return j.dump(2);
+}
+
+}  // namespace covopt::report
