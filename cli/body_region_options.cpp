@@ -226,6 +226,17 @@ void CheckBodyRegionScene(const BodyRegionPlan& regions, const SimulationPlan& p
         "give the radius, e.g. --robot-radius 15mm, or --covering-thickness 0 for the bare robot",
         given, names));
   }
+  // The bare robot's own verdict needs its pressure: Table A.2 limits the pressure as well as
+  // the force, and the pressure of a bare robot is its force over its contact area. Without
+  // the area the verdict would be the force's alone. (With a covering the pressure is the
+  // covering's Hertz pressure, and the bare robot is only the comparison.)
+  if (!(scene.covering.thickness_m > 0.0) && !(regions.contact_area_m2 > 0.0)) {
+    throw InputError(fmt::format(
+        "--contact-area is needed for the bare robot on {}: ISO/TS 15066 Table A.2 limits the pressure too, and the "
+        "bare robot's pressure is its force over its contact area; give the area of the robot's contact surface, "
+        "e.g. --contact-area 1cm2 (a bare number is m², in [1e-06, 0.1]), or a covering",
+        names));
+  }
 }
 
 BodyContactScene BodyContactSceneOf(const Scene& scene, const BodyRegionPlan& regions) {

@@ -109,9 +109,9 @@ TEST_CASE("speed-limit --body-region chest: the chest's bare limit at 10 kg is 0
 TEST_CASE("speed-limit: clamped contact is stricter than transient for every area and covering", "[body_regions]") {
   for (const std::string thickness : {"0", "10mm"}) {
     const json transient = JsonOf({"speed-limit", "--body-region", "all", "--covering-thickness", thickness,
-                                   "--covering-modulus", "1MPa", "--json"});
+                                   "--covering-modulus", "1MPa", "--contact-area", "10cm2", "--json"});
     const json clamped = JsonOf({"speed-limit", "--body-region", "all", "--contact", "clamped", "--covering-thickness",
-                                 thickness, "--covering-modulus", "1MPa", "--json"});
+                                 thickness, "--covering-modulus", "1MPa", "--contact-area", "10cm2", "--json"});
     // Clamped: every area (the skull, forehead and face too), no head row.
     CHECK(clamped["rows"].size() == BodyRegionTable::BuiltIn().area_count());
     for (const json& c : clamped["rows"]) {
@@ -148,13 +148,13 @@ TEST_CASE("speed-limit --body-region: several masses give one block each, and --
 
 TEST_CASE("simulate --body-region: the bare robot's peaks are Annex A's and the pressure F/A", "[body_regions]") {
   const json j = JsonOf({"simulate", "--body-region", "chest", "--covering-thickness", "0", "--speed", "0.5m/s",
-                         "--robot-mass", "10kg", "--json"});
+                         "--robot-mass", "10kg", "--contact-area", "10cm2", "--json"});
   REQUIRE(j["regions"].size() == 1);
   const json& chest = j["regions"][0];
   const double force = 0.5 * std::sqrt(8.0 * 25e3);
   CHECK(chest["peak_force_N"].get<double>() == Approx(force).epsilon(1e-12));
-  CHECK(chest["peak_pressure_Pa"].is_null());
-  CHECK(chest["pressure"]["evaluated"] == false);
+  CHECK(chest["peak_pressure_Pa"].get<double>() == Approx(force / 10e-4).epsilon(1e-12));
+  CHECK(chest["pressure"]["evaluated"] == true);
   CHECK(chest["force"]["ratio"].get<double>() == Approx(force / 280.0).epsilon(1e-12));
   CHECK(chest["scope"] == "ISO/TS 15066:2016 Table A.2, transient (2× quasi-static), chest (sternum): 280 N, 240 N/cm²");
   CHECK(chest["admissible"] == true);
@@ -165,16 +165,19 @@ TEST_CASE("simulate --body-region: the bare robot's peaks are Annex A's and the 
   CHECK(area["regions"][0]["peak_pressure_Pa"].get<double>() == Approx(force / 2e-4).epsilon(1e-12));
   // Past the force limit: not safe, governed by force.
   const json fast = JsonOf({"simulate", "--body-region", "chest", "--covering-thickness", "0", "--speed", "1m/s",
-                            "--robot-mass", "10kg", "--json"});
+                            "--robot-mass", "10kg", "--contact-area", "10cm2", "--json"});
   CHECK(fast["regions"][0]["admissible"] == false);
   CHECK(fast["regions"][0]["governing"] == "force");
   CHECK(fast["safe"] == false);
 
-  const CliRun text = Run({"simulate", "--body-region", "chest", "--covering-thickness", "0", "--speed", "0.5m/s"});
+  const CliRun text = Run({"simulate", "--body-region", "chest", "--covering-thickness", "0", "--speed", "0.5m/s",
+                           "--contact-area", "10cm2"});
   REQUIRE(text.exit_code == 0);
-  CHECK(text.out.find("not evaluated (no --contact-area)") != std::string::npos);
   CHECK(text.out.find("Scope      ISO/TS 15066:2016 Table A.2, transient (2× quasi-static), chest (sternum)") !=
         std::string::npos);
+  // The bare robot's own verdict needs its pressure, hence its contact area.
+  ExpectRefused({"simulate", "--body-region", "chest", "--covering-thickness", "0", "--speed", "0.5m/s"},
+                {"--contact-area is needed for the bare robot on chest", "1cm2"});
 }
 
 TEST_CASE("simulate --body-region with the head: the head is simulate's own answer", "[body_regions]") {
@@ -242,11 +245,12 @@ TEST_CASE("body-region bad input is exit 2 with one line naming the choices", "[
   ExpectRefused({"speed-limit", "--body-region", "head", "--contact", "clamped"}, {"head", "--head-mass fixed"});
   ExpectRefused({"speed-limit", "--body-region", "chest", "--solve-for", "mass"}, {"--solve-for mass"});
   // A bare flat robot is Annex A's: no refusal.
-  CHECK(Run({"simulate", "--body-region", "chest", "--robot-radius", "flat", "--covering-thickness", "0"}).exit_code ==
-        0);
+  CHECK(Run({"simulate", "--body-region", "chest", "--robot-radius", "flat", "--covering-thickness", "0",
+             "--contact-area", "1cm2"})
+            .exit_code == 0);
   // face and skull-forehead are judged clamped.
   const json face = JsonOf({"simulate", "--body-region", "face", "--contact", "clamped", "--covering-thickness", "0",
-                            "--speed", "0.1m/s", "--json"});
+                            "--contact-area", "1cm2", "--speed", "0.1m/s", "--json"});
   CHECK(face["regions"][0]["contact"] == "clamped");
 }
 
@@ -255,7 +259,7 @@ TEST_CASE("robot --trajectory --body-region: the speed scale is Annex A's limit 
   const std::string urdf = COVOPT_ROBOT_MODELS_DIR "/franka_fr3.urdf";
   const std::string csv = COVOPT_ROBOT_MODELS_DIR "/franka_fr3_pick.csv";
   const json j = JsonOf({"robot", "--urdf", urdf, "--tip", "fr3_link8", "--trajectory", csv, "--body-region", "chest",
-                         "--covering-thickness", "0", "--json"});
+                         "--covering-thickness", "0", "--contact-area", "10cm2", "--json"});
   const auto chest = BodyRegionTable::BuiltIn().Limits("chest", "", ContactType::kTransient);
   double scale = std::numeric_limits<double>::infinity();
   std::size_t worst = 0;
@@ -274,7 +278,7 @@ TEST_CASE("robot --trajectory --body-region: the speed scale is Annex A's limit 
   CHECK(j["status"] == (scale >= 1.0 ? "safe" : "unsafe"));
   // The head is judged by its own check when named, and its scale is the plain trajectory check's.
   const json with_head = JsonOf({"robot", "--urdf", urdf, "--tip", "fr3_link8", "--trajectory", csv, "--body-region",
-                                 "chest,head", "--covering-thickness", "0", "--json"});
+                                 "chest,head", "--covering-thickness", "0", "--contact-area", "10cm2", "--json"});
   const json plain = JsonOf({"robot", "--urdf", urdf, "--tip", "fr3_link8", "--trajectory", csv,
                              "--covering-thickness", "0", "--json"});
   CHECK(with_head["head"]["safe_speed_scale"] == plain["safe_speed_scale"]);
