@@ -486,7 +486,11 @@ BodyRegionDesignResult DesignForBodyRegions(const BodyRegionDesignRequest& reque
     RegionSet::Verdicts bare = set.At(CoveringSpec{1.0, 0.25, 0.0}, bare_options, /*scopes=*/true);
     out.bare_robot = std::move(bare.regions);
     out.bare_head = bare.head;
-    out.bare_robot_safe = bare.admissible;
+    // Safe only when every limit was checked: a bare robot's pressure needs its contact area,
+    // and a verdict on the force alone must not say that no covering is needed.
+    const bool pressure_checked = std::all_of(out.bare_robot.begin(), out.bare_robot.end(),
+                                              [](const BodyRegionJudgement& j) { return j.pressure_ratio.has_value(); });
+    out.bare_robot_safe = bare.admissible && pressure_checked;
   }
 
   for (const CandidateMaterial& material : request.materials) {
@@ -552,7 +556,9 @@ BodyRegionDesignResult DesignForBodyRegions(const BodyRegionDesignRequest& reque
   }
   for (const BodyRegionJudgement& j : out.bare_robot) {
     if (!j.pressure_ratio) {
-      out.warnings.push_back("the bare robot's pressure is not evaluated: no contact area given");
+      out.warnings.push_back(
+          "the bare robot's pressure is not evaluated (no contact area given): it is never called safe, and its "
+          "verdicts are the force's alone");
       break;
     }
   }

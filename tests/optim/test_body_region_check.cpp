@@ -463,3 +463,17 @@ TEST_CASE("judging the head too makes the body-region design at least as thick",
 }
 
 }  // namespace
+
+TEST_CASE("the bare robot is called safe only with its pressure checked", "[body_region][design]") {
+  co::BodyRegionDesignRequest r = DesignRequest(false);
+  r.scene.speed_m_per_s = 0.1;  // far below every region's bare force limit
+  r.scene.robot_radius_m = 0.04;
+  const co::BodyRegionDesignResult no_area = co::DesignForBodyRegions(r);
+  for (const co::BodyRegionJudgement& j : no_area.bare_robot) CHECK(j.admissible);  // on the force alone
+  CHECK_FALSE(no_area.bare_robot_safe);
+  CHECK(no_area.message.find("no covering is needed") == std::string::npos);
+  r.scene.contact_area_m2 = 10e-4;
+  const co::BodyRegionDesignResult with_area = co::DesignForBodyRegions(r);
+  CHECK(with_area.bare_robot_safe);
+  CHECK(with_area.message.find("no covering is needed") != std::string::npos);
+}

@@ -173,6 +173,8 @@ struct BodyRegionDesignResult {
   /// Every region's verdict for the bare robot at the speed (and the head's, if judged).
   std::vector<BodyRegionJudgement> bare_robot;
   std::optional<DesignScore> bare_head;
+  /// Every region (and the head) safe for the bare robot, with its pressure checked: false
+  /// when the scene gives no contact area (a verdict on the force alone is not "safe").
   bool bare_robot_safe = false;
   /// Admissible first (thinnest, then by margin), then the others by governing ratio.
   std::vector<BodyRegionDesignCandidate> candidates;
