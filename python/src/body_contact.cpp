@@ -416,12 +416,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
 /// The head's speed limits as covopt.max_safe_speed computes them (the CLI's speed-limit
 /// --body-region head row): bare, and with the covering.
 report::BodyRegionTableRow HeadRow(const SceneInputs& inputs, const py::kwargs& kwargs, double mass_kg) {
-  optim::SpeedLimitOptions options;
-  options.limits = inputs.limits;
-  options.safety_factor = inputs.safety_factor;
-  options.allow_full_compression = Flag(kwargs, "allow_full_compression");
-  options.allow_crushing = Flag(kwargs, "allow_crushing");
-  options.covering_compressive_strength_Pa = inputs.CrushCheck().compressive_strength_Pa;
+  optim::SpeedLimitOptions options = SpeedLimitOptionsFrom(inputs, kwargs);
   Scene head = inputs.scene;
   head.robot.mass_kg = mass_kg;
   std::optional<optim::SpeedLimit> covered;
@@ -554,13 +549,7 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
                          const std::optional<std::string>& base, const py::object& point,
                          const std::optional<std::string>& urdf_text, bool ignore_joint_limits,
                          const SceneInputs& inputs, const py::kwargs& kwargs) {
-  for (const char* keyword : {"robot_mass", "speed"}) {
-    if (inputs.Gave(keyword)) {
-      throw std::invalid_argument(std::string("check_trajectory() takes the robot's ") +
-                                  (std::string(keyword) == "speed" ? "contact-point speed" : "reflected mass") +
-                                  " from each sample of the trajectory; drop " + keyword + " from the scene");
-    }
-  }
+  RefuseSampleKeywords(inputs);
   const RegionChoice choice = ReadRegions(kwargs);
   if (!choice.head) RefuseHeadKeywords(inputs, RegionText(kwargs));
   const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
@@ -568,28 +557,16 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
   RequireBareContactArea(scene, choice.limits);
   const optim::CoveringCrushCheck crush = inputs.CrushCheck();
 
-  const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base);
-  const robot::JointTrajectory joints = Trajectory(trajectory, chain.joint_count());
-  const Eigen::Vector3d p = Triple(point, "point");
-  robot::ContactMotionResult motion;
+  const robot::ContactMotionResult motion =
+      ReadContactMotion(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits);
+  const optim::TrajectoryCheckOptions head_options = TrajectoryCheckOptionsFrom(inputs, kwargs);
   std::optional<optim::BodyRegionTrajectoryCheck> check;
   std::optional<optim::TrajectoryCheck> head;
   try {
     py::gil_scoped_release release;
-    robot::ContactMotionOptions motion_options;
-    motion_options.reflected_mass = ReflectedMassOptions(ignore_joint_limits);
-    motion = robot::ContactMotion(chain, joints, p, motion_options);
     const std::vector<optim::MotionSample> samples = optim::MotionSamples(motion.samples);
     if (!choice.limits.empty()) check = optim::CheckTrajectoryForBodyRegions(scene, choice.limits, samples, options);
-    if (choice.head) {
-      optim::TrajectoryCheckOptions head_options;
-      head_options.limit.limits = inputs.limits;
-      head_options.limit.safety_factor = inputs.safety_factor;
-      head_options.limit.allow_full_compression = Flag(kwargs, "allow_full_compression");
-      head_options.limit.allow_crushing = Flag(kwargs, "allow_crushing");
-      head_options.limit.covering_compressive_strength_Pa = crush.compressive_strength_Pa;
-      head = optim::CheckTrajectory(inputs.scene, samples, head_options);
-    }
+    if (choice.head) head = optim::CheckTrajectory(inputs.scene, samples, head_options);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
   }

@@ -75,6 +75,11 @@ std::vector<std::string> InputWarnings(const SceneInputs& inputs);
 /// @throws std::invalid_argument naming the keyword.
 SweepAxis ReadAxis(const pybind11::handle& axis, const char* keyword);
 
+/// covopt.max_safe_speed's options: the scene's limits and safety factor,
+/// allow_full_compression=, allow_crushing=, the covering's crush strength and the oracle
+/// keywords (speed_limit_bindings.cpp).
+optim::SpeedLimitOptions SpeedLimitOptionsFrom(const SceneInputs& inputs, const pybind11::kwargs& kwargs);
+
 /// json.loads(text).
 pybind11::object JsonToPython(const std::string& text);
 
