@@ -282,14 +282,8 @@ std::optional<std::string> ContactAreaNote(const BodyRegionPlan& regions, const 
                      FormatQuantity(regions.contact_area_m2, QuantityKind::kArea));
 }
 
-std::string HeadCriteriaName() { return "skin injury, Park et al. 2011"; }
+std::string HeadCriteriaName() { return std::string(optim::HeadCriteriaName()); }
 
-std::string BodyCriterion(const optim::DesignRule& rule, bool head) {
-  return fmt::format("each region's force and pressure (ISO/TS 15066:2016 Table A.2){}{}{}; safety factor {:g} on each",
-                     head ? ", the head's laceration and contusion (Park et al. 2011)" : "",
-                     rule.compression_counts() ? ", the covering not fully compressed" : "",
-                     rule.crushing_allowed ? "" : ", the covering not crushed where its strength is known",
-                     rule.safety_factor);
-}
+std::string BodyCriterion(const optim::DesignRule& rule, bool head) { return optim::BodyRegionCriterion(rule, head); }
 
 }  // namespace covopt::cli

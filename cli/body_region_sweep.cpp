@@ -11,6 +11,7 @@
 #include <fmt/ostream.h>
 
 #include "body_region_commands.hpp"
+#include "covopt/optim/body_region_sweep.hpp"
 #include "covopt/report/csv.hpp"
 #include "errors.hpp"
 #include "output.hpp"
@@ -19,11 +20,6 @@
 
 namespace covopt::cli {
 namespace {
-
-/// The scene fields a body contact reads, and so the quantities it can be swept over.
-bool BodyContactField(std::string_view field) {
-  return field == "robot.mass" || field == "robot.speed" || field == "robot.radius" || field.rfind("covering.", 0) == 0;
-}
 
 std::string AxisText(const SweepAxisArgument& axis, double value) {
   if (std::isinf(value) && value > 0) return axis.field->spec.allow_flat ? "flat" : "fixed";
@@ -55,7 +51,7 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
     x = ParseSweepAxis(options.x, "--x");
     if (options.y) y = ParseSweepAxis(*options.y, "--y");
     for (const SweepAxisArgument* axis : {&x, y ? &*y : nullptr}) {
-      if (axis && !BodyContactField(axis->field->dotted_name())) {
+      if (axis && !optim::IsBodyContactField(axis->field->dotted_name())) {
         throw InputError(fmt::format("{} sweeps {}, which the body region does not read; sweep robot-mass, speed, "
                                      "robot-radius or the covering",
                                      axis == &x ? "--x" : "--y", axis->name));
@@ -83,17 +79,20 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
   std::string chart_data;  // x [y] governing ratio, a blank line between y blocks (gnuplot's grid)
   double worst = -1.0;
   std::string worst_at;
+  const std::vector<optim::BodyRegionSweepPoint> grid = optim::SweepBodyRegion(
+      BodyContactSceneOf(plan.scene, regions), SweepAxis{x.field->dotted_name(), x.values},
+      y ? std::optional(SweepAxis{y->field->dotted_name(), y->values}) : std::nullopt, limits, rule);
   const std::vector<double> y_values = y ? y->values : std::vector<double>{0.0};
-  for (const double yv : y_values) {
-    for (const double xv : x.values) {
-      Scene scene = plan.scene;
-      x.field->field(scene) = xv;
-      if (y) y->field->field(scene) = yv;
+  for (std::size_t iy = 0; iy < y_values.size(); ++iy) {
+    const double yv = y_values[iy];
+    for (std::size_t ix = 0; ix < x.values.size(); ++ix) {
+      const double xv = x.values[ix];
+      const optim::BodyRegionSweepPoint& point = grid[ix * y_values.size() + iy];
       std::vector<std::string> row{AxisText(x, xv)};
       if (y) row.push_back(AxisText(*y, yv));
       ++points;
-      try {
-        const optim::BodyRegionJudgement v = optim::JudgeBodyContact(BodyContactSceneOf(scene, regions), limits, rule);
+      if (point.judgement) {
+        const optim::BodyRegionJudgement& v = *point.judgement;
         const BodyContactResult& c = v.contact;
         for (const std::string& cell :
              {Number(c.peak_force_N), c.peak_pressure_Pa ? Number(*c.peak_pressure_Pa) : std::string(),
@@ -114,10 +113,10 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
                                  y ? fmt::format(", {} = {}", y->name, AxisText(*y, yv)) : std::string(),
                                  optim::ToString(v.governing));
         }
-      } catch (const std::invalid_argument& e) {  // a point outside the model's range
+      } else {  // a point outside the model's range
         ++invalid;
         row.resize(row.size() + columns.size() - 1);
-        row.emplace_back(e.what());
+        row.push_back(point.error);
       }
       report::AppendCsvRecord(csv, row);
     }

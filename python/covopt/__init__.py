@@ -18,7 +18,8 @@ release the GIL.
 """
 
 from . import _body_regions, _covopt
-from ._body_regions import BodyContact, BodyRegionDesign, BodyRegionSpeedLimitTable
+from ._body_regions import (BodyContact, BodyRegionDesign, BodyRegionSpeedLimitTable, BodyRegionSweep,
+                            BodyRegionTrajectoryCheck)
 from ._errors import ComputationError
 from ._results import (ContactMotion, Design, Material, ReflectedMass, Result, RobustDesign,
                        RobustSimulation, Sensitivities, Simulation, SpeedLimit, SpeedLimitTable,
@@ -32,7 +33,7 @@ __all__ = ["Scene", "Result", "simulate", "sweep", "optimize", "materials", "mat
            "ComputationError", "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass",
            "contact_motion", "check_trajectory", "worst_case", "injury_probability",
            "sensitivities", "robust_optimize", "load_scene", "BodyContact", "BodyRegionSpeedLimitTable",
-           "BodyRegionDesign"]
+           "BodyRegionDesign", "BodyRegionTrajectoryCheck", "BodyRegionSweep"]
 
 
 def _scene(scene, ranged=False):
@@ -74,10 +75,12 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
     the keyword (``safety_factor='2'``) where the CLI names the flag (``--safety-factor '2'``).
 
     body_region: an ISO/TS 15066 region ("chest", "hands-fingers", ...; "head" is the skin
-    model above), with body_area, contact ("transient" or "clamped") and contact_area [m²]:
-    returns a BodyContact (covopt/_body_regions.py); method None or "exact" is the exact
-    path, "time-path" or an integrator the time path (its peaks; the verdict is the exact
-    path's).
+    model above), with body_area, contact ("transient" or "clamped") and contact_area (the
+    bare robot's contact area: m², or a string with its unit, "1cm2"; needed for a bare robot,
+    whose pressure is its force over it): returns a BodyContact (covopt/_body_regions.py), the
+    object of ``covopt simulate --body-region --json``; method None or "exact" is the exact
+    path, "time-path" or an integrator also runs the time path (``result.time_path``, its
+    peaks; the verdict is the exact path's), history=True too (``result.history``).
 
     Returns a Simulation. Raises ValueError on bad input, ComputationError when the
     computation fails.
@@ -88,7 +91,8 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
         method=method, rtol=rtol, atol=atol, max_steps=max_steps, history=history)))
 
 
-def sweep(x, y=None, *, scene=None, threads=None):
+def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=None, contact=None,
+          contact_area=None):
     """A grid of impacts, as ``covopt sweep``: one or two scene quantities over lists of
     values, everything else from the scene. Each point takes the exact path where its scene
     has an energy integral, the time path (ARKODE ERK 5(4), rtol 1e-8) with braking or a neck.
@@ -110,9 +114,18 @@ def sweep(x, y=None, *, scene=None, threads=None):
     in every number, False in every flag. Also status, message and brief_report (the
     library's summary line).
 
+    body_region: one ISO/TS 15066 region, with body_area, contact and contact_area as
+    simulate takes them: its verdict per point, as ``covopt sweep --body-region --csv``, over
+    robot_mass, speed, robot_radius or the covering; returns a BodyRegionSweep
+    (covopt/_body_regions.py), where an invalid point carries its error.
+
     Raises ValueError on bad input (an unknown quantity, no values, ...), ComputationError
     when no point is a valid scene.
     """
+    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
+        return _body_regions.sweep(x, y, _scene(scene), **_given(
+            threads=threads, body_region=body_region, body_area=body_area, contact=contact,
+            contact_area=contact_area))
     return Sweep(_covopt.sweep(x, y, _scene(scene), threads))
 
 
@@ -269,10 +282,12 @@ def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
     oracle, method, rtol, max_steps: as optimize's.
 
     body_region: ISO/TS 15066 regions (a name, a list, "all"), with body_area, contact,
-    contact_area: the max safe speed for the scene's robot mass per area, bare and with the
-    scene's covering, and which limit binds; "all" with a transient contact adds the head's
-    row (Park et al.'s skin model, max_safe_speed). Returns a BodyRegionSpeedLimitTable
-    (covopt/_body_regions.py).
+    contact_area: the max safe speed for each robot mass in values (default the scene's) per
+    area, bare and with the scene's covering, and which limit binds; "all" with a transient
+    contact adds the head's row (Park et al.'s skin model, max_safe_speed). A bare scene
+    needs contact_area; with a covering and none, the bare column is the force's alone (the
+    warnings say so). Returns a BodyRegionSpeedLimitTable (covopt/_body_regions.py), the
+    object of ``covopt speed-limit --body-region --json``.
 
     Returns a SpeedLimitTable (solve_for, criterion, safety_factor, limits, search_limit,
     oracle, rows, scene, warnings; without the CLI's warnings about its own input). Raises
@@ -280,8 +295,7 @@ def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
     fails on an impact of a row's search.
     """
     if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
-        return _body_regions.speed_limit(_scene(scene), max_safe_speed,
-                                         **_given(**{k: v for k, v in locals().items() if k != "scene"}))
+        return _body_regions.speed_limit(_scene(scene), **_given(**{k: v for k, v in locals().items() if k != "scene"}))
     return SpeedLimitTable(_covopt.speed_limit(_scene(scene), **_given(
         solve_for=solve_for, values=values, materials=materials,
         allow_full_compression=allow_full_compression, allow_crushing=allow_crushing,
@@ -336,7 +350,8 @@ def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, u
 
 def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, scene=None,
                      urdf_text=None, allow_full_compression=False, allow_crushing=False,
-                     ignore_joint_limits=False):
+                     ignore_joint_limits=False, body_region=None, body_area=None, contact=None,
+                     contact_area=None):
     """Is a robot motion safe with this covering, and by how much may it be sped up or must
     it be slowed down? As ``covopt robot --trajectory --json``.
 
@@ -356,7 +371,18 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
     check's; without the CLI's warnings about its own input). Raises ValueError on bad input,
     ComputationError (status "evaluation-failed") when the time path (a scene with braking or
     a neck) fails at a sample: the trajectory then has no verdict.
+
+    body_region: ISO/TS 15066 regions (a name, a list, "all"; "head" among them is judged by
+    the check above), with body_area, contact and contact_area as simulate takes them: every
+    sample against every region named (optim::CheckTrajectoryForBodyRegions); returns a
+    BodyRegionTrajectoryCheck (covopt/_body_regions.py), the object of ``covopt robot
+    --trajectory --body-region --json``.
     """
+    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
+        return _body_regions.check_trajectory(
+            urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, _scene(scene), **_given(
+                allow_full_compression=allow_full_compression or None, allow_crushing=allow_crushing or None,
+                body_region=body_region, body_area=body_area, contact=contact, contact_area=contact_area))
     return TrajectoryCheck(_covopt.check_trajectory(
         urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, _scene(scene),
         allow_full_compression=allow_full_compression, allow_crushing=allow_crushing))

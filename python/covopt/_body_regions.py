@@ -1,48 +1,71 @@
-"""The ISO/TS 15066 body regions (docs/model.md §13): covopt.simulate, speed_limit and optimize
-with ``body_region=``, and their typed results.
+"""The ISO/TS 15066 body regions (docs/model.md §13): covopt.simulate, speed_limit, optimize,
+check_trajectory and sweep with ``body_region=``, and their typed results.
 
 The keywords are the CLI's flags: ``body_region`` (``--body-region``: a region of Table A.2,
 "head" for Park et al.'s skin model, "all", or a list), ``body_area`` (``--body-area``; default
 the region's lowest pressure limit), ``contact`` (``--contact``: "transient" or "clamped")
 and ``contact_area`` [m²] (``--contact-area``: the bare robot's contact area, for its
-pressure). The robot (robot_mass, speed, robot_radius), its covering and the safety factor
-come from the covopt.Scene; the region's spring k_H and mass m_H from Table A.3.
+pressure; a number in m², or a string with its unit, "1cm2"; the bare robot's own verdict
+needs it). The robot (robot_mass, speed, robot_radius), its covering and the safety factor
+come from the covopt.Scene; the region's spring k_H and mass m_H from Table A.3. The results
+are the CLI's ``--json`` objects for the same input (``to_dict()``), their warnings naming the
+keywords where the CLI names its flags.
 """
+
+import numpy as np
 
 from . import _covopt
 from ._results import Result
 
-__all__ = ["BodyContact", "BodyRegionSpeedLimitTable", "BodyRegionDesign"]
+__all__ = ["BodyContact", "BodyRegionSpeedLimitTable", "BodyRegionDesign", "BodyRegionTrajectoryCheck",
+           "BodyRegionSweep"]
 
 _CONTACT_KEYWORDS = ("body_area", "contact", "contact_area")
 
 
 class BodyContact(Result):
-    """covopt.simulate(..., body_region=...)'s result: one contact with one area of one region.
+    """covopt.simulate(..., body_region=...)'s result: one contact with one area of one region,
+    as ``covopt simulate --body-region R --json`` (``to_dict()`` is that object).
 
-    region, area, contact, force_limit_N, pressure_limit_Pa [Pa], stiffness_N_per_m,
-    effective_mass_kg ("fixed" when clamped); the peaks: peak_force_N, peak_pressure_Pa (None
-    for a bare robot without contact_area), compression_ratio (δ_c / 0.8 b_c, 0 bare),
-    fully_compressed, energy_transferred_J (½ μ v²), body_energy_J, covering_energy_J,
-    reduced_mass_kg, contact_radius_m, covering_deflection_m, body_deflection_m,
-    max_approach_m, contact_duration_s (None with a covering on the exact path),
-    rebound_speed_m_per_s, method; the verdict: ratios (force, pressure, compression, crush;
-    None where not evaluated), crush_check, governing ("force", "pressure",
-    "full-compression", "crush"), governing_ratio, admissible, margin, scope (whose criteria:
-    "ISO/TS 15066:2016 ..."); scene, warnings; history with history=True.
+    scene (robot_mass_kg, speed_m_per_s, robot_radius_m, covering (None bare), contact,
+    contact_area_m2), safety_factor, regions (one verdict), head (None), safe, warnings; and,
+    when the time path ran (method="time-path", an integrator, or history=True), time_path
+    (its peaks: method, peak_force_N, max_approach_m, contact_duration_s, ...; the verdict is
+    the exact path's) and with history=True history (numpy arrays time_s, approach_m,
+    approach_rate_m_per_s, force_N).
+
+    The verdict's keys are attributes too (``r.peak_force_N`` is ``r.regions[0].peak_force_N``):
+    region, area, area_title, contact, criteria (whose: "ISO/TS 15066:2016 ..."), scope,
+    method, reduced_mass_kg, energy_transferred_J, peak_force_N, peak_pressure_Pa (None for a
+    bare robot without contact_area), contact_radius_m, covering_deflection_m,
+    body_deflection_m, compression_ratio (δ_c / 0.8 b_c, 0 bare), fully_compressed, force
+    (value_N, limit_N, ratio), pressure (value_Pa, limit_Pa, ratio, evaluated), crush (check,
+    ratio), governing ("force", "pressure", "full-compression", "crush"), governing_ratio,
+    admissible, margin.
     """
+
+    def __getattr__(self, key):
+        data = object.__getattribute__(self, "_data")
+        if key not in data and data.get("regions") and key in data["regions"][0]:
+            return Result.__getattr__(Result(data["regions"][0], "BodyContact"), key)
+        return Result.__getattr__(self, key)
+
+    def __dir__(self):
+        return list(self._data) + list(self._data["regions"][0])
 
 
 class BodyRegionSpeedLimitTable(Result):
-    """covopt.speed_limit(..., body_region=...)'s result: one row per area of every region
-    named (``for row in table``, ``len(table)``, ``table[i]``).
+    """covopt.speed_limit(..., body_region=...)'s result, as ``covopt speed-limit --body-region
+    --json``: one row per area of every region named per robot mass (``for row in table``,
+    ``len(table)``, ``table[i]``).
 
-    Each row: region, area, contact, force_limit_N, pressure_limit_Pa (None for the head),
-    scope, bare and covered (max_safe_speed_m_per_s, limited_by, status, message; covered is
-    None without a covering), gain (covered / bare speed). With body_region="all" and a
-    transient contact the last row is the head's, judged by Park et al.'s skin model (its
-    limited_by is "laceration", "contusion" or "full-compression"). Also contact,
-    safety_factor, criteria (the limits counted), scene, warnings.
+    Each row: material, robot_mass_kg, region, area (None for the head), contact,
+    force_limit_N, pressure_limit_Pa [Pa] (None for the head), bare_max_speed_m_per_s,
+    bare_limited_by, covered_max_speed_m_per_s, covered_limited_by (None without a
+    covering), gain (covered / bare speed), criteria (whose), bare_status, covered_status.
+    With body_region="all" and a transient contact each mass's last row is the head's,
+    judged by Park et al.'s skin model (limited_by "laceration", "contusion" or
+    "full-compression"). Also solve_for, scene, criterion, safety_factor, warnings.
     """
 
     def __iter__(self):
@@ -56,13 +79,45 @@ class BodyRegionSpeedLimitTable(Result):
 
 
 class BodyRegionDesign(Result):
-    """covopt.optimize(..., body_region=[...])'s result: the covering (catalog material and
-    thickness) that lets the robot reach the scene's speed for every region named.
+    """covopt.optimize(..., body_region=[...])'s result, as ``covopt optimize --body-region
+    --json``: the covering (catalog material and thickness) that lets the robot reach the
+    scene's speed for every region named.
 
-    message, speed_m_per_s, bare_robot (one judgement per region, keys as BodyContact's),
-    bare_head, bare_robot_safe, candidates (material, family, thickness_m (None when no
-    thickness is admissible), admissible, governing_ratio, governing_where, regions, head),
-    recommendation (the recommended candidate, or None), scope, warnings, safety_factor.
+    message, speed_m_per_s, scene, safety_factor, criterion, recommendation (the
+    recommended candidate, or None), bare_robot (safe, regions (verdicts, keys as
+    BodyContact's), head), candidates (material, youngs_modulus_Pa, poisson_ratio,
+    thickness_m (None when no thickness is admissible), admissible, governing_ratio,
+    governing_where, regions, head (laceration_ratio, contusion_ratio, compression_ratio,
+    criteria)), scope, warnings.
+    """
+
+
+class BodyRegionTrajectoryCheck(Result):
+    """covopt.check_trajectory(..., body_region=...)'s result, as ``covopt robot --trajectory
+    --body-region --json``.
+
+    status ("safe", "unsafe", "at-rest"), message, safe_speed_scale (min over the moving
+    samples and the regions of max safe speed / speed; None at rest throughout), worst_sample
+    (its index, or None), unsafe_sample_count, criterion, scene, regions (region, area,
+    contact, scope), head (status, safe_speed_scale, message of the head's own check, or
+    None), samples (time_s, speed_m_per_s, reflected_mass_kg, moving, worst_ratio, binding,
+    worst_region, safe, max_safe_speed_m_per_s, limiting_region (indices into regions),
+    limited_by, speed_scale), warnings.
+    """
+
+
+class BodyRegionSweep(Result):
+    """covopt.sweep(..., body_region=...)'s result: one region's verdict over the grid, the
+    columns of ``covopt sweep --body-region --csv``, as numpy arrays ``a[i, j]`` at ``x[i]``,
+    ``y[j]`` (``a[i]`` with one axis).
+
+    x (and y) with x_quantity (y_quantity); peak_force_N, peak_pressure_Pa (NaN where not
+    evaluated), covering_deflection_m, force_ratio, pressure_ratio, compression_ratio,
+    crush_ratio (NaN where not checked), governing_ratio (floats); fully_compressed,
+    admissible, valid (bools); governing (str: "force", ...; "" where invalid) and error (str:
+    the library's message where the point is outside the model's range, else ""). An invalid
+    point is NaN in every number and False in every flag. Also region, area, contact, scope
+    (whose limits) and message (a summary line).
     """
 
 
@@ -105,37 +160,10 @@ def simulate(scene, **options):
     return BodyContact(_covopt.simulate_body_region(scene, **options))
 
 
-def speed_limit(scene, head_speed_limit, **options):
-    """covopt.speed_limit with body_region: the table; the head's row (Park et al.) from
-    head_speed_limit(scene, allow_full_compression=, allow_crushing=) -> SpeedLimit
-    (covopt.max_safe_speed)."""
-    options = _refuse("speed_limit", options, _REGION + _RULE)
-    table = _covopt.body_region_speed_limit(scene, **options)
-    if table.pop("head"):
-        rule = {k: v for k, v in options.items() if k in _RULE}
-        table["rows"].append(_head_row(scene, table, lambda s: head_speed_limit(s, **rule)))
-    table["warnings"] = []
-    return BodyRegionSpeedLimitTable(table)
-
-
-def _head_row(scene, table, head_speed_limit):
-    covered = table["scene"]["covering"]["thickness_m"] > 0
-    bare_scene = scene.replace(covering_thickness=0, material=None, covering_modulus=None,
-                               covering_poisson=None)
-
-    def limit(s):
-        r = head_speed_limit(s)
-        return {"max_safe_speed_m_per_s": r.max_safe_speed_m_per_s, "limited_by": r.limited_by,
-                "status": r.status, "message": r.message}
-
-    bare = limit(bare_scene)
-    cover = limit(scene) if covered else None
-    gain = (cover["max_safe_speed_m_per_s"] / bare["max_safe_speed_m_per_s"]
-            if cover and cover["max_safe_speed_m_per_s"] and bare["max_safe_speed_m_per_s"] else None)
-    return {"region": "head", "region_title": "Head (skin model)", "area": None, "area_title": None,
-            "contact": "transient", "force_limit_N": None, "pressure_limit_Pa": None,
-            "stiffness_N_per_m": None, "effective_mass_kg": scene.head_mass,
-            "scope": "skin injury, Park et al. 2011", "bare": bare, "covered": cover, "gain": gain}
+def speed_limit(scene, **options):
+    """covopt.speed_limit with body_region: the table (values: robot masses [kg])."""
+    options = _refuse("speed_limit", options, _REGION + _RULE + ("values",))
+    return BodyRegionSpeedLimitTable(_covopt.body_region_speed_limit(scene, **options))
 
 
 def design(scene, **options):
@@ -143,3 +171,21 @@ def design(scene, **options):
     options = _refuse("optimize", options, _REGION + _RULE + (
         "allow_unknown_strength", "materials", "families", "max_thickness", "thickness_step"))
     return BodyRegionDesign(_covopt.design_for_body_regions(scene, **options))
+
+
+def check_trajectory(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, scene,
+                     **options):
+    """covopt.check_trajectory with body_region."""
+    options = _refuse("check_trajectory", options, _REGION + _RULE)
+    return BodyRegionTrajectoryCheck(_covopt.check_trajectory_body_region(
+        urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, scene, **options))
+
+
+def sweep(x, y, scene, **options):
+    """covopt.sweep with body_region (one ISO region)."""
+    options = _refuse("sweep", options, _REGION)
+    data = _covopt.sweep_body_region(x, y, scene, **options)
+    shape = data["admissible"].shape
+    for key in ("governing", "error"):
+        data[key] = np.array(data[key], dtype=str).reshape(shape)
+    return BodyRegionSweep(data)

@@ -15,6 +15,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <span>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -28,11 +30,19 @@
 
 #include "covopt/core/body_contact.hpp"
 #include "covopt/core/impact_result.hpp"
+#include "covopt/core/quantity.hpp"
 #include "covopt/core/solve.hpp"
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/optim/body_region_check.hpp"
+#include "covopt/optim/body_region_sweep.hpp"
+#include "covopt/optim/body_region_trajectory.hpp"
 #include "covopt/optim/design.hpp"
+#include "covopt/optim/speed_limit.hpp"
+#include "covopt/optim/trajectory_check.hpp"
+#include "covopt/report/body_contact_json.hpp"
+#include "covopt/robot/trajectory.hpp"
+#include "robot_inputs.hpp"
 #include "scene_keywords.hpp"
 
 namespace py = pybind11;
@@ -192,14 +202,17 @@ RegionChoice ReadRegions(const py::kwargs& kwargs) {
   return choice;
 }
 
-/// contact_area= [m²]: a number in (0, 1] m².
+/// contact_area= [m²]: a number in m², or a string with its unit ("1cm2", read as the CLI's
+/// --contact-area); in (0, 1] m².
 double ReadContactArea(const py::kwargs& kwargs) {
   const auto v = Option(kwargs, "contact_area");
   if (!v) return 0.0;
-  if (py::isinstance<py::bool_>(*v) || !(py::isinstance<py::float_>(*v) || py::isinstance<py::int_>(*v))) {
-    throw std::invalid_argument("contact_area: expected a number in m2 (got " + Repr(*v) + ")");
+  if (py::isinstance<py::bool_>(*v) ||
+      !(py::isinstance<py::float_>(*v) || py::isinstance<py::int_>(*v) || py::isinstance<py::str>(*v))) {
+    throw std::invalid_argument("contact_area: expected a number in m2 or a string with its unit, e.g. '1cm2' (got " +
+                                Repr(*v) + ")");
   }
-  const double area = py::float_(*v).cast<double>();
+  const double area = ReadSceneQuantity(*v, quantity_specs::kContactArea, "contact_area");
   if (!(area > 0.0 && area <= 1.0)) {
     throw std::invalid_argument("contact_area must be in (0, 1] m2 (1 cm2 is 1e-4) (got " + Repr(*v) + ")");
   }
@@ -219,105 +232,71 @@ BodyContactScene ContactScene(const SceneInputs& inputs, const py::kwargs& kwarg
   return scene;
 }
 
-/// How a contact is judged: the safety factor, allow_full_compression, allow_crushing and the
-/// catalog material of the covering (its crush behaviour), if material= was given.
-optim::BodyRegionOptions JudgeOptions(const SceneInputs& inputs, const py::kwargs& kwargs) {
+/// The bare robot's own verdict needs its pressure (the CLI's CheckBodyRegionScene): Table A.2
+/// limits the pressure as well as the force, and a bare robot's pressure is its force over its
+/// contact area; without the area a "safe" would be the force's alone.
+void RequireBareContactArea(const BodyContactScene& scene, std::span<const BodyLimits> regions) {
+  if (regions.empty() || scene.has_covering() || scene.contact_area_m2 > 0.0) return;
+  std::string names;
+  for (std::size_t i = 0; i < regions.size() && i < 3; ++i) {
+    names += (i > 0 ? ", " : "") + (i == 2 ? std::string("...") : regions[i].region->name);
+  }
+  throw std::invalid_argument(
+      "contact_area is needed for the bare robot on " + names +
+      ": ISO/TS 15066 Table A.2 limits the pressure too, and the bare robot's pressure is its force over its contact "
+      "area; give the area of the robot's contact surface, e.g. contact_area='1cm2' (a bare number is m²), or a "
+      "covering");
+}
+
+/// How a contact is judged, as the CLI's BodyRegionOptionsOf: the safety factor,
+/// allow_full_compression, allow_crushing, and the catalog material of the covering (its crush
+/// behaviour) if material= was given; a material of unknown strength is judged without the
+/// crush check (the crush notes say so), unless `unknown_strength` says otherwise.
+optim::BodyRegionOptions JudgeOptions(const SceneInputs& inputs, const py::kwargs& kwargs,
+                                      std::optional<bool> unknown_strength = std::nullopt) {
   optim::BodyRegionOptions options;
   options.rule.safety_factor = inputs.safety_factor;
   options.rule.criterion = Flag(kwargs, "allow_full_compression") ? optim::DesignCriterion::kPaper
                                                                    : optim::DesignCriterion::kNoFullCompression;
   options.rule.crushing_allowed = Flag(kwargs, "allow_crushing");
-  options.rule.unknown_strength_allowed = Flag(kwargs, "allow_unknown_strength");
-  if (inputs.covering_material && inputs.scene.covering.thickness_m > 0.0) {
+  options.rule.unknown_strength_allowed = unknown_strength.value_or(!inputs.CrushCheck().notes.empty());
+  if (inputs.covering_material) {
     const std::vector<std::string> name{*inputs.covering_material};
     options.material = optim::SelectCandidates(materials::Catalog::BuiltIn(), name).front();
   }
   return options;
 }
 
+std::optional<std::string> MaterialName(const SceneInputs& inputs) {
+  if (inputs.covering_material && inputs.scene.covering.thickness_m > 0.0) return inputs.covering_material;
+  return std::nullopt;
+}
+
 py::object OrNone(const std::optional<double>& value) {
   return value ? py::object(py::float_(*value)) : py::object(py::none());
 }
 
-py::object MassOrFixed(double mass_kg) {
-  return std::isinf(mass_kg) ? py::object(py::str("fixed")) : py::object(py::float_(mass_kg));
-}
-
-/// The limits' keys: region, area, contact, force_limit_N, pressure_limit_Pa and the region's
-/// Table A.3 values.
-void PutLimits(py::dict& d, const BodyLimits& limits) {
-  d["region"] = limits.region->name;
-  d["region_title"] = limits.region->title;
-  d["area"] = limits.area->name;
-  d["area_title"] = limits.area->title;
-  d["contact"] = std::string(ToString(limits.contact));
-  d["force_limit_N"] = limits.force_N;
-  d["pressure_limit_Pa"] = limits.pressure_Pa;
-  d["stiffness_N_per_m"] = limits.stiffness_N_per_m();
-  d["effective_mass_kg"] = MassOrFixed(limits.effective_mass_kg());
-}
-
-py::dict SceneDict(const BodyContactScene& scene, const SceneInputs& inputs) {
-  py::dict d;
-  d["robot_mass_kg"] = MassOrFixed(scene.robot_mass_kg);
-  d["speed_m_per_s"] = scene.speed_m_per_s;
-  d["robot_radius_m"] = std::isinf(scene.robot_radius_m) ? py::object(py::str("flat")) : py::float_(scene.robot_radius_m);
-  py::dict covering;
-  covering["thickness_m"] = scene.covering.thickness_m;
-  if (scene.has_covering()) {
-    covering["youngs_modulus_Pa"] = scene.covering.youngs_modulus_Pa;
-    covering["poisson_ratio"] = scene.covering.poisson_ratio;
-    covering["material"] = inputs.covering_material ? py::object(py::str(*inputs.covering_material)) : py::none();
-  }
-  d["covering"] = covering;
-  d["contact_area_m2"] = scene.contact_area_m2 > 0.0 ? py::object(py::float_(scene.contact_area_m2)) : py::none();
-  d["safety_factor"] = inputs.safety_factor;
-  return d;
-}
-
-py::dict ContactDict(const BodyContactResult& r) {
+/// The contact of the time path (simulate with method= "time-path" or an integrator).
+py::dict TimePathDict(const BodyContactResult& r) {
   py::dict d;
   d["method"] = r.method;
-  d["reduced_mass_kg"] = r.reduced_mass_kg;
-  d["energy_transferred_J"] = r.energy_transferred_J;
   d["peak_force_N"] = r.peak_force_N;
   d["peak_pressure_Pa"] = OrNone(r.peak_pressure_Pa);
   d["contact_radius_m"] = r.contact_radius_m;
   d["covering_deflection_m"] = r.covering_deflection_m;
   d["body_deflection_m"] = r.body_deflection_m;
   d["max_approach_m"] = r.max_approach_m;
-  d["body_energy_J"] = r.body_energy_J;
-  d["covering_energy_J"] = r.covering_energy_J;
   d["compression_ratio"] = r.compression_ratio;
   d["fully_compressed"] = r.fully_compressed;
+  d["energy_transferred_J"] = r.energy_transferred_J;
   d["contact_duration_s"] = OrNone(r.contact_duration_s);
   d["rebound_speed_m_per_s"] = r.rebound_speed_m_per_s;
   return d;
 }
 
-/// A judgement: the limits, the contact's peaks, the ratios and the verdict.
-py::dict JudgementDict(const optim::BodyRegionJudgement& j) {
-  py::dict d;
-  PutLimits(d, j.limits);
-  for (const auto& item : ContactDict(j.contact)) d[item.first] = item.second;
-  py::dict ratios;
-  ratios["force"] = j.force_ratio;
-  ratios["pressure"] = OrNone(j.pressure_ratio);
-  ratios["compression"] = j.compression_ratio;
-  ratios["crush"] = j.crush_check == optim::CrushCheck::kChecked ? py::object(py::float_(j.crush_ratio)) : py::none();
-  d["ratios"] = ratios;
-  d["crush_check"] = std::string(optim::ToString(j.crush_check));
-  d["governing"] = std::string(optim::ToString(j.governing));
-  d["governing_ratio"] = j.governing_ratio;
-  d["admissible"] = j.admissible;
-  d["margin"] = j.margin;
-  d["scope"] = j.scope;
-  return d;
-}
-
-/// The solver options of simulate: method= None (the exact path; the time path with
-/// history=True), "exact", or "time-path"/"cvode"/an integrator name; rtol=, atol=,
-/// max_steps= for the time path.
+/// The solver options of simulate: method= None or "exact" (the exact path), or
+/// "time-path"/"cvode"/an integrator name (the time path, besides the exact path's verdict);
+/// rtol=, atol=, max_steps= for the time path; history=True runs the time path.
 SolveOptions ReadPath(const py::kwargs& kwargs) {
   SolveOptions options;
   options.record_history = Flag(kwargs, "history");
@@ -337,7 +316,11 @@ SolveOptions ReadPath(const py::kwargs& kwargs) {
       throw std::invalid_argument("method: expected exact, time-path, cvode" + names + " (got '" + method + "')");
     }
   }
-  const bool time_path = options.path == PathChoice::kTimePath || options.record_history;
+  if (options.record_history && options.path == PathChoice::kExact) {
+    throw std::invalid_argument("history=True needs the time path; drop method='exact'");
+  }
+  if (options.record_history) options.path = PathChoice::kTimePath;
+  const bool time_path = options.path == PathChoice::kTimePath;
   for (const char* k : {"rtol", "atol", "max_steps"}) {
     if (Option(kwargs, k) && !time_path) {
       throw std::invalid_argument(std::string(k) + " applies to the time path only; give method='time-path' or "
@@ -375,41 +358,50 @@ BodyLimits OneRegion(const py::kwargs& kwargs, const char* function) {
   return choice.limits.front();
 }
 
-/// covopt.simulate(scene, body_region=..., ...): one contact, judged.
+/// "contact_area 1 cm² is the bare robot's; ..." (the CLI's ContactAreaNote, naming the keyword).
+std::vector<std::string> ContactWarnings(const SceneInputs& inputs, const BodyContactScene& scene) {
+  std::vector<std::string> warnings = InputWarnings(inputs);
+  if (scene.has_covering() && scene.contact_area_m2 > 0.0) {
+    warnings.push_back("contact_area " + FormatQuantity(scene.contact_area_m2, QuantityKind::kArea) +
+                       " is the bare robot's; with the covering the pressure is its Hertz pressure (the area is not "
+                       "used here)");
+  }
+  return warnings;
+}
+
+/// covopt.simulate(scene, body_region=..., ...): one contact, judged; the dict is `covopt
+/// simulate --body-region --json`'s, with time_path (and history) when the time path ran.
 py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   const BodyLimits limits = OneRegion(kwargs, "simulate");
   RefuseHeadKeywords(inputs, limits.region->name);
   const SolveOptions options = ReadPath(kwargs);
   const optim::BodyRegionOptions judge = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = optim::WithRegion(ContactScene(inputs, kwargs, limits.contact), limits);
-  optim::BodyRegionJudgement judgement;
-  BodyContactResult contact;
+  const BodyContactScene scene = ContactScene(inputs, kwargs, limits.contact);
+  RequireBareContactArea(scene, std::span(&limits, 1));
+  std::vector<optim::BodyRegionJudgement> judgements;
+  std::optional<BodyContactResult> timed;
   try {
     py::gil_scoped_release release;
-    judgement = optim::JudgeBodyContact(scene, limits, judge);
-    contact = options.path == PathChoice::kAuto && !options.record_history ? judgement.contact
-                                                                           : Solve(scene, options);
+    judgements.push_back(optim::JudgeBodyContact(scene, limits, judge));
+    if (options.path == PathChoice::kTimePath) timed = Solve(optim::WithRegion(scene, limits), options);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(inputs.Attributed(OptionKeywords(AsKeywords(e.what()))));
   }
-  if (!contact.ok()) {
-    RaiseComputationError("the computation failed: " + std::string(ToString(contact.status)) + ": " + contact.message,
-                          std::string(ToString(contact.status)));
+  if (timed && !timed->ok()) {
+    RaiseComputationError("the time path failed on " + limits.region->name + " (" +
+                              std::string(ToString(timed->status)) + "): " + timed->message,
+                          std::string(ToString(timed->status)));
   }
-  py::dict d = JudgementDict(judgement);
-  for (const auto& item : ContactDict(contact)) d[item.first] = item.second;  // the path asked for
-  d["scene"] = SceneDict(scene, inputs);
-  py::list warnings;
-  if (scene.has_covering() && scene.contact_area_m2 > 0.0) {
-    warnings.append("contact_area is not read with a covering: the pressure is the covering's Hertz pressure");
-  }
-  d["warnings"] = warnings;
+  py::dict d = JsonToPython(report::BodyContactSimulationJson(scene, MaterialName(inputs), judgements,
+                                                              inputs.safety_factor, std::nullopt,
+                                                              ContactWarnings(inputs, scene)));
+  if (timed) d["time_path"] = TimePathDict(*timed);
   if (options.record_history) {
     py::dict columns;
     const auto column = [&](const char* name, double (*field)(const BodyContactSample&)) {
-      py::array_t<double> array(static_cast<py::ssize_t>(contact.history.size()));
+      py::array_t<double> array(static_cast<py::ssize_t>(timed->history.size()));
       double* data = array.mutable_data();
-      for (std::size_t i = 0; i < contact.history.size(); ++i) data[i] = field(contact.history[i]);
+      for (std::size_t i = 0; i < timed->history.size(); ++i) data[i] = field(timed->history[i]);
       columns[name] = array;
     };
     column("time_s", [](const BodyContactSample& s) { return s.time_s; });
@@ -421,60 +413,81 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   return d;
 }
 
-py::dict LimitDict(const optim::BodyRegionSpeedLimit& limit) {
-  py::dict d;
-  d["max_safe_speed_m_per_s"] = limit.status == optim::SpeedLimitStatus::kNoSafeValue
-                                    ? py::object(py::none())
-                                    : py::object(py::float_(limit.max_safe_speed_m_per_s));
-  d["limited_by"] = std::string(optim::ToString(limit.limited_by));
-  d["status"] = std::string(optim::ToString(limit.status));
-  d["message"] = limit.message;
-  return d;
+/// The head's speed limits as covopt.max_safe_speed computes them (the CLI's speed-limit
+/// --body-region head row): bare, and with the covering.
+report::BodyRegionTableRow HeadRow(const SceneInputs& inputs, const py::kwargs& kwargs, double mass_kg) {
+  optim::SpeedLimitOptions options = SpeedLimitOptionsFrom(inputs, kwargs);
+  Scene head = inputs.scene;
+  head.robot.mass_kg = mass_kg;
+  std::optional<optim::SpeedLimit> covered;
+  optim::SpeedLimit bare;
+  {
+    py::gil_scoped_release release;
+    if (head.covering.thickness_m > 0.0) covered = optim::MaxSafeSpeed(head, options);
+    head.covering.thickness_m = 0.0;
+    options.covering_compressive_strength_Pa = 0.0;
+    bare = optim::MaxSafeSpeed(head, options);
+  }
+  for (const optim::SpeedLimit* limit : {&bare, covered ? &*covered : nullptr}) {
+    if (limit && limit->status == optim::SpeedLimitStatus::kEvaluationFailed) {
+      RaiseComputationError("the head's speed limit could not be evaluated: " + limit->message, "evaluation-failed");
+    }
+  }
+  return report::HeadTableRow(mass_kg, bare, covered, std::string(optim::HeadCriteriaName()));
 }
 
-/// covopt.speed_limit(scene, body_region=...): one row per area (and the head's, computed by
-/// covopt/_body_regions.py with covopt.max_safe_speed).
+/// covopt.speed_limit(scene, body_region=..., values=None): `covopt speed-limit --body-region
+/// --json`'s object: one row per area (and the head's) per robot mass in values (default the
+/// scene's).
 py::dict SpeedLimitTable(const SceneInputs& inputs, const py::kwargs& kwargs) {
   const RegionChoice choice = ReadRegions(kwargs);
   if (!choice.head) RefuseHeadKeywords(inputs, RegionText(kwargs));
   if (inputs.Gave("speed")) {
     throw std::invalid_argument("speed_limit() computes the speed; drop speed from the scene");
   }
+  std::vector<double> masses{inputs.scene.robot.mass_kg};
+  if (const auto v = Option(kwargs, "values")) {
+    masses.clear();
+    if (py::isinstance<py::str>(*v) || !py::isinstance<py::iterable>(*v)) {
+      masses.push_back(ReadSceneQuantity(*v, quantity_specs::kRobotMass, "values"));
+    } else {
+      for (const py::handle item : *v) masses.push_back(ReadSceneQuantity(item, quantity_specs::kRobotMass, "values"));
+    }
+    if (masses.empty()) throw std::invalid_argument("values: no robot masses (got an empty list)");
+  }
   const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
   const BodyContactScene scene = ContactScene(inputs, kwargs, choice.contact);
-  std::vector<optim::BodyRegionSpeedLimitRow> rows;
-  try {
-    py::gil_scoped_release release;
-    rows = optim::BodyRegionSpeedLimitTable(scene, choice.limits, options);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
+  RequireBareContactArea(scene, choice.limits);
+  const std::string material = MaterialName(inputs).value_or("");
+  std::vector<report::BodyRegionTableRow> rows;
+  for (const double mass : masses) {
+    BodyContactScene at = scene;
+    at.robot_mass_kg = mass;
+    std::vector<optim::BodyRegionSpeedLimitRow> table;
+    try {
+      py::gil_scoped_release release;
+      if (!choice.limits.empty()) table = optim::BodyRegionSpeedLimitTable(at, choice.limits, options);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
+    }
+    for (const optim::BodyRegionSpeedLimitRow& row : table) rows.push_back(report::TableRow(mass, row));
+    if (choice.head) rows.push_back(HeadRow(inputs, kwargs, mass));
+    for (std::size_t i = rows.size() - table.size() - (choice.head ? 1 : 0); i < rows.size(); ++i) {
+      rows[i].material = material;
+    }
   }
-  py::list out;
-  for (const optim::BodyRegionSpeedLimitRow& row : rows) {
-    py::dict d;
-    PutLimits(d, row.limits);
-    d["scope"] = row.limits.Describe();
-    d["bare"] = LimitDict(row.bare);
-    d["covered"] = row.covered ? py::object(LimitDict(*row.covered)) : py::object(py::none());
-    d["gain"] = OrNone(row.gain());
-    out.append(d);
+  std::vector<std::string> warnings = InputWarnings(inputs);
+  if (!choice.limits.empty() && !(scene.contact_area_m2 > 0.0)) {
+    warnings.push_back("the bare robot's pressure is not evaluated (no contact_area): its limits are those of "
+                       "the force alone");
   }
-  py::dict table;
-  table["contact"] = std::string(ToString(choice.contact));
-  table["safety_factor"] = inputs.safety_factor;
-  py::list criteria;  // the limits counted (a row's scope says which apply to its area)
-  criteria.append("force");
-  criteria.append("pressure");
-  if (options.rule.compression_counts()) criteria.append("full-compression");
-  if (!options.rule.crushing_allowed) criteria.append("crush");
-  table["criteria"] = criteria;
-  table["scene"] = SceneDict(scene, inputs);
-  table["rows"] = out;
-  table["head"] = choice.head;  // covopt/_body_regions.py appends the head's row
-  return table;
+  return JsonToPython(report::BodyRegionSpeedLimitJson(scene, MaterialName(inputs),
+                                                       optim::BodyRegionCriterion(options.rule, choice.head),
+                                                       options.rule.safety_factor, rows, warnings));
 }
 
-/// covopt.optimize(scene, body_region=[...]): the covering for every region at the scene's speed.
+/// covopt.optimize(scene, body_region=[...]): the covering for every region at the scene's
+/// speed, as `covopt optimize --body-region --json`.
 py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
   for (const char* k : {"covering_modulus", "covering_thickness", "covering_poisson", "material"}) {
     if (inputs.Gave(k)) {
@@ -510,7 +523,7 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
     const std::string what = e.what();
     throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
   }
-  request.rule = JudgeOptions(inputs, kwargs).rule;
+  request.rule = JudgeOptions(inputs, kwargs, Flag(kwargs, "allow_unknown_strength")).rule;
   if (const auto v = Option(kwargs, "max_thickness")) {
     request.max_thickness_m = ReadSceneQuantity(*v, quantity_specs::kCoveringThickness, "max_thickness");
   }
@@ -524,44 +537,138 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
   }
-  const auto head_dict = [](const optim::DesignScore& s, double safety_factor) {
-    py::dict d;
-    d["laceration_ratio"] = s.laceration_ratio;
-    d["contusion_ratio"] = s.contusion_ratio;
-    d["compression_ratio"] = s.compression_ratio;
-    d["safe"] = s.safe(safety_factor);
-    return d;
-  };
-  const double sf = request.rule.safety_factor;
-  py::dict d;
-  d["message"] = result.message;
-  d["speed_m_per_s"] = request.scene.speed_m_per_s;
-  py::list bare;
-  for (const auto& j : result.bare_robot) bare.append(JudgementDict(j));
-  d["bare_robot"] = bare;
-  d["bare_head"] = result.bare_head ? py::object(head_dict(*result.bare_head, sf)) : py::object(py::none());
-  d["bare_robot_safe"] = result.bare_robot_safe;
-  py::list candidates;
-  for (const optim::BodyRegionDesignCandidate& c : result.candidates) {
-    py::dict cd;
-    cd["material"] = c.material.name;
-    cd["family"] = c.material.family;
-    cd["thickness_m"] = OrNone(c.thickness_m);
-    cd["admissible"] = c.admissible();
-    cd["governing_ratio"] = c.governing_ratio;
-    cd["governing_where"] = c.governing_where;
-    py::list regions;
-    for (const auto& j : c.regions) regions.append(JudgementDict(j));
-    cd["regions"] = regions;
-    cd["head"] = c.head ? py::object(head_dict(*c.head, sf)) : py::object(py::none());
-    candidates.append(cd);
+  return JsonToPython(report::BodyRegionDesignJson(request, result,
+                                                   optim::BodyRegionCriterion(request.rule, choice.head),
+                                                   InputWarnings(inputs)));
+}
+
+/// covopt.check_trajectory(..., body_region=...): every sample against the ISO regions named
+/// (optim::CheckTrajectoryForBodyRegions) and the head, if named, by its own check, as `covopt
+/// robot --trajectory --body-region --json`.
+py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const py::object& trajectory,
+                         const std::optional<std::string>& base, const py::object& point,
+                         const std::optional<std::string>& urdf_text, bool ignore_joint_limits,
+                         const SceneInputs& inputs, const py::kwargs& kwargs) {
+  RefuseSampleKeywords(inputs);
+  const RegionChoice choice = ReadRegions(kwargs);
+  if (!choice.head) RefuseHeadKeywords(inputs, RegionText(kwargs));
+  const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
+  const BodyContactScene scene = ContactScene(inputs, kwargs, choice.contact);
+  RequireBareContactArea(scene, choice.limits);
+  const optim::CoveringCrushCheck crush = inputs.CrushCheck();
+
+  const robot::ContactMotionResult motion =
+      ReadContactMotion(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits);
+  const optim::TrajectoryCheckOptions head_options = TrajectoryCheckOptionsFrom(inputs, kwargs);
+  std::optional<optim::BodyRegionTrajectoryCheck> check;
+  std::optional<optim::TrajectoryCheck> head;
+  try {
+    py::gil_scoped_release release;
+    const std::vector<optim::MotionSample> samples = optim::MotionSamples(motion.samples);
+    if (!choice.limits.empty()) check = optim::CheckTrajectoryForBodyRegions(scene, choice.limits, samples, options);
+    if (choice.head) head = optim::CheckTrajectory(inputs.scene, samples, head_options);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
   }
-  d["candidates"] = candidates;
-  d["recommendation"] = result.recommendation ? py::object(candidates[*result.recommendation]) : py::object(py::none());
-  d["scope"] = py::cast(result.scope);
-  d["warnings"] = py::cast(result.warnings);
-  d["safety_factor"] = sf;
-  return d;
+  std::optional<report::HeadTrajectorySummary> head_summary;
+  if (head) {
+    if (head->status == optim::TrajectoryCheckStatus::kEvaluationFailed) {
+      RaiseComputationError(head->message, std::string(optim::ToString(head->status)));
+    }
+    head_summary = report::HeadTrajectorySummary{std::string(optim::ToString(head->status)), head->safe_speed_scale,
+                                                 head->message};
+  }
+  std::vector<std::string> warnings = InputWarnings(inputs);
+  warnings.insert(warnings.end(), crush.notes.begin(), crush.notes.end());
+  warnings.insert(warnings.end(), motion.warnings.begin(), motion.warnings.end());
+  return JsonToPython(report::BodyRegionTrajectoryJson(check ? *check : optim::BodyRegionTrajectoryCheck{},
+                                                       choice.limits, scene,
+                                                       head_summary, optim::BodyRegionCriterion(options.rule, choice.head),
+                                                       warnings));
+}
+
+/// covopt.sweep(x, y, scene=..., body_region=...): one region's verdict over the grid
+/// (optim::SweepBodyRegion), as numpy arrays a[i, j] at x[i], y[j] (the columns of `covopt
+/// sweep --body-region --csv`); an invalid point is NaN / False, with its message in errors.
+py::dict Sweep(const py::object& x, const py::object& y, const SceneInputs& inputs, const py::kwargs& kwargs) {
+  const BodyLimits limits = OneRegion(kwargs, "sweep");
+  RefuseHeadKeywords(inputs, limits.region->name);
+  const SweepAxis x_axis = ReadAxis(x, "x");
+  const std::optional<SweepAxis> y_axis = y.is_none() ? std::nullopt : std::optional(ReadAxis(y, "y"));
+  const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
+  const BodyContactScene scene = ContactScene(inputs, kwargs, limits.contact);
+  RequireBareContactArea(scene, std::span(&limits, 1));
+  std::vector<optim::BodyRegionSweepPoint> grid;
+  try {
+    py::gil_scoped_release release;
+    grid = optim::SweepBodyRegion(scene, x_axis, y_axis, limits, options);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(inputs.Attributed(e.what()));
+  }
+  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(x_axis.values.size())};
+  if (y_axis) shape.push_back(static_cast<py::ssize_t>(y_axis->values.size()));
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  using Judgement = optim::BodyRegionJudgement;
+  struct Column {
+    const char* name;
+    double (*number)(const Judgement&);
+    bool (*flag)(const Judgement&);
+  };
+  // clang-format off
+  static const Column kColumns[] = {
+    {"peak_force_N", [](const Judgement& v) { return v.contact.peak_force_N; }, nullptr},
+    {"peak_pressure_Pa", [](const Judgement& v) { return v.contact.peak_pressure_Pa.value_or(kNaN); }, nullptr},
+    {"covering_deflection_m", [](const Judgement& v) { return v.contact.covering_deflection_m; }, nullptr},
+    {"fully_compressed", nullptr, [](const Judgement& v) { return v.contact.fully_compressed; }},
+    {"force_ratio", [](const Judgement& v) { return v.force_ratio; }, nullptr},
+    {"pressure_ratio", [](const Judgement& v) { return v.pressure_ratio.value_or(kNaN); }, nullptr},
+    {"compression_ratio", [](const Judgement& v) { return v.compression_ratio; }, nullptr},
+    {"crush_ratio", [](const Judgement& v) { return v.crush_check == optim::CrushCheck::kChecked ? v.crush_ratio : kNaN; }, nullptr},
+    {"governing_ratio", [](const Judgement& v) { return v.governing_ratio; }, nullptr},
+    {"admissible", nullptr, [](const Judgement& v) { return v.admissible; }},
+  };
+  // clang-format on
+  py::dict out;
+  out["x"] = py::array_t<double>(static_cast<py::ssize_t>(x_axis.values.size()), x_axis.values.data());
+  out["x_quantity"] = x_axis.quantity;
+  if (y_axis) {
+    out["y"] = py::array_t<double>(static_cast<py::ssize_t>(y_axis->values.size()), y_axis->values.data());
+    out["y_quantity"] = y_axis->quantity;
+  }
+  for (const Column& column : kColumns) {
+    if (column.number) {
+      py::array_t<double> array(shape);
+      double* data = array.mutable_data();
+      for (std::size_t i = 0; i < grid.size(); ++i) data[i] = grid[i].judgement ? column.number(*grid[i].judgement) : kNaN;
+      out[column.name] = array;
+    } else {
+      py::array_t<bool> array(shape);
+      bool* data = array.mutable_data();
+      for (std::size_t i = 0; i < grid.size(); ++i) data[i] = grid[i].judgement && column.flag(*grid[i].judgement);
+      out[column.name] = array;
+    }
+  }
+  py::array_t<bool> valid(shape);
+  py::list governing, errors;  // flat, reshaped to the grid by covopt/_body_regions.py
+  std::size_t admissible = 0, invalid = 0;
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    valid.mutable_data()[i] = grid[i].judgement.has_value();
+    governing.append(grid[i].judgement ? std::string(optim::ToString(grid[i].judgement->governing)) : std::string());
+    errors.append(grid[i].error);
+    if (grid[i].judgement && grid[i].judgement->admissible) ++admissible;
+    invalid += grid[i].judgement ? 0 : 1;
+  }
+  out["valid"] = valid;
+  out["governing"] = governing;
+  out["error"] = errors;
+  out["region"] = limits.region->name;
+  out["area"] = limits.area->name;
+  out["contact"] = std::string(ToString(limits.contact));
+  out["scope"] = limits.Describe();
+  out["message"] = limits.region->name + " (" + limits.area->name + ") (" + std::string(ToString(limits.contact)) +
+                   " contact): " + std::to_string(grid.size()) + " points, " + std::to_string(admissible) +
+                   " within every limit, " + std::to_string(invalid) + " outside the model's range";
+  return out;
 }
 
 }  // namespace
@@ -570,6 +677,9 @@ void RegisterBodyContact(py::module_& m) {
   m.def("simulate_body_region", &Simulate);
   m.def("body_region_speed_limit", &SpeedLimitTable);
   m.def("design_for_body_regions", &Design);
+  m.def("check_trajectory_body_region", &CheckTrajectory, py::arg("urdf"), py::arg("tip"), py::arg("trajectory"),
+        py::arg("base"), py::arg("point"), py::arg("urdf_text"), py::arg("ignore_joint_limits"), py::arg("scene"));
+  m.def("sweep_body_region", &Sweep, py::arg("x"), py::arg("y"), py::arg("scene"));
 }
 
 }  // namespace covopt::python

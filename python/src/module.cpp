@@ -295,6 +295,8 @@ void SceneInputs::Judge(report::SimulationReport& report) const {
 
 namespace {
 
+}  // namespace
+
 /// The warnings `covopt simulate` adds about its inputs (optim::SceneInputWarnings, as the
 /// CLI's): where the CLI names a flag or scene file as the source, these name the keyword,
 /// "(from safety_factor=2)".
@@ -312,6 +314,8 @@ std::vector<std::string> InputWarnings(const SceneInputs& inputs) {
       inputs.covering_material ? BuiltInCatalog().Find(*inputs.covering_material) : nullptr;
   return optim::SceneInputWarnings(inputs.scene, inputs.limits, inputs.safety_factor, material, source_of);
 }
+
+namespace {
 
 /// simulate's method=, rtol=, atol=, max_steps=, history= as Solve's options: the path
 /// auto (the exact path where the scene has an energy integral and no history is asked for),
@@ -427,6 +431,8 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   return result;
 }
 
+}  // namespace
+
 /// One sweep axis from Python: (quantity, values); the quantity is a CLI scene flag without
 /// dashes, underscores allowed ("robot_mass" = "robot-mass"); values are SI numbers, or
 /// "fixed"/"flat" for +inf.
@@ -459,6 +465,8 @@ SweepAxis ReadAxis(const py::handle& axis, const char* keyword) {
   }
   return result;
 }
+
+namespace {
 
 /// covopt.sweep(x, y, scene, threads=None): see python/covopt/__init__.py.
 py::dict SweepGrid(const py::object& x, const py::object& y, const SceneInputs& inputs, const py::object& threads_) {

@@ -11,7 +11,9 @@
 #include <pybind11/pybind11.h>
 
 #include "covopt/robot/kinematic_chain.hpp"
+#include "covopt/optim/trajectory_check.hpp"
 #include "covopt/robot/trajectory.hpp"
+#include "scene_keywords.hpp"
 
 namespace covopt::python {
 
@@ -32,5 +34,20 @@ robot::ReflectedMassOptions ReflectedMassOptions(bool ignore_joint_limits);
 
 /// Three finite numbers (x, y, z). @throws std::invalid_argument naming `what`.
 Eigen::Vector3d Triple(const pybind11::handle& value, const char* what);
+
+/// check_trajectory's scene may not give robot_mass or speed: each sample brings its own.
+/// @throws std::invalid_argument naming the keyword (trajectory_bindings.cpp).
+void RefuseSampleKeywords(const SceneInputs& inputs);
+
+/// The head's trajectory check options: the scene's limits and safety factor,
+/// allow_full_compression=, allow_crushing=, the covering's crush strength.
+optim::TrajectoryCheckOptions TrajectoryCheckOptionsFrom(const SceneInputs& inputs, const pybind11::kwargs& kwargs);
+
+/// The contact point's motion along `trajectory` (robot::ContactMotion), read as
+/// covopt.contact_motion reads its arguments; computed without the GIL.
+robot::ContactMotionResult ReadContactMotion(const pybind11::object& urdf, const std::string& tip,
+                                             const pybind11::object& trajectory, const std::optional<std::string>& base,
+                                             const pybind11::object& point, const std::optional<std::string>& urdf_text,
+                                             bool ignore_joint_limits);
 
 }  // namespace covopt::python

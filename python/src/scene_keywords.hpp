@@ -8,11 +8,13 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <pybind11/pybind11.h>
 
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/scene.hpp"
+#include "covopt/core/sweep.hpp"
 #include "covopt/optim/oracle.hpp"
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/report/simulation_json.hpp"
@@ -64,6 +66,19 @@ double ReadSceneQuantity(const pybind11::handle& value, const QuantitySpec& spec
 /// on a braking or neck scene is refused with the library's message).
 /// @throws std::invalid_argument naming the keyword, the value and what is allowed.
 optim::OracleOptions ReadOracleKeywords(const pybind11::kwargs& kwargs, const Scene& scene);
+
+/// The warnings `covopt simulate` adds about its inputs, naming the keywords where the CLI
+/// names its flags (module.cpp).
+std::vector<std::string> InputWarnings(const SceneInputs& inputs);
+
+/// One sweep axis from Python, (quantity, values), for `keyword` ("x" or "y") (module.cpp).
+/// @throws std::invalid_argument naming the keyword.
+SweepAxis ReadAxis(const pybind11::handle& axis, const char* keyword);
+
+/// covopt.max_safe_speed's options: the scene's limits and safety factor,
+/// allow_full_compression=, allow_crushing=, the covering's crush strength and the oracle
+/// keywords (speed_limit_bindings.cpp).
+optim::SpeedLimitOptions SpeedLimitOptionsFrom(const SceneInputs& inputs, const pybind11::kwargs& kwargs);
 
 /// json.loads(text).
 pybind11::object JsonToPython(const std::string& text);

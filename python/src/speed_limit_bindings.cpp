@@ -23,12 +23,8 @@
 namespace py = pybind11;
 
 namespace covopt::python {
-namespace {
 
-using optim::SpeedLimitQuantity;
-using optim::SpeedLimitRow;
-
-optim::SpeedLimitOptions OptionsFrom(const SceneInputs& inputs, const py::kwargs& kwargs) {
+optim::SpeedLimitOptions SpeedLimitOptionsFrom(const SceneInputs& inputs, const py::kwargs& kwargs) {
   optim::SpeedLimitOptions options;
   options.limits = inputs.limits;
   options.safety_factor = inputs.safety_factor;
@@ -38,6 +34,11 @@ optim::SpeedLimitOptions OptionsFrom(const SceneInputs& inputs, const py::kwargs
   options.oracle = ReadOracleKeywords(kwargs, inputs.scene);
   return options;
 }
+
+namespace {
+
+using optim::SpeedLimitQuantity;
+using optim::SpeedLimitRow;
 
 /// One value or a list of values of a scene quantity.
 std::vector<double> ReadValues(const py::handle& value, const QuantitySpec& spec, const char* keyword) {
@@ -76,7 +77,7 @@ py::dict OneLimit(SpeedLimitQuantity quantity, const SceneInputs& inputs, const 
     throw std::invalid_argument(std::string(function) + "() computes " + (by_speed ? "the speed" : "the robot mass") +
                                 "; drop " + solved + " from the scene");
   }
-  const optim::SpeedLimitOptions options = OptionsFrom(inputs, kwargs);
+  const optim::SpeedLimitOptions options = SpeedLimitOptionsFrom(inputs, kwargs);
   const double value = by_speed ? inputs.scene.robot.mass_kg : inputs.scene.robot.speed_m_per_s;
   const optim::SpeedLimitCovering covering{inputs.scene, inputs.covering_material, options};
   const SpeedLimitRow row = Compute(quantity, {&covering, 1}, {&value, 1}, inputs).front();
@@ -141,7 +142,7 @@ py::dict SpeedLimitTable(const SceneInputs& scene, const py::kwargs& kwargs) {
     py::dict change;
     if (name) change["material"] = *name;
     const SceneInputs inputs = scene.With(change);
-    options = OptionsFrom(inputs, kwargs);
+    options = SpeedLimitOptionsFrom(inputs, kwargs);
     for (std::string& note : inputs.CrushCheck().notes) {
       if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(std::move(note));
     }

@@ -21,12 +21,8 @@
 namespace py = pybind11;
 
 namespace covopt::python {
-namespace {
 
-py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const py::object& trajectory,
-                           const std::optional<std::string>& base, const py::object& point,
-                           const std::optional<std::string>& urdf_text, bool ignore_joint_limits,
-                           const SceneInputs& inputs, const py::kwargs& kwargs) {
+void RefuseSampleKeywords(const SceneInputs& inputs) {
   for (const char* keyword : {"robot_mass", "speed"}) {
     if (inputs.Gave(keyword)) {
       throw std::invalid_argument(std::string("check_trajectory() takes the robot's ") +
@@ -34,30 +30,48 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
                                   " from each sample of the trajectory; drop " + keyword + " from the scene");
     }
   }
-  const optim::CoveringCrushCheck crush = inputs.CrushCheck();
+}
+
+optim::TrajectoryCheckOptions TrajectoryCheckOptionsFrom(const SceneInputs& inputs, const py::kwargs& kwargs) {
   optim::TrajectoryCheckOptions options;
   options.limit.limits = inputs.limits;
   options.limit.safety_factor = inputs.safety_factor;
   options.limit.allow_full_compression = Flag(kwargs, "allow_full_compression");
   options.limit.allow_crushing = Flag(kwargs, "allow_crushing");
-  options.limit.covering_compressive_strength_Pa = crush.compressive_strength_Pa;
+  options.limit.covering_compressive_strength_Pa = inputs.CrushCheck().compressive_strength_Pa;
+  return options;
+}
 
+robot::ContactMotionResult ReadContactMotion(const py::object& urdf, const std::string& tip,
+                                             const py::object& trajectory, const std::optional<std::string>& base,
+                                             const py::object& point, const std::optional<std::string>& urdf_text,
+                                             bool ignore_joint_limits) {
   const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base);
   const robot::JointTrajectory joints = Trajectory(trajectory, chain.joint_count());
   const Eigen::Vector3d p = Triple(point, "point");
-  robot::ContactMotionResult motion;
+  py::gil_scoped_release release;
+  robot::ContactMotionOptions motion_options;
+  motion_options.reflected_mass = ReflectedMassOptions(ignore_joint_limits);
+  return robot::ContactMotion(chain, joints, p, motion_options);
+}
+
+namespace {
+
+py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const py::object& trajectory,
+                           const std::optional<std::string>& base, const py::object& point,
+                           const std::optional<std::string>& urdf_text, bool ignore_joint_limits,
+                           const SceneInputs& inputs, const py::kwargs& kwargs) {
+  RefuseSampleKeywords(inputs);
+  const optim::CoveringCrushCheck crush = inputs.CrushCheck();
+  const optim::TrajectoryCheckOptions options = TrajectoryCheckOptionsFrom(inputs, kwargs);
+  const robot::ContactMotionResult motion =
+      ReadContactMotion(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits);
   optim::TrajectoryCheck check;
-  {
+  try {
     py::gil_scoped_release release;
-    robot::ContactMotionOptions motion_options;
-    motion_options.reflected_mass = ReflectedMassOptions(ignore_joint_limits);
-    motion = robot::ContactMotion(chain, joints, p, motion_options);
-    try {
-      check = optim::CheckTrajectory(inputs.scene, optim::MotionSamples(motion.samples), options);
-    } catch (const std::invalid_argument& e) {
-      py::gil_scoped_acquire acquire;  // Attributed reads the keywords
-      throw std::invalid_argument(inputs.Attributed(e.what()));
-    }
+    check = optim::CheckTrajectory(inputs.scene, optim::MotionSamples(motion.samples), options);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(inputs.Attributed(e.what()));
   }
   if (check.status == optim::TrajectoryCheckStatus::kEvaluationFailed) {
     RaiseComputationError(check.message, std::string(optim::ToString(check.status)));  // as the CLI's exit 1

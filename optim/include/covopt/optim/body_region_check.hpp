@@ -126,6 +126,16 @@ std::vector<BodyRegionSpeedLimitRow> BodyRegionSpeedLimitTable(
     const BodyContactScene& scene, std::span<const materials::BodyLimits> regions,
     const BodyRegionOptions& options = {});
 
+/// Whose criteria judge the head among the body regions: "skin injury, Park et al. 2011".
+std::string_view HeadCriteriaName() noexcept;
+
+/// The criteria a body-region verdict applies under `rule`, in words (the "criterion" of
+/// `covopt speed-limit/optimize/robot --body-region --json` and covopt's Python results):
+/// "each region's force and pressure (ISO/TS 15066:2016 Table A.2)[, the head's laceration and
+/// contusion (Park et al. 2011)][, the covering not fully compressed][, the covering not crushed
+/// where its strength is known]; safety factor SF on each".
+std::string BodyRegionCriterion(const DesignRule& rule, bool head);
+
 /// `covopt optimize --body-region ... --speed V`: the covering (catalog material and
 /// thickness) that lets the robot reach the speed for every region named.
 struct BodyRegionDesignRequest {
