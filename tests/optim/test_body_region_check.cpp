@@ -96,7 +96,7 @@ TEST_CASE("the bare robot's speed limit is Annex A's F_lim / sqrt(mu k_H) for ev
       }
     }
   }
-  // DESIGN.md's check number: 10 kg on the chest, transient: 280 N / sqrt(8 kg · 25 kN/m).
+  // docs/model.md §13's check number (C0): 10 kg on the chest, transient: 280 N / sqrt(8 kg · 25 kN/m).
   const co::BodyRegionSpeedLimit chest =
       co::MaxSafeSpeed(Robot(10.0), Table().Limits("chest", "", ContactType::kTransient));
   CHECK(chest.max_safe_speed_m_per_s == Approx(0.626099).epsilon(1e-6));
