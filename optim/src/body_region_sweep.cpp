@@ -62,6 +62,13 @@ std::vector<BodyRegionSweepPoint> SweepBodyRegion(const BodyContactScene& scene,
       point.x = xv;
       point.y = y ? yv : 0.0;
       try {
+        if (!contact.has_covering() && !(contact.contact_area_m2 > 0.0)) {
+          // A bare point is its own verdict, and the bare robot's pressure needs its area:
+          // judged on its force alone it could read as safe.
+          throw std::invalid_argument(
+              "contact area: the bare robot's pressure is its force over its contact area, and none is given; this "
+              "bare point is not judged");
+        }
         point.judgement = JudgeBodyContact(contact, limits, options);
       } catch (const std::invalid_argument& e) {  // a point outside the model's range
         point.error = e.what();

@@ -290,7 +290,7 @@ TEST_CASE("robot --trajectory --body-region: the speed scale is Annex A's limit 
 
 TEST_CASE("sweep --body-region: one CSV row per point, each the body contact simulate reports", "[body_regions][sweep]") {
   const CliRun run = Run({"sweep", "--x", "speed=0.2..1.2:6", "--y", "covering-thickness=0,10mm", "--covering-modulus",
-                          "1MPa", "--body-region", "chest", "--csv", "-"});
+                          "1MPa", "--body-region", "chest", "--contact-area", "10cm2", "--csv", "-"});
   INFO(run.err);
   REQUIRE(run.exit_code == 0);
   const auto lines = SplitLines(run.out);
@@ -311,6 +311,15 @@ TEST_CASE("sweep --body-region: one CSV row per point, each the body contact sim
       CHECK(force == Approx(j["regions"][0]["peak_force_N"].get<double>()).epsilon(1e-12));
     }
   }
+  // Without a contact area the bare points are not judged (each says why); the covered ones are.
+  const CliRun no_area = Run({"sweep", "--x", "speed=0.2..1.2:6", "--y", "covering-thickness=0,10mm",
+                              "--covering-modulus", "1MPa", "--body-region", "chest", "--csv", "-"});
+  REQUIRE(no_area.exit_code == 0);
+  std::size_t unjudged = 0;
+  for (const std::string& line : SplitLines(no_area.out)) {
+    if (line.find("none is given; this bare point is not judged") != std::string::npos) ++unjudged;
+  }
+  CHECK(unjudged == 6);
   ExpectRefused({"sweep", "--x", "head-mass=3kg..5kg:3", "--body-region", "chest"}, {"head-mass", "does not read"});
   ExpectRefused({"sweep", "--x", "speed=1..2:3", "--body-region", "chest,head"}, {"one ISO region"});
 }
