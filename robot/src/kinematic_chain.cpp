@@ -25,6 +25,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include "chain_impl.hpp"
+#include "urdf_parse.hpp"
 
 namespace covopt::robot {
 
@@ -38,6 +39,7 @@ const char* ToString(JointType type) noexcept {
   return "unknown";
 }
 
+namespace internal {
 namespace {
 
 /// Collects console_bridge's messages while urdfdom parses, instead of printing them; the
@@ -57,20 +59,7 @@ std::mutex& ParseMutex() {
   return mutex;
 }
 
-/// urdfdom's links hold their children by shared_ptr: the links of a cycle (refused by
-/// CheckTree) would hold each other and never be freed. Dropping every link's children when
-/// the model goes out of use breaks such cycles; the chain keeps nothing of the model.
-struct ModelReleaser {
-  urdf::ModelInterface* model;
-  ~ModelReleaser() {
-    if (model == nullptr) return;
-    for (const auto& [name, link] : model->links_) {
-      if (!link) continue;
-      link->child_links.clear();
-      link->child_joints.clear();
-    }
-  }
-};
+}  // namespace
 
 urdf::ModelInterfaceSharedPtr ParseUrdf(const std::string& text, const std::string& source) {
   CollectingOutputHandler handler;
@@ -100,6 +89,13 @@ urdf::ModelInterfaceSharedPtr ParseUrdf(const std::string& text, const std::stri
   std::replace(what.begin(), what.end(), '\n', ' ');
   throw std::invalid_argument(source + ": malformed URDF: " + what);
 }
+
+}  // namespace internal
+
+using internal::ModelReleaser;
+using internal::ParseUrdf;
+
+namespace {
 
 KDL::Vector ToKdl(const urdf::Vector3& v) { return KDL::Vector(v.x, v.y, v.z); }
 

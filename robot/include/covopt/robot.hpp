@@ -5,4 +5,5 @@
 /// joint trajectory.
 #include "covopt/robot/kinematic_chain.hpp"
 #include "covopt/robot/reflected_mass.hpp"
+#include "covopt/robot/surface.hpp"
 #include "covopt/robot/trajectory.hpp"
