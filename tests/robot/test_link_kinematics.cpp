@@ -35,13 +35,25 @@ std::atomic<std::size_t> g_allocations{0};
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 #endif
+// Every non-aligned form is replaced, so that nothing (AddressSanitizer's own operators
+// included) frees with one allocator what the other allocated.
 void* operator new(std::size_t size) {
   ++g_allocations;
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
   throw std::bad_alloc();
 }
+void* operator new[](std::size_t size) { return operator new(size); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  ++g_allocations;
+  return std::malloc(size == 0 ? 1 : size);
+}
+void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept { return operator new(size, tag); }
 void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
@@ -349,7 +361,7 @@ TEST_CASE("link kinematics: Update refuses a bad sample as ContactMotion does, n
              Contains("joint 'fr3_joint4'") && Contains("URDF's limits"));
 }
 
-TEST_CASE("link kinematics: bad options and a massless joint are refused") {
+TEST_CASE("link kinematics: bad options are refused") {
   const auto chain = KinematicChain::FromUrdfFile(kFr3, {"", "fr3_link8"});
   covopt::robot::ContactMotionOptions options;
   options.rest_speed_m_per_s = -1.0;
@@ -358,15 +370,7 @@ TEST_CASE("link kinematics: bad options and a massless joint are refused") {
   options.reflected_mass.singular_relative_tolerance = 1.0;
   CHECK_THAT(MessageOf([&] { ChainSampleKinematics kin(chain, options); }), Contains("singular_relative_tolerance"));
 
-  const char* urdf = R"(<robot name="massless">
-    <link name="base"/>
-    <joint name="j" type="continuous"><parent link="base"/><child link="tip"/><axis xyz="0 0 1"/></joint>
-    <link name="tip"/>
-  </robot>)";
-  const auto massless = KinematicChain::FromUrdfString(urdf, {"", "tip"}, "massless.urdf");
-  ChainSampleKinematics kin(massless);
-  CHECK_THAT(MessageOf([&] { kin.Update(Eigen::VectorXd::Zero(1), Eigen::VectorXd::Ones(1)); }),
-             Contains("massless.urdf") && Contains("not positive definite"));
+  // A massless joint: test_robot_bad_input.cpp.
 }
 
 TEST_CASE("link kinematics: points on several links of FR3 and UR5e agree with the numpy reference") {

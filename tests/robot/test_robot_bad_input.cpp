@@ -147,4 +147,8 @@ TEST_CASE("a joint that moves no mass makes M singular and is reported, not divi
                covopt::robot::ReflectedMass(chain, Eigen::VectorXd::Zero(1), Eigen::Vector3d(1, 0, 0), {});
              }),
              Contains("massless.urdf") && Contains("not positive definite"));
+  // ChainSampleKinematics::Update (link_kinematics.hpp) likewise.
+  covopt::robot::ChainSampleKinematics kin(chain);
+  CHECK_THAT(MessageOf([&] { kin.Update(Eigen::VectorXd::Zero(1), Eigen::VectorXd::Ones(1)); }),
+             Contains("massless.urdf") && Contains("not positive definite"));
 }
