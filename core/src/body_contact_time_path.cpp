@@ -364,7 +364,7 @@ class BodyContactRun {
         0.4 * run_.covering_stiffness * c.covering_m * c.covering_m * std::sqrt(c.covering_m);
     result_.compression_ratio = run_.covered ? (bottomed ? 1.0 : c.covering_m / run_.travel_m) : 0.0;
     result_.fully_compressed = bottomed;
-    // The brake took the rest of ½ mu v0²: the springs hold what reached them.
+    // Less than ½ mu v0² with braking: the springs hold what reached them.
     if (run_.braking) result_.energy_transferred_J = result_.body_energy_J + result_.covering_energy_J;
   }
 

@@ -27,15 +27,13 @@ using covopt::ContactType;
 /// A robot of `robot_mass` at `speed` on a region (k_H, m_H, contact), braking `a` after `t_d`.
 BodyContactScene Braking(double robot_mass, double speed, double stiffness, double body_mass, ContactType contact,
                          double delay_s, double braking) {
-  BodyContactScene s;
-  s.robot_mass_kg = robot_mass;
-  s.speed_m_per_s = speed;
-  s.body_stiffness_N_per_m = stiffness;
-  s.body_mass_kg = body_mass;
-  s.contact = contact;
-  s.reaction_delay_s = delay_s;
-  s.braking_m_per_s2 = braking;
-  return s;
+  return {.robot_mass_kg = robot_mass,
+          .speed_m_per_s = speed,
+          .body_stiffness_N_per_m = stiffness,
+          .body_mass_kg = body_mass,
+          .contact = contact,
+          .reaction_delay_s = delay_s,
+          .braking_m_per_s2 = braking};
 }
 
 BodyContactScene WithCovering(BodyContactScene s, double modulus, double thickness, double radius) {

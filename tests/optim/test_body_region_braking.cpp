@@ -3,6 +3,7 @@
 // it from just below the unbraked limit, agrees with an independent scan and bisection on the
 // verdict, is never below the unbraked limit, rises with the brake and falls with the delay;
 // a failed time path is reported, never read as safe.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -134,6 +135,28 @@ TEST_CASE("a braking robot's speed limit agrees with a scan and bisection on its
   const co::BodyRegionSpeedLimit unbraked = co::MaxSafeSpeed(unbraked_scene, c.limits, c.options);
   CHECK(unbraked.time_path_runs == 0);
   CHECK(v > unbraked.max_safe_speed_m_per_s);
+}
+
+TEST_CASE("a bare braking robot's speed limit is the closed form of a spring with a constant force from t_d",
+          "[body_region][braking]") {
+  // δ_max = sqrt((v s/ω + c)² + (v C/ω)²) - c with ω² = k_H/mu, c = a/ω², s, C = sin, cos ω t_d
+  // (t_d before the maximum), so k_H δ_max = F* at v = ω (sqrt(s²c² + x² + 2cx) - s c), x = F*/k_H.
+  const ContactType contact = GENERATE(ContactType::kTransient, ContactType::kClamped);
+  const double braking = GENERATE(30.0, 100.0, 1000.0);
+  const double delay_fraction = GENERATE(0.0, 0.2, 0.7);  // of the quarter period
+  const BodyLimits chest = Region("chest", contact);
+  const double robot_mass = 10.0;
+  const double mu = contact == ContactType::kClamped ? robot_mass : 1.0 / (1.0 / robot_mass + 1.0 / 40.0);
+  const double omega = std::sqrt(chest.stiffness_N_per_m() / mu);
+  const double delay = delay_fraction * std::acos(-1.0) / (2.0 * omega);
+  CAPTURE(covopt::ToString(contact), braking, delay);
+  const double force = std::min(chest.force_N, chest.pressure_Pa * 1e-4);  // 1 cm²
+  const double x = force / chest.stiffness_N_per_m(), c = braking / (omega * omega), s = std::sin(omega * delay);
+  const double expected = omega * (std::sqrt(s * s * c * c + x * x + 2.0 * c * x) - s * c);
+  const co::BodyRegionSpeedLimit limit = co::MaxSafeSpeed(Robot(robot_mass, delay, braking), chest, {});
+  REQUIRE(limit.status == co::SpeedLimitStatus::kLimited);
+  CHECK(limit.max_safe_speed_m_per_s == Approx(expected).epsilon(1e-7));
+  CHECK(limit.limited_by == co::BodyLimitKind::kPressure);  // 240 N (120 N clamped) below 280 N (140 N)
 }
 
 TEST_CASE("a braking robot's speed limit rises with the brake and falls with the delay", "[body_region][braking]") {

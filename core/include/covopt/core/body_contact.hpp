@@ -163,7 +163,7 @@ struct BodyContactResult {
   std::string method;
   double reduced_mass_kg = 0.0;          ///< mu [kg]
   /// The energy the springs store at the peak [J]: ½ mu v² without braking; less for a braking
-  /// robot (body_energy_J + covering_energy_J, the brake took the rest).
+  /// robot (body_energy_J + covering_energy_J: the brake slowed the approach).
   double energy_transferred_J = 0.0;
   double peak_force_N = 0.0;             ///< F_max [N]
   /// p_max [Pa]: the covering's Hertz peak pressure, or F_max/A bare with an area; empty bare
