@@ -270,4 +270,11 @@ BodyContactResult Solve(const BodyContactScene& scene, const SolveOptions& optio
   return Solve(BodyContactModel::FromScene(scene), options);
 }
 
+BodyContactResult SolveBodyContactPeaks(const BodyContactModel& model, const TimeIntegrationOptions& options) {
+  ValidateTimeIntegrationOptions(options, "time_path.");
+  SolveOptions solve;
+  solve.time_path = options;
+  return internal::SolveBodyContactTimePath(model, solve, /*to_peak=*/true);
+}
+
 }  // namespace covopt

@@ -188,8 +188,9 @@ std::string MethodText(const TimeIntegrationOptions& o) {
 class BodyContactRun {
  public:
   BodyContactRun(const BodyContactModel& model, const SolveOptions& options, Stepper& stepper,
-                 Run& run, StepperWorkspace& workspace)
+                 Run& run, StepperWorkspace& workspace, bool to_peak)
       : record_(options.record_history),
+        to_peak_(to_peak),
         model_(model),
         options_(options.time_path),
         stepper_(stepper),
@@ -221,7 +222,7 @@ class BodyContactRun {
     int flag = stepper_.BeginRun(0.0, state_);
     if (flag == kStepTaken) flag = StartInterval();
     long steps = 0;
-    while (flag >= 0 && !separated_) {
+    while (flag >= 0 && !Done()) {
       flag = stepper_.Step(t_ + horizon_s_, state_, &t_);
       if (flag == kStepTaken) {
         Record(true);
@@ -237,17 +238,22 @@ class BodyContactRun {
     if (flag < 0) {
       Fail(flag == kTooMuchWork ? SolveStatus::kStepLimit : SolveStatus::kSolverFailure,
            std::string(ToString(options_.method)) + " returned " + stepper_.FlagName(flag));
-    } else if (!separated_ && steps >= options_.max_steps) {
+    } else if (!Done() && steps >= options_.max_steps) {
       Fail(SolveStatus::kStepLimit, "step limit of " + std::to_string(options_.max_steps) +
-                                        " steps reached before separation");
-    } else if (!separated_ || !turned_) {
+                                        (to_peak_ ? " steps reached before maximum compression"
+                                                  : " steps reached before separation"));
+    } else if (!Done() || !turned_) {
       Fail(SolveStatus::kEventMissed,
-           "the integration ended without locating maximum compression and separation");
+           to_peak_ ? "the integration ended without locating maximum compression"
+                    : "the integration ended without locating maximum compression and separation");
     }
     return std::move(result_);
   }
 
  private:
+  /// Separated, or (to the peak only) past maximum compression.
+  bool Done() const noexcept { return separated_ || (to_peak_ && turned_); }
+
   void SetUpRun() {
     run_ = Run{};
     run_.covered = model_.has_covering();
@@ -405,6 +411,7 @@ class BodyContactRun {
   }
 
   const bool record_;
+  const bool to_peak_;
   const BodyContactModel& model_;
   const TimeIntegrationOptions& options_;
   Stepper& stepper_;
@@ -459,11 +466,11 @@ Workspace& WorkspaceFor(bool braking) {
 
 }  // namespace
 
-BodyContactResult SolveBodyContactTimePath(const BodyContactModel& model, const SolveOptions& options) {
+BodyContactResult SolveBodyContactTimePath(const BodyContactModel& model, const SolveOptions& options, bool to_peak) {
   Workspace& workspace = WorkspaceFor(model.scene().robot_brakes());
   StepperWorkspace& s = workspace.steppers;
   s.log.clear();
-  BodyContactRun run(model, options, s.StepperFor(options.time_path.method), workspace.run, s);
+  BodyContactRun run(model, options, s.StepperFor(options.time_path.method), workspace.run, s, to_peak);
   return run.Integrate();
 }
 

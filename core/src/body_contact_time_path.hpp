@@ -25,7 +25,9 @@ BodyContactResult PeaksAtForce(const BodyContactModel& model, double force_N);
 /// options.record_history, (t, δ, δ', F, v_R, W) at every step and event and, by dense output, at
 /// least options.history_samples_per_contact samples over the contact. Failures (step limit,
 /// integrator errors, an event not located) come back as the result's status and message,
-/// with no peaks. `options` are validated by the caller (Solve).
-BodyContactResult SolveBodyContactTimePath(const BodyContactModel& model, const SolveOptions& options);
+/// with no peaks. `options` are validated by the caller (Solve). `to_peak`: stop at maximum
+/// compression (SolveBodyContactPeaks: no duration, no rebound speed).
+BodyContactResult SolveBodyContactTimePath(const BodyContactModel& model, const SolveOptions& options,
+                                           bool to_peak = false);
 
 }  // namespace covopt::internal

@@ -125,10 +125,12 @@ void ApplyCrushCheck(const CandidateMaterial& material, double stress_Pa, BodyRe
 /// written only when `text` is given.
 BodyRegionJudgement Judge(const BodyContactModel& model, const materials::BodyLimits& limits,
                           const BodyRegionOptions& options, const ScopeText* text,
-                          const TimeIntegrationOptions& time_path = {}) {
+                          const TimeIntegrationOptions& time_path = {}, bool peaks_only = false) {
   BodyRegionJudgement j;
   j.limits = limits;
-  if (model.scene().robot_brakes()) {
+  if (model.scene().robot_brakes() && peaks_only) {
+    j.contact = SolveBodyContactPeaks(model, time_path);  // the time path up to the peak
+  } else if (model.scene().robot_brakes()) {
     SolveOptions solve;  // auto: the time path, the only one for a braking robot
     solve.time_path = time_path;
     j.contact = Solve(model, solve);
@@ -324,7 +326,9 @@ BodyRegionSpeedLimit BrakedSpeedLimit(const BodyContactScene& region_scene, cons
   int runs = 0;
   const auto judge = [&](double speed) {
     ++runs;
-    return Judge(BodyContactModel::FromScene(AtSpeed(region_scene, speed)), limits, options, nullptr, time_path);
+    // The peaks decide: the time path stops at maximum compression.
+    return Judge(BodyContactModel::FromScene(AtSpeed(region_scene, speed)), limits, options, nullptr, time_path,
+                 /*peaks_only=*/true);
   };
   // At SF 1 the covering's travel binds where it bottoms out, beyond which its ratio stays 1
   // and the fully-compressed flag decides: the narrowing is then steered by the approach

@@ -303,3 +303,38 @@ TEST_CASE("a braking robot's failed run is a status, not peaks", "[body_contact]
   CHECK(r.peak_force_N == 0.0);
   CHECK_FALSE(r.peak_pressure_Pa.has_value());
 }
+
+TEST_CASE("the time path to the peak gives the full run's peaks to the bit, without duration or rebound",
+          "[body_contact][braking]") {
+  std::vector<BodyContactScene> scenes = BrakingScenes();
+  for (const BodyContactScene& braked : BrakingScenes()) {
+    BodyContactScene unbraked = braked;
+    unbraked.braking_m_per_s2 = 0.0;
+    scenes.push_back(unbraked);
+  }
+  for (const BodyContactScene& scene : scenes) {
+    CAPTURE(scene.speed_m_per_s, scene.has_covering(), scene.braking_m_per_s2);
+    const BodyContactModel model = BodyContactModel::FromScene(scene);
+    const BodyContactResult full = covopt::Solve(model, TimePath(1e-8));
+    const BodyContactResult peak = covopt::SolveBodyContactPeaks(model);
+    REQUIRE(full.ok());
+    REQUIRE(peak.ok());
+    CHECK(peak.method == full.method);
+    CHECK(peak.peak_force_N == full.peak_force_N);
+    CHECK(peak.max_approach_m == full.max_approach_m);
+    CHECK(peak.peak_pressure_Pa == full.peak_pressure_Pa);
+    CHECK(peak.compression_ratio == full.compression_ratio);
+    CHECK(peak.fully_compressed == full.fully_compressed);
+    CHECK(peak.energy_transferred_J == full.energy_transferred_J);
+    CHECK_FALSE(peak.contact_duration_s.has_value());
+    CHECK(peak.rebound_speed_m_per_s == 0.0);
+  }
+  covopt::TimeIntegrationOptions few;
+  few.max_steps = 10;
+  const BodyContactResult failed = covopt::SolveBodyContactPeaks(BodyContactModel::FromScene(scenes[3]), few);
+  CHECK(failed.status == covopt::SolveStatus::kStepLimit);
+  CHECK(failed.message == "step limit of 10 steps reached before maximum compression");
+  few.relative_tolerance = 1.0;
+  CHECK_THROWS_WITH(covopt::SolveBodyContactPeaks(BodyContactModel::FromScene(scenes[3]), few),
+                    Catch::StartsWith("time_path.relative_tolerance"));
+}

@@ -205,4 +205,11 @@ BodyContactResult Solve(const BodyContactModel& model, const SolveOptions& optio
 /// Validates `scene` (BodyContactModel::FromScene) and solves it.
 BodyContactResult Solve(const BodyContactScene& scene, const SolveOptions& options = {});
 
+/// The peaks of one body-region contact on the time path, which stops at maximum compression:
+/// every peak quantity as Solve's time path gives it (to the bit), but no contact duration
+/// (empty) and no rebound speed (0), and no history. For searches that need only the peaks,
+/// such as a braking robot's speed limit (optim's MaxSafeSpeed): about half a full run.
+/// @throws std::invalid_argument for an option out of range (naming it, "time_path.").
+BodyContactResult SolveBodyContactPeaks(const BodyContactModel& model, const TimeIntegrationOptions& options = {});
+
 }  // namespace covopt

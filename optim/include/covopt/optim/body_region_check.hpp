@@ -24,7 +24,8 @@
 /// balance: its contacts are judged on the time path, and its speed limit is bracketed there
 /// (speed_limit.hpp's scan and narrowing), starting just below the unbraked closed-form limit,
 /// which bounds it from below (braking only lowers the peaks), and narrowed by regula falsi on
-/// the governing ratio: 7 to 14 time-path runs, 0.4-0.8 ms (bench/bench_body_region_check.cpp),
+/// the governing ratio: 7 to 14 time-path runs to the peak (SolveBodyContactPeaks), 0.2-0.4 ms
+/// (bench/bench_body_region_check.cpp),
 /// so the audit can call it per point-sample where the unbraked bound could govern.
 
 #include <optional>
