@@ -1,7 +1,9 @@
 // Benchmarks of the body-region verdicts (optim/body_region_check.hpp): one contact judged
 // against one region, its closed-form speed limit, and the all-regions table for one covering
 // (every area ISO/TS 15066 permits under transient contact, bare and covered). Targets: one
-// impact <= 0.2 µs (core's exact path), the table <= 50 µs.
+// impact <= 0.2 µs (core's exact path), the table <= 50 µs. And a braking robot (100 m/s²
+// after 5 ms, docs/model.md §13.10): one verdict on the time path, and its speed limit
+// bracketed there (target < 1 ms, the audit's per point-sample budget where braking counts).
 #include <benchmark/benchmark.h>
 
 #include <vector>
@@ -55,5 +57,31 @@ void BM_BodyRegionSpeedLimitTable(benchmark::State& state) {
   state.counters["rows"] = static_cast<double>(all.size());
 }
 BENCHMARK(BM_BodyRegionSpeedLimitTable)->Unit(benchmark::kMicrosecond);
+
+/// BenchScene braking 100 m/s² after 5 ms.
+covopt::BodyContactScene BrakingScene(int which) {
+  covopt::BodyContactScene scene = BenchScene(which);
+  scene.reaction_delay_s = 5e-3;
+  scene.braking_m_per_s2 = 100.0;
+  return scene;
+}
+
+void BM_BrakedJudgeBodyContact(benchmark::State& state) {
+  const covopt::BodyContactScene scene = BrakingScene(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(covopt::optim::JudgeBodyContact(scene, Chest()));
+}
+BENCHMARK(BM_BrakedJudgeBodyContact)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+void BM_BrakedMaxSafeSpeed(benchmark::State& state) {
+  const covopt::BodyContactScene scene = BrakingScene(static_cast<int>(state.range(0)));
+  int runs = 0;
+  for (auto _ : state) {
+    const covopt::optim::BodyRegionSpeedLimit limit = covopt::optim::MaxSafeSpeed(scene, Chest());
+    runs = limit.time_path_runs;
+    benchmark::DoNotOptimize(limit);
+  }
+  state.counters["time_path_runs"] = runs;
+}
+BENCHMARK(BM_BrakedMaxSafeSpeed)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -38,6 +38,13 @@ std::string RobotSurface(const BodyContactScene& s, const std::optional<std::str
   return text;
 }
 
+/// "100 m/s² after 5 ms, while the robot still moves forward (time path)".
+std::string BrakingText(const BodyContactScene& s) {
+  return fmt::format("{} after {}, while the robot still moves forward (the time path answers)",
+                     FormatQuantity(s.braking_m_per_s2, QuantityKind::kAcceleration),
+                     FormatQuantity(s.reaction_delay_s, QuantityKind::kTime));
+}
+
 std::string ContactText(const BodyRegionPlan& regions) {
   return fmt::format("{} contact; bare robot's contact area {}", ToString(regions.contact),
                      regions.contact_area_m2 > 0.0 ? FormatQuantity(regions.contact_area_m2, QuantityKind::kArea)
@@ -114,8 +121,18 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
   std::vector<std::optional<BodyContactResult>> time_paths;
   try {
     for (const materials::BodyLimits& limits : regions.IsoLimits()) {
-      judgements.push_back(optim::JudgeBodyContact(scene, limits, rule));
-      if (plan.solve.path == PathChoice::kTimePath) {
+      // A braking robot has only the time path: --method exact is refused (by Solve), and the
+      // judgement itself is the time path's, with --method/--rtol/--max-steps.
+      if (scene.robot_brakes() && plan.solve.path == PathChoice::kExact) {
+        (void)Solve(optim::WithRegion(scene, limits), plan.solve);
+      }
+      judgements.push_back(optim::JudgeBodyContact(scene, limits, rule, plan.solve.time_path));
+      if (!judgements.back().contact.ok()) {
+        const BodyContactResult& failed = judgements.back().contact;
+        return errors.Failed(fmt::format("the time path failed on {} ({}): {}", limits.region->name,
+                                         ToString(failed.status), failed.message));
+      }
+      if (plan.solve.path == PathChoice::kTimePath && !scene.robot_brakes()) {
         BodyContactResult timed = Solve(optim::WithRegion(scene, limits), plan.solve);
         if (!timed.ok()) {
           return errors.Failed(fmt::format("the time path failed on {} ({}): {}", limits.region->name,
@@ -145,6 +162,7 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
     fmt::print(out, "Robot        {} at {:g} m/s; {}\n", Mass(scene.robot_mass_kg), scene.speed_m_per_s,
                RobotSurface(scene, MaterialName(plan)));
     fmt::print(out, "Contact      {}\n", ContactText(regions));
+    if (scene.robot_brakes()) fmt::print(out, "Braking      {}\n", BrakingText(scene));
     if (sf != 1.0) fmt::print(out, "Safety       factor {:g}: each ratio must stay <= {:.4g}\n", sf, 1.0 / sf);
     std::size_t iso = 0;
     for (const BodyTarget& target : regions.targets) {
@@ -165,9 +183,15 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
                                                          : std::string("not evaluated (no --contact-area)"));
       if (c.peak_pressure_Pa && c.contact_radius_m > 0.0) peaks += fmt::format(" (Hertz, contact radius {})", Mm(c.contact_radius_m));
       fmt::print(out, "  Peaks      {}\n", peaks);
-      fmt::print(out, "             covering deflection {} (compression {}{}); body deflection {}; energy {:.4g} J\n",
+      fmt::print(out, "             covering deflection {} (compression {}{}); body deflection {}; energy {:.4g} J{}\n",
                  Mm(c.covering_deflection_m), Percent(v.compression_ratio),
-                 c.fully_compressed ? ", fully compressed" : "", Mm(c.body_deflection_m), c.energy_transferred_J);
+                 c.fully_compressed ? ", fully compressed" : "", Mm(c.body_deflection_m), c.energy_transferred_J,
+                 scene.robot_brakes()
+                     ? fmt::format(" (unbraked ½ mu v² = {:.4g} J); {}", 0.5 * c.reduced_mass_kg *
+                                                                                             scene.speed_m_per_s *
+                                                                                             scene.speed_m_per_s,
+                                   c.method)
+                     : std::string());
       if (time_paths[iso]) {
         const BodyContactResult& t = *time_paths[iso];
         fmt::print(out, "  Time path  force {} ({}); relative difference to the exact path {:.2g}\n",
@@ -196,11 +220,12 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
       throw InputError("--solve-for mass with --body-region: the body-region table solves for the speed; drop one");
     }
     if (options.plot_file) throw InputError("--plot with --body-region: the table has no chart; drop --plot");
-    if (options.oracle.given()) {
+    plan = ResolveSpeedLimit(options);
+    // A braking robot's limits are bracketed on the time path, which --method/--rtol/--max-steps set.
+    if (options.oracle.given() && !plan.coverings.front().scene.robot_brakes()) {
       throw InputError("--oracle/--method/--rtol with --body-region: the body-region limits are in closed form on the "
                        "energy balance; drop them");
     }
-    plan = ResolveSpeedLimit(options);
     for (const SimulationPlan& covering : plan.coverings) {
       if (!covering.ranges.empty()) {
         throw InputError(fmt::format("{} '{}': scene ranges (uncertain inputs) are not taken with --body-region",
@@ -227,7 +252,15 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
         scene.robot_mass_kg = mass;
         const std::vector<optim::BodyRegionSpeedLimitRow> table =
             iso.empty() ? std::vector<optim::BodyRegionSpeedLimitRow>{}
-                        : optim::BodyRegionSpeedLimitTable(scene, iso, body_options);
+                        : optim::BodyRegionSpeedLimitTable(scene, iso, body_options, plan.options.oracle.time_path);
+        // A limit the time path could not answer (a braking robot) is no answer at all: exit 1.
+        for (const optim::BodyRegionSpeedLimitRow& row : table) {
+          for (const optim::BodyRegionSpeedLimit* limit : {&row.bare, row.covered ? &*row.covered : nullptr}) {
+            if (limit && limit->status == optim::SpeedLimitStatus::kEvaluationFailed) {
+              return errors.Failed("the speed limit could not be evaluated: " + limit->message);
+            }
+          }
+        }
         std::size_t next = 0;
         for (const BodyTarget& target : regions.targets) {
           report::BodyRegionTableRow row;
@@ -297,6 +330,9 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
                                                             : "robot radius " + Mm(first_scene.robot_radius_m),
                                                         Mm(first_scene.covering.thickness_m), plan.coverings.size()));
     fmt::print(out, "Contact    {}\n", ContactText(regions));
+    if (first_scene.robot_brakes()) {
+      fmt::print(out, "Braking    {}: each ISO limit bracketed on it from the unbraked one\n", BrakingText(first_scene));
+    }
     fmt::print(out, "Criterion  {}\n", BodyCriterion(rule, regions.has_head()));
     fmt::print(out, "Speeds     the largest safe impact speed, bare and with the covering; 'binds' is the limit reached\n");
     std::string block;

@@ -48,9 +48,10 @@ std::vector<std::string> SplitNames(const std::string& typed) {
 }
 
 /// The scene inputs an ISO region reads (the rest belong to the head's model).
-constexpr std::array<std::string_view, 7> kBodyContactInputs{
+constexpr std::array<std::string_view, 9> kBodyContactInputs{
     "robot.mass",         "robot.speed",         "robot.radius",         "covering.modulus",
-    "covering.poisson",   "covering.thickness",  "limits.safety_factor"};
+    "covering.poisson",   "covering.thickness",  "limits.safety_factor", "robot.reaction_delay",
+    "robot.braking"};
 
 }  // namespace
 
@@ -247,6 +248,8 @@ BodyContactScene BodyContactSceneOf(const Scene& scene, const BodyRegionPlan& re
   contact.covering = scene.covering;
   contact.contact = regions.contact;
   contact.contact_area_m2 = regions.contact_area_m2;
+  contact.reaction_delay_s = scene.robot.reaction_delay_s;
+  contact.braking_m_per_s2 = scene.robot.braking_m_per_s2;
   return contact;
 }
 

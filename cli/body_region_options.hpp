@@ -84,14 +84,15 @@ int RunWithBodyRegions(const BodyRegionFlags& flags, const CommandErrors& errors
                        const std::function<int(const BodyRegionPlan&)>& run);
 
 /// Refuses, with only ISO regions named, a scene input they do not read (the head, scalp,
-/// skull, the robot's modulus and Poisson ratio, damping, braking, a neck, the phase
+/// skull, the robot's modulus and Poisson ratio, damping, a neck, the phase
 /// thresholds, the laceration and contusion limits, scene ranges, a history or plot of the
 /// head's time path) wherever it was set (a flag or the scene file); and a covering on a flat
 /// robot (naming --robot-radius).
 /// @throws InputError.
 void CheckBodyRegionScene(const BodyRegionPlan& regions, const SimulationPlan& plan);
 
-/// The body contact of `plan`'s robot (mass, speed, radius) and covering, with the region's
+/// The body contact of `plan`'s robot (mass, speed, radius, reaction delay and braking) and
+/// covering, with the region's
 /// contact type and the bare robot's contact area; k_H and m_H are set per region by the
 /// library (optim::WithRegion).
 BodyContactScene BodyContactSceneOf(const Scene& scene, const BodyRegionPlan& regions);

@@ -28,11 +28,13 @@ class BodyContact(Result):
     as ``covopt simulate --body-region R --json`` (``to_dict()`` is that object).
 
     scene (robot_mass_kg, speed_m_per_s, robot_radius_m, covering (None bare), contact,
-    contact_area_m2), safety_factor, regions (one verdict), head (None), safe, warnings; and,
-    when the time path ran (method="time-path", an integrator, or history=True), time_path
-    (its peaks: method, peak_force_N, max_approach_m, contact_duration_s, ...; the verdict is
-    the exact path's) and with history=True history (numpy arrays time_s, approach_m,
-    approach_rate_m_per_s, force_N).
+    contact_area_m2, and for a braking robot braking (reaction_delay_s, braking_m_per_s2)),
+    safety_factor, regions (one verdict), head (None), safe, warnings; and, when the time path
+    ran (method="time-path", an integrator, or history=True), time_path (its peaks: method,
+    peak_force_N, max_approach_m, contact_duration_s, ...; the verdict is the exact path's, or
+    for a braking robot, reaction_delay= and braking= in the scene, the time path's: the only
+    one that answers it) and with history=True history (numpy arrays time_s, approach_m,
+    approach_rate_m_per_s, force_N, robot_speed_m_per_s, braking_work_J).
 
     The verdict's keys are attributes too (``r.peak_force_N`` is ``r.regions[0].peak_force_N``):
     region, area, area_title, contact, criteria (whose: "ISO/TS 15066:2016 ..."), scope,

@@ -5,10 +5,11 @@
 /// optim's JudgeBodyContact, MaxSafeSpeed, BodyRegionSpeedLimitTable and DesignForBodyRegions.
 ///
 /// The robot and its covering come from a covopt.Scene (robot_mass, speed, robot_radius, the
-/// covering keywords or material, safety_factor); the region from the keywords body_region,
-/// body_area, contact and contact_area, named as the CLI's --body-region, --body-area,
-/// --contact and --contact-area. A scene keyword the body-region model does not read (the
-/// head's, the skull's, damping, braking, the robot's modulus) is refused, never ignored.
+/// covering keywords or material, safety_factor, reaction_delay and braking); the region from
+/// the keywords body_region, body_area, contact and contact_area, named as the CLI's
+/// --body-region, --body-area, --contact and --contact-area. A scene keyword the body-region
+/// model does not read (the head's, the skull's, damping, the robot's modulus) is refused,
+/// never ignored. A braking robot is judged on the time path (docs/model.md §13.10).
 /// The dicts are built here; their keys carry their units. Bad input raises ValueError with
 /// the library's one-line message (flags named as keywords).
 
@@ -97,9 +98,9 @@ auto Keyworded(F&& f) {
 }
 
 /// The scene keywords the body-region model reads; every other one given is refused.
-const char* const kReadKeywords[] = {"robot_mass",         "speed",    "robot_radius", "covering_modulus",
+const char* const kReadKeywords[] = {"robot_mass",         "speed",    "robot_radius",  "covering_modulus",
                                      "covering_poisson",   "material", "safety_factor", "covering_thickness",
-                                     "ranges"};
+                                     "ranges",             "reaction_delay", "braking"};
 
 /// body_region as given, for messages: "chest", "['chest', 'face']".
 std::string RegionText(const py::kwargs& kwargs) {
@@ -116,8 +117,9 @@ void RefuseHeadKeywords(const SceneInputs& inputs, const std::string& region) {
     if (!read) {
       throw std::invalid_argument(
           keyword + ": body_region=" + (region.front() == '[' ? region : "'" + region + "'") +
-          " does not read it (ISO/TS 15066's model takes robot_mass, speed, robot_radius, the covering and "
-          "safety_factor; the region's spring and mass are Table A.3's); drop it, or judge the head with "
+          " does not read it (ISO/TS 15066's model takes robot_mass, speed, robot_radius, the covering, "
+          "reaction_delay, braking and safety_factor; the region's spring and mass are Table A.3's); drop it, or "
+          "judge the head with "
           "body_region='head'");
     }
   }
@@ -229,6 +231,8 @@ BodyContactScene ContactScene(const SceneInputs& inputs, const py::kwargs& kwarg
   scene.covering = inputs.scene.covering;
   scene.contact = contact;
   scene.contact_area_m2 = ReadContactArea(kwargs);
+  scene.reaction_delay_s = inputs.scene.robot.reaction_delay_s;
+  scene.braking_m_per_s2 = inputs.scene.robot.braking_m_per_s2;
   return scene;
 }
 
@@ -382,10 +386,20 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   std::optional<BodyContactResult> timed;
   try {
     py::gil_scoped_release release;
-    judgements.push_back(optim::JudgeBodyContact(scene, limits, judge));
+    // A braking robot has only the time path: method='exact' is refused (by Solve), and its
+    // verdict is the time path's, with the integrator and tolerances given.
+    if (scene.robot_brakes() && options.path == PathChoice::kExact) {
+      (void)Solve(optim::WithRegion(scene, limits), options);
+    }
+    judgements.push_back(optim::JudgeBodyContact(scene, limits, judge, options.time_path));
     if (options.path == PathChoice::kTimePath) timed = Solve(optim::WithRegion(scene, limits), options);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(inputs.Attributed(OptionKeywords(AsKeywords(e.what()))));
+  }
+  if (const BodyContactResult& c = judgements.front().contact; !c.ok()) {
+    RaiseComputationError("the time path failed on " + limits.region->name + " (" + std::string(ToString(c.status)) +
+                              "): " + c.message,
+                          std::string(ToString(c.status)));
   }
   if (timed && !timed->ok()) {
     RaiseComputationError("the time path failed on " + limits.region->name + " (" +
@@ -408,6 +422,8 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
     column("approach_m", [](const BodyContactSample& s) { return s.approach_m; });
     column("approach_rate_m_per_s", [](const BodyContactSample& s) { return s.approach_rate_m_per_s; });
     column("force_N", [](const BodyContactSample& s) { return s.force_N; });
+    column("robot_speed_m_per_s", [](const BodyContactSample& s) { return s.robot_speed_m_per_s; });
+    column("braking_work_J", [](const BodyContactSample& s) { return s.braking_work_J; });
     d["history"] = columns;
   }
   return d;
@@ -470,7 +486,15 @@ py::dict SpeedLimitTable(const SceneInputs& inputs, const py::kwargs& kwargs) {
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
     }
-    for (const optim::BodyRegionSpeedLimitRow& row : table) rows.push_back(report::TableRow(mass, row));
+    for (const optim::BodyRegionSpeedLimitRow& row : table) {
+      // A braking robot's limit the time path could not answer is no answer at all.
+      for (const optim::BodyRegionSpeedLimit* limit : {&row.bare, row.covered ? &*row.covered : nullptr}) {
+        if (limit && limit->status == optim::SpeedLimitStatus::kEvaluationFailed) {
+          RaiseComputationError("the speed limit could not be evaluated: " + limit->message, "evaluation-failed");
+        }
+      }
+      rows.push_back(report::TableRow(mass, row));
+    }
     if (choice.head) rows.push_back(HeadRow(inputs, kwargs, mass));
     for (std::size_t i = rows.size() - table.size() - (choice.head ? 1 : 0); i < rows.size(); ++i) {
       rows[i].material = material;

@@ -39,6 +39,10 @@ ordered_json SceneObject(const BodyContactScene& scene, const std::optional<std:
   }
   j["contact"] = ToString(scene.contact);
   j["contact_area_m2"] = scene.contact_area_m2 > 0.0 ? Number(scene.contact_area_m2) : ordered_json(nullptr);
+  if (scene.robot_brakes()) {
+    j["braking"] = {{"reaction_delay_s", Number(scene.reaction_delay_s)},
+                    {"braking_m_per_s2", Number(scene.braking_m_per_s2)}};
+  }
   return j;
 }
 
