@@ -230,7 +230,7 @@ void CheckBodyRegionScene(const BodyRegionPlan& regions, const SimulationPlan& p
   // the force, and the pressure of a bare robot is its force over its contact area. Without
   // the area the verdict would be the force's alone. (With a covering the pressure is the
   // covering's Hertz pressure, and the bare robot is only the comparison.)
-  if (!(scene.covering.thickness_m > 0.0) && !(regions.contact_area_m2 > 0.0)) {
+  if (optim::BareRobotLacksContactArea(BodyContactSceneOf(scene, regions))) {
     throw InputError(fmt::format(
         "--contact-area is needed for the bare robot on {}: ISO/TS 15066 Table A.2 limits the pressure too, and the "
         "bare robot's pressure is its force over its contact area; give the area of the robot's contact surface, "

@@ -179,7 +179,7 @@ double BodyContactModel::ForceAtEnergy(double energy_J) const noexcept {
   const double c = 0.4 * compliance_factor_;
   double s = std::cbrt(std::sqrt(2.0 * k * energy_J));    // the spring alone
   const double s5 = s * s * s * s * s;
-  if (c * s5 > energy_J) s = std::pow(energy_J / c, 0.2);  // the covering alone is the lower bound
+  if (c * s5 > energy_J) s = std::pow(energy_J / c, 0.2);  // the covering alone: the tighter bound
   s = std::min(s, bottom_out_root_);                      // the bottoming out
   const double inverse_2k = 0.5 / k;
   for (int iteration = 0; iteration < 100; ++iteration) {

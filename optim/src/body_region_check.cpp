@@ -280,6 +280,10 @@ std::string_view ToString(BodyLimitKind kind) noexcept {
   return "unknown";
 }
 
+bool BareRobotLacksContactArea(const BodyContactScene& scene) noexcept {
+  return !scene.has_covering() && !(scene.contact_area_m2 > 0.0);
+}
+
 BodyContactScene WithRegion(BodyContactScene scene, const materials::BodyLimits& limits) {
   ValidateLimits(limits);
   scene.body_stiffness_N_per_m = limits.stiffness_N_per_m();

@@ -62,9 +62,7 @@ std::vector<BodyRegionSweepPoint> SweepBodyRegion(const BodyContactScene& scene,
       point.x = xv;
       point.y = y ? yv : 0.0;
       try {
-        if (!contact.has_covering() && !(contact.contact_area_m2 > 0.0)) {
-          // A bare point is its own verdict, and the bare robot's pressure needs its area:
-          // judged on its force alone it could read as safe.
+        if (BareRobotLacksContactArea(contact)) {  // a bare point is its own verdict
           throw std::invalid_argument(
               "contact area: the bare robot's pressure is its force over its contact area, and none is given; this "
               "bare point is not judged");

@@ -236,7 +236,7 @@ BodyContactScene ContactScene(const SceneInputs& inputs, const py::kwargs& kwarg
 /// limits the pressure as well as the force, and a bare robot's pressure is its force over its
 /// contact area; without the area a "safe" would be the force's alone.
 void RequireBareContactArea(const BodyContactScene& scene, std::span<const BodyLimits> regions) {
-  if (regions.empty() || scene.has_covering() || scene.contact_area_m2 > 0.0) return;
+  if (regions.empty() || !optim::BareRobotLacksContactArea(scene)) return;
   std::string names;
   for (std::size_t i = 0; i < regions.size() && i < 3; ++i) {
     names += (i > 0 ? ", " : "") + (i == 2 ? std::string("...") : regions[i].region->name);

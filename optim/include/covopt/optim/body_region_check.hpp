@@ -58,6 +58,12 @@ struct BodyRegionOptions {
   std::optional<CandidateMaterial> material;
 };
 
+/// The bare robot's own verdict needs its pressure: Table A.2 limits the pressure as well as the
+/// force, and a bare robot's pressure is its force over its contact area. True for a scene with
+/// no covering and no contact area, whose verdict would be the force's alone (the CLI, Python and
+/// SweepBodyRegion refuse to judge it; with a covering the pressure is the Hertz pressure).
+bool BareRobotLacksContactArea(const BodyContactScene& scene) noexcept;
+
 /// `scene` with the region's k_H, m_H and contact type from `limits`.
 BodyContactScene WithRegion(BodyContactScene scene, const materials::BodyLimits& limits);
 

@@ -1,0 +1,184 @@
+#pragma once
+/// @file audit.hpp
+/// `covopt audit`: the whole robot along its motion (docs/model.md §14). For every trajectory
+/// sample and every surface point of every chain link (covopt/robot/surface.hpp):
+///   - the point's velocity v and the reflected mass m along it (ChainSampleKinematics);
+///   - every exposed body region, transient (ISO/TS 15066 Table A.2, docs/model.md §13), with
+///     the link's covering on the point's radius of curvature, and optionally the head under
+///     Park et al.'s criteria (the head model of scene.hpp);
+///   - the ratio v / v_max(m), v_max the largest safe speed of that point against that region.
+///
+/// Why it is fast. In the conservative (unbraked) models the energy admitted at a region's
+/// binding limit, E* = ½ μ v_max², does not depend on the robot's mass; only the reduced mass
+/// μ = m m_H/(m + m_H) does. So per link, per distinct radius of curvature and per region
+/// E* is computed once (MaxSafeSpeed), and a point-sample costs its kinematics and one square
+/// root per region:  v_max(m) = sqrt(2 E*/μ(m)).
+/// A braking robot (reaction_delay_s, braking_m_per_s2) has no such invariant; the unbraked
+/// ratio is an upper bound of the braked one (braking only takes energy out), so the braked
+/// ratio is computed on the time path only where the unbraked bound could govern
+/// (branch and bound per link × region): the result is the braked governing ratio, exactly.
+///
+///     covopt::optim::AuditSetup setup{chain, surface};
+///     setup.regions = table.AllLimits(covopt::ContactType::kTransient);
+///     setup.head = covopt::Scene{};                         // the head under Park et al.
+///     const auto result = covopt::optim::Audit(setup, trajectory);
+///     result.safe_speed_scale;                              // min over links × regions
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <covopt/core/body_contact.hpp>
+#include <covopt/core/scene.hpp>
+#include <covopt/materials/body_regions.hpp>
+#include <covopt/robot/kinematic_chain.hpp>
+#include <covopt/robot/surface.hpp>
+#include <covopt/robot/trajectory.hpp>
+
+#include "covopt/optim/body_region_check.hpp"
+#include "covopt/optim/covering_design.hpp"
+#include "covopt/optim/trajectory_check.hpp"
+
+namespace covopt::optim {
+
+/// The covering of a link: a catalog material (its crush data then count) or a modulus.
+struct AuditCovering {
+  /// Modulus, Poisson ratio and thickness; thickness 0: the bare link.
+  CoveringSpec covering{27.6e6, 0.25, 0.0};
+  /// The catalog material, when it is one (its name, crush behaviour and strength).
+  std::optional<CandidateMaterial> material;
+};
+
+/// What an audit judges. The chain, its surface and the exposed regions.
+struct AuditSetup {
+  robot::KinematicChain chain;
+  robot::RobotSurface surface;
+  /// The covering of every link not in link_coverings.
+  AuditCovering covering;
+  /// Per link name: its own covering. A name that is not a surface link is refused.
+  std::map<std::string, AuditCovering> link_coverings;
+  /// The exposed body regions, transient (e.g. BodyRegionTable::AllLimits(kTransient)). A
+  /// clamped entry is refused (an audit judges the free impacts of a motion).
+  std::vector<materials::BodyLimits> regions;
+  /// Set: the head too, under Park et al.'s criteria; its robot mass, speed, radius and
+  /// covering are each point's, the rest (head layers, limits) this scene's.
+  std::optional<Scene> head;
+  /// The bare robot's contact area [m²] for a bare link's pressure; 0: not given, which is
+  /// refused when a link is bare (its verdict would be the force's alone).
+  double contact_area_m2 = 0.0;
+  /// Safety factor, criterion, crushing, unknown strengths.
+  DesignRule rule;
+  /// The robot's reaction after first contact [s] and its braking deceleration [m/s²]
+  /// (both 0: it does not brake), for every region and the head (docs/model.md §10.2).
+  double reaction_delay_s = 0.0;
+  double braking_m_per_s2 = 0.0;
+  /// Rest speed, joint-limit checks, the singular tolerance.
+  robot::ContactMotionOptions motion;
+};
+
+/// The per-link design: the catalog materials to try (SelectCandidates order), and the
+/// thickness scan. Empty materials: no design.
+struct AuditDesignOptions {
+  std::vector<CandidateMaterial> materials;
+  double min_thickness_m = 0.1e-3;
+  double max_thickness_m = 0.05;
+  int thickness_scan_points = 250;
+  double thickness_resolution_m = 1e-6;
+  double thickness_step_m = 0.5e-3;  ///< the recommendation is rounded up to this [m]
+};
+
+/// One link × region: the governing point-sample (largest ratio over the motion).
+struct AuditCell {
+  std::size_t link = 0;    ///< index into AuditResult::links
+  std::size_t region = 0;  ///< index into AuditResult::regions
+  /// v / v_max at the governing point-sample [-] (unscaled: 1/SF is the limit); 0 when the
+  /// link never moves.
+  double governing_ratio = 0.0;
+  BodyLimitKind binding = BodyLimitKind::kNone;
+  /// The governing sample (index, time [s]) and point (index into the link's points, its
+  /// position in the link frame and in the base frame [m]); empty when the link never moves.
+  std::optional<std::size_t> sample;
+  double time_s = 0.0;
+  std::size_t point = 0;
+  Eigen::Vector3d point_in_link_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d point_in_base_m = Eigen::Vector3d::Zero();
+  double speed_m_per_s = 0.0;           ///< [m/s]
+  double reflected_mass_kg = 0.0;       ///< [kg]
+  double max_safe_speed_m_per_s = 0.0;  ///< v_max there [m/s]
+  /// min over the link's moving point-samples of v_max / v [-]; +inf when it never moves.
+  double speed_scale = 0.0;
+};
+
+/// Per link: the thinnest catalog covering that makes the whole motion safe at full speed
+/// against every region (and the head), checked again by a second audit of that link.
+struct AuditLinkDesign {
+  std::size_t link = 0;
+  std::optional<CandidateMaterial> material;  ///< empty: none in range (or no need: see message)
+  std::optional<double> thickness_m;          ///< rounded up to the step
+  double governing_ratio = 0.0;               ///< re-checked, at that covering [-]
+  std::string message;
+};
+
+/// One sample's verdict for streaming (AuditOptions::on_sample): per link, the largest ratio
+/// over its points and the regions [-] (0 for a link at rest), and the region that sets it.
+struct AuditSampleRow {
+  std::size_t sample = 0;
+  double time_s = 0.0;
+  std::span<const double> link_ratio;
+  std::span<const std::size_t> link_region;
+};
+
+struct AuditOptions {
+  /// Keep the samples × links ratio matrix (AuditResult::ratio_over_time) for the heat map.
+  /// false: memory does not grow with the trajectory's length.
+  bool keep_ratio_over_time = true;
+  /// Called once per sample, in order (streaming output).
+  std::function<void(const AuditSampleRow&)> on_sample;
+  /// The per-link design (no design when its materials are empty).
+  AuditDesignOptions design;
+};
+
+/// The answer of Audit.
+struct AuditResult {
+  TrajectoryCheckStatus status = TrajectoryCheckStatus::kAtRest;  ///< safe, unsafe, at-rest
+  std::vector<std::string> links;    ///< the surface's links, base to tip
+  std::vector<std::size_t> link_point_counts;
+  /// "chest (sternum)", ..., and "head (Park et al. 2011)" last when the head is judged.
+  std::vector<std::string> regions;
+  /// links × regions, row-major (cells[link * regions.size() + region]).
+  std::vector<AuditCell> cells;
+  /// min over cells of speed_scale [-]: the factor every speed of the program may be scaled
+  /// by; +inf at rest throughout. With the safety factor: ratio 1/SF ⇔ scale 1.
+  double safe_speed_scale = 0.0;
+  std::optional<std::size_t> limiting_cell;  ///< the cell that sets it
+  std::size_t sample_count = 0;
+  /// samples × links, row-major, when kept: the largest ratio per sample and link.
+  std::vector<double> ratio_over_time;
+  std::vector<double> time_s;  ///< the sample times, when kept
+  std::vector<AuditLinkDesign> link_designs;
+  /// One sentence: "unsafe: slow the program to 0.62× (fr3_link7, chest (sternum), force,
+  /// t = 0.42 s)".
+  std::string message;
+  /// What every verdict covers: one line per standard or model applied.
+  std::vector<std::string> scope;
+  std::vector<std::string> warnings;
+  const AuditCell& cell(std::size_t link, std::size_t region) const {
+    return cells[link * regions.size() + region];
+  }
+};
+
+/// Audits `trajectory` (its samples are checked as ContactMotion checks them).
+/// @throws std::invalid_argument naming the field: no regions and no head, a clamped region, a
+///         link covering for a link not on the surface, a bare link without a contact area, a
+///         covering's modulus, Poisson ratio or thickness out of range, a bad sample (file and
+///         line), braking out of range.
+AuditResult Audit(const AuditSetup& setup, const robot::JointTrajectory& trajectory,
+                  const AuditOptions& options = {});
+
+}  // namespace covopt::optim
