@@ -229,21 +229,11 @@ robot::Payload PayloadFromOptions(const RobotModelOptions& options) {
     }
     payload.inertia_kg_m2 = robot::Payload::InertiaFromSix(six[0], six[1], six[2], six[3], six[4], six[5]);
   }
-  // Checked field by field, so that the message names the flag whose value is wrong.
-  robot::Payload so_far;
-  const auto check = [&](const char* flag) {
-    try {
-      robot::CheckPayload(so_far, flag);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(e.what());
-    }
-  };
-  so_far.mass_kg = payload.mass_kg;
-  check("--payload-mass");
-  so_far.center_of_mass_m = payload.center_of_mass_m;
-  check("--payload-com");
-  so_far.inertia_kg_m2 = payload.inertia_kg_m2;
-  check("--payload-inertia");
+  try {
+    robot::CheckPayload(payload, robot::PayloadInputNames{"--payload-mass", "--payload-com", "--payload-inertia"});
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
   return payload;
 }
 

@@ -65,6 +65,15 @@ void CheckPayload(const Payload& payload, const std::string& where) {
   }
 }
 
+void CheckPayload(const Payload& payload, const PayloadInputNames& names) {
+  Payload so_far;
+  so_far.mass_kg = payload.mass_kg;
+  CheckPayload(so_far, names.mass);
+  so_far.center_of_mass_m = payload.center_of_mass_m;
+  CheckPayload(so_far, names.center_of_mass);
+  CheckPayload(payload, names.inertia);
+}
+
 double IsoEffectiveMassKg(double moving_mass_kg, double payload_mass_kg) {
   using internal::Refuse;
   if (!(moving_mass_kg > 0.0 && moving_mass_kg <= kMaxLinkMassKg)) {

@@ -57,8 +57,21 @@ struct Payload {
 ///         1e-6 of the largest moment, as for a URDF's <inertia>).
 void CheckPayload(const Payload& payload, const std::string& where = "payload");
 
-/// ISO/TS 15066:2016, Annex A, A.3.2 (eq. A.4): the effective mass of the robot for the
-/// transient-contact energy, m_R = M/2 + m_L [kg], where M is the total mass of the robot's
+/// What a caller calls the payload's three inputs (a flag, a keyword), for messages.
+struct PayloadInputNames {
+  std::string mass;              ///< "--payload-mass", "payload_mass"
+  std::string center_of_mass;    ///< "--payload-com", "payload_com"
+  std::string inertia;           ///< "--payload-inertia", "payload_inertia"
+};
+
+/// CheckPayload, each message starting with the name of the input that is wrong: the mass
+/// is checked alone, then with the centre of mass, then with the inertia.
+/// @throws std::invalid_argument as CheckPayload, e.g. "--payload-inertia: inertia largest
+///         principal moment = 3 is not allowed (...)".
+void CheckPayload(const Payload& payload, const PayloadInputNames& names);
+
+/// ISO/TS 15066:2016, Annex A: the effective mass of the robot in the transient-contact
+/// energy, m_R = M/2 + m_L [kg], where M is the total mass of the robot's
 /// moving parts [kg] and m_L the effective payload, tooling and workpiece included [kg]. The
 /// standard's estimate for a user without a robot model; the reflected mass from a URDF
 /// (ReflectedMass) is the better one where a model exists.
