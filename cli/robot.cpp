@@ -1,6 +1,7 @@
 #include "robot.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -21,6 +22,9 @@ matrix, from the URDF's links through Orocos KDL), and its extremes over all
 directions (the reciprocal eigenvalues of J_v M^-1 J_v'). A direction the robot
 cannot move the point in (a singular configuration) has an infinite mass:
 "fixed", with a warning. Links beyond the tip ride along as rigid payload.
+--payload-mass (with --payload-com, --payload-inertia) mounts a tool and the
+part it holds on the tip link: it counts in the reflected mass, and the table
+and the JSON give the masses without it too.
 Without --direction only the extremes are given. Joint positions (and a
 trajectory's velocities) must lie within the URDF's <limit>s and a full turn;
 --ignore-joint-limits skips the URDF's limits, with a warning. Robot models
@@ -70,11 +74,18 @@ int RunRobot(const RobotOptions& options, std::ostream& out, std::ostream& err) 
     return errors.BadInput(fmt::format("{} applies with --trajectory FILE.csv only (the trajectory check)", *flag));
   }
   robot::ReflectedMassResult result;
+  std::optional<report::RobotPayload> payload;  // with one: the same contact without it
   std::string robot_line;
   try {
     const RobotModelInput input = ResolveRobotModelInput(options.model, false);
     result = robot::ReflectedMass(input.chain, input.joint_positions, input.point_in_tip_m, input.direction,
                                   options.model.reflected_mass_options());
+    if (!input.chain.payload().empty()) {
+      payload = report::RobotPayload{
+          input.chain.payload(),
+          robot::ReflectedMass(input.chain.WithPayload({}), input.joint_positions, input.point_in_tip_m,
+                               input.direction, options.model.reflected_mass_options())};
+    }
     std::string joints;
     for (std::size_t i = 0; i < input.chain.joint_names().size(); ++i) {
       joints += fmt::format("{}{} {:.6g}", i ? ", " : "", input.chain.joint_names()[i],
@@ -83,20 +94,36 @@ int RunRobot(const RobotOptions& options, std::ostream& out, std::ostream& err) 
     robot_line = fmt::format("Robot    {}: {} -> {}, {} movable joint{}\nJoints   {}\n", input.chain.robot_name(),
                              input.chain.base_link(), input.chain.tip_link(), input.chain.joint_count(),
                              input.chain.joint_count() == 1 ? "" : "s", joints.empty() ? "(none)" : joints);
+    if (payload) {
+      const Eigen::Matrix3d& inertia = payload->payload.inertia_kg_m2;
+      robot_line += fmt::format(
+          "Payload  {:.6g} kg at {} m (tip frame), {}\n", payload->payload.mass_kg,
+          Direction(payload->payload.center_of_mass_m),
+          inertia.isZero(0.0) ? std::string("a point mass")
+                              : fmt::format("inertia about its centre of mass (ixx, iyy, izz, ixy, ixz, iyz) "
+                                            "{:.4g}, {:.4g}, {:.4g}, {:.4g}, {:.4g}, {:.4g} kg m²",
+                                            inertia(0, 0), inertia(1, 1), inertia(2, 2), inertia(0, 1),
+                                            inertia(0, 2), inertia(1, 2)));
+    }
   } catch (const std::invalid_argument& e) {  // InputError and the library's checks
     return errors.BadInput(e.what());
   }
   if (options.json) {
-    out << report::RobotJson(result) << '\n';
+    out << report::RobotJson(result, {}, 2, payload) << '\n';
     return 0;
   }
   fmt::print(out, "{}", robot_line);
-  fmt::print(out, "Contact  {} m in the base frame\n\nReflected mass\n", Direction(result.contact_point_m));
-  if (result.reflected_mass_kg) {
-    fmt::print(out, "  along    {:<30} {}\n", Direction(*result.direction), Mass(*result.reflected_mass_kg));
-  }
-  fmt::print(out, "  largest  {:<30} {}\n", Direction(result.max_direction), Mass(result.max_reflected_mass_kg));
-  fmt::print(out, "  smallest {:<30} {}\n", Direction(result.min_direction), Mass(result.min_reflected_mass_kg));
+  fmt::print(out, "Contact  {} m in the base frame\n\nReflected mass{}\n", Direction(result.contact_point_m),
+             payload ? fmt::format("{:<37} without the payload", "") : "");
+  // The mass with the payload, and without it (its own extreme direction) when there is one.
+  const auto row = [&](const char* name, const Eigen::Vector3d& direction, double mass_kg, double bare_kg) {
+    fmt::print(out, "  {:<8} {:<30} {}\n", name, Direction(direction),
+               payload ? fmt::format("{:<18} {}", Mass(mass_kg), Mass(bare_kg)) : Mass(mass_kg));
+  };
+  const robot::ReflectedMassResult& bare = payload ? payload->without_payload : result;
+  if (result.reflected_mass_kg) row("along", *result.direction, *result.reflected_mass_kg, *bare.reflected_mass_kg);
+  row("largest", result.max_direction, result.max_reflected_mass_kg, bare.max_reflected_mass_kg);
+  row("smallest", result.min_direction, result.min_reflected_mass_kg, bare.min_reflected_mass_kg);
   if (result.warnings.empty()) {
     fmt::print(out, "\nWarnings: none\n");
   } else {

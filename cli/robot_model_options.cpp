@@ -1,5 +1,6 @@
 #include "robot_model_options.hpp"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <numbers>
@@ -140,7 +141,101 @@ std::string FormatVector(Eigen::Vector3d v, int precision) {
   return fmt::format("({:.{}g}, {:.{}g}, {:.{}g})", v[0], precision, v[1], precision, v[2], precision);
 }
 
+/// The first URDF-only flag given ("--tip"), for the ISO fallback's refusal; none: nullopt.
+std::optional<std::string> FirstUrdfFlag(const RobotModelOptions& options) {
+  if (options.payload_com) return "--payload-com";
+  if (options.payload_inertia) return "--payload-inertia";
+  if (options.base) return "--base";
+  if (options.tip) return "--tip";
+  if (options.joints) return "--joints";
+  if (options.point) return "--point";
+  if (options.direction) return "--direction";
+  if (options.ignore_joint_limits) return "--ignore-joint-limits";
+  return std::nullopt;
+}
+
+/// ISO/TS 15066's M/2 + m_L for the scene's robot mass (options.iso_fallback()).
+RobotModelMass IsoRobotMass(const RobotModelOptions& options, bool robot_mass_flag_given) {
+  if (!options.robot_moving_mass) {
+    throw InputError(fmt::format(
+        "--payload-mass '{}' needs --urdf FILE (the payload on the robot model's tip) or --robot-moving-mass M "
+        "(ISO/TS 15066's robot mass M/2 + m_L, M the mass of the robot's moving parts){}",
+        *options.payload_mass, robot_mass_flag_given ? "; --robot-mass is the robot's effective mass, payload included" : ""));
+  }
+  if (robot_mass_flag_given) {
+    throw InputError(fmt::format("--robot-mass and --robot-moving-mass '{}' both give the robot mass; give one "
+                                 "(--robot-moving-mass M with --payload-mass m_L is ISO/TS 15066's M/2 + m_L)",
+                                 *options.robot_moving_mass));
+  }
+  if (const auto flag = FirstUrdfFlag(options)) {
+    throw InputError(fmt::format("{} needs --urdf FILE; --robot-moving-mass '{}' (ISO/TS 15066's M/2 + m_L) takes "
+                                 "only the payload's mass, --payload-mass",
+                                 *flag, *options.robot_moving_mass));
+  }
+  static constexpr QuantitySpec kMovingMass{QuantityKind::kMass, false, false, 0.0, 1e4, {"g", ""},
+                                            "robot moving mass"};
+  const double moving_kg = ParseQuantity(*options.robot_moving_mass, kMovingMass, "--robot-moving-mass");
+  if (!(moving_kg > 0.0 && moving_kg <= robot::kMaxLinkMassKg)) {
+    throw InputError(fmt::format("--robot-moving-mass: the total mass of the robot's moving parts must be in "
+                                 "(0, 1e6] kg (got '{}')",
+                                 *options.robot_moving_mass));
+  }
+  const double payload_kg = PayloadFromOptions(options).mass_kg;
+  RobotModelMass mass;
+  mass.mass_kg = robot::IsoEffectiveMassKg(moving_kg, payload_kg);
+  mass.source = fmt::format("--robot-moving-mass '{}'{} (ISO/TS 15066 M/2 + m_L)", *options.robot_moving_mass,
+                            options.payload_mass ? fmt::format(" --payload-mass '{}'", *options.payload_mass) : "");
+  mass.notes.push_back(fmt::format(
+      "robot mass {:.6g} kg: ISO/TS 15066:2016 Annex A's estimate m_R = M/2 + m_L = {:.6g}/2 + {:.6g} kg "
+      "(--robot-moving-mass, --payload-mass), not a reflected mass: it ignores the pose and the direction of "
+      "the impact; --urdf FILE gives the reflected mass of the robot model",
+      mass.mass_kg, moving_kg, payload_kg));
+  return mass;
+}
+
 }  // namespace
+
+/// --payload-mass/--payload-com/--payload-inertia as a robot::Payload (none: all zero).
+robot::Payload PayloadFromOptions(const RobotModelOptions& options) {
+  robot::Payload payload;
+  if (!options.payload_mass) {
+    if (options.payload_com || options.payload_inertia) {
+      throw InputError(fmt::format("{} needs --payload-mass M (the payload's mass in kg)",
+                                   options.payload_com ? "--payload-com" : "--payload-inertia"));
+    }
+    return payload;
+  }
+  static constexpr QuantitySpec kPayloadMass{QuantityKind::kMass, false, false, 0.0, robot::kMaxPayloadMassKg,
+                                             {"g", ""}, "payload mass"};
+  payload.mass_kg = ParseQuantity(*options.payload_mass, kPayloadMass, "--payload-mass");  // 0: none
+  if (options.payload_com) payload.center_of_mass_m = ParseTriple(*options.payload_com, "--payload-com", true);
+  if (options.payload_inertia) {
+    const std::vector<std::string> items = SplitList(*options.payload_inertia);
+    if (items.size() != 6) {
+      throw InputError(fmt::format("--payload-inertia: expected 6 comma-separated numbers IXX,IYY,IZZ,IXY,IXZ,IYZ "
+                                   "in kg m² about the centre of mass (got {} in '{}')",
+                                   items.size(), *options.payload_inertia));
+    }
+    std::array<double, 6> six{};
+    for (std::size_t i = 0; i < 6; ++i) {
+      const std::string& item = items[i];
+      const char* end = item.data() + item.size();
+      const auto [stop, ec] = std::from_chars(item.data(), end, six[i]);
+      if (item.empty() || ec != std::errc() || stop != end || !std::isfinite(six[i])) {
+        throw InputError(fmt::format("--payload-inertia: component {} must be a finite number in kg m² (got '{}' "
+                                     "in '{}')",
+                                     i + 1, item, *options.payload_inertia));
+      }
+    }
+    payload.inertia_kg_m2 = robot::Payload::InertiaFromSix(six[0], six[1], six[2], six[3], six[4], six[5]);
+  }
+  try {
+    robot::CheckPayload(payload, robot::PayloadInputNames{"--payload-mass", "--payload-com", "--payload-inertia"});
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+  return payload;
+}
 
 void AddRobotModelOptions(CLI::App& sub, RobotModelOptions& options, bool direction_required,
                           const std::string& group) {
@@ -155,6 +250,19 @@ void AddRobotModelOptions(CLI::App& sub, RobotModelOptions& options, bool direct
   sub.add_option("--point", options.point,
                  "contact point in the tip link's frame (default 0,0,0; m, or with units)")
       ->type_name("X,Y,Z")->group(group);
+  sub.add_option("--payload-mass", options.payload_mass,
+                 "tool and part on the tip link, counted in the reflected mass (kg, or 500g)")
+      ->type_name("M")->group(group);
+  sub.add_option("--payload-com", options.payload_com,
+                 "the payload's centre of mass in the tip link's frame (default 0,0,0; m, or with units)")
+      ->type_name("X,Y,Z")->group(group);
+  sub.add_option("--payload-inertia", options.payload_inertia,
+                 "the payload's inertia about its centre of mass, tip-frame axes [kg m²] (default: a point mass)")
+      ->type_name("IXX,IYY,IZZ,IXY,IXZ,IYZ")->group(group);
+  sub.add_option("--robot-moving-mass", options.robot_moving_mass,
+                 "without --urdf: the total mass M of the robot's moving parts (kg, or with a unit); the robot "
+                 "mass is then ISO/TS 15066's M/2 + m_L (m_L: --payload-mass), instead of --robot-mass")
+      ->type_name("M")->group(group);
   sub.add_flag("--ignore-joint-limits", options.ignore_joint_limits,
                "do not check joint positions and velocities against the URDF's limits (a warning says so)")
       ->group(group);
@@ -164,7 +272,28 @@ void AddRobotModelOptions(CLI::App& sub, RobotModelOptions& options, bool direct
       ->type_name("X,Y,Z")->group(group);
 }
 
+namespace {
+
+/// --robot-moving-mass where a robot model is read: with --urdf it contradicts it; without,
+/// the command needs one.
+void RefuseMovingMass(const RobotModelOptions& options) {
+  if (options.robot_moving_mass) {
+    throw InputError(options.urdf ? fmt::format("--robot-moving-mass '{}' and --urdf both give the robot mass; give "
+                                                "one (--urdf computes the reflected mass, with the payload on its "
+                                                "tip; --robot-moving-mass is ISO/TS 15066's M/2 + m_L without a "
+                                                "robot model)",
+                                                *options.robot_moving_mass)
+                                  : fmt::format("--robot-moving-mass '{}' (ISO/TS 15066's M/2 + m_L) gives simulate, "
+                                                "speed-limit and optimize a robot mass without a URDF; this command "
+                                                "needs --urdf FILE",
+                                                *options.robot_moving_mass));
+  }
+}
+
+}  // namespace
+
 RobotModelInput ResolveRobotModelChain(const RobotModelOptions& options) {
+  RefuseMovingMass(options);
   if (!options.urdf) {
     throw InputError("--urdf FILE is required with --base/--tip/--joints/--point/--direction");
   }
@@ -173,9 +302,10 @@ RobotModelInput ResolveRobotModelChain(const RobotModelOptions& options) {
   spec.base_link = options.base.value_or("");
   spec.tip_link = *options.tip;
   if (options.base && options.base->empty()) throw InputError("--base: empty link name");
+  const robot::Payload payload = PayloadFromOptions(options);
   RobotModelInput input{[&] {
                           try {
-                            return robot::KinematicChain::FromUrdfFile(*options.urdf, spec);
+                            return robot::KinematicChain::FromUrdfFile(*options.urdf, spec).WithPayload(payload);
                           } catch (const std::invalid_argument& e) {
                             throw InputError(std::string("--urdf: ") + e.what());
                           }
@@ -186,6 +316,7 @@ RobotModelInput ResolveRobotModelChain(const RobotModelOptions& options) {
 }
 
 RobotModelInput ResolveRobotModelInput(const RobotModelOptions& options, bool require_direction) {
+  RefuseMovingMass(options);
   if (options.urdf && options.tip && !options.joints) {
     throw InputError(fmt::format("--joints Q1,Q2,... is required with --urdf '{}'", *options.urdf));
   }
@@ -206,6 +337,7 @@ RobotModelInput ResolveRobotModelInput(const RobotModelOptions& options, bool re
 }
 
 RobotModelMass ResolveRobotModelMass(const RobotModelOptions& options, bool robot_mass_flag_given) {
+  if (options.iso_fallback()) return IsoRobotMass(options, robot_mass_flag_given);
   if (robot_mass_flag_given) {
     throw InputError("--robot-mass and --urdf both give the robot mass; give one (--urdf computes "
                      "the reflected mass from the robot model)");

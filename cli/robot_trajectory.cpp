@@ -233,6 +233,11 @@ TrajectoryRun Resolve(const RobotModelOptions& model, const RobotTrajectoryOptio
   run.robot_line = fmt::format("{}: {} -> {}, {} movable joint{}; contact point ({:.4g}, {:.4g}, {:.4g}) m in {}",
                                chain.robot_name(), chain.base_link(), chain.tip_link(), chain.joint_count(),
                                chain.joint_count() == 1 ? "" : "s", p[0], p[1], p[2], chain.tip_link());
+  if (const robot::Payload& payload = chain.payload(); !payload.empty()) {  // counted in every sample's mass
+    const Eigen::Vector3d& c = payload.center_of_mass_m;
+    run.robot_line += fmt::format("; payload {:.6g} kg at ({:.4g}, {:.4g}, {:.4g}) m in {}", payload.mass_kg, c[0],
+                                  c[1], c[2], chain.tip_link());
+  }
   try {
     const robot::JointTrajectory trajectory = robot::ReadJointTrajectory(*options.file, chain.joint_count());
     robot::ContactMotionOptions motion_options;

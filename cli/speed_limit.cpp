@@ -311,9 +311,13 @@ SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
     scene_options.scene_values.erase(typed);
   }
   if (options.scene.robot_model.given() && (!by_speed || varied_text)) {  // --urdf: one robot mass
-    throw InputError(by_speed ? "--robot-mass and --urdf both give the robot mass; give one (--urdf computes "
-                                "the reflected mass from the robot model)"
-                              : "--urdf gives the robot mass, which --solve-for mass computes; drop one of them");
+    // The ISO fallback (--robot-moving-mass) is refused alike.
+    const std::string source = options.scene.robot_model.iso_fallback() ? "--robot-moving-mass" : "--urdf";
+    throw InputError(by_speed ? fmt::format("--robot-mass and {} both give the robot mass; give one ({})", source,
+                                            source == "--urdf" ? "--urdf computes the reflected mass from the robot model"
+                                                               : "--robot-moving-mass M is ISO/TS 15066's M/2 + m_L")
+                              : fmt::format("{} gives the robot mass, which --solve-for mass computes; drop one of them",
+                                            source));
   }
   if (!options.materials.empty() && (scene_options.scene_values.count("covering.modulus") != 0 ||
                                      scene_options.scene_values.count("covering.poisson") != 0)) {

@@ -30,7 +30,7 @@ for _public in (Scene, ComputationError):
     _public.__module__ = __name__  # shown as covopt.Scene, covopt.ComputationError
 
 __all__ = ["Scene", "Result", "simulate", "sweep", "optimize", "materials", "material",
-           "ComputationError", "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass",
+           "ComputationError", "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "iso_robot_mass",
            "contact_motion", "check_trajectory", "worst_case", "injury_probability",
            "sensitivities", "robust_optimize", "load_scene", "BodyContact", "BodyRegionSpeedLimitTable",
            "BodyRegionDesign", "BodyRegionTrajectoryCheck", "BodyRegionSweep"]
@@ -303,7 +303,8 @@ def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
 
 
 def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), direction=None, *,
-                   urdf_text=None, ignore_joint_limits=False):
+                   urdf_text=None, ignore_joint_limits=False, payload_mass=None, payload_com=None,
+                   payload_inertia=None):
     """The reflected mass of a robot at a contact point, as ``covopt robot --json``.
 
     urdf: the robot model's file (str or path; None with urdf_text=, the URDF itself);
@@ -314,30 +315,54 @@ def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), directio
     full turn (|q| <= 2 pi rad: radians, not degrees; |q| <= 10 m) and within the URDF's
     <limit>s; ignore_joint_limits=True skips the URDF's limits and adds a warning saying so.
 
+    A tool or payload on the tip link (a gripper with its part) counts in the mass:
+    payload_mass [kg] (None or 0: none), payload_com its centre of mass (x, y, z) in the tip
+    link's frame [m] (default its origin), payload_inertia (ixx, iyy, izz, ixy, ixz, iyz) about
+    the centre of mass in the tip link's axes [kg m²] (URDF's order; default a point mass), as
+    ``--payload-mass/--payload-com/--payload-inertia``.
+
     Returns a ReflectedMass: reflected_mass_kg (None without a direction), direction,
     max_reflected_mass_kg, max_direction, min_reflected_mass_kg, min_direction,
-    contact_point_m (base frame), joint_names, status, message, warnings. A mass the robot
-    cannot move is the string "fixed" (infinite), with a warning.
+    contact_point_m (base frame), joint_names, payload (None without one, else mass_kg,
+    center_of_mass_m, inertia_kg_m2 (3 x 3) and without_payload: the three masses on the bare
+    chain), status, message, warnings. A mass the robot cannot move is the string "fixed"
+    (infinite), with a warning.
 
     Raises ValueError on bad input (missing or malformed URDF, unknown links, a joint
     count that does not match, non-finite numbers, a zero direction, a position beyond a full
-    turn or the URDF's limits, a URDF with a cycle, implausible masses, inertias or origins).
+    turn or the URDF's limits, a URDF with a cycle, implausible masses, inertias or origins,
+    a non-physical payload: a negative mass, an inertia with a negative principal moment or one
+    above the sum of the other two, naming the keyword and the value).
     """
     return ReflectedMass(_covopt.reflected_mass(urdf, tip, joints, base=base, point=point,
                                                 direction=direction, urdf_text=urdf_text,
-                                                ignore_joint_limits=ignore_joint_limits))
+                                                ignore_joint_limits=ignore_joint_limits,
+                                                payload_mass=payload_mass, payload_com=payload_com,
+                                                payload_inertia=payload_inertia))
+
+
+def iso_robot_mass(moving_mass, payload_mass=None):
+    """ISO/TS 15066:2016 Annex A's estimate of the robot's effective mass without a robot
+    model, m_R = M/2 + m_L [kg]: moving_mass M the total mass of the robot's moving parts [kg],
+    payload_mass m_L the payload with tooling and workpiece [kg] (None: 0). As ``--robot-moving-mass
+    M --payload-mass m_L`` on the CLI: give it as the scene's robot_mass,
+    ``Scene(robot_mass=covopt.iso_robot_mass(30, 2.5))``. Not a reflected mass: it ignores the
+    pose and the impact's direction; reflected_mass() gives that where a URDF exists. Raises
+    ValueError unless 0 < M <= 1e6 kg and 0 <= m_L <= 1e4 kg.
+    """
+    return _covopt.iso_robot_mass(moving_mass, payload_mass)
 
 
 def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, urdf_text=None,
-                   ignore_joint_limits=False):
+                   ignore_joint_limits=False, payload_mass=None, payload_com=None, payload_inertia=None):
     """The contact point's motion along a joint trajectory.
 
     trajectory: a CSV file (an optional header line; time [s], the n joint positions, the n
     joint velocities per line, in chain order; a first line of numbers only is a sample, with a
     warning; at most 64 MiB and 10**6 samples) or a dict with exactly the keys time_s (N),
     positions (N x n) and velocities (N x n). Positions and velocities are checked against
-    the URDF's limits (ignore_joint_limits=True: not, with a warning). Other arguments as
-    reflected_mass.
+    the URDF's limits (ignore_joint_limits=True: not, with a warning). Other arguments, the
+    payload's included, as reflected_mass.
 
     Returns a ContactMotion: samples (time_s, speed_m_per_s, moving, direction (None at rest),
     velocity_m_per_s, contact_point_m, reflected_mass_kg along the motion; at rest the
@@ -345,17 +370,19 @@ def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, u
     """
     return ContactMotion(_covopt.contact_motion(urdf, tip, trajectory, base=base, point=point,
                                                 urdf_text=urdf_text,
-                                                ignore_joint_limits=ignore_joint_limits))
+                                                ignore_joint_limits=ignore_joint_limits,
+                                                payload_mass=payload_mass, payload_com=payload_com,
+                                                payload_inertia=payload_inertia))
 
 
 def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, scene=None,
                      urdf_text=None, allow_full_compression=False, allow_crushing=False,
                      ignore_joint_limits=False, body_region=None, body_area=None, contact=None,
-                     contact_area=None):
+                     contact_area=None, payload_mass=None, payload_com=None, payload_inertia=None):
     """Is a robot motion safe with this covering, and by how much may it be sped up or must
     it be slowed down? As ``covopt robot --trajectory --json``.
 
-    The robot and trajectory as contact_motion takes them; the covering, head and limits from
+    The robot and trajectory as contact_motion takes them (a payload on the tip too); the covering, head and limits from
     the scene (no robot_mass or speed: each sample brings its reflected mass
     along the motion and the contact point's speed). Per sample: the injury ratios of an
     impact at that speed and mass, and the largest safe speed at that mass
@@ -378,13 +405,14 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
     BodyRegionTrajectoryCheck (covopt/_body_regions.py), the object of ``covopt robot
     --trajectory --body-region --json``.
     """
+    payload = (payload_mass, payload_com, payload_inertia)
     if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
         return _body_regions.check_trajectory(
-            urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, _scene(scene), **_given(
+            urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, payload, _scene(scene), **_given(
                 allow_full_compression=allow_full_compression or None, allow_crushing=allow_crushing or None,
                 body_region=body_region, body_area=body_area, contact=contact, contact_area=contact_area))
     return TrajectoryCheck(_covopt.check_trajectory(
-        urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, _scene(scene),
+        urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, payload, _scene(scene),
         allow_full_compression=allow_full_compression, allow_crushing=allow_crushing))
 
 

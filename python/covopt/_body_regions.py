@@ -175,12 +175,12 @@ def design(scene, **options):
     return BodyRegionDesign(_covopt.design_for_body_regions(scene, **options))
 
 
-def check_trajectory(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, scene,
+def check_trajectory(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, payload, scene,
                      **options):
-    """covopt.check_trajectory with body_region."""
+    """covopt.check_trajectory with body_region; payload: (payload_mass, payload_com, payload_inertia)."""
     options = _refuse("check_trajectory", options, _REGION + _RULE)
     return BodyRegionTrajectoryCheck(_covopt.check_trajectory_body_region(
-        urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, scene, **options))
+        urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, payload, scene, **options))
 
 
 def sweep(x, y, scene, **options):

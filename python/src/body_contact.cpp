@@ -572,7 +572,7 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
 py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const py::object& trajectory,
                          const std::optional<std::string>& base, const py::object& point,
                          const std::optional<std::string>& urdf_text, bool ignore_joint_limits,
-                         const SceneInputs& inputs, const py::kwargs& kwargs) {
+                         const py::tuple& payload, const SceneInputs& inputs, const py::kwargs& kwargs) {
   RefuseSampleKeywords(inputs);
   const RegionChoice choice = ReadRegions(kwargs);
   if (!choice.head) RefuseHeadKeywords(inputs, RegionText(kwargs));
@@ -582,7 +582,7 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
   const optim::CoveringCrushCheck crush = inputs.CrushCheck();
 
   const robot::ContactMotionResult motion =
-      ReadContactMotion(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits);
+      ReadContactMotion(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, PayloadFrom(payload));
   const optim::TrajectoryCheckOptions head_options = TrajectoryCheckOptionsFrom(inputs, kwargs);
   std::optional<optim::BodyRegionTrajectoryCheck> check;
   std::optional<optim::TrajectoryCheck> head;
@@ -702,7 +702,8 @@ void RegisterBodyContact(py::module_& m) {
   m.def("body_region_speed_limit", &SpeedLimitTable);
   m.def("design_for_body_regions", &Design);
   m.def("check_trajectory_body_region", &CheckTrajectory, py::arg("urdf"), py::arg("tip"), py::arg("trajectory"),
-        py::arg("base"), py::arg("point"), py::arg("urdf_text"), py::arg("ignore_joint_limits"), py::arg("scene"));
+        py::arg("base"), py::arg("point"), py::arg("urdf_text"), py::arg("ignore_joint_limits"), py::arg("payload"),
+        py::arg("scene"));
   m.def("sweep_body_region", &Sweep, py::arg("x"), py::arg("y"), py::arg("scene"));
 }
 

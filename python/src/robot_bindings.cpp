@@ -95,8 +95,39 @@ robot::ReflectedMassOptions ReflectedMassOptions(bool ignore_joint_limits) {
   return options;
 }
 
+robot::Payload PayloadFrom(const py::object& mass, const py::object& com, const py::object& inertia) {
+  robot::Payload payload;
+  if (mass.is_none()) {
+    if (!com.is_none() || !inertia.is_none()) {
+      throw std::invalid_argument(std::string(com.is_none() ? "payload_inertia" : "payload_com") +
+                                  " needs payload_mass (the payload's mass in kg)");
+    }
+    return payload;
+  }
+  payload.mass_kg = Number(mass, "payload_mass");
+  if (!com.is_none()) payload.center_of_mass_m = Triple(com, "payload_com");
+  if (!inertia.is_none()) {
+    const std::vector<double> six = Numbers(inertia, "payload_inertia");
+    if (six.size() != 6) {
+      throw std::invalid_argument("payload_inertia: expected 6 components (ixx, iyy, izz, ixy, ixz, iyz) in kg m² "
+                                  "about the centre of mass (got " + std::to_string(six.size()) + ")");
+    }
+    payload.inertia_kg_m2 = robot::Payload::InertiaFromSix(six[0], six[1], six[2], six[3], six[4], six[5]);
+  }
+  robot::CheckPayload(payload, robot::PayloadInputNames{"payload_mass", "payload_com", "payload_inertia"});
+  return payload;
+}
+
+robot::Payload PayloadFrom(const py::tuple& keywords) {
+  if (keywords.size() != 3) {
+    throw std::invalid_argument("payload: expected (payload_mass, payload_com, payload_inertia)");
+  }
+  return PayloadFrom(keywords[0], keywords[1], keywords[2]);
+}
+
 robot::KinematicChain Chain(const py::object& urdf, const std::optional<std::string>& urdf_text,
-                            const std::string& tip, const std::optional<std::string>& base) {
+                            const std::string& tip, const std::optional<std::string>& base,
+                            const robot::Payload& payload) {
   robot::ChainSpec spec;
   spec.tip_link = tip;
   if (base) {
@@ -108,9 +139,9 @@ robot::KinematicChain Chain(const py::object& urdf, const std::optional<std::str
     throw std::invalid_argument("give the robot model as urdf (a file path) or urdf_text (the URDF "
                                 "itself), exactly one of them");
   }
-  if (urdf_text) return robot::KinematicChain::FromUrdfString(*urdf_text, spec, "urdf_text");
+  if (urdf_text) return robot::KinematicChain::FromUrdfString(*urdf_text, spec, "urdf_text").WithPayload(payload);
   const std::string path = py::str(py::module_::import("os").attr("fspath")(urdf)).cast<std::string>();
-  return robot::KinematicChain::FromUrdfFile(path, spec);
+  return robot::KinematicChain::FromUrdfFile(path, spec).WithPayload(payload);
 }
 
 namespace {
@@ -118,18 +149,25 @@ namespace {
 py::object ReflectedMass(const py::object& urdf, const std::string& tip, const py::object& joints,
                          const std::optional<std::string>& base, const py::object& point,
                          const py::object& direction, const std::optional<std::string>& urdf_text,
-                         bool ignore_joint_limits) {
-  const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base);
+                         bool ignore_joint_limits, const py::object& payload_mass, const py::object& payload_com,
+                         const py::object& payload_inertia) {
+  const robot::KinematicChain chain =
+      Chain(urdf, urdf_text, tip, base, PayloadFrom(payload_mass, payload_com, payload_inertia));
   const Eigen::VectorXd q = Vector(Numbers(joints, "joints"));
   const Eigen::Vector3d p = Triple(point, "point");
   std::optional<Eigen::Vector3d> u;
   if (!direction.is_none()) u = Triple(direction, "direction");
   robot::ReflectedMassResult result;
+  std::optional<report::RobotPayload> payload;  // as covopt robot: the masses without it too
   {
     py::gil_scoped_release release;
     result = robot::ReflectedMass(chain, q, p, u, ReflectedMassOptions(ignore_joint_limits));
+    if (!chain.payload().empty()) {
+      payload = report::RobotPayload{
+          chain.payload(), robot::ReflectedMass(chain.WithPayload({}), q, p, u, ReflectedMassOptions(ignore_joint_limits))};
+    }
   }
-  return JsonToPython(report::RobotJson(result, {}, -1));
+  return JsonToPython(report::RobotJson(result, {}, -1, payload));
 }
 
 }  // namespace
@@ -190,8 +228,11 @@ namespace {
 
 py::object ContactMotion(const py::object& urdf, const std::string& tip, const py::object& trajectory,
                          const std::optional<std::string>& base, const py::object& point,
-                         const std::optional<std::string>& urdf_text, bool ignore_joint_limits) {
-  const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base);
+                         const std::optional<std::string>& urdf_text, bool ignore_joint_limits,
+                         const py::object& payload_mass, const py::object& payload_com,
+                         const py::object& payload_inertia) {
+  const robot::KinematicChain chain =
+      Chain(urdf, urdf_text, tip, base, PayloadFrom(payload_mass, payload_com, payload_inertia));
   const robot::JointTrajectory t = Trajectory(trajectory, chain.joint_count());
   const Eigen::Vector3d p = Triple(point, "point");
   robot::ContactMotionResult result;
@@ -204,16 +245,37 @@ py::object ContactMotion(const py::object& urdf, const std::string& tip, const p
   return JsonToPython(report::ContactMotionJson(result, {}, -1));
 }
 
+/// ISO/TS 15066's m_R = M/2 + m_L [kg] (robot::IsoEffectiveMassKg), the keywords' names in
+/// its messages.
+double IsoRobotMass(const py::object& moving_mass, const py::object& payload_mass) {
+  const double moving_kg = Number(moving_mass, "moving_mass");
+  const double payload_kg = payload_mass.is_none() ? 0.0 : Number(payload_mass, "payload_mass");
+  if (!(moving_kg > 0.0 && moving_kg <= robot::kMaxLinkMassKg)) {
+    std::ostringstream message;
+    message << "moving_mass: the total mass of the robot's moving parts must be in (0, 1e6] kg (got " << moving_kg
+            << ")";
+    throw std::invalid_argument(message.str());
+  }
+  robot::Payload payload;
+  payload.mass_kg = payload_kg;
+  robot::CheckPayload(payload, "payload_mass");
+  return robot::IsoEffectiveMassKg(moving_kg, payload_kg);
+}
+
 }  // namespace
 
 void BindRobot(py::module_& m) {
   m.def("reflected_mass", &ReflectedMass, py::arg("urdf"), py::arg("tip"), py::arg("joints"),
         py::arg("base") = py::none(), py::arg("point") = py::make_tuple(0.0, 0.0, 0.0),
         py::arg("direction") = py::none(), py::arg("urdf_text") = py::none(),
-        py::arg("ignore_joint_limits") = false);
+        py::arg("ignore_joint_limits") = false, py::arg("payload_mass") = py::none(),
+        py::arg("payload_com") = py::none(), py::arg("payload_inertia") = py::none());
   m.def("contact_motion", &ContactMotion, py::arg("urdf"), py::arg("tip"), py::arg("trajectory"),
         py::arg("base") = py::none(), py::arg("point") = py::make_tuple(0.0, 0.0, 0.0),
-        py::arg("urdf_text") = py::none(), py::arg("ignore_joint_limits") = false);
+        py::arg("urdf_text") = py::none(), py::arg("ignore_joint_limits") = false,
+        py::arg("payload_mass") = py::none(), py::arg("payload_com") = py::none(),
+        py::arg("payload_inertia") = py::none());
+  m.def("iso_robot_mass", &IsoRobotMass, py::arg("moving_mass"), py::arg("payload_mass") = py::none());
 }
 
 }  // namespace covopt::python

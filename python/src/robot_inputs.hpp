@@ -17,11 +17,26 @@
 
 namespace covopt::python {
 
+/// The keywords payload_mass [kg] (None or 0: no payload), payload_com (x, y, z) [m, tip
+/// frame] and payload_inertia (ixx, iyy, izz, ixy, ixz, iyz) [kg m², about the centre of mass,
+/// tip-frame axes; None: a point mass] as a checked robot::Payload, as the CLI's
+/// --payload-mass/--payload-com/--payload-inertia.
+/// @throws std::invalid_argument naming the keyword, the value and the allowed range
+///         (robot::CheckPayload), or payload_com/payload_inertia without payload_mass.
+robot::Payload PayloadFrom(const pybind11::object& mass, const pybind11::object& com,
+                           const pybind11::object& inertia);
+
+/// PayloadFrom of the tuple (payload_mass, payload_com, payload_inertia) the Python wrappers
+/// pass to the check_trajectory bindings.
+/// @throws std::invalid_argument as PayloadFrom, or for a tuple that is not three items.
+robot::Payload PayloadFrom(const pybind11::tuple& keywords);
+
 /// The chain base -> tip of the URDF file `urdf` (str or os.PathLike), or of the URDF text
-/// `urdf_text`: exactly one of them. @throws std::invalid_argument otherwise, or as
-/// robot::KinematicChain::FromUrdfFile.
+/// `urdf_text`: exactly one of them, with `payload` on its tip (KinematicChain::WithPayload).
+/// @throws std::invalid_argument otherwise, or as robot::KinematicChain::FromUrdfFile.
 robot::KinematicChain Chain(const pybind11::object& urdf, const std::optional<std::string>& urdf_text,
-                            const std::string& tip, const std::optional<std::string>& base);
+                            const std::string& tip, const std::optional<std::string>& base,
+                            const robot::Payload& payload = {});
 
 /// A trajectory of `joint_count` joints: a CSV path (str or os.PathLike, read by
 /// robot::ReadJointTrajectory), or a dict with time_s (N), positions (N x n) and velocities
@@ -44,10 +59,10 @@ void RefuseSampleKeywords(const SceneInputs& inputs);
 optim::TrajectoryCheckOptions TrajectoryCheckOptionsFrom(const SceneInputs& inputs, const pybind11::kwargs& kwargs);
 
 /// The contact point's motion along `trajectory` (robot::ContactMotion), read as
-/// covopt.contact_motion reads its arguments; computed without the GIL.
+/// covopt.contact_motion reads its arguments (`payload` on the tip); computed without the GIL.
 robot::ContactMotionResult ReadContactMotion(const pybind11::object& urdf, const std::string& tip,
                                              const pybind11::object& trajectory, const std::optional<std::string>& base,
                                              const pybind11::object& point, const std::optional<std::string>& urdf_text,
-                                             bool ignore_joint_limits);
+                                             bool ignore_joint_limits, const robot::Payload& payload);
 
 }  // namespace covopt::python

@@ -45,8 +45,8 @@ optim::TrajectoryCheckOptions TrajectoryCheckOptionsFrom(const SceneInputs& inpu
 robot::ContactMotionResult ReadContactMotion(const py::object& urdf, const std::string& tip,
                                              const py::object& trajectory, const std::optional<std::string>& base,
                                              const py::object& point, const std::optional<std::string>& urdf_text,
-                                             bool ignore_joint_limits) {
-  const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base);
+                                             bool ignore_joint_limits, const robot::Payload& payload) {
+  const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base, payload);
   const robot::JointTrajectory joints = Trajectory(trajectory, chain.joint_count());
   const Eigen::Vector3d p = Triple(point, "point");
   py::gil_scoped_release release;
@@ -60,12 +60,12 @@ namespace {
 py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const py::object& trajectory,
                            const std::optional<std::string>& base, const py::object& point,
                            const std::optional<std::string>& urdf_text, bool ignore_joint_limits,
-                           const SceneInputs& inputs, const py::kwargs& kwargs) {
+                           const py::tuple& payload, const SceneInputs& inputs, const py::kwargs& kwargs) {
   RefuseSampleKeywords(inputs);
   const optim::CoveringCrushCheck crush = inputs.CrushCheck();
   const optim::TrajectoryCheckOptions options = TrajectoryCheckOptionsFrom(inputs, kwargs);
   const robot::ContactMotionResult motion =
-      ReadContactMotion(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits);
+      ReadContactMotion(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, PayloadFrom(payload));
   optim::TrajectoryCheck check;
   try {
     py::gil_scoped_release release;
@@ -84,7 +84,8 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
 
 void BindTrajectory(py::module_& m) {
   m.def("check_trajectory", &CheckTrajectory, py::arg("urdf"), py::arg("tip"), py::arg("trajectory"),
-        py::arg("base"), py::arg("point"), py::arg("urdf_text"), py::arg("ignore_joint_limits"), py::arg("scene"));
+        py::arg("base"), py::arg("point"), py::arg("urdf_text"), py::arg("ignore_joint_limits"), py::arg("payload"),
+        py::arg("scene"));
 }
 
 }  // namespace covopt::python

@@ -238,11 +238,19 @@ def point_jacobians(state, link, point_in_base):
     return jv, jw
 
 
-def joint_space_inertia(model, base, tip, q):
-    """M(q), n x n, summed over the links after the base."""
+def joint_space_inertia(model, base, tip, q, payload=None):
+    """M(q), n x n, summed over the links after the base; payload (mass [kg], centre of mass in
+    the tip frame [m], 3 x 3 inertia about it in the tip's axes [kg m²]) is one more body on
+    the tip."""
     state = forward_kinematics(model, base, tip, q)
     n = len(state.axes)
     m = np.zeros((n, n))
+    if payload is not None:
+        mass, com, tensor = payload
+        com_in_base = (state.tip_frame @ np.append(np.asarray(com, dtype=float), 1.0))[:3]
+        jv, jw = point_jacobians(state, tip, com_in_base)
+        r = state.tip_frame[:3, :3]
+        m += mass * jv.T @ jv + jw.T @ (r @ np.asarray(tensor, dtype=float) @ r.T) @ jw
     for link, frame in state.link_frames.items():
         inertial = model.links.get(link)
         if link == base or inertial is None:
@@ -262,12 +270,13 @@ def contact_jacobian(model, base, tip, q, point=(0.0, 0.0, 0.0)):
     return jv, p
 
 
-def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), direction=None):
-    """The reference answer with the keys of covopt.reflected_mass (math.inf for "fixed")."""
+def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), direction=None, payload=None):
+    """The reference answer with the keys of covopt.reflected_mass (math.inf for "fixed");
+    payload as joint_space_inertia takes it."""
     model = read_urdf(urdf) if isinstance(urdf, str) else urdf
     base = base or model.root()
     state = forward_kinematics(model, base, tip, joints)
-    m = joint_space_inertia(model, base, tip, joints)
+    m = joint_space_inertia(model, base, tip, joints, payload)
     jv, p = contact_jacobian(model, base, tip, joints, point)
     a = jv @ np.linalg.solve(m, jv.T)
     a = 0.5 * (a + a.T)

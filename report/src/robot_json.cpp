@@ -28,8 +28,8 @@ std::vector<std::string> Warnings(std::span<const std::string> input_warnings,
 
 }  // namespace
 
-std::string RobotJson(const robot::ReflectedMassResult& result,
-                      std::span<const std::string> input_warnings, int indent) {
+std::string RobotJson(const robot::ReflectedMassResult& result, std::span<const std::string> input_warnings,
+                      int indent, const std::optional<RobotPayload>& payload) {
   ordered_json j;
   j["reflected_mass_kg"] = result.reflected_mass_kg ? Mass(*result.reflected_mass_kg) : ordered_json(nullptr);
   j["direction"] = result.direction ? Vector(*result.direction) : ordered_json(nullptr);
@@ -39,6 +39,20 @@ std::string RobotJson(const robot::ReflectedMassResult& result,
   j["min_direction"] = Vector(result.min_direction);
   j["contact_point_m"] = Vector(result.contact_point_m);
   j["joint_names"] = result.joint_names;
+  j["payload"] = nullptr;
+  if (payload) {
+    const Eigen::Matrix3d& inertia = payload->payload.inertia_kg_m2;
+    ordered_json rows = ordered_json::array();
+    for (int r = 0; r < 3; ++r) rows.push_back(Vector(inertia.row(r).transpose()));
+    const robot::ReflectedMassResult& bare = payload->without_payload;
+    j["payload"] = {{"mass_kg", payload->payload.mass_kg},
+                    {"center_of_mass_m", Vector(payload->payload.center_of_mass_m)},
+                    {"inertia_kg_m2", rows},
+                    {"without_payload",
+                     {{"reflected_mass_kg", bare.reflected_mass_kg ? Mass(*bare.reflected_mass_kg) : ordered_json(nullptr)},
+                      {"max_reflected_mass_kg", Mass(bare.max_reflected_mass_kg)},
+                      {"min_reflected_mass_kg", Mass(bare.min_reflected_mass_kg)}}}};
+  }
   j["status"] = robot::ToString(result.status);
   j["message"] = result.message;
   j["warnings"] = Warnings(input_warnings, result.warnings);
