@@ -428,6 +428,7 @@ void PrintProbabilityDesign(std::ostream& out, const Resolved& r, const optim::U
                c.at_design.inadmissible.ci95_high);
   }
   fmt::print(out, "\nSearch: {} sampled impacts, {:.2f} s\n", result.sample_evaluations, result.seconds);
+  PrintTimePathUse(out, box, result.time_path);
   PrintScope(out, rule);
   for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
 }
@@ -516,7 +517,9 @@ void PrintRobustDesign(std::ostream& out, const Resolved& r, const optim::Uncert
     fmt::print(out, "\nThe recommendation over the box's distribution:\n");
     PrintInjuryProbability(out, *probability, "  ");
   }
-  fmt::print(out, "\nSearch: {} exact-path evaluations, {:.1f} ms\n", result.evaluations, result.seconds * 1e3);
+  fmt::print(out, "\nSearch: {} {}evaluations, {:.1f} ms\n", result.evaluations, box.brakes() ? "" : "exact-path ",
+             result.seconds * 1e3);
+  PrintTimePathUse(out, box, result.time_path);
   PrintScope(out, rule);
   for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
 }
