@@ -363,7 +363,8 @@ RobustInputs ResolveRobust(const OptimizeOptions& o, const Resolved& r) {
                      "the box use 'covopt simulate --covering-thickness ... --material ...' with the ranges");
   }
   if (o.oracle_flags.given()) {
-    throw InputError(fmt::format("--{} with scene ranges: the robust searches run on the exact path",
+    throw InputError(fmt::format("--{} with scene ranges: the robust searches choose their path (the exact path; the "
+                                 "time path at its defaults for a braking robot)",
                                  o.oracle_flags.oracle ? "oracle" : o.oracle_flags.method ? "method" : "rtol"));
   }
   UncertaintyFlags flags = o.uncertainty;
