@@ -363,7 +363,8 @@ RobustInputs ResolveRobust(const OptimizeOptions& o, const Resolved& r) {
                      "the box use 'covopt simulate --covering-thickness ... --material ...' with the ranges");
   }
   if (o.oracle_flags.given()) {
-    throw InputError(fmt::format("--{} with scene ranges: the robust searches run on the exact path",
+    throw InputError(fmt::format("--{} with scene ranges: the robust searches choose their path (the exact path; the "
+                                 "time path at its defaults for a braking robot)",
                                  o.oracle_flags.oracle ? "oracle" : o.oracle_flags.method ? "method" : "rtol"));
   }
   UncertaintyFlags flags = o.uncertainty;
@@ -428,6 +429,7 @@ void PrintProbabilityDesign(std::ostream& out, const Resolved& r, const optim::U
                c.at_design.inadmissible.ci95_high);
   }
   fmt::print(out, "\nSearch: {} sampled impacts, {:.2f} s\n", result.sample_evaluations, result.seconds);
+  PrintTimePathUse(out, box, result.time_path);
   PrintScope(out, rule);
   for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
 }
@@ -516,7 +518,9 @@ void PrintRobustDesign(std::ostream& out, const Resolved& r, const optim::Uncert
     fmt::print(out, "\nThe recommendation over the box's distribution:\n");
     PrintInjuryProbability(out, *probability, "  ");
   }
-  fmt::print(out, "\nSearch: {} exact-path evaluations, {:.1f} ms\n", result.evaluations, result.seconds * 1e3);
+  fmt::print(out, "\nSearch: {} {}evaluations, {:.1f} ms\n", result.evaluations, box.brakes() ? "" : "exact-path ",
+             result.seconds * 1e3);
+  PrintTimePathUse(out, box, result.time_path);
   PrintScope(out, rule);
   for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
 }

@@ -163,14 +163,11 @@ std::vector<optim::UncertainInput> ResolveUncertainInputs(std::span<const SceneR
 
 optim::UncertaintyBox MakeUncertaintyBox(const Scene& nominal, std::span<const optim::UncertainInput> inputs,
                                          std::span<const SceneRange> ranges) {
-  if (!nominal.is_conservative_two_mass() && !ranges.empty()) {
+  if ((nominal.is_damped() || nominal.head.has_neck()) && !ranges.empty()) {
     throw InputError(fmt::format(
-        "{} '{}': ranges (uncertain inputs) run on the exact path of the conservative two-mass impact; a scene with "
-        "{} is not supported with ranges (docs/model.md §11)",
-        ranges.front().source, ranges.front().text,
-        nominal.robot_brakes()      ? "braking"
-        : nominal.head.has_neck()   ? "a neck"
-                                    : "contact damping"));
+        "{} '{}': ranges (uncertain inputs) cover the two-mass impact, conservative or with a braking robot; a "
+        "scene with {} is not supported with ranges (docs/model.md §11)",
+        ranges.front().source, ranges.front().text, nominal.head.has_neck() ? "a neck" : "contact damping"));
   }
   try {
     return optim::UncertaintyBox::FromScene(nominal, inputs);
@@ -237,6 +234,18 @@ void PrintInjuryProbability(std::ostream& out, const optim::InjuryProbability& p
   for (const auto& [name, e] : rows) {
     out << fmt::format("{}  {:<17} {:>10.6f}  [{:.6f}, {:.6f}]  ({} of {})\n", indent, name, e->probability,
                        e->ci95_low, e->ci95_high, e->count, e->samples);
+  }
+}
+
+void PrintTimePathUse(std::ostream& out, const optim::UncertaintyBox& box, const optim::TimePathUse& use,
+                      std::string_view indent) {
+  if (!box.brakes()) return;
+  out << fmt::format("{}Braking robot: {} time-path runs; {} impacts screened by the unbraked exact path's bound, {} "
+                     "with the brake after the unbraked peak (exact path) (docs/model.md §11)\n",
+                     indent, use.runs, use.screened, use.brake_after_peak);
+  if (use.failed > 0) {
+    out << fmt::format("{}Warning: {} time-path runs failed, each judged inadmissible (never safe); the first: {}\n",
+                       indent, use.failed, use.first_failure);
   }
 }
 

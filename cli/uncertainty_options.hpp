@@ -69,6 +69,13 @@ void PrintWorstCase(std::ostream& out, const optim::UncertaintyBox& box, const o
 void PrintInjuryProbability(std::ostream& out, const optim::InjuryProbability& probability,
                             std::string_view indent = "");
 
+/// For a box with a braking robot (optim::UncertaintyBox::brakes()): how its impacts were
+/// judged ("Braking robot: 1 234 time-path runs; 5 678 impacts screened by the unbraked exact
+/// path's bound, 90 with the brake after the peak"), and a warning for failed runs. Nothing
+/// otherwise.
+void PrintTimePathUse(std::ostream& out, const optim::UncertaintyBox& box, const optim::TimePathUse& use,
+                      std::string_view indent = "");
+
 /// The elasticity table (tornado order).
 void PrintElasticities(std::ostream& out, const optim::ElasticityTable& table);
 

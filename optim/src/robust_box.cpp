@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -16,6 +17,7 @@
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
 #include <covopt/core/quantity.hpp>
+#include <covopt/core/time_integration.hpp>
 
 #include "covopt/optim/robust_box.hpp"
 #include "robust_internal.hpp"
@@ -34,11 +36,55 @@ void ValidateCriterion(const ImpactCriterion& c) {
           "contusion limit must be finite and > 0 J/m2 (got " + Number(contusion) + ")");
 }
 
-Judged JudgeScene(const Scene& scene, const ImpactCriterion& c) {
-  const ImpactModel model = ImpactModel::FromScene(scene);
-  Judged j;
-  j.peaks = ExactPeaks(model);
-  j.covered = model.has_covering();
+void TimePathCounter::Fail(const std::string& message) {
+  ++failed_;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (first_failure_.empty()) first_failure_ = message;
+}
+
+void TimePathCounter::Add(const TimePathUse& use) {
+  screened_ += use.screened;
+  brake_after_peak_ += use.brake_after_peak;
+  runs_ += use.runs;
+  failed_ += use.failed;
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (first_failure_.empty()) first_failure_ = use.first_failure;
+}
+
+TimePathUse TimePathCounter::Use() const {
+  TimePathUse use;
+  use.screened = screened_.load();
+  use.brake_after_peak = brake_after_peak_.load();
+  use.runs = runs_.load();
+  use.failed = failed_.load();
+  const std::lock_guard<std::mutex> lock(mutex_);
+  use.first_failure = first_failure_;
+  return use;
+}
+
+/// The scene's fields that differ from the paper's scene (Scene{}), "name = value, ...".
+std::string SceneText(const Scene& scene) {
+  static const Scene paper{};
+  std::string text;
+  for (const SceneField& field : SceneFields()) {
+    const double value = field.value(scene);
+    if (value == field.value(paper)) continue;
+    text += (text.empty() ? "" : ", ") + std::string(field.name) + " = " + FormatQuantity(value, field.spec.kind);
+  }
+  return text.empty() ? "the paper's scene" : text;
+}
+
+Scene Unbraked(const Scene& scene) {
+  Scene unbraked = scene;
+  unbraked.robot.braking_m_per_s2 = 0.0;
+  unbraked.robot.reaction_delay_s = 0.0;
+  return unbraked;
+}
+
+namespace {
+
+/// The ratios, events and governing ratio of an impact from its peaks.
+void JudgePeaks(Judged& j, const ImpactCriterion& c) {
   j.laceration_ratio = j.peaks.max_tensile_stress_Pa / c.limits.laceration_tensile_stress_Pa;
   j.contusion_ratio = j.peaks.max_energy_density_J_per_m2 / c.limits.contusion_energy_density_J_per_m2;
   if (j.covered) {
@@ -63,6 +109,60 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c) {
   if (compression_counts) consider(j.compression_ratio, LimitingCriterion::kFullCompression);
   if (crush_counts) consider(j.crush_ratio, LimitingCriterion::kCrush);
   j.admissible = j.governing_ratio <= 1.0 && !(compression_counts && j.fully_compressed);
+}
+
+/// A failed time-path run: every ratio +inf, every event, inadmissible.
+void JudgeFailed(Judged& j) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  j.failed = true;
+  j.laceration_ratio = j.contusion_ratio = j.governing_ratio = inf;
+  j.compression_ratio = j.covered ? inf : 0.0;
+  j.crush_ratio = 0.0;
+  j.fully_compressed = j.covered;
+  j.laceration = j.contusion = true;
+  j.admissible = false;
+}
+
+}  // namespace
+
+Judged JudgeScene(const Scene& scene, const ImpactCriterion& c, const Screening& screening) {
+  const bool brakes = scene.robot_brakes();
+  const ImpactModel model = ImpactModel::FromScene(brakes ? Unbraked(scene) : scene);
+  Judged j;
+  j.peaks = ExactPeaks(model);
+  j.covered = model.has_covering();
+  JudgePeaks(j, c);
+  if (!brakes) return j;
+  // Braking only takes energy out of the impact: the unbraked judgement bounds the braked
+  // one (docs/model.md §11). Until the brake starts the two impacts are the same; a brake that
+  // starts at or after the unbraked maximum compression (half the conservative contact's
+  // duration) leaves δ_max, and with it every peak, as it was.
+  if (scene.robot.reaction_delay_s >= 0.5 * ExactContactDuration(model, j.peaks)) {
+    j.by = JudgedBy::kBrakeAfterPeak;
+    if (c.counter) c.counter->BrakeAfterPeak();
+    return j;
+  }
+  const bool no_event = j.admissible && !j.laceration && !j.contusion && !j.fully_compressed;
+  if ((screening.when_admissible && no_event) || j.governing_ratio <= screening.at_or_below) {
+    j.by = JudgedBy::kBound;
+    if (c.counter) c.counter->Screened();
+    return j;
+  }
+  j.by = JudgedBy::kTimePath;
+  if (c.counter) c.counter->Run();
+  TimeIntegrationOptions options = c.time_path;
+  options.record_history = false;
+  const ImpactResult result = SimulateImpact(ImpactModel::FromScene(scene), options);
+  if (!result.ok()) {
+    JudgeFailed(j);
+    if (c.counter) {
+      c.counter->Fail("time path at " + SceneText(scene) + ": " + std::string(covopt::ToString(result.status)) +
+                      ": " + result.message);
+    }
+    return j;
+  }
+  j.peaks = result.peaks;
+  JudgePeaks(j, c);
   return j;
 }
 
@@ -222,10 +322,11 @@ std::optional<std::uint64_t> MostEventsWithUpperBoundWithin(double probability, 
 
 namespace {
 
-/// The inputs of the scenes beyond the conservative two-mass model (docs/model.md §10).
+/// The inputs of the scenes beyond the two-mass model the robust analysis covers (docs/model.md
+/// §10): contact damping and the neck (a braking robot is covered, §11).
 bool IsExtendedInput(const SceneField& field) {
-  return field.name == "damping" || field.name == "reaction-delay" || field.name == "braking" ||
-         field.name == "torso-mass" || field.name == "neck-stiffness" || field.name == "neck-damping";
+  return field.name == "damping" || field.name == "torso-mass" || field.name == "neck-stiffness" ||
+         field.name == "neck-damping";
 }
 
 std::string Range(const SceneField& field, double low, double high) {
@@ -292,11 +393,10 @@ void CheckCorners(const UncertaintyBox& box, const Scene& nominal) {
 
 UncertaintyBox UncertaintyBox::FromScene(const Scene& nominal, std::span<const UncertainInput> inputs) {
   (void)ImpactModel::FromScene(nominal);  // the nominal scene itself must be valid
-  if (!nominal.is_conservative_two_mass()) {
+  if (nominal.is_damped() || nominal.head.has_neck()) {
     throw std::invalid_argument(
-        "the robust analysis runs on the exact path, which covers the conservative two-mass scene "
-        "only: the scene has contact damping, braking or a neck (docs/model.md §10); give damping, "
-        "braking and torso-mass 0");
+        "the robust analysis covers the two-mass impact, conservative or with a braking robot: the scene has "
+        "contact damping or a neck (docs/model.md §10, §11); give damping and torso-mass 0");
   }
   UncertaintyBox box;
   box.nominal_ = nominal;
@@ -309,8 +409,8 @@ UncertaintyBox UncertaintyBox::FromScene(const Scene& nominal, std::span<const U
       Require(seen != field, name + " is given a range twice; give each input once");
     }
     if (IsExtendedInput(*field)) {
-      throw std::invalid_argument(name + " cannot be uncertain: the robust analysis runs on the exact path, "
-                                         "which covers the conservative two-mass scene only (docs/model.md §10)");
+      throw std::invalid_argument(name + " cannot be uncertain: the robust analysis covers the two-mass impact, "
+                                         "conservative or with a braking robot (docs/model.md §10, §11)");
     }
     const double low = given.low, high = given.high;
     CheckRange(*field, low, high, nominal);
@@ -367,6 +467,22 @@ const UncertainInput* UncertaintyBox::Find(std::string_view field) const noexcep
     if (fields_[i] == wanted) return &inputs_[i];
   }
   return nullptr;
+}
+
+bool UncertaintyBox::brakes() const noexcept {
+  if (nominal_.robot_brakes()) return true;
+  for (std::size_t i = 0; i < inputs_.size(); ++i) {
+    if (fields_[i]->name == "braking" && inputs_[i].high > 0.0) return true;
+  }
+  return false;
+}
+
+void TimePathUse::Add(const TimePathUse& other) {
+  screened += other.screened;
+  brake_after_peak += other.brake_after_peak;
+  runs += other.runs;
+  failed += other.failed;
+  if (first_failure.empty()) first_failure = other.first_failure;
 }
 
 Scene UncertaintyBox::SceneAt(std::span<const double> values) const {

@@ -84,6 +84,9 @@ using internal::Judged;
 
 constexpr double kThicknessTolerance_m = 1e-9;  ///< the continuous optimum's bisection
 constexpr double kLogModulusTolerance = 1e-10;  ///< golden sections in log10 E_c
+/// The same for a braking robot, whose impacts the time path answers to its tolerance (about
+/// 1e-8 relative): finer steps would resolve integration noise, at 0.1-0.2 ms a run.
+constexpr double kBrakingLogModulusTolerance = 1e-6;
 
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -114,15 +117,37 @@ class ScenarioSet {
       Scene scene = base;
       scene.covering = covering;
       ++evaluations_;
-      const Judged j = internal::JudgeScene(scene, criterion_);
+      // Only admissibility and the largest g matter: a braking robot's impact that is admissible
+      // unbraked is admissible (docs/model.md §11), and its bound stands for it.
+      internal::Screening screening;
+      screening.when_admissible = true;
+      const Judged j = internal::JudgeScene(scene, criterion_, screening);
       v.governing = std::max(v.governing, j.governing_ratio);
       v.admissible = v.admissible && j.admissible;
     }
     return v;
   }
+  /// Whether every scene is admissible: stops at the first that is not, and tries that one
+  /// first next time (the answer is Judge(covering).admissible, with fewer impacts).
+  bool Admissible(const CoveringSpec& covering) const {
+    for (std::size_t k = 0; k < scenes_.size(); ++k) {
+      const std::size_t i = (first_ + k) % scenes_.size();
+      Scene scene = scenes_[i];
+      scene.covering = covering;
+      ++evaluations_;
+      internal::Screening screening;
+      screening.when_admissible = true;
+      if (!internal::JudgeScene(scene, criterion_, screening).admissible) {
+        first_ = i;
+        return false;
+      }
+    }
+    return true;
+  }
   long evaluations() const { return evaluations_; }
 
  private:
+  mutable std::size_t first_ = 0;
   const UncertaintyBox& box_;
   ImpactCriterion criterion_;
   std::vector<std::vector<double>> values_;
@@ -154,12 +179,16 @@ struct RobustContext {
   }
 };
 
-/// The DesignScore of a material's worst case (the impact there), with its crush check.
-DesignScore ScoreOf(const WorstCase& worst, const CandidateMaterial& material) {
+/// The DesignScore of a material's worst case (the impact there, on the time path for a
+/// braking robot), with its crush check.
+DesignScore ScoreOf(const WorstCase& worst, const CandidateMaterial& material, const ImpactCriterion& criterion) {
   DesignScore score;
   score.design = {worst.scene.covering.youngs_modulus_Pa, worst.scene.covering.thickness_m};
   score.poisson_ratio = worst.scene.covering.poisson_ratio;
-  score.peaks = ExactPeaks(ImpactModel::FromScene(worst.scene));
+  const Judged judged = internal::JudgeScene(worst.scene, criterion);
+  score.peaks = judged.peaks;
+  score.failed = judged.failed;
+  if (judged.failed) score.peaks.fully_compressed = true;  // as the oracle marks a failed design
   score.laceration_ratio = worst.laceration_ratio;
   score.contusion_ratio = worst.contusion_ratio;
   score.compression_ratio = worst.compression_ratio;
@@ -177,7 +206,7 @@ RobustCandidate RobustSnapMaterial(const RobustContext& context, const Candidate
   ScenarioSet set(context.box, criterion);
   for (const std::vector<double>& s : initial) set.Add(s);
   auto covering = [&](double b) { return CoveringSpec{material.youngs_modulus_Pa, material.poisson_ratio, b}; };
-  auto admissible_on_set = [&](double b) { return set.Judge(covering(b)).admissible; };
+  auto admissible_on_set = [&](double b) { return set.Admissible(covering(b)); };
   long search_evaluations = 0;
   auto confirm = [&](double b) {
     WorstCase worst = context.WorstCaseFor(covering(b), &criterion);
@@ -185,28 +214,64 @@ RobustCandidate RobustSnapMaterial(const RobustContext& context, const Candidate
     return worst;
   };
 
+  // The worst case at the maximum thickness of a material that has no robust design, for the
+  // table. With a braking robot (the time path) a scenario of the set that is inadmissible
+  // there already shows the verdict, and the worst of the set is reported (found by
+  // "scenarios") instead of searching the whole box again; without braking, or when every
+  // scenario is admissible there, the box is searched.
+  auto worst_at_max = [&] {
+    const double b = space.max_thickness_m;
+    if (context.box.brakes()) {
+      Scene base = context.box.nominal();
+      base.covering = covering(b);
+      WorstCase worst;
+      for (const std::vector<double>& values : set.values()) {
+        Scene scene = base;
+        internal::ApplyInputs(context.box, values, scene);
+        const Judged j = internal::JudgeScene(scene, criterion);
+        ++worst.evaluations;
+        if (worst.values.empty() || j.governing_ratio > worst.governing_ratio) {
+          worst.values = values;
+          worst.scene = scene;
+          internal::FillWorstCase(j, worst);
+        }
+      }
+      if (!worst.values.empty() && !worst.admissible) {
+        worst.found_by = "scenarios";
+        search_evaluations += worst.evaluations;
+        return worst;
+      }
+    }
+    return confirm(b);
+  };
+
   RobustCandidate candidate;
   candidate.outcome.material = material;
   const DesignRule rule = o.rule();
   if (material.crush_behaviour == materials::CrushBehaviour::kUnknown && rule.refuses_unknown_strength()) {
     // Never admissible under the rule: its worst case at the maximum thickness, for the table.
-    candidate.worst_case = confirm(space.max_thickness_m);
-    candidate.outcome.score = ScoreOf(candidate.worst_case, material);
+    candidate.worst_case = worst_at_max();
+    candidate.outcome.score = ScoreOf(candidate.worst_case, material, criterion);
     candidate.outcome.margin = candidate.outcome.score.margin(rule);
     evaluations += search_evaluations;
     return candidate;
   }
   std::optional<double> thinnest;
   std::optional<WorstCase> at_thinnest;
+  // Scan points below the first admissible one of a round stay inadmissible for the grown set:
+  // the next round's scan starts there.
+  int first_scan = 0;
   while (candidate.scenario_rounds < context.options.max_scenario_rounds) {
     ++candidate.scenario_rounds;
-    double inadmissible = 0.0, admissible = 0.0;
+    double inadmissible = first_scan > 0 ? internal::ScanThickness(space, o.thickness_scan_points, first_scan - 1) : 0.0;
+    double admissible = 0.0;
     bool found = false;
-    for (int k = 0; k < o.thickness_scan_points && !found; ++k) {
+    for (int k = first_scan; k < o.thickness_scan_points && !found; ++k) {
       const double b = internal::ScanThickness(space, o.thickness_scan_points, k);
       if (admissible_on_set(b)) {
         found = true;
         admissible = b;
+        first_scan = k;
       } else {
         inadmissible = b;
       }
@@ -230,8 +295,8 @@ RobustCandidate RobustSnapMaterial(const RobustContext& context, const Candidate
   CandidateOutcome& outcome = candidate.outcome;
   if (!thinnest) {
     candidate.unconfirmed = candidate.scenario_rounds >= context.options.max_scenario_rounds;
-    candidate.worst_case = confirm(space.max_thickness_m);
-    outcome.score = ScoreOf(candidate.worst_case, material);
+    candidate.worst_case = worst_at_max();
+    outcome.score = ScoreOf(candidate.worst_case, material, criterion);
     outcome.margin = outcome.score.margin(rule);
     evaluations += set.evaluations() + search_evaluations;
     return candidate;
@@ -257,7 +322,7 @@ RobustCandidate RobustSnapMaterial(const RobustContext& context, const Candidate
   }
   candidate.worst_case = at_stock ? *at_stock : *at_thinnest;
   candidate.worst_case_at_thinnest = std::move(at_thinnest);
-  outcome.score = ScoreOf(candidate.worst_case, material);
+  outcome.score = ScoreOf(candidate.worst_case, material, criterion);
   outcome.recommended_thickness_m = candidate.worst_case.scene.covering.thickness_m;
   // The box's verdict, and the rule's word on a material of unknown strength.
   outcome.safe = candidate.worst_case.admissible && outcome.score.admissible(rule);
@@ -270,8 +335,12 @@ RobustCandidate RobustSnapMaterial(const RobustContext& context, const Candidate
 /// set (scan in log10 E_c, golden sections of the best local minima).
 class RobustModulusSearch {
  public:
-  RobustModulusSearch(const ScenarioSet& set, const DesignOptions& o)
-      : set_(set), o_(o), lo_(std::log10(o.space.min_modulus_Pa)), hi_(std::log10(o.space.max_modulus_Pa)) {}
+  RobustModulusSearch(const ScenarioSet& set, const DesignOptions& o, bool brakes)
+      : set_(set),
+        o_(o),
+        lo_(std::log10(o.space.min_modulus_Pa)),
+        hi_(std::log10(o.space.max_modulus_Pa)),
+        tolerance_(brakes ? kBrakingLogModulusTolerance : kLogModulusTolerance) {}
 
   struct Choice {
     double log_modulus = 0.0;
@@ -317,12 +386,13 @@ class RobustModulusSearch {
   }
   Choice Golden(double b, double a, double c) const {
     return internal::GoldenSection([&](double u) { return At(u, b); }, [](const Choice& s) { return s.governing; },
-                                   a, c, kLogModulusTolerance);
+                                   a, c, tolerance_);
   }
 
   const ScenarioSet& set_;
   const DesignOptions& o_;
   double lo_, hi_;
+  double tolerance_;
 };
 
 RobustContinuousOptimum RobustContinuous(const RobustContext& context,
@@ -330,7 +400,11 @@ RobustContinuousOptimum RobustContinuous(const RobustContext& context,
   const DesignOptions& o = context.options.design;
   ScenarioSet set(context.box, context.criterion);
   for (const std::vector<double>& s : initial) set.Add(s);
-  const RobustModulusSearch search(set, o);
+  const bool brakes = context.box.brakes();
+  const RobustModulusSearch search(set, o, brakes);
+  // A braking robot: the bisection stops at the catalog snap's resolution (the time path's
+  // noise is far above 1e-9 m).
+  const double thickness_tolerance_m = brakes ? o.thickness_resolution_m : kThicknessTolerance_m;
   const std::vector<double> grid = internal::BracketGrid(o);
   RobustContinuousOptimum out;
   long search_evaluations = 0;
@@ -358,7 +432,7 @@ RobustContinuousOptimum RobustContinuous(const RobustContext& context,
     double b = grid[*first];
     if (*first > 0) {
       double inadmissible = grid[*first - 1];
-      while (b - inadmissible > kThicknessTolerance_m) {
+      while (b - inadmissible > thickness_tolerance_m) {
         const double mid = 0.5 * (inadmissible + b);
         const RobustModulusSearch::Choice at_mid = search.Best(mid, false);
         if (at_mid.admissible) {
@@ -427,7 +501,11 @@ RobustThinnestCovering FindRobustThinnestCovering(const UncertaintyBox& box,
                       "material '" + m.name + "': poisson ratio must be in (-1, 0.5] (got " +
                           internal::Number(m.poisson_ratio) + ")");
   }
-  const ImpactCriterion criterion{o.criterion(), o.safety_factor, o.limits};
+  internal::TimePathCounter counter;
+  ImpactCriterion criterion{o.criterion(), o.safety_factor, o.limits};
+  criterion.time_path = o.oracle.time_path;
+  criterion.counter = &counter;
+  if (box.brakes()) ValidateTimeIntegrationOptions(o.oracle.time_path, "oracle.time_path.");
   const RobustContext context{box, criterion, options};
   RobustThinnestCovering out;
   out.criterion = o.criterion();
@@ -471,6 +549,7 @@ RobustThinnestCovering FindRobustThinnestCovering(const UncertaintyBox& box,
                                         out.continuous && !out.continuous->feasible);
   if (out.verdict == DesignVerdict::kCoveringFound) out.recommendation = 0;
   out.evaluations = evaluations;
+  out.time_path = counter.Use();
   out.seconds = SecondsSince(started);
   return out;
 }

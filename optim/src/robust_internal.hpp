@@ -2,9 +2,12 @@
 // Shared internals of the robust design (optim/robust_design.hpp): judging one impact, the
 // global search over a box, formatting and validation helpers. Not installed.
 
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <limits>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -12,11 +15,29 @@
 
 #include <covopt/core/impact_result.hpp>
 #include <covopt/core/scene.hpp>
+#include <covopt/core/time_integration.hpp>
 
 #include "covopt/optim/robust_design.hpp"
 #include "validation_internal.hpp"
 
 namespace covopt::optim::internal {
+
+/// Counts how the impacts of a braking robot were judged (TimePathUse), from any thread.
+class TimePathCounter {
+ public:
+  void Screened() { ++screened_; }
+  void BrakeAfterPeak() { ++brake_after_peak_; }
+  void Run() { ++runs_; }
+  void Fail(const std::string& message);
+  /// Adds a finished search's counts.
+  void Add(const TimePathUse& use);
+  TimePathUse Use() const;
+
+ private:
+  std::atomic<long> screened_{0}, brake_after_peak_{0}, runs_{0}, failed_{0};
+  mutable std::mutex mutex_;
+  std::string first_failure_;
+};
 
 /// The criterion an impact is judged by.
 struct ImpactCriterion {
@@ -28,12 +49,27 @@ struct ImpactCriterion {
   double compressive_strength_Pa = 0.0;
   /// The crush ratio counts (the no-crush criterion; not for a sacrificial liner).
   bool crush_counts = false;
+  /// The time path's settings for a braking robot (record_history is ignored).
+  TimeIntegrationOptions time_path{};
+  /// Where a braking robot's judgements are counted; nullptr: nowhere.
+  TimePathCounter* counter = nullptr;
 };
 /// Checks the safety factor ([1, 100]) and the limits (finite, > 0).
 void ValidateCriterion(const ImpactCriterion& criterion);
 
+/// Where a judgement came from.
+enum class JudgedBy {
+  kExactPath,       ///< a scene without braking: the exact path
+  kBound,           ///< a braking robot, decided by the unbraked exact path's upper bound
+  kBrakeAfterPeak,  ///< a brake that starts after the unbraked maximum: the exact path's peaks
+  kTimePath,        ///< the time path
+};
+
 /// One impact, judged.
 struct Judged {
+  JudgedBy by = JudgedBy::kExactPath;
+  /// The time path failed: ratios +inf, every event set, inadmissible.
+  bool failed = false;
   ImpactPeaks peaks;
   bool covered = false;
   double laceration_ratio = 0.0;
@@ -48,8 +84,27 @@ struct Judged {
   bool admissible = false;
 };
 
-/// The exact path on `scene`, judged. @throws std::invalid_argument for an invalid scene.
-Judged JudgeScene(const Scene& scene, const ImpactCriterion& criterion);
+/// When the exact path's bound may stand for a braking robot's impact (docs/model.md §11,
+/// "A braking robot"): braking only lowers every ratio, so the unbraked judgement is an upper
+/// bound of the braked one.
+struct Screening {
+  /// The unbraked impact has no event (no injury, not fully compressed) and is admissible:
+  /// then neither has the braked one. For admissibility checks and counts.
+  bool when_admissible = false;
+  /// The unbraked governing ratio is <= this: the braked one cannot exceed it (a worst-case
+  /// search's incumbent).
+  double at_or_below = -std::numeric_limits<double>::infinity();
+};
+
+/// The impact of `scene`, judged: the exact path without braking; with braking, the exact
+/// path when the brake starts at or after the unbraked maximum (the peaks are the same), the
+/// unbraked bound where `screening` lets it decide, else the time path (criterion.time_path;
+/// a failed run is judged inadmissible with infinite ratios and counted).
+/// @throws std::invalid_argument for an invalid scene.
+Judged JudgeScene(const Scene& scene, const ImpactCriterion& criterion, const Screening& screening = {});
+
+/// The same scene without braking (reaction delay and deceleration 0).
+Scene Unbraked(const Scene& scene);
 
 /// Sets the box's inputs in `scene` to `values` [SI] (values.size() == box.size()).
 void ApplyInputs(const UncertaintyBox& box, std::span<const double> values, Scene& scene);

@@ -74,7 +74,8 @@ SampleCounts CountSamples(const UncertaintyBox& box, const Scene& base, const Im
     for (std::uint64_t i = first; i < last; ++i) {
       internal::DrawInputsInto(box, request.seed, i, values);
       internal::ApplyInputs(box, values, scene);
-      const internal::Judged j = internal::JudgeScene(scene, criterion);
+      // A braking robot's sample with no event unbraked has none braked (docs/model.md §11).
+      const internal::Judged j = internal::JudgeScene(scene, criterion, {.when_admissible = true});
       c.laceration += j.laceration;
       c.contusion += j.contusion;
       c.any += j.laceration || j.contusion;
@@ -135,8 +136,12 @@ InjuryProbability ToProbability(const SampleCounts& c, std::uint64_t samples, st
 InjuryProbability EstimateInjuryProbability(const UncertaintyBox& box, const InjuryProbabilityOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   ValidateSampling(options);
-  const ImpactCriterion criterion{options.criterion(), options.safety_factor, options.limits};
+  internal::TimePathCounter counter;
+  ImpactCriterion criterion{options.criterion(), options.safety_factor, options.limits};
+  criterion.time_path = options.time_path;
+  criterion.counter = &counter;
   internal::ValidateCriterion(criterion);
+  if (box.brakes()) ValidateTimeIntegrationOptions(options.time_path, "time_path.");
   CountRequest request;
   request.samples = options.samples;
   request.seed = options.seed;
@@ -145,6 +150,7 @@ InjuryProbability EstimateInjuryProbability(const UncertaintyBox& box, const Inj
   request.progress = &options.progress;
   const SampleCounts counts = CountSamples(box, box.nominal(), criterion, request);
   InjuryProbability p = ToProbability(counts, options.samples, options.seed);
+  p.time_path = counter.Use();
   p.seconds = SecondsSince(started);
   return p;
 }
@@ -156,8 +162,10 @@ class ProbabilityJudge {
  public:
   /// Judges by the options' criterion and, for a `material` that crushes, its strength.
   ProbabilityJudge(const UncertaintyBox& box, const ProbabilityDesignOptions& o, std::uint64_t allowed_failures,
-                   const CandidateMaterial* material = nullptr)
+                   internal::TimePathCounter& counter, const CandidateMaterial* material = nullptr)
       : box_(box), criterion_{o.design.criterion(), o.design.safety_factor, o.design.limits}, allowed_(allowed_failures) {
+    criterion_.time_path = o.design.oracle.time_path;
+    criterion_.counter = &counter;
     if (material && material->crush_behaviour == materials::CrushBehaviour::kCrushes) {
       criterion_.compressive_strength_Pa = material->compressive_strength_Pa;
       criterion_.crush_counts = !o.design.allow_crushing;
@@ -186,7 +194,14 @@ class ProbabilityJudge {
   /// The full estimate.
   InjuryProbability Estimate(const Scene& scene) const {
     const auto started = std::chrono::steady_clock::now();
-    InjuryProbability p = ToProbability(CountOn(scene, request_), request_.samples, request_.seed);
+    internal::TimePathCounter own;
+    ImpactCriterion counted = criterion_;
+    counted.counter = &own;
+    const SampleCounts c = CountSamples(box_, scene, counted, request_);
+    evaluated_ += c.evaluated;
+    InjuryProbability p = ToProbability(c, request_.samples, request_.seed);
+    p.time_path = own.Use();
+    criterion_.counter->Add(p.time_path);
     p.seconds = SecondsSince(started);
     return p;
   }
@@ -374,7 +389,9 @@ ProbabilityDesign FindProbabilityDesign(const UncertaintyBox& box, std::span<con
         internal::Number(needed) + " samples (got " + std::to_string(options.sampling.samples) +
         "): with fewer, even no failing sample leaves the 95 % upper bound above the target");
   }
-  const ProbabilityJudge judge(box, options, *allowed);
+  internal::TimePathCounter counter;
+  if (box.brakes()) ValidateTimeIntegrationOptions(o.oracle.time_path, "oracle.time_path.");
+  const ProbabilityJudge judge(box, options, *allowed, counter);
   const std::size_t stages = 1 + materials.size() + (options.continuous ? 1 : 0);
   std::size_t stages_done = 0;
   auto stage_done = [&] {
@@ -395,7 +412,7 @@ ProbabilityDesign FindProbabilityDesign(const UncertaintyBox& box, std::span<con
   }
   std::uint64_t material_evaluations = 0;
   for (const CandidateMaterial& material : materials) {
-    const ProbabilityJudge material_judge(box, options, *allowed, &material);
+    const ProbabilityJudge material_judge(box, options, *allowed, counter, &material);
     out.candidates.push_back(ProbabilitySnapMaterial(material_judge, material, o));
     material_evaluations += material_judge.evaluated();
     stage_done();
@@ -417,6 +434,7 @@ ProbabilityDesign FindProbabilityDesign(const UncertaintyBox& box, std::span<con
                                         out.continuous && !out.continuous->feasible);
   if (out.verdict == DesignVerdict::kCoveringFound) out.recommendation = 0;
   out.sample_evaluations = judge.evaluated() + material_evaluations;
+  out.time_path = counter.Use();
   out.seconds = SecondsSince(started);
   return out;
 }

@@ -140,7 +140,9 @@ BoxMaximum MaximizeOverBox(const UncertaintyBox& box, const GlobalSearchOptions&
   for (std::size_t i = 0; i < box.size(); ++i) {
     const UncertainInput& input = box.inputs()[i];
     if (input.low == input.high) continue;
-    if (search.pin_energy_inputs && IsEnergyInput(box.field(i))) {
+    // With braking the energy argument does not hold (the brake acts from a time, on the robot
+    // alone): every input is searched.
+    if (search.pin_energy_inputs && IsEnergyInput(box.field(i)) && !box.brakes()) {
       fixed[i] = input.high;
       continue;
     }
@@ -225,16 +227,31 @@ WorstCase WorstCaseOnScene(const UncertaintyBox& box, const Scene& base, const I
                            const GlobalSearchOptions& search) {
   const auto started = std::chrono::steady_clock::now();
   Scene scene = base;
+  TimePathCounter counter;
+  ImpactCriterion counted = criterion;
+  counted.counter = &counter;
+  // A braking robot: a point whose unbraked bound cannot beat the worst impact found so far
+  // (the incumbent) is not run on the time path; its bound, no larger than the incumbent, is
+  // what the search sees, and the point kept is always one judged in full. A failed run is the
+  // worst point (the largest finite value): it is never read as safe.
+  double incumbent = -std::numeric_limits<double>::infinity();
   const std::function<double(std::span<const double>)> governing = [&](std::span<const double> values) {
     ApplyInputs(box, values, scene);
-    return JudgeScene(scene, criterion).governing_ratio;
+    Screening screening;
+    screening.at_or_below = incumbent;
+    const Judged j = JudgeScene(scene, counted, screening);
+    if (j.failed) return std::numeric_limits<double>::max();
+    if (j.by != JudgedBy::kBound) incumbent = std::max(incumbent, j.governing_ratio);
+    return j.governing_ratio;
   };
   const BoxMaximum maximum = MaximizeOverBox(box, search, governing);
   WorstCase worst;
   worst.values = maximum.values;
   worst.scene = base;
   ApplyInputs(box, worst.values, worst.scene);
-  FillWorstCase(JudgeScene(worst.scene, criterion), worst);
+  FillWorstCase(JudgeScene(worst.scene, counted), worst);
+  worst.time_path = counter.Use();
+  if (criterion.counter) criterion.counter->Add(worst.time_path);
   worst.corner_governing_ratio = maximum.corner_value;
   worst.found_by = maximum.found_by;
   worst.global = maximum.global;
@@ -249,9 +266,11 @@ WorstCase WorstCaseOnScene(const UncertaintyBox& box, const Scene& base, const I
 using internal::ImpactCriterion;
 
 WorstCase FindWorstCase(const UncertaintyBox& box, const WorstCaseOptions& options) {
-  const ImpactCriterion criterion{options.criterion(), options.safety_factor, options.limits};
+  ImpactCriterion criterion{options.criterion(), options.safety_factor, options.limits};
+  criterion.time_path = options.time_path;
   internal::ValidateCriterion(criterion);
   internal::ValidateSearch(options.search);
+  if (box.brakes()) ValidateTimeIntegrationOptions(options.time_path, "time_path.");
   return internal::WorstCaseOnScene(box, box.nominal(), criterion, options.search);
 }
 

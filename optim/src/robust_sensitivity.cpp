@@ -11,6 +11,7 @@
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
 #include <covopt/core/sensitivity.hpp>
+#include <covopt/core/time_integration.hpp>
 
 #include "covopt/optim/robust_sensitivity.hpp"
 #include "robust_internal.hpp"
@@ -25,7 +26,25 @@ struct LogRatios {
   double laceration = 0.0, contusion = 0.0, compression = 0.0;
 };
 
-std::optional<LogRatios> LogRatiosAt(const Scene& scene, const InjuryLimits& limits, long& evaluations) {
+/// The peaks of a valid scene: the exact path, or the time path for a braking robot (empty
+/// when it fails; `failure` gets the first message).
+std::optional<ImpactPeaks> PeaksOf(const ImpactModel& model, const TimeIntegrationOptions& time_path,
+                                   std::string* failure) {
+  if (!model.scene().robot_brakes()) return ExactPeaks(model);
+  TimeIntegrationOptions options = time_path;
+  options.record_history = false;
+  const ImpactResult result = SimulateImpact(model, options);
+  if (!result.ok()) {
+    if (failure && failure->empty()) {
+      *failure = "time path: " + std::string(covopt::ToString(result.status)) + ": " + result.message;
+    }
+    return std::nullopt;
+  }
+  return result.peaks;
+}
+
+std::optional<LogRatios> LogRatiosAt(const Scene& scene, const InjuryLimits& limits, const TimeIntegrationOptions& time_path,
+                                     long& evaluations) {
   ++evaluations;
   std::optional<ImpactModel> model;
   try {
@@ -33,7 +52,9 @@ std::optional<LogRatios> LogRatiosAt(const Scene& scene, const InjuryLimits& lim
   } catch (const std::invalid_argument&) {
     return std::nullopt;
   }
-  const ImpactPeaks peaks = ExactPeaks(*model);
+  const std::optional<ImpactPeaks> found = PeaksOf(*model, time_path, nullptr);
+  if (!found) return std::nullopt;  // a failed neighbour: treated as outside the range
+  const ImpactPeaks& peaks = *found;
   LogRatios r;
   r.laceration = std::log(peaks.max_tensile_stress_Pa / limits.laceration_tensile_stress_Pa);
   r.contusion = std::log(peaks.max_energy_density_J_per_m2 / limits.contusion_energy_density_J_per_m2);
@@ -52,12 +73,12 @@ struct Difference {
 };
 
 Difference Differentiate(const Scene& scene, const SceneField& field, const LogRatios& at_x, double h,
-                         const InjuryLimits& limits, long& evaluations) {
+                         const InjuryLimits& limits, const TimeIntegrationOptions& time_path, long& evaluations) {
   const double x = field.value(scene);
   auto at = [&](double s) {
     Scene shifted = scene;
     field.field(shifted) = x * std::exp(s);
-    return LogRatiosAt(shifted, limits, evaluations);
+    return LogRatiosAt(shifted, limits, time_path, evaluations);
   };
   Difference d;
   const std::optional<LogRatios> plus = at(h), minus = at(-h);
@@ -101,12 +122,23 @@ ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions&
           "tolerance must be in (0, 1) (got " + internal::Number(options.tolerance) + ")");
   internal::ValidateCriterion({DesignCriterion::kNoFullCompression, 1.0, options.limits});
   const ImpactModel model = ImpactModel::FromScene(scene);
-  if (!scene.is_conservative_two_mass()) {
+  if (scene.is_damped() || scene.head.has_neck()) {
     throw std::invalid_argument(
-        "elasticities run on the exact path, which covers the conservative two-mass scene only: the scene has "
-        "contact damping, braking or a neck (docs/model.md §10)");
+        "elasticities cover the two-mass impact, conservative (the exact path) or with a braking robot (the time "
+        "path): the scene has contact damping or a neck (docs/model.md §10)");
   }
-  const ImpactPeaks peaks = ExactPeaks(model);
+  const bool brakes = scene.robot_brakes();
+  if (brakes) ValidateTimeIntegrationOptions(options.time_path, "time_path.");
+  std::string failure;
+  const std::optional<ImpactPeaks> found = PeaksOf(model, options.time_path, &failure);
+  if (!found) throw std::runtime_error("elasticities at the scene: " + failure);
+  const ImpactPeaks peaks = *found;
+  // The steps in ln x: h and h/10 on the exact path; on the time path (a braking robot) 2h and
+  // h with h = max(log_step, cbrt(10 rtol)), which balances the truncation error (h²) against
+  // the values' own error (10 rtol / h), as the time-path oracle's differences do.
+  const double time_step = std::max(options.log_step, std::cbrt(10.0 * options.time_path.relative_tolerance));
+  const double coarse_step = brakes ? 2.0 * time_step : options.log_step;
+  const double fine_step = brakes ? time_step : options.log_step / 10;
   const bool covered = model.has_covering();
   ElasticityTable table;
   long evaluations = 1;
@@ -119,7 +151,7 @@ ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions&
                        compressed ? std::log(*table.compression_ratio) : 0.0};
 
   std::optional<PeakSensitivities> analytic;
-  if (covered) analytic = ExactPeakSensitivities(model, peaks);
+  if (covered && !brakes) analytic = ExactPeakSensitivities(model, peaks);
 
   for (const SceneField& field : SceneFields()) {
     const double x = field.value(scene);
@@ -129,7 +161,7 @@ ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions&
     InputElasticity row;
     row.field = std::string(field.name);
     row.value = x;
-    if (field.name == "covering-modulus" || field.name == "covering-thickness") {
+    if (analytic && (field.name == "covering-modulus" || field.name == "covering-thickness")) {
       const bool modulus = field.name == "covering-modulus";
       const PeakDerivatives& d = modulus ? analytic->per_covering_modulus : analytic->per_covering_thickness;
       row.method = DerivativeMethod::kAnalytic;
@@ -148,8 +180,9 @@ ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions&
       const double travel = peaks.full_compression_penetration_m - peaks.covering_travel_start_m;
       row.compression = x * (d.max_penetration / used - dt2 / travel);
     } else {
-      const Difference coarse = Differentiate(scene, field, at_x, options.log_step, options.limits, evaluations);
-      const Difference fine = Differentiate(scene, field, at_x, options.log_step / 10, options.limits, evaluations);
+      const Difference coarse =
+          Differentiate(scene, field, at_x, coarse_step, options.limits, options.time_path, evaluations);
+      const Difference fine = Differentiate(scene, field, at_x, fine_step, options.limits, options.time_path, evaluations);
       if (!coarse.ok || !fine.ok) {
         row.reliable = false;  // both sides leave the field's range: nothing to difference
         row.discrepancy = 1.0;

@@ -18,6 +18,7 @@
 #include "covopt/core/exact.hpp"
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/scene_fields.hpp"
+#include "covopt/core/time_integration.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/optim/design.hpp"
 #include "covopt/optim/robust_design.hpp"
@@ -159,7 +160,9 @@ py::object UncertainSimulation(const SceneInputs& scene, const py::kwargs& kwarg
     py::gil_scoped_release release;
     worst = optim::FindWorstCase(*b.box, worst_options);
     impact.scene = worst.scene;
-    impact.result = SolveExact(ImpactModel::FromScene(worst.scene));
+    // A braking robot's worst case is a time-path impact (docs/model.md §11).
+    const ImpactModel model = ImpactModel::FromScene(worst.scene);
+    impact.result = worst.scene.robot_brakes() ? SimulateImpact(model) : SolveExact(model);
     if (sampling) probability = optim::EstimateInjuryProbability(*b.box, *sampling);
   }
   impact.covering_material = b.scene.covering_material;

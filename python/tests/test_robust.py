@@ -115,3 +115,26 @@ def test_the_seed_is_any_unsigned_64_bit_value_and_the_message_says_so():
         covopt.injury_probability(ranges={"head_mass": ("3.7kg", "5.8kg")}, samples=10,
                                   seed=-1).to_dict()
     assert "18446744073709551615" in covopt.injury_probability.__doc__
+
+
+BRAKING = {"reaction_delay": "10ms", "braking": "20m/s2"}
+BRAKING_FLAGS = ["--reaction-delay", "10ms", "--braking", "20m/s2"]
+
+
+def test_braking_robot_with_ranges_is_the_cli_object(cli_json):
+    """A braking robot over a box (docs/model.md §11): the time path, screened by the exact path's
+    bound; the same objects as the CLI's, and no thicker than without the brake."""
+    worst = call(covopt.worst_case, ranges=RANGES, **COVERING, **BRAKING)
+    theirs = cli_json("simulate", "--json", *RANGE_FLAGS, *COVERING_FLAGS, *BRAKING_FLAGS)
+    assert without_timing(worst["worst_case"]) == without_timing(theirs["worst_case"])
+    unbraked = call(covopt.worst_case, ranges=RANGES, **COVERING)
+    assert worst["worst_case"]["governing_ratio"] <= unbraked["worst_case"]["governing_ratio"]
+    assert worst["worst_case"]["time_path"]["failed"] == 0
+
+    ours = covopt.robust_optimize(covopt.Scene(**BRAKING), ranges=RANGES)
+    design = cli_json("optimize", "--json", *RANGE_FLAGS, *BRAKING_FLAGS)
+    assert without_timing(ours.recommendation.to_dict()) == without_timing(design["recommendation"])
+    assert design["time_path"]["runs"] > 0
+    free = cli_json("optimize", "--json", *RANGE_FLAGS)
+    assert (ours.recommendation.to_dict()["min_safe_thickness_m"]
+            <= free["recommendation"]["min_safe_thickness_m"] + 1e-6)

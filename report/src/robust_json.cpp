@@ -47,6 +47,16 @@ ordered_json ValuesJson(const optim::UncertaintyBox& box, const std::vector<doub
   return {{"inputs", inputs}, {"units", units}};
 }
 
+ordered_json TimePathJson(const optim::TimePathUse& use) {
+  ordered_json j;
+  j["runs"] = use.runs;
+  j["screened"] = use.screened;
+  j["brake_after_peak"] = use.brake_after_peak;
+  j["failed"] = use.failed;
+  j["first_failure"] = use.first_failure;
+  return j;
+}
+
 ordered_json WorstJson(const optim::UncertaintyBox& box, const optim::WorstCase& w) {
   ordered_json j = ValuesJson(box, w.values);
   j["laceration_ratio"] = Number(w.laceration_ratio);
@@ -60,6 +70,7 @@ ordered_json WorstJson(const optim::UncertaintyBox& box, const optim::WorstCase&
   j["corner_governing_ratio"] = Number(w.corner_governing_ratio);
   j["found_by"] = w.found_by;
   j["evaluations"] = w.evaluations;
+  j["time_path"] = TimePathJson(w.time_path);
   j["seconds"] = w.seconds;
   return j;
 }
@@ -257,6 +268,7 @@ std::string RobustDesignJson(const optim::UncertaintyBox& box, const optim::Robu
   j["injury_probability"] = recommended_probability ? ProbabilityJson(*recommended_probability) : ordered_json(nullptr);
   j["limits"] = LimitsJson(options.design.limits, options.design.safety_factor);
   j["evaluations"] = result.evaluations;
+  j["time_path"] = TimePathJson(result.time_path);
   j["seconds"] = result.seconds;
   j["warnings"] = std::vector<std::string>(warnings.begin(), warnings.end());
   return Dump(j, indent);
@@ -316,6 +328,7 @@ std::string ProbabilityDesignJson(const optim::UncertaintyBox& box, const optim:
   j["candidates"] = candidates;
   j["limits"] = LimitsJson(options.design.limits, options.design.safety_factor);
   j["sample_evaluations"] = result.sample_evaluations;
+  j["time_path"] = TimePathJson(result.time_path);
   j["seconds"] = result.seconds;
   j["warnings"] = std::vector<std::string>(warnings.begin(), warnings.end());
   return Dump(j, indent);

@@ -288,3 +288,39 @@ TEST_CASE("a bad --distribution is blamed on --distribution, not on the range fl
     }
   }
 }
+
+TEST_CASE("optimize with ranges and a braking robot: the time path, screened, checked by simulate", "[cli][robust][braking]") {
+  // docs/guide/robust.md's example: the robot brakes at 20 m/s² from 10 ms after first contact.
+  const std::vector<std::string> braking = {"--reaction-delay", "10ms", "--braking", "20m/s2"};
+  const std::vector<std::string> box = {"--head-mass", "3.7kg..5.8kg", "--scalp-thickness", "2mm..5mm"};
+  std::vector<std::string> args = {"optimize", "--json", "--material", "elastomer Shore A60"};
+  args.insert(args.end(), box.begin(), box.end());
+  const Json free = RunJson(args);
+  args.insert(args.end(), braking.begin(), braking.end());
+  const Json j = RunJson(args);
+  CHECK(j["verdict"] == "covering-found");
+  const Json& rec = j["recommendation"];
+  REQUIRE(!rec.is_null());
+  CHECK(j["time_path"]["runs"].get<long>() > 0);
+  CHECK(j["time_path"]["failed"].get<long>() == 0);
+  CHECK(free["time_path"]["runs"].get<long>() == 0);
+  // Braking makes the design no thicker.
+  CHECK(rec["min_safe_thickness_m"].get<double>() <= free["recommendation"]["min_safe_thickness_m"].get<double>() + 1e-6);
+  // simulate over the same box with the same brake finds the recommendation admissible.
+  std::vector<std::string> check = {"simulate", "--json", "--material", "elastomer Shore A60", "--covering-thickness",
+                                    std::to_string(rec["thickness_m"].get<double>() * 1e3) + "mm"};
+  check.insert(check.end(), box.begin(), box.end());
+  check.insert(check.end(), braking.begin(), braking.end());
+  const Json verified = RunJson(check);
+  CHECK(verified["worst_case"]["admissible"] == true);
+  CHECK(verified["worst_case"]["time_path"]["runs"].get<long>() +
+            verified["worst_case"]["time_path"]["brake_after_peak"].get<long>() >
+        0);
+  // The text report says how the braking robot's impacts were judged.
+  args.erase(args.begin() + 1);
+  const CliRun text = Run(args);
+  CHECK(text.out.find("Braking robot: ") != std::string::npos);
+  // Contact damping and a neck stay refused with ranges.
+  ExpectBadInput({"optimize", "--head-mass", "3.7kg..5.8kg", "--torso-mass", "30kg", "--neck-stiffness", "30kN/m"},
+                 "not supported with ranges");
+}

@@ -238,7 +238,7 @@ TEST_CASE("Bad ranges are refused naming the field, the value and the range", "[
   refuse_default({{"damping", 0.0, 0.2}}, "model.damping cannot be uncertain");
   Scene damped;
   damped.model.damping_s_per_m = 0.1;
-  refuse({{"head-mass", 3.7, 5.8}}, "conservative two-mass scene only", damped);
+  refuse({{"head-mass", 3.7, 5.8}}, "the scene has contact damping or a neck", damped);
   // Corners: the scalp must stay thinner than the head radius everywhere in the box.
   refuse_default({{"head-radius", 0.004, 0.09}, {"scalp-thickness", 0.002, 0.005}},
                  "the box leaves the model's input range at the corner head-radius = 4 mm, scalp-thickness = 5 mm: "

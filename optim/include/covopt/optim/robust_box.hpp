@@ -12,6 +12,7 @@
 
 #include <covopt/core/scene.hpp>
 #include <covopt/core/scene_fields.hpp>
+#include <covopt/core/time_integration.hpp>
 
 namespace covopt::optim {
 
@@ -58,8 +59,9 @@ class UncertaintyBox {
   ///   +inf (a fixed body, a flat robot); a covering-thickness range that includes 0 with
   ///   more (no covering is not the limit of a thin one, docs/model.md §5 item 4); a
   ///   distribution on a point, a standard deviation not > 0, a mean outside [low, high], a
-  ///   lognormal with low < 0; an input of the extended scenes (damping, reaction-delay,
-  ///   braking, torso-mass, neck-stiffness, neck-damping) or a nominal scene that has one;
+  ///   lognormal with low < 0; a range on damping, torso-mass, neck-stiffness or neck-damping,
+  ///   or a nominal scene with contact damping or a neck (a braking robot, and ranges on
+  ///   reaction-delay and braking, are accepted: docs/model.md §11, "A braking robot");
   ///   an invalid nominal scene; and any corner of the box that is not a valid scene
   ///   (ImpactModel::FromScene's message, with the corner). The model's input ranges are
   ///   boxes and one linear condition (scalp thickness < head radius), so valid corners make
@@ -82,6 +84,10 @@ class UncertaintyBox {
   /// The inputs [SI] of sample `index` for `seed` into `values` (size()): DrawInputs without
   /// allocating.
   void DrawInto(std::uint64_t seed, std::uint64_t index, std::span<double> values) const;
+  /// Some scene of the box has a braking robot (the nominal scene brakes, or braking's range
+  /// reaches above 0): its impacts are judged on the time path, screened by the exact path's
+  /// bound (docs/model.md §11, "A braking robot").
+  bool brakes() const noexcept;
 
  private:
   /// Per input, for sampling: the location and scale of the normal law (of x, or of ln x for
@@ -95,6 +101,26 @@ class UncertaintyBox {
   std::vector<UncertainInput> inputs_;
   std::vector<const SceneField*> fields_;
   std::vector<Sampling> sampling_;
+};
+
+/// How a robust search judged the impacts of a braking robot (docs/model.md §11, "A braking
+/// robot"). Braking only takes energy out of the impact, so the unbraked impact's ratios (the
+/// exact path) bound the braked ones from above; the time path runs only where that bound
+/// cannot decide. All zero for a box without braking.
+struct TimePathUse {
+  /// Impacts decided by the exact path's bound: the unbraked impact was admissible (hence the
+  /// braked one), or, in a worst-case search, could not exceed the worst impact found so far.
+  long screened = 0;
+  /// Impacts whose brake starts at or after the unbraked impact's maximum compression: the
+  /// braked peaks are the unbraked ones, which the exact path gives.
+  long brake_after_peak = 0;
+  long runs = 0;  ///< time-path runs (SimulateImpact)
+  /// Runs that failed (a status other than success): judged inadmissible with infinite
+  /// ratios, never safe; a result that rests on one says so.
+  long failed = 0;
+  std::string first_failure;  ///< the first failure's message; empty if none
+  /// Adds `other`'s counts (the first failure kept).
+  void Add(const TimePathUse& other);
 };
 
 /// The inputs [SI] of sample `index` for `seed`, in the box's order: what

@@ -32,10 +32,11 @@
 /// (admissible <=> g <= 1, up to the flag fully_compressed at r_δ = 1 exactly); the worst case
 /// of a box is the impact of largest g.
 ///
-/// Scope of this first version: the exact path only, so the nominal scene must be the paper's
-/// conservative two-mass impact (Scene::is_conservative_two_mass: no damping, no braking, no
-/// neck) and those six inputs cannot be uncertain; docs/model.md §10.4 says which path answers
-/// the others.
+/// Scope: the two-mass impact, conservative (the exact path) or with a braking robot (the time
+/// path, screened by the exact path's bound: braking only takes energy out of the impact, so
+/// an impact admissible unbraked is admissible braked, and a brake that starts after the
+/// unbraked maximum changes no peak; docs/model.md §11, "A braking robot"). reaction-delay and
+/// braking may be uncertain. Contact damping and a neck are refused (nominal or as ranges).
 ///
 /// Monotone inputs. The reflected robot mass, the head mass and the speed enter the exact path
 /// only through the impact energy ½ μ v0² (μ = 1/(1/m_r + 1/m_h)); δ_max grows with it and every
@@ -71,8 +72,9 @@ struct RobustDesignOptions {
   /// factor, limits, ν_c of the continuous design, the catalog scan (thickness_scan_points,
   /// thickness_resolution_m), thickness_step_m, threads (materials in parallel; the result is
   /// identical for any count), bracket_thickness_points and modulus_points_per_decade (the
-  /// continuous nested search). Its NLopt and Ipopt settings and its oracle are not used: the
-  /// robust searches run on the exact path.
+  /// continuous nested search). Its NLopt and Ipopt settings and its oracle choice are not
+  /// used: the robust searches run on the exact path, and for a braking robot on the time path
+  /// with oracle.time_path's integrator and tolerances (screened by the exact path's bound).
   DesignOptions design;
   /// The inner worst-case search run to confirm each design.
   GlobalSearchOptions worst_case;
@@ -123,7 +125,11 @@ struct RobustThinnestCovering {
   /// The scenarios (input values [SI]) the designs were checked against at the start: the
   /// centre and the worst case at the nominal scene's covering.
   std::vector<std::vector<double>> initial_scenarios;
-  long evaluations = 0;  ///< exact-path evaluations, all stages
+  long evaluations = 0;  ///< impacts judged, all stages
+  /// A braking robot: how the impacts were judged (screened, brake after the peak, time-path
+  /// runs) and any failed time-path run. A failure is judged inadmissible, so no design rests
+  /// on one; it can only make a design thicker or leave none.
+  TimePathUse time_path;
   double seconds = 0.0;
 };
 

@@ -61,6 +61,10 @@ struct InjuryProbabilityOptions {
   /// Called on the calling thread with the fraction of samples done, in [0, 1], last with 1.
   /// An exception it throws stops the work (the threads are joined) and propagates.
   std::function<void(double fraction_done)> progress;
+  /// The time path's integrator and tolerances for a braking robot (UncertaintyBox::brakes()):
+  /// a sample with no event unbraked has none braked, the others run on it (docs/model.md
+  /// §11). Checked then only. Default: ARKODE ERK 5(4), rtol 1e-8.
+  TimeIntegrationOptions time_path;
 };
 
 /// EstimateInjuryProbability's answer.
@@ -74,6 +78,9 @@ struct InjuryProbability {
   ProbabilityEstimate inadmissible;
   std::uint64_t seed = 0;
   unsigned threads = 0;  ///< threads used
+  /// A braking robot: how the samples were judged. A failed time-path run counts as every
+  /// event (injured, fully compressed, inadmissible), never as safe.
+  TimePathUse time_path;
   double seconds = 0.0;
 };
 
@@ -146,6 +153,9 @@ struct ProbabilityDesign {
   /// Exact-path evaluations, all designs. A rejected design stops early, and how many samples
   /// the threads had evaluated by then varies from run to run: this count (only) does.
   std::uint64_t sample_evaluations = 0;
+  /// A braking robot: how the samples were judged, all designs (the time path with
+  /// design.oracle.time_path's settings); a failed run counts as every event.
+  TimePathUse time_path;
   double seconds = 0.0;
 };
 

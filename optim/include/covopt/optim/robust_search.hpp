@@ -42,7 +42,9 @@ struct GlobalSearchOptions {
   /// Evaluations per refinement, >= 10; -1 = 100 + 50 k. Default: -1.
   long local_evaluations = -1;
   /// Hold robot-mass, head-mass and speed at their worst end (the top of the range for a
-  /// worst impact, see the file comment) instead of searching them. Default: true.
+  /// worst impact, see the file comment) instead of searching them. Default: true. Not
+  /// applied to a box with a braking robot (UncertaintyBox::brakes()): the brake acts from a
+  /// time and on the robot alone, so the energy argument does not hold and they are searched.
   bool pin_energy_inputs = true;
 };
 
@@ -58,6 +60,9 @@ struct WorstCaseOptions {
   /// The laceration [Pa] and contusion [J/m²] limits. Default: 1 MPa and 2.52 J/cm².
   InjuryLimits limits;
   GlobalSearchOptions search;
+  /// The time path's integrator and tolerances for a braking robot (UncertaintyBox::brakes()):
+  /// checked then only. Default: ARKODE ERK 5(4), rtol 1e-8.
+  TimeIntegrationOptions time_path;
 };
 
 /// The worst impact over a box.
@@ -85,15 +90,22 @@ struct WorstCase {
   /// max_corner_inputs): how far a corners-only check would have fallen short.
   std::optional<double> corner_governing_ratio;
   /// The stage whose point was kept: "corner", "centre", "space-filling", "global" (DIRECT-L),
-  /// "local" (COBYLA), or "pinned" (nothing left to search).
+  /// "local" (COBYLA), or "pinned" (nothing left to search); "scenarios" in a robust design
+  /// with a braking robot, for a material with no design: the worst of the scenario set at the
+  /// maximum thickness, already inadmissible (RobustCandidate), the box not searched again.
   std::string found_by;
   SolverReport global;  ///< the DIRECT-L stage (backend empty when skipped)
   SolverReport local;   ///< the refinement that gave the best point (or the last one)
-  long evaluations = 0;  ///< exact-path evaluations
+  long evaluations = 0;  ///< impacts evaluated (exact path, or screened / time path with braking)
+  /// A braking robot: how the impacts were judged, and any failed time-path run (a failure
+  /// makes its point the worst case, inadmissible).
+  TimePathUse time_path;
   double seconds = 0.0;
 };
 
-/// The worst impact over the box for the nominal scene's covering (or bare robot).
+/// The worst impact over the box for the nominal scene's covering (or bare robot). With a
+/// braking robot the search runs on the time path, screened by the exact path's bound
+/// (docs/model.md §11, "A braking robot").
 /// @throws std::invalid_argument for bad options.
 WorstCase FindWorstCase(const UncertaintyBox& box, const WorstCaseOptions& options = {});
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <covopt/core/scene.hpp>
+#include <covopt/core/time_integration.hpp>
 
 namespace covopt::optim {
 
@@ -48,6 +49,11 @@ struct ElasticityOptions {
   double log_step = 1e-3;
   /// Agreement required of the two steps, in (0, 1). Default: 1e-4.
   double tolerance = 1e-4;
+  /// A braking robot's scene runs on the time path with these settings (checked then only):
+  /// every elasticity, the covering's included, is then a difference at the steps 2h and h,
+  /// h = max(log_step, cbrt(10 rtol)), and a failed neighbour counts as outside the range.
+  /// Default: ARKODE ERK 5(4), rtol 1e-8.
+  TimeIntegrationOptions time_path;
 };
 
 /// The elasticities at one scene (its covering is the design).
@@ -60,12 +66,13 @@ struct ElasticityTable {
   /// larger injury ratio at the scene (r_L or r_C), largest first, ties in SceneFields()
   /// order: a tornado chart's order.
   std::vector<InputElasticity> rows;
-  long evaluations = 0;  ///< exact-path evaluations
+  long evaluations = 0;  ///< impacts computed (exact path; time path for a braking robot)
 };
 
-/// Elasticities of r_L, r_C and r_δ to every scene input at `scene`.
-/// @throws std::invalid_argument for an invalid scene, a scene outside the exact path's
-///   conservative two-mass model, or bad options.
+/// Elasticities of r_L, r_C and r_δ to every scene input at `scene`: the exact path, or the
+/// time path for a braking robot (ElasticityOptions::time_path).
+/// @throws std::invalid_argument for an invalid scene, a scene with contact damping or a neck,
+///   or bad options; std::runtime_error when the time path fails at the scene itself.
 ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions& options = {});
 
 }  // namespace covopt::optim
