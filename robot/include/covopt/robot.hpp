@@ -4,6 +4,7 @@
 /// joint-space inertia and Jacobian through Orocos KDL), and a contact point's motion along a
 /// joint trajectory.
 #include "covopt/robot/kinematic_chain.hpp"
+#include "covopt/robot/link_kinematics.hpp"
 #include "covopt/robot/reflected_mass.hpp"
 #include "covopt/robot/surface.hpp"
 #include "covopt/robot/trajectory.hpp"
