@@ -323,6 +323,37 @@ struct Pass {
   std::size_t sample_count = 0;
 };
 
+/// Visits every moving point-sample of the trajectory: per sample Update, then
+/// on_point(sample, link, point, motion) for every moving point of every link, then
+/// on_sample(sample, time). Checks the times (non-decreasing, finite) and the samples' sizes.
+template <class OnPoint, class OnSample>
+void Walk(const AuditSetup& setup, const robot::JointTrajectory& trajectory, const std::vector<LinkPlan>& plans,
+          const OnPoint& on_point, const OnSample& on_sample) {
+  robot::ChainSampleKinematics kin(setup.chain, setup.motion);
+  double previous_time = -kInf;
+  for (std::size_t i = 0; i < trajectory.size(); ++i) {
+    const double t = trajectory.time_s[i];
+    if (!std::isfinite(t) || t < previous_time) {
+      throw std::invalid_argument(SampleWhere(trajectory, i) + ": time " + FormatShortest(t) +
+                                  " s goes backwards or is not finite");
+    }
+    previous_time = t;
+    Require(i < trajectory.positions.size() && i < trajectory.velocities.size(),
+            SampleWhere(trajectory, i) + ": the trajectory has fewer positions or velocities than times");
+    kin.Update(trajectory.positions[i], trajectory.velocities[i], SampleWhere(trajectory, i));
+    for (std::size_t l = 0; l < plans.size(); ++l) {
+      const LinkPlan& plan = plans[l];
+      const std::vector<robot::SurfacePoint>& points = plan.surface->points;
+      for (std::size_t p = 0; p < points.size(); ++p) {
+        const robot::PointMotion m = kin.Point(plan.chain_index, points[p].position_m);
+        if (!m.moving || !(m.speed_m_per_s >= kModelMinSpeed_m_per_s)) continue;
+        on_point(i, l, p, m);
+      }
+    }
+    on_sample(i, t);
+  }
+}
+
 Pass RunPass(const AuditSetup& setup, const robot::JointTrajectory& trajectory, const RegionLimits& regions,
              const std::vector<LinkPlan>& plans, const AuditOptions& options, bool demand) {
   const std::size_t n_links = plans.size(), n_regions = regions.size();
@@ -343,73 +374,61 @@ Pass RunPass(const AuditSetup& setup, const robot::JointTrajectory& trajectory, 
   }
   std::vector<double> inverse_body_mass(n_regions);
   for (std::size_t r = 0; r < n_regions; ++r) inverse_body_mass[r] = regions.inverse_body_mass(r);
-
-  robot::ChainSampleKinematics kin(setup.chain, setup.motion);
-  std::vector<double> link_ratio(n_links);
-  std::vector<std::size_t> link_region(n_links);
+  std::vector<double> link_ratio(n_links, 0.0);
+  std::vector<std::size_t> link_region(n_links, 0);
   if (options.keep_ratio_over_time) {
     pass.ratio_over_time.reserve(trajectory.size() * n_links);
     pass.time_s.reserve(trajectory.size());
   }
-  double previous_time = -kInf;
-  for (std::size_t i = 0; i < trajectory.size(); ++i) {
-    const double t = trajectory.time_s[i];
-    if (!std::isfinite(t) || t < previous_time) {
-      throw std::invalid_argument(SampleWhere(trajectory, i) + ": time " + FormatShortest(t) +
-                                  " s goes backwards or is not finite");
+  double current_time = 0.0;
+  std::size_t current_sample = trajectory.size();
+  const auto on_point = [&](std::size_t i, std::size_t l, std::size_t p, const robot::PointMotion& m) {
+    if (i != current_sample) {  // the first moving point of sample i: its time
+      current_sample = i;
+      current_time = trajectory.time_s[i];
     }
-    previous_time = t;
-    Require(i < trajectory.positions.size() && i < trajectory.velocities.size(),
-            SampleWhere(trajectory, i) + ": the trajectory has fewer positions or velocities than times");
-    kin.Update(trajectory.positions[i], trajectory.velocities[i], SampleWhere(trajectory, i));
-    for (std::size_t l = 0; l < n_links; ++l) {
-      const LinkPlan& plan = plans[l];
-      double worst = 0.0;
-      std::size_t worst_region = 0;
-      AuditCell* row = &pass.cells[l * n_regions];
-      double* link_demand = demand ? pass.demand_J[l].data() : nullptr;
-      const std::vector<robot::SurfacePoint>& points = plan.surface->points;
-      for (std::size_t p = 0; p < points.size(); ++p) {
-        const robot::PointMotion m = kin.Point(plan.chain_index, points[p].position_m);
-        const double v = m.speed_m_per_s;
-        if (!m.moving || !(v >= kModelMinSpeed_m_per_s)) continue;
-        const double inverse_mass = 1.0 / m.reflected_mass_kg;  // 0 for a fixed direction
-        const EnergyLimit* limits = &plan.limits[plan.point_radius[p] * n_regions];
-        double* point_demand = demand ? link_demand + plan.point_radius[p] * n_regions : nullptr;
-        for (std::size_t r = 0; r < n_regions; ++r) {
-          const double inverse_mass_sum = inverse_mass + inverse_body_mass[r];  // 1/μ
-          const double v_max = MaxSpeed(limits[r], inverse_mass_sum);
-          const double ratio = v / (sf * v_max);
-          if (ratio > worst) {
-            worst = ratio;
-            worst_region = r;
-          }
-          if (point_demand) point_demand[r] = std::max(point_demand[r], 0.5 * v * v / inverse_mass_sum);
-          AuditCell& c = row[r];
-          if (c.sample && !(ratio > c.governing_ratio)) continue;
-          c.governing_ratio = ratio;
-          c.speed_scale = v_max / v;
-          c.binding = v_max < kModelMaxSpeed_m_per_s ? limits[r].binding : BodyLimitKind::kNone;
-          c.head_criterion = v_max < kModelMaxSpeed_m_per_s ? limits[r].head_criterion : LimitingCriterion::kNone;
-          c.sample = i;
-          c.time_s = t;
-          c.point = p;
-          c.point_in_link_m = points[p].position_m;
-          c.point_in_base_m = m.position_m;
-          c.speed_m_per_s = v;
-          c.reflected_mass_kg = m.reflected_mass_kg;
-          c.max_safe_speed_m_per_s = v_max;
-        }
+    const LinkPlan& plan = plans[l];
+    const double v = m.speed_m_per_s;
+    const double inverse_mass = 1.0 / m.reflected_mass_kg;  // 0 for a fixed direction
+    const EnergyLimit* limits = &plan.limits[plan.point_radius[p] * n_regions];
+    double* point_demand = demand ? pass.demand_J[l].data() + plan.point_radius[p] * n_regions : nullptr;
+    AuditCell* row = &pass.cells[l * n_regions];
+    double& worst = link_ratio[l];
+    for (std::size_t r = 0; r < n_regions; ++r) {
+      const double inverse_mass_sum = inverse_mass + inverse_body_mass[r];  // 1/μ
+      const double v_max = MaxSpeed(limits[r], inverse_mass_sum);
+      const double ratio = v / (sf * v_max);
+      if (ratio > worst) {
+        worst = ratio;
+        link_region[l] = r;
       }
-      link_ratio[l] = worst;
-      link_region[l] = worst_region;
+      if (point_demand) point_demand[r] = std::max(point_demand[r], 0.5 * v * v / inverse_mass_sum);
+      AuditCell& c = row[r];
+      if (c.sample && !(ratio > c.governing_ratio)) continue;
+      c.governing_ratio = ratio;
+      c.speed_scale = v_max / v;
+      c.binding = v_max < kModelMaxSpeed_m_per_s ? limits[r].binding : BodyLimitKind::kNone;
+      c.head_criterion = v_max < kModelMaxSpeed_m_per_s ? limits[r].head_criterion : LimitingCriterion::kNone;
+      c.sample = i;
+      c.time_s = current_time;
+      c.point = p;
+      c.point_in_link_m = plan.surface->points[p].position_m;
+      c.point_in_base_m = m.position_m;
+      c.speed_m_per_s = v;
+      c.reflected_mass_kg = m.reflected_mass_kg;
+      c.max_safe_speed_m_per_s = v_max;
     }
+  };
+  const auto on_sample = [&](std::size_t i, double t) {
     if (options.keep_ratio_over_time) {
       pass.ratio_over_time.insert(pass.ratio_over_time.end(), link_ratio.begin(), link_ratio.end());
       pass.time_s.push_back(t);
     }
     if (options.on_sample) options.on_sample(AuditSampleRow{i, t, link_ratio, link_region});
-  }
+    std::fill(link_ratio.begin(), link_ratio.end(), 0.0);
+    std::fill(link_region.begin(), link_region.end(), 0);
+  };
+  Walk(setup, trajectory, plans, on_point, on_sample);
   pass.sample_count = trajectory.size();
   return pass;
 }
