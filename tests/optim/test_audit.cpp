@@ -581,3 +581,81 @@ TEST_CASE("a surface file's points on a synthetic arm are audited at their radii
     CHECK(c.speed_scale == Approx(best).epsilon(1e-9));
   }
 }
+
+TEST_CASE("a braking robot's audit is the brute-force braked maximum, found by branch and bound",
+          "[audit][braking]") {
+  // The head alone (the braked body-region model is not in this build): a few FR3 points on
+  // every tenth sample, each judged braked on the time path by brute force.
+  const Fr3& fr3 = TheFr3();
+  co::AuditSetup setup = Fr3Setup({});
+  for (rb::LinkSurface& link : setup.surface.links) {
+    std::vector<rb::SurfacePoint> some;
+    for (std::size_t p = 0; p < link.points.size(); p += 12) some.push_back(link.points[p]);
+    link.points = some;
+  }
+  rb::JointTrajectory every_tenth;
+  for (std::size_t i = 5; i < fr3.pick.size(); i += 15) {
+    every_tenth.time_s.push_back(fr3.pick.time_s[i]);
+    every_tenth.positions.push_back(fr3.pick.positions[i]);
+    every_tenth.velocities.push_back(fr3.pick.velocities[i]);
+  }
+  const co::AuditResult unbraked = co::Audit(setup, every_tenth);
+  setup.reaction_delay_s = 0.002;
+  setup.braking_m_per_s2 = 200.0;
+  const co::AuditResult braked = co::Audit(setup, every_tenth);
+  REQUIRE(braked.status != co::TrajectoryCheckStatus::kEvaluationFailed);
+  REQUIRE(braked.regions.size() == 1);
+
+  rb::ChainSampleKinematics kin(fr3.chain);
+  bool helped = false;
+  std::size_t brute_evaluations = 0;
+  std::vector<double> brute(setup.surface.links.size(), 0.0);
+  for (std::size_t i = 0; i < every_tenth.size(); ++i) {
+    kin.Update(every_tenth.positions[i], every_tenth.velocities[i]);
+    for (std::size_t l = 0; l < setup.surface.links.size(); ++l) {
+      for (const rb::SurfacePoint& point : setup.surface.links[l].points) {
+        const rb::PointMotion m = kin.Point(*kin.LinkIndex(setup.surface.links[l].link), point.position_m);
+        if (!m.moving || m.speed_m_per_s < 1e-6) continue;
+        covopt::Scene scene = *setup.head;
+        scene.robot.mass_kg = m.reflected_mass_kg;
+        scene.robot.radius_m = point.radius_of_curvature_m;
+        scene.robot.reaction_delay_s = setup.reaction_delay_s;
+        scene.robot.braking_m_per_s2 = setup.braking_m_per_s2;
+        scene.covering = setup.covering.covering;
+        co::SpeedLimitOptions options;
+        if (setup.covering.material->crush_behaviour == covopt::materials::CrushBehaviour::kCrushes) {
+          options.covering_compressive_strength_Pa = setup.covering.material->compressive_strength_Pa;
+        }
+        const co::SpeedLimit limit = co::MaxSafeSpeed(scene, options);
+        ++brute_evaluations;
+        REQUIRE(limit.status != co::SpeedLimitStatus::kEvaluationFailed);
+        brute[l] = std::max(brute[l], m.speed_m_per_s / limit.max_safe_speed_m_per_s);
+      }
+    }
+  }
+  for (std::size_t l = 0; l < braked.links.size(); ++l) {
+    const co::AuditCell &b = braked.cell(l, 0), &u = unbraked.cell(l, 0);
+    INFO(braked.links[l]);
+    CHECK(b.governing_ratio == Approx(brute[l]).epsilon(1e-12));
+    CHECK(b.governing_ratio <= u.governing_ratio);
+    if (b.sample) {
+      CHECK(b.speed_scale == Approx(1.0 / b.governing_ratio).epsilon(1e-12));
+      helped = helped || b.governing_ratio < 0.99 * u.governing_ratio;
+    }
+  }
+  CHECK(helped);
+  CHECK(braked.safe_speed_scale >= unbraked.safe_speed_scale);
+  // The branch and bound judged fewer point-samples braked than the brute force.
+  const auto warning = std::find_if(braked.warnings.begin(), braked.warnings.end(), [](const std::string& w) {
+    return w.find("braked limits on the time path") != std::string::npos;
+  });
+  REQUIRE(warning != braked.warnings.end());
+  const std::size_t evaluations = std::stoul(warning->substr(warning->find('(') + 1));
+  CHECK(evaluations < brute_evaluations);
+  CHECK(std::any_of(braked.scope.begin(), braked.scope.end(),
+                    [](const std::string& s) { return s.find("brakes") != std::string::npos; }));
+  // Against the body regions braking is refused in this build, in one line.
+  setup.regions = SomeRegions();
+  CHECK_THAT(MessageOf([&] { co::Audit(setup, every_tenth); }),
+             Catch::Contains("braking_m_per_s2: braking against the body regions is not in this build"));
+}
