@@ -25,21 +25,9 @@
 #include <covopt/robot/surface.hpp>
 #include <covopt/robot/trajectory.hpp>
 
+#include "fr3_pick.hpp"
+
 namespace {
-
-const std::string kFr3Urdf = std::string(COVOPT_ROBOT_MODELS_DIR) + "/franka_fr3.urdf";
-
-const covopt::robot::KinematicChain& Fr3() {
-  static const covopt::robot::KinematicChain chain =
-      covopt::robot::KinematicChain::FromUrdfFile(kFr3Urdf, {"", "fr3_link8"});
-  return chain;
-}
-
-const covopt::robot::JointTrajectory& Pick() {
-  static const covopt::robot::JointTrajectory trajectory =
-      covopt::robot::ReadJointTrajectory(std::string(COVOPT_ROBOT_MODELS_DIR) + "/franka_fr3_pick.csv", 7);
-  return trajectory;
-}
 
 /// The FR3's surface at 0.05 m spacing, thinned to `count` points spread evenly over all of
 /// them (0: every point); links left without points are dropped.

@@ -27,6 +27,8 @@
 #include <covopt/robot/surface.hpp>
 #include <covopt/robot/trajectory.hpp>
 
+#include "../robot/robot_test_support.hpp"
+
 namespace {
 
 using covopt::BodyContactScene;
@@ -35,19 +37,11 @@ using covopt::materials::BodyLimits;
 using covopt::materials::BodyRegionTable;
 namespace co = covopt::optim;
 namespace rb = covopt::robot;
+using covopt::robot::testing::MessageOf;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const std::string kModels = COVOPT_ROBOT_MODELS_DIR;
 
-std::string MessageOf(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  FAIL("no std::invalid_argument thrown");
-  return {};
-}
 
 std::vector<BodyLimits> AllTransient() { return BodyRegionTable::BuiltIn().AllLimits(ContactType::kTransient); }
 
