@@ -397,8 +397,10 @@ void Walk(const AuditSetup& setup, const robot::JointTrajectory& trajectory, con
                                   " s goes backwards or is not finite");
     }
     previous_time = t;
-    Require(i < trajectory.positions.size() && i < trajectory.velocities.size(),
-            SampleWhere(trajectory, i) + ": the trajectory has fewer positions or velocities than times");
+    if (i >= trajectory.positions.size() || i >= trajectory.velocities.size()) {
+      throw std::invalid_argument(SampleWhere(trajectory, i) +
+                                  ": the trajectory has fewer positions or velocities than times");
+    }
     kin.Update(trajectory.positions[i], trajectory.velocities[i], SampleWhere(trajectory, i));
     for (std::size_t l = 0; l < plans.size(); ++l) {
       const LinkPlan& plan = plans[l];
