@@ -11,6 +11,7 @@
 
 #include "body_contact_time_path.hpp"
 #include "numeric_format.hpp"
+#include "robot_reaction.hpp"
 
 namespace covopt {
 
@@ -88,6 +89,8 @@ void CheckScene(const BodyContactScene& s) {
   if (!(s.full_compression_fraction > 0.0 && s.full_compression_fraction <= 1.0)) {
     Reject("full_compression_fraction", "in (0, 1]", s.full_compression_fraction);
   }
+  // The head scene's ranges and words (a fixed robot cannot brake).
+  internal::CheckRobotReaction(s.reaction_delay_s, s.braking_m_per_s2, s.robot_mass_kg);
 }
 
 }  // namespace
@@ -241,10 +244,18 @@ BodyContactResult SolveExactBodyContact(const BodyContactModel& model) {
 }  // namespace
 
 BodyContactResult Solve(const BodyContactModel& model, const SolveOptions& options) {
-  const bool time_path = options.path == PathChoice::kTimePath || options.record_history;
+  // A braking robot has no energy integral (as the head's, Scene::has_energy_integral).
+  const bool brakes = model.scene().robot_brakes();
+  const bool time_path = options.path == PathChoice::kTimePath || options.record_history || brakes;
   if (options.path == PathChoice::kExact && options.record_history) {
     throw std::invalid_argument(
         "path exact: a history needs the time path (give path time-path or auto, or no history)");
+  }
+  if (options.path == PathChoice::kExact && brakes) {
+    throw std::invalid_argument(
+        "path exact: the exact path needs the energy integral of a two-body contact, and robot.braking (" +
+        FormatNumber(model.scene().braking_m_per_s2) +
+        " m/s2) takes energy out over time: a braking robot has only the time path (give path time-path or auto)");
   }
   if (!time_path) return SolveExactBodyContact(model);
   ValidateTimeIntegrationOptions(options.time_path, "time_path.");

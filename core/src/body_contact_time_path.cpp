@@ -1,7 +1,10 @@
 // The time path of the body-contact model (body_contact_time_path.hpp): the covering and the
 // body spring in series, integrated in the covering's (or the body's) deflection so that F(δ)
 // is never inverted, by any integrator of the Stepper abstraction (stepper.hpp) on a 2-entry
-// state, with a restart where the covering bottoms out and where it comes back.
+// state, with a restart where the covering bottoms out and where it comes back. A braking
+// robot (docs/model.md §13.10) adds the robot's own speed and the brake's work to the state
+// (4 entries, a workspace of its own) and restarts where the brake starts and where the robot
+// stops.
 #include "body_contact_time_path.hpp"
 
 #include <nvector/nvector_serial.h>
@@ -10,7 +13,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -21,11 +26,14 @@
 namespace covopt::internal {
 namespace {
 
-/// Entries of the state vector.
+/// Entries of the state vector; the last two only for a braking robot.
 enum StateEntry : int {
   kDeflection = 0,  // q: δ_c in phase 1, δ_b in phase 2 [m]
   kApproachRate,    // δ' [m/s]
-  kStateSize,
+  kStateSize,       // without braking
+  kRobotSpeed = kStateSize,  // v_R, the robot's own speed (the body region starts at rest) [m/s]
+  kBrakeWork,                // W = ∫ m_R a v_R dt while braking [J]
+  kBrakingStateSize,
 };
 
 /// Root functions, in the order (and with the directions) of stepper.hpp's kRootDirections.
@@ -34,9 +42,13 @@ enum EventEntry : int {
   kLowerEnd,        // phase 1: q falling through 0 (separation); phase 2: q - F_b/k_H falling
                     // (back to phase 1), or q falling through 0 bare (separation)
   kTurn,            // δ' falling through 0: maximum compression
-  kEventCount,
+  kEventCount,      // without braking
+  kBrakeStart = kEventCount,  // t - t_d, rising, until the brake has started: restart braking
+  kRobotStops,                // v_R, falling, while braking: restart without the brake
+  kBrakingEventCount,
 };
 constexpr std::array<int, kEventCount> kEventDirections{+1, -1, -1};
+constexpr std::array<int, kBrakingEventCount> kBrakingEventDirections{+1, -1, -1, +1, -1};
 
 /// The phases of the contact.
 enum class Phase { kCovering, kBody };
@@ -52,6 +64,14 @@ struct Run {
   double travel_m = 0.0;            // the covering's travel 0.8 b_c [m]
   double body_at_bottom_m = 0.0;    // F_b/k_H: δ_b where the covering bottoms out [m]
   double root_floor_m = 0.0;        // floor on δ_c in the Jacobian (sqrt(δ_c) in a denominator)
+  // A braking robot (the state's last two entries and the last two events exist).
+  bool braking = false;
+  double braking_m_per_s2 = 0.0;    // a
+  double robot_mass_kg = 0.0;       // m_R (finite: a fixed robot cannot brake)
+  double inverse_robot_mass = 0.0;  // 1/m_R
+  double reaction_delay_s = 0.0;    // t_d
+  bool brake_pending = false;       // the robot brakes, but t_d has not come yet
+  bool brake_on = false;            // braking now: t >= t_d and the robot still moving forward
 };
 
 /// The contact at one state: its force, the two deflections and the approach.
@@ -83,25 +103,42 @@ int BodyRightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_d
   const auto& run = *static_cast<const Run*>(user_data);
   const sunrealtype* s = NV_DATA_S(y);
   sunrealtype* rate = NV_DATA_S(ydot);
+  double force = 0.0;
   if (run.phase == Phase::kCovering) {
     const double q = std::max(s[kDeflection], 0.0);
     const double root = std::sqrt(q);
+    force = run.covering_stiffness * q * root;
     rate[kDeflection] = s[kApproachRate] / (1.0 + run.series_factor * root);
-    rate[kApproachRate] = -run.covering_stiffness * q * root * run.inverse_mass;
   } else {
+    force = run.body_stiffness * s[kDeflection];
     rate[kDeflection] = s[kApproachRate];
-    rate[kApproachRate] = -run.body_stiffness * s[kDeflection] * run.inverse_mass;
   }
-  return std::isfinite(rate[kDeflection]) && std::isfinite(rate[kApproachRate]) ? 0 : 1;  // 1: recoverable
+  rate[kApproachRate] = -force * run.inverse_mass;
+  if (!run.braking) {
+    return std::isfinite(rate[kDeflection]) && std::isfinite(rate[kApproachRate]) ? 0 : 1;  // 1: recoverable
+  }
+  // m_R v_R' = -F - B, m_H v_H' = F (0 clamped): δ'' = -F/mu - a while braking; W' = B v_R.
+  const double deceleration = run.brake_on ? run.braking_m_per_s2 : 0.0;
+  rate[kApproachRate] -= deceleration;
+  rate[kRobotSpeed] = -force * run.inverse_robot_mass - deceleration;
+  rate[kBrakeWork] = run.robot_mass_kg * deceleration * s[kRobotSpeed];
+  for (int i = 0; i < kBrakingStateSize; ++i) {
+    if (!std::isfinite(rate[i])) return 1;
+  }
+  return 0;
 }
 
-int BodyRootFunctions(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user_data) {
+int BodyRootFunctions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data) {
   const auto& run = *static_cast<const Run*>(user_data);
   const sunrealtype* s = NV_DATA_S(y);
   const bool covering = run.phase == Phase::kCovering;
   g[kBottomsOut] = covering ? s[kDeflection] - run.travel_m : -1.0;
   g[kLowerEnd] = s[kDeflection] - (covering ? 0.0 : run.body_at_bottom_m);
   g[kTurn] = s[kApproachRate];
+  if (run.braking) {
+    g[kBrakeStart] = run.brake_pending ? t - run.reaction_delay_s : -1.0;
+    g[kRobotStops] = run.brake_on ? s[kRobotSpeed] : 1.0;
+  }
   return 0;
 }
 
@@ -111,18 +148,29 @@ int BodyJacobian(sunrealtype /*t*/, N_Vector y, N_Vector /*fy*/, SUNMatrix jac, 
                  N_Vector, N_Vector, N_Vector) {
   const auto& run = *static_cast<const Run*>(user_data);
   const sunrealtype* s = NV_DATA_S(y);
+  double force_slope = 0.0;  // dF/dq [N/m]
   if (run.phase == Phase::kCovering) {
     const double root = std::sqrt(std::max(s[kDeflection], run.root_floor_m));
     const double divisor = 1.0 + run.series_factor * root;
     SM_ELEMENT_D(jac, 0, 0) = -s[kApproachRate] * run.series_factor / (2.0 * root * divisor * divisor);
     SM_ELEMENT_D(jac, 0, 1) = 1.0 / divisor;
-    SM_ELEMENT_D(jac, 1, 0) = -1.5 * run.covering_stiffness * root * run.inverse_mass;
+    force_slope = 1.5 * run.covering_stiffness * root;
   } else {
     SM_ELEMENT_D(jac, 0, 0) = 0.0;
     SM_ELEMENT_D(jac, 0, 1) = 1.0;
-    SM_ELEMENT_D(jac, 1, 0) = -run.body_stiffness * run.inverse_mass;
+    force_slope = run.body_stiffness;
   }
+  SM_ELEMENT_D(jac, 1, 0) = -force_slope * run.inverse_mass;
   SM_ELEMENT_D(jac, 1, 1) = 0.0;
+  if (run.braking) {
+    for (int row = 0; row < kBrakingStateSize; ++row) {
+      for (int column = 0; column < kBrakingStateSize; ++column) {
+        if (row >= kStateSize || column >= kStateSize) SM_ELEMENT_D(jac, row, column) = 0.0;
+      }
+    }
+    SM_ELEMENT_D(jac, kRobotSpeed, kDeflection) = -force_slope * run.inverse_robot_mass;
+    SM_ELEMENT_D(jac, kBrakeWork, kRobotSpeed) = run.brake_on ? run.robot_mass_kg * run.braking_m_per_s2 : 0.0;
+  }
   return 0;
 }
 
@@ -151,7 +199,10 @@ class BodyContactRun {
         dense_output_(workspace.dense_output),
         log_(workspace.log),
         y_(N_VGetArrayPointer(workspace.state)),
-        v0_(model.scene().speed_m_per_s) {
+        v0_(model.scene().speed_m_per_s),
+        // v_R = v0 - (mu/m_R)(v0 - δ') without braking (momentum; 0 for a fixed robot's 1/m_R).
+        speed_share_(std::isinf(model.scene().robot_mass_kg) ? 0.0
+                                                             : model.reduced_mass_kg() / model.scene().robot_mass_kg) {
     SetUpRun();
     SetScales(record_ ? options.history_samples_per_contact : 0.0);
     result_.method = MethodText(options_);
@@ -162,6 +213,10 @@ class BodyContactRun {
   BodyContactResult Integrate() {
     y_[kDeflection] = 0.0;
     y_[kApproachRate] = v0_;
+    if (run_.braking) {
+      y_[kRobotSpeed] = v0_;
+      y_[kBrakeWork] = 0.0;
+    }
     Record(false);
     int flag = stepper_.BeginRun(0.0, state_);
     if (flag == kStepTaken) flag = StartInterval();
@@ -174,7 +229,7 @@ class BodyContactRun {
         continue;
       }
       if (flag != kRootFound) break;
-      std::array<int, kEventCount> found{};
+      std::array<int, kBrakingEventCount> found{};  // the braking events stay 0 without braking
       stepper_.RootInfo(found.data());
       Record(true);
       flag = OnRoot(found);
@@ -203,6 +258,16 @@ class BodyContactRun {
     run_.series_factor = 1.5 * run_.covering_stiffness / run_.body_stiffness;
     run_.travel_m = model_.covering_travel_m();
     run_.body_at_bottom_m = run_.covered ? model_.bottom_out_force_N() / run_.body_stiffness : 0.0;
+    const BodyContactScene& scene = model_.scene();
+    if (scene.robot_brakes()) {  // a finite robot mass (BodyContactModel::FromScene)
+      run_.braking = true;
+      run_.braking_m_per_s2 = scene.braking_m_per_s2;
+      run_.robot_mass_kg = scene.robot_mass_kg;
+      run_.inverse_robot_mass = 1.0 / scene.robot_mass_kg;
+      run_.reaction_delay_s = scene.reaction_delay_s;
+      run_.brake_pending = scene.reaction_delay_s > 0.0;
+      run_.brake_on = !run_.brake_pending;  // the robot moves forward at first contact
+    }
   }
 
   /// The natural scales of q in each phase and of δ' (v0), from the exact peak force: they
@@ -212,9 +277,14 @@ class BodyContactRun {
     const double approach_m = model_.ApproachAtForce(force_N);
     const double atol =
         options_.absolute_tolerance > 0.0 ? options_.absolute_tolerance : options_.relative_tolerance;
-    covering_tolerance_m_ = atol * model_.CoveringDeflectionAtForce(force_N);
-    body_tolerance_m_ = atol * force_N / run_.body_stiffness;
+    // A braking robot travels at most v0 t_d + v0²/(2a), which bounds δ and each deflection:
+    // far below the unbraked scales when a strong brake stops it early.
+    const double travel_m = run_.braking ? v0_ * run_.reaction_delay_s + v0_ * v0_ / (2.0 * run_.braking_m_per_s2)
+                                         : std::numeric_limits<double>::infinity();
+    covering_tolerance_m_ = atol * std::min(model_.CoveringDeflectionAtForce(force_N), travel_m);
+    body_tolerance_m_ = atol * std::min(force_N / run_.body_stiffness, travel_m);
     rate_tolerance_ = atol * v0_;
+    work_tolerance_J_ = atol * 0.5 * run_.robot_mass_kg * v0_ * v0_;  // the brake takes at most ½ m_R v0²
     run_.root_floor_m = 1e-12 * run_.travel_m;
     horizon_s_ = 1e3 * approach_m / v0_;  // only orients the first step (one-step mode)
     if (history_samples > 0.0) {
@@ -232,6 +302,10 @@ class BodyContactRun {
     sunrealtype* tolerance = N_VGetArrayPointer(tolerances_);
     tolerance[kDeflection] = run_.phase == Phase::kCovering ? covering_tolerance_m_ : body_tolerance_m_;
     tolerance[kApproachRate] = rate_tolerance_;
+    if (run_.braking) {
+      tolerance[kRobotSpeed] = rate_tolerance_;
+      tolerance[kBrakeWork] = work_tolerance_J_;
+    }
     int flag = stepper_.SetTolerances(options_.relative_tolerance, tolerances_);
     if (flag == kStepTaken) flag = stepper_.SetInitStep(0.0);
     return flag;
@@ -246,15 +320,29 @@ class BodyContactRun {
     return flag;
   }
 
-  int OnRoot(const std::array<int, kEventCount>& found) {
+  int OnRoot(const std::array<int, kBrakingEventCount>& found) {
     if (found[kTurn] && !turned_) Peaks();
+    // The brake's changes: the right-hand side jumps, so the integrator restarts (below, or
+    // with a phase switch found at the same time).
+    bool brake_changed = false;
+    if (found[kBrakeStart]) {
+      run_.brake_pending = false;
+      run_.brake_on = y_[kRobotSpeed] > 0.0;
+      brake_changed = true;
+    }
+    if (found[kRobotStops]) {
+      run_.brake_on = false;  // not held: the contact force may push the robot back
+      brake_changed = true;
+    }
     if (found[kBottomsOut]) return Switch(Phase::kBody, run_.body_at_bottom_m);
     if (found[kLowerEnd]) {
       if (run_.phase == Phase::kBody && run_.covered) return Switch(Phase::kCovering, run_.travel_m);
       separated_ = true;
       result_.contact_duration_s = t_;
       result_.rebound_speed_m_per_s = -y_[kApproachRate];
+      return kRootFound;
     }
+    if (brake_changed) return Switch(run_.phase, y_[kDeflection]);
     return kRootFound;
   }
 
@@ -276,6 +364,8 @@ class BodyContactRun {
         0.4 * run_.covering_stiffness * c.covering_m * c.covering_m * std::sqrt(c.covering_m);
     result_.compression_ratio = run_.covered ? (bottomed ? 1.0 : c.covering_m / run_.travel_m) : 0.0;
     result_.fully_compressed = bottomed;
+    // The brake took the rest of ½ mu v0²: the springs hold what reached them.
+    if (run_.braking) result_.energy_transferred_J = result_.body_energy_J + result_.covering_energy_J;
   }
 
   /// Records the state y_ at t_ (with a history); after a step or at a root (`interpolate`),
@@ -295,7 +385,10 @@ class BodyContactRun {
   }
   void Push(double time, const sunrealtype* s) {
     const Contact c = ContactAt(run_, s);
-    result_.history.push_back({time, c.approach_m, s[kApproachRate], c.force_N});
+    const double robot_speed =
+        run_.braking ? s[kRobotSpeed] : v0_ - speed_share_ * (v0_ - s[kApproachRate]);
+    result_.history.push_back(
+        {time, c.approach_m, s[kApproachRate], c.force_N, robot_speed, run_.braking ? s[kBrakeWork] : 0.0});
   }
 
   void Fail(SolveStatus status, std::string what) {
@@ -322,6 +415,7 @@ class BodyContactRun {
   const std::string& log_;
   sunrealtype* y_;
   const double v0_;
+  const double speed_share_;  // mu/m_R [-]
   BodyContactResult result_;
   double t_ = 0.0;
   double horizon_s_ = 0.0;
@@ -329,31 +423,44 @@ class BodyContactRun {
   double covering_tolerance_m_ = 0.0;
   double body_tolerance_m_ = 0.0;
   double rate_tolerance_ = 0.0;
+  double work_tolerance_J_ = 0.0;
   bool turned_ = false;
   bool separated_ = false;
 };
 
-/// The SUNDIALS context, the 2-entry vectors and one integrator per method, made on first use
-/// per thread and reused for every run; members are freed in reverse order (the context last).
+/// The SUNDIALS context, the state's vectors (2 entries, or 4 for a braking robot) and one
+/// integrator per method, made on first use per thread and reused for every run; members are
+/// freed in reverse order (the context last).
 struct Workspace {
   SundialsContext context;
   Run run;
-  StepperWorkspace steppers{context.get(), kStateSize, Callbacks(run)};
-  static StepperResources Callbacks(Run& run) {
+  StepperWorkspace steppers;
+  Workspace(int size, std::span<const int> directions) : steppers(context.get(), size, Callbacks(run, directions)) {}
+  static StepperResources Callbacks(Run& run, std::span<const int> directions) {
     StepperResources resources;
     resources.user_data = &run;
     resources.rhs = BodyRightHandSide;
     resources.roots = BodyRootFunctions;
-    resources.root_directions = kEventDirections;
+    resources.root_directions = directions;
     resources.jacobian = BodyJacobian;
     return resources;
   }
 };
 
+/// The workspace of a run with or without braking: the unbraked contact keeps its 2 entries.
+Workspace& WorkspaceFor(bool braking) {
+  if (braking) {
+    thread_local Workspace workspace(kBrakingStateSize, kBrakingEventDirections);
+    return workspace;
+  }
+  thread_local Workspace workspace(kStateSize, kEventDirections);
+  return workspace;
+}
+
 }  // namespace
 
 BodyContactResult SolveBodyContactTimePath(const BodyContactModel& model, const SolveOptions& options) {
-  thread_local Workspace workspace;
+  Workspace& workspace = WorkspaceFor(model.scene().robot_brakes());
   StepperWorkspace& s = workspace.steppers;
   s.log.clear();
   BodyContactRun run(model, options, s.StepperFor(options.time_path.method), workspace.run, s);

@@ -17,8 +17,12 @@ BodyContactResult PeaksAtForce(const BodyContactModel& model, double force_N);
 ///   phase 2 (bottomed out at q = 0.8 b_c, or the bare robot): q = δ_b,  q' = δ',
 ///            (δ')' = -k_H q / mu,
 /// with events at the phase switch (both ways: a restart), maximum compression (δ' = 0: the
-/// peaks, read from the state) and separation (δ = 0: duration and rebound speed). With
-/// options.record_history, (t, δ, δ', F) at every step and event and, by dense output, at
+/// peaks, read from the state) and separation (δ = 0: duration and rebound speed). A braking
+/// robot (docs/model.md §13.10) adds -a to (δ')' while the brake is on, and integrates its own
+/// speed, v_R' = -F/m_R - a, and the brake's work, W' = m_R a v_R; the brake starts at
+/// t = t_d (an event, a restart) if the robot still moves forward and stops when v_R falls
+/// through 0 (an event, a restart). With
+/// options.record_history, (t, δ, δ', F, v_R, W) at every step and event and, by dense output, at
 /// least options.history_samples_per_contact samples over the contact. Failures (step limit,
 /// integrator errors, an event not located) come back as the result's status and message,
 /// with no peaks. `options` are validated by the caller (Solve).

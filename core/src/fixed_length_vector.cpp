@@ -271,7 +271,7 @@ void SetFixedLengthKernels(N_Vector_Ops ops) {
 }  // namespace
 
 N_Vector MakeFixedLengthVector(int length, SUNContext context) {
-  if (length != 2 && length != 3 && length != 7) return nullptr;
+  if (length != 2 && length != 3 && length != 4 && length != 7) return nullptr;
   N_Vector v = N_VNew_Serial(length, context);
   if (!v) return nullptr;
   // The serial vector's fused and vector-array operations (used by CVODE's Adams history
@@ -281,6 +281,8 @@ N_Vector MakeFixedLengthVector(int length, SUNContext context) {
     SetFixedLengthKernels<2>(v->ops);
   } else if (length == 3) {
     SetFixedLengthKernels<3>(v->ops);
+  } else if (length == 4) {
+    SetFixedLengthKernels<4>(v->ops);
   } else {
     SetFixedLengthKernels<7>(v->ops);
   }

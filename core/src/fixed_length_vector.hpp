@@ -1,13 +1,14 @@
 #pragma once
-// Private: the time paths' state vectors, (q, δ') on the body-contact path, (δ, δ', e) on the
-// δ-only path and the extended path's seven entries, as SUNDIALS serial N_Vectors whose
-// operations tables are replaced by kernels written for exactly that many entries.
+// Private: the time paths' state vectors, (q, δ') on the body-contact path ((q, δ', v_R, W)
+// for a braking robot), (δ, δ', e) on the δ-only path and the extended path's seven entries,
+// as SUNDIALS serial N_Vectors whose operations tables are replaced by kernels written for
+// exactly that many entries.
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 
 namespace covopt::internal {
 
-/// A serial N_Vector of `length` entries, 2, 3 or 7 (same content layout and vector ID as
+/// A serial N_Vector of `length` entries, 2, 3, 4 or 7 (same content layout and vector ID as
 /// N_VNew_Serial, so NV_DATA_S, the dense matrix and the dense linear solver work on it
 /// unchanged) whose arithmetic operations are fixed-length kernels instead of the generic
 /// serial loops. Clones copy the operations table, so every vector an integrator makes from it

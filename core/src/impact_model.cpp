@@ -10,6 +10,7 @@
 #include <string>
 
 #include "numeric_format.hpp"
+#include "robot_reaction.hpp"
 
 namespace covopt {
 namespace {
@@ -62,13 +63,7 @@ void CheckNonNegative(const char* field, double value, double max, const char* u
 /// of line, since the paper's scene (all zero) skips it.
 [[gnu::noinline]] void CheckExtendedScene(const Scene& s) {
   CheckNonNegative("model.damping", s.model.damping_s_per_m, 1e3, "s/m", "no damping");
-  CheckNonNegative("robot.reaction_delay", s.robot.reaction_delay_s, 10.0, "s", "brake at contact");
-  CheckNonNegative("robot.braking", s.robot.braking_m_per_s2, 1e4, "m/s2", "no braking");
-  if (s.robot.braking_m_per_s2 > 0.0 && std::isinf(s.robot.mass_kg)) {
-    throw std::invalid_argument(
-        "robot.braking needs a robot that moves: robot.mass is fixed (give a finite robot.mass, "
-        "or braking 0)");
-  }
+  internal::CheckRobotReaction(s.robot.reaction_delay_s, s.robot.braking_m_per_s2, s.robot.mass_kg);
   const HeadSpec& h = s.head;
   CheckNonNegative("head.neck_stiffness", h.neck_stiffness_N_per_m, 1e9, "N/m", "no neck spring");
   CheckNonNegative("head.neck_damping", h.neck_damping_N_s_per_m, 1e7, "N*s/m", "no neck damper");
@@ -100,6 +95,20 @@ void CheckNonNegative(const char* field, double value, double max, const char* u
         "one of them)");
   }
 }
+
+}  // namespace
+
+void internal::CheckRobotReaction(double reaction_delay_s, double braking_m_per_s2, double robot_mass_kg) {
+  CheckNonNegative("robot.reaction_delay", reaction_delay_s, 10.0, "s", "brake at contact");
+  CheckNonNegative("robot.braking", braking_m_per_s2, 1e4, "m/s2", "no braking");
+  if (braking_m_per_s2 > 0.0 && std::isinf(robot_mass_kg)) {
+    throw std::invalid_argument(
+        "robot.braking needs a robot that moves: robot.mass is fixed (give a finite robot.mass, "
+        "or braking 0)");
+  }
+}
+
+namespace {
 
 void CheckScene(const Scene& s) {
   CheckPositive("robot.mass", s.robot.mass_kg, 1e6, "kg", "fixed (infinite)");

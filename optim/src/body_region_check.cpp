@@ -16,7 +16,9 @@
 #include <vector>
 
 #include <covopt/core/number_format.hpp>
+#include <covopt/core/time_integration.hpp>
 
+#include "limit_bracket.hpp"
 #include "robust_internal.hpp"
 #include "validation_internal.hpp"
 
@@ -122,13 +124,34 @@ void ApplyCrushCheck(const CandidateMaterial& material, double stress_Pa, BodyRe
 /// JudgeBodyContact on a validated model (the region's fields already in it); the scope is
 /// written only when `text` is given.
 BodyRegionJudgement Judge(const BodyContactModel& model, const materials::BodyLimits& limits,
-                          const BodyRegionOptions& options, const ScopeText* text) {
+                          const BodyRegionOptions& options, const ScopeText* text,
+                          const TimeIntegrationOptions& time_path = {}) {
   BodyRegionJudgement j;
   j.limits = limits;
-  j.contact = Solve(model);
+  if (model.scene().robot_brakes()) {
+    SolveOptions solve;  // auto: the time path, the only one for a braking robot
+    solve.time_path = time_path;
+    j.contact = Solve(model, solve);
+  } else {
+    j.contact = Solve(model);
+  }
   const DesignRule& rule = options.rule;
   const bool covered = model.has_covering();
   const BodyContactResult& c = j.contact;
+  if (!c.ok()) {  // not an answer (BodyRegionJudgement)
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    j.force_ratio = kInfinity;
+    if (covered || model.scene().contact_area_m2 > 0.0) j.pressure_ratio = kInfinity;
+    j.governing = BodyLimitKind::kNone;
+    j.governing_ratio = kInfinity;
+    j.margin = -kInfinity;
+    j.admissible = false;
+    if (text) {
+      j.scope = ScopeOf(*text, rule, covered, j.pressure_ratio.has_value(), j.crush_check) +
+                "; no verdict: the time path failed (" + std::string(ToString(c.status)) + ": " + c.message + ")";
+    }
+    return j;
+  }
   j.force_ratio = c.peak_force_N / limits.force_N;
   if (c.peak_pressure_Pa) j.pressure_ratio = *c.peak_pressure_Pa / limits.pressure_Pa;
   j.compression_ratio = c.compression_ratio;
@@ -180,9 +203,35 @@ BodyContactScene AtSpeed(BodyContactScene scene, double speed_m_per_s) {
   return scene;
 }
 
+/// "chest (sternum), transient: <what> (<the limits>)", in one allocation.
+std::string RegionMessage(const materials::BodyLimits& limits, const ScopeText& text, std::string_view what) {
+  std::string m;
+  m.reserve(limits.region->name.size() + limits.area->name.size() + what.size() + text.description.size() + 24);
+  m.append(limits.region->name).append(" (").append(limits.area->name).append("), ");
+  m.append(ToString(limits.contact)).append(": ").append(what);
+  m.append(" (").append(text.description).append(")");
+  return m;
+}
+
+/// A covering of unknown compressive strength that the rule refuses: no speed is safe.
+bool RefusedForUnknownStrength(const BodyContactScene& scene, const BodyRegionOptions& options) {
+  return scene.has_covering() && options.material &&
+         options.material->crush_behaviour == materials::CrushBehaviour::kUnknown &&
+         options.rule.refuses_unknown_strength();
+}
+
+BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, const materials::BodyLimits& limits,
+                                      const BodyRegionOptions& options, const ScopeText& text,
+                                      const TimeIntegrationOptions& time_path = {});
+BodyRegionSpeedLimit BrakedSpeedLimit(const BodyContactScene& region_scene, const materials::BodyLimits& limits,
+                                      const BodyRegionOptions& options, const ScopeText& text,
+                                      const TimeIntegrationOptions& time_path);
+
 /// MaxSafeSpeed with the scene already carrying the region, and the scope's text given.
 BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, const materials::BodyLimits& limits,
-                                const BodyRegionOptions& options, const ScopeText& text) {
+                                      const BodyRegionOptions& options, const ScopeText& text,
+                                      const TimeIntegrationOptions& time_path) {
+  if (region_scene.robot_brakes()) return BrakedSpeedLimit(region_scene, limits, options, text, time_path);
   const BodyContactModel model = BodyContactModel::FromScene(AtSpeed(region_scene, 1.0));
   const DesignRule& rule = options.rule;
   const double sf = rule.safety_factor;
@@ -203,25 +252,16 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
     const double travel = model.covering_travel_m() / sf;  // at SF 1: F_b itself (inclusive)
     consider(model.covering_stiffness() * travel * std::sqrt(travel), BodyLimitKind::kFullCompression);
   }
-  bool refused = false;
+  const bool refused = RefusedForUnknownStrength(model.scene(), options);
   if (covered && options.material) {
     const CandidateMaterial& m = *options.material;
     if (m.crush_behaviour == materials::CrushBehaviour::kCrushes && !rule.crushing_allowed) {
       consider(ForceAtPressure(model, m.compressive_strength_Pa / sf), BodyLimitKind::kCrush);
     }
-    refused = m.crush_behaviour == materials::CrushBehaviour::kUnknown && rule.refuses_unknown_strength();
   }
 
   BodyRegionSpeedLimit out;
-  // "chest (sternum), transient: <what> (<the limits>)", in one allocation.
-  const auto message = [&](std::string_view what) {
-    std::string m;
-    m.reserve(limits.region->name.size() + limits.area->name.size() + what.size() + text.description.size() + 24);
-    m.append(limits.region->name).append(" (").append(limits.area->name).append("), ");
-    m.append(ToString(limits.contact)).append(": ").append(what);
-    m.append(" (").append(text.description).append(")");
-    return m;
-  };
+  const auto message = [&](std::string_view what) { return RegionMessage(limits, text, what); };
   double speed = force > 0.0 ? model.SpeedAtPeakForce(force) : 0.0;
   if (!refused && speed > kMaxSpeed_m_per_s) {
     out.status = SpeedLimitStatus::kSafeUpToSearchLimit;
@@ -267,6 +307,106 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
   return out;
 }
 
+/// A braking robot's limit (body_region_check.hpp): bracketed on the time path (limit_bracket.hpp)
+/// from just below the unbraked closed-form limit, which bounds it from below, and narrowed by
+/// regula falsi on log(SF × governing ratio).
+BodyRegionSpeedLimit BrakedSpeedLimit(const BodyContactScene& region_scene, const materials::BodyLimits& limits,
+                                      const BodyRegionOptions& options, const ScopeText& text,
+                                      const TimeIntegrationOptions& time_path) {
+  BodyContactScene unbraked_scene = region_scene;
+  unbraked_scene.braking_m_per_s2 = 0.0;
+  const BodyRegionSpeedLimit unbraked = RegionSpeedLimit(unbraked_scene, limits, options, text);
+  // Refused at any speed whatever the brake does: the unbraked answer is the answer.
+  if (RefusedForUnknownStrength(region_scene, options)) return unbraked;
+
+  const DesignRule& rule = options.rule;
+  const bool covered = region_scene.has_covering();
+  int runs = 0;
+  const auto judge = [&](double speed) {
+    ++runs;
+    return Judge(BodyContactModel::FromScene(AtSpeed(region_scene, speed)), limits, options, nullptr, time_path);
+  };
+  // At SF 1 the covering's travel binds where it bottoms out, beyond which its ratio stays 1
+  // and the fully-compressed flag decides: the narrowing is then steered by the approach
+  // against the approach at the bottoming out, log(δ_max/δ_b), smooth across it.
+  const BodyContactModel unit_model = BodyContactModel::FromScene(AtSpeed(region_scene, 1.0));
+  const bool travel_at_bottom = covered && rule.compression_counts() && rule.safety_factor == 1.0;
+  const double bottom_approach_m = travel_at_bottom ? unit_model.ApproachAtForce(unit_model.bottom_out_force_N()) : 0.0;
+  const auto evaluate = [&](double speed) {
+    internal::LimitProbe<BodyRegionJudgement> e;
+    e.judgement = judge(speed);
+    e.failed = !e.judgement.contact.ok();
+    e.admissible = e.judgement.admissible;
+    if (e.failed) return e;
+    const BodyRegionJudgement& j = e.judgement;
+    const double scaled = rule.safety_factor * j.governing_ratio;
+    if (travel_at_bottom && (j.governing == BodyLimitKind::kFullCompression || j.contact.fully_compressed)) {
+      e.excess = std::log(j.contact.max_approach_m / bottom_approach_m);
+    } else if (scaled > 0.0 && (e.admissible || scaled > 1.0)) {
+      e.excess = std::log(scaled);
+    }
+    return e;
+  };
+  // Every speed up to the unbraked limit is safe (braking only lowers the peaks): the scan
+  // starts just below it, where the time path's own error cannot tip the verdict; if even
+  // that is not safe (or there is no unbraked limit), it starts at the model's lowest speed.
+  internal::LimitBracket<BodyRegionJudgement> found;
+  bool searched = false;
+  if (unbraked.status == SpeedLimitStatus::kSafeUpToSearchLimit) {
+    internal::LimitProbe<BodyRegionJudgement> top = evaluate(kMaxSpeed_m_per_s);
+    if (top.failed || top.admissible) {
+      found.status = top.failed ? SpeedLimitStatus::kEvaluationFailed : SpeedLimitStatus::kSafeUpToSearchLimit;
+      found.value = top.failed ? 0.0 : kMaxSpeed_m_per_s;
+      found.failed_at = top.failed ? kMaxSpeed_m_per_s : 0.0;
+      found.at = std::move(top.judgement);
+      searched = true;
+    }
+  } else if (unbraked.status == SpeedLimitStatus::kLimited) {
+    const double lowest = unbraked.max_safe_speed_m_per_s * (1.0 - 1e-6);
+    if (lowest > kMinSpeed_m_per_s) {
+      found = internal::BracketLimit<BodyRegionJudgement>(lowest, kMaxSpeed_m_per_s, evaluate);
+      searched = found.status != SpeedLimitStatus::kNoSafeValue;
+    }
+  }
+  if (!searched) found = internal::BracketLimit<BodyRegionJudgement>(kMinSpeed_m_per_s, kMaxSpeed_m_per_s, evaluate);
+
+  BodyRegionSpeedLimit out;
+  out.time_path_runs = runs;
+  out.status = found.status;
+  const std::string braking = "braking " + FormatSignificant(region_scene.braking_m_per_s2, 4) + " m/s² after " +
+                              FormatSignificant(region_scene.reaction_delay_s * 1e3, 4) + " ms (time path)";
+  switch (found.status) {
+    case SpeedLimitStatus::kLimited:
+      out.max_safe_speed_m_per_s = found.value;
+      out.limited_by = found.unsafe_at.governing;
+      out.message = RegionMessage(limits, text,
+                                  FormatSignificant(found.value, 6) + " m/s, limited by " +
+                                      std::string(ToString(out.limited_by)) + ", " + braking);
+      break;
+    case SpeedLimitStatus::kSafeUpToSearchLimit:
+      out.max_safe_speed_m_per_s = kMaxSpeed_m_per_s;
+      out.limited_by = BodyLimitKind::kNone;
+      out.message = RegionMessage(limits, text, "safe up to the model's 100 m/s, " + braking);
+      break;
+    case SpeedLimitStatus::kNoSafeValue:
+      out.limited_by = found.at.governing;
+      out.message = RegionMessage(limits, text,
+                                  "no safe speed, unsafe even at 1e-06 m/s (" + std::string(ToString(out.limited_by)) +
+                                      "), " + braking);
+      break;
+    case SpeedLimitStatus::kEvaluationFailed:
+      out.limited_by = BodyLimitKind::kNone;
+      out.message = RegionMessage(limits, text,
+                                  "no answer: the time path failed at " + FormatSignificant(found.failed_at, 6) +
+                                      " m/s (" + std::string(ToString(found.at.contact.status)) + ": " +
+                                      found.at.contact.message + "), " + braking);
+      break;
+  }
+  out.at_limit = std::move(found.at);
+  out.at_limit.scope = ScopeOf(text, rule, covered, out.at_limit.pressure_ratio.has_value(), out.at_limit.crush_check);
+  return out;
+}
+
 }  // namespace
 
 std::string_view ToString(BodyLimitKind kind) noexcept {
@@ -294,16 +434,27 @@ BodyContactScene WithRegion(BodyContactScene scene, const materials::BodyLimits&
 
 BodyRegionJudgement JudgeBodyContact(const BodyContactScene& scene, const materials::BodyLimits& limits,
                                      const BodyRegionOptions& options) {
+  return JudgeBodyContact(scene, limits, options, TimeIntegrationOptions{});
+}
+
+BodyRegionJudgement JudgeBodyContact(const BodyContactScene& scene, const materials::BodyLimits& limits,
+                                     const BodyRegionOptions& options, const TimeIntegrationOptions& time_path) {
   ValidateOptions(options);
   const BodyContactModel model = BodyContactModel::FromScene(WithRegion(scene, limits));
   const ScopeText text = ScopeTextOf(limits, options.rule);
-  return Judge(model, limits, options, &text);
+  return Judge(model, limits, options, &text, time_path);
 }
 
 BodyRegionSpeedLimit MaxSafeSpeed(const BodyContactScene& scene, const materials::BodyLimits& limits,
                                   const BodyRegionOptions& options) {
+  return MaxSafeSpeed(scene, limits, options, TimeIntegrationOptions{});
+}
+
+BodyRegionSpeedLimit MaxSafeSpeed(const BodyContactScene& scene, const materials::BodyLimits& limits,
+                                  const BodyRegionOptions& options, const TimeIntegrationOptions& time_path) {
   ValidateOptions(options);
-  return RegionSpeedLimit(WithRegion(scene, limits), limits, options, ScopeTextOf(limits, options.rule));
+  if (scene.robot_brakes()) ValidateTimeIntegrationOptions(time_path, "time_path.");
+  return RegionSpeedLimit(WithRegion(scene, limits), limits, options, ScopeTextOf(limits, options.rule), time_path);
 }
 
 std::optional<double> BodyRegionSpeedLimitRow::gain() const noexcept {
@@ -314,7 +465,15 @@ std::optional<double> BodyRegionSpeedLimitRow::gain() const noexcept {
 std::vector<BodyRegionSpeedLimitRow> BodyRegionSpeedLimitTable(const BodyContactScene& scene,
                                                                std::span<const materials::BodyLimits> regions,
                                                                const BodyRegionOptions& options) {
+  return BodyRegionSpeedLimitTable(scene, regions, options, TimeIntegrationOptions{});
+}
+
+std::vector<BodyRegionSpeedLimitRow> BodyRegionSpeedLimitTable(const BodyContactScene& scene,
+                                                               std::span<const materials::BodyLimits> regions,
+                                                               const BodyRegionOptions& options,
+                                                               const TimeIntegrationOptions& time_path) {
   ValidateOptions(options);
+  if (scene.robot_brakes()) ValidateTimeIntegrationOptions(time_path, "time_path.");
   BodyContactScene bare_scene = scene;
   bare_scene.covering.thickness_m = 0.0;
   std::vector<BodyRegionSpeedLimitRow> rows;
@@ -323,8 +482,8 @@ std::vector<BodyRegionSpeedLimitRow> BodyRegionSpeedLimitTable(const BodyContact
     const ScopeText text = ScopeTextOf(limits, options.rule);
     BodyRegionSpeedLimitRow row;
     row.limits = limits;
-    row.bare = RegionSpeedLimit(WithRegion(bare_scene, limits), limits, options, text);
-    if (scene.has_covering()) row.covered = RegionSpeedLimit(WithRegion(scene, limits), limits, options, text);
+    row.bare = RegionSpeedLimit(WithRegion(bare_scene, limits), limits, options, text, time_path);
+    if (scene.has_covering()) row.covered = RegionSpeedLimit(WithRegion(scene, limits), limits, options, text, time_path);
     rows.push_back(std::move(row));
   }
   return rows;

@@ -18,6 +18,8 @@
 #include <covopt/core/quantity.hpp>
 #include <covopt/core/time_integration.hpp>
 
+#include "limit_bracket.hpp"
+
 namespace covopt::optim {
 namespace {
 
@@ -268,8 +270,8 @@ ImpactJudgement NudgeDown(double& value, const Scene& scene, const Judge& judge,
   return e;
 }
 
-/// A limit bracketed on the oracle (speed_limit.hpp): the first inadmissible point of a
-/// geometric scan upward from `lowest`, bisected against the last admissible one.
+/// A limit bracketed on the oracle (speed_limit.hpp, limit_bracket.hpp), with the criterion
+/// that binds it.
 struct BracketedLimit {
   SpeedLimitStatus status = SpeedLimitStatus::kLimited;
   double value = 0.0;
@@ -278,70 +280,26 @@ struct BracketedLimit {
   double failed_at = 0.0;  ///< the value whose evaluation failed (kEvaluationFailed)
 };
 
-/// Grid points per decade of the scan, and the bisection's relative resolution.
-constexpr double kScanPointsPerDecade = 4.0;
-constexpr double kBisectionResolution = 1e-10;
-
 template <class Setter>
 BracketedLimit BracketOnOracle(const Judge& judge, const Scene& base, double lowest, double highest, Setter set) {
-  auto at = [&](double value) {
-    Scene probe = base;
-    set(probe, value);
-    return judge(probe);
-  };
+  const internal::LimitBracket<ImpactJudgement> found =
+      internal::BracketLimit<ImpactJudgement>(lowest, highest, [&](double value) {
+        Scene probe = base;
+        set(probe, value);
+        internal::LimitProbe<ImpactJudgement> e;
+        e.judgement = judge(probe);
+        e.failed = e.judgement.failed;
+        e.admissible = e.judgement.admissible;
+        return e;
+      });
   BracketedLimit out;
-  // A failed evaluation says nothing about safety: the search stops and reports it.
-  auto failed = [&](const ImpactJudgement& e, double value) {
-    if (!e.failed) return false;
-    out.status = SpeedLimitStatus::kEvaluationFailed;
-    out.failed_at = value;
-    return true;
-  };
-  const ImpactJudgement bottom = at(lowest);
-  if (failed(bottom, lowest)) return out;
-  if (!bottom.admissible) {
-    out.status = SpeedLimitStatus::kNoSafeValue;
-    out.by = judge.Violated(bottom);
-    out.at = bottom;
-    return out;
+  out.status = found.status;
+  out.value = found.value;
+  if (found.status != SpeedLimitStatus::kEvaluationFailed) out.at = found.at;  // else the ratios stay 0
+  out.failed_at = found.failed_at;
+  if (found.status == SpeedLimitStatus::kLimited || found.status == SpeedLimitStatus::kNoSafeValue) {
+    out.by = judge.Violated(found.unsafe_at);
   }
-  const int points = std::max(2, static_cast<int>(std::ceil(kScanPointsPerDecade * std::log10(highest / lowest))));
-  double safe = lowest, unsafe = 0.0;
-  ImpactJudgement safe_at = bottom, unsafe_at;
-  for (int i = 1; i <= points; ++i) {
-    const double value = i == points ? highest : lowest * std::pow(highest / lowest, static_cast<double>(i) / points);
-    const ImpactJudgement e = at(value);
-    if (failed(e, value)) return out;
-    if (!e.admissible) {
-      unsafe = value;
-      unsafe_at = e;
-      break;
-    }
-    safe = value;
-    safe_at = e;
-  }
-  if (unsafe == 0.0) {
-    out.status = SpeedLimitStatus::kSafeUpToSearchLimit;
-    out.value = highest;
-    out.at = safe_at;
-    return out;
-  }
-  while (unsafe / safe - 1.0 > kBisectionResolution) {
-    const double mid = std::sqrt(safe * unsafe);
-    const ImpactJudgement e = at(mid);
-    if (failed(e, mid)) return out;
-    if (e.admissible) {
-      safe = mid;
-      safe_at = e;
-    } else {
-      unsafe = mid;
-      unsafe_at = e;
-    }
-  }
-  out.status = SpeedLimitStatus::kLimited;
-  out.value = safe;
-  out.at = safe_at;
-  out.by = judge.Violated(unsafe_at);
   return out;
 }
 

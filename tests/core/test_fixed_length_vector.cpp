@@ -1,6 +1,6 @@
 // The time paths' state vectors (core/src/fixed_length_vector.hpp, private to core): every
-// fixed-length kernel gives the serial N_Vector's result to the bit, for the δ-only path's 3
-// entries and the extended path's 7, including the serial kernels' special cases and the
+// fixed-length kernel gives the serial N_Vector's result to the bit, for the body contact's 2
+// (4 braking), the δ-only path's 3 entries and the extended path's 7, including the serial kernels' special cases and the
 // aliasing the integrators use (z = x_0 in place, z among the summed vectors).
 #include <sundials/sundials_context.h>
 
@@ -78,7 +78,7 @@ void CheckSame(N_Vector fixed, N_Vector serial) {
 TEST_CASE("Only the time paths' lengths have fixed-length vectors", "[time][vector]") {
   SUNContext context = nullptr;
   SUNContext_Create(nullptr, &context);
-  for (const int length : {1, 4, 8}) CHECK(MakeFixedLengthVector(length, context) == nullptr);
+  for (const int length : {1, 5, 8}) CHECK(MakeFixedLengthVector(length, context) == nullptr);
   N_Vector v = MakeFixedLengthVector(7, context);
   REQUIRE(v != nullptr);
   CHECK(N_VGetLength(v) == 7);
@@ -88,7 +88,7 @@ TEST_CASE("Only the time paths' lengths have fixed-length vectors", "[time][vect
 }
 
 TEST_CASE("Fixed-length kernels equal the serial ones to the bit", "[time][vector]") {
-  const int length = GENERATE(2, 3, 7);
+  const int length = GENERATE(2, 3, 4, 7);
   CAPTURE(length);
   Pair pair(length);
   REQUIRE(pair.made());

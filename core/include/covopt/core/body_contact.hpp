@@ -70,7 +70,18 @@ struct BodyContactScene {
   double contact_area_m2 = 0.0;
   /// The covering is fully compressed at this fraction of its thickness [-], in (0, 1].
   double full_compression_fraction = 0.8;
+  /// The robot's reaction, as the head scene's (RobotSpec, docs/model.md §10.2 and §13.10): from
+  /// this long after first contact [s], in [0, 10], the robot brakes with `braking_m_per_s2`
+  /// while it still moves forward.
+  double reaction_delay_s = 0.0;
+  /// Braking deceleration [m/s²], in [0, 1e4]: a force m_R a against the robot's motion once
+  /// the reaction delay has passed, until the robot stops (it is not held there). 0 (default):
+  /// the robot does not brake. Needs a robot that moves (finite mass). A braking robot has no
+  /// energy integral: only the time path answers it.
+  double braking_m_per_s2 = 0.0;
   bool has_covering() const noexcept { return covering.thickness_m > 0.0; }
+  /// The robot brakes after its reaction delay (braking > 0).
+  bool robot_brakes() const noexcept { return braking_m_per_s2 > 0.0; }
 };
 
 /// A validated, immutable BodyContactScene with the derived constants and the force law.
@@ -86,7 +97,8 @@ class BodyContactModel {
   const BodyContactScene& scene() const noexcept { return scene_; }
   /// mu = 1/(1/m_R + 1/m_H) [kg]; m_H = inf when clamped.
   double reduced_mass_kg() const noexcept { return reduced_mass_kg_; }
-  /// ½ mu v² [J]: the energy the contact stores at its peak (transferred to the springs).
+  /// ½ mu v² [J]: the energy the contact stores at its peak (transferred to the springs); an
+  /// upper bound of it for a braking robot (the brake takes part of it).
   double impact_energy_J() const noexcept { return impact_energy_J_; }
   bool has_covering() const noexcept { return scene_.has_covering(); }
   /// K_c [N/m^1.5]; 0 without a covering.
@@ -133,6 +145,12 @@ struct BodyContactSample {
   double approach_m = 0.0;              ///< total approach δ = δ_c + δ_b [m]
   double approach_rate_m_per_s = 0.0;   ///< δ' [m/s]
   double force_N = 0.0;                 ///< contact force [N]
+  /// The robot's own speed v_R [m/s], in the frame where the body region starts at rest (the
+  /// region's speed is v_R - δ'; 0 when clamped). Without braking it follows from momentum,
+  /// v_R = v0 - (mu/m_R)(v0 - δ'); a braking robot's is integrated.
+  double robot_speed_m_per_s = 0.0;
+  /// The work the brake has taken out so far [J]: ∫ m_R a v_R dt; 0 without braking.
+  double braking_work_J = 0.0;
 };
 
 /// The peaks of one robot–body-region contact.
@@ -144,7 +162,9 @@ struct BodyContactResult {
   /// e.g. "time path (arkode-erk54, rtol 1e-08)".
   std::string method;
   double reduced_mass_kg = 0.0;          ///< mu [kg]
-  double energy_transferred_J = 0.0;     ///< ½ mu v², stored at the peak [J]
+  /// The energy the springs store at the peak [J]: ½ mu v² without braking; less for a braking
+  /// robot (body_energy_J + covering_energy_J, the brake took the rest).
+  double energy_transferred_J = 0.0;
   double peak_force_N = 0.0;             ///< F_max [N]
   /// p_max [Pa]: the covering's Hertz peak pressure, or F_max/A bare with an area; empty bare
   /// without a contact area (not evaluated).
@@ -175,8 +195,12 @@ struct BodyContactResult {
 /// Solves one body-region contact. kAuto and kExact take the exact path (a record_history
 /// takes the time path under kAuto and is refused under kExact); kTimePath integrates
 /// mu δ'' = -F(δ) with SUNDIALS (SolveOptions::time_path), stopping at the covering's
-/// bottoming out to restart, at the peak (δ' = 0) and at separation.
-/// @throws std::invalid_argument for a scene field or an option out of range (naming it).
+/// bottoming out to restart, at the peak (δ' = 0) and at separation. A braking robot
+/// (BodyContactScene::robot_brakes) has no energy integral: kAuto takes the time path, which
+/// adds the brake m_R a to the robot's motion after the reaction delay (restarting where the
+/// brake starts and where the robot stops), and kExact is refused.
+/// @throws std::invalid_argument for a scene field or an option out of range (naming it), or
+///         path exact on a braking robot.
 BodyContactResult Solve(const BodyContactModel& model, const SolveOptions& options = {});
 /// Validates `scene` (BodyContactModel::FromScene) and solves it.
 BodyContactResult Solve(const BodyContactScene& scene, const SolveOptions& options = {});

@@ -19,6 +19,13 @@
 /// balance (F_lim/SF; the force at which p_max reaches p_lim/SF or strength/SF; the force at
 /// δ_c = 0.8 b_c/SF), so v_max = min over the counted limits of SpeedAtPeakForce(F*), in
 /// closed form. Bare robot: F_lim / sqrt(mu k_H) (Annex A).
+///
+/// A braking robot (BodyContactScene::robot_brakes, docs/model.md §13.10) has no energy
+/// balance: its contacts are judged on the time path, and its speed limit is bracketed there
+/// (speed_limit.hpp's scan and narrowing), starting just below the unbraked closed-form limit,
+/// which bounds it from below (braking only lowers the peaks), and narrowed by regula falsi on
+/// the governing ratio: about 10 time-path runs, well under 1 ms (bench/bench_body_region_check.cpp),
+/// so the audit can call it per point-sample where the unbraked bound could govern.
 
 #include <optional>
 #include <span>
@@ -67,10 +74,13 @@ bool BareRobotLacksContactArea(const BodyContactScene& scene) noexcept;
 /// `scene` with the region's k_H, m_H and contact type from `limits`.
 BodyContactScene WithRegion(BodyContactScene scene, const materials::BodyLimits& limits);
 
-/// One contact judged against one region's limits.
+/// One contact judged against one region's limits. For a braking robot the contact is the
+/// time path's; if that run failed (contact.ok() false) the judgement is not an answer:
+/// governing kNone; force_ratio, governing_ratio (and pressure_ratio where the pressure is
+/// evaluated) +inf; margin -inf; not admissible; and the scope says why.
 struct BodyRegionJudgement {
   materials::BodyLimits limits;
-  BodyContactResult contact;   ///< the exact path's peaks
+  BodyContactResult contact;   ///< the exact path's peaks (the time path's for a braking robot)
   double force_ratio = 0.0;    ///< F_max / F_lim [-]
   /// p_max / p_lim [-]; empty when the pressure is not evaluated (bare robot, no area).
   std::optional<double> pressure_ratio;
@@ -94,11 +104,19 @@ struct BodyRegionJudgement {
 BodyRegionJudgement JudgeBodyContact(const BodyContactScene& scene,
                                      const materials::BodyLimits& limits,
                                      const BodyRegionOptions& options = {});
+/// JudgeBodyContact with the time path's integrator, tolerances and step limit for a braking
+/// robot (the only path that answers it; not read otherwise). The overloads without it use
+/// TimeIntegrationOptions{} (ERK 5(4), rtol 1e-8).
+/// @throws std::invalid_argument as JudgeBodyContact, or naming a time_path option.
+BodyRegionJudgement JudgeBodyContact(const BodyContactScene& scene, const materials::BodyLimits& limits,
+                                     const BodyRegionOptions& options, const TimeIntegrationOptions& time_path);
 
 /// The largest speed safe against one region (every lower speed is safe too).
 struct BodyRegionSpeedLimit {
   /// kLimited, kSafeUpToSearchLimit (above the model's 100 m/s; the value is 100), or
-  /// kNoSafeValue (a material that crushes or bottoms out at any speed cannot; 0).
+  /// kNoSafeValue (a material that crushes or bottoms out at any speed cannot; 0). For a
+  /// braking robot also kEvaluationFailed: a time-path run the search needed failed, so there
+  /// is no answer (the value is 0 and the message names the speed and the failure).
   SpeedLimitStatus status = SpeedLimitStatus::kLimited;
   double max_safe_speed_m_per_s = 0.0;  ///< [m/s]
   BodyLimitKind limited_by = BodyLimitKind::kNone;
@@ -106,14 +124,20 @@ struct BodyRegionSpeedLimit {
   BodyRegionJudgement at_limit;
   /// One sentence: "chest (sternum), transient: 0.626 m/s, limited by force (ISO/TS 15066 ...)".
   std::string message;
+  /// The time-path runs a braking robot's limit took; 0 in closed form.
+  int time_path_runs = 0;
 };
 
 /// The largest safe speed of `scene`'s robot and covering against `limits` (scene's speed is
-/// ignored), in closed form on the energy balance.
+/// ignored), in closed form on the energy balance; bracketed on the time path for a braking
+/// robot (see the file comment: about 10 runs).
 /// @throws std::invalid_argument as JudgeBodyContact.
 BodyRegionSpeedLimit MaxSafeSpeed(const BodyContactScene& scene,
                                   const materials::BodyLimits& limits,
                                   const BodyRegionOptions& options = {});
+/// MaxSafeSpeed with the time path's options for a braking robot (JudgeBodyContact's overload).
+BodyRegionSpeedLimit MaxSafeSpeed(const BodyContactScene& scene, const materials::BodyLimits& limits,
+                                  const BodyRegionOptions& options, const TimeIntegrationOptions& time_path);
 
 /// One row of the all-regions table: one area of one region, bare and with the covering.
 struct BodyRegionSpeedLimitRow {
@@ -131,6 +155,11 @@ struct BodyRegionSpeedLimitRow {
 std::vector<BodyRegionSpeedLimitRow> BodyRegionSpeedLimitTable(
     const BodyContactScene& scene, std::span<const materials::BodyLimits> regions,
     const BodyRegionOptions& options = {});
+/// The table with the time path's options for a braking robot (JudgeBodyContact's overload).
+std::vector<BodyRegionSpeedLimitRow> BodyRegionSpeedLimitTable(const BodyContactScene& scene,
+                                                               std::span<const materials::BodyLimits> regions,
+                                                               const BodyRegionOptions& options,
+                                                               const TimeIntegrationOptions& time_path);
 
 /// Whose criteria judge the head among the body regions: "skin injury, Park et al. 2011".
 std::string_view HeadCriteriaName() noexcept;
