@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
+#include <queue>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -97,8 +99,26 @@ class RegionLimits {
     const bool covered = covering.covering.thickness_m > 0.0;
     BrakedLimit out;
     if (!is_head(r)) {
-      // Refused by ValidateSetup until the braked body-region model is merged.
-      throw std::logic_error("audit: braking against a body region is not available");
+      BodyContactScene scene;
+      scene.robot_mass_kg = mass_kg;
+      scene.speed_m_per_s = 1.0;
+      scene.robot_radius_m = radius_m;
+      scene.covering = covering.covering;
+      scene.contact_area_m2 = setup_.contact_area_m2;
+      scene.reaction_delay_s = setup_.reaction_delay_s;
+      scene.braking_m_per_s2 = setup_.braking_m_per_s2;
+      const BodyRegionSpeedLimit limit =
+          MaxSafeSpeed(scene, setup_.regions[r], BodyRegionOptions{rule, covered ? covering.material : std::nullopt});
+      out.binding = limit.limited_by;
+      out.max_safe_speed_m_per_s = limit.max_safe_speed_m_per_s;
+      if (limit.status == SpeedLimitStatus::kSafeUpToSearchLimit) {
+        out.max_safe_speed_m_per_s = kModelMaxSpeed_m_per_s;
+        out.binding = BodyLimitKind::kNone;
+      } else if (limit.status == SpeedLimitStatus::kEvaluationFailed) {
+        out.failed = true;
+        out.message = limit.message;
+      }
+      return out;
     }
     const std::optional<CandidateMaterial>& material = covering.material;
     if (covered && material && material->crush_behaviour == materials::CrushBehaviour::kUnknown &&
@@ -292,10 +312,6 @@ void ValidateSetup(const AuditSetup& s) {
           "reaction_delay_s must be in [0, 10] s (got " + Number(s.reaction_delay_s) + ")");
   Require(std::isfinite(s.braking_m_per_s2) && s.braking_m_per_s2 >= 0.0 && s.braking_m_per_s2 <= 1e4,
           "braking_m_per_s2 must be in [0, 1e4] m/s² (got " + Number(s.braking_m_per_s2) + ")");
-  Require(s.braking_m_per_s2 == 0.0 || s.regions.empty(),
-          "braking_m_per_s2: braking against the body regions is not in this build yet (the braked body-region "
-          "model is not merged); audit the head alone with braking, or the regions without it (an upper bound: "
-          "braking only takes energy out)");
   Require(std::isfinite(s.rule.safety_factor) && s.rule.safety_factor >= 1.0 && s.rule.safety_factor <= 100.0,
           "rule.safety_factor must be in [1, 100] (got " + Number(s.rule.safety_factor) + ")");
   ValidateCovering(s.covering, "covering");
@@ -496,56 +512,85 @@ Pass RunPass(const AuditSetup& setup, const robot::JointTrajectory& trajectory, 
 
 /// What the branch and bound of a braking robot reports.
 struct BrakingOutcome {
-  std::size_t evaluations = 0;           ///< braked limits computed (time path)
+  std::size_t evaluations = 0;             ///< braked limits computed (time path)
   std::size_t fixed_direction_points = 0;  ///< point-samples along a fixed direction: unbraked
-  std::optional<std::string> failure;    ///< the first time-path failure, with its cell
+  std::size_t non_monotone_cells = 0;      ///< cells whose braked limit rose with the mass
+  std::optional<std::string> failure;      ///< the first time-path failure
 };
 
 /// A braking robot (docs/model.md §14.4): replaces every cell's unbraked governing
-/// point-sample by the braked one. The unbraked ratio bounds the braked ratio from above, so
-/// per cell: a lower bound from the braked ratio at the unbraked governing point-sample; a
-/// second pass collects the point-samples whose unbraked ratio exceeds it; these are judged
-/// braked in decreasing order of their unbraked ratio until that bound is no larger than the
-/// best braked ratio found. The result is the braked governing ratio, exactly.
+/// point-sample by the braked one, exactly, judging as few point-samples braked as it can.
+/// Two upper bounds of a point-sample's braked ratio v/(SF v_b(m)): its unbraked ratio
+/// (braking only takes energy out), and v/(SF v_b(m')) for any mass m' >= m judged braked at the
+/// same radius (a heavier robot is no safer: v_b does not rise with the mass; where a cell's
+/// judged masses contradict that, only the first bound is used there, and a warning says so).
+/// Per cell: the braked ratio at the unbraked governing point-sample is a lower bound; a second
+/// pass collects the point-samples whose unbraked ratio exceeds it; then, best bound first, a
+/// point-sample is judged braked until the best bound is a judged ratio.
 BrakingOutcome ApplyBraking(const AuditSetup& setup, const robot::JointTrajectory& trajectory,
                             const RegionLimits& regions, const std::vector<LinkPlan>& plans,
                             std::vector<AuditCell>& cells) {
   const std::size_t n_regions = regions.size();
   const double sf = setup.rule.safety_factor;
   BrakingOutcome outcome;
-  // The braked ratio of cell k at one point-sample; false when the time path failed.
-  const auto judge = [&](std::size_t k, std::size_t point, double v, double mass, AuditCell& into) {
-    const LinkPlan& plan = plans[cells[k].link];
-    const std::size_t r = cells[k].region;
-    if (!std::isfinite(mass)) {  // a fixed direction cannot brake: its unbraked ratio stands
-      ++outcome.fixed_direction_points;
-      return true;
-    }
+  struct Judged {
+    double max_safe_speed_m_per_s = 0.0;
+    BodyLimitKind binding = BodyLimitKind::kNone;
+    LimitingCriterion head_criterion = LimitingCriterion::kNone;
+  };
+  using Key = std::pair<std::uint32_t, double>;  // (radius index, mass [kg])
+  struct Candidate {
+    double unbraked_ratio = 0.0;
+    std::uint32_t radius = 0;
+    AuditCell cell;  ///< the point-sample, with its unbraked v_max, ratio and binding
+  };
+
+  // 1. Each cell's unbraked governing point-sample is the first candidate.
+  std::vector<std::vector<Candidate>> candidates(cells.size());
+  std::vector<double> lower_bound(cells.size(), 0.0);
+  std::vector<std::map<Key, Judged>> judged(cells.size());
+  std::vector<bool> monotone(cells.size(), true);
+  // The braked limit of cell k at (radius, mass), judged once; nullptr when the time path failed.
+  const auto judge = [&](std::size_t k, std::uint32_t radius, double mass) -> const Judged* {
+    std::map<Key, Judged>& known = judged[k];
+    const Key key{radius, mass};
+    if (const auto it = known.find(key); it != known.end()) return &it->second;
     ++outcome.evaluations;
-    const BrakedLimit b = regions.Braked(plan.covering, plan.radii[plan.point_radius[point]], r, mass);
+    const LinkPlan& plan = plans[cells[k].link];
+    const BrakedLimit b = regions.Braked(plan.covering, plan.radii[radius], cells[k].region, mass);
     if (b.failed) {
       if (!outcome.failure) outcome.failure = b.message;
-      return false;
+      return nullptr;
     }
-    into.max_safe_speed_m_per_s = b.max_safe_speed_m_per_s;
-    into.governing_ratio = v / (sf * b.max_safe_speed_m_per_s);
-    into.speed_scale = b.max_safe_speed_m_per_s / v;
-    into.binding = b.binding;
-    into.head_criterion = b.head_criterion;
-    return true;
+    const auto it = known.emplace(key, Judged{b.max_safe_speed_m_per_s, b.binding, b.head_criterion}).first;
+    // v_b must not rise with the mass (at one radius): check the neighbours.
+    const auto rises = [](const Judged& lighter, const Judged& heavier) {
+      return heavier.max_safe_speed_m_per_s > lighter.max_safe_speed_m_per_s * (1.0 + 1e-9);
+    };
+    if (it != known.begin() && std::prev(it)->first.first == radius && rises(std::prev(it)->second, it->second)) {
+      monotone[k] = false;
+    }
+    if (std::next(it) != known.end() && std::next(it)->first.first == radius && rises(it->second, std::next(it)->second)) {
+      monotone[k] = false;
+    }
+    return &it->second;
   };
-  // 1. The lower bounds: each cell's unbraked governing point-sample, braked.
-  std::vector<AuditCell> best = cells;
   for (std::size_t k = 0; k < cells.size(); ++k) {
     if (!cells[k].sample) continue;
-    if (!judge(k, cells[k].point, cells[k].speed_m_per_s, cells[k].reflected_mass_kg, best[k])) return outcome;
+    const LinkPlan& plan = plans[cells[k].link];
+    Candidate first{cells[k].governing_ratio, plan.point_radius[cells[k].point], cells[k]};
+    const double mass = cells[k].reflected_mass_kg;
+    if (std::isfinite(mass)) {
+      const Judged* j = judge(k, first.radius, mass);
+      if (!j) return outcome;
+      lower_bound[k] = cells[k].speed_m_per_s / (sf * j->max_safe_speed_m_per_s);
+    } else {
+      lower_bound[k] = cells[k].governing_ratio;  // a fixed direction cannot brake
+    }
+    candidates[k].push_back(std::move(first));
   }
-  // 2. The candidates: every point-sample whose unbraked ratio exceeds its cell's bound.
-  struct Candidate {
-    double unbraked_ratio;
-    AuditCell cell;
-  };
-  std::vector<std::vector<Candidate>> candidates(cells.size());
+
+  // 2. Every other point-sample whose unbraked ratio exceeds its cell's lower bound.
   std::vector<double> inverse_body_mass(n_regions);
   for (std::size_t r = 0; r < n_regions; ++r) inverse_body_mass[r] = regions.inverse_body_mass(r);
   const auto on_point = [&](std::size_t i, std::size_t l, std::size_t p, const robot::PointMotion& m) {
@@ -554,10 +599,16 @@ BrakingOutcome ApplyBraking(const AuditSetup& setup, const robot::JointTrajector
     const EnergyLimit* limits = &plan.limits[plan.point_radius[p] * n_regions];
     for (std::size_t r = 0; r < n_regions; ++r) {
       const std::size_t k = l * n_regions + r;
-      if (!best[k].sample || (i == *cells[k].sample && p == cells[k].point)) continue;  // judged in 1.
-      const double ratio = v / (sf * MaxSpeed(limits[r], 1.0 / m.reflected_mass_kg + inverse_body_mass[r]));
-      if (!(ratio > best[k].governing_ratio)) continue;
-      Candidate c{ratio, cells[k]};
+      if (!cells[k].sample || (i == *cells[k].sample && p == cells[k].point)) continue;  // judged in 1.
+      const double v_max = MaxSpeed(limits[r], 1.0 / m.reflected_mass_kg + inverse_body_mass[r]);
+      const double ratio = v / (sf * v_max);
+      if (!(ratio > lower_bound[k])) continue;
+      Candidate c{ratio, plan.point_radius[p], cells[k]};
+      c.cell.governing_ratio = ratio;
+      c.cell.speed_scale = v_max / v;
+      c.cell.max_safe_speed_m_per_s = v_max;
+      c.cell.binding = v_max < kModelMaxSpeed_m_per_s ? limits[r].binding : BodyLimitKind::kNone;
+      c.cell.head_criterion = v_max < kModelMaxSpeed_m_per_s ? limits[r].head_criterion : LimitingCriterion::kNone;
       c.cell.sample = i;
       c.cell.time_s = trajectory.time_s[i];
       c.cell.point = p;
@@ -569,21 +620,85 @@ BrakingOutcome ApplyBraking(const AuditSetup& setup, const robot::JointTrajector
     }
   };
   Walk(setup, trajectory, plans, on_point, [](std::size_t, double) {});
-  // 3. Branch and bound per cell, in order of the unbraked bound.
+
+  // 3. Per cell, best bound first.
   for (std::size_t k = 0; k < cells.size(); ++k) {
     std::vector<Candidate>& list = candidates[k];
-    std::stable_sort(list.begin(), list.end(),
-                     [](const Candidate& a, const Candidate& b) { return a.unbraked_ratio > b.unbraked_ratio; });
-    for (Candidate& c : list) {
-      if (!(c.unbraked_ratio > best[k].governing_ratio)) break;  // nothing below can beat it
-      if (!judge(k, c.cell.point, c.cell.speed_m_per_s, c.cell.reflected_mass_kg, c.cell)) return outcome;
-      if (c.cell.governing_ratio > best[k].governing_ratio ||
-          (c.cell.governing_ratio == best[k].governing_ratio && *c.cell.sample < *best[k].sample)) {
-        best[k] = c.cell;
+    if (list.empty()) continue;
+    // A coarse mass grid per radius (4 per decade over the candidates' masses) tightens every
+    // bound at the cost of a few braked limits, when there are many candidates.
+    if (list.size() > 16) {
+      std::map<std::uint32_t, std::pair<double, double>> range;  // radius -> lightest, heaviest
+      for (const Candidate& c : list) {
+        const double m = c.cell.reflected_mass_kg;
+        if (!std::isfinite(m)) continue;
+        auto [it, inserted] = range.try_emplace(c.radius, m, m);
+        if (!inserted) it->second = {std::min(it->second.first, m), std::max(it->second.second, m)};
+      }
+      for (const auto& [radius, masses] : range) {
+        const int steps = static_cast<int>(std::ceil(4.0 * std::log10(masses.second / masses.first)));
+        for (int j = 0; j <= steps; ++j) {
+          const double m = j == steps ? masses.second : masses.first * std::pow(10.0, j / 4.0);
+          if (!judge(k, radius, m)) return outcome;
+        }
       }
     }
+    // The bound of candidate c, and whether it is its judged braked ratio.
+    const auto bound = [&](const Candidate& c) -> std::pair<double, bool> {
+      const double m = c.cell.reflected_mass_kg;
+      if (!std::isfinite(m)) return {c.unbraked_ratio, true};
+      const std::map<Key, Judged>& known = judged[k];
+      const auto it = known.lower_bound(Key{c.radius, m});
+      if (it == known.end() || it->first.first != c.radius) return {c.unbraked_ratio, false};
+      const double ratio = c.cell.speed_m_per_s / (sf * it->second.max_safe_speed_m_per_s);
+      if (it->first.second == m) return {ratio, true};
+      if (!monotone[k]) return {c.unbraked_ratio, false};
+      return {std::min(c.unbraked_ratio, ratio), false};
+    };
+    // Max-heap on the bound; ties: the earlier point-sample first.
+    using Entry = std::pair<double, std::size_t>;
+    const auto lower = [](const Entry& a, const Entry& b) {
+      return a.first < b.first || (a.first == b.first && a.second > b.second);
+    };
+    std::priority_queue<Entry, std::vector<Entry>, decltype(lower)> heap(lower);
+    const auto fill = [&] {
+      while (!heap.empty()) heap.pop();
+      for (std::size_t i = 0; i < list.size(); ++i) heap.emplace(bound(list[i]).first, i);
+    };
+    fill();
+    while (true) {
+      const auto [top, i] = heap.top();
+      heap.pop();
+      const auto [now, exact] = bound(list[i]);
+      if (now < top) {  // tightened since it was pushed
+        heap.emplace(now, i);
+        continue;
+      }
+      if (exact) {  // no other bound is higher: this is the cell's braked governing ratio
+        Candidate& c = list[i];
+        if (!std::isfinite(c.cell.reflected_mass_kg)) {
+          ++outcome.fixed_direction_points;
+        } else {
+          const Judged& j = judged[k].at(Key{c.radius, c.cell.reflected_mass_kg});
+          c.cell.max_safe_speed_m_per_s = j.max_safe_speed_m_per_s;
+          c.cell.governing_ratio = now;
+          c.cell.speed_scale = j.max_safe_speed_m_per_s / c.cell.speed_m_per_s;
+          c.cell.binding = j.binding;
+          c.cell.head_criterion = j.head_criterion;
+        }
+        cells[k] = c.cell;
+        break;
+      }
+      const bool was_monotone = monotone[k];
+      if (!judge(k, list[i].radius, list[i].cell.reflected_mass_kg)) return outcome;
+      if (was_monotone && !monotone[k]) {
+        fill();  // the mass bounds no longer hold: every key back to what stands without them
+      } else {
+        heap.emplace(bound(list[i]).first, i);
+      }
+    }
+    if (!monotone[k]) ++outcome.non_monotone_cells;
   }
-  cells = std::move(best);
   return outcome;
 }
 
@@ -748,6 +863,11 @@ AuditResult Audit(const AuditSetup& setup, const robot::JointTrajectory& traject
         "braking: the cells are the braked robot's (" + std::to_string(braking.evaluations) +
         " braked limits on the time path); the per-sample ratios (heat map, streamed rows) are the unbraked "
         "bounds");
+    if (braking.non_monotone_cells > 0) {
+      result.warnings.push_back("braking: in " + std::to_string(braking.non_monotone_cells) +
+                                " cells the braked limit rose with the reflected mass somewhere; there only the "
+                                "unbraked bound pruned the search (the result is exact either way)");
+    }
     if (braking.fixed_direction_points > 0) {
       result.warnings.push_back("braking: " + std::to_string(braking.fixed_direction_points) +
                                 " point-samples move along a direction the chain cannot move in (an infinite "
