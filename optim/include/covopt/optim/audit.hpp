@@ -149,6 +149,8 @@ struct AuditLinkDesign {
 
 /// One sample's verdict for streaming (AuditOptions::on_sample): per link, the largest ratio
 /// over its points and the regions [-] (0 for a link at rest), and the region that sets it.
+/// For a braking robot these are the unbraked ratios, upper bounds of the braked ones (the
+/// cells are the braked robot's; docs/model.md §14.4).
 struct AuditSampleRow {
   std::size_t sample = 0;
   double time_s = 0.0;
@@ -158,7 +160,8 @@ struct AuditSampleRow {
 
 struct AuditOptions {
   /// Keep the samples × links ratio matrix (AuditResult::ratio_over_time) for the heat map.
-  /// false: memory does not grow with the trajectory's length.
+  /// false: memory does not grow with the trajectory's length (except for a braking robot,
+  /// whose branch and bound keeps the point-samples that could govern a cell).
   bool keep_ratio_over_time = true;
   /// Called once per sample, in order (streaming output).
   std::function<void(const AuditSampleRow&)> on_sample;
