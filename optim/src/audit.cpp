@@ -92,12 +92,66 @@ class RegionLimits {
 
   /// E* of region r for `covering` on a surface of radius `radius_m`: MaxSafeSpeed at a fixed
   /// robot (the largest μ, m_H: the lowest v_max, so the ceiling is met last).
+  EnergyLimit Limit(const AuditCovering& covering, double radius_m, std::size_t r) const {
+    const RegionSpeed speed = Speed(covering, radius_m, r, kFixed, /*braked=*/false);
+    EnergyLimit out;
+    out.binding = speed.binding;
+    out.head_criterion = speed.head_criterion;
+    switch (speed.status) {
+      case SpeedLimitStatus::kSafeUpToSearchLimit:
+        out.ceiling = true;
+        out.binding = BodyLimitKind::kNone;
+        out.head_criterion = LimitingCriterion::kNone;
+        break;
+      case SpeedLimitStatus::kLimited:
+        out.energy_J = 0.5 * speed.max_safe_speed_m_per_s * speed.max_safe_speed_m_per_s / inverse_body_mass_[r];
+        break;
+      case SpeedLimitStatus::kNoSafeValue: break;  // E* = 0
+      case SpeedLimitStatus::kEvaluationFailed:
+        throw std::invalid_argument(names_[r] + ": the exact path could not judge it: " + speed.message);
+    }
+    return out;
+  }
+
   /// The braked robot's largest safe speed against region r at mass `mass_kg` (the time path,
   /// bracketed: MaxSafeSpeed on a braking scene), for the branch and bound of §14.4.
   BrakedLimit Braked(const AuditCovering& covering, double radius_m, std::size_t r, double mass_kg) const {
+    const RegionSpeed speed = Speed(covering, radius_m, r, mass_kg, /*braked=*/true);
+    BrakedLimit out;
+    out.binding = speed.binding;
+    out.head_criterion = speed.head_criterion;
+    out.max_safe_speed_m_per_s = speed.max_safe_speed_m_per_s;
+    if (speed.status == SpeedLimitStatus::kSafeUpToSearchLimit) {
+      out.max_safe_speed_m_per_s = kModelMaxSpeed_m_per_s;
+      out.binding = BodyLimitKind::kNone;
+      out.head_criterion = LimitingCriterion::kNone;
+    } else if (speed.status == SpeedLimitStatus::kEvaluationFailed) {
+      out.failed = true;
+      out.message = speed.message;
+    }
+    return out;
+  }
+
+ private:
+  /// One MaxSafeSpeed answer against region r, body region or head.
+  struct RegionSpeed {
+    SpeedLimitStatus status = SpeedLimitStatus::kLimited;
+    double max_safe_speed_m_per_s = 0.0;
+    BodyLimitKind binding = BodyLimitKind::kNone;
+    LimitingCriterion head_criterion = LimitingCriterion::kNone;
+    std::string message;
+  };
+
+  /// MaxSafeSpeed against region r with `covering` on radius `radius_m` at mass `mass_kg`:
+  /// the closed form (a body region) or the exact path (the head) unbraked; the time path with
+  /// the setup's braking when `braked`.
+  RegionSpeed Speed(const AuditCovering& covering, double radius_m, std::size_t r, double mass_kg,
+                    bool braked) const {
     const DesignRule& rule = setup_.rule;
     const bool covered = covering.covering.thickness_m > 0.0;
-    BrakedLimit out;
+    const double delay = braked ? setup_.reaction_delay_s : 0.0;
+    const double braking = braked ? setup_.braking_m_per_s2 : 0.0;
+    RegionSpeed out;
     if (!is_head(r)) {
       BodyContactScene scene;
       scene.robot_mass_kg = mass_kg;
@@ -105,106 +159,43 @@ class RegionLimits {
       scene.robot_radius_m = radius_m;
       scene.covering = covering.covering;
       scene.contact_area_m2 = setup_.contact_area_m2;
-      scene.reaction_delay_s = setup_.reaction_delay_s;
-      scene.braking_m_per_s2 = setup_.braking_m_per_s2;
+      scene.reaction_delay_s = delay;
+      scene.braking_m_per_s2 = braking;
       const BodyRegionSpeedLimit limit =
           MaxSafeSpeed(scene, setup_.regions[r], BodyRegionOptions{rule, covered ? covering.material : std::nullopt});
-      out.binding = limit.limited_by;
+      out.status = limit.status;
       out.max_safe_speed_m_per_s = limit.max_safe_speed_m_per_s;
-      if (limit.status == SpeedLimitStatus::kSafeUpToSearchLimit) {
-        out.max_safe_speed_m_per_s = kModelMaxSpeed_m_per_s;
-        out.binding = BodyLimitKind::kNone;
-      } else if (limit.status == SpeedLimitStatus::kEvaluationFailed) {
-        out.failed = true;
-        out.message = limit.message;
-      }
+      out.binding = limit.limited_by;
+      if (limit.status == SpeedLimitStatus::kEvaluationFailed) out.message = limit.message;
       return out;
     }
+    // The head: Park et al.'s model; unbraked, U(δ_lim) does not depend on the mass.
     const std::optional<CandidateMaterial>& material = covering.material;
     if (covered && material && material->crush_behaviour == materials::CrushBehaviour::kUnknown &&
         rule.refuses_unknown_strength()) {
+      out.status = SpeedLimitStatus::kNoSafeValue;  // refused at every speed, as a body region refuses it
       out.binding = BodyLimitKind::kCrush;
       out.head_criterion = LimitingCriterion::kCrush;
-      return out;  // refused at every speed, braked or not
+      return out;
     }
     Scene scene = *setup_.head;
     scene.robot.mass_kg = mass_kg;
     scene.robot.speed_m_per_s = 1.0;
     scene.robot.radius_m = radius_m;
-    scene.robot.reaction_delay_s = setup_.reaction_delay_s;
-    scene.robot.braking_m_per_s2 = setup_.braking_m_per_s2;
+    scene.robot.reaction_delay_s = delay;
+    scene.robot.braking_m_per_s2 = braking;
     scene.covering = covering.covering;
     SpeedLimitOptions options = HeadOptions(covering);
+    if (!braked) options.oracle.choice = OracleChoice::kExact;
     const SpeedLimit limit = MaxSafeSpeed(scene, options);
-    out.head_criterion = limit.limited_by;
-    out.binding = FromHead(limit.limited_by);
+    out.status = limit.status;
     out.max_safe_speed_m_per_s = limit.max_safe_speed_m_per_s;
-    if (limit.status == SpeedLimitStatus::kSafeUpToSearchLimit) {
-      out.max_safe_speed_m_per_s = kModelMaxSpeed_m_per_s;
-      out.binding = BodyLimitKind::kNone;
-      out.head_criterion = LimitingCriterion::kNone;
-    } else if (limit.status == SpeedLimitStatus::kEvaluationFailed) {
-      out.failed = true;
-      out.message = limit.message;
-    }
-    return out;
-  }
-
-  EnergyLimit Limit(const AuditCovering& covering, double radius_m, std::size_t r) const {
-    const DesignRule& rule = setup_.rule;
-    EnergyLimit out;
-    const bool covered = covering.covering.thickness_m > 0.0;
-    if (!is_head(r)) {
-      BodyContactScene scene;
-      scene.robot_mass_kg = kFixed;
-      scene.speed_m_per_s = 1.0;
-      scene.robot_radius_m = radius_m;
-      scene.covering = covering.covering;
-      scene.contact_area_m2 = setup_.contact_area_m2;
-      const BodyRegionSpeedLimit limit =
-          MaxSafeSpeed(scene, setup_.regions[r], BodyRegionOptions{rule, covered ? covering.material : std::nullopt});
-      out.binding = limit.limited_by;
-      if (limit.status == SpeedLimitStatus::kSafeUpToSearchLimit) {
-        out.ceiling = true;
-        out.binding = BodyLimitKind::kNone;
-      } else if (limit.status == SpeedLimitStatus::kLimited) {
-        const double v = limit.max_safe_speed_m_per_s;
-        out.energy_J = 0.5 * v * v / inverse_body_mass_[r];
-      }
-      return out;
-    }
-    // The head: Park et al.'s model on the exact path; U(δ_lim) does not depend on the mass.
-    const std::optional<CandidateMaterial>& material = covering.material;
-    if (covered && material && material->crush_behaviour == materials::CrushBehaviour::kUnknown &&
-        rule.refuses_unknown_strength()) {
-      out.binding = BodyLimitKind::kCrush;  // refused, as a body region refuses it
-      out.head_criterion = LimitingCriterion::kCrush;
-      return out;
-    }
-    Scene scene = *setup_.head;
-    scene.robot.mass_kg = kFixed;
-    scene.robot.speed_m_per_s = 1.0;
-    scene.robot.radius_m = radius_m;
-    scene.covering = covering.covering;
-    SpeedLimitOptions options = HeadOptions(covering);
-    options.oracle.choice = OracleChoice::kExact;
-    const SpeedLimit limit = MaxSafeSpeed(scene, options);
     out.head_criterion = limit.limited_by;
     out.binding = FromHead(limit.limited_by);
-    if (limit.status == SpeedLimitStatus::kSafeUpToSearchLimit) {
-      out.ceiling = true;
-      out.binding = BodyLimitKind::kNone;
-      out.head_criterion = LimitingCriterion::kNone;
-    } else if (limit.status == SpeedLimitStatus::kLimited) {
-      const double v = limit.max_safe_speed_m_per_s;
-      out.energy_J = 0.5 * v * v / inverse_body_mass_[r];
-    } else if (limit.status == SpeedLimitStatus::kEvaluationFailed) {
-      throw std::invalid_argument("head: the exact path could not judge the head scene: " + limit.message);
-    }
+    if (limit.status == SpeedLimitStatus::kEvaluationFailed) out.message = limit.message;
     return out;
   }
 
- private:
   /// The head's criteria under the rule, with the covering's strength where it crushes.
   SpeedLimitOptions HeadOptions(const AuditCovering& covering) const {
     const DesignRule& rule = setup_.rule;
