@@ -30,6 +30,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -57,6 +58,10 @@ struct AuditCovering {
 
 /// What an audit judges. The chain, its surface and the exposed regions.
 struct AuditSetup {
+  /// The chain and its surface; the rest is set field by field (as in the example above).
+  /// A constructor, so that `AuditSetup setup{chain, surface};` names every field it sets.
+  AuditSetup(robot::KinematicChain chain_in, robot::RobotSurface surface_in)
+      : chain(std::move(chain_in)), surface(std::move(surface_in)) {}
   robot::KinematicChain chain;
   robot::RobotSurface surface;
   /// The covering of every link not in link_coverings.
@@ -72,6 +77,14 @@ struct AuditSetup {
   /// The bare robot's contact area [m²] for a bare link's pressure; 0: not given, which is
   /// refused when a link is bare (its verdict would be the force's alone).
   double contact_area_m2 = 0.0;
+  /// The radius of curvature [m] a covering is judged on at a flat point (robot::kFlat: a
+  /// box's face, a cylinder's end disc, a flat surface-file point). The covering's Hertz
+  /// contact needs a finite radius (docs/model.md §13), and no radius is a safe default
+  /// (a larger one raises the force, a smaller one the pressure), so it is the user's:
+  /// empty, a covered link with a flat point is refused (naming the link and the shape);
+  /// given, every such point is judged at it and the result says so in its warnings. A
+  /// bare link's flat points need none (its force and pressure do not read the radius).
+  std::optional<double> flat_face_radius_m;
   /// Safety factor, criterion, crushing, unknown strengths.
   DesignRule rule;
   /// The robot's reaction after first contact [s] and its braking deceleration [m/s²]
@@ -97,10 +110,18 @@ struct AuditDesignOptions {
 struct AuditCell {
   std::size_t link = 0;    ///< index into AuditResult::links
   std::size_t region = 0;  ///< index into AuditResult::regions
-  /// v / v_max at the governing point-sample [-] (unscaled: 1/SF is the limit); 0 when the
-  /// link never moves.
+  /// v / (SF v_max) at the governing point-sample [-]: unscaled as every verdict's ratio, so
+  /// SF × ratio <= 1 is safe and speed_scale = 1/(SF × ratio). For a bare link's force it is
+  /// F_max / F_lim exactly. 0 when the link never moves; +inf where no speed is safe (v_max
+  /// 0: a material refused or crushed at any speed).
   double governing_ratio = 0.0;
+  /// The limit that binds v_max there. The head's criteria map onto it: laceration and
+  /// contusion (surface stress and energy density of the skin) → kPressure, the covering's
+  /// travel → kFullCompression, crush → kCrush (head_criterion has the head's own). kNone
+  /// where v_max is the model's 100 m/s ceiling (nothing binds below it).
   BodyLimitKind binding = BodyLimitKind::kNone;
+  /// The head's row only: its criterion (LimitingCriterion::kNone on a body region's row).
+  LimitingCriterion head_criterion = LimitingCriterion::kNone;
   /// The governing sample (index, time [s]) and point (index into the link's points, its
   /// position in the link frame and in the base frame [m]); empty when the link never moves.
   std::optional<std::size_t> sample;
@@ -110,7 +131,8 @@ struct AuditCell {
   Eigen::Vector3d point_in_base_m = Eigen::Vector3d::Zero();
   double speed_m_per_s = 0.0;           ///< [m/s]
   double reflected_mass_kg = 0.0;       ///< [kg]
-  double max_safe_speed_m_per_s = 0.0;  ///< v_max there [m/s]
+  /// v_max there [m/s], at most the model's 100 m/s (MaxSafeSpeed's ceiling).
+  double max_safe_speed_m_per_s = 0.0;
   /// min over the link's moving point-samples of v_max / v [-]; +inf when it never moves.
   double speed_scale = 0.0;
 };
@@ -127,6 +149,8 @@ struct AuditLinkDesign {
 
 /// One sample's verdict for streaming (AuditOptions::on_sample): per link, the largest ratio
 /// over its points and the regions [-] (0 for a link at rest), and the region that sets it.
+/// For a braking robot these are the unbraked ratios, upper bounds of the braked ones (the
+/// cells are the braked robot's; docs/model.md §14.4).
 struct AuditSampleRow {
   std::size_t sample = 0;
   double time_s = 0.0;
@@ -136,7 +160,8 @@ struct AuditSampleRow {
 
 struct AuditOptions {
   /// Keep the samples × links ratio matrix (AuditResult::ratio_over_time) for the heat map.
-  /// false: memory does not grow with the trajectory's length.
+  /// false: memory does not grow with the trajectory's length (except for a braking robot,
+  /// whose branch and bound keeps the point-samples that could govern a cell).
   bool keep_ratio_over_time = true;
   /// Called once per sample, in order (streaming output).
   std::function<void(const AuditSampleRow&)> on_sample;
