@@ -83,6 +83,11 @@ int RunRobot(const RobotOptions& options, std::ostream& out, std::ostream& err) 
     robot_line = fmt::format("Robot    {}: {} -> {}, {} movable joint{}\nJoints   {}\n", input.chain.robot_name(),
                              input.chain.base_link(), input.chain.tip_link(), input.chain.joint_count(),
                              input.chain.joint_count() == 1 ? "" : "s", joints.empty() ? "(none)" : joints);
+    if (const robot::Payload& payload = input.chain.payload(); !payload.empty()) {
+      robot_line += fmt::format("Payload  {:.6g} kg at {} m (tip frame){}\n", payload.mass_kg,
+                                Direction(payload.center_of_mass_m),
+                                payload.inertia_kg_m2.isZero(0.0) ? ", a point mass" : ", with its inertia");
+    }
   } catch (const std::invalid_argument& e) {  // InputError and the library's checks
     return errors.BadInput(e.what());
   }

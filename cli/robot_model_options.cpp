@@ -1,5 +1,6 @@
 #include "robot_model_options.hpp"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <numbers>
@@ -133,6 +134,52 @@ Eigen::Vector3d ParseTriple(const std::string& typed, const char* flag, bool len
   return v;
 }
 
+/// --payload-mass/--payload-com/--payload-inertia as a robot::Payload (none: all zero).
+robot::Payload ParsePayload(const RobotModelOptions& options) {
+  robot::Payload payload;
+  if (!options.payload_mass) {
+    if (options.payload_com || options.payload_inertia) {
+      throw InputError(fmt::format("{} needs --payload-mass M (the payload's mass in kg)",
+                                   options.payload_com ? "--payload-com" : "--payload-inertia"));
+    }
+    return payload;
+  }
+  static constexpr QuantitySpec kPayloadMass{QuantityKind::kMass, false, false, 0.0, robot::kMaxPayloadMassKg,
+                                             {"g", ""}, "payload mass"};
+  payload.mass_kg = ParseQuantity(*options.payload_mass, kPayloadMass, "--payload-mass");
+  if (!(payload.mass_kg > 0.0)) {
+    throw InputError(fmt::format("--payload-mass: must be > 0 kg (got '{}'); leave the flag out for no payload",
+                                 *options.payload_mass));
+  }
+  if (options.payload_com) payload.center_of_mass_m = ParseTriple(*options.payload_com, "--payload-com", true);
+  if (options.payload_inertia) {
+    const std::vector<std::string> items = SplitList(*options.payload_inertia);
+    if (items.size() != 6) {
+      throw InputError(fmt::format("--payload-inertia: expected 6 comma-separated numbers IXX,IYY,IZZ,IXY,IXZ,IYZ "
+                                   "in kg m² about the centre of mass (got {} in '{}')",
+                                   items.size(), *options.payload_inertia));
+    }
+    std::array<double, 6> six{};
+    for (std::size_t i = 0; i < 6; ++i) {
+      const std::string& item = items[i];
+      const char* end = item.data() + item.size();
+      const auto [stop, ec] = std::from_chars(item.data(), end, six[i]);
+      if (item.empty() || ec != std::errc() || stop != end || !std::isfinite(six[i])) {
+        throw InputError(fmt::format("--payload-inertia: component {} must be a finite number in kg m² (got '{}' "
+                                     "in '{}')",
+                                     i + 1, item, *options.payload_inertia));
+      }
+    }
+    payload.inertia_kg_m2 = robot::Payload::InertiaFromSix(six[0], six[1], six[2], six[3], six[4], six[5]);
+  }
+  try {
+    robot::CheckPayload(payload, "--payload");
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+  return payload;
+}
+
 std::string FormatVector(Eigen::Vector3d v, int precision) {
   for (int i = 0; i < 3; ++i) {
     if (std::abs(v[i]) < 1e-12 * std::max(1.0, v.norm())) v[i] = 0.0;  // rounding noise
@@ -155,6 +202,15 @@ void AddRobotModelOptions(CLI::App& sub, RobotModelOptions& options, bool direct
   sub.add_option("--point", options.point,
                  "contact point in the tip link's frame (default 0,0,0; m, or with units)")
       ->type_name("X,Y,Z")->group(group);
+  sub.add_option("--payload-mass", options.payload_mass,
+                 "tool and part on the tip link, counted in the reflected mass (kg, or 500g)")
+      ->type_name("M")->group(group);
+  sub.add_option("--payload-com", options.payload_com,
+                 "the payload's centre of mass in the tip link's frame (default 0,0,0; m, or with units)")
+      ->type_name("X,Y,Z")->group(group);
+  sub.add_option("--payload-inertia", options.payload_inertia,
+                 "the payload's inertia about its centre of mass, tip-frame axes [kg m²] (default: a point mass)")
+      ->type_name("IXX,IYY,IZZ,IXY,IXZ,IYZ")->group(group);
   sub.add_flag("--ignore-joint-limits", options.ignore_joint_limits,
                "do not check joint positions and velocities against the URDF's limits (a warning says so)")
       ->group(group);
@@ -173,9 +229,10 @@ RobotModelInput ResolveRobotModelChain(const RobotModelOptions& options) {
   spec.base_link = options.base.value_or("");
   spec.tip_link = *options.tip;
   if (options.base && options.base->empty()) throw InputError("--base: empty link name");
+  const robot::Payload payload = ParsePayload(options);
   RobotModelInput input{[&] {
                           try {
-                            return robot::KinematicChain::FromUrdfFile(*options.urdf, spec);
+                            return robot::KinematicChain::FromUrdfFile(*options.urdf, spec).WithPayload(payload);
                           } catch (const std::invalid_argument& e) {
                             throw InputError(std::string("--urdf: ") + e.what());
                           }

@@ -8,7 +8,10 @@
 /// Joint positions in rad, or with a unit: 30deg, 0.5rad (revolute and continuous joints),
 /// 100mm, 0.1m (prismatic joints). The contact point in the tip link's frame, each
 /// coordinate a length (bare numbers in m: 0.05,0,0 or 50mm,0,0), default its origin. The
-/// impact direction in the base frame, any length (normalised), plain numbers.
+/// impact direction in the base frame, any length (normalised), plain numbers. A tool or
+/// payload on the tip link: --payload-mass M (kg, or 500g), --payload-com X,Y,Z (its centre
+/// of mass in the tip frame, lengths as --point) and --payload-inertia IXX,IYY,IZZ,IXY,IXZ,IYZ
+/// (about the centre of mass, tip-frame axes, plain numbers in kg m²; default: a point mass).
 
 #include <map>
 #include <optional>
@@ -34,12 +37,16 @@ struct RobotModelOptions {
   std::optional<std::string> joints;     ///< --joints Q1,Q2,...
   std::optional<std::string> point;      ///< --point X,Y,Z (tip frame)
   std::optional<std::string> direction;  ///< --direction X,Y,Z (base frame)
+  std::optional<std::string> payload_mass;     ///< --payload-mass M (kg, or with a unit)
+  std::optional<std::string> payload_com;      ///< --payload-com X,Y,Z (tip frame; m, or with units)
+  std::optional<std::string> payload_inertia;  ///< --payload-inertia IXX,IYY,IZZ,IXY,IXZ,IYZ [kg m²]
   /// --ignore-joint-limits: do not check positions (and velocities) against the URDF's
   /// <limit>s; the answer carries a warning that says so.
   bool ignore_joint_limits = false;
   /// Any of the group's flags was given.
   bool given() const noexcept {
-    return urdf || base || tip || joints || point || direction || ignore_joint_limits;
+    return urdf || base || tip || joints || point || direction || ignore_joint_limits || payload_mass ||
+           payload_com || payload_inertia;
   }
   /// The library's options for these flags (check_joint_limits unless --ignore-joint-limits).
   robot::ReflectedMassOptions reflected_mass_options() const {
@@ -63,7 +70,7 @@ struct RobotModelInput {
   std::optional<Eigen::Vector3d> direction;    ///< base frame, as typed (not normalised)
 };
 
-/// Reads --urdf/--base/--tip/--point and the URDF, not the joints (a trajectory brings its
+/// Reads --urdf/--base/--tip/--point/--payload-* and the URDF, not the joints (a trajectory brings its
 /// own): the chain and the contact point; joint_positions empty, no direction.
 /// @throws InputError as ResolveRobotModelInput for those flags.
 RobotModelInput ResolveRobotModelChain(const RobotModelOptions& options);

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 #include <kdl/chain.hpp>
 #include <kdl/jntarray.hpp>
+#include <kdl/rigidbodyinertia.hpp>
 
 #include "covopt/robot/kinematic_chain.hpp"
 #include "covopt/robot/reflected_mass.hpp"
@@ -30,10 +31,23 @@ struct KinematicChain::Impl {
   double moving_mass_kg = 0.0;
   std::vector<std::string> lumped_joint_names;
   std::vector<std::string> warnings;
+  /// The payload on the tip and the tip segment's inertia without it (WithPayload).
+  Payload payload;
+  KDL::RigidBodyInertia bare_tip_inertia = KDL::RigidBodyInertia::Zero();
   KDL::Chain chain;
 };
 
 namespace internal {
+
+/// @throws std::invalid_argument "<where>: <field> = <value> is not allowed (<allowed>)".
+[[noreturn]] void Refuse(const std::string& where, const std::string& field, double value,
+                         const std::string& allowed);
+
+/// Checks an inertia tensor (symmetric; only its lower triangle is read): principal moments
+/// >= 0 and each at most the sum of the other two, to 1e-6 of the largest (URDFs round).
+/// @throws std::invalid_argument "<where>: <field> smallest principal moment = ..." or
+///         "... largest principal moment = ...", saying why.
+void CheckPrincipalMoments(const Eigen::Matrix3d& tensor, const std::string& where, const std::string& field);
 
 /// Reads `in` to its end, at most `limit_bytes`: a device or FIFO is not read forever.
 /// @throws std::invalid_argument "<source>: larger than <limit> MiB, the limit for <what>"

@@ -105,12 +105,7 @@ KDL::Frame ToKdl(const urdf::Pose& pose) {
   return KDL::Frame(ToKdl(pose.rotation), ToKdl(pose.position));
 }
 
-[[noreturn]] void Refuse(const std::string& where, const std::string& field, double value,
-                         const std::string& allowed) {
-  std::ostringstream message;
-  message << where << ": " << field << " = " << value << " is not allowed (" << allowed << ")";
-  throw std::invalid_argument(message.str());
-}
+using internal::Refuse;
 
 /// An origin's coordinates within ±kMaxLengthM and a finite rotation.
 void CheckPose(const urdf::Pose& pose, const std::string& where, const std::string& field) {
@@ -126,8 +121,8 @@ void CheckPose(const urdf::Pose& pose, const std::string& where, const std::stri
   }
 }
 
-/// The principal moments of an inertia tensor must be >= 0 and obey the triangle inequality
-/// (each at most the sum of the other two), to a relative 1e-6 of the largest (URDFs round).
+/// The tensor's entries within ±kMaxInertiaKgM2, its principal moments >= 0 and obeying the
+/// triangle inequality (internal::CheckPrincipalMoments).
 void CheckInertiaTensor(const urdf::Inertial& in, const std::string& where) {
   const std::array<std::pair<const char*, double>, 6> entries{
       {{"ixx", in.ixx}, {"ixy", in.ixy}, {"ixz", in.ixz}, {"iyy", in.iyy}, {"iyz", in.iyz}, {"izz", in.izz}}};
@@ -138,18 +133,7 @@ void CheckInertiaTensor(const urdf::Inertial& in, const std::string& where) {
   }
   Eigen::Matrix3d tensor;
   tensor << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
-  const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(tensor, Eigen::EigenvaluesOnly).eigenvalues();
-  const double tolerance = 1e-6 * std::max(std::abs(moments[0]), std::abs(moments[2]));
-  if (moments[0] < -tolerance) {
-    Refuse(where, "<inertia> smallest principal moment", moments[0],
-           "an inertia tensor must be positive semi-definite: principal moments >= 0 kg m²");
-  }
-  if (moments[0] + moments[1] < moments[2] - tolerance) {
-    std::ostringstream allowed;
-    allowed << "principal moments must obey the triangle inequality; the other two are " << moments[0]
-            << " and " << moments[1] << " kg m², whose sum is smaller";
-    Refuse(where, "<inertia> largest principal moment", moments[2], allowed.str());
-  }
+  internal::CheckPrincipalMoments(tensor, where, "<inertia>");
 }
 
 /// The link's <inertial> as KDL's rigid-body inertia about the link frame's origin, as
@@ -342,6 +326,7 @@ std::shared_ptr<const KinematicChain::Impl> BuildChain(const urdf::ModelInterfac
     const urdf::Link* next = k + 1 < path.size() ? path[k + 1].get() : nullptr;
     const KDL::RigidBodyInertia inertia = SubtreeInertia(*child, next, true, source, locked);
     impl->moving_mass_kg += inertia.getMass();
+    if (next == nullptr) impl->bare_tip_inertia = inertia;
     impl->chain.addSegment(KDL::Segment(child->name, ToKdlJoint(joint, type, source),
                                         ToKdl(joint.parent_to_joint_origin_transform), inertia));
   }
@@ -379,6 +364,28 @@ KinematicChain KinematicChain::FromUrdfFile(const std::filesystem::path& path,
 }
 
 namespace internal {
+
+void Refuse(const std::string& where, const std::string& field, double value, const std::string& allowed) {
+  std::ostringstream message;
+  message << where << ": " << field << " = " << value << " is not allowed (" << allowed << ")";
+  throw std::invalid_argument(message.str());
+}
+
+void CheckPrincipalMoments(const Eigen::Matrix3d& tensor, const std::string& where, const std::string& field) {
+  const Eigen::Vector3d moments =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(tensor, Eigen::EigenvaluesOnly).eigenvalues();
+  const double tolerance = 1e-6 * std::max(std::abs(moments[0]), std::abs(moments[2]));
+  if (moments[0] < -tolerance) {
+    Refuse(where, field + " smallest principal moment", moments[0],
+           "an inertia tensor must be positive semi-definite: principal moments >= 0 kg m²");
+  }
+  if (moments[0] + moments[1] < moments[2] - tolerance) {
+    std::ostringstream allowed;
+    allowed << "principal moments must obey the triangle inequality; the other two are " << moments[0]
+            << " and " << moments[1] << " kg m², whose sum is smaller";
+    Refuse(where, field + " largest principal moment", moments[2], allowed.str());
+  }
+}
 
 std::string ReadBounded(std::istream& in, std::size_t limit_bytes, const std::string& source,
                         const std::string& what) {
@@ -421,6 +428,26 @@ const std::vector<std::string>& KinematicChain::joint_names() const noexcept {
 }
 std::size_t KinematicChain::joint_count() const noexcept { return impl_->joint_names.size(); }
 double KinematicChain::moving_mass_kg() const noexcept { return impl_->moving_mass_kg; }
+const Payload& KinematicChain::payload() const noexcept { return impl_->payload; }
+
+KinematicChain KinematicChain::WithPayload(const Payload& payload) const {
+  CheckPayload(payload);
+  auto impl = std::make_shared<Impl>(*impl_);
+  impl->payload = payload;
+  // The tip segment's inertia is about the tip link's frame (as the URDF's link inertia); the
+  // payload is given about its centre of mass in that frame. Without a payload the segment
+  // gets the URDF's inertia back, bit for bit.
+  KDL::RigidBodyInertia inertia = impl->bare_tip_inertia;
+  if (!payload.empty()) {
+    const Eigen::Matrix3d& tensor = payload.inertia_kg_m2;
+    const Eigen::Vector3d& com = payload.center_of_mass_m;
+    inertia = inertia + KDL::RigidBodyInertia(payload.mass_kg, KDL::Vector(com.x(), com.y(), com.z()),
+                                              KDL::RotationalInertia(tensor(0, 0), tensor(1, 1), tensor(2, 2),
+                                                                     tensor(0, 1), tensor(0, 2), tensor(1, 2)));
+  }
+  impl->chain.getSegment(impl->chain.getNrOfSegments() - 1).setInertia(inertia);
+  return KinematicChain(std::move(impl));
+}
 const std::vector<std::string>& KinematicChain::locked_joint_names() const noexcept {
   return impl_->lumped_joint_names;
 }

@@ -160,6 +160,27 @@ Eigen::MatrixXd IndependentMass(const Eigen::VectorXd& q) {
   return M;
 }
 
+/// A payload's share of M: a rigid body on the tip link l6 (centre of mass `com` and tensor
+/// `I` about it, both in l6's frame), as one more term of the sum.
+Eigen::MatrixXd IndependentPayloadShare(const Eigen::VectorXd& q, double mass, const Eigen::Vector3d& com_in_tip,
+                                        const Eigen::Matrix3d& I) {
+  const Kinematics k = Forward(q);
+  const auto n = static_cast<Eigen::Index>(k.axis.size());
+  const Eigen::Vector3d com = k.link.back().p + k.link.back().R * com_in_tip;
+  const Eigen::Matrix3d R = k.link.back().R;
+  Eigen::MatrixXd Jv = Eigen::MatrixXd::Zero(3, n), Jw = Eigen::MatrixXd::Zero(3, n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const auto js = static_cast<std::size_t>(j);
+    if (k.prismatic[js]) {
+      Jv.col(j) = k.axis[js];
+    } else {
+      Jv.col(j) = k.axis[js].cross(com - k.origin[js]);
+      Jw.col(j) = k.axis[js];
+    }
+  }
+  return mass * Jv.transpose() * Jv + Jw.transpose() * (R * I * R.transpose()) * Jw;
+}
+
 Eigen::Vector3d IndependentPoint(const Eigen::VectorXd& q, const Eigen::Vector3d& point_in_tip) {
   const Kinematics k = Forward(q);
   return k.link.back().p + k.link.back().R * point_in_tip;
@@ -211,4 +232,27 @@ TEST_CASE("the 3-D arm's contact Jacobian is the derivative of the independent k
   // Along the extreme directions the directional mass is the extreme.
   CHECK(*covopt::robot::ReflectedMass(chain, q, point, result.max_direction).reflected_mass_kg ==
         Approx(result.max_reflected_mass_kg).epsilon(1e-10));
+}
+
+TEST_CASE("a payload on the 3-D arm's tip adds its independent share to M(q) and the reflected mass") {
+  const auto bare = covopt::robot::KinematicChain::FromUrdfString(Urdf(), {"", "l6"}, "made_up_arm");
+  covopt::robot::Payload payload;
+  payload.mass_kg = 1.7;
+  payload.center_of_mass_m = Eigen::Vector3d(0.03, -0.05, 0.12);
+  payload.inertia_kg_m2 = covopt::robot::Payload::InertiaFromSix(0.006, 0.008, 0.004, 0.001, -0.0007, 0.0012);
+  const auto loaded = bare.WithPayload(payload);
+  Eigen::VectorXd q(5);
+  q << 0.3, -0.7, 0.12, 1.1, -0.4;
+  const Eigen::MatrixXd independent =
+      IndependentMass(q) + IndependentPayloadShare(q, payload.mass_kg, payload.center_of_mass_m, payload.inertia_kg_m2);
+  const Eigen::MatrixXd kdl = covopt::robot::JointSpaceInertia(loaded, q);
+  INFO("KDL\n" << kdl << "\nindependent\n" << independent);
+  CHECK((kdl - independent).cwiseAbs().maxCoeff() < 1e-12 * independent.cwiseAbs().maxCoeff());
+  const Eigen::Vector3d point(0.05, -0.02, 0.11);
+  const Eigen::Vector3d u = Eigen::Vector3d(0.3, -0.5, 0.8).normalized();
+  const Eigen::MatrixXd J = covopt::robot::ContactJacobian(bare, q, point);
+  const double expected = 1.0 / (u.transpose() * J * independent.inverse() * J.transpose() * u)(0, 0);
+  const double got = *covopt::robot::ReflectedMass(loaded, q, point, u).reflected_mass_kg;
+  CHECK(got == Approx(expected).epsilon(1e-10));
+  CHECK(got > *covopt::robot::ReflectedMass(bare, q, point, u).reflected_mass_kg);
 }

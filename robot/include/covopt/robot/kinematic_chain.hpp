@@ -28,6 +28,8 @@
 #include <string>
 #include <vector>
 
+#include "covopt/robot/payload.hpp"
+
 namespace covopt::robot {
 
 /// The plausible ranges of the inputs (docs/model.md §9.2). Anything outside is refused with a
@@ -124,9 +126,18 @@ class KinematicChain {
   const std::vector<std::string>& joint_names() const noexcept;
   /// The number of movable joints, n.
   std::size_t joint_count() const noexcept;
-  /// The total mass that moves with the chain [kg]: the links after the base and whatever
-  /// hangs off them (the base link's own mass excluded).
+  /// The total mass of the robot that moves with the chain [kg]: the links after the base and
+  /// whatever hangs off them in the URDF (the base link's own mass excluded), without the
+  /// payload (ISO/TS 15066's M; payload().mass_kg is its m_L).
   double moving_mass_kg() const noexcept;
+  /// The payload on the tip (WithPayload); all zero when none.
+  const Payload& payload() const noexcept;
+  /// This chain with `payload` rigidly mounted on the tip link (payload.hpp): its mass,
+  /// centre of mass and inertia added to the tip segment's rigid-body inertia (KDL
+  /// RigidBodyInertia addition). It replaces any payload this chain had; an empty payload
+  /// gives back the URDF's chain exactly. The KDL chain is copied; this one is unchanged.
+  /// @throws std::invalid_argument as CheckPayload ("payload: <field> = <value> ...").
+  KinematicChain WithPayload(const Payload& payload) const;
   /// The movable joints off the chain (beyond the tip, or on side branches) whose links are
   /// counted as rigid payload of the chain link they hang from, held at position 0.
   const std::vector<std::string>& locked_joint_names() const noexcept;
