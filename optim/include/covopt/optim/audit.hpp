@@ -72,6 +72,14 @@ struct AuditSetup {
   /// The bare robot's contact area [m²] for a bare link's pressure; 0: not given, which is
   /// refused when a link is bare (its verdict would be the force's alone).
   double contact_area_m2 = 0.0;
+  /// The radius of curvature [m] a covering is judged on at a flat point (robot::kFlat: a
+  /// box's face, a cylinder's end disc, a flat surface-file point). The covering's Hertz
+  /// contact needs a finite radius (docs/model.md §13), and no radius is a safe default
+  /// (a larger one raises the force, a smaller one the pressure), so it is the user's:
+  /// empty, a covered link with a flat point is refused (naming the link and the shape);
+  /// given, every such point is judged at it and the result says so in its warnings. A
+  /// bare link's flat points need none (its force and pressure do not read the radius).
+  std::optional<double> flat_face_radius_m;
   /// Safety factor, criterion, crushing, unknown strengths.
   DesignRule rule;
   /// The robot's reaction after first contact [s] and its braking deceleration [m/s²]
@@ -97,10 +105,18 @@ struct AuditDesignOptions {
 struct AuditCell {
   std::size_t link = 0;    ///< index into AuditResult::links
   std::size_t region = 0;  ///< index into AuditResult::regions
-  /// v / v_max at the governing point-sample [-] (unscaled: 1/SF is the limit); 0 when the
-  /// link never moves.
+  /// v / (SF v_max) at the governing point-sample [-]: unscaled as every verdict's ratio, so
+  /// SF × ratio <= 1 is safe and speed_scale = 1/(SF × ratio). For a bare link's force it is
+  /// F_max / F_lim exactly. 0 when the link never moves; +inf where no speed is safe (v_max
+  /// 0: a material refused or crushed at any speed).
   double governing_ratio = 0.0;
+  /// The limit that binds v_max there. The head's criteria map onto it: laceration and
+  /// contusion (surface stress and energy density of the skin) → kPressure, the covering's
+  /// travel → kFullCompression, crush → kCrush (head_criterion has the head's own). kNone
+  /// where v_max is the model's 100 m/s ceiling (nothing binds below it).
   BodyLimitKind binding = BodyLimitKind::kNone;
+  /// The head's row only: its criterion (LimitingCriterion::kNone on a body region's row).
+  LimitingCriterion head_criterion = LimitingCriterion::kNone;
   /// The governing sample (index, time [s]) and point (index into the link's points, its
   /// position in the link frame and in the base frame [m]); empty when the link never moves.
   std::optional<std::size_t> sample;
@@ -110,7 +126,8 @@ struct AuditCell {
   Eigen::Vector3d point_in_base_m = Eigen::Vector3d::Zero();
   double speed_m_per_s = 0.0;           ///< [m/s]
   double reflected_mass_kg = 0.0;       ///< [kg]
-  double max_safe_speed_m_per_s = 0.0;  ///< v_max there [m/s]
+  /// v_max there [m/s], at most the model's 100 m/s (MaxSafeSpeed's ceiling).
+  double max_safe_speed_m_per_s = 0.0;
   /// min over the link's moving point-samples of v_max / v [-]; +inf when it never moves.
   double speed_scale = 0.0;
 };
