@@ -78,8 +78,9 @@ ordered_json CoveringJson(const std::string& link, const optim::AuditCovering& c
 std::span<const std::string_view> AuditCellColumns() noexcept { return kCellColumns; }
 
 std::vector<std::string> AuditCellCsvCells(const optim::AuditResult& result, const optim::AuditCell& cell) {
+  const ordered_json flat = FlatCell(result, cell);
   std::vector<std::string> cells;
-  for (const auto& [key, value] : FlatCell(result, cell).items()) cells.push_back(CsvText(value));
+  for (const auto& [key, value] : flat.items()) cells.push_back(CsvText(value));
   return cells;
 }
 
