@@ -18,6 +18,7 @@
 
 #include "covopt/robot/kinematic_chain.hpp"
 #include "covopt/robot/reflected_mass.hpp"
+#include "covopt/robot/trajectory.hpp"
 
 namespace covopt::robot {
 
@@ -87,6 +88,23 @@ void CheckPoint(const Eigen::Vector3d& point_in_tip_m);
 
 /// @throws std::invalid_argument unless options.singular_relative_tolerance is in [0, 1).
 void CheckSingularTolerance(const ReflectedMassOptions& options);
+
+/// The checks of ContactMotion's options: rest_speed_m_per_s finite and >= 0, and
+/// CheckSingularTolerance.
+void CheckContactMotionOptions(const ContactMotionOptions& options);
+
+/// The checks of one trajectory sample (ContactMotion's and ChainSampleKinematics::Update's):
+/// q and q̇ of the chain's length and finite (ToJntArray, messages "<positions_name>: ..." and
+/// "<velocities_name>: ..."), then CheckJointPositions and CheckJointVelocities.
+/// @returns q as a KDL::JntArray.
+KDL::JntArray CheckSample(const KinematicChain& chain, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+                          bool check_limits, const std::string& positions_name,
+                          const std::string& velocities_name, const JointWhere& position_where,
+                          const JointWhere& velocity_where);
+
+/// @throws std::invalid_argument "<source>: the joint-space inertia matrix is not positive
+///         definite ..." (a joint that moves no mass).
+[[noreturn]] void RefuseSingularInertia(const KinematicChain& chain);
 
 /// The kinematics and inertia of a contact point at one configuration, computed once: what
 /// ReflectedMass needs, and ContactMotion too (the point's velocity is jacobian · q̇).

@@ -257,6 +257,34 @@ void CheckSingularTolerance(const ReflectedMassOptions& options) {
   }
 }
 
+void RefuseSingularInertia(const KinematicChain& chain) {
+  throw std::invalid_argument(
+      chain.source_name() +
+      ": the joint-space inertia matrix is not positive definite at these joints: a joint "
+      "moves no mass or inertia (give the links after it an <inertial>)");
+}
+
+void CheckContactMotionOptions(const ContactMotionOptions& options) {
+  if (!(options.rest_speed_m_per_s >= 0.0) || !std::isfinite(options.rest_speed_m_per_s)) {
+    std::ostringstream message;
+    message << "rest_speed_m_per_s must be a finite number >= 0 m/s (got "
+            << options.rest_speed_m_per_s << ")";
+    throw std::invalid_argument(message.str());
+  }
+  CheckSingularTolerance(options.reflected_mass);
+}
+
+KDL::JntArray CheckSample(const KinematicChain& chain, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+                          bool check_limits, const std::string& positions_name,
+                          const std::string& velocities_name, const JointWhere& position_where,
+                          const JointWhere& velocity_where) {
+  KDL::JntArray joints = ToJntArray(chain, q, positions_name.c_str());
+  ToJntArray(chain, qd, velocities_name.c_str());
+  CheckJointPositions(chain, q, check_limits, position_where);
+  CheckJointVelocities(chain, qd, check_limits, velocity_where);
+  return joints;
+}
+
 PointInertia ComputePointInertia(const KinematicChain& chain, const KDL::JntArray& joints,
                                  const Eigen::Vector3d& point_in_tip_m) {
   PointInertia point;
@@ -264,12 +292,7 @@ PointInertia ComputePointInertia(const KinematicChain& chain, const KDL::JntArra
   if (joints.rows() > 0) {
     const Eigen::MatrixXd mass = MassMatrix(chain, joints);
     const Eigen::LLT<Eigen::MatrixXd> cholesky(mass);
-    if (cholesky.info() != Eigen::Success) {
-      throw std::invalid_argument(
-          chain.source_name() +
-          ": the joint-space inertia matrix is not positive definite at these joints: a joint "
-          "moves no mass or inertia (give the links after it an <inertial>)");
-    }
+    if (cholesky.info() != Eigen::Success) RefuseSingularInertia(chain);
     const Eigen::MatrixXd m_inverse_jt = cholesky.solve(point.jacobian.transpose());
     point.inverse_mass = point.jacobian * m_inverse_jt;
     point.inverse_mass = 0.5 * (point.inverse_mass + point.inverse_mass.transpose()).eval();

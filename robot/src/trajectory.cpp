@@ -191,18 +191,12 @@ JointTrajectory ReadJointTrajectory(const std::filesystem::path& path, std::size
 ContactMotionResult ContactMotion(const KinematicChain& chain, const JointTrajectory& trajectory,
                                   const Eigen::Vector3d& point_in_tip_m,
                                   const ContactMotionOptions& options) {
-  if (!(options.rest_speed_m_per_s >= 0.0) || !std::isfinite(options.rest_speed_m_per_s)) {
-    std::ostringstream message;
-    message << "rest_speed_m_per_s must be a finite number >= 0 m/s (got "
-            << options.rest_speed_m_per_s << ")";
-    throw std::invalid_argument(message.str());
-  }
+  internal::CheckContactMotionOptions(options);
   if (trajectory.positions.size() != trajectory.size() ||
       trajectory.velocities.size() != trajectory.size()) {
     throw std::invalid_argument("trajectory: time_s, positions and velocities differ in length");
   }
   internal::CheckPoint(point_in_tip_m);
-  internal::CheckSingularTolerance(options.reflected_mass);
   ContactMotionResult result;
   result.joint_names = chain.joint_names();
   result.warnings = chain.warnings();
@@ -215,12 +209,10 @@ ContactMotionResult ContactMotion(const KinematicChain& chain, const JointTrajec
     const std::string sample_name = "trajectory sample " + std::to_string(i + 1);
     const std::string positions_name = sample_name + " positions";
     const std::string velocities_name = sample_name + " velocities";
-    const KDL::JntArray joints = internal::ToJntArray(chain, trajectory.positions[i], positions_name.c_str());
-    internal::ToJntArray(chain, trajectory.velocities[i], velocities_name.c_str());
-    const bool check_limits = options.reflected_mass.check_joint_limits;
-    internal::CheckJointPositions(chain, trajectory.positions[i], check_limits, SampleWhere(chain, trajectory, i, 0));
-    internal::CheckJointVelocities(chain, trajectory.velocities[i], check_limits,
-                                   SampleWhere(chain, trajectory, i, chain.joint_count()));
+    const KDL::JntArray joints = internal::CheckSample(
+        chain, trajectory.positions[i], trajectory.velocities[i], options.reflected_mass.check_joint_limits,
+        positions_name, velocities_name, SampleWhere(chain, trajectory, i, 0),
+        SampleWhere(chain, trajectory, i, chain.joint_count()));
     if (!std::isfinite(trajectory.time_s[i])) {
       throw std::invalid_argument(sample_name + ": time must be a finite number");
     }

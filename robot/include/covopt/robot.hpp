@@ -5,6 +5,7 @@
 /// 15066's M/2 + m_L without a model), and a contact point's motion along a
 /// joint trajectory.
 #include "covopt/robot/kinematic_chain.hpp"
+#include "covopt/robot/link_kinematics.hpp"
 #include "covopt/robot/payload.hpp"
 #include "covopt/robot/reflected_mass.hpp"
 #include "covopt/robot/surface.hpp"

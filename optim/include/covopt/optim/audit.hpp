@@ -30,6 +30,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -57,6 +58,10 @@ struct AuditCovering {
 
 /// What an audit judges. The chain, its surface and the exposed regions.
 struct AuditSetup {
+  /// The chain and its surface; the rest is set field by field (as in the example above).
+  /// A constructor, so that `AuditSetup setup{chain, surface};` names every field it sets.
+  AuditSetup(robot::KinematicChain chain_in, robot::RobotSurface surface_in)
+      : chain(std::move(chain_in)), surface(std::move(surface_in)) {}
   robot::KinematicChain chain;
   robot::RobotSurface surface;
   /// The covering of every link not in link_coverings.
