@@ -199,18 +199,17 @@ AuditRun Resolve(const AuditCommandOptions& o) {
   if (o.flat_face_radius) flat_face_radius = PositiveLength(*o.flat_face_radius, kFlatRadius, "--flat-face-radius");
   robot::ContactMotionOptions motion;
   motion.reflected_mass = model.reflected_mass_options();
-  AuditRun run(optim::AuditSetup{robot_input.chain,
-                                 std::move(surface),
-                                 optim::AuditCovering{plan.scene.covering, judge.material},
-                                 {},
-                                 regions->IsoLimits(),
-                                 head ? std::optional<Scene>(plan.scene) : std::nullopt,
-                                 regions->contact_area_m2,
-                                 flat_face_radius,
-                                 judge.rule,
-                                 plan.scene.robot.reaction_delay_s,
-                                 plan.scene.robot.braking_m_per_s2,
-                                 motion});
+  AuditRun run(optim::AuditSetup(robot_input.chain, std::move(surface)));
+  optim::AuditSetup& setup = run.setup;
+  setup.covering = optim::AuditCovering{plan.scene.covering, judge.material};
+  setup.regions = regions->IsoLimits();
+  if (head) setup.head = plan.scene;
+  setup.contact_area_m2 = regions->contact_area_m2;
+  setup.flat_face_radius_m = flat_face_radius;
+  setup.rule = judge.rule;
+  setup.reaction_delay_s = plan.scene.robot.reaction_delay_s;
+  setup.braking_m_per_s2 = plan.scene.robot.braking_m_per_s2;
+  setup.motion = motion;
   run.plot_format = plot_format;
   run.head = head;
   try {
@@ -219,7 +218,6 @@ AuditRun Resolve(const AuditCommandOptions& o) {
     throw InputError(fmt::format("--trajectory: {}", e.what()));
   }
 
-  optim::AuditSetup& setup = run.setup;
   run.covering_text = CoveringText(setup.covering);
 
   // The catalog, for --link-coverings and --design.
@@ -368,7 +366,6 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
   fmt::print(out, "\nScope\n");
   for (const std::string& s : r.scope) fmt::print(out, "  {}\n", s);
   std::vector<std::string> warnings = run.input_warnings;
-  warnings.insert(warnings.end(), setup.surface.warnings.begin(), setup.surface.warnings.end());
   warnings.insert(warnings.end(), r.warnings.begin(), r.warnings.end());
   if (warnings.empty()) fmt::print(out, "\nWarnings: none\n");
   for (const std::string& w : warnings) fmt::print(out, "Warning: {}\n", w);

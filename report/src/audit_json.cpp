@@ -16,12 +16,12 @@ namespace {
 
 using nlohmann::ordered_json;
 
-constexpr std::array<std::string_view, 17> kCellColumns = {
+constexpr std::array<std::string_view, 18> kCellColumns = {
     "link",              "region",            "governing_ratio",   "binding",
     "sample",            "time_s",            "point",             "point_in_link_x_m",
     "point_in_link_y_m", "point_in_link_z_m", "point_in_base_x_m", "point_in_base_y_m",
     "point_in_base_z_m", "speed_m_per_s",     "reflected_mass_kg", "max_safe_speed_m_per_s",
-    "speed_scale"};
+    "speed_scale",       "head_criterion"};
 
 ordered_json Vector(const Eigen::Vector3d& v) {
   return ordered_json::array({internal::Number(v[0]), internal::Number(v[1]), internal::Number(v[2])});
@@ -50,6 +50,9 @@ ordered_json FlatCell(const optim::AuditResult& result, const optim::AuditCell& 
   j["reflected_mass_kg"] = when_moved(internal::Number(cell.reflected_mass_kg));
   j["max_safe_speed_m_per_s"] = when_moved(internal::Number(cell.max_safe_speed_m_per_s));
   j["speed_scale"] = internal::Number(cell.speed_scale);  // +inf (never moves): null
+  j["head_criterion"] = moved && cell.head_criterion != optim::LimitingCriterion::kNone
+                            ? ordered_json(optim::ToString(cell.head_criterion))
+                            : ordered_json(nullptr);
   return j;
 }
 
@@ -216,7 +219,6 @@ std::string AuditJson(const optim::AuditSetup& setup, const optim::AuditResult& 
   j["link_designs"] = std::move(designs);
 
   std::vector<std::string> warnings(input_warnings.begin(), input_warnings.end());
-  warnings.insert(warnings.end(), setup.surface.warnings.begin(), setup.surface.warnings.end());
   warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
   j["warnings"] = std::move(warnings);
   return j.dump(indent);

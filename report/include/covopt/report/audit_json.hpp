@@ -18,9 +18,10 @@ namespace covopt::report {
 /// The per-cell keys in order, as the JSON cells' keys and the CSV header: link, region,
 /// governing_ratio, binding, sample, time_s, point, point_in_link_x_m, point_in_link_y_m,
 /// point_in_link_z_m, point_in_base_x_m, point_in_base_y_m, point_in_base_z_m,
-/// speed_m_per_s, reflected_mass_kg, max_safe_speed_m_per_s, speed_scale.
+/// speed_m_per_s, reflected_mass_kg, max_safe_speed_m_per_s, speed_scale, head_criterion.
 /// sample (0-based) and everything after it is null (CSV: empty) for a link that never moves;
-/// speed_scale = max safe speed / speed at the governing point-sample's minimum (null: +inf).
+/// speed_scale = max safe speed / speed at the governing point-sample's minimum (null: +inf);
+/// head_criterion: the head's row's own criterion ("laceration", "contusion", ...), else null.
 std::span<const std::string_view> AuditCellColumns() noexcept;
 
 /// One cell's fields as CSV text, in AuditCellColumns order: numbers in shortest round-trip
@@ -48,7 +49,7 @@ std::vector<std::string> AuditSampleCsvCells(const optim::AuditSampleRow& row, s
 ///   row-major, AuditCellColumns keys), ratio_over_time (null when not kept, else {time_s,
 ///   links, ratio: [sample][link]}), link_designs [{link, material, thickness_m,
 ///   governing_ratio, message}] (empty without a design), warnings: `input_warnings`, then the
-///   surface's, then the audit's.
+///   audit's (the surface's among them).
 /// `indent` as in nlohmann's dump: 2 (the CLI's), or -1 for one line.
 std::string AuditJson(const optim::AuditSetup& setup, const optim::AuditResult& result,
                       std::span<const std::string> input_warnings = {}, int indent = 2);
