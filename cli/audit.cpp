@@ -275,7 +275,9 @@ AuditRun Resolve(const AuditCommandOptions& o) {
       const std::string what = e.what();
       throw InputError((what.rfind("no family", 0) == 0 ? "--family: " : "--design-material: ") + what);
     }
-    if (o.allow_unknown_strength) setup.rule.unknown_strength_allowed = true;
+    // The design's rule is optimize's: unknown strengths only with --allow-unknown-strength (the
+    // audit alone judges a covering of unknown strength without the crush check, as robot does).
+    setup.rule.unknown_strength_allowed = o.allow_unknown_strength;
     if (o.max_thickness) {
       run.options.design.max_thickness_m =
           ParseQuantity(*o.max_thickness, quantity_specs::kCoveringThickness, "--max-thickness");

@@ -23,8 +23,8 @@ std::string AuditHeatMapScript(const optim::AuditResult& result, double safety_f
   }
   s += fmt::format("set title {} . \"\\n\" . {}\n",
                    GnuplotQuoted(fmt::format("covopt audit {}: {}", trajectory_name, verdict)),
-                   GnuplotQuoted(fmt::format("largest ratio v / (SF v_max) over each link's points and {} regions; "
-                                             "limit {:.4g}",
+                   GnuplotQuoted(fmt::format("largest ratio over each link's points and {} regions (safe: safety factor x "
+                                             "ratio <= 1, here {:.4g})",
                                              result.regions.size(), at_limit)));
   // Cells centred on (time, link index); the time of a cell is its sample's.
   s += "$map << EOD\n";
@@ -45,7 +45,7 @@ std::string AuditHeatMapScript(const optim::AuditResult& result, double safety_f
   for (std::size_t l = 0; l < links; ++l) {
     s += fmt::format("{}{} {}", l ? ", " : "", GnuplotQuoted(result.links[l]), l);
   }
-  s += ")\nset autoscale xfix\nset key below\n";
+  s += ")\nset autoscale xfix\nset key below\nset bmargin 5\n";
   s += "plot $map using 1:2:3 with image notitle";
   if (result.limiting_cell) {
     const optim::AuditCell& c = result.cells[*result.limiting_cell];

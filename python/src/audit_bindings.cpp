@@ -186,7 +186,7 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
       const std::string what = e.what();
       throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
     }
-    if (Flag(kwargs, "allow_unknown_strength")) setup.rule.unknown_strength_allowed = true;
+    setup.rule.unknown_strength_allowed = Flag(kwargs, "allow_unknown_strength");  // optimize's rule (cli/audit.cpp)
     if (const auto v = Option(kwargs, "max_thickness")) {
       options.design.max_thickness_m = ReadSceneQuantity(*v, quantity_specs::kCoveringThickness, "max_thickness");
     }
