@@ -15,21 +15,9 @@
 #include <covopt/robot/surface.hpp>
 #include <covopt/robot/trajectory.hpp>
 
+#include "fr3_pick.hpp"
+
 namespace {
-
-const std::string kFr3Urdf = std::string(COVOPT_ROBOT_MODELS_DIR) + "/franka_fr3.urdf";
-
-const covopt::robot::KinematicChain& Fr3() {
-  static const covopt::robot::KinematicChain chain =
-      covopt::robot::KinematicChain::FromUrdfFile(kFr3Urdf, {"", "fr3_link8"});
-  return chain;
-}
-
-const covopt::robot::JointTrajectory& Pick() {
-  static const covopt::robot::JointTrajectory trajectory =
-      covopt::robot::ReadJointTrajectory(std::string(COVOPT_ROBOT_MODELS_DIR) + "/franka_fr3_pick.csv", 7);
-  return trajectory;
-}
 
 /// (link index, point in the link frame) for every point of the FR3's surface.
 std::vector<std::pair<std::size_t, Eigen::Vector3d>> SurfacePoints(const covopt::robot::ChainSampleKinematics& kin) {

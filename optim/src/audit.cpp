@@ -43,6 +43,15 @@ struct EnergyLimit {
   LimitingCriterion head_criterion = LimitingCriterion::kNone;
 };
 
+/// A braked limit at one mass (the time path).
+struct BrakedLimit {
+  double max_safe_speed_m_per_s = 0.0;  ///< [m/s]; 0: no safe speed
+  BodyLimitKind binding = BodyLimitKind::kNone;
+  LimitingCriterion head_criterion = LimitingCriterion::kNone;
+  bool failed = false;  ///< the time path failed: no answer
+  std::string message;
+};
+
 BodyLimitKind FromHead(LimitingCriterion criterion) noexcept {
   switch (criterion) {
     case LimitingCriterion::kLaceration:
@@ -81,6 +90,46 @@ class RegionLimits {
 
   /// E* of region r for `covering` on a surface of radius `radius_m`: MaxSafeSpeed at a fixed
   /// robot (the largest μ, m_H: the lowest v_max, so the ceiling is met last).
+  /// The braked robot's largest safe speed against region r at mass `mass_kg` (the time path,
+  /// bracketed: MaxSafeSpeed on a braking scene), for the branch and bound of §14.4.
+  BrakedLimit Braked(const AuditCovering& covering, double radius_m, std::size_t r, double mass_kg) const {
+    const DesignRule& rule = setup_.rule;
+    const bool covered = covering.covering.thickness_m > 0.0;
+    BrakedLimit out;
+    if (!is_head(r)) {
+      // Refused by ValidateSetup until the braked body-region model is merged.
+      throw std::logic_error("audit: braking against a body region is not available");
+    }
+    const std::optional<CandidateMaterial>& material = covering.material;
+    if (covered && material && material->crush_behaviour == materials::CrushBehaviour::kUnknown &&
+        rule.refuses_unknown_strength()) {
+      out.binding = BodyLimitKind::kCrush;
+      out.head_criterion = LimitingCriterion::kCrush;
+      return out;  // refused at every speed, braked or not
+    }
+    Scene scene = *setup_.head;
+    scene.robot.mass_kg = mass_kg;
+    scene.robot.speed_m_per_s = 1.0;
+    scene.robot.radius_m = radius_m;
+    scene.robot.reaction_delay_s = setup_.reaction_delay_s;
+    scene.robot.braking_m_per_s2 = setup_.braking_m_per_s2;
+    scene.covering = covering.covering;
+    SpeedLimitOptions options = HeadOptions(covering);
+    const SpeedLimit limit = MaxSafeSpeed(scene, options);
+    out.head_criterion = limit.limited_by;
+    out.binding = FromHead(limit.limited_by);
+    out.max_safe_speed_m_per_s = limit.max_safe_speed_m_per_s;
+    if (limit.status == SpeedLimitStatus::kSafeUpToSearchLimit) {
+      out.max_safe_speed_m_per_s = kModelMaxSpeed_m_per_s;
+      out.binding = BodyLimitKind::kNone;
+      out.head_criterion = LimitingCriterion::kNone;
+    } else if (limit.status == SpeedLimitStatus::kEvaluationFailed) {
+      out.failed = true;
+      out.message = limit.message;
+    }
+    return out;
+  }
+
   EnergyLimit Limit(const AuditCovering& covering, double radius_m, std::size_t r) const {
     const DesignRule& rule = setup_.rule;
     EnergyLimit out;
@@ -117,14 +166,8 @@ class RegionLimits {
     scene.robot.speed_m_per_s = 1.0;
     scene.robot.radius_m = radius_m;
     scene.covering = covering.covering;
-    SpeedLimitOptions options;
-    options.allow_full_compression = !rule.compression_counts();
-    options.safety_factor = rule.safety_factor;
+    SpeedLimitOptions options = HeadOptions(covering);
     options.oracle.choice = OracleChoice::kExact;
-    options.allow_crushing = rule.crushing_allowed;
-    if (covered && material && material->crush_behaviour == materials::CrushBehaviour::kCrushes) {
-      options.covering_compressive_strength_Pa = material->compressive_strength_Pa;
-    }
     const SpeedLimit limit = MaxSafeSpeed(scene, options);
     out.head_criterion = limit.limited_by;
     out.binding = FromHead(limit.limited_by);
@@ -142,6 +185,21 @@ class RegionLimits {
   }
 
  private:
+  /// The head's criteria under the rule, with the covering's strength where it crushes.
+  SpeedLimitOptions HeadOptions(const AuditCovering& covering) const {
+    const DesignRule& rule = setup_.rule;
+    SpeedLimitOptions options;
+    options.allow_full_compression = !rule.compression_counts();
+    options.safety_factor = rule.safety_factor;
+    options.allow_crushing = rule.crushing_allowed;
+    const std::optional<CandidateMaterial>& material = covering.material;
+    if (covering.covering.thickness_m > 0.0 && material &&
+        material->crush_behaviour == materials::CrushBehaviour::kCrushes) {
+      options.covering_compressive_strength_Pa = material->compressive_strength_Pa;
+    }
+    return options;
+  }
+
   const AuditSetup& setup_;
   std::vector<std::string> names_;
   std::vector<double> inverse_body_mass_;
@@ -234,9 +292,10 @@ void ValidateSetup(const AuditSetup& s) {
           "reaction_delay_s must be in [0, 10] s (got " + Number(s.reaction_delay_s) + ")");
   Require(std::isfinite(s.braking_m_per_s2) && s.braking_m_per_s2 >= 0.0 && s.braking_m_per_s2 <= 1e4,
           "braking_m_per_s2 must be in [0, 1e4] m/s² (got " + Number(s.braking_m_per_s2) + ")");
-  Require(s.braking_m_per_s2 == 0.0,
-          "braking_m_per_s2: a braking robot is not audited yet (the braked body-region model is not in this "
-          "build); audit it without braking (an upper bound: braking only takes energy out)");
+  Require(s.braking_m_per_s2 == 0.0 || s.regions.empty(),
+          "braking_m_per_s2: braking against the body regions is not in this build yet (the braked body-region "
+          "model is not merged); audit the head alone with braking, or the regions without it (an upper bound: "
+          "braking only takes energy out)");
   Require(std::isfinite(s.rule.safety_factor) && s.rule.safety_factor >= 1.0 && s.rule.safety_factor <= 100.0,
           "rule.safety_factor must be in [1, 100] (got " + Number(s.rule.safety_factor) + ")");
   ValidateCovering(s.covering, "covering");
@@ -323,6 +382,39 @@ struct Pass {
   std::size_t sample_count = 0;
 };
 
+/// Visits every moving point-sample of the trajectory: per sample Update, then
+/// on_point(sample, link, point, motion) for every moving point of every link, then
+/// on_sample(sample, time). Checks the times (non-decreasing, finite) and the samples' sizes.
+template <class OnPoint, class OnSample>
+void Walk(const AuditSetup& setup, const robot::JointTrajectory& trajectory, const std::vector<LinkPlan>& plans,
+          const OnPoint& on_point, const OnSample& on_sample) {
+  robot::ChainSampleKinematics kin(setup.chain, setup.motion);
+  double previous_time = -kInf;
+  for (std::size_t i = 0; i < trajectory.size(); ++i) {
+    const double t = trajectory.time_s[i];
+    if (!std::isfinite(t) || t < previous_time) {
+      throw std::invalid_argument(SampleWhere(trajectory, i) + ": time " + FormatShortest(t) +
+                                  " s goes backwards or is not finite");
+    }
+    previous_time = t;
+    if (i >= trajectory.positions.size() || i >= trajectory.velocities.size()) {
+      throw std::invalid_argument(SampleWhere(trajectory, i) +
+                                  ": the trajectory has fewer positions or velocities than times");
+    }
+    kin.Update(trajectory.positions[i], trajectory.velocities[i], SampleWhere(trajectory, i));
+    for (std::size_t l = 0; l < plans.size(); ++l) {
+      const LinkPlan& plan = plans[l];
+      const std::vector<robot::SurfacePoint>& points = plan.surface->points;
+      for (std::size_t p = 0; p < points.size(); ++p) {
+        const robot::PointMotion m = kin.Point(plan.chain_index, points[p].position_m);
+        if (!m.moving || !(m.speed_m_per_s >= kModelMinSpeed_m_per_s)) continue;
+        on_point(i, l, p, m);
+      }
+    }
+    on_sample(i, t);
+  }
+}
+
 Pass RunPass(const AuditSetup& setup, const robot::JointTrajectory& trajectory, const RegionLimits& regions,
              const std::vector<LinkPlan>& plans, const AuditOptions& options, bool demand) {
   const std::size_t n_links = plans.size(), n_regions = regions.size();
@@ -343,75 +435,156 @@ Pass RunPass(const AuditSetup& setup, const robot::JointTrajectory& trajectory, 
   }
   std::vector<double> inverse_body_mass(n_regions);
   for (std::size_t r = 0; r < n_regions; ++r) inverse_body_mass[r] = regions.inverse_body_mass(r);
-
-  robot::ChainSampleKinematics kin(setup.chain, setup.motion);
-  std::vector<double> link_ratio(n_links);
-  std::vector<std::size_t> link_region(n_links);
+  std::vector<double> link_ratio(n_links, 0.0);
+  std::vector<std::size_t> link_region(n_links, 0);
   if (options.keep_ratio_over_time) {
     pass.ratio_over_time.reserve(trajectory.size() * n_links);
     pass.time_s.reserve(trajectory.size());
   }
-  double previous_time = -kInf;
-  for (std::size_t i = 0; i < trajectory.size(); ++i) {
-    const double t = trajectory.time_s[i];
-    if (!std::isfinite(t) || t < previous_time) {
-      throw std::invalid_argument(SampleWhere(trajectory, i) + ": time " + FormatShortest(t) +
-                                  " s goes backwards or is not finite");
+  double current_time = 0.0;
+  std::size_t current_sample = trajectory.size();
+  const auto on_point = [&](std::size_t i, std::size_t l, std::size_t p, const robot::PointMotion& m) {
+    if (i != current_sample) {  // the first moving point of sample i: its time
+      current_sample = i;
+      current_time = trajectory.time_s[i];
     }
-    previous_time = t;
-    Require(i < trajectory.positions.size() && i < trajectory.velocities.size(),
-            SampleWhere(trajectory, i) + ": the trajectory has fewer positions or velocities than times");
-    kin.Update(trajectory.positions[i], trajectory.velocities[i], SampleWhere(trajectory, i));
-    for (std::size_t l = 0; l < n_links; ++l) {
-      const LinkPlan& plan = plans[l];
-      double worst = 0.0;
-      std::size_t worst_region = 0;
-      AuditCell* row = &pass.cells[l * n_regions];
-      double* link_demand = demand ? pass.demand_J[l].data() : nullptr;
-      const std::vector<robot::SurfacePoint>& points = plan.surface->points;
-      for (std::size_t p = 0; p < points.size(); ++p) {
-        const robot::PointMotion m = kin.Point(plan.chain_index, points[p].position_m);
-        const double v = m.speed_m_per_s;
-        if (!m.moving || !(v >= kModelMinSpeed_m_per_s)) continue;
-        const double inverse_mass = 1.0 / m.reflected_mass_kg;  // 0 for a fixed direction
-        const EnergyLimit* limits = &plan.limits[plan.point_radius[p] * n_regions];
-        double* point_demand = demand ? link_demand + plan.point_radius[p] * n_regions : nullptr;
-        for (std::size_t r = 0; r < n_regions; ++r) {
-          const double inverse_mass_sum = inverse_mass + inverse_body_mass[r];  // 1/μ
-          const double v_max = MaxSpeed(limits[r], inverse_mass_sum);
-          const double ratio = v / (sf * v_max);
-          if (ratio > worst) {
-            worst = ratio;
-            worst_region = r;
-          }
-          if (point_demand) point_demand[r] = std::max(point_demand[r], 0.5 * v * v / inverse_mass_sum);
-          AuditCell& c = row[r];
-          if (c.sample && !(ratio > c.governing_ratio)) continue;
-          c.governing_ratio = ratio;
-          c.speed_scale = v_max / v;
-          c.binding = v_max < kModelMaxSpeed_m_per_s ? limits[r].binding : BodyLimitKind::kNone;
-          c.head_criterion = v_max < kModelMaxSpeed_m_per_s ? limits[r].head_criterion : LimitingCriterion::kNone;
-          c.sample = i;
-          c.time_s = t;
-          c.point = p;
-          c.point_in_link_m = points[p].position_m;
-          c.point_in_base_m = m.position_m;
-          c.speed_m_per_s = v;
-          c.reflected_mass_kg = m.reflected_mass_kg;
-          c.max_safe_speed_m_per_s = v_max;
-        }
+    const LinkPlan& plan = plans[l];
+    const double v = m.speed_m_per_s;
+    const double inverse_mass = 1.0 / m.reflected_mass_kg;  // 0 for a fixed direction
+    const EnergyLimit* limits = &plan.limits[plan.point_radius[p] * n_regions];
+    double* point_demand = demand ? pass.demand_J[l].data() + plan.point_radius[p] * n_regions : nullptr;
+    AuditCell* row = &pass.cells[l * n_regions];
+    double& worst = link_ratio[l];
+    for (std::size_t r = 0; r < n_regions; ++r) {
+      const double inverse_mass_sum = inverse_mass + inverse_body_mass[r];  // 1/μ
+      const double v_max = MaxSpeed(limits[r], inverse_mass_sum);
+      const double ratio = v / (sf * v_max);
+      if (ratio > worst) {
+        worst = ratio;
+        link_region[l] = r;
       }
-      link_ratio[l] = worst;
-      link_region[l] = worst_region;
+      if (point_demand) point_demand[r] = std::max(point_demand[r], 0.5 * v * v / inverse_mass_sum);
+      AuditCell& c = row[r];
+      if (c.sample && !(ratio > c.governing_ratio)) continue;
+      c.governing_ratio = ratio;
+      c.speed_scale = v_max / v;
+      c.binding = v_max < kModelMaxSpeed_m_per_s ? limits[r].binding : BodyLimitKind::kNone;
+      c.head_criterion = v_max < kModelMaxSpeed_m_per_s ? limits[r].head_criterion : LimitingCriterion::kNone;
+      c.sample = i;
+      c.time_s = current_time;
+      c.point = p;
+      c.point_in_link_m = plan.surface->points[p].position_m;
+      c.point_in_base_m = m.position_m;
+      c.speed_m_per_s = v;
+      c.reflected_mass_kg = m.reflected_mass_kg;
+      c.max_safe_speed_m_per_s = v_max;
     }
+  };
+  const auto on_sample = [&](std::size_t i, double t) {
     if (options.keep_ratio_over_time) {
       pass.ratio_over_time.insert(pass.ratio_over_time.end(), link_ratio.begin(), link_ratio.end());
       pass.time_s.push_back(t);
     }
     if (options.on_sample) options.on_sample(AuditSampleRow{i, t, link_ratio, link_region});
-  }
+    std::fill(link_ratio.begin(), link_ratio.end(), 0.0);
+    std::fill(link_region.begin(), link_region.end(), 0);
+  };
+  Walk(setup, trajectory, plans, on_point, on_sample);
   pass.sample_count = trajectory.size();
   return pass;
+}
+
+/// What the branch and bound of a braking robot reports.
+struct BrakingOutcome {
+  std::size_t evaluations = 0;           ///< braked limits computed (time path)
+  std::size_t fixed_direction_points = 0;  ///< point-samples along a fixed direction: unbraked
+  std::optional<std::string> failure;    ///< the first time-path failure, with its cell
+};
+
+/// A braking robot (docs/model.md §14.4): replaces every cell's unbraked governing
+/// point-sample by the braked one. The unbraked ratio bounds the braked ratio from above, so
+/// per cell: a lower bound from the braked ratio at the unbraked governing point-sample; a
+/// second pass collects the point-samples whose unbraked ratio exceeds it; these are judged
+/// braked in decreasing order of their unbraked ratio until that bound is no larger than the
+/// best braked ratio found. The result is the braked governing ratio, exactly.
+BrakingOutcome ApplyBraking(const AuditSetup& setup, const robot::JointTrajectory& trajectory,
+                            const RegionLimits& regions, const std::vector<LinkPlan>& plans,
+                            std::vector<AuditCell>& cells) {
+  const std::size_t n_regions = regions.size();
+  const double sf = setup.rule.safety_factor;
+  BrakingOutcome outcome;
+  // The braked ratio of cell k at one point-sample; false when the time path failed.
+  const auto judge = [&](std::size_t k, std::size_t point, double v, double mass, AuditCell& into) {
+    const LinkPlan& plan = plans[cells[k].link];
+    const std::size_t r = cells[k].region;
+    if (!std::isfinite(mass)) {  // a fixed direction cannot brake: its unbraked ratio stands
+      ++outcome.fixed_direction_points;
+      return true;
+    }
+    ++outcome.evaluations;
+    const BrakedLimit b = regions.Braked(plan.covering, plan.radii[plan.point_radius[point]], r, mass);
+    if (b.failed) {
+      if (!outcome.failure) outcome.failure = b.message;
+      return false;
+    }
+    into.max_safe_speed_m_per_s = b.max_safe_speed_m_per_s;
+    into.governing_ratio = v / (sf * b.max_safe_speed_m_per_s);
+    into.speed_scale = b.max_safe_speed_m_per_s / v;
+    into.binding = b.binding;
+    into.head_criterion = b.head_criterion;
+    return true;
+  };
+  // 1. The lower bounds: each cell's unbraked governing point-sample, braked.
+  std::vector<AuditCell> best = cells;
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    if (!cells[k].sample) continue;
+    if (!judge(k, cells[k].point, cells[k].speed_m_per_s, cells[k].reflected_mass_kg, best[k])) return outcome;
+  }
+  // 2. The candidates: every point-sample whose unbraked ratio exceeds its cell's bound.
+  struct Candidate {
+    double unbraked_ratio;
+    AuditCell cell;
+  };
+  std::vector<std::vector<Candidate>> candidates(cells.size());
+  std::vector<double> inverse_body_mass(n_regions);
+  for (std::size_t r = 0; r < n_regions; ++r) inverse_body_mass[r] = regions.inverse_body_mass(r);
+  const auto on_point = [&](std::size_t i, std::size_t l, std::size_t p, const robot::PointMotion& m) {
+    const LinkPlan& plan = plans[l];
+    const double v = m.speed_m_per_s;
+    const EnergyLimit* limits = &plan.limits[plan.point_radius[p] * n_regions];
+    for (std::size_t r = 0; r < n_regions; ++r) {
+      const std::size_t k = l * n_regions + r;
+      if (!best[k].sample || (i == *cells[k].sample && p == cells[k].point)) continue;  // judged in 1.
+      const double ratio = v / (sf * MaxSpeed(limits[r], 1.0 / m.reflected_mass_kg + inverse_body_mass[r]));
+      if (!(ratio > best[k].governing_ratio)) continue;
+      Candidate c{ratio, cells[k]};
+      c.cell.sample = i;
+      c.cell.time_s = trajectory.time_s[i];
+      c.cell.point = p;
+      c.cell.point_in_link_m = plan.surface->points[p].position_m;
+      c.cell.point_in_base_m = m.position_m;
+      c.cell.speed_m_per_s = v;
+      c.cell.reflected_mass_kg = m.reflected_mass_kg;
+      candidates[k].push_back(std::move(c));
+    }
+  };
+  Walk(setup, trajectory, plans, on_point, [](std::size_t, double) {});
+  // 3. Branch and bound per cell, in order of the unbraked bound.
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    std::vector<Candidate>& list = candidates[k];
+    std::stable_sort(list.begin(), list.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.unbraked_ratio > b.unbraked_ratio; });
+    for (Candidate& c : list) {
+      if (!(c.unbraked_ratio > best[k].governing_ratio)) break;  // nothing below can beat it
+      if (!judge(k, c.cell.point, c.cell.speed_m_per_s, c.cell.reflected_mass_kg, c.cell)) return outcome;
+      if (c.cell.governing_ratio > best[k].governing_ratio ||
+          (c.cell.governing_ratio == best[k].governing_ratio && *c.cell.sample < *best[k].sample)) {
+        best[k] = c.cell;
+      }
+    }
+  }
+  cells = std::move(best);
+  return outcome;
 }
 
 /// The per-link design: the thinnest thickness per material with E* >= the link's demand for
@@ -498,6 +671,11 @@ std::vector<std::string> Scope(const AuditSetup& setup) {
   if (setup.head) {
     for (std::string& line : HeadVerdictScope(rule)) scope.push_back("Head (Park et al. 2011): " + line);
   }
+  if (setup.braking_m_per_s2 > 0.0) {
+    scope.push_back("The robot brakes " + FormatSignificant(setup.reaction_delay_s) + " s after first contact at " +
+                    FormatSignificant(setup.braking_m_per_s2) +
+                    " m/s² (docs/model.md §10.2): the governing ratios are the braked robot's, on the time path");
+  }
   scope.push_back(
       "Each surface point at each sample: its velocity and the reflected mass along it (rigid links, no rotor "
       "inertia); every point of a link wears the link's covering on the point's radius of curvature.");
@@ -552,6 +730,30 @@ AuditResult Audit(const AuditSetup& setup, const robot::JointTrajectory& traject
   const bool design = !options.design.materials.empty();
   Pass pass = RunPass(setup, trajectory, regions, plans, options, design);
   result.cells = std::move(pass.cells);
+  const bool brakes = setup.braking_m_per_s2 > 0.0;
+  if (brakes) {
+    const BrakingOutcome braking = ApplyBraking(setup, trajectory, regions, plans, result.cells);
+    if (braking.failure) {
+      result.ratio_over_time = std::move(pass.ratio_over_time);
+      result.time_s = std::move(pass.time_s);
+      result.sample_count = pass.sample_count;
+      result.status = TrajectoryCheckStatus::kEvaluationFailed;
+      result.safe_speed_scale = 0.0;
+      result.message = "evaluation failed: the time path of the braking robot did not answer (" + *braking.failure +
+                       "); no verdict";
+      result.scope = Scope(setup);
+      return result;
+    }
+    result.warnings.push_back(
+        "braking: the cells are the braked robot's (" + std::to_string(braking.evaluations) +
+        " braked limits on the time path); the per-sample ratios (heat map, streamed rows) are the unbraked "
+        "bounds");
+    if (braking.fixed_direction_points > 0) {
+      result.warnings.push_back("braking: " + std::to_string(braking.fixed_direction_points) +
+                                " point-samples move along a direction the chain cannot move in (an infinite "
+                                "reflected mass): they are judged unbraked");
+    }
+  }
   result.ratio_over_time = std::move(pass.ratio_over_time);
   result.time_s = std::move(pass.time_s);
   result.sample_count = pass.sample_count;
@@ -580,7 +782,7 @@ AuditResult Audit(const AuditSetup& setup, const robot::JointTrajectory& traject
     }
   }
   result.scope = Scope(setup);
-  result.warnings = setup.surface.warnings;
+  result.warnings.insert(result.warnings.begin(), setup.surface.warnings.begin(), setup.surface.warnings.end());
   for (const std::string& w : trajectory.warnings) result.warnings.push_back(w);
   if (setup.flat_face_radius_m) {
     for (const LinkPlan& plan : plans) {
@@ -606,6 +808,11 @@ AuditResult Audit(const AuditSetup& setup, const robot::JointTrajectory& traject
 
   // The per-link design, then a second audit with every designed link at its covering.
   const AuditDesignOptions& d = options.design;
+  if (brakes) {
+    result.warnings.push_back(
+        "braking: the per-link design is the unbraked robot's (conservative: braking only takes energy out); its "
+        "re-check is braked");
+  }
   AuditSetup recheck = setup;
   std::vector<std::size_t> designed;
   for (std::size_t l = 0; l < plans.size(); ++l) {

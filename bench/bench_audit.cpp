@@ -1,0 +1,102 @@
+// Benchmarks of the whole-robot audit (optim/audit.hpp) on the shipped Franka FR3 along its pick
+// move (robot/models/franka_fr3_pick.csv, 101 samples), against every transient body region of
+// ISO/TS 15066 (29 areas) and the head (Park et al.): 30 regions, each point wearing a 10 mm
+// PORON foam on its capsule's radius. Every run is a whole Audit call (validation, the E*
+// precompute per link, radius and region, the pass over the samples).
+//   BM_AuditSamplePointFr3    one surface point (on fr3_link7): items = its 101 point-samples,
+//                             so the time per item is one audit sample for one point (kinematics,
+//                             reflected mass, every region's check), the setup amortised over 101.
+//   BM_AuditPickFr3/<n>       <n> surface points spread over every link (0: the whole surface at
+//                             0.05 m spacing); the target is 40 points in <= 0.2 s.
+//   BM_AuditPickDesignFr3     the same at 40 points with the per-link design over the whole
+//                             catalog, and its re-check audit.
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include <covopt/materials/body_regions.hpp>
+#include <covopt/materials/catalog.hpp>
+#include <covopt/optim/audit.hpp>
+#include <covopt/optim/design.hpp>
+#include <covopt/robot/kinematic_chain.hpp>
+#include <covopt/robot/surface.hpp>
+#include <covopt/robot/trajectory.hpp>
+
+#include "fr3_pick.hpp"
+
+namespace {
+
+/// The FR3's surface at 0.05 m spacing, thinned to `count` points spread evenly over all of
+/// them (0: every point); links left without points are dropped.
+covopt::robot::RobotSurface Surface(std::size_t count) {
+  covopt::robot::RobotSurface surface = covopt::robot::SurfaceFromUrdfFile(kFr3Urdf, Fr3());
+  if (count == 0) return surface;
+  std::vector<std::pair<std::size_t, std::size_t>> all;
+  for (std::size_t l = 0; l < surface.links.size(); ++l) {
+    for (std::size_t p = 0; p < surface.links[l].points.size(); ++p) all.emplace_back(l, p);
+  }
+  std::vector<std::vector<covopt::robot::SurfacePoint>> kept(surface.links.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto [l, p] = all[i * all.size() / count];
+    kept[l].push_back(surface.links[l].points[p]);
+  }
+  covopt::robot::RobotSurface thinned = surface;
+  thinned.links.clear();
+  for (std::size_t l = 0; l < surface.links.size(); ++l) {
+    if (kept[l].empty()) continue;
+    thinned.links.push_back(surface.links[l]);
+    thinned.links.back().points = std::move(kept[l]);
+  }
+  return thinned;
+}
+
+covopt::optim::AuditSetup Setup(covopt::robot::RobotSurface surface) {
+  covopt::optim::AuditSetup setup{Fr3(), std::move(surface)};
+  const std::vector<std::string> names{"PU foam PORON 4701-30 320"};
+  const covopt::optim::CandidateMaterial foam =
+      covopt::optim::SelectCandidates(covopt::materials::Catalog::BuiltIn(), names).front();
+  setup.covering = {covopt::CoveringSpec{foam.youngs_modulus_Pa, foam.poisson_ratio, 0.01}, foam};
+  setup.regions = covopt::materials::BodyRegionTable::BuiltIn().AllLimits(covopt::ContactType::kTransient);
+  setup.head = covopt::Scene{};
+  return setup;
+}
+
+void BM_AuditSamplePointFr3(benchmark::State& state) {
+  covopt::robot::RobotSurface surface = covopt::robot::SurfaceFromUrdfFile(kFr3Urdf, Fr3());
+  covopt::robot::LinkSurface link7 = surface.links.back();
+  link7.points = {link7.points.front()};
+  surface.links = {link7};
+  const covopt::optim::AuditSetup setup = Setup(surface);
+  covopt::optim::AuditOptions options;
+  options.keep_ratio_over_time = false;
+  for (auto _ : state) benchmark::DoNotOptimize(covopt::optim::Audit(setup, Pick(), options));
+  state.SetItemsProcessed(state.iterations() * static_cast<benchmark::IterationCount>(Pick().size()));
+  state.counters["regions"] = static_cast<double>(setup.regions.size() + 1);
+}
+BENCHMARK(BM_AuditSamplePointFr3)->Unit(benchmark::kMicrosecond);
+
+void BM_AuditPickFr3(benchmark::State& state) {
+  const covopt::optim::AuditSetup setup = Setup(Surface(static_cast<std::size_t>(state.range(0))));
+  covopt::optim::AuditOptions options;
+  options.keep_ratio_over_time = false;
+  for (auto _ : state) benchmark::DoNotOptimize(covopt::optim::Audit(setup, Pick(), options));
+  state.counters["points"] = static_cast<double>(setup.surface.point_count());
+  state.counters["samples"] = static_cast<double>(Pick().size());
+  state.counters["regions"] = static_cast<double>(setup.regions.size() + 1);
+}
+BENCHMARK(BM_AuditPickFr3)->Arg(40)->Arg(0)->Unit(benchmark::kMillisecond);
+
+void BM_AuditPickDesignFr3(benchmark::State& state) {
+  const covopt::optim::AuditSetup setup = Setup(Surface(40));
+  covopt::optim::AuditOptions options;
+  options.keep_ratio_over_time = false;
+  options.design.materials = covopt::optim::SelectCandidates(covopt::materials::Catalog::BuiltIn());
+  for (auto _ : state) benchmark::DoNotOptimize(covopt::optim::Audit(setup, Pick(), options));
+  state.counters["materials"] = static_cast<double>(options.design.materials.size());
+}
+BENCHMARK(BM_AuditPickDesignFr3)->Unit(benchmark::kMillisecond);
+
+}  // namespace
