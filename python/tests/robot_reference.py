@@ -296,3 +296,66 @@ def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), directio
         result["direction"] = u
         result["reflected_mass_kg"] = mass_of(float(u @ a @ u))
     return result
+
+
+def link_point_motion(model, base, tip, q, qd, link, point):
+    """A point fixed to any link of the chain base -> tip (or hanging off it) at a sample
+    (q, q_dot): (position [m], velocity [m/s], reflected mass along the velocity [kg]), base
+    frame. The mass uses the whole chain's M(q), every joint free: J_v has zero columns for
+    the joints beyond the link. A point at rest (|v| <= 1e-9 m/s) has mass 0 (not computed),
+    as covopt's ChainSampleKinematics."""
+    state = forward_kinematics(model, base, tip, q)
+    p = (state.link_frames[link] @ np.append(np.asarray(point, dtype=float), 1.0))[:3]
+    jv, _ = point_jacobians(state, link, p)
+    v = jv @ np.asarray(qd, dtype=float)
+    speed = float(np.linalg.norm(v))
+    if speed <= 1e-9:
+        return p, v, 0.0
+    u = v / speed
+    m = joint_space_inertia(model, base, tip, q)
+    return p, v, 1.0 / float(u @ jv @ np.linalg.solve(m, jv.T) @ u)
+
+
+# The points of tests/robot/data/link_points_numpy.txt: (URDF file name in robot/models, tip,
+# links, seed). Each link gets three points (its origin and two off it) at the named
+# configuration ("ready") and at two random samples inside the joint limits.
+LINK_POINT_CASES = [
+    ("franka_fr3.urdf", "fr3_link8", ["fr3_link0", "fr3_link2", "fr3_link4", "fr3_link6", "fr3_link8"], 2505),
+    ("ur5e.urdf", "tool0", ["base_link_inertia", "shoulder_link", "upper_arm_link", "forearm_link",
+                            "wrist_2_link", "tool0"], 2506),
+]
+LINK_POINTS = [(0.0, 0.0, 0.0), (0.08, -0.03, 0.05), (-0.04, 0.1, -0.06)]
+READY = {"franka_fr3.urdf": [0.0, -math.pi / 4, 0.0, -3 * math.pi / 4, 0.0, math.pi / 2, math.pi / 4],
+         "ur5e.urdf": [0.0, -math.pi / 2, math.pi / 2, -math.pi / 2, -math.pi / 2, 0.0]}
+
+
+def link_point_rows(models_dir):
+    """The rows of tests/robot/data/link_points_numpy.txt, as lists of values: urdf, tip,
+    link, n, q (n), q_dot (n), point (3), then position (3), velocity (3), reflected mass."""
+    import os
+    rows = []
+    for urdf, tip, links, seed in LINK_POINT_CASES:
+        path = os.path.join(models_dir, urdf)
+        model = read_urdf(path)
+        root = ET.parse(path).getroot()
+        limits = {}
+        for j in root.findall("joint"):
+            limit = j.find("limit")
+            if limit is not None:
+                limits[j.get("name")] = (float(limit.get("lower")), float(limit.get("upper")),
+                                         float(limit.get("velocity")))
+        base = model.root()
+        movable = [j.name for j in model.chain(base, tip) if j.type in MOVABLE_JOINT_TYPES]
+        rng = np.random.default_rng(seed)
+        samples = [(np.array(READY[urdf]), np.array([0.3 * (-1) ** k for k in range(len(movable))]))]
+        for _ in range(2):
+            lo = np.array([max(limits[j][0], -3.0) + 0.05 for j in movable])
+            hi = np.array([min(limits[j][1], 3.0) - 0.05 for j in movable])
+            speed = np.array([0.5 * limits[j][2] for j in movable])
+            samples.append((rng.uniform(lo, hi), rng.uniform(-speed, speed)))
+        for q, qd in samples:
+            for link in links:
+                for point in LINK_POINTS:
+                    p, v, mass = link_point_motion(model, base, tip, q, qd, link, point)
+                    rows.append([urdf, tip, link, len(movable), *q, *qd, *point, *p, *v, mass])
+    return rows

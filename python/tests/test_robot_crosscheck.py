@@ -13,7 +13,9 @@ Then covopt.reflected_mass (urdfdom + Orocos KDL) against that reference on both
 cobots at their named and at random configurations (fixed seed), several contact points
 and directions, and on the test arms: masses to 1e-9 relative, directions to 1e-9, the
 contact point to 1e-12 m; and covopt.contact_motion along the example FR3 trajectory
-(velocity, speed, mass along the motion)."""
+(velocity, speed, mass along the motion). Points on inner links (ChainSampleKinematics, C++
+only) are checked by the C++ tests against tests/robot/data/link_points_numpy.txt, which the
+last test here recomputes from the reference."""
 
 import math
 import os
@@ -407,3 +409,45 @@ def test_covopt_contact_motion_along_the_example_trajectory_agrees_with_the_refe
         elif not sample.moving:
             expected = ref.reflected_mass(model, "fr3_link8", q, point=point)
             _assert_same_mass(sample.reflected_mass_kg, expected["max_reflected_mass_kg"])
+
+
+def test_link_points_file_is_what_the_numpy_reference_gives():
+    """tests/robot/data/link_points_numpy.txt (the numbers the C++ ChainSampleKinematics test
+    holds covopt to, points on several links of both cobots) is still the reference's: every
+    row recomputed here, the velocity also against finite differences of the reference's own
+    positions."""
+    path = os.path.join(HERE, os.pardir, os.pardir, "tests", "robot", "data", "link_points_numpy.txt")
+    with open(path) as f:
+        stored = [line.split() for line in f if line.strip() and not line.startswith("#")]
+    expected = ref.link_point_rows(MODELS)
+    assert len(stored) == len(expected) == 99
+    models = {}
+    for row, want in zip(stored, expected):
+        assert row[:4] == [str(x) for x in want[:4]]
+        np.testing.assert_allclose([float(x) for x in row[4:]], want[4:], rtol=1e-12, atol=1e-15)
+        urdf, tip, link, n = want[0], want[1], want[2], want[3]
+        model = models.setdefault(urdf, ref.read_urdf(os.path.join(MODELS, urdf)))
+        q, qd, point = (np.array(want[4:4 + n]), np.array(want[4 + n:4 + 2 * n]),
+                        want[4 + 2 * n:7 + 2 * n])
+        h = 1e-6
+        ahead, _, _ = ref.link_point_motion(model, model.root(), tip, q + h * qd, qd, link, point)
+        behind, _, _ = ref.link_point_motion(model, model.root(), tip, q - h * qd, qd, link, point)
+        np.testing.assert_allclose((ahead - behind) / (2 * h), want[10 + 2 * n:13 + 2 * n], atol=1e-8)
+    # Every joint free: on a link before the tip the mass is at most the one with the outer
+    # joints locked where they are, 1/(u' J_k (M_kk)^-1 J_k' u), since (M^-1)_kk >= (M_kk)^-1
+    # (a Schur complement); strictly below it where the outer joints couple.
+    fr3 = models["franka_fr3.urdf"]
+    below = 0
+    for want in expected:
+        if want[0] == "franka_fr3.urdf" and want[2] == "fr3_link4" and want[-1] > 0:
+            n = want[3]
+            q = np.array(want[4:4 + n])
+            v = np.array(want[10 + 2 * n:13 + 2 * n])
+            u = v / np.linalg.norm(v)
+            state = ref.forward_kinematics(fr3, fr3.root(), "fr3_link8", q)
+            jv, _ = ref.point_jacobians(state, "fr3_link4", np.array(want[7 + 2 * n:10 + 2 * n]))
+            m = ref.joint_space_inertia(fr3, fr3.root(), "fr3_link8", q)
+            locked = 1.0 / (u @ jv[:, :4] @ np.linalg.solve(m[:4, :4], jv[:, :4].T) @ u)
+            assert want[-1] <= locked * (1 + 1e-12)
+            below += want[-1] < 0.99 * locked
+    assert below >= 3

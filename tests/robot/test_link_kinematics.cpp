@@ -4,14 +4,19 @@
 // (Update at q ± h q̇), positions and Jacobians against KDL's forward kinematics and Jacobian
 // solver on the chain cut at the link (ContactPoint, ContactJacobian), the reflected mass
 // against ReflectedMass on the tip link and against J M⁻¹ Jᵀ formed densely from
-// JointSpaceInertia and ContactJacobian elsewhere. python/tests/test_robot_crosscheck.py checks
-// the same points against the numpy reference.
+// JointSpaceInertia and ContactJacobian elsewhere; and points on several links against the
+// independent numpy reference (python/tests/robot_reference.py) through
+// tests/robot/data/link_points_numpy.txt, which python/tests/test_robot_crosscheck.py checks
+// is still what that reference gives.
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
+#include <fstream>
 #include <new>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -362,4 +367,51 @@ TEST_CASE("link kinematics: bad options and a massless joint are refused") {
   ChainSampleKinematics kin(massless);
   CHECK_THAT(MessageOf([&] { kin.Update(Eigen::VectorXd::Zero(1), Eigen::VectorXd::Ones(1)); }),
              Contains("massless.urdf") && Contains("not positive definite"));
+}
+
+TEST_CASE("link kinematics: points on several links of FR3 and UR5e agree with the numpy reference") {
+  // tests/robot/data/link_points_numpy.txt: scripts/make-link-points-reference.py, from
+  // python/tests/robot_reference.py (no KDL, no covopt).
+  std::ifstream in(std::string(COVOPT_ROBOT_TEST_DATA_DIR) + "/link_points_numpy.txt");
+  REQUIRE(in);
+  std::string line;
+  std::size_t rows = 0;
+  std::size_t moving = 0;
+  std::vector<std::string> links_seen;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    std::string urdf, tip, link;
+    std::size_t n = 0;
+    row >> urdf >> tip >> link >> n;
+    Eigen::VectorXd q(static_cast<Eigen::Index>(n)), qd(static_cast<Eigen::Index>(n));
+    for (auto& x : q) row >> x;
+    for (auto& x : qd) row >> x;
+    Eigen::Vector3d point, position, velocity;
+    double mass = 0.0;
+    row >> point.x() >> point.y() >> point.z() >> position.x() >> position.y() >> position.z() >> velocity.x() >>
+        velocity.y() >> velocity.z() >> mass;
+    REQUIRE(row);
+    const auto chain = KinematicChain::FromUrdfFile(kModels + "/" + urdf, {"", tip});
+    ChainSampleKinematics kin(chain);
+    kin.Update(q, qd);
+    const auto index = kin.LinkIndex(link);
+    REQUIRE(index.has_value());
+    const PointMotion m = kin.Point(*index, point);
+    INFO(urdf << " " << link << " point " << point.transpose());
+    CHECK((m.position_m - position).norm() < 1e-12);
+    CHECK((m.velocity_m_per_s - velocity).norm() < 1e-12 * std::max(1.0, velocity.norm()));
+    if (mass == 0.0) {
+      CHECK_FALSE(m.moving);
+      CHECK(m.reflected_mass_kg == 0.0);
+    } else {
+      CHECK(m.reflected_mass_kg == Approx(mass).epsilon(1e-9));
+      ++moving;
+    }
+    if (std::find(links_seen.begin(), links_seen.end(), link) == links_seen.end()) links_seen.push_back(link);
+    ++rows;
+  }
+  CHECK(rows == 99);
+  CHECK(moving > 70);
+  CHECK(links_seen.size() == 11);
 }

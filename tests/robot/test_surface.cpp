@@ -1,5 +1,6 @@
 // The robot's surface: URDF collision geometry (spheres, cylinders, boxes, capsules written as
 // a cylinder with two spheres), surface files, the sampling, and the FR3 model's capsules.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <catch2/catch.hpp>
 
 #include "covopt/robot/kinematic_chain.hpp"
+#include "covopt/robot/link_kinematics.hpp"
 #include "covopt/robot/surface.hpp"
 #include "robot_test_support.hpp"
 
@@ -353,4 +355,91 @@ TEST_CASE("every surface point of the FR3 model lies on its link's capsule from 
     }
   }
   CHECK(shapes == published.size());
+}
+
+TEST_CASE("the UR5e surface file gives every moving link of the UR5e its capsules, on the URDF's joint axes", "[robot][surface]") {
+  const std::string models = COVOPT_ROBOT_MODELS_DIR;
+  const KinematicChain chain = KinematicChain::FromUrdfFile(models + "/ur5e.urdf", {"", "tool0"});
+  // Without it the UR5e (no collision geometry) has no surface at all.
+  const RobotSurface bare = covopt::robot::SurfaceFromUrdfFile(models + "/ur5e.urdf", chain);
+  CHECK(bare.links.empty());
+  CHECK(bare.warnings.size() == chain.joints().size());
+
+  SurfaceOptions options;
+  options.surface_file = models + "/ur5e_surface.toml";
+  const RobotSurface surface = covopt::robot::SurfaceFromUrdfFile(models + "/ur5e.urdf", chain, options);
+  const std::vector<std::string> meshed{"shoulder_link", "upper_arm_link", "forearm_link",
+                                        "wrist_1_link",  "wrist_2_link",   "wrist_3_link"};
+  REQUIRE(surface.links.size() == meshed.size());
+  for (std::size_t i = 0; i < meshed.size(); ++i) {
+    const auto& link = surface.links[i];
+    CHECK(link.link == meshed[i]);
+    CHECK_FALSE(link.points.empty());
+    for (const SurfaceShape& shape : link.shapes) {
+      CHECK(shape.type == SurfaceShapeType::kCapsule);
+      CHECK(shape.radius_m > 0.03);
+      CHECK(shape.radius_m < 0.1);
+    }
+    for (const SurfacePoint& p : link.points) {
+      const SurfaceShape& shape = link.shapes.at(p.shape_index);
+      CHECK(DistanceToSegment(p.position_m, shape.a_m, shape.b_m) == Approx(shape.radius_m).epsilon(1e-12));
+    }
+  }
+  // The fixed links without a mesh (base_link_inertia, flange, tool0) are named, and only they.
+  REQUIRE(surface.warnings.size() == 3);
+  CHECK_THAT(surface.warnings[0], Catch::Contains("base_link_inertia"));
+  CHECK_THAT(surface.warnings[1], Catch::Contains("'flange'"));
+  CHECK_THAT(surface.warnings[2], Catch::Contains("'tool0'"));
+
+  // Each joint housing's capsule lies on the joint's axis as the URDF places it: the link's
+  // own joint (z through the origin) and, on the upper arm and forearm, the next joint's axis
+  // (the next link's origin in this link's frame; both joint axes are z).
+  covopt::robot::ChainSampleKinematics kin(chain);
+  kin.Update(Eigen::VectorXd::Zero(6), Eigen::VectorXd::Zero(6));
+  const auto on_z_axis_through = [](const SurfaceShape& s, const Eigen::Vector3d& at) {
+    return std::abs(s.a_m.x() - at.x()) < 1e-9 && std::abs(s.a_m.y() - at.y()) < 1e-9 &&
+           std::abs(s.b_m.x() - at.x()) < 1e-9 && std::abs(s.b_m.y() - at.y()) < 1e-9;
+  };
+  for (std::size_t i = 0; i < meshed.size(); ++i) {
+    const auto& shapes = surface.links[i].shapes;
+    CHECK(std::any_of(shapes.begin(), shapes.end(),
+                      [&](const SurfaceShape& s) { return on_z_axis_through(s, Eigen::Vector3d::Zero()); }));
+    if (meshed[i] == "upper_arm_link" || meshed[i] == "forearm_link") {
+      const std::size_t here = *kin.LinkIndex(meshed[i]);
+      const std::size_t next = *kin.LinkIndex(meshed[i + 1]);
+      const Eigen::Vector3d next_origin =
+          kin.LinkRotation(here).transpose() * (kin.LinkOrigin(next) - kin.LinkOrigin(here));
+      CHECK(std::any_of(shapes.begin(), shapes.end(),
+                        [&](const SurfaceShape& s) { return on_z_axis_through(s, next_origin); }));
+    }
+  }
+}
+
+TEST_CASE("the UR5e's surface refuses a mesh it has no file for, a link not on its chain and an unknown shape", "[robot][surface]") {
+  const std::string models = COVOPT_ROBOT_MODELS_DIR;
+  std::ifstream in(models + "/ur5e.urdf");
+  const std::string urdf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto with_collision = [&](const std::string& geometry) {
+    std::string text = urdf;
+    const std::string link = "<link name=\"wrist_3_link\">";
+    text.insert(text.find(link) + link.size(), Collision("0 0 0", "0 0 0", geometry));
+    return text;
+  };
+  const KinematicChain chain = KinematicChain::FromUrdfFile(models + "/ur5e.urdf", {"", "tool0"});
+  const std::string mesh = with_collision("<mesh filename=\"package://ur_description/meshes/ur5e/collision/wrist3.stl\"/>");
+  const std::string mesh_message = MessageOf([&] { SurfaceFromUrdfString(mesh, chain, {}, "ur5e+mesh.urdf"); });
+  CHECK_THAT(mesh_message, Catch::Contains("link 'wrist_3_link' has mesh collision geometry") &&
+                               Catch::Contains("wrist3.stl") && Catch::Contains("surface file"));
+  // The shipped surface file covers that mesh link.
+  SurfaceOptions options;
+  options.surface_file = models + "/ur5e_surface.toml";
+  CHECK(SurfaceFromUrdfString(mesh, chain, options).links.size() == 6);
+
+  options.surface_file = WriteTemp("ur5e_other.toml", "[[link]]\nname = \"fr3_link3\"\nsegments = [ { from_m = [0,0,0], to_m = [0,0,0.1], radius_m = 0.05 } ]\n");
+  const std::string other = MessageOf([&] { covopt::robot::SurfaceFromUrdfFile(models + "/ur5e.urdf", chain, options); });
+  CHECK_THAT(other, Catch::Contains("link 'fr3_link3' is not a moving link of the chain base_link -> tool0") &&
+                        Catch::Contains("shoulder_link"));
+  const std::string unknown = MessageOf([&] { SurfaceFromUrdfString(with_collision("<capsule radius=\"0.04\" length=\"0.1\"/>"), chain); });
+  CHECK_THAT(unknown, Catch::Contains("capsule") && Catch::Contains("wrist_3_link"));
+  for (const std::string& text : {mesh_message, other, unknown}) CHECK(text.find('\n') == std::string::npos);
 }
