@@ -152,7 +152,7 @@ TEST_CASE("audit --json is the library's audit of the same input, to the bit, in
   CHECK(j["cells"][0]["sample"].is_null());
 }
 
-TEST_CASE("audit: --csv and the streamed --samples-csv agree with --json; the table names the limit", "[audit]") {
+TEST_CASE("audit: --csv and the streamed --samples-csv agree with --json and the table names the limit", "[audit]") {
   const TempDir dir;
   const auto cells_csv = dir / "cells.csv";
   const auto samples_csv = dir / "samples.csv";
@@ -286,6 +286,11 @@ TEST_CASE("audit: bad input is exit 2 with one line naming the flag", "[audit]")
                                                                           "thickness = \"5mm\"\n")
                                                           .string()})),
                   "no such foam");
+  // A surface file naming a link that is not on the chain.
+  RequireBadInput(Run(Fr3(kPick, {"--surface-file", dir.Write("s.toml", "[[link]]\nname = \"fr3_hand\"\n"
+                                                                       "points = [ { at_m = [0, 0, 0], radius_m = 0.02 } ]\n")
+                                                             .string()})),
+                  "fr3_hand");
   // A mesh without a surface file.
   const std::string mesh_urdf = R"(<robot name="m">
   <link name="base"/>
