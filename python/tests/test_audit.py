@@ -94,6 +94,22 @@ def test_the_cluster_example_equals_the_serial_run(tmp_path):
     for name, result in parallel:
         serial = covopt.audit(example.URDF, "fr3_link8", tmp_path / name, scene=example.SCENE, **example.OPTIONS)
         assert result.to_dict() == serial.to_dict()
-    # The slower program is never less safe than the pick move it stretches.
+    # The slower program is never less safe than the pick move it stretches; turning the whole
+    # move about the vertical first joint changes no speed and no reflected mass.
     scale = {name: result.safe_speed_scale for name, result in parallel}
     assert scale["pick_slow.csv"] >= scale["pick.csv"]
+    assert scale["pick_left.csv"] == pytest.approx(scale["pick.csv"], rel=1e-9)
+    assert scale["pick_right.csv"] == pytest.approx(scale["pick.csv"], rel=1e-9)
+
+
+def test_audit_many_on_a_scheduler_address_equals_the_serial_run():
+    distributed = pytest.importorskip("dask.distributed")
+    scene = covopt.Scene(**SCENE)
+    options = dict(contact_area="1cm2", flat_face_radius="20mm", body_region="chest")
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False,
+                                  dashboard_address=None) as cluster:
+        [result] = covopt.audit_many([PICK], FR3, "fr3_link8", scene=scene,
+                                     scheduler_address=cluster.scheduler_address, **options)
+    assert result == covopt.audit(FR3, "fr3_link8", PICK, scene=scene, **options).to_dict()
+    with pytest.raises(ValueError, match="no trajectory"):
+        covopt.audit_many([], FR3, "fr3_link8", scene=scene, **options)
