@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "audit.hpp"
 #include "body_regions_command.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
@@ -50,6 +51,8 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
   CLI::App* robot = SetupRobot(app, robot_options);
   BodyRegionsOptions body_regions_options;
   CLI::App* body_regions = SetupBodyRegions(app, body_regions_options);
+  AuditCommandOptions audit_options;
+  CLI::App* audit = SetupAudit(app, audit_options);
 
   try {
     app.parse(argc, argv);
@@ -75,6 +78,7 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     if (speed_limit->parsed()) return RunSpeedLimit(speed_limit_options, out, err);
     if (robot->parsed()) return RunRobot(robot_options, out, err);
     if (body_regions->parsed()) return RunBodyRegions(body_regions_options, out, err);
+    if (audit->parsed()) return RunAudit(audit_options, out, err);
   } catch (const std::exception& e) {
     fmt::print(err, "covopt: internal error: {}\n", ShortenLongWords(e.what()));
     return 1;

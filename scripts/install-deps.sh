@@ -23,6 +23,7 @@ packages=(
   python3-numpy          # history and sweep arrays
   python3-pytest         # python/tests, run by CTest
   python3-matplotlib     # python/examples (charts)
+  python3-distributed    # covopt.audit_many: a plant's programs audited in parallel on a dask cluster
   liborocos-kdl-dev      # robot/: Jacobian and joint-space inertia (Orocos KDL 1.5)
   liburdfdom-dev         # robot/: URDF parser (urdfdom 3.0)
 )

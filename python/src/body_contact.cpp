@@ -43,6 +43,7 @@
 #include "covopt/optim/trajectory_check.hpp"
 #include "covopt/report/body_contact_json.hpp"
 #include "covopt/robot/trajectory.hpp"
+#include "body_region_inputs.hpp"
 #include "robot_inputs.hpp"
 #include "scene_keywords.hpp"
 
@@ -696,6 +697,12 @@ py::dict Sweep(const py::object& x, const py::object& y, const SceneInputs& inpu
 }
 
 }  // namespace
+
+BodyRegionSelection SelectBodyRegions(const SceneInputs& inputs, const py::kwargs& kwargs) {
+  const RegionChoice choice = ReadRegions(kwargs);
+  return BodyRegionSelection{choice.limits, choice.head, choice.contact, ReadContactArea(kwargs),
+                             JudgeOptions(inputs, kwargs)};
+}
 
 void RegisterBodyContact(py::module_& m) {
   m.def("simulate_body_region", &Simulate);

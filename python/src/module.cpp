@@ -807,6 +807,9 @@ to_dict(): the scene object of `covopt simulate --json`.)");
       .def_property_readonly("safety_factor", [](const SceneInputs& s) { return s.safety_factor; })
       .def_property_readonly("ranges", [](const SceneInputs& s) { return Option(s.given, "ranges").value_or(py::dict()); })
       .def("replace", [](const SceneInputs& s, const py::kwargs& changes) { return s.With(changes); })
+      // Pickled as its keywords (covopt.audit_many sends scenes to dask workers).
+      .def(py::pickle([](const SceneInputs& s) { return py::dict(s.given); },
+                      [](const py::dict& given) { return ReadScene(py::reinterpret_borrow<py::kwargs>(given)); }))
       .def("to_dict", [](const SceneInputs& s) { return JsonToPython(report::SceneJson(s.scene, -1)); })
       .def("__repr__", [](const SceneInputs& s) {
         std::string text;
@@ -829,6 +832,7 @@ void BindRobust(py::module_& m);      // robust_bindings.cpp
 void BindSceneFile(py::module_& m);   // scene_file_bindings.cpp
 void RegisterBodyRegions(py::module_& m);  // body_regions.cpp
 void RegisterBodyContact(py::module_& m);  // body_contact.cpp
+void BindAudit(py::module_& m);            // audit_bindings.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -847,4 +851,5 @@ PYBIND11_MODULE(_covopt, m) {
   covopt::python::BindSceneFile(m);
   covopt::python::RegisterBodyRegions(m);
   covopt::python::RegisterBodyContact(m);
+  covopt::python::BindAudit(m);
 }

@@ -20,6 +20,7 @@
 #include "covopt/core/scene_fields.hpp"
 #include "covopt/internal/text.hpp"
 #include "covopt/internal/toml_text.hpp"
+#include "toml_input.hpp"
 
 namespace covopt::scene_file {
 namespace {
@@ -27,6 +28,9 @@ namespace {
 using covopt::internal::Closest;
 using covopt::internal::TypeName;
 using covopt::internal::Where;
+using internal::NumberText;
+using internal::ReadQuantity;
+using internal::Shown;
 
 std::string JoinQuoted(const std::vector<std::string_view>& words) {
   std::string joined;
@@ -48,42 +52,6 @@ std::vector<std::string_view> KeysOf(std::string_view table) {
     for (const LimitField& field : LimitFields()) keys.push_back(field.key);
   }
   return keys;
-}
-
-/// A TOML number as the user wrote it, near enough: "40", "0.015", "2.76e+07".
-std::string NumberText(const toml::node& node) {
-  if (node.is_integer()) return std::to_string(**node.as_integer());
-  return fmt::format("{}", **node.as_floating_point());
-}
-
-/// What the user wrote, for messages: a string in quotes, a number as a number.
-std::string Shown(const toml::node& node) {
-  if (node.is_string()) return fmt::format("'{}'", **node.as_string());
-  return NumberText(node);
-}
-
-/// Reads one numeric value: a TOML number (SI, which must be plausible for `spec`) or a
-/// string with a unit. `example` shows a good value in the wrong-type message.
-double ReadQuantity(const toml::node& node, const QuantitySpec& spec, const std::string& name,
-                    std::string_view example, std::string_view source) {
-  const std::string where = Where(source, node.source());
-  try {
-    if (node.is_integer() || node.is_floating_point()) {
-      const double value = node.is_integer() ? static_cast<double>(**node.as_integer())
-                                             : **node.as_floating_point();
-      if (!std::isfinite(value)) {
-        throw std::invalid_argument(fmt::format("{}: not a finite number (got {})", name, value));
-      }
-      CheckBareNumber(value, NumberText(node), spec, name, "\"");
-      return value;
-    }
-    if (node.is_string()) return ParseQuantity(**node.as_string(), spec, name);
-  } catch (const std::invalid_argument& e) {  // ParseQuantity, CheckBareNumber, or not finite
-    throw std::invalid_argument(fmt::format("{}: {}", where, e.what()));
-  }
-  throw std::invalid_argument(fmt::format(
-      "{}: {}: expected a number (SI) or a string with a unit such as \"{}\", got {}", where,
-      name, example, TypeName(node)));
 }
 
 /// What one file sets, before it is applied: the scene (a copy) and the extras.
@@ -271,37 +239,7 @@ std::vector<std::string> ApplySceneToml(std::string_view toml_text, std::string_
 
 std::vector<std::string> ApplySceneFile(const std::filesystem::path& path, Scene& scene,
                                         SceneFileExtras* extras) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw std::invalid_argument(fmt::format("cannot read scene file '{}': it is a directory", path.string()));
-  }
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) {
-    throw std::invalid_argument(fmt::format("cannot read scene file '{}': {}", path.string(),
-                                 std::strerror(errno)));
-  }
-  // At most kMaxSceneFileBytes + 1 bytes are read, so /dev/zero or a huge file is refused
-  // at once instead of filling the memory.
-  std::string text;
-  char buffer[65536];
-  int error = 0;
-  while (text.size() <= kMaxSceneFileBytes) {
-    const std::size_t want = std::min(sizeof buffer, kMaxSceneFileBytes + 1 - text.size());
-    const ssize_t n = ::read(fd, buffer, want);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) error = errno;
-    if (n <= 0) break;
-    text.append(buffer, static_cast<std::size_t>(n));
-  }
-  ::close(fd);
-  if (error != 0) {
-    throw std::invalid_argument(fmt::format("cannot read scene file '{}': {}", path.string(),
-                                 std::strerror(error)));
-  }
-  if (text.size() > kMaxSceneFileBytes) {
-    throw std::invalid_argument(fmt::format("cannot read scene file '{}': larger than the limit of {} bytes (1 MiB)",
-                                 path.string(), kMaxSceneFileBytes));
-  }
+  const std::string text = internal::ReadBoundedFile(path, "scene file", kMaxSceneFileBytes);
   return ApplySceneToml(text, path.string(), scene, extras);
 }
 

@@ -1,0 +1,542 @@
+#include "audit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "body_region_options.hpp"
+#include "charts/audit_chart.hpp"
+#include "covopt/optim/audit.hpp"
+#include "covopt/optim/design.hpp"
+#include "covopt/report/audit_json.hpp"
+#include "covopt/report/csv.hpp"
+#include "covopt/robot/surface.hpp"
+#include "covopt/robot/trajectory.hpp"
+#include "covopt/scene_file/link_coverings.hpp"
+#include "errors.hpp"
+#include "output.hpp"
+#include "plot.hpp"
+#include "quantity.hpp"
+#include "scene_fields.hpp"
+
+namespace covopt::cli {
+namespace {
+
+/// The regions the text shows per link (all of them in --json and --csv).
+constexpr std::size_t kRegionsShownPerLink = 3;
+
+constexpr std::string_view kFooter = R"(For every sample of the trajectory and every point sampled on the robot's surface
+(the URDF's <collision> spheres, cylinders, capsules and boxes, or a surface file):
+the point's velocity, the reflected mass along it, and each exposed body region's
+largest safe speed at that mass on that link's covering (ISO/TS 15066:2016 Table
+A.2, transient; the head under Park et al. 2011). The ratio v / (SF v_max) per
+link and region at its governing sample and point, the program's safe speed scale
+(the minimum over links and regions of v_max / v) and the link and region that
+set it. --design: per link, the thinnest catalog covering that makes the program
+safe at full speed, checked again.
+
+Default regions: every region ISO/TS 15066 permits in a transient contact, and the
+head. The covering of every link: --covering-thickness with --material NAME or
+--covering-modulus; per link from --link-coverings FILE.toml ([[link]] name,
+material or modulus (and poisson), thickness; docs/guide/audit.md). A covering on a
+flat face (a box's face, a cylinder's end) needs --flat-face-radius.
+
+Exit codes: 0 an answer (safe, unsafe or at rest); 1 an output could not be
+written; 2 bad input.)";
+
+/// Lengths read by the audit's own flags.
+constexpr QuantitySpec kSpacing{QuantityKind::kLength, false, false, robot::kMinSurfaceSpacingM,
+                                robot::kMaxSurfaceSpacingM, {"mm", "cm"}, "surface spacing"};
+constexpr QuantitySpec kEdgeRadius{QuantityKind::kLength, false, false, 1e-4, 0.5, {"mm", "cm"}, "box edge radius"};
+constexpr QuantitySpec kFlatRadius{QuantityKind::kLength, false, false, 1e-3, 1.0, {"mm", "cm"}, "flat-face radius"};
+
+/// Everything the outputs need.
+struct AuditRun {
+  explicit AuditRun(optim::AuditSetup s) : setup(std::move(s)) {}
+  optim::AuditSetup setup;
+  robot::JointTrajectory trajectory;
+  optim::AuditOptions options;
+  std::vector<std::string> input_warnings;
+  std::string covering_text;  ///< the all-links covering, for the text
+  std::optional<PlotFormat> plot_format;
+  bool head = false;
+};
+
+double PositiveLength(const std::string& typed, const QuantitySpec& spec, const char* flag) {
+  const double value = ParseQuantity(typed, spec, flag);
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw InputError(fmt::format("{} must be a length > 0 (got '{}')", flag, typed));
+  }
+  return value;
+}
+
+std::string CoveringText(const optim::AuditCovering& c) {
+  if (!(c.covering.thickness_m > 0.0)) return "bare";
+  return fmt::format("{}{} (E {}, ν {:g})", c.material ? c.material->name + " " : std::string(),
+                     FormatQuantity(c.covering.thickness_m, QuantityKind::kLength),
+                     FormatQuantity(c.covering.youngs_modulus_Pa, QuantityKind::kModulus), c.covering.poisson_ratio);
+}
+
+optim::CandidateMaterial CatalogCandidate(const materials::Catalog& catalog, const std::string& name,
+                                          const std::string& where) {
+  try {
+    const std::vector<std::string> names{name};
+    return optim::SelectCandidates(catalog, names).front();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("--link-coverings {}: {}", where, e.what()));
+  }
+}
+
+/// The scene inputs an ISO region reads in an audit (the rest belong to the head's model).
+bool ReadByRegions(std::string_view field) {
+  return field.starts_with("covering.") || field == "robot.reaction_delay" || field == "robot.braking" ||
+         field == "limits.safety_factor";
+}
+
+AuditRun Resolve(const AuditCommandOptions& o) {
+  const RobotModelOptions& model = o.model;
+  if (!o.trajectory) throw InputError("--trajectory FILE.csv is required (the motion to audit)");
+  if (o.trajectory->empty()) throw InputError("--trajectory: empty file name");
+  if (!model.urdf) throw InputError("--urdf FILE is required (the robot to audit)");
+  for (const auto& [typed, flag, why] :
+       {std::tuple{model.joints, "--joints", "the trajectory gives each sample's joint positions"},
+        std::tuple{model.point, "--point", "every point of the robot's surface is audited"},
+        std::tuple{model.direction, "--direction", "each impact is along the point's motion"}}) {
+    if (typed) throw InputError(fmt::format("{} '{}': not used by audit ({}); drop {}", flag, *typed, why, flag));
+  }
+  for (const auto& [key, flag, what] :
+       {std::tuple{std::string_view("robot.mass"), "--robot-mass", "reflected mass (the robot model's)"},
+        std::tuple{std::string_view("robot.speed"), "--speed", "speed (the trajectory's)"},
+        std::tuple{std::string_view("robot.radius"), "--robot-radius", "radius (the surface's)"}}) {
+    if (const auto typed = o.scene.scene_values.find(key); typed != o.scene.scene_values.end()) {
+      throw InputError(fmt::format("{} '{}': not used by audit (each surface point brings its own {}); drop {}", flag,
+                                   typed->second, what, flag));
+    }
+  }
+  if (!o.design) {
+    const char* flag = !o.families.empty()          ? "--family"
+                       : !o.design_materials.empty() ? "--design-material"
+                       : o.allow_unknown_strength   ? "--allow-unknown-strength"
+                       : o.max_thickness            ? "--max-thickness"
+                       : o.thickness_step           ? "--thickness-step"
+                                                    : nullptr;
+    if (flag) throw InputError(fmt::format("{} applies with --design (the per-link covering design)", flag));
+  }
+  if (o.csv_file && o.csv_file->empty()) throw InputError("--csv: empty file name");
+  if (o.samples_csv && o.samples_csv->empty()) throw InputError("--samples-csv: empty file name");
+  const int to_stdout = (o.json ? 1 : 0) + (o.csv_file && *o.csv_file == "-" ? 1 : 0) +
+                        (o.samples_csv && *o.samples_csv == "-" ? 1 : 0);
+  if (to_stdout > 1) {
+    throw InputError("--json, --csv - and --samples-csv - each print to stdout; give only one of them, the others a "
+                     "file name");
+  }
+
+  std::optional<PlotFormat> plot_format;
+  if (o.plot_file) {
+    plot_format = PlotFormatFor(*o.plot_file);
+    if (!plot_format) {
+      throw InputError(fmt::format("--plot: cannot tell the format of '{}'; name the file *.png or *.svg", *o.plot_file));
+    }
+  }
+
+  // The regions: the body-region group, default every transient region and the head.
+  BodyRegionFlags body = o.scene.body;
+  if (body.regions.empty()) body.regions.push_back("all");
+  const std::optional<BodyRegionPlan> regions = ResolveBodyRegions(body);
+  if (regions->contact != ContactType::kTransient) {
+    throw InputError(fmt::format("--contact '{}': an audit judges the free (transient) impacts of a motion; drop "
+                                 "--contact",
+                                 o.scene.body.contact.value_or("")));
+  }
+  const bool head = regions->has_head();
+
+  const SimulationPlan plan = ResolveSimulation(o.scene);
+  if (!head) {
+    for (const auto& [field, source] : plan.sources) {
+      if (ReadByRegions(field)) continue;
+      throw InputError(fmt::format("{} from {} is an input of the head's model, which --body-region does not name; "
+                                   "drop it, or add --body-region head",
+                                   field, source));
+    }
+  }
+  const optim::BodyRegionOptions judge = BodyRegionOptionsOf(plan, o.allow_full_compression, o.allow_crushing);
+
+  // The robot, its surface and the motion.
+  const RobotModelInput robot_input = ResolveRobotModelChain(model);
+  robot::SurfaceOptions surface_options;
+  if (o.surface_spacing) surface_options.spacing_m = PositiveLength(*o.surface_spacing, kSpacing, "--surface-spacing");
+  if (o.box_edge_radius) {
+    surface_options.box_edge_radius_m = PositiveLength(*o.box_edge_radius, kEdgeRadius, "--box-edge-radius");
+  }
+  if (o.surface_file) {
+    if (o.surface_file->empty()) throw InputError("--surface-file: empty file name");
+    surface_options.surface_file = *o.surface_file;
+  }
+  robot::RobotSurface surface = [&] {
+    try {
+      return robot::SurfaceFromUrdfFile(*model.urdf, robot_input.chain, surface_options);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("{}: {}", o.surface_file ? "--surface-file" : "--urdf", e.what()));
+    }
+  }();
+  if (surface.links.empty()) {
+    throw InputError(fmt::format("--urdf '{}': no link of the chain {} -> {} has collision geometry; give "
+                                 "--surface-file FILE.toml",
+                                 *model.urdf, robot_input.chain.base_link(), robot_input.chain.tip_link()));
+  }
+  std::optional<double> flat_face_radius;
+  if (o.flat_face_radius) flat_face_radius = PositiveLength(*o.flat_face_radius, kFlatRadius, "--flat-face-radius");
+  robot::ContactMotionOptions motion;
+  motion.reflected_mass = model.reflected_mass_options();
+  AuditRun run(optim::AuditSetup(robot_input.chain, std::move(surface)));
+  optim::AuditSetup& setup = run.setup;
+  setup.covering = optim::AuditCovering{plan.scene.covering, judge.material};
+  setup.regions = regions->IsoLimits();
+  if (head) setup.head = plan.scene;
+  setup.contact_area_m2 = regions->contact_area_m2;
+  setup.flat_face_radius_m = flat_face_radius;
+  setup.rule = judge.rule;
+  setup.reaction_delay_s = plan.scene.robot.reaction_delay_s;
+  setup.braking_m_per_s2 = plan.scene.robot.braking_m_per_s2;
+  setup.motion = motion;
+  run.plot_format = plot_format;
+  run.head = head;
+  try {
+    run.trajectory = robot::ReadJointTrajectory(*o.trajectory, robot_input.chain.joint_count());
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("--trajectory: {}", e.what()));
+  }
+
+  run.covering_text = CoveringText(setup.covering);
+
+  // The catalog, for --link-coverings and --design.
+  std::optional<materials::Catalog> catalog;
+  const auto the_catalog = [&]() -> const materials::Catalog& {
+    if (!catalog) {
+      try {
+        catalog = LoadCatalog(o.scene.catalog);
+      } catch (const InputError& e) {
+        const std::string what = e.what();
+        throw InputError(what.rfind("--", 0) == 0 ? what : "--catalog: " + what);
+      }
+    }
+    return *catalog;
+  };
+  if (o.link_coverings) {
+    std::vector<scene_file::LinkCoveringEntry> entries;
+    try {
+      entries = scene_file::ReadLinkCoverings(*o.link_coverings);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(fmt::format("--link-coverings: {}", e.what()));
+    }
+    for (const scene_file::LinkCoveringEntry& entry : entries) {
+      const bool on_surface = std::any_of(setup.surface.links.begin(), setup.surface.links.end(),
+                                          [&](const robot::LinkSurface& l) { return l.link == entry.link; });
+      if (!on_surface) {
+        std::string names;
+        for (const robot::LinkSurface& l : setup.surface.links) names += (names.empty() ? "" : ", ") + l.link;
+        throw InputError(fmt::format("--link-coverings {}: link '{}' is not a link of the audited surface ({})",
+                                     entry.where, entry.link, names));
+      }
+      optim::AuditCovering covering;
+      covering.covering.thickness_m = entry.thickness_m;
+      if (entry.material) {
+        optim::CandidateMaterial material = CatalogCandidate(the_catalog(), *entry.material, entry.where);
+        covering.covering.youngs_modulus_Pa = material.youngs_modulus_Pa;
+        covering.covering.poisson_ratio = material.poisson_ratio;
+        if (material.poisson_assumed && entry.thickness_m > 0.0) {
+          run.input_warnings.push_back(fmt::format("link '{}': {} has no Poisson ratio in the catalog; {:g} assumed",
+                                                   entry.link, material.name, material.poisson_ratio));
+        }
+        covering.material = std::move(material);
+      } else if (entry.modulus_Pa) {
+        covering.covering.youngs_modulus_Pa = *entry.modulus_Pa;
+        covering.covering.poisson_ratio = entry.poisson_ratio.value_or(0.25);
+      }
+      setup.link_coverings.emplace(entry.link, std::move(covering));
+    }
+  }
+
+  if (o.design) {
+    try {
+      run.options.design.materials = optim::SelectCandidates(the_catalog(), o.design_materials, o.families);
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      throw InputError((what.rfind("no family", 0) == 0 ? "--family: " : "--design-material: ") + what);
+    }
+    // The design's rule is optimize's: unknown strengths only with --allow-unknown-strength (the
+    // audit alone judges a covering of unknown strength without the crush check, as robot does).
+    setup.rule.unknown_strength_allowed = o.allow_unknown_strength;
+    if (o.max_thickness) {
+      run.options.design.max_thickness_m =
+          ParseQuantity(*o.max_thickness, quantity_specs::kCoveringThickness, "--max-thickness");
+    }
+    if (o.thickness_step) {
+      run.options.design.thickness_step_m = ParseQuantity(*o.thickness_step, quantity_specs::kThicknessStep,
+                                                          "--thickness-step");
+    }
+  }
+
+  for (std::string& w : InputWarnings(plan)) run.input_warnings.push_back(std::move(w));
+  for (std::string& w : CrushCheckOf(plan).notes) run.input_warnings.push_back(std::move(w));
+  return run;
+}
+
+std::string Point(const Eigen::Vector3d& p) { return fmt::format("({:.3f}, {:.3f}, {:.3f})", p[0], p[1], p[2]); }
+
+std::string RatioText(double ratio) { return std::isfinite(ratio) ? fmt::format("{:.3f}", ratio) : "no safe speed"; }
+
+std::string ScaleText(double scale) { return std::isfinite(scale) ? fmt::format("{:.4g}", scale) : "-"; }
+
+void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& run, const optim::AuditResult& r) {
+  const optim::AuditSetup& setup = run.setup;
+  const robot::KinematicChain& chain = setup.chain;
+  std::string robot_line = fmt::format("{}: {} -> {}, {} movable joint{}", chain.robot_name(), chain.base_link(),
+                                       chain.tip_link(), chain.joint_count(), chain.joint_count() == 1 ? "" : "s");
+  if (const robot::Payload& payload = chain.payload(); !payload.empty()) {
+    robot_line += fmt::format("; payload {:.4g} kg at {} m (tip frame)", payload.mass_kg, Point(payload.center_of_mass_m));
+  }
+  fmt::print(out, "Robot      {}\n", robot_line);
+  const auto& times = run.trajectory.time_s;
+  fmt::print(out, "Trajectory {}: {} samples, t = {:g} .. {:g} s\n", *o.trajectory, r.sample_count,
+             times.empty() ? 0.0 : times.front(), times.empty() ? 0.0 : times.back());
+  fmt::print(out, "Surface    {} links, {} points (spacing {}){}\n", setup.surface.links.size(),
+             setup.surface.point_count(), FormatQuantity(setup.surface.spacing_m, QuantityKind::kLength),
+             o.surface_file ? fmt::format(", surface file {}", *o.surface_file) : std::string());
+  fmt::print(out, "Covering   all links: {}\n", run.covering_text);
+  for (const auto& [link, covering] : setup.link_coverings) {
+    fmt::print(out, "           {}: {} (--link-coverings)\n", link, CoveringText(covering));
+  }
+  fmt::print(out, "Regions    {} ISO/TS 15066 region{} (transient){}\n", setup.regions.size(),
+             setup.regions.size() == 1 ? "" : "s", run.head ? fmt::format(" and the head ({})", HeadCriteriaName()) : "");
+  fmt::print(out, "Criterion  {}\n", BodyCriterion(setup.rule, run.head));
+  if (setup.braking_m_per_s2 > 0.0) {
+    fmt::print(out, "Braking    reaction delay {}, braking {}\n",
+               FormatQuantity(setup.reaction_delay_s, QuantityKind::kTime),
+               FormatQuantity(setup.braking_m_per_s2, QuantityKind::kAcceleration));
+  }
+  fmt::print(out, "Verdict    {}\n", r.message);
+  if (r.limiting_cell) {
+    const optim::AuditCell& c = r.cells[*r.limiting_cell];
+    fmt::print(out, "Limit      safe speed scale {}: {} against {} ({}) at t = {:.4g} s, point {} m (base frame)\n",
+               ScaleText(r.safe_speed_scale), r.links[c.link], r.regions[c.region], optim::ToString(c.binding),
+               c.time_s, Point(c.point_in_base_m));
+  }
+
+  fmt::print(out, "\nPer link, the {} regions with the largest ratio (all {} in --json and --csv)\n",
+             kRegionsShownPerLink, r.regions.size());
+  fmt::print(out, "  {:<14} {:<34} {:>8}  {:<16} {:>8}  {:<26} {:>9} {:>9} {:>9} {:>8}\n", "link", "region", "ratio",
+             "binds", "t [s]", "point, base frame [m]", "speed m/s", "mass kg", "max safe", "scale");
+  for (std::size_t l = 0; l < r.links.size(); ++l) {
+    std::vector<std::size_t> order(r.regions.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return r.cell(l, a).governing_ratio > r.cell(l, b).governing_ratio;
+    });
+    if (order.empty() || !r.cell(l, order.front()).sample) {
+      fmt::print(out, "  {:<14} (never moves: limits nothing)\n", r.links[l]);
+      continue;
+    }
+    for (std::size_t k = 0; k < std::min(kRegionsShownPerLink, order.size()); ++k) {
+      const optim::AuditCell& c = r.cell(l, order[k]);
+      fmt::print(out, "  {:<14} {:<34} {:>8}  {:<16} {:>8.4g}  {:<26} {:>9.4g} {:>9.4g} {:>9.4g} {:>8}\n",
+                 k == 0 ? r.links[l] : "", r.regions[c.region], RatioText(c.governing_ratio),
+                 optim::ToString(c.binding), c.time_s, Point(c.point_in_base_m), c.speed_m_per_s, c.reflected_mass_kg,
+                 c.max_safe_speed_m_per_s, ScaleText(c.speed_scale));
+    }
+  }
+  if (!r.link_designs.empty()) {
+    fmt::print(out, "\nPer-link design: the thinnest catalog covering safe at full speed (checked again)\n");
+    fmt::print(out, "  {:<14} {:<28} {:>10} {:>8}  {}\n", "link", "material", "thickness", "ratio", "");
+    for (const optim::AuditLinkDesign& d : r.link_designs) {
+      fmt::print(out, "  {:<14} {:<28} {:>10} {:>8}  {}\n", r.links[d.link], d.material ? d.material->name : "-",
+                 d.thickness_m ? FormatQuantity(*d.thickness_m, QuantityKind::kLength) : "-",
+                 d.thickness_m ? RatioText(d.governing_ratio) : "-", d.message);
+    }
+  }
+  fmt::print(out, "\nScope\n");
+  for (const std::string& s : r.scope) fmt::print(out, "  {}\n", s);
+  std::vector<std::string> warnings = run.input_warnings;
+  warnings.insert(warnings.end(), r.warnings.begin(), r.warnings.end());
+  if (warnings.empty()) fmt::print(out, "\nWarnings: none\n");
+  for (const std::string& w : warnings) fmt::print(out, "Warning: {}\n", w);
+  const std::vector<std::string> files = [&] {
+    std::vector<std::string> f;
+    for (const auto& file : {o.csv_file, o.samples_csv, o.plot_file}) {
+      if (file && *file != "-") f.push_back(*file);
+    }
+    return f;
+  }();
+  if (!files.empty()) fmt::print(out, "Wrote      {}\n", fmt::join(files, ", "));
+}
+
+std::string CellsCsv(const optim::AuditResult& r) {
+  std::string text;
+  report::AppendCsvRecord(text, report::AuditCellColumns());
+  for (const optim::AuditCell& cell : r.cells) report::AppendCsvRecord(text, report::AuditCellCsvCells(r, cell));
+  return text;
+}
+
+}  // namespace
+
+CLI::App* SetupAudit(CLI::App& app, AuditCommandOptions& options) {
+  CLI::App* sub = app.add_subcommand(
+      "audit", "The whole robot along its motion: every link's surface against every body region; the safe speed "
+               "scale, which link and region set it, and per link the covering that makes the program safe");
+  sub->footer(std::string(kFooter));
+  AddRobotModelOptions(*sub, options.model, false, "Robot model");
+  // Each surface point brings its own point and direction; the trajectory its joints.
+  for (const char* flag : {"--joints", "--point", "--direction"}) sub->get_option(flag)->group("");
+  constexpr const char* kAudit = "Audit";
+  sub->add_option("--trajectory", options.trajectory,
+                  "the motion (CSV: an optional header, then time [s], the n joint positions, the n joint velocities "
+                  "per line)")
+      ->type_name("FILE.csv")
+      ->group(kAudit);
+  sub->add_option("--surface-file", options.surface_file,
+                  "the surface of links whose collision geometry is a mesh (TOML: [[link]] segments, points; "
+                  "robot/README.md)")
+      ->type_name("FILE.toml")
+      ->group(kAudit);
+  sub->add_option("--surface-spacing", options.surface_spacing,
+                  "the largest distance between surface points, 1 mm to 1 m (default 50mm)")
+      ->type_name("LENGTH")
+      ->group(kAudit);
+  sub->add_option("--box-edge-radius", options.box_edge_radius,
+                  "the edge radius of the URDF's boxes (required when the chain has one), e.g. 5mm")
+      ->type_name("LENGTH")
+      ->group(kAudit);
+  sub->add_option("--flat-face-radius", options.flat_face_radius,
+                  "the radius a covering is judged on at a flat point (a box's face, a cylinder's end), e.g. 20mm; "
+                  "required when a covered link has one")
+      ->type_name("LENGTH")
+      ->group(kAudit);
+  sub->add_option("--link-coverings", options.link_coverings,
+                  "a covering per link (TOML: [[link]] name, material or modulus and poisson, thickness); the others "
+                  "keep the covering flags'")
+      ->type_name("FILE.toml")
+      ->group(kAudit);
+  AddSceneOptions(*sub, options.scene);
+  AddBodyRegionOptions(*sub, options.scene.body);
+  for (const char* flag : {"--robot-mass", "--speed", "--robot-radius"}) sub->get_option(flag)->group("");
+  sub->add_option("--safety-factor", options.scene.safety_factor, "the ratios must stay <= 1/factor, 1-100 (default 1)")
+      ->type_name("RATIO")
+      ->group("Limits");
+  sub->add_flag("--allow-full-compression", options.allow_full_compression,
+                "a covering fully compressed at the peak may count as safe (default: it may not)")
+      ->group("Limits");
+  sub->add_flag("--allow-crushing", options.allow_crushing, "a sacrificial liner: crushing is reported, not applied")
+      ->group("Limits");
+  constexpr const char* kDesign = "Design (--design)";
+  sub->add_flag("--design", options.design,
+                "per link, the thinnest catalog covering that makes the program safe at full speed")
+      ->group(kDesign);
+  sub->add_option("--family", options.families, "only materials of this family (repeatable)")
+      ->type_name("NAME")
+      ->group(kDesign);
+  sub->add_option("--design-material", options.design_materials, "only this catalog material (repeatable)")
+      ->type_name("NAME")
+      ->group(kDesign);
+  sub->add_flag("--allow-unknown-strength", options.allow_unknown_strength,
+                "materials of unknown compressive strength may be recommended (each with a warning)")
+      ->group(kDesign);
+  sub->add_option("--max-thickness", options.max_thickness, "the thickest covering tried (default 50mm)")
+      ->type_name("LENGTH")
+      ->group(kDesign);
+  sub->add_option("--thickness-step", options.thickness_step, "the recommendation is rounded up to it (default 0.5mm)")
+      ->type_name("LENGTH")
+      ->group(kDesign);
+  sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")->group("Output");
+  sub->add_option("--csv", options.csv_file, "write one row per link x region ('-': to stdout)")
+      ->type_name("FILE.csv|-")
+      ->group("Output");
+  sub->add_option("--samples-csv", options.samples_csv,
+                  "stream one row per sample: per link its largest ratio and region ('-': to stdout; memory does not "
+                  "grow with the trajectory)")
+      ->type_name("FILE.csv|-")
+      ->group("Output");
+  sub->add_option("--plot", options.plot_file, "heat map of the governing ratio over time and links (gnuplot)")
+      ->type_name("FILE.png|FILE.svg")
+      ->group("Output");
+  return sub;
+}
+
+int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err) {
+  const CommandErrors errors(err, "audit");
+  std::optional<AuditRun> resolved;
+  try {
+    resolved.emplace(Resolve(o));
+  } catch (const std::invalid_argument& e) {  // InputError and the library's own checks
+    return errors.BadInput(e.what());
+  }
+  AuditRun& run = *resolved;
+  try {
+    if (o.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+    // The per-sample stream: written as the audit runs (a file through OutputFile).
+    std::optional<OutputFile> stream_file;
+    std::vector<std::string> link_names;
+    for (const robot::LinkSurface& l : run.setup.surface.links) link_names.push_back(l.link);
+    std::vector<std::string> region_names;  // AuditResult::regions, known before the audit runs
+    for (const materials::BodyLimits& limits : run.setup.regions) {
+      region_names.push_back(fmt::format("{} ({})", limits.region->name, limits.area->name));
+    }
+    if (run.setup.head) region_names.emplace_back("head (Park et al. 2011)");  // as AuditResult::regions
+    if (o.samples_csv) {
+      std::string header;
+      report::AppendCsvRecord(header, report::AuditSampleColumns(link_names));
+      if (*o.samples_csv != "-") {
+        stream_file.emplace(*o.samples_csv);
+        stream_file->Write(header);
+      } else {
+        out << header;
+      }
+      run.options.keep_ratio_over_time = o.plot_file.has_value();
+      run.options.on_sample = [&](const optim::AuditSampleRow& row) {
+        std::string line;
+        report::AppendCsvRecord(line, report::AuditSampleCsvCells(row, region_names));
+        if (stream_file) stream_file->Write(line);
+        else out << line;
+      };
+    }
+    optim::AuditResult result;
+    try {
+      result = optim::Audit(run.setup, run.trajectory, run.options);
+    } catch (const std::invalid_argument& e) {
+      return errors.BadInput(e.what());
+    }
+    if (stream_file) stream_file->Commit();
+    if (o.csv_file && *o.csv_file != "-") WriteFileAtomically(*o.csv_file, CellsCsv(result));
+    if (o.plot_file) {
+      RunGnuplot(*o.plot_file, [&](const std::string& output_path) {
+        return AuditHeatMapScript(result, run.setup.rule.safety_factor,
+                                  std::filesystem::path(*o.trajectory).filename().string(), *run.plot_format,
+                                  output_path);
+      });
+    }
+    if (o.json) {
+      out << report::AuditJson(run.setup, result, run.input_warnings) << '\n';
+    } else if (o.csv_file && *o.csv_file == "-") {
+      out << CellsCsv(result);
+    } else if (!(o.samples_csv && *o.samples_csv == "-")) {
+      PrintText(out, o, run, result);
+    }
+  } catch (const OutputError& e) {
+    return errors.Failed(e.what());
+  }
+  out.flush();
+  if (!out) return errors.Failed("cannot write the results to standard output");
+  return 0;
+}
+
+}  // namespace covopt::cli

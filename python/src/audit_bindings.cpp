@@ -1,0 +1,217 @@
+/// @file audit_bindings.cpp
+/// covopt.audit: the whole robot along its motion, as `covopt audit --json` (the dict is
+/// report::AuditJson, the CLI's). The robot and trajectory are read as covopt.contact_motion
+/// reads them (robot_inputs.hpp), the covering for all links, the head and the limits from a
+/// covopt.Scene, the regions as covopt.simulate(body_region=...) reads them
+/// (body_region_inputs.hpp). See python/covopt/_audit.py for the documentation.
+
+#include <array>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "body_region_inputs.hpp"
+#include "covopt/materials/catalog.hpp"
+#include "covopt/optim/audit.hpp"
+#include "covopt/optim/design.hpp"
+#include "covopt/report/audit_json.hpp"
+#include "covopt/robot/payload.hpp"
+#include "covopt/robot/surface.hpp"
+#include "covopt/scene_file/link_coverings.hpp"
+#include "robot_inputs.hpp"
+#include "scene_keywords.hpp"
+
+namespace py = pybind11;
+
+namespace covopt::python {
+namespace {
+
+std::string Path(const py::handle& value) {
+  return py::str(py::module_::import("os").attr("fspath")(value)).cast<std::string>();
+}
+
+/// A length keyword [m] (a number in m, or a string with its unit), > 0.
+std::optional<double> Length(const py::kwargs& kwargs, const char* keyword) {
+  const auto v = Option(kwargs, keyword);
+  if (!v) return std::nullopt;
+  static constexpr QuantitySpec kLength{QuantityKind::kLength, false, false, 0.0, 1000.0, {"mm", "cm"}, "length"};
+  const double value = ReadSceneQuantity(*v, kLength, keyword);
+  if (!(value > 0.0)) throw std::invalid_argument(std::string(keyword) + ": must be a length > 0");
+  return value;
+}
+
+std::vector<std::string> Names(const py::kwargs& kwargs, const char* keyword) {
+  std::vector<std::string> names;
+  if (const auto v = Option(kwargs, keyword)) {
+    if (py::isinstance<py::str>(*v)) {
+      names.push_back(v->cast<std::string>());
+    } else {
+      for (const py::handle item : *v) names.push_back(py::str(item).cast<std::string>());
+    }
+  }
+  return names;
+}
+
+/// payload_mass= (kg, or "500g"), payload_com= (x, y, z) [m], payload_inertia= (ixx, iyy, izz,
+/// ixy, ixz, iyz) [kg m²], as the CLI's --payload-* flags.
+robot::Payload ReadPayload(const py::kwargs& kwargs) {
+  robot::Payload payload;
+  const auto mass = Option(kwargs, "payload_mass");
+  if (!mass) {
+    if (Option(kwargs, "payload_com") || Option(kwargs, "payload_inertia")) {
+      throw std::invalid_argument("payload_com and payload_inertia need payload_mass (the payload's mass in kg)");
+    }
+    return payload;
+  }
+  static constexpr QuantitySpec kMass{QuantityKind::kMass, false, false, 0.0, robot::kMaxPayloadMassKg, {"g", ""},
+                                      "payload mass"};
+  payload.mass_kg = ReadSceneQuantity(*mass, kMass, "payload_mass");
+  if (const auto com = Option(kwargs, "payload_com")) payload.center_of_mass_m = Triple(*com, "payload_com");
+  if (const auto inertia = Option(kwargs, "payload_inertia")) {
+    const std::vector<double> six = inertia->cast<std::vector<double>>();
+    if (six.size() != 6) {
+      throw std::invalid_argument("payload_inertia: expected 6 numbers (ixx, iyy, izz, ixy, ixz, iyz) in kg m2");
+    }
+    payload.inertia_kg_m2 = robot::Payload::InertiaFromSix(six[0], six[1], six[2], six[3], six[4], six[5]);
+  }
+  robot::CheckPayload(payload, "payload");
+  return payload;
+}
+
+optim::AuditCovering CoveringOf(const scene_file::LinkCoveringEntry& entry) {
+  optim::AuditCovering covering;
+  covering.covering.thickness_m = entry.thickness_m;
+  if (entry.material) {
+    const std::vector<std::string> names{*entry.material};
+    covering.material = optim::SelectCandidates(materials::Catalog::BuiltIn(), names).front();
+    covering.covering.youngs_modulus_Pa = covering.material->youngs_modulus_Pa;
+    covering.covering.poisson_ratio = covering.material->poisson_ratio;
+  } else if (entry.modulus_Pa) {
+    covering.covering.youngs_modulus_Pa = *entry.modulus_Pa;
+    covering.covering.poisson_ratio = entry.poisson_ratio.value_or(0.25);
+  }
+  return covering;
+}
+
+/// link_coverings=: a link-covering file (str or os.PathLike), or a dict {link: {material or
+/// modulus (and poisson), thickness}} with the file's keys and values.
+std::vector<scene_file::LinkCoveringEntry> ReadLinkCoverings(const py::object& value) {
+  if (!py::isinstance<py::dict>(value)) return scene_file::ReadLinkCoverings(Path(value));
+  std::vector<scene_file::LinkCoveringEntry> entries;
+  for (const auto& [key, item] : value.cast<py::dict>()) {
+    scene_file::LinkCoveringEntry entry;
+    entry.link = py::str(key).cast<std::string>();
+    entry.where = "link_coverings['" + entry.link + "']";
+    const py::dict fields = item.cast<py::dict>();
+    for (const auto& [name, _] : fields) {
+      const std::string k = py::str(name).cast<std::string>();
+      if (k != "material" && k != "modulus" && k != "poisson" && k != "thickness") {
+        throw std::invalid_argument(entry.where + ": unknown key '" + k +
+                                    "' (a link takes material or modulus (and poisson), thickness)");
+      }
+    }
+    if (!fields.contains("thickness")) throw std::invalid_argument(entry.where + ": needs thickness");
+    entry.thickness_m = ReadSceneQuantity(fields["thickness"], quantity_specs::kCoveringThickness,
+                                          entry.where + " thickness");
+    if (fields.contains("material")) entry.material = py::str(fields["material"]).cast<std::string>();
+    if (fields.contains("modulus")) {
+      if (entry.material) throw std::invalid_argument(entry.where + ": give either material or modulus, not both");
+      entry.modulus_Pa = ReadSceneQuantity(fields["modulus"], quantity_specs::kCoveringModulus, entry.where + " modulus");
+    }
+    if (fields.contains("poisson")) {
+      if (!entry.modulus_Pa) throw std::invalid_argument(entry.where + ": poisson is given with modulus only");
+      entry.poisson_ratio = ReadSceneQuantity(fields["poisson"], quantity_specs::kPoissonRatio, entry.where + " poisson");
+    }
+    if (entry.thickness_m > 0.0 && !entry.material && !entry.modulus_Pa) {
+      throw std::invalid_argument(entry.where + ": a covering needs material or modulus (thickness 0: bare)");
+    }
+    entries.push_back(std::move(entry));
+  }
+  return entries;
+}
+
+py::object Audit(const py::object& urdf, const std::string& tip, const py::object& trajectory,
+                 const std::optional<std::string>& base, const std::optional<std::string>& urdf_text,
+                 const SceneInputs& inputs, const py::kwargs& kwargs) {
+  for (const char* keyword : {"robot_mass", "speed", "robot_radius"}) {
+    if (inputs.Gave(keyword)) {
+      throw std::invalid_argument(std::string("audit() takes the robot's ") + keyword +
+                                  " from each surface point and sample; drop " + keyword + " from the scene");
+    }
+  }
+  py::kwargs region_kwargs = kwargs;
+  if (!Option(region_kwargs, "body_region")) region_kwargs["body_region"] = "all";
+  const BodyRegionSelection regions = SelectBodyRegions(inputs, region_kwargs);
+  if (regions.contact != ContactType::kTransient) {
+    throw std::invalid_argument("contact='clamped': an audit judges the free (transient) impacts of a motion");
+  }
+
+  const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base).WithPayload(ReadPayload(kwargs));
+  robot::SurfaceOptions surface_options;
+  if (const auto spacing = Length(kwargs, "surface_spacing")) surface_options.spacing_m = *spacing;
+  surface_options.box_edge_radius_m = Length(kwargs, "box_edge_radius");
+  if (const auto file = Option(kwargs, "surface_file")) surface_options.surface_file = Path(*file);
+  robot::RobotSurface surface = urdf_text ? robot::SurfaceFromUrdfString(*urdf_text, chain, surface_options, "urdf_text")
+                                          : robot::SurfaceFromUrdfFile(Path(urdf), chain, surface_options);
+  const robot::JointTrajectory joints = Trajectory(trajectory, chain.joint_count());
+
+  optim::AuditSetup setup(chain, std::move(surface));
+  setup.covering = optim::AuditCovering{inputs.scene.covering, regions.judge.material};
+  setup.regions = regions.limits;
+  if (regions.head) setup.head = inputs.scene;
+  setup.contact_area_m2 = regions.contact_area_m2;
+  setup.flat_face_radius_m = Length(kwargs, "flat_face_radius");
+  setup.rule = regions.judge.rule;
+  setup.reaction_delay_s = inputs.scene.robot.reaction_delay_s;
+  setup.braking_m_per_s2 = inputs.scene.robot.braking_m_per_s2;
+  setup.motion.reflected_mass = ReflectedMassOptions(Flag(kwargs, "ignore_joint_limits"));
+  if (const auto value = Option(kwargs, "link_coverings")) {
+    for (const scene_file::LinkCoveringEntry& entry : ReadLinkCoverings(*value)) {
+      setup.link_coverings[entry.link] = CoveringOf(entry);
+    }
+  }
+
+  optim::AuditOptions options;
+  if (const auto keep = Option(kwargs, "keep_ratio_over_time")) options.keep_ratio_over_time = keep->cast<bool>();
+  if (Flag(kwargs, "design")) {
+    try {
+      options.design.materials =
+          optim::SelectCandidates(materials::Catalog::BuiltIn(), Names(kwargs, "materials"), Names(kwargs, "families"));
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
+    }
+    setup.rule.unknown_strength_allowed = Flag(kwargs, "allow_unknown_strength");  // optimize's rule (cli/audit.cpp)
+    if (const auto v = Option(kwargs, "max_thickness")) {
+      options.design.max_thickness_m = ReadSceneQuantity(*v, quantity_specs::kCoveringThickness, "max_thickness");
+    }
+    if (const auto v = Option(kwargs, "thickness_step")) {
+      options.design.thickness_step_m = ReadSceneQuantity(*v, quantity_specs::kThicknessStep, "thickness_step");
+    }
+  }
+  optim::AuditResult result;
+  try {
+    py::gil_scoped_release release;
+    result = optim::Audit(setup, joints, options);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(inputs.Attributed(e.what()));
+  }
+  std::vector<std::string> warnings = InputWarnings(inputs);
+  const optim::CoveringCrushCheck crush = inputs.CrushCheck();
+  warnings.insert(warnings.end(), crush.notes.begin(), crush.notes.end());
+  return JsonToPython(report::AuditJson(setup, result, warnings, -1));
+}
+
+}  // namespace
+
+void BindAudit(py::module_& m) {
+  m.def("audit", &Audit, py::arg("urdf"), py::arg("tip"), py::arg("trajectory"), py::arg("base"),
+        py::arg("urdf_text"), py::arg("scene"));
+}
+
+}  // namespace covopt::python

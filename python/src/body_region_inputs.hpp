@@ -1,0 +1,33 @@
+#pragma once
+/// @file body_region_inputs.hpp
+/// The body-region keywords (body_region, body_area, contact, contact_area, the criterion
+/// flags) as body_contact.cpp reads them, for the other binding files (covopt.audit).
+
+#include <vector>
+
+#include <pybind11/pybind11.h>
+
+#include "covopt/core/body_contact.hpp"
+#include "covopt/materials/body_regions.hpp"
+#include "covopt/optim/body_region_check.hpp"
+#include "scene_keywords.hpp"
+
+namespace covopt::python {
+
+/// What the keywords name.
+struct BodyRegionSelection {
+  std::vector<materials::BodyLimits> limits;  ///< the ISO regions' limits, in order
+  bool head = false;                          ///< the head (Park et al.) too
+  ContactType contact = ContactType::kTransient;
+  double contact_area_m2 = 0.0;               ///< contact_area=; 0: not given
+  /// The safety factor, allow_full_compression=, allow_crushing=, and the covering's catalog
+  /// material (material=) with its crush data.
+  optim::BodyRegionOptions judge;
+};
+
+/// Reads body_region= ("all", a name, "head" or a list), body_area=, contact=,
+/// contact_area= and the criterion flags of `kwargs`, as covopt.simulate(body_region=...).
+/// @throws std::invalid_argument naming the keyword and the value.
+BodyRegionSelection SelectBodyRegions(const SceneInputs& inputs, const pybind11::kwargs& kwargs);
+
+}  // namespace covopt::python
