@@ -203,12 +203,10 @@ AuditRun Resolve(const AuditCommandOptions& o) {
   optim::AuditSetup& setup = run.setup;
   setup.covering = optim::AuditCovering{plan.scene.covering, judge.material};
   setup.regions = regions->IsoLimits();
-  if (head) setup.head = plan.scene;
+  setup.SetReactionAndHead(plan.scene, head);
   setup.contact_area_m2 = regions->contact_area_m2;
   setup.flat_face_radius_m = flat_face_radius;
   setup.rule = judge.rule;
-  setup.reaction_delay_s = plan.scene.robot.reaction_delay_s;
-  setup.braking_m_per_s2 = plan.scene.robot.braking_m_per_s2;
   setup.motion = motion;
   run.plot_format = plot_format;
   run.head = head;

@@ -163,12 +163,10 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
   optim::AuditSetup setup(chain, std::move(surface));
   setup.covering = optim::AuditCovering{inputs.scene.covering, regions.judge.material};
   setup.regions = regions.limits;
-  if (regions.head) setup.head = inputs.scene;
+  setup.SetReactionAndHead(inputs.scene, regions.head);
   setup.contact_area_m2 = regions.contact_area_m2;
   setup.flat_face_radius_m = Length(kwargs, "flat_face_radius");
   setup.rule = regions.judge.rule;
-  setup.reaction_delay_s = inputs.scene.robot.reaction_delay_s;
-  setup.braking_m_per_s2 = inputs.scene.robot.braking_m_per_s2;
   setup.motion.reflected_mass = ReflectedMassOptions(Flag(kwargs, "ignore_joint_limits"));
   if (const auto value = Option(kwargs, "link_coverings")) {
     for (const scene_file::LinkCoveringEntry& entry : ReadLinkCoverings(*value)) {

@@ -23,11 +23,13 @@ FLAGS = ["--covering-thickness", "10mm", "--covering-modulus", "0.5MPa", "--cove
     ({"body_region": ["chest", "head"]}, ["--body-region", "chest,head"]),
     ({"safety_factor": 1.5, "payload_mass": 1.2, "payload_com": (0, 0, 0.05)},
      ["--safety-factor", "1.5", "--payload-mass", "1.2", "--payload-com", "0,0,0.05"]),
+    ({"body_region": ["chest", "head"], "reaction_delay": "5ms", "braking": 100},
+     ["--body-region", "chest,head", "--reaction-delay", "5ms", "--braking", "100"]),
     ({"link_coverings": {"fr3_link6": {"modulus": "0.2MPa", "poisson": 0.45, "thickness": "30mm"}}}, None),
 ])
 def test_audit_returns_the_cli_json_object(cli_json, tmp_path, kwargs, flags):
     kwargs = dict(kwargs)
-    scene_keys = {k: kwargs.pop(k) for k in ("safety_factor",) if k in kwargs}
+    scene_keys = {k: kwargs.pop(k) for k in ("safety_factor", "reaction_delay", "braking") if k in kwargs}
     if flags is None:  # the same coverings as a file for the CLI
         path = tmp_path / "links.toml"
         path.write_text('[[link]]\nname = "fr3_link6"\nmodulus = "0.2MPa"\npoisson = 0.45\nthickness = "30mm"\n')

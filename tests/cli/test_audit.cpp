@@ -202,6 +202,26 @@ TEST_CASE("audit: the same path at half the speed raises no ratio", "[audit]") {
   CHECK(half["safe_speed_scale"].get<double>() >= full["safe_speed_scale"].get<double>());
 }
 
+TEST_CASE("audit: a braking robot is judged with its brake for the regions and the head, and raises no ratio", "[audit]") {
+  const std::vector<std::string> regions = {"--body-region", "chest,head", "--json"};
+  std::vector<std::string> braking = regions;
+  braking.insert(braking.end(), {"--reaction-delay", "5ms", "--braking", "100"});
+  const json free = JsonOf(Run(Fr3(kPick, regions)));
+  const json braked = JsonOf(Run(Fr3(kPick, braking)));
+  CHECK(braked["braking_m_per_s2"].get<double>() == 100.0);
+  CHECK(braked["reaction_delay_s"].get<double>() == Approx(0.005));
+  REQUIRE(free["cells"].size() == braked["cells"].size());
+  bool some_lower = false;
+  for (std::size_t i = 0; i < free["cells"].size(); ++i) {
+    const double unbraked_ratio = free["cells"][i]["governing_ratio"].get<double>();
+    const double braked_ratio = braked["cells"][i]["governing_ratio"].get<double>();
+    CHECK(braked_ratio <= unbraked_ratio * (1.0 + 1e-9));
+    some_lower = some_lower || braked_ratio < 0.99 * unbraked_ratio;
+  }
+  CHECK(some_lower);
+  CHECK(braked["safe_speed_scale"].get<double>() > free["safe_speed_scale"].get<double>());
+}
+
 TEST_CASE("audit --link-coverings: a link's own covering changes its cells only", "[audit]") {
   const TempDir dir;
   const json all = JsonOf(Run(Fr3(kPick, {"--json"})));

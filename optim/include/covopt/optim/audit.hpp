@@ -62,6 +62,18 @@ struct AuditSetup {
   /// A constructor, so that `AuditSetup setup{chain, surface};` names every field it sets.
   AuditSetup(robot::KinematicChain chain_in, robot::RobotSurface surface_in)
       : chain(std::move(chain_in)), surface(std::move(surface_in)) {}
+  /// Takes the robot's reaction (reaction_delay_s, braking_m_per_s2) from `scene` for every
+  /// region and the head, and, when `judge_head`, the head from `scene` without it (the head
+  /// scene itself must not brake: the brake is the setup's).
+  void SetReactionAndHead(const Scene& scene, bool judge_head) {
+    reaction_delay_s = scene.robot.reaction_delay_s;
+    braking_m_per_s2 = scene.robot.braking_m_per_s2;
+    head.reset();
+    if (!judge_head) return;
+    head = scene;
+    head->robot.reaction_delay_s = 0.0;
+    head->robot.braking_m_per_s2 = 0.0;
+  }
   robot::KinematicChain chain;
   robot::RobotSurface surface;
   /// The covering of every link not in link_coverings.
