@@ -242,30 +242,9 @@ void ValidateCovering(const AuditCovering& c, const std::string& where) {
 
 void ValidateDesign(const AuditDesignOptions& d) {
   if (d.materials.empty()) return;
-  Require(std::isfinite(d.min_thickness_m) && d.min_thickness_m > 0.0 && d.min_thickness_m < d.max_thickness_m,
-          "design.min_thickness_m must be in (0, max_thickness_m) m (got " + Number(d.min_thickness_m) + ")");
-  Require(std::isfinite(d.max_thickness_m) && d.max_thickness_m <= 1.0,
-          "design.max_thickness_m must be in (min_thickness_m, 1] m (got " + Number(d.max_thickness_m) + ")");
-  Require(d.thickness_scan_points >= 10 && d.thickness_scan_points <= 100000,
-          "design.thickness_scan_points must be in [10, 100000] (got " + std::to_string(d.thickness_scan_points) +
-              ")");
-  Require(std::isfinite(d.thickness_resolution_m) && d.thickness_resolution_m > 0.0,
-          "design.thickness_resolution_m must be > 0 m (got " + Number(d.thickness_resolution_m) + ")");
-  Require(std::isfinite(d.thickness_step_m) && d.thickness_step_m >= 0.0,
-          "design.thickness_step_m must be >= 0 m (got " + Number(d.thickness_step_m) + ")");
-  for (const CandidateMaterial& m : d.materials) {
-    Require(std::isfinite(m.youngs_modulus_Pa) && m.youngs_modulus_Pa > 0.0 && m.youngs_modulus_Pa <= 1e13,
-            "design material '" + m.name + "': modulus must be in (0, 1e13] Pa (got " + Number(m.youngs_modulus_Pa) +
-                ")");
-    Require(m.poisson_ratio > -1.0 && m.poisson_ratio <= 0.5,
-            "design material '" + m.name + "': poisson ratio must be in (-1, 0.5] (got " + Number(m.poisson_ratio) +
-                ")");
-    if (m.crush_behaviour == materials::CrushBehaviour::kCrushes) {
-      Require(std::isfinite(m.compressive_strength_Pa) && m.compressive_strength_Pa > 0.0,
-              "design material '" + m.name + "': compressive strength must be finite and > 0 Pa (got " +
-                  Number(m.compressive_strength_Pa) + ")");
-    }
-  }
+  internal::ValidateThicknessScan(d.min_thickness_m, d.max_thickness_m, d.thickness_scan_points,
+                                  d.thickness_resolution_m, d.thickness_step_m, "design.");
+  for (const CandidateMaterial& m : d.materials) internal::ValidateCandidateMaterial(m, "design material ");
 }
 
 void ValidateSetup(const AuditSetup& s) {

@@ -501,23 +501,9 @@ void ValidateRequest(const BodyRegionDesignRequest& r) {
           "robot.radius: a covering needs the radius of the robot surface under it, in (0, 100] m (got " +
               Number(r.scene.robot_radius_m) + ")");
   ValidateRule(r.rule);
-  Require(std::isfinite(r.min_thickness_m) && r.min_thickness_m > 0.0 && r.min_thickness_m < r.max_thickness_m,
-          "min_thickness_m must be in (0, max_thickness_m) m (got " + Number(r.min_thickness_m) + ")");
-  Require(std::isfinite(r.max_thickness_m) && r.max_thickness_m <= 1.0,
-          "max_thickness_m must be in (min_thickness_m, 1] m (got " + Number(r.max_thickness_m) + ")");
-  Require(r.thickness_scan_points >= 10 && r.thickness_scan_points <= 100000,
-          "thickness_scan_points must be in [10, 100000] (got " + std::to_string(r.thickness_scan_points) + ")");
-  Require(std::isfinite(r.thickness_resolution_m) && r.thickness_resolution_m > 0.0,
-          "thickness_resolution_m must be > 0 m (got " + Number(r.thickness_resolution_m) + ")");
-  Require(std::isfinite(r.thickness_step_m) && r.thickness_step_m >= 0.0,
-          "thickness_step_m must be >= 0 m (got " + Number(r.thickness_step_m) + ")");
-  for (const CandidateMaterial& m : r.materials) {
-    ValidateMaterial(m);
-    Require(std::isfinite(m.youngs_modulus_Pa) && m.youngs_modulus_Pa > 0.0 && m.youngs_modulus_Pa <= 1e13,
-            "material '" + m.name + "': modulus must be in (0, 1e13] Pa (got " + Number(m.youngs_modulus_Pa) + ")");
-    Require(m.poisson_ratio > -1.0 && m.poisson_ratio <= 0.5,
-            "material '" + m.name + "': poisson ratio must be in (-1, 0.5] (got " + Number(m.poisson_ratio) + ")");
-  }
+  internal::ValidateThicknessScan(r.min_thickness_m, r.max_thickness_m, r.thickness_scan_points,
+                                  r.thickness_resolution_m, r.thickness_step_m);
+  for (const CandidateMaterial& m : r.materials) internal::ValidateCandidateMaterial(m);
 }
 
 /// The request's regions with their scenes and scope texts, judged together.

@@ -18,4 +18,15 @@ void Require(bool condition, const std::string& message);
 /// min < max. @throws std::invalid_argument naming the bound, its allowed range and the value.
 void ValidateDesignSpace(const DesignSpace& space);
 
+/// Checks a candidate material: modulus in (0, 1e13] Pa, Poisson ratio in (-1, 0.5], and for a
+/// material that crushes a finite compressive strength > 0 Pa. Messages begin
+/// "<prefix>'<name>': ". @throws std::invalid_argument naming the field, its range and the value.
+void ValidateCandidateMaterial(const CandidateMaterial& material, const std::string& prefix = "material ");
+
+/// Checks a thickness scan of the catalog designs: min in (0, max) m, max <= 1 m, points in
+/// [10, 100000], resolution > 0 m, step >= 0 m. Field names are prefixed with `prefix`.
+/// @throws std::invalid_argument naming the field, its range and the value.
+void ValidateThicknessScan(double min_thickness_m, double max_thickness_m, int scan_points, double resolution_m,
+                           double step_m, const std::string& prefix = "");
+
 }  // namespace covopt::optim::internal
