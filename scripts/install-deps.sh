@@ -13,6 +13,7 @@ packages=(
   libcli11-dev           # command-line parsing
   libtomlplusplus-dev    # scene and catalog files
   nlohmann-json3-dev     # --json output
+  libssl-dev             # provenance: SHA-256 of every input file (OpenSSL libcrypto)
   libfmt-dev             # formatting
   libbenchmark-dev       # bench/ (Google Benchmark)
   gnuplot-nox            # --plot charts
