@@ -16,7 +16,6 @@
 #include <fmt/ostream.h>
 
 #include "body_region_options.hpp"
-#include "charts/audit_chart.hpp"
 #include "covopt/optim/audit.hpp"
 #include "covopt/optim/design.hpp"
 #include "covopt/report/audit_json.hpp"
@@ -516,11 +515,8 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
     if (stream_file) stream_file->Commit();
     if (o.csv_file && *o.csv_file != "-") WriteFileAtomically(*o.csv_file, CellsCsv(result));
     if (o.plot_file) {
-      RunGnuplot(*o.plot_file, [&](const std::string& output_path) {
-        return AuditHeatMapScript(result, run.setup.rule.safety_factor,
-                                  std::filesystem::path(*o.trajectory).filename().string(), *run.plot_format,
-                                  output_path);
-      });
+      RunGnuplot(*o.plot_file, report::AuditHeatMap(result, run.setup.rule.safety_factor,
+                                                    std::filesystem::path(*o.trajectory).filename().string()));
     }
     if (o.json) {
       out << report::AuditJson(run.setup, result, run.input_warnings) << '\n';

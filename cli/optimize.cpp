@@ -20,6 +20,7 @@
 #include "covopt/core/quantity.hpp"
 #include "covopt/materials/catalog.hpp"
 #include "covopt/optim/design.hpp"
+#include "covopt/optim/design_map.hpp"
 #include "covopt/report/design_json.hpp"
 #include "covopt/report/robust_json.hpp"
 #include "body_region_commands.hpp"
@@ -27,6 +28,7 @@
 #include "materials_command.hpp"
 #include "oracle_options.hpp"
 #include "output.hpp"
+#include "plot.hpp"
 #include "quantity.hpp"
 #include "scene_fields.hpp"
 #include "scene_file.hpp"
@@ -760,6 +762,11 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
   sub->add_option("--csv", options.csv, "write every candidate to FILE as CSV (SI units in the header)")
       ->type_name("FILE")
       ->group("Output");
+  sub->add_option("--plot", options.plot_file,
+                  "chart with gnuplot: the design map, the governing ratio over thickness x modulus with each "
+                  "criterion's limit and the chosen design (the head's design only)")
+      ->type_name("FILE.png|FILE.svg")
+      ->group("Output");
   return sub;
 }
 
@@ -773,6 +780,18 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     (void)ImpactModel::FromScene(bare);  // scene range checks, naming the field
   } catch (const std::invalid_argument& e) {  // InputError and the library's checks
     return errors.BadInput(e.what());
+  }
+  if (options.plot_file) {
+    const char* refused = options.body.any() ? "--body-region" : !r.ranges.empty() ? "scene ranges" : nullptr;
+    if (refused != nullptr) {
+      return errors.BadInput(fmt::format("--plot '{}': the design map is drawn for the head's design only, not with {}; "
+                                         "drop --plot",
+                                         *options.plot_file, refused));
+    }
+    if (!PlotFormatFor(*options.plot_file)) {
+      return errors.BadInput(fmt::format("--plot: cannot tell the format of '{}'; name the file *.png or *.svg",
+                                         *options.plot_file));
+    }
   }
   if (options.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
     if (!r.ranges.empty()) {
@@ -798,11 +817,17 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     return errors.BadInput(e.what());
   }
   if (!result.ok()) return errors.Failed(result.message);
-  if (options.csv) {
+  if (options.csv || options.plot_file) {
     try {
-      WriteFileAtomically(*options.csv, CandidatesCsv(result.candidates, result.rule));
+      if (options.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+      if (options.csv) WriteFileAtomically(*options.csv, CandidatesCsv(result.candidates, result.rule));
+      if (options.plot_file) {
+        RunGnuplot(*options.plot_file, report::DesignMapChart(optim::ComputeDesignMap(r.request, result)));
+      }
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
+    } catch (const std::invalid_argument& e) {  // the map's oracle: as the design's, accepted above
+      return errors.BadInput(e.what());
     }
   }
   if (options.json) {
@@ -810,6 +835,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     return 0;
   }
   if (options.csv) fmt::print(out, "Wrote {} ({} candidates)\n\n", *options.csv, result.candidates.size());
+  if (options.plot_file) fmt::print(out, "Wrote {} (the design map)\n\n", *options.plot_file);
 
   PrintDesign(out, r, result);
   return 0;

@@ -48,76 +48,6 @@ void Row(std::ostream& out, std::string_view label, std::string_view value) {
 
 }  // namespace
 
-std::string SceneHeadline(const Scene& scene, std::span<const std::string_view> omitted_fields) {
-  const auto shown = [&](std::string_view field) {
-    return std::find(omitted_fields.begin(), omitted_fields.end(), field) == omitted_fields.end();
-  };
-  // Which body moves: the speed belongs to the one that is not fixed. A swept mass may be
-  // fixed at some points only, so then neither is called fixed.
-  const bool robot_fixed = shown("robot.mass") && std::isinf(scene.robot.mass_kg);
-  const bool head_fixed = shown("head.mass") && std::isinf(scene.head.mass_kg);
-  const std::string speed =
-      shown("robot.speed") ? fmt::format("{:g} m/s", scene.robot.speed_m_per_s) : std::string();
-
-  std::vector<std::string> parts;
-  std::string robot = robot_fixed            ? std::string("fixed robot")
-                      : shown("robot.mass") ? Mass(scene.robot.mass_kg)
-                                             : std::string("robot");
-  if (!robot_fixed && !speed.empty()) robot += " at " + speed;
-  if (shown("robot.radius")) robot += ", R " + Length(scene.robot.radius_m);
-  parts.push_back(robot);
-
-  const bool show_thickness = shown("covering.thickness");
-  const bool show_modulus = shown("covering.modulus");
-  if (show_thickness && !(scene.covering.thickness_m > 0.0)) {
-    parts.emplace_back("no covering");
-  } else if (show_thickness && show_modulus) {
-    parts.push_back(fmt::format("covering {}, {}", Length(scene.covering.thickness_m),
-                                Modulus(scene.covering.youngs_modulus_Pa)));
-  } else if (show_thickness) {
-    parts.push_back(fmt::format("covering {}", Length(scene.covering.thickness_m)));
-  } else if (show_modulus) {
-    parts.push_back(fmt::format("covering {}", Modulus(scene.covering.youngs_modulus_Pa)));
-  }
-
-  std::string head = head_fixed           ? std::string("head fixed")
-                     : shown("head.mass") ? "head " + Mass(scene.head.mass_kg)
-                                          : std::string("head");
-  if (robot_fixed && !head_fixed) {
-    head += speed.empty() ? " dropped onto it" : " dropped onto it at " + speed;
-  } else if (head_fixed && !robot_fixed) {
-    head += ", hit by the robot";
-  }
-  if (head != "head") parts.push_back(head);
-  return fmt::format("{}", fmt::join(parts, "; "));
-}
-
-std::vector<std::string> SceneDetailsBeyondHeadline(const Scene& scene,
-                                                    std::span<const std::string_view> omitted_fields) {
-  constexpr std::array<std::string_view, 6> kInHeadline{"robot.mass",         "robot.speed",
-                                                        "robot.radius",       "covering.modulus",
-                                                        "covering.thickness", "head.mass"};
-  const Scene defaults;
-  std::vector<std::string> details;
-  for (const SceneField& field : SceneFields()) {
-    const std::string name = field.dotted_name();
-    if (std::find(kInHeadline.begin(), kInHeadline.end(), name) != kInHeadline.end() ||
-        std::find(omitted_fields.begin(), omitted_fields.end(), name) != omitted_fields.end()) {
-      continue;
-    }
-    Scene copy = scene, reference = defaults;
-    const double value = field.field(copy);
-    if (value == field.field(reference)) continue;
-    std::string_view flag = field.flag;
-    while (!flag.empty() && flag.front() == '-') flag.remove_prefix(1);
-    details.push_back(fmt::format("{} {}", flag, FormatQuantity(value, field.spec.kind)));
-  }
-  if (scene.model.thresholds != defaults.model.thresholds) {
-    details.push_back(fmt::format("{} thresholds", ThresholdsName(scene.model.thresholds)));
-  }
-  return details;
-}
-
 void PrintTable(std::ostream& out, const SimulationReport& report) {
   const Scene& s = report.scene;
   const ImpactResult& r = report.result;
@@ -286,7 +216,7 @@ std::string HistoryCsv(const ImpactModel& model, const std::vector<HistorySample
 namespace {
 
 // The signal handlers' registry of live temporaries: fixed storage, so the handler touches
-// no heap and calls only unlink, sigaction and raise (async-signal-safe).
+// no heap and calls only unlink, rmdir, sigaction and raise (async-signal-safe).
 constexpr int kTemporarySlots = 16;
 constexpr std::size_t kTemporaryPathBytes = 4096;
 struct TemporarySlot {
@@ -298,6 +228,10 @@ TemporarySlot g_temporaries[kTemporarySlots];
 extern "C" void RemoveTemporariesAndDie(int signal_number) {
   for (TemporarySlot& slot : g_temporaries) {
     if (slot.state.load() == 2) ::unlink(slot.path);
+  }
+  // Then the registered directories, empty now (gnuplot's scratch directory, report/charts.hpp).
+  for (TemporarySlot& slot : g_temporaries) {
+    if (slot.state.load() == 2) ::rmdir(slot.path);
   }
   // SA_RESETHAND restored the default action; the signal is blocked in the handler, so it
   // is delivered (and ends the process) as the handler returns.

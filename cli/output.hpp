@@ -21,6 +21,7 @@
 #include "covopt/core/scene.hpp"
 #include "covopt/core/time_integration.hpp"
 #include "covopt/report/csv.hpp"
+#include "covopt/report/scene_headline.hpp"
 #include "covopt/report/simulation_json.hpp"
 
 namespace covopt::cli {
@@ -29,19 +30,9 @@ namespace covopt::cli {
 /// SimulationJson is the --json object).
 using report::SimulationReport;
 
-/// The scene in one short line, for titles: "10 kg at 2 m/s, R 15 mm; covering 15 mm,
-/// 27.6 MPa; head 4.5 kg". The speed [m/s] goes with the body that moves: a fixed robot
-/// reads "fixed robot, R 15 mm; ...; head 4.5 kg dropped onto it at 2.2 m/s", a fixed head
-/// "...; head fixed, hit by the robot". Fields named in `omitted_fields` (dotted names:
-/// robot.mass, robot.speed, robot.radius, covering.thickness, covering.modulus, head.mass)
-/// are left out, e.g. the swept ones of a sweep chart; a body whose mass is omitted is
-/// called neither fixed nor free.
-std::string SceneHeadline(const Scene& scene, std::span<const std::string_view> omitted_fields = {});
-
-/// The scene inputs SceneHeadline does not show that differ from the paper's scene
-/// (Scene{}), skipping `omitted_fields`: {"scalp-thickness 4 mm", "literal thresholds"}.
-std::vector<std::string> SceneDetailsBeyondHeadline(
-    const Scene& scene, std::span<const std::string_view> omitted_fields = {});
+/// The scene in one short line, and its inputs beyond that line (report/scene_headline.hpp).
+using report::SceneDetailsBeyondHeadline;
+using report::SceneHeadline;
 
 /// The readable report: scene, peaks, verdicts, method and solver, warnings.
 void PrintTable(std::ostream& out, const SimulationReport& report);
@@ -144,8 +135,9 @@ class OutputFile {
 /// @throws OutputError naming the file and the system's reason.
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view content);
 
-/// Registers a temporary file for removal should SIGINT, SIGTERM or SIGHUP end the process
-/// (installing the handlers on first use); returns its slot, or -1 when the fixed registry
+/// Registers a temporary file, or a temporary directory (removed after the files, so once
+/// its registered files are gone), for removal should SIGINT, SIGTERM or SIGHUP end the
+/// process (installing the handlers on first use); returns its slot, or -1 when the fixed registry
 /// (16 paths of up to 4095 bytes) is full. Unregister it once it is renamed or removed.
 int RegisterTemporaryFile(const std::string& path) noexcept;
 void UnregisterTemporaryFile(int slot) noexcept;

@@ -110,63 +110,6 @@ void PrintSamples(std::ostream& out, const optim::TrajectoryCheck& check) {
   }
 }
 
-/// Speed and max safe speed over time, and the profile scaled by safe_speed_scale (dashed),
-/// which touches the limit at the worst sample.
-std::string ChartScript(const TrajectoryRun& run, const std::string& trajectory_file, PlotFormat format,
-                        const std::string& output) {
-  const optim::TrajectoryCheck& check = run.check;
-  const double scale = check.safe_speed_scale;
-  const bool scaled = std::isfinite(scale) && scale > 0.0;
-  double peak = 0.0;
-  for (const optim::SampleVerdict& v : check.samples) {
-    peak = std::max(peak, v.speed_m_per_s * (scaled ? std::max(1.0, scale) : 1.0));
-  }
-  const double top = peak > 0.0 ? 1.5 * peak : 1.0;
-  std::string s = "set encoding utf8\n";
-  s += GnuplotTerminal(format, 1000, 600);
-  s += fmt::format("set output {}\n", GnuplotQuoted(output));
-  s += "$data << EOD\n";
-  for (const optim::SampleVerdict& v : check.samples) {
-    // At rest there is no motion, hence no limit along it (the check's is the heaviest direction's).
-    const bool none = !v.moving || v.speed_limit.status == optim::SpeedLimitStatus::kNoSafeValue;
-    s += fmt::format("{} {} {} {}\n", v.time_s, v.speed_m_per_s,
-                     none ? std::string("NaN") : fmt::format("{}", v.speed_limit.max_safe_speed_m_per_s),
-                     scaled ? fmt::format("{}", v.speed_m_per_s * scale) : std::string("NaN"));
-  }
-  s += "EOD\n";
-  const std::array<std::string_view, 2> omitted{"robot.mass", "robot.speed"};
-  const std::string verdict =
-      check.worst_sample ? fmt::format("{}, safe speed scale {:.4g}", optim::ToString(check.status), scale)
-                         : std::string(optim::ToString(check.status));
-  s += fmt::format(
-      "set title {} . \"\\n\" . {}\n",
-      GnuplotQuoted(fmt::format("covopt robot --trajectory {} (tip {}): {}",
-                                std::filesystem::path(trajectory_file).filename().string(), run.tip_link, verdict)),
-      GnuplotQuoted(fmt::format("{}; criterion {}{}", SceneHeadline(run.scene.scene, omitted),
-                                optim::ToString(run.limit.criterion()),
-                                run.limit.safety_factor != 1.0
-                                    ? fmt::format(", safety factor {:g}", run.limit.safety_factor)
-                                    : std::string())));
-  s += "set grid linecolor rgb '#dddddd'\nset key below\nset autoscale xfix\n";
-  s += fmt::format("set yrange [0:{}]\n", top);
-  s += "set xlabel 'time [s]'\nset ylabel 'speed of the contact point [m/s]'\n";
-  s += "plot $data using 1:2 with lines linewidth 2 linecolor rgb '#1f5fa8' title 'speed', "
-       "$data using 1:3 with lines linewidth 2 linecolor rgb '#c0392b' title 'max safe speed at the "
-       "reflected mass along the motion'";
-  if (scaled) {
-    s += fmt::format(", $data using 1:4 with lines linewidth 2 dashtype 2 linecolor rgb '#1f5fa8' title {}",
-                     GnuplotQuoted(fmt::format("speed x {:.4g} (the safe speed scale)", scale)));
-  }
-  if (check.worst_sample) {
-    const optim::SampleVerdict& w = check.samples[*check.worst_sample];
-    s += fmt::format(", '-' using 1:2 with points pointtype 7 pointsize 1.3 linecolor rgb '#000000' title {}",
-                     GnuplotQuoted(fmt::format("worst sample ({}, t = {:.4g} s)", *check.worst_sample, w.time_s)));
-    s += fmt::format("\n{} {}\ne", w.time_s, w.speed_limit.max_safe_speed_m_per_s);
-  }
-  s += "\nunset output\n";
-  return s;
-}
-
 /// The chain and contact point of --urdf/--base/--tip/--point (the trajectory brings the joints).
 RobotModelInput ResolveChainAndPoint(const RobotModelOptions& model) {
   if (!model.urdf) throw InputError("--urdf FILE is required with --trajectory");
@@ -403,9 +346,8 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
     if (options.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (options.csv_file && *options.csv_file != "-") WriteFileAtomically(*options.csv_file, CsvText(check));
     if (options.plot_file) {
-      RunGnuplot(*options.plot_file, [&](const std::string& output_path) {
-        return ChartScript(run, *options.file, *run.plot_format, output_path);
-      });
+      RunGnuplot(*options.plot_file,
+                 report::TrajectoryChart({check, run.scene.scene, run.limit, *options.file, run.tip_link}));
     }
   } catch (const OutputError& e) {
     return errors.Failed(e.what());

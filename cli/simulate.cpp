@@ -680,7 +680,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
     // Check for gnuplot before writing anything, so that a missing tool leaves no files.
     if (plan.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (plan.history_file) WriteFileAtomically(*plan.history_file, HistoryCsv(*model, result.history));
-    if (plan.plot_file) PlotHistory(*plan.plot_file, report, plan.plot_format);
+    if (plan.plot_file) PlotHistory(*plan.plot_file, report);
   } catch (const OutputError& e) {
     return errors.Failed(e.what());
   }

@@ -91,6 +91,9 @@ optim::DesignRule LimitRule(const optim::SpeedLimitOptions& options, const Simul
 /// The Scope block: what the verdicts cover (optim::HeadVerdictScope).
 void PrintHeadScope(std::ostream& out, const optim::SpeedLimitOptions& options, const SimulationPlan& covering);
 
+/// The Safety-Map chart of the plan (report::SpeedLimitChart; computes its curves).
+report::GnuplotChart SpeedLimitChartOf(const SpeedLimitPlan& plan);
+
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err);
 

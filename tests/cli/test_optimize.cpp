@@ -8,6 +8,8 @@
 // float noise, limits from flags and scene files, several catalogs.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +18,7 @@
 #include <covopt/optim/covering_design.hpp>
 
 #include "cli_test_support.hpp"
+#include "plot.hpp"
 
 using covopt::cli::testing::Run;
 using nlohmann::json;
@@ -282,4 +285,51 @@ TEST_CASE("optimize takes limits from flags and scene files, and several catalog
                       "modulus_basis = \"as-printed\"\nsource = \"test\"\n";
   const json mine = OptimizeJson({"--no-builtin", "--catalog", a.string(), "--catalog", b.string()});
   CHECK(mine["candidates"].size() == 2);
+}
+
+TEST_CASE("optimize --plot draws the design map with the recommendation, and is refused where there is no map",
+          "[optimize][plot]") {
+  using covopt::cli::testing::ReadFile;
+  using covopt::cli::testing::ScopedEnv;
+  using covopt::cli::testing::TempDir;
+  const TempDir dir;
+  const auto svg = dir / "map.svg";
+  // Modes without a design map, and a name of no known format: bad input, nothing written.
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"optimize", "--body-region", "chest", "--speed", "1m/s", "--plot", svg.string()},
+        std::vector<std::string>{"optimize", "--head-mass", "3.7kg..5.8kg", "--plot", svg.string()},
+        std::vector<std::string>{"optimize", "--plot", (dir / "map.pdf").string()}}) {
+    const auto run = Run(args);
+    CAPTURE(args.back(), run.err);
+    CHECK(run.exit_code == 2);
+    CHECK(run.out.empty());
+    CHECK(run.err.find("--plot") != std::string::npos);
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+  }
+  {
+    const ScopedEnv no_path("PATH", dir.path().string());
+    const auto missing = Run({"optimize", "--plot", svg.string()});
+    CHECK(missing.exit_code == 1);
+    CHECK(missing.err.find("install gnuplot-nox") != std::string::npos);
+  }
+  CHECK(std::filesystem::is_empty(dir.path()));
+  if (!covopt::cli::FindOnPath("gnuplot")) {
+    WARN("gnuplot is not on PATH; skipping the chart");
+    return;
+  }
+  const auto json_run = Run({"optimize", "--json"});
+  REQUIRE(json_run.exit_code == 0);
+  const json answer = json::parse(json_run.out);
+  const auto run = Run({"optimize", "--plot", svg.string()});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.out.find("Wrote " + svg.string() + " (the design map)") != std::string::npos);
+  const std::string text = ReadFile(svg);
+  const std::string material = answer["recommendation"]["material"]["name"].get<std::string>();
+  CHECK(text.find("<svg") != std::string::npos);
+  CHECK(text.find("covering thickness [mm]") != std::string::npos);
+  CHECK(text.find("chosen: " + material) != std::string::npos);
+  for (const char* limit : {"laceration limit (ratio 1)", "contusion limit (ratio 1)", "full-compression limit (ratio 1)"}) {
+    CHECK(text.find(limit) != std::string::npos);
+  }
 }

@@ -168,7 +168,7 @@ TEST_CASE("the gnuplot script labels both axes and carries the whole history", "
   report.assessment = covopt::Assess(report.result.peaks);
   report.time_options = options;
   const std::string script =
-      covopt::cli::GnuplotScript(report, covopt::cli::PlotFormat::kPng, "/tmp/it's.png");
+      covopt::report::HistoryChart(report).script(covopt::report::ChartFormat::kPng, "/tmp/it's.png");
   CHECK_THAT(script, Contains("set terminal pngcairo") && Contains("set output '/tmp/it''s.png'") &&
                          Contains("set xlabel 'time [ms]'") && Contains("'force [N]'") &&
                          Contains("tensile stress σ_t [MPa]") && Contains("axes x1y2") &&
@@ -204,7 +204,7 @@ TEST_CASE("the force/stress chart marks both limits, and the derated ones with a
   limits.laceration_tensile_stress_Pa = 2e6;
   limits.contusion_energy_density_J_per_m2 = 3e4;
   report.assessment = covopt::Assess(report.result.peaks, limits);
-  std::string script = covopt::cli::GnuplotScript(report, covopt::cli::PlotFormat::kSvg, "c.svg");
+  std::string script = covopt::report::HistoryChart(report).script(covopt::report::ChartFormat::kSvg, "c.svg");
   // The laceration limit on the tensile axis (MPa), the contusion limit on the energy
   // density panel (J/cm²): the assessment's limits, not the defaults.
   CHECK_THAT(script, Contains("     2 axes x1y2 with lines") &&
@@ -214,7 +214,7 @@ TEST_CASE("the force/stress chart marks both limits, and the derated ones with a
   CHECK_THAT(script, !Contains("derated"));
 
   report.safety_factor = 2.0;
-  script = covopt::cli::GnuplotScript(report, covopt::cli::PlotFormat::kSvg, "c.svg");
+  script = covopt::report::HistoryChart(report).script(covopt::report::ChartFormat::kSvg, "c.svg");
   CHECK_THAT(script, Contains("1 axes x1y2 with lines") &&
                          Contains("'derated limit 1 MPa (limit / safety factor 2)'") &&
                          Contains("'derated limit 1.5 J/cm² (limit / safety factor 2)'"));
@@ -297,7 +297,7 @@ TEST_CASE("a missing gnuplot is exit 1 with the documented message and writes no
       Run({"simulate", "--history", csv.string(), "--plot", (dir / "p.png").string()});
   CHECK(run.exit_code == 1);
   CHECK(run.out.empty());
-  CHECK_THAT(run.err, Contains("gnuplot not found on PATH; install gnuplot-nox or drop --plot"));
+  CHECK_THAT(run.err, Contains("gnuplot not found on PATH; install gnuplot-nox (Debian) to draw charts and reports"));
   CHECK(std::filesystem::is_empty(dir.path()));
 }
 

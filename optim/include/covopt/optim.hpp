@@ -7,6 +7,7 @@
 #include "covopt/optim/backends.hpp"
 #include "covopt/optim/covering_design.hpp"
 #include "covopt/optim/design.hpp"
+#include "covopt/optim/design_map.hpp"
 #include "covopt/optim/design_work_precision.hpp"
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/optim/oracle.hpp"

@@ -1,20 +1,22 @@
-#include "audit_chart.hpp"
-
+// The heat map of `covopt audit` (--plot and the report).
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <fmt/format.h>
 
-namespace covopt::cli {
+#include "covopt/report/charts.hpp"
 
-std::string AuditHeatMapScript(const optim::AuditResult& result, double safety_factor,
-                               const std::string& trajectory_name, PlotFormat format, const std::string& output) {
+#include "chart_script.hpp"
+
+namespace covopt::report {
+
+GnuplotChart AuditHeatMap(const optim::AuditResult& result, double safety_factor,
+                          const std::string& trajectory_name) {
   const std::size_t links = result.links.size();
   const std::size_t samples = links > 0 ? result.ratio_over_time.size() / links : 0;
   const double at_limit = 1.0 / safety_factor;
-  std::string s = "set encoding utf8\n";
-  s += GnuplotTerminal(format, 1100, 250 + 45 * static_cast<int>(std::max<std::size_t>(links, 3)));
-  s += fmt::format("set output {}\n", GnuplotQuoted(output));
+  std::string s;
   std::string verdict = std::string(optim::ToString(result.status));
   if (result.limiting_cell) {
     const optim::AuditCell& c = result.cells[*result.limiting_cell];
@@ -56,7 +58,13 @@ std::string AuditHeatMapScript(const optim::AuditResult& result, double safety_f
                      c.time_s, c.link);
   }
   s += "\nunset output\n";
-  return s;
+  return internal::MakeChart(
+      "Ratio over time, per link",
+      fmt::format("The largest injury ratio of each link over time (over its surface points and the {} regions "
+                  "judged), green below the limit 1/safety factor = {:.4g}, red above{}.",
+                  result.regions.size(), at_limit,
+                  result.limiting_cell ? "; the circle marks the cell that sets the safe speed scale" : ""),
+      1100, 250 + 45 * static_cast<int>(std::max<std::size_t>(links, 3)), std::move(s));
 }
 
-}  // namespace covopt::cli
+}  // namespace covopt::report
