@@ -325,7 +325,7 @@ TEST_CASE("optimize --plot draws the design map with the recommendation, and is 
   REQUIRE(run.exit_code == 0);
   CHECK(run.out.find("Wrote " + svg.string() + " (the design map)") != std::string::npos);
   const std::string text = ReadFile(svg);
-  const std::string material = answer["recommendation"]["material"]["name"].get<std::string>();
+  const std::string material = answer["recommendation"]["material"].get<std::string>();
   CHECK(text.find("<svg") != std::string::npos);
   CHECK(text.find("covering thickness [mm]") != std::string::npos);
   CHECK(text.find("chosen: " + material) != std::string::npos);
