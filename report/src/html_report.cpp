@@ -628,7 +628,7 @@ void AssessSpeedLimit(Assessment& a, const Json& j) {
                     : "no safe value";
     v.criterion = "limited by " + by + " (" + status + ")";
     if (body) {
-      v.criterion += "; " + StringAt(row, "criteria");
+      v.criterion += region == "head" ? "; skin injury, Park et al. 2011" : "; ISO/TS 15066:2016 Table A.2";
       if (auto bare = NumberAt(row, "bare_max_speed_m_per_s")) {
         v.note = "bare robot " + Significant(*bare) + " m/s (" + StringAt(row, "bare_limited_by") + ")";
         if (auto gain = NumberAt(row, "gain")) v.note += ", gain " + Significant(*gain, 3) + "×";
@@ -946,8 +946,8 @@ th { background: #eee; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; }
 td.ok { color: #0b5a23; font-weight: 700; white-space: nowrap; }
 td.bad { color: #8c1410; font-weight: 700; white-space: nowrap; }
-table.appendix { font-size: 7pt; }
-table.appendix table.appendix { margin: 0; }
+table.appendix { font-size: 7pt; margin: 0 0 1mm 0; }
+h4.key { margin: 2mm 0 0.5mm 0; font-weight: 700; break-after: avoid; page-break-after: avoid; }
 .key { font-family: "DejaVu Sans Mono", monospace; font-size: 7.5pt; }
 figure.chart { margin: 3mm 0; break-inside: avoid; page-break-inside: avoid; text-align: center; }
 figure.chart svg { width: 100%; max-width: 170mm; height: auto; max-height: 125mm; }
@@ -1048,7 +1048,7 @@ void WriteVerdicts(std::string& out, const Assessment& a) {
     out += "</p>\n";
   }
   OpenTable(out, {{"verdict", 16}, {"criterion", 17}, {"value", 12}, {"limit", 10}, {"derated limit", 9},
-                  {"ratio", 7}, {"margin", 7}, {"verdict", 9}, {"note", 13}});
+                  {"ratio", 7}, {"margin", 8}, {"verdict", 9}, {"note", 12}});
   for (const VerdictRow& row : a.rows) {
     out += "<tr>";
     Cell(out, row.subject);
@@ -1070,27 +1070,42 @@ void WriteVerdicts(std::string& out, const Assessment& a) {
   out += "</tbody></table>\n";
 }
 
-/// Material names the result uses (not every candidate of a design).
-std::vector<std::string> MaterialNames(const Json& j) {
-  std::vector<std::string> names;
-  const auto add = [&](const Json* v) {
-    if (v && v->is_string() && std::find(names.begin(), names.end(), v->get<std::string>()) == names.end()) {
-      names.push_back(v->get<std::string>());
+/// A material the result uses (not every candidate of a design), with the modulus the run used
+/// when the JSON gives it beside the name [Pa].
+struct UsedMaterial {
+  std::string name;
+  std::optional<double> youngs_modulus_Pa;
+};
+
+std::vector<UsedMaterial> MaterialsUsed(const Json& j) {
+  std::vector<UsedMaterial> used;
+  const auto add = [&](const Json* holder, std::optional<double> modulus) {
+    const Json* v = holder ? Find(*holder, "material") : nullptr;
+    if (!v || !v->is_string()) return;
+    const std::string name = v->get<std::string>();
+    if (std::none_of(used.begin(), used.end(), [&](const UsedMaterial& m) { return m.name == name; })) {
+      used.push_back({name, modulus});
     }
   };
-  add(FindPath(j, {"scene", "covering", "material"}));
-  if (const Json* rec = Find(j, "recommendation"); rec && rec->is_object()) add(Find(*rec, "material"));
+  const auto modulus_of = [](const Json* holder) {
+    if (!holder) return std::optional<double>();
+    if (auto e = NumberAt(*holder, "youngs_modulus_Pa")) return e;
+    return NumberAt(*holder, "modulus_Pa");
+  };
+  const Json* covering = FindPath(j, {"scene", "covering"});
+  add(covering, modulus_of(covering));
+  if (const Json* rec = Find(j, "recommendation"); rec && rec->is_object()) add(rec, modulus_of(rec));
   for (const char* list : {"rows", "coverings", "link_designs"}) {
     if (const Json* rows = Find(j, list); rows && rows->is_array()) {
-      for (const Json& row : *rows) add(Find(row, "material"));
+      for (const Json& row : *rows) add(&row, modulus_of(&row));
     }
   }
-  return names;
+  return used;
 }
 
 void WriteMaterials(std::string& out, const Json& j) {
-  const std::vector<std::string> names = MaterialNames(j);
-  if (names.empty()) {
+  const std::vector<UsedMaterial> used = MaterialsUsed(j);
+  if (used.empty()) {
     out += "<p>No catalog material: the covering is given by its modulus (or there is none), so there is no datasheet "
            "to cite.</p>\n";
     return;
@@ -1099,14 +1114,20 @@ void WriteMaterials(std::string& out, const Json& j) {
          "<code>covopt materials show NAME</code>). If the run read a catalog of its own (<code>--catalog</code>, listed "
          "with its SHA-256 under Provenance), that file's entry is the one used.</p>\n";
   const materials::Catalog& catalog = materials::Catalog::BuiltIn();
-  for (const std::string& name : names) {
+  for (const UsedMaterial& u : used) {
     out += "<h3>";
-    Escape(out, name);
+    Escape(out, u.name);
     out += "</h3>\n";
-    const materials::Material* m = catalog.Find(name);
+    const materials::Material* m = catalog.Find(u.name);
     if (!m) {
       out += "<p>Not in the built-in catalog: its datasheet is the catalog file the run read.</p>\n";
       continue;
+    }
+    if (u.youngs_modulus_Pa && std::fabs(*u.youngs_modulus_Pa - m->youngs_modulus_Pa) > 1e-9 * m->youngs_modulus_Pa) {
+      out += "<p><b>The run used E = ";
+      Escape(out, Reading(*u.youngs_modulus_Pa, {"Pa", "MPa", 1e-6}));
+      out += ", not the built-in entry's: its datasheet is the catalog file the run read (Provenance); the built-in "
+             "entry of the same name follows for reference.</b></p>\n";
     }
     OpenTable(out, {{"field", 25}, {"value", 75}});
     const auto row = [&](std::string_view field, const std::string& value) {
@@ -1134,6 +1155,43 @@ bool IsScalarArray(const Json& v) {
   return v.is_array() && std::all_of(v.begin(), v.end(), [](const Json& e) { return e.is_primitive(); });
 }
 
+/// A value that reads on one line: a scalar, an empty or scalar array, or a small object of
+/// such (at most 4 scalars).
+bool IsInline(const Json& v) {
+  if (v.is_primitive() || v.empty() || IsScalarArray(v)) return true;
+  return v.is_object() && v.size() <= 4 &&
+         std::all_of(v.begin(), v.end(), [](const Json& e) { return e.is_primitive() || (e.is_array() && e.empty()); });
+}
+
+void InlineText(std::string& out, const Json& v) {
+  if (v.is_string()) {
+    Escape(out, v.get<std::string>());
+  } else if (v.is_primitive()) {
+    out += v.dump();
+  } else if (v.empty()) {
+    out += v.is_array() ? "[]" : "{}";
+  } else if (v.is_array()) {
+    out += "[";
+    bool first = true;
+    for (const Json& e : v) {
+      if (!first) out += ", ";
+      first = false;
+      Escape(out, e.is_string() ? "\"" + e.get<std::string>() + "\"" : e.dump());
+    }
+    out += "]";
+  } else {
+    bool first = true;
+    for (const auto& [key, e] : v.items()) {
+      if (!first) out += "; ";
+      first = false;
+      out += "<span class=\"key\">";
+      Escape(out, key);
+      out += "</span> ";
+      InlineText(out, e);
+    }
+  }
+}
+
 /// Both are objects with the same keys in the same order.
 bool SameKeys(const Json& a, const Json& b) {
   if (!a.is_object() || !b.is_object() || a.size() != b.size()) return false;
@@ -1144,68 +1202,73 @@ bool SameKeys(const Json& a, const Json& b) {
   return true;
 }
 
-/// Every value of `v` as nested tables: objects as key/value rows, arrays of like objects as
-/// one table with a column per key, arrays of scalars on one line.
-void WriteAppendix(std::string& out, const Json& v, int depth) {
-  if (v.is_primitive()) {
-    Escape(out, v.is_string() ? v.get<std::string>() : v.dump());
-    return;
-  }
-  if (v.empty()) {
-    out += v.is_array() ? "[]" : "{}";
-    return;
-  }
-  if (IsScalarArray(v)) {
-    out += "[";
-    bool first = true;
-    for (const Json& e : v) {
-      if (!first) out += ", ";
-      first = false;
-      Escape(out, e.is_string() ? "\"" + e.get<std::string>() + "\"" : e.dump());
-    }
-    out += "]";
-    return;
-  }
-  if (v.is_array() && depth < 6 &&
-      std::all_of(v.begin(), v.end(), [&](const Json& e) { return SameKeys(e, v.front()); })) {
+/// Every value of `v` (an object or array) as full-width tables, one per nested object or
+/// array, headed by its dotted path: scalars (and small objects of scalars) on one line, two
+/// key/value pairs a row; an array of like objects of at most 14 inline values as one table
+/// with a column per key. Nested values get their own table after their parent's.
+void WriteAppendix(std::string& out, const Json& v, const std::string& path) {
+  out += "<h4 class=\"key\">";
+  Escape(out, path.empty() ? "(the result)" : path);
+  out += "</h4>\n";
+  const bool columns = v.is_array() && v.front().is_object() && v.front().size() <= 14 &&
+                       std::all_of(v.begin(), v.end(), [&](const Json& e) {
+                         return SameKeys(e, v.front()) &&
+                                std::all_of(e.begin(), e.end(), [](const Json& x) { return IsInline(x); });
+                       });
+  if (columns) {
     out += "<table class=\"appendix\"><thead><tr><th>#</th>";
     for (const auto& [key, unused] : v.front().items()) {
       out += "<th>";
       Escape(out, key);
       out += "</th>";
     }
-    out += "</tr></thead><tbody>";
+    out += "</tr></thead><tbody>\n";
     std::size_t index = 0;
     for (const Json& e : v) {
       out += "<tr><td>" + std::to_string(index++) + "</td>";
       for (const auto& [key, child] : e.items()) {
         out += "<td>";
-        WriteAppendix(out, child, depth + 1);
+        InlineText(out, child);
         out += "</td>";
       }
-      out += "</tr>";
+      out += "</tr>\n";
     }
-    out += "</tbody></table>";
+    out += "</tbody></table>\n";
     return;
   }
-  out += "<table class=\"appendix\"><colgroup><col style=\"width:24%\"><col></colgroup><tbody>";
+  std::vector<std::pair<std::string, const Json*>> entries;
   if (v.is_object()) {
-    for (const auto& [key, child] : v.items()) {
-      out += "<tr><td class=\"key\">";
+    for (const auto& [key, child] : v.items()) entries.emplace_back(key, &child);
+  } else {
+    for (std::size_t i = 0; i < v.size(); ++i) entries.emplace_back(std::to_string(i), &v[i]);
+  }
+  out += "<table class=\"appendix\"><colgroup><col style=\"width:20%\"><col style=\"width:30%\">"
+         "<col style=\"width:20%\"><col style=\"width:30%\"></colgroup><tbody>\n";
+  for (std::size_t i = 0; i < entries.size(); i += 2) {
+    out += "<tr>";
+    for (std::size_t k = i; k < i + 2; ++k) {
+      if (k >= entries.size()) {
+        out += "<td></td><td></td>";
+        continue;
+      }
+      const auto& [key, child] = entries[k];
+      out += "<td class=\"key\">";
       Escape(out, key);
       out += "</td><td>";
-      WriteAppendix(out, child, depth + 1);
-      out += "</td></tr>";
+      if (IsInline(*child)) {
+        InlineText(out, *child);
+      } else {
+        out += "see ";
+        Escape(out, path.empty() ? key : path + "." + key);
+      }
+      out += "</td>";
     }
-  } else {
-    std::size_t index = 0;
-    for (const Json& child : v) {
-      out += "<tr><td class=\"key\">" + std::to_string(index++) + "</td><td>";
-      WriteAppendix(out, child, depth + 1);
-      out += "</td></tr>";
-    }
+    out += "</tr>\n";
   }
-  out += "</tbody></table>";
+  out += "</tbody></table>\n";
+  for (const auto& [key, child] : entries) {
+    if (!IsInline(*child)) WriteAppendix(out, *child, path.empty() ? key : path + "." + key);
+  }
 }
 
 void WriteProvenance(std::string& out, const Json& p) {
@@ -1430,7 +1493,7 @@ std::string HtmlReport(const ReportContent& content) {
 
   out += "<section class=\"appendix-section\">\n<h2>Appendix: every value of the result</h2>\n"
          "<p>The JSON object the command printed with --json, in full (SI units, as in its keys).</p>\n";
-  WriteAppendix(out, j, 0);
+  WriteAppendix(out, j, "");
   out += "\n</section>\n</body>\n</html>\n";
   return out;
 }

@@ -23,6 +23,7 @@
 
 #include <covopt/core/impact_model.hpp>
 #include <covopt/core/exact.hpp>
+#include <covopt/materials/catalog.hpp>
 #include <covopt/report/html_report.hpp>
 #include <covopt/report/provenance.hpp>
 #include <covopt/report/simulation_json.hpp>
@@ -497,6 +498,13 @@ TEST_CASE("The report states its sources, margin definition, model assumptions, 
   // The neoprene sponge's datasheet source, from the catalog.
   CHECK(body.find("<h3>neoprene sponge D1056 2C4</h3>") != std::string::npos);
   CHECK(body.find("source (datasheet)") != std::string::npos);
+  CHECK(body.find(covopt::materials::Catalog::BuiltIn().Find("neoprene sponge D1056 2C4")->source) != std::string::npos);
+  CHECK(body.find("The run used E = ") == std::string::npos);
+  // A material of that name with another modulus came from the run's own catalog: said so.
+  Json own = Json::parse(ReadFile("simulate_safe.json"));
+  own["scene"]["covering"]["youngs_modulus_Pa"] = 1.5e6;
+  CHECK(Render(ReportKind::kSimulate, own.dump()).find("The run used E = 1.5 MPa, not the built-in entry") !=
+        std::string::npos);
   const std::string audit = Render(ReportKind::kAudit, ReadFile("audit_unsafe.json"));
   CHECK(audit.find("docs/model.md §14.6") != std::string::npos);
   CHECK(audit.find("No catalog material: the covering is given by its modulus") != std::string::npos);
