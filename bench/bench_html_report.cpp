@@ -14,10 +14,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include <covopt/materials/body_regions.hpp>
-#include <covopt/materials/catalog.hpp>
 #include <covopt/optim/audit.hpp>
-#include <covopt/optim/design.hpp>
 #include <covopt/report/audit_json.hpp>
 #include <covopt/report/html_report.hpp>
 #include <covopt/report/provenance.hpp>
@@ -76,13 +73,8 @@ BENCHMARK_CAPTURE(BM_HtmlReport, audit, covopt::report::ReportKind::kAudit, "aud
 
 void BM_HtmlReportAuditFull(benchmark::State& state) {
   static const std::string json = [] {
-    covopt::optim::AuditSetup setup{Fr3(), covopt::robot::SurfaceFromUrdfFile(kFr3Urdf, Fr3())};
-    const std::vector<std::string> names{"PU foam PORON 4701-30 320"};
-    const covopt::optim::CandidateMaterial foam =
-        covopt::optim::SelectCandidates(covopt::materials::Catalog::BuiltIn(), names).front();
-    setup.covering = {covopt::CoveringSpec{foam.youngs_modulus_Pa, foam.poisson_ratio, 0.01}, foam};
-    setup.regions = covopt::materials::BodyRegionTable::BuiltIn().AllLimits(covopt::ContactType::kTransient);
-    setup.head = covopt::Scene{};
+    const covopt::optim::AuditSetup setup =
+        Fr3AuditSetup(covopt::robot::SurfaceFromUrdfFile(kFr3Urdf, Fr3()));
     return covopt::report::AuditJson(setup, covopt::optim::Audit(setup, Pick(), {}));
   }();
   Render(state, Content(covopt::report::ReportKind::kAudit, json));
