@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -693,7 +694,15 @@ void AssessTrajectory(Assessment& a, const Json& j) {
   a.headline = StringAt(j, "message");
   const Json* samples = Find(j, "samples");
   a.safety_factor = NumberAt(j, "safety_factor").value_or(NumberAt(j, "criterion").value_or(1.0));
-  if (const Json* c = Find(j, "criterion"); c && c->is_object()) a.safety_factor = c->value("safety_factor", a.safety_factor);
+  if (const Json* c = Find(j, "criterion"); c && c->is_object()) {
+    a.safety_factor = c->value("safety_factor", a.safety_factor);
+  } else if (c && c->is_string()) {
+    // The body-region trajectory records its factor only in the criterion's words ("safety factor 2 on each").
+    const std::string text = c->get<std::string>();
+    const std::size_t at = text.rfind("safety factor ");
+    if (at != std::string::npos) a.safety_factor = std::strtod(text.c_str() + at + 14, nullptr);
+    if (!(a.safety_factor >= 1.0)) a.safety_factor = 1.0;
+  }
   Governing g{"", Json(nullptr)};
   double best = -1.0;
   const bool body = Find(j, "regions") != nullptr;

@@ -529,6 +529,23 @@ TEST_CASE("The report states its sources, margin definition, model assumptions, 
   }
 }
 
+TEST_CASE("The margin is 1 - SF x ratio with the result's own safety factor", "[report][html]") {
+  // A body-region trajectory records its factor in the criterion's words only.
+  Json j = Json::parse(ReadFile("trajectory_body_unsafe.json"));
+  const std::string criterion = j["criterion"].get<std::string>();
+  const std::size_t at = criterion.rfind("safety factor 1 on each");
+  REQUIRE(at != std::string::npos);
+  double ratio = 0.0;
+  for (const Json& sample : j["samples"]) ratio = std::max(ratio, sample["worst_ratio"].get<double>());
+  for (const double sf : {1.0, 2.0}) {
+    j["criterion"] = sf == 1.0 ? criterion : criterion.substr(0, at) + "safety factor 2 on each";
+    char margin[64];
+    std::snprintf(margin, sizeof margin, "margin %.1f %% (safety factor %g)", 100.0 * (1.0 - sf * ratio), sf);
+    INFO(margin);
+    CHECK(Render(ReportKind::kTrajectory, j.dump()).find(margin) != std::string::npos);
+  }
+}
+
 TEST_CASE("A speed-limit table with a row that has no safe speed is UNSAFE", "[report][html]") {
   // The JSON of a run whose lightest robot were unsafe at every speed searched: its row as
   // speed_limit_json writes one (status no-safe-value, the limit null).
