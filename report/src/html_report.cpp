@@ -496,6 +496,9 @@ void AssessSimulate(Assessment& a, const Json& j) {
   if (!Find(j, "safe") || !j["safe"].is_boolean() || !Find(j, "laceration") || !Find(j, "contusion")) {
     throw std::invalid_argument("the result has no verdict (\"safe\", \"laceration\", \"contusion\")");
   }
+  if (const Json* status = FindPath(j, {"solver", "status"}); status && status->is_string() && *status != "success") {
+    throw std::invalid_argument("the simulation failed (solver status '" + status->get<std::string>() + "')");
+  }
   AssessHeadSimulation(a, j, "");
   a.safe = j["safe"].get<bool>();
   a.headline = a.safe ? "the impact causes neither laceration nor contusion, and the covering holds"

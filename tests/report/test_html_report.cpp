@@ -574,6 +574,9 @@ TEST_CASE("Runs without a verdict, non-objects and results without provenance ar
   refuse(ReportKind::kSpeedLimit, WithProvenance(ReadFile("simulate_safe.json")), "without a verdict");
   refuse(ReportKind::kAudit, WithProvenance(ReadFile("simulate_safe.json")), "without a verdict");
   refuse(ReportKind::kSimulate, WithProvenance(ReadFile("speed_limit_safe.json")), "without a verdict");
+  Json failed_simulation = Json::parse(ReadFile("simulate_safe.json"));
+  failed_simulation["solver"]["status"] = "too-much-work";
+  refuse(ReportKind::kSimulate, WithProvenance(failed_simulation.dump()), "solver status 'too-much-work'");
   Json failed = Json::parse(ReadFile("trajectory_safe.json"));
   failed["status"] = "evaluation-failed";
   refuse(ReportKind::kTrajectory, WithProvenance(failed.dump()), "evaluation-failed");
