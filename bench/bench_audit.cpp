@@ -55,23 +55,12 @@ covopt::robot::RobotSurface Surface(std::size_t count) {
   return thinned;
 }
 
-covopt::optim::AuditSetup Setup(covopt::robot::RobotSurface surface) {
-  covopt::optim::AuditSetup setup{Fr3(), std::move(surface)};
-  const std::vector<std::string> names{"PU foam PORON 4701-30 320"};
-  const covopt::optim::CandidateMaterial foam =
-      covopt::optim::SelectCandidates(covopt::materials::Catalog::BuiltIn(), names).front();
-  setup.covering = {covopt::CoveringSpec{foam.youngs_modulus_Pa, foam.poisson_ratio, 0.01}, foam};
-  setup.regions = covopt::materials::BodyRegionTable::BuiltIn().AllLimits(covopt::ContactType::kTransient);
-  setup.head = covopt::Scene{};
-  return setup;
-}
-
 void BM_AuditSamplePointFr3(benchmark::State& state) {
   covopt::robot::RobotSurface surface = covopt::robot::SurfaceFromUrdfFile(kFr3Urdf, Fr3());
   covopt::robot::LinkSurface link7 = surface.links.back();
   link7.points = {link7.points.front()};
   surface.links = {link7};
-  const covopt::optim::AuditSetup setup = Setup(surface);
+  const covopt::optim::AuditSetup setup = Fr3AuditSetup(surface);
   covopt::optim::AuditOptions options;
   options.keep_ratio_over_time = false;
   for (auto _ : state) benchmark::DoNotOptimize(covopt::optim::Audit(setup, Pick(), options));
@@ -81,7 +70,7 @@ void BM_AuditSamplePointFr3(benchmark::State& state) {
 BENCHMARK(BM_AuditSamplePointFr3)->Unit(benchmark::kMicrosecond);
 
 void BM_AuditPickFr3(benchmark::State& state) {
-  const covopt::optim::AuditSetup setup = Setup(Surface(static_cast<std::size_t>(state.range(0))));
+  const covopt::optim::AuditSetup setup = Fr3AuditSetup(Surface(static_cast<std::size_t>(state.range(0))));
   covopt::optim::AuditOptions options;
   options.keep_ratio_over_time = false;
   for (auto _ : state) benchmark::DoNotOptimize(covopt::optim::Audit(setup, Pick(), options));
@@ -92,7 +81,7 @@ void BM_AuditPickFr3(benchmark::State& state) {
 BENCHMARK(BM_AuditPickFr3)->Arg(40)->Arg(0)->Unit(benchmark::kMillisecond);
 
 void BM_AuditPickBrakingFr3(benchmark::State& state) {
-  covopt::optim::AuditSetup setup = Setup(Surface(40));
+  covopt::optim::AuditSetup setup = Fr3AuditSetup(Surface(40));
   setup.reaction_delay_s = 0.002;
   setup.braking_m_per_s2 = 200.0;
   covopt::optim::AuditOptions options;
@@ -110,7 +99,7 @@ void BM_AuditPickBrakingFr3(benchmark::State& state) {
 BENCHMARK(BM_AuditPickBrakingFr3)->Unit(benchmark::kMillisecond);
 
 void BM_AuditPickDesignFr3(benchmark::State& state) {
-  const covopt::optim::AuditSetup setup = Setup(Surface(40));
+  const covopt::optim::AuditSetup setup = Fr3AuditSetup(Surface(40));
   covopt::optim::AuditOptions options;
   options.keep_ratio_over_time = false;
   options.design.materials = covopt::optim::SelectCandidates(covopt::materials::Catalog::BuiltIn());
