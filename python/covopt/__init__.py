@@ -215,7 +215,6 @@ def body_regions():
     return [BodyRegion(row) for row in _covopt.body_regions()]
 
 
-@_provenance.stamped
 def body_region_limits(region, area=None, contact="transient"):
     """The limits ISO/TS 15066:2016 sets for one area of one body region.
 
