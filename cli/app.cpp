@@ -15,6 +15,7 @@
 #include "parse_errors.hpp"
 #include "simulate.hpp"
 #include "robot.hpp"
+#include "run_context.hpp"
 #include "speed_limit.hpp"
 #include "sweep.hpp"
 #include "workprecision.hpp"
@@ -69,6 +70,10 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     return 2;
   }
 
+  // The command line and input files every JSON's provenance names (run_context.hpp).
+  const RunContext run = MakeRunContext(app, {argv, static_cast<std::size_t>(argc)});
+  simulate_options.run = materials_options.run = optimize_options.run = workprecision_options.run =
+      speed_limit_options.run = robot_options.run = body_regions_options.run = audit_options.run = run;
   try {
     if (simulate->parsed()) return RunSimulate(simulate_options, out, err);
     if (materials->parsed()) return RunMaterials(materials_options, out, err);

@@ -27,6 +27,7 @@
 #include "output.hpp"
 #include "plot.hpp"
 #include "quantity.hpp"
+#include "report_option.hpp"
 #include "scene_fields.hpp"
 
 namespace covopt::cli {
@@ -296,6 +297,9 @@ std::string RatioText(double ratio) { return std::isfinite(ratio) ? fmt::format(
 
 std::string ScaleText(double scale) { return std::isfinite(scale) ? fmt::format("{:.4g}", scale) : "-"; }
 
+/// The charts of audit's --report (none yet).
+std::vector<report::SvgChart> ReportCharts(const optim::AuditResult& /*result*/) { return {}; }
+
 void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& run, const optim::AuditResult& r) {
   const optim::AuditSetup& setup = run.setup;
   const robot::KinematicChain& chain = setup.chain;
@@ -466,6 +470,7 @@ CLI::App* SetupAudit(CLI::App& app, AuditCommandOptions& options) {
   sub->add_option("--plot", options.plot_file, "heat map of the governing ratio over time and links (gnuplot)")
       ->type_name("FILE.png|FILE.svg")
       ->group("Output");
+  AddReportOption(*sub, options.report_file);
   return sub;
 }
 
@@ -518,11 +523,13 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
       RunGnuplot(*o.plot_file, report::AuditHeatMap(result, run.setup.rule.safety_factor,
                                                     std::filesystem::path(*o.trajectory).filename().string()));
     }
-    if (o.json) {
-      out << report::AuditJson(run.setup, result, run.input_warnings) << '\n';
-    } else if (o.csv_file && *o.csv_file == "-") {
+    if (o.json || o.report_file) {
+      PrintAndReport(out, o.json, report::AuditJson(run.setup, result, run.input_warnings), o.run, o.report_file,
+                     report::ReportKind::kAudit, [&] { return ReportCharts(result); });
+    }
+    if (!o.json && o.csv_file && *o.csv_file == "-") {
       out << CellsCsv(result);
-    } else if (!(o.samples_csv && *o.samples_csv == "-")) {
+    } else if (!o.json && !(o.samples_csv && *o.samples_csv == "-")) {
       PrintText(out, o, run, result);
     }
   } catch (const OutputError& e) {

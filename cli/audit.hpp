@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "robot_model_options.hpp"
+#include "run_context.hpp"
 #include "simulate.hpp"
 
 namespace CLI {
@@ -57,6 +58,9 @@ struct AuditCommandOptions {
   std::optional<std::string> csv_file;         ///< --csv FILE|-: one row per link × region
   std::optional<std::string> samples_csv;      ///< --samples-csv FILE|-: one row per sample, streamed
   std::optional<std::string> plot_file;        ///< --plot FILE.png|FILE.svg: the heat map
+  std::optional<std::string> report_file;      ///< --report FILE.html|FILE.pdf (report_option.hpp)
+  /// Not typed: the command line and input files for the JSON's provenance, set by RunCli.
+  std::optional<RunContext> run;
 };
 
 /// Adds the `audit` subcommand to `app`; `options` must outlive the parse.

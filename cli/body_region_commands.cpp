@@ -13,6 +13,7 @@
 #include "covopt/report/csv.hpp"
 #include "errors.hpp"
 #include "output.hpp"
+#include "report_option.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -89,11 +90,16 @@ std::string VerdictWord(const BodyRegionJudgement& v) {
                      optim::ToString(v.governing), v.governing_ratio, Percent(v.margin));
 }
 
+/// The charts of a --body-region report (simulate, speed-limit, optimize; none yet).
+std::vector<report::SvgChart> BodyRegionReportCharts() { return {}; }
+
 /// The head's `simulate`, as the command prints it (text or JSON), without the body flags.
 int RunHead(const SimulateOptions& options, std::ostream& out, std::ostream& err, bool json) {
   SimulateOptions head = options;
   head.body = {};
   head.json = json;
+  head.run.reset();          // its object is nested in the regions' one, which carries the provenance
+  head.report_file.reset();  // and the report is the regions' one
   return RunSimulate(head, out, err);
 }
 
@@ -156,9 +162,16 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
     if (code != 0) return code;
     head_text = head_out.str();
   }
-  if (plan.json) {
-    out << report::BodyContactSimulationJson(scene, MaterialName(plan), judgements, sf, head_text, warnings) << '\n';
-  } else {
+  if (plan.json || options.report_file) {
+    try {
+      PrintAndReport(out, plan.json,
+                     report::BodyContactSimulationJson(scene, MaterialName(plan), judgements, sf, head_text, warnings),
+                     options.run, options.report_file, report::ReportKind::kSimulate, BodyRegionReportCharts);
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
+  if (!plan.json) {
     fmt::print(out, "Robot        {} at {:g} m/s; {}\n", Mass(scene.robot_mass_kg), scene.speed_m_per_s,
                RobotSurface(scene, MaterialName(plan)));
     fmt::print(out, "Contact      {}\n", ContactText(regions));
@@ -315,13 +328,21 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
   }
   const SimulationPlan& first = plan.coverings.front();
   const BodyContactScene first_scene = BodyContactSceneOf(first.scene, regions);
-  if (plan.json) {
-    out << report::BodyRegionSpeedLimitJson(first_scene, plan.coverings.size() == 1 ? MaterialName(first) : std::nullopt,
-                                            BodyCriterion(rule, regions.has_head()), rule.safety_factor, rows, warnings)
-        << '\n';
-  } else if (plan.csv_file && *plan.csv_file == "-") {
+  if (plan.json || options.report_file) {
+    try {
+      PrintAndReport(out, plan.json,
+                     report::BodyRegionSpeedLimitJson(first_scene,
+                                                      plan.coverings.size() == 1 ? MaterialName(first) : std::nullopt,
+                                                      BodyCriterion(rule, regions.has_head()), rule.safety_factor,
+                                                      rows, warnings),
+                     options.run, options.report_file, report::ReportKind::kSpeedLimit, BodyRegionReportCharts);
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
+  if (!plan.json && plan.csv_file && *plan.csv_file == "-") {
     out << csv_text();
-  } else {
+  } else if (!plan.json) {
     fmt::print(out, "Robot      {}\n",
                plan.coverings.size() == 1 ? RobotSurface(first_scene, MaterialName(first))
                                           : fmt::format("{}; covering {} of {} materials, one block each",
@@ -434,9 +455,17 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
+  if (options.json || options.report_file) {
+    try {
+      PrintAndReport(out, options.json,
+                     report::BodyRegionDesignJson(request, result, BodyCriterion(request.rule, regions.has_head()),
+                                                  input_warnings),
+                     options.run, options.report_file, report::ReportKind::kOptimize, BodyRegionReportCharts);
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
   if (options.json) {
-    out << report::BodyRegionDesignJson(request, result, BodyCriterion(request.rule, regions.has_head()), input_warnings)
-        << '\n';
     out.flush();
     return out ? 0 : errors.Failed("cannot write the results to standard output");
   }

@@ -161,7 +161,7 @@ int RunBodyRegions(const BodyRegionsOptions& options, std::ostream& out, std::os
         return errors.BadInput(e.what());
       }
       if (options.json) {
-        out << report::BodyRegionJson(*region) << '\n';
+        out << WithRunProvenance(report::BodyRegionJson(*region), options.run) << '\n';
       } else {
         PrintRegion(out, *region);
       }

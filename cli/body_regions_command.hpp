@@ -14,8 +14,11 @@
 /// Exit codes: 0 done, 2 bad input (a name not in the table: one line naming the closest
 /// name and the choices, nothing on stdout), 1 stdout could not be written.
 
+#include <optional>
 #include <ostream>
 #include <string>
+
+#include "run_context.hpp"
 
 namespace CLI {
 class App;
@@ -31,6 +34,8 @@ struct BodyRegionsOptions {
   BodyRegionsAction action = BodyRegionsAction::kNone;  ///< set by the parsed subcommand
   bool json = false;                                    ///< --json: JSON instead of text
   std::string name;                                     ///< show NAME
+  /// Not typed: the command line and input files for the JSON's provenance, set by RunCli.
+  std::optional<RunContext> run;
 };
 
 /// Adds the `body-regions` subcommand and its `list` and `show` to `app`, storing what is

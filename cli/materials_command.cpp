@@ -456,7 +456,7 @@ int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostrea
       const Material* m = catalog.Find(Trim(options.name));
       if (m == nullptr) return errors.BadInput(NoSuchMaterial(catalog, Trim(options.name)));
       if (options.json) {
-        out << report::MaterialJson(*m) << '\n';
+        out << WithRunProvenance(report::MaterialJson(*m), options.run) << '\n';
       } else {
         PrintMaterial(out, *m);
       }

@@ -33,6 +33,7 @@
 
 #include "covopt/materials/catalog.hpp"
 #include "quantity.hpp"
+#include "run_context.hpp"
 
 namespace CLI {
 class App;
@@ -98,6 +99,8 @@ struct MaterialsOptions {
   std::vector<std::string> bases;       ///< --basis B, repeatable: any of them
   std::optional<std::string> name_contains;  ///< --name TEXT: part of the name
   bool include_unknown = false;         ///< --include-unknown: unknown ν/density pass a range
+  /// Not typed: the command line and input files for the JSON's provenance, set by RunCli.
+  std::optional<RunContext> run;
 };
 
 /// Adds the `materials` subcommand and its `list`, `show`, `find` to `app`, storing what

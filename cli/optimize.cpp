@@ -30,6 +30,7 @@
 #include "output.hpp"
 #include "plot.hpp"
 #include "quantity.hpp"
+#include "report_option.hpp"
 #include "scene_fields.hpp"
 #include "scene_file.hpp"
 #include "simulate.hpp"
@@ -436,6 +437,9 @@ void PrintProbabilityDesign(std::ostream& out, const Resolved& r, const optim::U
   for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
 }
 
+/// The charts of optimize's --report, from the design (null for a robust design; none yet).
+std::vector<report::SvgChart> ReportCharts(const optim::DesignResult* /*design*/) { return {}; }
+
 /// optimize --max-injury-probability: the thinnest covering whose probability of failing the
 /// criterion is <= P (FindProbabilityDesign).
 int RunProbabilityDesign(const OptimizeOptions& o, const Resolved& r, const RobustInputs& inputs, std::ostream& out,
@@ -453,9 +457,15 @@ int RunProbabilityDesign(const OptimizeOptions& o, const Resolved& r, const Robu
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
-  if (o.json) {
-    out << report::ProbabilityDesignJson(inputs.box, options, result, r.warnings) << '\n';
-  } else {
+  if (o.json || o.report_file) {
+    try {
+      PrintAndReport(out, o.json, report::ProbabilityDesignJson(inputs.box, options, result, r.warnings), o.run,
+                     o.report_file, report::ReportKind::kOptimize, [] { return ReportCharts(nullptr); });
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
+  if (!o.json) {
     PrintProbabilityDesign(out, r, inputs.box, options, result);
   }
   return 0;
@@ -672,10 +682,17 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
-  if (o.json) {
-    out << report::RobustDesignJson(inputs->box, options, result, probability ? &*probability : nullptr, r.warnings)
-        << '\n';
-  } else {
+  if (o.json || o.report_file) {
+    try {
+      PrintAndReport(out, o.json,
+                     report::RobustDesignJson(inputs->box, options, result, probability ? &*probability : nullptr,
+                                              r.warnings),
+                     o.run, o.report_file, report::ReportKind::kOptimize, [] { return ReportCharts(nullptr); });
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
+  if (!o.json) {
     PrintRobustDesign(out, r, inputs->box, options, result, probability);
   }
   return 0;
@@ -759,6 +776,7 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
   sub->add_option("--top", options.runners_up, "rows of the candidate table (default 8)")->type_name("N")->group("Output");
   AddBodyRegionOptions(*sub, options.body);
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the report")->group("Output");
+  AddReportOption(*sub, options.report_file);
   sub->add_option("--csv", options.csv, "write every candidate to FILE as CSV (SI units in the header)")
       ->type_name("FILE")
       ->group("Output");
@@ -830,10 +848,15 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
       return errors.BadInput(e.what());
     }
   }
-  if (options.json) {
-    out << report::DesignJson(r.request, result, r.warnings) << '\n';  // input's warnings, then the answer's
-    return 0;
+  if (options.json || options.report_file) {
+    try {  // input's warnings, then the answer's
+      PrintAndReport(out, options.json, report::DesignJson(r.request, result, r.warnings), options.run,
+                     options.report_file, report::ReportKind::kOptimize, [&] { return ReportCharts(&result); });
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
   }
+  if (options.json) return 0;
   if (options.csv) fmt::print(out, "Wrote {} ({} candidates)\n\n", *options.csv, result.candidates.size());
   if (options.plot_file) fmt::print(out, "Wrote {} (the design map)\n\n", *options.plot_file);
 

@@ -19,6 +19,7 @@
 #include "materials_command.hpp"
 #include "oracle_options.hpp"
 #include "robot_model_options.hpp"
+#include "run_context.hpp"
 #include "uncertainty_options.hpp"
 
 namespace CLI {
@@ -67,6 +68,10 @@ struct OptimizeOptions {
   /// probability of failing the criterion is <= P (FindProbabilityDesign).
   std::optional<std::string> max_injury_probability;
   bool json = false;
+  /// --report FILE.html|FILE.pdf (report_option.hpp): the report, written after a run that succeeded.
+  std::optional<std::string> report_file;
+  /// Not typed: the command line and input files for the JSON's provenance, set by RunCli.
+  std::optional<RunContext> run;
   /// --body-region, --body-area, --contact, --contact-area: design for ISO/TS 15066 body
   /// regions (optim::DesignForBodyRegions) instead of the head alone.
   BodyRegionFlags body;

@@ -12,6 +12,7 @@
 #include "covopt/report/robot_json.hpp"
 #include "covopt/robot/reflected_mass.hpp"
 #include "errors.hpp"
+#include "run_context.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -69,7 +70,7 @@ CLI::App* SetupRobot(CLI::App& app, RobotOptions& options) {
 
 int RunRobot(const RobotOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "robot");
-  if (options.trajectory.file) return RunRobotTrajectory(options.model, options.trajectory, options.json, out, err);
+  if (options.trajectory.file) return RunRobotTrajectory(options.model, options.trajectory, options.json, options.run, out, err);
   if (const auto flag = options.trajectory.FirstCheckFlag()) {
     return errors.BadInput(fmt::format("{} applies with --trajectory FILE.csv only (the trajectory check)", *flag));
   }
@@ -109,7 +110,7 @@ int RunRobot(const RobotOptions& options, std::ostream& out, std::ostream& err) 
     return errors.BadInput(e.what());
   }
   if (options.json) {
-    out << report::RobotJson(result, {}, 2, payload) << '\n';
+    out << WithRunProvenance(report::RobotJson(result, {}, 2, payload), options.run) << '\n';
     return 0;
   }
   fmt::print(out, "{}", robot_line);

@@ -28,6 +28,8 @@ struct RobotOptions {
   bool json = false;        ///< --json: print report::RobotJson
   /// --trajectory FILE.csv and the check's flags: the trajectory safety check instead.
   RobotTrajectoryOptions trajectory;
+  /// Not typed: the command line and input files for the JSON's provenance, set by RunCli.
+  std::optional<RunContext> run;
 };
 
 /// Adds the `robot` subcommand to `app`; `options` must outlive the parse.

@@ -25,6 +25,7 @@
 #include "errors.hpp"
 #include "output.hpp"
 #include "plot.hpp"
+#include "report_option.hpp"
 #include "scene_fields.hpp"
 #include "speed_limit.hpp"
 
@@ -197,10 +198,15 @@ TrajectoryRun Resolve(const RobotModelOptions& model, const RobotTrajectoryOptio
   return run;
 }
 
+/// The charts of robot --trajectory's --report, from the head's check (null with
+/// --body-region; none yet).
+std::vector<report::SvgChart> ReportCharts(const optim::TrajectoryCheck* /*check*/) { return {}; }
+
 /// --trajectory with --body-region: every sample against the ISO regions named
 /// (optim::CheckTrajectoryForBodyRegions); the head, when named, by the head's own check.
 int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptions& options,
-                            const BodyRegionPlan& regions, bool json, std::ostream& out, std::ostream& err) {
+                            const BodyRegionPlan& regions, bool json, const std::optional<RunContext>& context,
+                            std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "robot");
   const std::vector<materials::BodyLimits> iso = regions.IsoLimits();
   const optim::BodyRegionOptions body_options = BodyRegionOptionsOf(run.scene, options.allow_full_compression, false);
@@ -227,12 +233,19 @@ int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptio
   const std::string criterion = BodyCriterion(body_options.rule, regions.has_head());
   std::vector<std::string> warnings = run.input_warnings;
   warnings.insert(warnings.end(), run.motion.warnings.begin(), run.motion.warnings.end());
-  if (json) {
+  if (json || options.report_file) {
     const optim::BodyRegionTrajectoryCheck empty;
-    out << report::BodyRegionTrajectoryJson(check ? *check : empty, iso, BodyContactSceneOf(run.scene.scene, regions),
-                                            head, criterion, warnings)
-        << '\n';
-  } else {
+    try {
+      PrintAndReport(out, json,
+                     report::BodyRegionTrajectoryJson(check ? *check : empty, iso,
+                                                      BodyContactSceneOf(run.scene.scene, regions), head, criterion,
+                                                      warnings),
+                     context, options.report_file, report::ReportKind::kTrajectory, [&] { return ReportCharts(nullptr); });
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
+  if (!json) {
     fmt::print(out, "Robot      {}\n", run.robot_line);
     fmt::print(out, "Trajectory {}: {} samples\n", *options.file, run.motion.samples.size());
     fmt::print(out, "Contact    {} contact; bare robot's contact area {}\n", ToString(regions.contact),
@@ -291,6 +304,7 @@ std::optional<std::string> RobotTrajectoryOptions::FirstCheckFlag() const {
   if (scene.safety_factor) return "--safety-factor";
   if (allow_full_compression) return "--allow-full-compression";
   if (csv_file) return "--csv";
+  if (report_file) return "--report";
   if (plot_file) return "--plot";
   return std::nullopt;
 }
@@ -323,10 +337,11 @@ void AddRobotTrajectoryOptions(CLI::App& sub, RobotTrajectoryOptions& options) {
                  "speed scale")
       ->type_name("FILE.png|FILE.svg")
       ->group("Output");
+  AddReportOption(sub, options.report_file);
 }
 
 int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOptions& options, bool json,
-                       std::ostream& out, std::ostream& err) {
+                       const std::optional<RunContext>& context, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "robot");
   TrajectoryRun run;
   try {
@@ -336,7 +351,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
   }
   if (options.scene.body.any()) {  // ISO/TS 15066 body regions
     return RunWithBodyRegions(options.scene.body, errors, [&](const BodyRegionPlan& regions) {
-      return RunBodyRegionTrajectory(run, options, regions, json, out, err);
+      return RunBodyRegionTrajectory(run, options, regions, json, context, out, err);
     });
   }
   const optim::TrajectoryCheck& check = run.check;
@@ -353,16 +368,22 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
     return errors.Failed(e.what());
   }
 
-  if (json) {
-    out << report::TrajectoryCheckJson(check, run.motion, run.scene.scene,
-                                       run.scene.covering_material
-                                           ? std::optional<std::string>(run.scene.covering_material->name)
-                                           : std::nullopt,
-                                       run.limit, run.input_warnings)
-        << '\n';
-  } else if (options.csv_file && *options.csv_file == "-") {
+  if (json || options.report_file) {
+    try {
+      PrintAndReport(out, json,
+                     report::TrajectoryCheckJson(check, run.motion, run.scene.scene,
+                                                 run.scene.covering_material
+                                                     ? std::optional<std::string>(run.scene.covering_material->name)
+                                                     : std::nullopt,
+                                                 run.limit, run.input_warnings),
+                     context, options.report_file, report::ReportKind::kTrajectory, [&] { return ReportCharts(&check); });
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
+  if (!json && options.csv_file && *options.csv_file == "-") {
     out << CsvText(check);
-  } else {
+  } else if (!json) {
     const Scene& scene = run.scene.scene;
     const std::array<std::string_view, 2> omitted{"robot.mass", "robot.speed"};
     const auto& samples = run.motion.samples;

@@ -22,6 +22,7 @@
 #include <string>
 
 #include "robot_model_options.hpp"
+#include "run_context.hpp"
 #include "simulate.hpp"
 
 namespace CLI {
@@ -41,6 +42,7 @@ struct RobotTrajectoryOptions {
   bool allow_full_compression = false;
   std::optional<std::string> csv_file;   ///< --csv FILE ("-": stdout instead of the table)
   std::optional<std::string> plot_file;  ///< --plot FILE.png|FILE.svg
+  std::optional<std::string> report_file;  ///< --report FILE.html|FILE.pdf (report_option.hpp)
   /// The first flag of the check typed ("--covering-thickness", "--csv", ...), if any: they
   /// apply with --trajectory only.
   std::optional<std::string> FirstCheckFlag() const;
@@ -52,8 +54,8 @@ void AddRobotTrajectoryOptions(CLI::App& sub, RobotTrajectoryOptions& options);
 
 /// Runs the check (`options.file` set): the robot from `model` (--urdf, --base, --tip,
 /// --point; --joints and --direction are bad input), --json printing
-/// report::TrajectoryCheckJson. Returns the exit code (0, 1 or 2).
+/// report::TrajectoryCheckJson with the provenance of `context`. Returns the exit code (0, 1 or 2).
 int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOptions& options, bool json,
-                       std::ostream& out, std::ostream& err);
+                       const std::optional<RunContext>& context, std::ostream& out, std::ostream& err);
 
 }  // namespace covopt::cli

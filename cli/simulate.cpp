@@ -21,6 +21,7 @@
 #include "errors.hpp"
 #include "output.hpp"
 #include "quantity.hpp"
+#include "report_option.hpp"
 #include "scene_fields.hpp"
 #include "scene_file.hpp"
 
@@ -238,6 +239,7 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
                   "draw force and stress against time with gnuplot (uses the time path)")
       ->type_name("FILE.png|FILE.svg")
       ->group("Output");
+  AddReportOption(*sub, options.report_file);
   return sub;
 }
 
@@ -517,6 +519,9 @@ void PrintUncertainSimulation(std::ostream& out, const SimulationPlan& plan, con
   }
 }
 
+/// The charts of simulate's --report (none yet).
+std::vector<report::SvgChart> ReportCharts(const SimulationReport& /*report*/) { return {}; }
+
 /// simulate with scene ranges, --samples or --sensitivities (docs/model.md §11): the worst
 /// case over the box reported as an impact at that scene, the probability of injury and the
 /// elasticities. Everything runs on the exact path.
@@ -598,12 +603,19 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
     return errors.Failed(e.what());
   }
 
-  if (plan.json) {
-    out << report::UncertainSimulationJson(report, box ? &*box : nullptr, box ? &worst : nullptr,
-                                           probability ? &*probability : nullptr,
-                                           elasticities ? &*elasticities : nullptr)
-        << '\n';
-  } else {
+  if (plan.json || options.report_file) {
+    try {
+      PrintAndReport(out, plan.json,
+                     report::UncertainSimulationJson(report, box ? &*box : nullptr, box ? &worst : nullptr,
+                                                     probability ? &*probability : nullptr,
+                                                     elasticities ? &*elasticities : nullptr),
+                     options.run, options.report_file, report::ReportKind::kSimulate,
+                     [&] { return ReportCharts(report); });
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
+  if (!plan.json) {
     PrintUncertainSimulation(out, plan, report, box ? &*box : nullptr, worst, probability ? &*probability : nullptr,
                              elasticities ? &*elasticities : nullptr);
   }
@@ -685,9 +697,15 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
     return errors.Failed(e.what());
   }
 
-  if (plan.json) {
-    out << report::SimulationJson(report) << '\n';  // the object covopt.simulate() returns
-  } else {
+  if (plan.json || options.report_file) {
+    try {  // the object covopt.simulate() returns
+      PrintAndReport(out, plan.json, report::SimulationJson(report), options.run, options.report_file,
+                     report::ReportKind::kSimulate, [&] { return ReportCharts(report); });
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
+  if (!plan.json) {
     PrintTable(out, report);
     if (plan.history_file || plan.plot_file) {
       fmt::print(out, "Wrote      {}{}{}\n", plan.history_file.value_or(""),

@@ -22,6 +22,7 @@
 #include "materials_command.hpp"
 #include "plot.hpp"
 #include "robot_model_options.hpp"
+#include "run_context.hpp"
 #include "scene_file.hpp"
 #include "uncertainty_options.hpp"
 
@@ -69,6 +70,11 @@ struct SimulateOptions {
   std::optional<long> max_steps;
   /// --json: print one JSON object instead of the table.
   bool json = false;
+  /// --report FILE.html|FILE.pdf (report_option.hpp): the report, written after a run that succeeded.
+  std::optional<std::string> report_file;
+  /// Not typed: the command line and input files for the JSON's provenance, set by RunCli;
+  /// none for the head's run inside `--body-region head` (its object is nested).
+  std::optional<RunContext> run;
   /// --urdf/--base/--tip/--joints/--point/--direction: robot.mass is the robot model's
   /// reflected mass (excludes --robot-mass). Filled by subcommands that add the group.
   RobotModelOptions robot_model;

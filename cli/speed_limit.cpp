@@ -13,6 +13,7 @@
 #include "body_region_commands.hpp"
 #include "errors.hpp"
 #include "output.hpp"
+#include "report_option.hpp"
 #include "sweep.hpp"
 #include "uncertainty_options.hpp"
 #include "covopt/optim/design.hpp"
@@ -205,6 +206,7 @@ CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
                   "bare robot")
       ->type_name("FILE.png|FILE.svg")
       ->group("Output");
+  AddReportOption(*sub, options.report_file);
   return sub;
 }
 
@@ -304,6 +306,11 @@ SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
 
 namespace {
 
+/// The charts of speed-limit's --report, from the rows (null with scene ranges; none yet).
+std::vector<report::SvgChart> ReportCharts(const SpeedLimitPlan& /*plan*/, const std::vector<SpeedLimitRow>* /*rows*/) {
+  return {};
+}
+
 /// speed-limit with scene ranges (docs/model.md §11): per covering and row, the limit safe for
 /// every value in the box (MaxSafeSpeedOverBox / MaxSafeMassOverBox) and where it is set.
 int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptions& options, std::ostream& out,
@@ -356,9 +363,15 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
-  if (plan.json) {
-    out << report::RobustSpeedLimitTableJson(plan.quantity, *first_box, rows) << '\n';
-  } else {
+  if (plan.json || options.report_file) {
+    try {
+      PrintAndReport(out, plan.json, report::RobustSpeedLimitTableJson(plan.quantity, *first_box, rows), options.run,
+                     options.report_file, report::ReportKind::kSpeedLimit, [&] { return ReportCharts(plan, nullptr); });
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
+  if (!plan.json) {
     out << "Limits over the box of " << plan.coverings.front().ranges.size() << " uncertain inputs:\n";
     for (const SceneRange& range : plan.coverings.front().ranges) {
       out << fmt::format("  {:<20} {}  (from {})\n", range.name, range.text, range.source);
@@ -415,11 +428,18 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
     return errors.Failed(e.what());
   }
 
-  if (plan.json) {
-    out << report::SpeedLimitJson(plan.quantity, scene, plan.options, rows, input_warnings) << '\n';
-  } else if (plan.csv_file && *plan.csv_file == "-") {
+  if (plan.json || options.report_file) {
+    try {
+      PrintAndReport(out, plan.json, report::SpeedLimitJson(plan.quantity, scene, plan.options, rows, input_warnings),
+                     options.run, options.report_file, report::ReportKind::kSpeedLimit,
+                     [&] { return ReportCharts(plan, &rows); });
+    } catch (const OutputError& e) {
+      return errors.Failed(e.what());
+    }
+  }
+  if (!plan.json && plan.csv_file && *plan.csv_file == "-") {
     out << CsvText(plan, rows);
-  } else {
+  } else if (!plan.json) {
     const bool by_speed = plan.quantity == SpeedLimitQuantity::kSpeed;
     std::vector<std::string_view> omitted{"robot.mass", "robot.speed"};
     if (plan.coverings.size() > 1) omitted.push_back("covering.modulus");

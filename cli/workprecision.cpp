@@ -428,7 +428,7 @@ int RunDesignStudy(const WorkPrecisionOptions& options, std::ostream& out, std::
     for (const DesignWorkPrecisionPoint& p : study.points) list.push_back(DesignPointJson(p));
     j["points"] = std::move(list);
     j["message"] = study.message;
-    out << j.dump(2) << '\n';
+    out << WithRunProvenance(j.dump(2), options.run) << '\n';
   } else {
     PrintDesignStudy(out, study, shown);
   }
@@ -669,7 +669,7 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
           run.point ? PointJson(points[*run.point]) : Json(nullptr);
     }
     j["cheapest_reaching_error"] = std::move(cheapest);
-    out << j.dump(2) << '\n';
+    out << WithRunProvenance(j.dump(2), options.run) << '\n';
   } else {
     PrintStudy(out, study, scene_plan.scene);
   }

@@ -55,6 +55,8 @@ struct WorkPrecisionOptions {
   /// the search's CPU time. Default methods arkode-erk54, cvode-adams, cvode-bdf; default
   /// tolerances 1e-4..1e-10.
   bool design = false;
+  /// Not typed: the command line and input files for the JSON's provenance, set by RunCli.
+  std::optional<RunContext> run;
 };
 
 /// Reads "1e-3..1e-12" (decades between, inclusive) or "1e-4,1e-6,1e-8" into tolerances

@@ -30,7 +30,9 @@ block is left as it is and the script exits 1, naming it.
 --check writes nothing: it reports every block whose output differs from what the binary prints
 now, and exits 1 if any does. Wall times (a number followed by s, ms or µs, the workprecision
 table's µs/impact column, JSON "seconds") are masked before comparing, since they differ from
-run to run.
+run to run. Every command and Python session runs with SOURCE_DATE_EPOCH=1700000000, so the
+provenance block of a JSON (docs/guide/output-files.md) shows a fixed date; its "commit" (the
+build's, which changes with every commit) is masked before comparing too.
 
 Usage: scripts/regen-docs.py [--check] [--build DIR] [--verbose] [FILE.md ...]
 """
@@ -53,6 +55,8 @@ COVOPT_PREFIX = "$ ./build/cli/covopt"
 PYTHON_PREFIX = "$ PYTHONPATH=build/python /usr/bin/python3"
 EXIT_LINE = re.compile(r"^\[exit (\d+)\]$")
 COMMAND_TIMEOUT_S = 120
+# Reproducible provenance blocks: the date (covopt/report/provenance.hpp reads it).
+FIXED_ENV = {"SOURCE_DATE_EPOCH": "1700000000"}
 
 # The interactive interpreter, emulated: statements come on stdin separated by a marker line;
 # each statement's output (the value's repr, anything printed, or `Name: message`) is printed
@@ -174,7 +178,7 @@ def run_shell(block: Block, scratch: Path, verbose: bool) -> Outcome:
         start = time.monotonic()
         try:
             proc = subprocess.run(["bash", "-c", text], cwd=scratch, capture_output=True,
-                                  timeout=COMMAND_TIMEOUT_S)
+                                  timeout=COMMAND_TIMEOUT_S, env=dict(os.environ, **FIXED_ENV))
         except subprocess.TimeoutExpired:
             outcome.problems.append(f"{block.where()}: '{cmd[0]}' ran over {COMMAND_TIMEOUT_S} s")
             return outcome
@@ -208,7 +212,7 @@ def run_python(block: Block, scratch: Path, verbose: bool) -> Outcome:
     statements = split_session(block.lines[1:])
     source = "".join(f"{STATEMENT_MARK}\n" + "\n".join(line[4:] for line in stmt) + "\n"
                      for stmt, _ in statements)
-    env = dict(os.environ, PYTHONPATH=str(scratch / "build" / "python"))
+    env = dict(os.environ, PYTHONPATH=str(scratch / "build" / "python"), **FIXED_ENV)
     start = time.monotonic()
     try:
         proc = subprocess.run(["/usr/bin/python3", "-c", PYTHON_SESSION], cwd=scratch, input=source.encode(),
@@ -239,6 +243,7 @@ def run_python(block: Block, scratch: Path, verbose: bool) -> Outcome:
 
 TIME_TOKEN = re.compile(r"\d+(\.\d+)?(e[-+]?\d+)? ?(ms|s|µs)\b")
 JSON_SECONDS = re.compile(r'("seconds": )[0-9.e+-]+')
+JSON_COMMIT = re.compile(r'("commit": ")[0-9a-f]{40}(-dirty)?(")')
 WORKPRECISION_TIME = re.compile(r"(?<=\s)\d+\.\d\d(?=\s)")  # the µs/impact column
 
 
@@ -252,6 +257,7 @@ def masked(lines: list[str]) -> list[str]:
         else:
             line = TIME_TOKEN.sub("# s", line)
             line = JSON_SECONDS.sub(r"\1#", line)
+            line = JSON_COMMIT.sub(r"\1#\3", line)
             if in_workprecision:
                 line = WORKPRECISION_TIME.sub("#", line)
         out.append(line)

@@ -17,7 +17,7 @@ CLI's) message naming the keyword; a computation that fails raises
 release the GIL.
 """
 
-from . import _body_regions, _covopt
+from . import _body_regions, _covopt, _provenance
 from ._body_regions import (BodyContact, BodyRegionDesign, BodyRegionSpeedLimitTable, BodyRegionSweep,
                             BodyRegionTrajectoryCheck)
 from ._audit import Audit, audit, audit_many
@@ -53,6 +53,7 @@ def _given(**options):
     return {name: value for name, value in options.items() if value is not None}
 
 
+@_provenance.stamped
 def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, history=False,
              body_region=None, body_area=None, contact=None, contact_area=None):
     """One impact: its peaks and the injury verdicts, as ``covopt simulate --json``.
@@ -92,6 +93,7 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
         method=method, rtol=rtol, atol=atol, max_steps=max_steps, history=history)))
 
 
+@_provenance.stamped
 def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=None, contact=None,
           contact_area=None):
     """A grid of impacts, as ``covopt sweep``: one or two scene quantities over lists of
@@ -130,6 +132,7 @@ def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=No
     return Sweep(_covopt.sweep(x, y, _scene(scene), threads))
 
 
+@_provenance.stamped
 def optimize(scene=None, *, materials=None, families=None, catalog=None, no_builtin=False,
              thickness=None, max_thickness=None, min_modulus=None, max_modulus=None,
              covering_poisson=None, thickness_step=None, allow_full_compression=False,
@@ -189,6 +192,7 @@ def materials():
     return [Material(row) for row in _covopt.materials()]
 
 
+@_provenance.stamped
 def material(name):
     """One built-in catalog material by name (ignoring case), as ``covopt materials show NAME
     --json``. An unknown name raises ValueError: "no material 'X' in the catalog; did you
@@ -229,6 +233,7 @@ def body_region_limits(region, area=None, contact="transient"):
     return BodyLimits(_covopt.body_region_limits(region, area, contact))
 
 
+@_provenance.stamped
 def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=False, oracle=None,
                    method=None, rtol=None, max_steps=None):
     """The largest impact speed [m/s] such that every speed up to it is safe: both injury
@@ -256,6 +261,7 @@ def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=F
         oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
+@_provenance.stamped
 def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=False, oracle=None,
                   method=None, rtol=None, max_steps=None):
     """The largest reflected robot mass [kg] that is safe, with every lighter robot, at the
@@ -270,6 +276,7 @@ def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=Fa
         oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
+@_provenance.stamped
 def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
                 allow_full_compression=False, allow_crushing=False, oracle=None, method=None,
                 rtol=None, max_steps=None, body_region=None, body_area=None, contact=None,
@@ -303,6 +310,7 @@ def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
         oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
+@_provenance.stamped
 def reflected_mass(urdf, tip, joints, base=None, point=(0.0, 0.0, 0.0), direction=None, *,
                    urdf_text=None, ignore_joint_limits=False, payload_mass=None, payload_com=None,
                    payload_inertia=None):
@@ -354,6 +362,7 @@ def iso_robot_mass(moving_mass, payload_mass=None):
     return _covopt.iso_robot_mass(moving_mass, payload_mass)
 
 
+@_provenance.stamped
 def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, urdf_text=None,
                    ignore_joint_limits=False, payload_mass=None, payload_com=None, payload_inertia=None):
     """The contact point's motion along a joint trajectory.
@@ -376,6 +385,7 @@ def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, u
                                                 payload_inertia=payload_inertia))
 
 
+@_provenance.stamped
 def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, scene=None,
                      urdf_text=None, allow_full_compression=False, allow_crushing=False,
                      ignore_joint_limits=False, body_region=None, body_area=None, contact=None,
@@ -422,6 +432,7 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
 # (default the scene's ranges, Scene(ranges=...) or a scene file's); the scene gives the rest
 # (the exact path only: no damping, braking or neck).
 
+@_provenance.stamped
 def worst_case(scene=None, *, ranges=None):
     """The worst impact over the box (optim::FindWorstCase: corners, a Halton sample, DIRECT-L,
     COBYLA). Returns as a RobustSimulation the dict ``covopt simulate --json`` prints with the same ranges: the impact
@@ -433,6 +444,7 @@ def worst_case(scene=None, *, ranges=None):
     return RobustSimulation(_covopt.worst_case(scene, ranges=ranges or scene.ranges))
 
 
+@_provenance.stamped
 def injury_probability(scene=None, *, ranges=None, samples, seed=1, threads=0, distributions=None):
     """Monte Carlo over the box: as worst_case, plus injury_probability {samples, seed,
     laceration, contusion, any, fully_compressed, inadmissible, ci95: {name: [low, high]},
@@ -446,6 +458,7 @@ def injury_probability(scene=None, *, ranges=None, samples, seed=1, threads=0, d
         ranges=ranges or scene.ranges, samples=samples, seed=seed, threads=threads, distributions=distributions)))
 
 
+@_provenance.stamped
 def sensitivities(scene=None):
     """The elasticities d ln r / d ln x of the laceration, contusion and compression ratios to
     every scene input at this scene (optim::ComputeElasticities), the ``sensitivities`` object
@@ -455,6 +468,7 @@ def sensitivities(scene=None):
     return Sensitivities(_covopt.sensitivities(_scene(scene)))
 
 
+@_provenance.stamped
 def robust_optimize(scene=None, *, ranges=None, samples=None, seed=1, threads=0, distributions=None,
                     max_injury_probability=None, allow_full_compression=False, allow_crushing=False,
                     allow_unknown_strength=False):

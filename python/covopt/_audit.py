@@ -4,7 +4,7 @@ covopt.audit_many: a plant's programs audited in parallel through dask.distribut
 
 import os
 
-from . import _covopt
+from . import _covopt, _provenance
 from ._results import Result
 
 __all__ = ["Audit", "audit", "audit_many"]
@@ -25,6 +25,7 @@ class Audit(Result):
     ratio[sample][link]; None when not kept), link_designs (link, material, thickness_m,
     governing_ratio, message), warnings.
     """
+    _report_kind = "audit"
 
     def cell(self, link, region):
         """The cell of `link` and `region` (names)."""
@@ -40,6 +41,7 @@ _KEYWORDS = ("surface_file", "surface_spacing", "box_edge_radius", "flat_face_ra
              "payload_mass", "payload_com", "payload_inertia", "ignore_joint_limits", "keep_ratio_over_time")
 
 
+@_provenance.stamped
 def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surface_file=None,
           surface_spacing=None, box_edge_radius=None, flat_face_radius=None, link_coverings=None,
           body_region=None, body_area=None, contact=None, contact_area=None, allow_full_compression=False,

@@ -45,6 +45,7 @@ class BodyContact(Result):
     ratio), governing ("force", "pressure", "full-compression", "crush"), governing_ratio,
     admissible, margin.
     """
+    _report_kind = "simulate"
 
     def __getattr__(self, key):
         data = object.__getattribute__(self, "_data")
@@ -69,6 +70,7 @@ class BodyRegionSpeedLimitTable(Result):
     judged by Park et al.'s skin model (limited_by "laceration", "contusion" or
     "full-compression"). Also solve_for, scene, criterion, safety_factor, warnings.
     """
+    _report_kind = "speed-limit"
 
     def __iter__(self):
         return iter(self.rows)
@@ -92,6 +94,7 @@ class BodyRegionDesign(Result):
     governing_where, regions, head (laceration_ratio, contusion_ratio, compression_ratio,
     criteria)), scope, warnings.
     """
+    _report_kind = "optimize"
 
 
 class BodyRegionTrajectoryCheck(Result):
@@ -106,6 +109,7 @@ class BodyRegionTrajectoryCheck(Result):
     worst_region, safe, max_safe_speed_m_per_s, limiting_region (indices into regions),
     limited_by, speed_scale), warnings.
     """
+    _report_kind = "robot --trajectory"
 
 
 class BodyRegionSweep(Result):

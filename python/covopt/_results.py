@@ -1,6 +1,8 @@
 """covopt's results: the JSON objects of the CLI's ``--json`` as read-only attribute objects."""
 
 import copy
+import json
+import pathlib
 
 
 class Result:
@@ -11,6 +13,7 @@ class Result:
     """
 
     __slots__ = ("_data", "_name")
+    _report_kind = None  # report::ToString(ReportKind) of the results that have a report
 
     def __init__(self, data, name=None):
         object.__setattr__(self, "_data", data)
@@ -39,6 +42,23 @@ class Result:
         """The result as the CLI's ``--json`` object (a deep copy: dicts, lists, numbers)."""
         return copy.deepcopy(self._data)
 
+    def to_html(self, path):
+        """Writes the report for the risk-assessment file to `path` (UTF-8) and returns `path`:
+        one self-contained HTML document (inline CSS and SVG, no script, nothing fetched when
+        viewed) with the verdicts, criteria and sources, inputs, assumptions, warnings and the
+        provenance, made by the library from ``to_dict()`` (without ``history``) exactly as the
+        CLI's ``--report`` makes it from its ``--json``. Results of simulate, worst_case,
+        injury_probability, optimize, robust_optimize, speed_limit, check_trajectory and audit
+        have one; others raise TypeError."""
+        if self._report_kind is None:
+            raise TypeError(f"{self._name} has no report (simulate, optimize, speed_limit, check_trajectory "
+                            "and audit results have one)")
+        from . import _covopt  # the extension, imported by the package before this runs
+        data = {key: value for key, value in self._data.items() if key != "history"}
+        html = _covopt.html_report(self._report_kind, json.dumps(data, allow_nan=False))
+        pathlib.Path(path).write_text(html, encoding="utf-8")
+        return path
+
     def __repr__(self):
         def brief(value):
             if isinstance(value, dict):
@@ -64,6 +84,7 @@ def _wrap(value, key=None):
 
 class Simulation(Result):
     """covopt.simulate's result: ``covopt simulate --json`` (and ``history``)."""
+    _report_kind = "simulate"
 
 
 class Sweep(Result):
@@ -72,6 +93,7 @@ class Sweep(Result):
 
 class Design(Result):
     """covopt.optimize's result: ``covopt optimize --json``."""
+    _report_kind = "optimize"
 
 
 class SpeedLimit(Result):
@@ -80,6 +102,7 @@ class SpeedLimit(Result):
 
 class SpeedLimitTable(Result):
     """covopt.speed_limit's result: ``covopt speed-limit --json``."""
+    _report_kind = "speed-limit"
 
 
 class Material(Result):
@@ -96,10 +119,12 @@ class ContactMotion(Result):
 
 class TrajectoryCheck(Result):
     """covopt.check_trajectory's result: ``covopt robot --trajectory --json``."""
+    _report_kind = "robot --trajectory"
 
 
 class RobustSimulation(Result):
     """covopt.worst_case / injury_probability: ``covopt simulate --json`` with ranges."""
+    _report_kind = "simulate"
 
 
 class Sensitivities(Result):
@@ -108,6 +133,7 @@ class Sensitivities(Result):
 
 class RobustDesign(Result):
     """covopt.robust_optimize's result: ``covopt optimize --json`` with ranges."""
+    _report_kind = "optimize"
 
 
 class BodyRegion(Result):

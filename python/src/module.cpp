@@ -833,6 +833,7 @@ void BindSceneFile(py::module_& m);   // scene_file_bindings.cpp
 void RegisterBodyRegions(py::module_& m);  // body_regions.cpp
 void RegisterBodyContact(py::module_& m);  // body_contact.cpp
 void BindAudit(py::module_& m);            // audit_bindings.cpp
+void BindReport(py::module_& m);           // report_bindings.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -852,4 +853,5 @@ PYBIND11_MODULE(_covopt, m) {
   covopt::python::RegisterBodyRegions(m);
   covopt::python::RegisterBodyContact(m);
   covopt::python::BindAudit(m);
+  covopt::python::BindReport(m);
 }

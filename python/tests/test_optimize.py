@@ -4,6 +4,7 @@ both come from covopt::report::DesignJson) and its bad input."""
 import pytest
 
 import covopt
+from conftest import same_provenance, without_provenance
 from calls import call
 
 
@@ -37,7 +38,8 @@ def test_optimize_returns_the_cli_json_object(cli_json, kwargs, flags):
     ours = call(covopt.optimize, **kwargs)
     theirs = cli_json("optimize", "--json", *flags)
     assert list(ours) == list(theirs)
-    assert without_times(ours) == without_times(theirs)
+    assert without_times(without_provenance(ours)) == without_times(without_provenance(theirs))
+    assert same_provenance(ours["provenance"], theirs["provenance"])
 
 
 def test_the_criterion_names_every_part_and_each_design_its_governing_ratio():

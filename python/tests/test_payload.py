@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import covopt
+from conftest import without_provenance
 import robot_reference as ref
 
 HERE = pathlib.Path(__file__).resolve().parent
@@ -86,12 +87,12 @@ def test_contact_motion_with_a_payload_raises_every_moving_sample():
 
 
 def test_a_zero_payload_changes_nothing():
-    bare = covopt.reflected_mass(PLANAR, "tool", [0.3, 1.2], direction=(1, 2, 0)).to_dict()
+    bare = without_provenance(covopt.reflected_mass(PLANAR, "tool", [0.3, 1.2], direction=(1, 2, 0)))
     assert bare["payload"] is None
     for zero in [dict(payload_mass=0.0), dict(payload_mass=0, payload_com=(0, 0, 0), payload_inertia=(0,) * 6)]:
-        assert covopt.reflected_mass(PLANAR, "tool", [0.3, 1.2], direction=(1, 2, 0), **zero).to_dict() == bare
-    assert (covopt.contact_motion(FR3, "fr3_link8", PICK, payload_mass=0).to_dict()
-            == covopt.contact_motion(FR3, "fr3_link8", PICK).to_dict())
+        assert without_provenance(covopt.reflected_mass(PLANAR, "tool", [0.3, 1.2], direction=(1, 2, 0), **zero)) == bare
+    assert (without_provenance(covopt.contact_motion(FR3, "fr3_link8", PICK, payload_mass=0))
+            == without_provenance(covopt.contact_motion(FR3, "fr3_link8", PICK)))
 
 
 @pytest.mark.parametrize("keywords, words", [

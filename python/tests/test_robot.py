@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import covopt
+from conftest import without_provenance
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
@@ -38,7 +39,7 @@ def test_a_file_and_urdf_text_agree_and_paths_may_be_pathlike():
     from_file = covopt.reflected_mass(PLANAR, "tool", [0.3, 1.2], direction=(1, 2, 0)).to_dict()
     from_text = covopt.reflected_mass(None, "tool", [0.3, 1.2], direction=(1, 2, 0),
                                       urdf_text=PLANAR.read_text()).to_dict()
-    assert from_file == from_text
+    assert without_provenance(from_file) == without_provenance(from_text)  # the text is no input file
 
 
 def test_the_planar_arm_has_its_closed_form_mass_and_a_fixed_stretched_direction():
@@ -69,7 +70,7 @@ def test_contact_motion_from_a_csv_file_equals_the_dict_and_the_closed_form(tmp_
         "time_s": [r[0] for r in rows],
         "positions": np.array([r[1:3] for r in rows]),
         "velocities": np.array([r[3:5] for r in rows])}).to_dict()
-    assert from_file == from_dict
+    assert without_provenance(from_file) == without_provenance(from_dict)  # the dict is no input file
     samples = from_file["samples"]
     assert [s["time_s"] for s in samples] == [0.0, 0.1, 0.2]
     assert samples[1]["moving"] is False and samples[1]["direction"] is None

@@ -7,6 +7,7 @@ import math
 import pytest
 
 import covopt
+from conftest import same_provenance
 from calls import call
 
 CASES = [
@@ -48,8 +49,9 @@ def test_speed_limit_returns_the_cli_json_object(cli_json, kwargs, flags):
     theirs = cli_json("speed-limit", "--json", *flags)
     assert list(ours) == list(theirs)
     # The CLI adds its warnings about its own input (a safety factor, an assumed ν) first.
-    assert {k: v for k, v in ours.items() if k != "warnings"} == \
-        {k: v for k, v in theirs.items() if k != "warnings"}
+    assert {k: v for k, v in ours.items() if k not in ("warnings", "provenance")} == \
+        {k: v for k, v in theirs.items() if k not in ("warnings", "provenance")}
+    assert same_provenance(ours["provenance"], theirs["provenance"])
     assert theirs["warnings"][len(theirs["warnings"]) - len(ours["warnings"]):] == ours["warnings"]
 
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include "app.hpp"
@@ -37,6 +38,22 @@ inline CliRun Run(std::vector<std::string> args) {
   run.out = out.str();
   run.err = err.str();
   return run;
+}
+
+/// A JSON object the CLI printed without its "provenance" block (the run's command line and
+/// date: test_provenance_cli.cpp checks it), to compare with the library's *Json or another run.
+template <class JsonType>
+JsonType WithoutProvenance(JsonType j) {
+  j.erase("provenance");
+  return j;
+}
+
+/// The same for the printed text: a JSON object is dumped again (indent 2) without the block;
+/// any other text is returned as it is.
+inline std::string WithoutProvenance(const std::string& out) {
+  const nlohmann::ordered_json j = nlohmann::ordered_json::parse(out, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) return out;
+  return WithoutProvenance(j).dump(2) + "\n";
 }
 
 /// A fresh directory under the system's temporary directory, removed with its contents.

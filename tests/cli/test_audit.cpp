@@ -113,7 +113,8 @@ TEST_CASE("audit --json is the library's audit of the same input, to the bit, in
   REQUIRE(j["warnings"].size() == library["warnings"].size() + 1);
   CHECK(j["warnings"][0].get<std::string>().find("crushing is not checked") != std::string::npos);
   CHECK(json(std::vector<json>(j["warnings"].begin() + 1, j["warnings"].end())) == library["warnings"]);
-  CHECK(j.size() == library.size());
+  CHECK(j.size() == library.size() + 1);  // and the run's provenance, last
+  CHECK(j.contains("provenance"));
 
   for (const char* key : {"status", "message", "safe_speed_scale", "limiting", "criterion", "safety_factor",
                           "contact_area_m2", "reaction_delay_s", "braking_m_per_s2", "robot", "surface",

@@ -66,6 +66,9 @@ std::vector<SingleValueOption> SingleValueOptions(const std::string& command) {
     if (std::regex_search(type, set, members)) {
       option.first = set[1];
       option.second = set[2];
+    } else if (type.rfind("FILE.html", 0) == 0) {  // --report checks its extension first
+      option.first = "1.html";
+      option.second = "2.html";
     }
     options.push_back(option);
   }
@@ -137,5 +140,5 @@ TEST_CASE("flags given twice are harmless: the answer is the same", "[cli]") {
   const CliRun twice = Run({"simulate", "--json", "--json"});
   REQUIRE(once.exit_code == 0);
   CHECK(twice.exit_code == 0);
-  CHECK(twice.out == once.out);
+  CHECK(covopt::cli::testing::WithoutProvenance(twice.out) == covopt::cli::testing::WithoutProvenance(once.out));
 }

@@ -1,0 +1,53 @@
+/// @file report_bindings.cpp
+/// The provenance block of every Python result and the HTML report of result.to_html(): both
+/// from covopt::report (provenance.hpp, html_report.hpp), the CLI's own. covopt/_provenance.py
+/// makes the command ("covopt.optimize(materials=['PORON XRD 15 pcf'])") and names the input
+/// files; this only calls the library.
+
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "covopt/report/html_report.hpp"
+#include "covopt/report/provenance.hpp"
+#include "scene_keywords.hpp"
+
+namespace py = pybind11;
+
+namespace covopt::python {
+namespace {
+
+/// report::MakeProvenance as a dict: `inputs` are (role, path) pairs.
+py::object Provenance(std::string command, const std::vector<std::pair<std::string, std::string>>& inputs) {
+  std::vector<report::InputFile> files;
+  for (const auto& [role, path] : inputs) files.push_back({role, path});
+  return JsonToPython(report::ProvenanceJson(report::MakeProvenance(std::move(command), files), -1));
+}
+
+/// report::HtmlReport of a result's JSON text; `kind` is report::ToString(ReportKind).
+std::string HtmlReport(const std::string& kind, const std::string& result_json) {
+  constexpr std::array kKinds{report::ReportKind::kSimulate, report::ReportKind::kOptimize,
+                              report::ReportKind::kSpeedLimit, report::ReportKind::kTrajectory,
+                              report::ReportKind::kAudit};
+  for (const report::ReportKind k : kKinds) {
+    if (report::ToString(k) == kind) {
+      py::gil_scoped_release release;
+      return report::HtmlReport({k, result_json, {}});  // charts: none yet
+    }
+  }
+  throw std::invalid_argument("html_report: no report of kind '" + kind + "'");
+}
+
+}  // namespace
+
+void BindReport(py::module_& m) {
+  m.def("provenance", &Provenance, py::arg("command"), py::arg("inputs"));
+  m.def("html_report", &HtmlReport, py::arg("kind"), py::arg("result_json"));
+}
+
+}  // namespace covopt::python
