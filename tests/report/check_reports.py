@@ -189,19 +189,22 @@ def verdict_audit(j):
     return safe, ratio
 
 
-# kind: (the JSON's verdict and governing ratio, its top-level input keys, the charts expected)
+# kind: (the JSON's verdict and governing ratio, its top-level input keys (those it has are
+# checked), the charts expected: one each, from report/charts.hpp)
 KINDS = {
-    "simulate": (verdict_simulate, ["scene", "safety_factor"], 1),
+    "simulate": (verdict_simulate, ["scene", "safety_factor", "uncertain_inputs"], 1),
     "optimize": (verdict_optimize,
-                 ["scene", "speed_m_per_s", "thickness_m", "safety_factor", "limits", "design_space"], 1),
+                 ["scene", "speed_m_per_s", "thickness_m", "safety_factor", "limits", "design_space",
+                  "uncertain_inputs", "max_probability", "samples", "seed"], 1),
     "speed-limit": (verdict_speed_limit,
-                    ["solve_for", "scene", "safety_factor", "limits", "search_limit"], 1),
+                    ["solve_for", "scene", "safety_factor", "limits", "search_limit",
+                     "uncertain_inputs"], 1),
     "robot --trajectory": (verdict_trajectory,
-                           ["scene", "safety_factor", "limits", "search_limit", "joint_names",
-                            "sample_count"], 1),
+                           ["scene", "safety_factor", "limits", "search_limit", "regions",
+                            "joint_names", "sample_count"], 1),
     "audit": (verdict_audit,
               ["robot", "coverings", "contact_area_m2", "reaction_delay_s", "braking_m_per_s2",
-               "safety_factor", "sample_count"], 1),
+               "safety_factor", "sample_count", "surface", "regions"], 1),
 }
 
 
