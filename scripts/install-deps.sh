@@ -27,6 +27,11 @@ packages=(
   python3-distributed    # covopt.audit_many: a plant's programs audited in parallel on a dask cluster
   liborocos-kdl-dev      # robot/: Jacobian and joint-space inertia (Orocos KDL 1.5)
   liburdfdom-dev         # robot/: URDF parser (urdfdom 3.0)
+  chromium               # --report FILE.pdf prints the HTML report with it (found at run time);
+                         # tests: the browser check of every report (tests/report/check_reports.py)
+  poppler-utils          # tests only: pdfinfo and pdftotext read the PDF reports back
+  python3-pil            # tests only: the pixel statistics of the reports' screenshots (PIL)
+  fonts-dejavu-core      # a font for Chromium and gnuplot to draw reports and charts with
 )
 
 missing=()
