@@ -130,7 +130,7 @@ TEST_CASE("a JSON array stays an array, without provenance", "[provenance]") {
   }
 }
 
-TEST_CASE("SOURCE_DATE_EPOCH fixes the date; without it the date is now", "[provenance]") {
+TEST_CASE("SOURCE_DATE_EPOCH fixes the date, and without it the date is now", "[provenance]") {
   const ScopedEnv epoch("SOURCE_DATE_EPOCH", "1700000000");
   const Json j = RequireProvenance({"simulate", "--json"}, {});
   CHECK(j["provenance"]["date_utc"] == "2023-11-14T22:13:20Z");

@@ -52,7 +52,7 @@ void RequireReport(const std::vector<std::string>& args) {
 
 }  // namespace
 
-TEST_CASE("--report FILE.html on simulate, optimize, speed-limit, robot --trajectory and audit", "[report]") {
+TEST_CASE("The --report FILE.html on simulate, optimize, speed-limit, robot --trajectory and audit", "[report]") {
   RequireReport({"simulate"});
   RequireReport({"simulate", "--json"});
   RequireReport({"simulate", "--head-mass", "3.7kg..5.8kg"});
@@ -66,7 +66,7 @@ TEST_CASE("--report FILE.html on simulate, optimize, speed-limit, robot --trajec
                  "--flat-face-radius", "20mm", "--body-region", "chest"});
 }
 
-TEST_CASE("--report: another extension is bad input before any computation", "[report]") {
+TEST_CASE("The --report option: another extension is bad input before any computation", "[report]") {
   const TempDir dir;
   for (const std::string& name : {std::string("r.txt"), std::string("r.svg"), std::string("report"),
                                   std::string("r.html.bak")}) {
@@ -86,7 +86,7 @@ TEST_CASE("--report: another extension is bad input before any computation", "[r
   }
 }
 
-TEST_CASE("--report: a run that failed writes no report", "[report]") {
+TEST_CASE("The --report option: a run that failed writes no report", "[report]") {
   const TempDir dir;
   const std::string file = (dir / "report.html").string();
   // The computation fails: the integrator's step limit.
