@@ -297,8 +297,6 @@ std::string RatioText(double ratio) { return std::isfinite(ratio) ? fmt::format(
 
 std::string ScaleText(double scale) { return std::isfinite(scale) ? fmt::format("{:.4g}", scale) : "-"; }
 
-/// The charts of audit's --report (none yet).
-std::vector<report::SvgChart> ReportCharts(const optim::AuditResult& /*result*/) { return {}; }
 
 void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& run, const optim::AuditResult& r) {
   const optim::AuditSetup& setup = run.setup;
@@ -484,7 +482,7 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
   }
   AuditRun& run = *resolved;
   try {
-    if (o.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+    if ((o.plot_file || o.report_file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     // The per-sample stream: written as the audit runs (a file through OutputFile).
     std::optional<OutputFile> stream_file;
     std::vector<std::string> link_names;
@@ -503,7 +501,7 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
       } else {
         out << header;
       }
-      run.options.keep_ratio_over_time = o.plot_file.has_value();
+      run.options.keep_ratio_over_time = o.plot_file || o.report_file;  // the heat map's data
       run.options.on_sample = [&](const optim::AuditSampleRow& row) {
         std::string line;
         report::AppendCsvRecord(line, report::AuditSampleCsvCells(row, region_names));
@@ -519,13 +517,14 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
     }
     if (stream_file) stream_file->Commit();
     if (o.csv_file && *o.csv_file != "-") WriteFileAtomically(*o.csv_file, CellsCsv(result));
-    if (o.plot_file) {
-      RunGnuplot(*o.plot_file, report::AuditHeatMap(result, run.setup.rule.safety_factor,
-                                                    std::filesystem::path(*o.trajectory).filename().string()));
-    }
+    const auto heat_map = [&] {
+      return report::AuditHeatMap(result, run.setup.rule.safety_factor,
+                                  std::filesystem::path(*o.trajectory).filename().string());
+    };
+    if (o.plot_file) RunGnuplot(*o.plot_file, heat_map());
     if (o.json || o.report_file) {
       PrintAndReport(out, o.json, report::AuditJson(run.setup, result, run.input_warnings), o.run, o.report_file,
-                     report::ReportKind::kAudit, [&] { return ReportCharts(result); });
+                     report::ReportKind::kAudit, [&] { return std::vector{heat_map()}; });
     }
     if (!o.json && o.csv_file && *o.csv_file == "-") {
       out << CellsCsv(result);

@@ -90,9 +90,6 @@ std::string VerdictWord(const BodyRegionJudgement& v) {
                      optim::ToString(v.governing), v.governing_ratio, Percent(v.margin));
 }
 
-/// The charts of a --body-region report (simulate, speed-limit, optimize; none yet).
-std::vector<report::SvgChart> BodyRegionReportCharts() { return {}; }
-
 /// The head's `simulate`, as the command prints it (text or JSON), without the body flags.
 int RunHead(const SimulateOptions& options, std::ostream& out, std::ostream& err, bool json) {
   SimulateOptions head = options;
@@ -166,7 +163,7 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
     try {
       PrintAndReport(out, plan.json,
                      report::BodyContactSimulationJson(scene, MaterialName(plan), judgements, sf, head_text, warnings),
-                     options.run, options.report_file, report::ReportKind::kSimulate, BodyRegionReportCharts);
+                     options.run, options.report_file, report::ReportKind::kSimulate, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }
@@ -335,7 +332,7 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
                                                       plan.coverings.size() == 1 ? MaterialName(first) : std::nullopt,
                                                       BodyCriterion(rule, regions.has_head()), rule.safety_factor,
                                                       rows, warnings),
-                     options.run, options.report_file, report::ReportKind::kSpeedLimit, BodyRegionReportCharts);
+                     options.run, options.report_file, report::ReportKind::kSpeedLimit, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }
@@ -460,7 +457,7 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
       PrintAndReport(out, options.json,
                      report::BodyRegionDesignJson(request, result, BodyCriterion(request.rule, regions.has_head()),
                                                   input_warnings),
-                     options.run, options.report_file, report::ReportKind::kOptimize, BodyRegionReportCharts);
+                     options.run, options.report_file, report::ReportKind::kOptimize, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }

@@ -437,8 +437,6 @@ void PrintProbabilityDesign(std::ostream& out, const Resolved& r, const optim::U
   for (const std::string& w : r.warnings) fmt::print(out, "warning: {}\n", w);
 }
 
-/// The charts of optimize's --report, from the design (null for a robust design; none yet).
-std::vector<report::SvgChart> ReportCharts(const optim::DesignResult* /*design*/) { return {}; }
 
 /// optimize --max-injury-probability: the thinnest covering whose probability of failing the
 /// criterion is <= P (FindProbabilityDesign).
@@ -460,7 +458,7 @@ int RunProbabilityDesign(const OptimizeOptions& o, const Resolved& r, const Robu
   if (o.json || o.report_file) {
     try {
       PrintAndReport(out, o.json, report::ProbabilityDesignJson(inputs.box, options, result, r.warnings), o.run,
-                     o.report_file, report::ReportKind::kOptimize, [] { return ReportCharts(nullptr); });
+                     o.report_file, report::ReportKind::kOptimize, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }
@@ -687,7 +685,7 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
       PrintAndReport(out, o.json,
                      report::RobustDesignJson(inputs->box, options, result, probability ? &*probability : nullptr,
                                               r.warnings),
-                     o.run, o.report_file, report::ReportKind::kOptimize, [] { return ReportCharts(nullptr); });
+                     o.run, o.report_file, report::ReportKind::kOptimize, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }
@@ -835,6 +833,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     return errors.BadInput(e.what());
   }
   if (!result.ok()) return errors.Failed(result.message);
+  if (options.report_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
   if (options.csv || options.plot_file) {
     try {
       if (options.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
@@ -851,7 +850,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   if (options.json || options.report_file) {
     try {  // input's warnings, then the answer's
       PrintAndReport(out, options.json, report::DesignJson(r.request, result, r.warnings), options.run,
-                     options.report_file, report::ReportKind::kOptimize, [&] { return ReportCharts(&result); });
+                     options.report_file, report::ReportKind::kOptimize, [&] { return std::vector{report::DesignMapChart(optim::ComputeDesignMap(r.request, result))}; });
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }

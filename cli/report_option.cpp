@@ -8,7 +8,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "errors.hpp"
 #include "output.hpp"
+#include "plot.hpp"
 #include "report_pdf.hpp"
 
 namespace covopt::cli {
@@ -44,8 +46,15 @@ void AddReportOption(CLI::App& command, std::optional<std::string>& file) {
 }
 
 void WriteReport(const std::string& file, report::ReportKind kind, const std::string& result_json,
-                 std::vector<report::SvgChart> charts) {
-  const std::string html = report::HtmlReport({kind, result_json, std::move(charts)});
+                 std::span<const report::GnuplotChart> charts) {
+  std::string html;
+  try {
+    std::vector<report::SvgChart> drawn;
+    if (!charts.empty()) drawn = report::DrawSvgCharts(charts, SignalSafeScratch());
+    html = report::HtmlReport({kind, result_json, std::move(drawn)});
+  } catch (const std::exception& e) {  // gnuplot missing or failed; a result HtmlReport refuses
+    throw OutputError(fmt::format("--report '{}': no report written: {}", file, e.what()));
+  }
   if (ReportFormatFor(file) == ReportFormat::kPdf) {
     WriteReportPdf(file, html);
   } else {
@@ -55,9 +64,9 @@ void WriteReport(const std::string& file, report::ReportKind kind, const std::st
 
 void PrintAndReport(std::ostream& out, bool print_json, const std::string& json_object,
                     const std::optional<RunContext>& run, const std::optional<std::string>& report_file,
-                    report::ReportKind kind, const std::function<std::vector<report::SvgChart>()>& charts) {
+                    report::ReportKind kind, const std::function<std::vector<report::GnuplotChart>()>& charts) {
   const std::string stamped = WithRunProvenance(json_object, run);
-  if (report_file) WriteReport(*report_file, kind, stamped, charts ? charts() : std::vector<report::SvgChart>{});
+  if (report_file) WriteReport(*report_file, kind, stamped, charts ? charts() : std::vector<report::GnuplotChart>{});
   if (print_json) out << stamped << '\n';
 }
 

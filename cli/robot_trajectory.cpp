@@ -198,10 +198,6 @@ TrajectoryRun Resolve(const RobotModelOptions& model, const RobotTrajectoryOptio
   return run;
 }
 
-/// The charts of robot --trajectory's --report, from the head's check (null with
-/// --body-region; none yet).
-std::vector<report::SvgChart> ReportCharts(const optim::TrajectoryCheck* /*check*/) { return {}; }
-
 /// --trajectory with --body-region: every sample against the ISO regions named
 /// (optim::CheckTrajectoryForBodyRegions); the head, when named, by the head's own check.
 int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptions& options,
@@ -240,7 +236,7 @@ int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptio
                      report::BodyRegionTrajectoryJson(check ? *check : empty, iso,
                                                       BodyContactSceneOf(run.scene.scene, regions), head, criterion,
                                                       warnings),
-                     context, options.report_file, report::ReportKind::kTrajectory, [&] { return ReportCharts(nullptr); });
+                     context, options.report_file, report::ReportKind::kTrajectory, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }
@@ -358,7 +354,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
   // A failed evaluation leaves the trajectory without a verdict: no table, file or chart.
   if (check.status == optim::TrajectoryCheckStatus::kEvaluationFailed) return errors.Failed(check.message);
   try {
-    if (options.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+    if ((options.plot_file || options.report_file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (options.csv_file && *options.csv_file != "-") WriteFileAtomically(*options.csv_file, CsvText(check));
     if (options.plot_file) {
       RunGnuplot(*options.plot_file,
@@ -376,7 +372,9 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
                                                      ? std::optional<std::string>(run.scene.covering_material->name)
                                                      : std::nullopt,
                                                  run.limit, run.input_warnings),
-                     context, options.report_file, report::ReportKind::kTrajectory, [&] { return ReportCharts(&check); });
+                     context, options.report_file, report::ReportKind::kTrajectory, [&] {
+                       return std::vector{report::TrajectoryChart({check, run.scene.scene, run.limit, *options.file, run.tip_link})};
+                     });
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }

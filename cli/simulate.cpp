@@ -250,7 +250,8 @@ namespace {
 /// a neck or a history, docs/model.md §10) and the time path's options.
 void ResolveComputation(const SimulateOptions& options, SimulationPlan& plan) {
   SolveOptions& solve = plan.solve;
-  solve.record_history = plan.history_file || plan.plot_file;
+  // --report draws the force chart, as --plot does: both need the history.
+  solve.record_history = plan.history_file || plan.plot_file || options.report_file;
   std::optional<ComputationMethod> integrator;
   if (options.method && *options.method != "auto") {
     if (*options.method == "cvode") {
@@ -270,7 +271,7 @@ void ResolveComputation(const SimulateOptions& options, SimulationPlan& plan) {
         throw InputError(fmt::format(
             "--method exact computes no time history, which {} needs; drop --method exact "
             "(the default integrator runs then) or give a time-path method",
-            plan.history_file ? "--history" : "--plot"));
+            plan.history_file ? "--history" : plan.plot_file ? "--plot" : "--report"));
       }
     } else {
       throw InputError(fmt::format("--method: expected exact, cvode or one of {}, or auto "
@@ -519,9 +520,6 @@ void PrintUncertainSimulation(std::ostream& out, const SimulationPlan& plan, con
   }
 }
 
-/// The charts of simulate's --report (none yet).
-std::vector<report::SvgChart> ReportCharts(const SimulationReport& /*report*/) { return {}; }
-
 /// simulate with scene ranges, --samples or --sensitivities (docs/model.md §11): the worst
 /// case over the box reported as an impact at that scene, the probability of injury and the
 /// elasticities. Everything runs on the exact path.
@@ -609,8 +607,7 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
                      report::UncertainSimulationJson(report, box ? &*box : nullptr, box ? &worst : nullptr,
                                                      probability ? &*probability : nullptr,
                                                      elasticities ? &*elasticities : nullptr),
-                     options.run, options.report_file, report::ReportKind::kSimulate,
-                     [&] { return ReportCharts(report); });
+                     options.run, options.report_file, report::ReportKind::kSimulate, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }
@@ -690,7 +687,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
 
   try {
     // Check for gnuplot before writing anything, so that a missing tool leaves no files.
-    if (plan.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+    if ((plan.plot_file || options.report_file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (plan.history_file) WriteFileAtomically(*plan.history_file, HistoryCsv(*model, result.history));
     if (plan.plot_file) PlotHistory(*plan.plot_file, report);
   } catch (const OutputError& e) {
@@ -700,7 +697,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
   if (plan.json || options.report_file) {
     try {  // the object covopt.simulate() returns
       PrintAndReport(out, plan.json, report::SimulationJson(report), options.run, options.report_file,
-                     report::ReportKind::kSimulate, [&] { return ReportCharts(report); });
+                     report::ReportKind::kSimulate, [&] { return std::vector{report::HistoryChart(report)}; });
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }

@@ -306,11 +306,6 @@ SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
 
 namespace {
 
-/// The charts of speed-limit's --report, from the rows (null with scene ranges; none yet).
-std::vector<report::SvgChart> ReportCharts(const SpeedLimitPlan& /*plan*/, const std::vector<SpeedLimitRow>* /*rows*/) {
-  return {};
-}
-
 /// speed-limit with scene ranges (docs/model.md §11): per covering and row, the limit safe for
 /// every value in the box (MaxSafeSpeedOverBox / MaxSafeMassOverBox) and where it is set.
 int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptions& options, std::ostream& out,
@@ -366,7 +361,7 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
   if (plan.json || options.report_file) {
     try {
       PrintAndReport(out, plan.json, report::RobustSpeedLimitTableJson(plan.quantity, *first_box, rows), options.run,
-                     options.report_file, report::ReportKind::kSpeedLimit, [&] { return ReportCharts(plan, nullptr); });
+                     options.report_file, report::ReportKind::kSpeedLimit, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }
@@ -419,7 +414,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
   for (const std::string& w : plan.warnings) input_warnings.push_back(w);
   const Scene& scene = plan.coverings.front().scene;
   try {
-    if (plan.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+    if ((plan.plot_file || options.report_file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (plan.csv_file && *plan.csv_file != "-") WriteFileAtomically(*plan.csv_file, CsvText(plan, rows));
     if (plan.plot_file) {
       RunGnuplot(*plan.plot_file, SpeedLimitChartOf(plan));
@@ -432,7 +427,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
     try {
       PrintAndReport(out, plan.json, report::SpeedLimitJson(plan.quantity, scene, plan.options, rows, input_warnings),
                      options.run, options.report_file, report::ReportKind::kSpeedLimit,
-                     [&] { return ReportCharts(plan, &rows); });
+                     [&] { return std::vector{SpeedLimitChartOf(plan)}; });
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }

@@ -671,10 +671,13 @@ void AssessSpeedLimit(Assessment& a, const Json& j) {
   if (!lowest_where.empty()) a.governing.criterion = lowest_where;
   a.headline = all_found ? "a safe limit exists for every row; the lowest: " + lowest_where + ", " + lowest_text
                          : "NO SAFE VALUE for at least one row: that robot is unsafe at any speed (or mass) searched";
-  a.safe_means =
-      "SAFE means every row has a max safe speed (or mass) above zero; the robot is safe only while it runs at or "
-      "below its row's limit. UNSAFE means some row has none: no speed (mass) searched is safe there. The ratios "
-      "are those of the impact at the limit, so the largest is 1 at the binding criterion by construction.";
+  // Only the sentence of this verdict: a SAFE report never carries the other word.
+  a.safe_means = std::string(all_found ? "SAFE here means every row has a max safe speed (or mass) above zero; the "
+                                         "robot is safe only while it runs at or below its row's limit."
+                                       : "UNSAFE here means some row has no max safe speed (or mass): no value "
+                                         "searched is safe there.") +
+                 " The ratios are those of the impact at the limit, so the largest is 1 at the binding criterion by "
+                 "construction.";
   const Json* limits = Find(j, "limits");
   const bool any_head = std::any_of(rows->begin(), rows->end(), [](const Json& r) { return !r.contains("region"); });
   if (any_head) AddHeadCriteria(a, limits ? *limits : Json::object());
@@ -1379,7 +1382,7 @@ std::string HtmlReport(const ReportContent& content) {
   std::string out;
   out.reserve(content.result_json.size() * 3 + 32768);
   out += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-         "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; style-src 'unsafe-inline'\">\n"
+         "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; style-src 'unsafe-inline'; img-src data:\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>";
   Escape(out, "covopt " + kind + " report: " + word);
   out += "</title>\n<style>";

@@ -33,6 +33,8 @@ class Rewriter {
     if (name == "id") return std::string(prefix_) + std::string(value);
     if (name == "href" || name == "xlink:href") {
       if (value.empty()) return "";
+      // A raster gnuplot embeds (pm3d maps drawn as an image): inline bytes, nothing fetched.
+      if (value.starts_with("data:image/png;base64,")) return std::string(value);
       if (value.front() != '#') Fail("refers to an external resource (" + name + "=\"" + std::string(value) + "\")");
       out = "#";
       out += prefix_;
