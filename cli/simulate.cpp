@@ -250,8 +250,7 @@ namespace {
 /// a neck or a history, docs/model.md §10) and the time path's options.
 void ResolveComputation(const SimulateOptions& options, SimulationPlan& plan) {
   SolveOptions& solve = plan.solve;
-  // --report draws the force chart, as --plot does: both need the history.
-  solve.record_history = plan.history_file || plan.plot_file || options.report_file;
+  solve.record_history = plan.history_file || plan.plot_file;
   std::optional<ComputationMethod> integrator;
   if (options.method && *options.method != "auto") {
     if (*options.method == "cvode") {
@@ -271,7 +270,7 @@ void ResolveComputation(const SimulateOptions& options, SimulationPlan& plan) {
         throw InputError(fmt::format(
             "--method exact computes no time history, which {} needs; drop --method exact "
             "(the default integrator runs then) or give a time-path method",
-            plan.history_file ? "--history" : plan.plot_file ? "--plot" : "--report"));
+            plan.history_file ? "--history" : "--plot"));
       }
     } else {
       throw InputError(fmt::format("--method: expected exact, cvode or one of {}, or auto "

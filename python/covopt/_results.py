@@ -12,10 +12,13 @@ class Result:
     ``to_dict()`` is the JSON structure itself (numpy arrays where a history or sweep has them).
     """
 
-    __slots__ = ("_data", "_name")
+    __slots__ = ("_data", "_name", "_charts")
     _report_kind = None  # report::ToString(ReportKind) of the results that have a report
 
     def __init__(self, data, name=None):
+        # The report's charts (the extension's _ReportCharts): kept beside the data, never in it.
+        charts = data.pop("_report_charts", None) if isinstance(data, dict) else None
+        object.__setattr__(self, "_charts", charts)
         object.__setattr__(self, "_data", data)
         object.__setattr__(self, "_name", name or type(self).__name__)
 
@@ -55,7 +58,7 @@ class Result:
                             "and audit results have one)")
         from . import _covopt  # the extension, imported by the package before this runs
         data = {key: value for key, value in self._data.items() if key != "history"}
-        html = _covopt.html_report(self._report_kind, json.dumps(data, allow_nan=False))
+        html = _covopt.html_report(self._report_kind, json.dumps(data, allow_nan=False), self._charts)
         pathlib.Path(path).write_text(html, encoding="utf-8")
         return path
 

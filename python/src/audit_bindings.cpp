@@ -23,6 +23,7 @@
 #include "covopt/robot/payload.hpp"
 #include "covopt/robot/surface.hpp"
 #include "covopt/scene_file/link_coverings.hpp"
+#include "report_charts.hpp"
 #include "robot_inputs.hpp"
 #include "scene_keywords.hpp"
 
@@ -202,7 +203,11 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
   std::vector<std::string> warnings = InputWarnings(inputs);
   const optim::CoveringCrushCheck crush = inputs.CrushCheck();
   warnings.insert(warnings.end(), crush.notes.begin(), crush.notes.end());
-  return JsonToPython(report::AuditJson(setup, result, warnings, -1));
+  py::dict d = JsonToPython(report::AuditJson(setup, result, warnings, -1));
+  if (result.ratio_over_time.empty()) return d;  // the heat map needs keep_ratio_over_time=True
+  return WithReportCharts(std::move(d), [result, sf = setup.rule.safety_factor, name = TrajectoryName(trajectory)] {
+    return std::vector{report::AuditHeatMap(result, sf, name)};
+  });
 }
 
 }  // namespace

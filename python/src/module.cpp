@@ -29,6 +29,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "covopt/optim/design_map.hpp"
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
@@ -44,6 +45,7 @@
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
 #include "covopt/scene_file/fields.hpp"
+#include "report_charts.hpp"
 #include "scene_keywords.hpp"
 
 namespace py = pybind11;
@@ -428,7 +430,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   report.input_warnings = InputWarnings(inputs);
   py::dict result = JsonToPython(report::SimulationJson(report, -1));
   if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model, report.scene);
-  return result;
+  return WithReportCharts(std::move(result), [report] { return std::vector{report::HistoryChart(report)}; });
 }
 
 }  // namespace
@@ -744,7 +746,9 @@ py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
     result = optim::Design(request);  // throws invalid_argument naming the field
   }
   if (!result.ok()) RaiseComputationError(result.message, std::string(optim::ToString(result.status)));
-  return JsonToPython(report::DesignJson(request, result, {}, -1));
+  return WithReportCharts(JsonToPython(report::DesignJson(request, result, {}, -1)), [request, result] {
+    return std::vector{report::DesignMapChart(optim::ComputeDesignMap(request, result))};
+  });
 }
 
 py::list Materials() {

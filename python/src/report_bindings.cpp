@@ -13,8 +13,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "covopt/report/charts.hpp"
 #include "covopt/report/html_report.hpp"
 #include "covopt/report/provenance.hpp"
+#include "report_charts.hpp"
 #include "scene_keywords.hpp"
 
 namespace py = pybind11;
@@ -30,14 +32,21 @@ py::object Provenance(std::string command, const std::vector<std::pair<std::stri
 }
 
 /// report::HtmlReport of a result's JSON text; `kind` is report::ToString(ReportKind).
-std::string HtmlReport(const std::string& kind, const std::string& result_json) {
+/// `charts` (a ReportCharts, or None) are drawn by one gnuplot run.
+std::string HtmlReport(const std::string& kind, const std::string& result_json, const py::object& charts) {
   constexpr std::array kKinds{report::ReportKind::kSimulate, report::ReportKind::kOptimize,
                               report::ReportKind::kSpeedLimit, report::ReportKind::kTrajectory,
                               report::ReportKind::kAudit};
   for (const report::ReportKind k : kKinds) {
     if (report::ToString(k) == kind) {
+      const ReportCharts* maker = charts.is_none() ? nullptr : &charts.cast<const ReportCharts&>();
       py::gil_scoped_release release;
-      return report::HtmlReport({k, result_json, {}});  // charts: none yet
+      std::vector<report::SvgChart> drawn;
+      if (maker != nullptr && maker->make) {
+        const std::vector<report::GnuplotChart> gnuplot = maker->make();
+        drawn = report::DrawSvgCharts(gnuplot);
+      }
+      return report::HtmlReport({k, result_json, std::move(drawn)});
     }
   }
   throw std::invalid_argument("html_report: no report of kind '" + kind + "'");
@@ -47,7 +56,8 @@ std::string HtmlReport(const std::string& kind, const std::string& result_json) 
 
 void BindReport(py::module_& m) {
   m.def("provenance", &Provenance, py::arg("command"), py::arg("inputs"));
-  m.def("html_report", &HtmlReport, py::arg("kind"), py::arg("result_json"));
+  py::class_<ReportCharts>(m, "_ReportCharts", "The charts of a result's report, drawn when to_html asks.");
+  m.def("html_report", &HtmlReport, py::arg("kind"), py::arg("result_json"), py::arg("charts") = py::none());
 }
 
 }  // namespace covopt::python

@@ -18,6 +18,7 @@
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/optim/speed_limit_table.hpp"
 #include "covopt/report/speed_limit_json.hpp"
+#include "report_charts.hpp"
 #include "scene_keywords.hpp"
 
 namespace py = pybind11;
@@ -151,7 +152,11 @@ py::dict SpeedLimitTable(const SceneInputs& scene, const py::kwargs& kwargs) {
   const std::vector<SpeedLimitRow> rows = Compute(quantity, coverings, values, scene);
   // The table's criterion covers every material: crushing where a strength is known (as the CLI's).
   options.covering_compressive_strength_Pa = 0.0;
-  return JsonToPython(report::SpeedLimitJson(quantity, coverings.front().scene, options, rows, notes, -1));
+  py::dict table = JsonToPython(report::SpeedLimitJson(quantity, coverings.front().scene, options, rows, notes, -1));
+  if (!by_speed) return table;  // the chart draws the max safe speed over the mass, as the CLI's --plot
+  report::SpeedLimitChartInput chart{{}, values, options};
+  for (const optim::SpeedLimitCovering& c : coverings) chart.coverings.push_back({c.scene, c.material});
+  return WithReportCharts(std::move(table), [chart = std::move(chart)] { return std::vector{report::SpeedLimitChart(chart)}; });
 }
 
 }  // namespace

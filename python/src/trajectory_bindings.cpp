@@ -15,6 +15,7 @@
 #include "covopt/optim/trajectory_check.hpp"
 #include "covopt/report/trajectory_json.hpp"
 #include "covopt/robot/trajectory.hpp"
+#include "report_charts.hpp"
 #include "robot_inputs.hpp"
 #include "scene_keywords.hpp"
 
@@ -76,8 +77,11 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
   if (check.status == optim::TrajectoryCheckStatus::kEvaluationFailed) {
     RaiseComputationError(check.message, std::string(optim::ToString(check.status)));  // as the CLI's exit 1
   }
-  return JsonToPython(
-      report::TrajectoryCheckJson(check, motion, inputs.scene, inputs.covering_material, options.limit, crush.notes, -1));
+  report::TrajectoryChartInput chart{check, inputs.scene, options.limit, TrajectoryName(trajectory), tip};
+  return WithReportCharts(
+      JsonToPython(report::TrajectoryCheckJson(check, motion, inputs.scene, inputs.covering_material, options.limit,
+                                               crush.notes, -1)),
+      [chart = std::move(chart)] { return std::vector{report::TrajectoryChart(chart)}; });
 }
 
 }  // namespace

@@ -5,6 +5,7 @@ the date (SOURCE_DATE_EPOCH when set) and the SHA-256 of every input file."""
 import hashlib
 import os
 import pathlib
+import re
 
 import pytest
 
@@ -106,3 +107,36 @@ def test_to_html_writes_the_report(tmp_path):
         assert out.stat().st_size > 0
     with pytest.raises(TypeError, match="no report"):
         covopt.max_safe_speed().to_html(tmp_path / "x.html")
+
+
+def _figures(html):
+    """The report's chart figures, as HTML text."""
+    return re.findall(r'<figure class="chart".*?</figure>', html, flags=re.S)
+
+
+@pytest.mark.parametrize("python_call, cli_args", [
+    (lambda: covopt.simulate(), ["simulate"]),
+    (lambda: covopt.optimize(materials=["PU foam PORON 4701-30 320"]),
+     ["optimize", "--material", "PU foam PORON 4701-30 320"]),
+    (lambda: covopt.speed_limit(), ["speed-limit"]),
+    (lambda: covopt.check_trajectory(str(FR3), "fr3_link8", str(PICK)),
+     ["robot", "--urdf", str(FR3), "--tip", "fr3_link8", "--trajectory", str(PICK)]),
+    (lambda: covopt.audit(str(FR3), "fr3_link8", str(PICK), contact_area="1cm2", flat_face_radius="20mm",
+                          scene=covopt.Scene(covering_thickness=0.02, covering_modulus=0.5e6, covering_poisson=0.45)),
+     ["audit", "--urdf", str(FR3), "--tip", "fr3_link8", "--trajectory", str(PICK), "--covering-thickness", "20mm",
+      "--covering-modulus", "0.5MPa", "--covering-poisson", "0.45", "--contact-area", "1cm2",
+      "--flat-face-radius", "20mm"]),
+], ids=["simulate", "optimize", "speed-limit", "trajectory", "audit"])
+def test_to_html_draws_the_cli_reports_charts(tmp_path, cli, python_call, cli_args):
+    """result.to_html() has the charts of the CLI's --report for the same inputs, the same SVG
+    (one library function draws both), and the chart maker never shows in to_dict()."""
+    result = python_call()
+    assert "_report_charts" not in result.to_dict()
+    python_html = pathlib.Path(result.to_html(tmp_path / "python.html")).read_text(encoding="utf-8")
+    cli_file = tmp_path / "cli.html"
+    code, _, err = cli(*cli_args, "--report", str(cli_file))
+    assert code == 0, err
+    cli_figures = _figures(cli_file.read_text(encoding="utf-8"))
+    python_figures = _figures(python_html)
+    assert len(cli_figures) == 1 and "<svg" in cli_figures[0]
+    assert python_figures == cli_figures

@@ -82,7 +82,11 @@ std::string GnuplotQuoted(std::string_view text);
 /// axes, the laceration limit on the stress axis), below them the energy density [J/cm²]
 /// with the contusion limit; the limits are report.assessment's, and with
 /// report.safety_factor > 1 the derated limits (limit / factor) are drawn too. 1100 x 900.
-/// @throws std::invalid_argument for a scene the model rejects, or an empty history.
+/// A result without a history (the exact path's) is drawn from the same scene on the time path
+/// (Solve with record_history), and the caption says so with the relative difference of its
+/// peak force from the reported one.
+/// @throws std::invalid_argument for a scene the model rejects; std::runtime_error when that
+///         time-path run fails.
 GnuplotChart HistoryChart(const SimulationReport& report);
 
 /// What the speed-limit chart draws: the largest safe impact speed over the reflected mass,
