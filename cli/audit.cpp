@@ -517,9 +517,14 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
     }
     if (stream_file) stream_file->Commit();
     if (o.csv_file && *o.csv_file != "-") WriteFileAtomically(*o.csv_file, CellsCsv(result));
-    const auto heat_map = [&] {
-      return report::AuditHeatMap(result, run.setup.rule.safety_factor,
-                                  std::filesystem::path(*o.trajectory).filename().string());
+    // The heat map, made once for --plot and --report.
+    std::optional<report::GnuplotChart> heat_map_chart;
+    const auto heat_map = [&]() -> const report::GnuplotChart& {
+      if (!heat_map_chart) {
+        heat_map_chart = report::AuditHeatMap(result, run.setup.rule.safety_factor,
+                                              std::filesystem::path(*o.trajectory).filename().string());
+      }
+      return *heat_map_chart;
     };
     if (o.plot_file) RunGnuplot(*o.plot_file, heat_map());
     if (o.json || o.report_file) {

@@ -833,14 +833,17 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     return errors.BadInput(e.what());
   }
   if (!result.ok()) return errors.Failed(result.message);
-  if (options.report_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+  if ((options.plot_file || options.report_file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+  // The design map, computed once for --plot and --report.
+  std::optional<report::GnuplotChart> design_map;
+  const auto design_map_chart = [&]() -> const report::GnuplotChart& {
+    if (!design_map) design_map = report::DesignMapChart(optim::ComputeDesignMap(r.request, result));
+    return *design_map;
+  };
   if (options.csv || options.plot_file) {
     try {
-      if (options.plot_file && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
       if (options.csv) WriteFileAtomically(*options.csv, CandidatesCsv(result.candidates, result.rule));
-      if (options.plot_file) {
-        RunGnuplot(*options.plot_file, report::DesignMapChart(optim::ComputeDesignMap(r.request, result)));
-      }
+      if (options.plot_file) RunGnuplot(*options.plot_file, design_map_chart());
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     } catch (const std::invalid_argument& e) {  // the map's oracle: as the design's, accepted above
@@ -850,7 +853,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   if (options.json || options.report_file) {
     try {  // input's warnings, then the answer's
       PrintAndReport(out, options.json, report::DesignJson(r.request, result, r.warnings), options.run,
-                     options.report_file, report::ReportKind::kOptimize, [&] { return std::vector{report::DesignMapChart(optim::ComputeDesignMap(r.request, result))}; });
+                     options.report_file, report::ReportKind::kOptimize, [&] { return std::vector{design_map_chart()}; });
     } catch (const OutputError& e) {
       return errors.Failed(e.what());
     }
