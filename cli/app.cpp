@@ -1,6 +1,7 @@
 #include "app.hpp"
 
 #include <exception>
+#include <optional>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -67,6 +68,12 @@ int RunCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
     const std::string command = ActiveCommandPath(app);
     fmt::print(err, "covopt{}{}: error: {}\n", command.empty() ? "" : " ", command,
                ShortenLongWords(DescribeParseError(app, e)));
+    return 2;
+  }
+
+  // Outputs never touch inputs or each other: checked before anything runs or is written.
+  if (const std::optional<std::string> clash = OutputPathClash(app)) {
+    fmt::print(err, "covopt {}: error: {}\n", ActiveCommandPath(app), ShortenLongWords(*clash));
     return 2;
   }
 

@@ -286,6 +286,25 @@ std::string FollowLinks(const std::string& shown, std::string path) {
 
 }  // namespace
 
+std::optional<FileIdentity> IdentifyFile(const std::string& path) {
+  std::string followed;
+  try {
+    followed = FollowLinks(path, path);
+  } catch (const OutputError&) {
+    return std::nullopt;  // a loop of links: the writer or reader reports it
+  }
+  struct stat st {};
+  if (::stat(followed.c_str(), &st) == 0) {
+    return FileIdentity{st.st_dev, st.st_ino, {}, S_ISCHR(st.st_mode)};
+  }
+  if (errno != ENOENT) return std::nullopt;
+  const std::string name = std::filesystem::path(followed).filename().string();
+  if (name.empty() || name == "." || name == ".." || ::stat(DirectoryOf(followed).c_str(), &st) != 0) {
+    return std::nullopt;
+  }
+  return FileIdentity{st.st_dev, st.st_ino, name, false};
+}
+
 int RegisterTemporaryFile(const std::string& path) noexcept {
   if (path.size() >= kTemporaryPathBytes) return -1;
   InstallSignalHandlers();

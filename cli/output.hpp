@@ -131,6 +131,23 @@ class OutputFile {
   std::size_t written_back_ = 0;  // bytes whose write-back has been started
 };
 
+/// Which file a path names, to tell whether two paths of one run are one file: the device
+/// and inode of the file its symbolic links lead to (followed as OutputFile follows them), or,
+/// for a file that does not exist yet, the device and inode of its directory and its name in
+/// it. So `a.csv`, `./a.csv`, `dir/../a.csv`, a symbolic link to it and a hard link to it are
+/// one file, whether or not it exists yet.
+struct FileIdentity {
+  dev_t device = 0;
+  ino_t inode = 0;
+  std::string name;  ///< the file's name in directory (device, inode) when it does not exist yet
+  bool character_device = false;  ///< /dev/null, a terminal: any number of writers may share it
+  friend bool operator==(const FileIdentity&, const FileIdentity&) = default;
+};
+
+/// The FileIdentity of `path`; nullopt when neither the file nor its directory can be found
+/// (its reader or writer reports that), or its links loop.
+std::optional<FileIdentity> IdentifyFile(const std::string& path);
+
 /// Writes `content` to `path` by OutputFile's rules (atomically for a regular file).
 /// @throws OutputError naming the file and the system's reason.
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view content);

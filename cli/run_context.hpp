@@ -30,6 +30,19 @@ struct RunContext {
 /// flag (an output file such as --csv, --plot, --history, --report is no input).
 std::string_view InputFileRole(std::string_view long_flag) noexcept;
 
+/// Whether a flag names a file the run writes: --report, --csv, --samples-csv, --history,
+/// --plot, --tolerance-plot (every output-file flag of every subcommand; '-' is stdout).
+bool IsOutputFileFlag(std::string_view long_flag) noexcept;
+
+/// Outputs never touch inputs or each other: the message of the first output file of the
+/// parsed command line that is the same file (FileIdentity, cli/output.hpp: device and inode
+/// after following links, or directory and name for a file not yet made) as one of its input
+/// files (InputFileRole) or another of its output files (IsOutputFileFlag), naming both
+/// flags and the path; nullopt when there is none. A character device (/dev/null) may be
+/// named by any number of flags, and '-' (stdout) is no file. RunCli checks it right after
+/// parsing, before anything runs or is written, and exits 2 on it.
+std::optional<std::string> OutputPathClash(const CLI::App& app);
+
 /// The context of a parsed command line: report::CommandLine(argv) and the values of the
 /// input-file flags (InputFileRole) of the app and of every subcommand that was parsed.
 RunContext MakeRunContext(const CLI::App& app, std::span<const char* const> argv);
