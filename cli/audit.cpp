@@ -24,6 +24,7 @@
 #include "covopt/robot/trajectory.hpp"
 #include "covopt/scene_file/link_coverings.hpp"
 #include "errors.hpp"
+#include "optimize.hpp"
 #include "output.hpp"
 #include "plot.hpp"
 #include "quantity.hpp"
@@ -284,6 +285,9 @@ AuditRun Resolve(const AuditCommandOptions& o) {
       run.options.design.thickness_step_m = ParseQuantity(*o.thickness_step, quantity_specs::kThicknessStep,
                                                           "--thickness-step");
     }
+    // optimize's ranges, named by the flags (the library names its own fields).
+    RequireMaxThickness(run.options.design.max_thickness_m, run.options.design.min_thickness_m, o.max_thickness);
+    RequireThicknessStep(run.options.design.thickness_step_m, o.thickness_step);
   }
 
   for (std::string& w : InputWarnings(plan)) run.input_warnings.push_back(std::move(w));
@@ -537,7 +541,7 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
       PrintText(out, o, run, result);
     }
   } catch (const OutputError& e) {
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   }
   out.flush();
   if (!out) return errors.Failed("cannot write the results to standard output");

@@ -11,6 +11,9 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
+
+#include "covopt/internal/text.hpp"
 
 namespace covopt::cli {
 
@@ -34,18 +37,31 @@ decltype(auto) AsInputError(F&& f) {
 }
 
 /// An output file or an external tool failed. The message names the file or the tool.
+/// `details`: what the tool itself printed (a PDF browser's last lines), shown under the
+/// one-line message as a block of lines each prefixed "  <tool>: " (CommandErrors::Failed).
 class OutputError : public std::runtime_error {
  public:
-  explicit OutputError(const std::string& message) : std::runtime_error(message) {}
+  explicit OutputError(const std::string& message, std::string tool = {}, std::vector<std::string> details = {})
+      : std::runtime_error(message), tool_(std::move(tool)), details_(std::move(details)) {}
+  const std::string& tool() const noexcept { return tool_; }
+  const std::vector<std::string>& details() const noexcept { return details_; }
+
+ private:
+  std::string tool_;
+  std::vector<std::string> details_;
 };
 
 /// A message with every overlong word (a run of 200+ bytes without a space: a
 /// 100,000-digit value, a pasted file) shown as its first 60 bytes (not cutting a UTF-8
-/// character), "…" and its length, so that an error stays one readable line. The quantity
-/// parser shortens the values it echoes the same way (core/src/quantity.cpp); this catches
-/// every other echo, since every CLI error line goes through it.
-inline std::string ShortenLongWords(std::string_view message) {
+/// character), "…" and its length, and every control character (a line break, a tab, an
+/// escape sequence, a NUL) shown escaped as C writes it (`\n`, `\t`, `\0`, `\x1b`), so that an
+/// error stays one readable line whatever value it echoes. The quantity parser shortens and
+/// escapes the values it echoes the same way (core/src/quantity.cpp); this catches every
+/// other echo (a link name, a path), since every CLI error line goes through it.
+inline std::string ShortenLongWords(std::string_view raw_message) {
   constexpr std::size_t kLong = 200, kKept = 60;
+  const std::string escaped = covopt::internal::EscapeControlCharacters(raw_message);
+  const std::string_view message = escaped;
   std::string shortened;
   std::size_t i = 0;
   while (i < message.size()) {
@@ -73,6 +89,13 @@ class CommandErrors {
   CommandErrors(std::ostream& err, std::string command) : err_(err), command_(std::move(command)) {}
   int BadInput(std::string_view message) const { return Print(message, 2); }
   int Failed(std::string_view message) const { return Print(message, 1); }
+  /// The one-line message, then the tool's own lines (OutputError::details), each on a line
+  /// of its own prefixed "  <tool>: " and escaped as the message is.
+  int Failed(const OutputError& error) const {
+    Print(error.what(), 1);
+    for (const std::string& line : error.details()) err_ << "  " << error.tool() << ": " << ShortenLongWords(line) << '\n';
+    return 1;
+  }
 
  private:
   int Print(std::string_view message, int exit_code) const {

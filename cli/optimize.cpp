@@ -151,8 +151,7 @@ void ResolveDesignFlags(const OptimizeOptions& o, Resolved& r) {
   auto require = [](bool ok, const std::string& message) {
     if (!ok) throw InputError(message);
   };
-  require(d.space.max_thickness_m > d.space.min_thickness_m && d.space.max_thickness_m <= 1.0,
-          fmt::format("--max-thickness must be in (0.1 mm, 1 m] (got '{}')", o.max_thickness.value_or("")));
+  RequireMaxThickness(d.space.max_thickness_m, d.space.min_thickness_m, o.max_thickness);
   require(d.space.min_modulus_Pa > 0 && d.space.max_modulus_Pa > d.space.min_modulus_Pa &&
               d.space.max_modulus_Pa <= 1e13,
           fmt::format("--min-modulus/--max-modulus must satisfy 0 < min < max <= 1e13 Pa (got {} Pa, {} Pa)",
@@ -161,8 +160,7 @@ void ResolveDesignFlags(const OptimizeOptions& o, Resolved& r) {
           fmt::format("--safety-factor must be in [1, 100] (got '{}')", o.safety_factor.value_or(fmt::format("{}", d.safety_factor))));
   require(d.covering_poisson_ratio > -1.0 && d.covering_poisson_ratio <= 0.5,
           fmt::format("--covering-poisson must be in (-1, 0.5] (got '{}')", o.covering_poisson.value_or("")));
-  require(d.thickness_step_m >= 0.0 && d.thickness_step_m <= 0.01,
-          fmt::format("--thickness-step must be in [0, 10 mm] (got '{}')", o.thickness_step.value_or("")));
+  RequireThicknessStep(d.thickness_step_m, o.thickness_step);
   require(d.limits.laceration_tensile_stress_Pa > 0.0 && d.limits.laceration_tensile_stress_Pa <= 1e9,
           fmt::format("--laceration-limit must be in (0, 1 GPa] (got '{}')", o.laceration_limit.value_or("")));
   require(d.limits.contusion_energy_density_J_per_m2 > 0.0 && d.limits.contusion_energy_density_J_per_m2 <= 1e7,
@@ -460,7 +458,7 @@ int RunProbabilityDesign(const OptimizeOptions& o, const Resolved& r, const Robu
       PrintAndReport(out, o.json, report::ProbabilityDesignJson(inputs.box, options, result, r.warnings), o.run,
                      o.report_file, report::ReportKind::kOptimize, nullptr);
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (!o.json) {
@@ -687,7 +685,7 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
                                               r.warnings),
                      o.run, o.report_file, report::ReportKind::kOptimize, nullptr);
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (!o.json) {
@@ -697,6 +695,21 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
 }
 
 }  // namespace
+
+void RequireMaxThickness(double max_thickness_m, double min_thickness_m, const std::optional<std::string>& typed) {
+  if (!(max_thickness_m > min_thickness_m && max_thickness_m <= 1.0)) {
+    throw InputError(fmt::format("--max-thickness must be in ({}, 1 m] (got '{}')",
+                                 FormatQuantity(min_thickness_m, QuantityKind::kLength),
+                                 typed.value_or(FormatQuantity(max_thickness_m, QuantityKind::kLength))));
+  }
+}
+
+void RequireThicknessStep(double thickness_step_m, const std::optional<std::string>& typed) {
+  if (!(thickness_step_m >= 0.0 && thickness_step_m <= 0.01)) {
+    throw InputError(fmt::format("--thickness-step must be in [0, 10 mm] (got '{}')",
+                                 typed.value_or(FormatQuantity(thickness_step_m, QuantityKind::kLength))));
+  }
+}
 
 CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
   CLI::App* sub = app.add_subcommand(
@@ -845,7 +858,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
       if (options.csv) WriteFileAtomically(*options.csv, CandidatesCsv(result.candidates, result.rule));
       if (options.plot_file) RunGnuplot(*options.plot_file, design_map_chart());
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     } catch (const std::invalid_argument& e) {  // the map's oracle: as the design's, accepted above
       return errors.BadInput(e.what());
     }
@@ -855,7 +868,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
       PrintAndReport(out, options.json, report::DesignJson(r.request, result, r.warnings), options.run,
                      options.report_file, report::ReportKind::kOptimize, [&] { return std::vector{design_map_chart()}; });
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (options.json) return 0;

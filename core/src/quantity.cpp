@@ -10,6 +10,8 @@
 #include <system_error>
 #include <vector>
 
+#include "covopt/internal/text.hpp"
+
 #include "covopt/core/number_format.hpp"
 #include "covopt/core/scene.hpp"
 #include "numeric_format.hpp"
@@ -164,19 +166,22 @@ std::string Advice(QuantityKind kind) {
   return "use " + UnitList(kind);
 }
 
-/// A user's text as a message echoes it: whole up to 80 bytes; a longer one (a
-/// 100,000-digit number) as its first 40 bytes (not cutting a UTF-8 character), "…" and
-/// its length, so that an error stays one readable line.
-std::string Shortened(std::string_view text) {
+/// A user's text as a message echoes it, control characters escaped
+/// (internal::EscapeControlCharacters): whole up to 80 bytes; a longer one (a 100,000-digit number)
+/// as its first 40 bytes (not cutting a UTF-8 character), "…" and its length, so that an
+/// error stays one readable line.
+std::string Shortened(std::string_view raw_text) {
   constexpr std::size_t kWhole = 80, kKept = 40;
-  if (text.size() <= kWhole) return std::string(text);
+  const std::string escaped = internal::EscapeControlCharacters(raw_text);
+  const std::string_view text = escaped;
+  if (text.size() <= kWhole) return escaped;
   std::size_t keep = kKept;
   while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80) --keep;
-  return std::string(text.substr(0, keep)) + "… (" + std::to_string(text.size()) + " characters)";
+  return std::string(text.substr(0, keep)) + "… (" + std::to_string(raw_text.size()) + " characters)";
 }
 
 std::string Quoted(std::string_view text) {
-  if (text.size() <= 80) return "'" + std::string(text) + "'";
+  if (internal::EscapeControlCharacters(text).size() <= 80) return "'" + internal::EscapeControlCharacters(text) + "'";
   const std::string shortened = Shortened(text);
   const std::size_t ellipsis = shortened.find("… (");
   return "'" + shortened.substr(0, ellipsis) + "…'" + shortened.substr(ellipsis + std::string_view("…").size());

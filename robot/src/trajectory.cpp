@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "chain_impl.hpp"
+#include "covopt/internal/text.hpp"
 
 namespace covopt::robot {
 
@@ -88,9 +89,11 @@ std::optional<double> ParseDecimal(std::string_view cell) {
   return value;
 }
 
-/// At most 40 characters of `cell`, for messages: a 100,000-digit value is not echoed.
+/// At most 40 characters of `cell`, for messages: a 100,000-digit value is not echoed; control
+/// characters escaped (a NUL byte would end the exception's message).
 std::string Excerpt(std::string_view cell) {
-  return cell.size() <= 40 ? std::string(cell) : std::string(cell.substr(0, 40)) + "...";
+  return covopt::internal::EscapeControlCharacters(cell.size() <= 40 ? cell : cell.substr(0, 40)) +
+         (cell.size() <= 40 ? "" : "...");
 }
 
 bool AllNumbers(const std::vector<std::string_view>& columns) {

@@ -1,8 +1,9 @@
 #pragma once
 /// @file text.hpp
 /// Private text helpers shared by covopt's readers of user input (the materials catalog, scene
-/// files, the CLI's flag suggestions): ASCII case folding, the edit distance and the "did you
-/// mean" candidate. Header-only and not installed: target covopt_text_internal, linked
+/// files, the CLI's flag suggestions, the quantity parser, the trajectory reader): ASCII case
+/// folding, the edit distance, the "did you mean" candidate, and the escaping of control
+/// characters in echoed values. Header-only and not installed: target covopt_text_internal, linked
 /// PRIVATE (at build time only) by covopt_materials, covopt_scene_file and the CLI.
 
 #include <algorithm>
@@ -48,6 +49,36 @@ inline std::size_t EditDistance(std::string_view a, std::string_view b) {
     }
   }
   return row[b.size()];
+}
+
+/// `text` with every control character (below 0x20, and DEL) escaped as C writes it: a line
+/// break as `\n`, a carriage return `\r`, a tab `\t`, a NUL `\0`, any other as `\xHH`. Every
+/// message that echoes a user's value (a flag's value, a link or material name, a file's cell,
+/// a path) echoes it through this, so that the message stays one line and is not cut at a NUL
+/// (std::exception::what() ends at the first NUL).
+inline std::string EscapeControlCharacters(std::string_view text) {
+  std::string escaped;
+  escaped.reserve(text.size());
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7f) {
+      escaped += c;
+      continue;
+    }
+    switch (c) {
+      case '\n': escaped += "\\n"; break;
+      case '\r': escaped += "\\r"; break;
+      case '\t': escaped += "\\t"; break;
+      case '\0': escaped += "\\0"; break;
+      default: {
+        constexpr char kHex[] = "0123456789abcdef";
+        escaped += "\\x";
+        escaped += kHex[byte >> 4];
+        escaped += kHex[byte & 0xf];
+      }
+    }
+  }
+  return escaped;
 }
 
 /// The edit distance up to which `word` is taken for a typo: max(2, |word| / 3).
