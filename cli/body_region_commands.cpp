@@ -165,7 +165,7 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
                      report::BodyContactSimulationJson(scene, MaterialName(plan), judgements, sf, head_text, warnings),
                      options.run, options.report_file, report::ReportKind::kSimulate, nullptr);
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (!plan.json) {
@@ -321,7 +321,7 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
   try {
     if (plan.csv_file && *plan.csv_file != "-") WriteFileAtomically(*plan.csv_file, csv_text());
   } catch (const OutputError& e) {
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   }
   const SimulationPlan& first = plan.coverings.front();
   const BodyContactScene first_scene = BodyContactSceneOf(first.scene, regions);
@@ -334,7 +334,7 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
                                                       rows, warnings),
                      options.run, options.report_file, report::ReportKind::kSpeedLimit, nullptr);
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (!plan.json && plan.csv_file && *plan.csv_file == "-") {
@@ -459,7 +459,7 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
                                                   input_warnings),
                      options.run, options.report_file, report::ReportKind::kOptimize, nullptr);
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (options.json) {

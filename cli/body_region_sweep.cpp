@@ -152,7 +152,7 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
       });
     }
   } catch (const OutputError& e) {
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   }
   if (csv_to_stdout) {
     out << csv;

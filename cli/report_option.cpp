@@ -38,6 +38,13 @@ void AddReportOption(CLI::App& command, std::optional<std::string>& file) {
       ->type_name("FILE.html|FILE.pdf")
       ->check(CLI::Validator(
           [](std::string& value) -> std::string {
+            if (ReportFormatFor(value) == ReportFormat::kPdf) {
+              try {
+                ChromiumTimeout();  // a bad $COVOPT_CHROMIUM_TIMEOUT is bad input, refused now
+              } catch (const InputError& e) {
+                return e.what();
+              }
+            }
             if (ReportFormatFor(value)) return {};
             return fmt::format("expected a file name ending in .html, .htm or .pdf (got '{}')", value);
           },

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstddef>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -13,18 +15,19 @@
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
 
+#include "covopt/internal/text.hpp"
 #include "errors.hpp"
 #include "output.hpp"
 #include "plot.hpp"
 
-// After the project headers: <csignal> defines macros (si_value) that clash with their
-// parameter names.
+// After the project headers: <csignal> (and <sys/wait.h>, which includes it) defines macros
+// (si_value) that clash with their parameter names.
 #include <csignal>
+#include <sys/wait.h>
 
 extern char** environ;  // NOLINT: POSIX, for posix_spawn
 
@@ -233,17 +236,26 @@ BrowserRun RunBrowser(std::vector<std::string> argv, std::vector<std::string> en
 
 /// The last `max_lines` non-empty lines of a browser's log, without Chromium's complaints
 /// about a missing D-Bus (printed on every run in a container, never the reason it failed).
-std::string LogTail(const fs::path& log, std::size_t max_lines) {
+std::vector<std::string> LogTail(const fs::path& log, std::size_t max_lines) {
   std::ifstream in(log);
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line.find(":ERROR:dbus/") != std::string::npos) continue;
     lines.push_back(line);
   }
-  const std::size_t first = lines.size() > max_lines ? lines.size() - max_lines : 0;
-  std::string tail;
-  for (std::size_t i = first; i < lines.size(); ++i) tail += "\n" + lines[i];
-  return tail;
+  if (lines.size() > max_lines) lines.erase(lines.begin(), lines.end() - static_cast<std::ptrdiff_t>(max_lines));
+  return lines;
+}
+
+/// The browser failed: one line with its status and what to do, its last lines as details.
+[[noreturn]] void BrowserFailed(const fs::path& browser, const std::string& target, const std::string& status,
+                                const fs::path& log) {
+  std::vector<std::string> tail = LogTail(log, kChromiumLogLines);
+  throw OutputError(fmt::format("chromium ('{}') failed to print '{}': {}; {}write --report FILE.html for the "
+                                "same report without a browser",
+                                browser.string(), target, status,
+                                tail.empty() ? "" : "its last lines follow; "),
+                    "chromium", std::move(tail));
 }
 
 /// A file: URL for an absolute path, every byte but unreserved ones and '/' percent-encoded.
@@ -268,8 +280,8 @@ bool IsExecutableFile(const fs::path& path) {
 std::string Describe(const BrowserRun& run, std::chrono::milliseconds timeout) {
   if (run.timed_out) {
     const auto ms = timeout.count();
-    return ms % 1000 == 0 ? fmt::format("did not finish within {} s and was killed", ms / 1000)
-                          : fmt::format("did not finish within {} ms and was killed", ms);
+    return fmt::format("did not finish within {} and was killed (COVOPT_CHROMIUM_TIMEOUT sets the limit)",
+                       ms % 1000 == 0 ? fmt::format("{} s", ms / 1000) : fmt::format("{} ms", ms));
   }
   if (WIFEXITED(run.status)) return fmt::format("exit code {}", WEXITSTATUS(run.status));
   if (WIFSIGNALED(run.status)) {
@@ -296,8 +308,23 @@ std::optional<fs::path> FindChromium() {
   return std::nullopt;
 }
 
+std::chrono::milliseconds ChromiumTimeout() {
+  const char* typed = std::getenv("COVOPT_CHROMIUM_TIMEOUT");
+  if (typed == nullptr || *typed == '\0') return kChromiumTimeout;
+  const std::string text = typed;
+  char* end = nullptr;
+  errno = 0;
+  const double seconds = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || errno != 0 || !(seconds >= 0.1 && seconds <= 3600.0)) {
+    throw InputError(fmt::format("COVOPT_CHROMIUM_TIMEOUT='{}': expected the PDF browser's time limit in seconds, "
+                                 "0.1 to 3600 (default {} s); unset it, or give e.g. 60",
+                                 covopt::internal::EscapeControlCharacters(text), kChromiumTimeout.count()));
+  }
+  return std::chrono::milliseconds(static_cast<long long>(std::llround(seconds * 1000.0)));
+}
+
 void WriteReportPdf(const fs::path& pdf, const std::string& html) {
-  WriteReportPdf(pdf, html, kChromiumTimeout);
+  WriteReportPdf(pdf, html, ChromiumTimeout());
 }
 
 void WriteReportPdf(const fs::path& pdf, const std::string& html,
@@ -347,19 +374,13 @@ void WriteReportPdf(const fs::path& pdf, const std::string& html,
       if (interrupting_signal == 0) {
         const bool exited_ok =
             !run.timed_out && WIFEXITED(run.status) && WEXITSTATUS(run.status) == 0;
-        if (!exited_ok) {
-          throw OutputError(fmt::format("chromium ('{}') failed to print '{}': {}{}",
-                                        browser->string(), target, Describe(run, timeout),
-                                        LogTail(log, 8)));
-        }
+        if (!exited_ok) BrowserFailed(*browser, target, Describe(run, timeout), log);
         std::ifstream in(printed, std::ios::binary);
         std::ostringstream content;
         content << in.rdbuf();
         bytes = content.str();
         if (bytes.size() < 5 || bytes.compare(0, 5, "%PDF-") != 0) {
-          throw OutputError(fmt::format(
-              "chromium ('{}') failed to print '{}': {}{}", browser->string(), target,
-              bytes.empty() ? "it wrote no PDF" : "what it wrote is not a PDF", LogTail(log, 8)));
+          BrowserFailed(*browser, target, bytes.empty() ? "it wrote no PDF" : "what it wrote is not a PDF", log);
         }
       }
     }  // the temporary directory is removed here, the signals still blocked

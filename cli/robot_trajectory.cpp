@@ -238,7 +238,7 @@ int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptio
                                                       warnings),
                      context, options.report_file, report::ReportKind::kTrajectory, nullptr);
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (!json) {
@@ -361,7 +361,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
                  report::TrajectoryChart({check, run.scene.scene, run.limit, *options.file, run.tip_link}));
     }
   } catch (const OutputError& e) {
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   }
 
   if (json || options.report_file) {
@@ -376,7 +376,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
                        return std::vector{report::TrajectoryChart({check, run.scene.scene, run.limit, *options.file, run.tip_link})};
                      });
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (!json && options.csv_file && *options.csv_file == "-") {

@@ -597,7 +597,7 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
       PlotTornado(*tornado_file, *elasticities, PlotFormatFor(*tornado_file) == PlotFormat::kSvg);
     }
   } catch (const OutputError& e) {
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   }
 
   if (plan.json || options.report_file) {
@@ -608,7 +608,7 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
                                                      elasticities ? &*elasticities : nullptr),
                      options.run, options.report_file, report::ReportKind::kSimulate, nullptr);
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (!plan.json) {
@@ -690,7 +690,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
     if (plan.history_file) WriteFileAtomically(*plan.history_file, HistoryCsv(*model, result.history));
     if (plan.plot_file) PlotHistory(*plan.plot_file, report);
   } catch (const OutputError& e) {
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   }
 
   if (plan.json || options.report_file) {
@@ -698,7 +698,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
       PrintAndReport(out, plan.json, report::SimulationJson(report), options.run, options.report_file,
                      report::ReportKind::kSimulate, [&] { return std::vector{report::HistoryChart(report)}; });
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (!plan.json) {

@@ -363,7 +363,7 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
       PrintAndReport(out, plan.json, report::RobustSpeedLimitTableJson(plan.quantity, *first_box, rows), options.run,
                      options.report_file, report::ReportKind::kSpeedLimit, nullptr);
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (!plan.json) {
@@ -420,7 +420,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
       RunGnuplot(*plan.plot_file, SpeedLimitChartOf(plan));
     }
   } catch (const OutputError& e) {
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   }
 
   if (plan.json || options.report_file) {
@@ -429,7 +429,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
                      options.run, options.report_file, report::ReportKind::kSpeedLimit,
                      [&] { return std::vector{SpeedLimitChartOf(plan)}; });
     } catch (const OutputError& e) {
-      return errors.Failed(e.what());
+      return errors.Failed(e);
     }
   }
   if (!plan.json && plan.csv_file && *plan.csv_file == "-") {

@@ -482,7 +482,7 @@ int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream
       });
     }
   } catch (const OutputError& e) {
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   }
 
   // The sweep: rows stream into the CSV and, for a chart, into the few numbers it draws.
@@ -514,7 +514,7 @@ int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream
     }
   } catch (const OutputError& e) {
     bar.Finish();
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   } catch (const std::invalid_argument& e) {  // the library refused the spec
     bar.Finish();
     return errors.BadInput(e.what());
@@ -539,7 +539,7 @@ int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream
       written.push_back(*options.plot_file);
     }
   } catch (const OutputError& e) {
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   }
 
   if (!csv_to_stdout) PrintSweepSummary(out, run, result, scene_line, written);

@@ -418,7 +418,7 @@ int RunDesignStudy(const WorkPrecisionOptions& options, std::ostream& out, std::
       });
     }
   } catch (const OutputError& e) {
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   }
   if (options.json) {
     Json j;
@@ -654,7 +654,7 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
       });
     }
   } catch (const OutputError& e) {
-    return errors.Failed(e.what());
+    return errors.Failed(e);
   }
 
   if (options.json) {

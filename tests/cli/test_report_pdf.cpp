@@ -31,7 +31,10 @@
 #include <csignal>
 #include <sys/wait.h>
 
+using covopt::cli::ChromiumTimeout;
 using covopt::cli::FindChromium;
+using covopt::cli::testing::CliRun;
+using covopt::cli::testing::Run;
 using covopt::cli::kChromiumMissing;
 using covopt::cli::OutputError;
 using covopt::cli::WriteReportPdf;
@@ -67,13 +70,22 @@ fs::path FakeBrowser(const TempDir& dir, const std::string& name, const std::str
   return script;
 }
 
-/// The message WriteReportPdf throws, or "" when it throws nothing.
+/// The error WriteReportPdf throws as the CLI shows it (its one-line message, then each of its
+/// details as "TOOL: LINE" on a line of its own), or "" when it throws nothing. The message
+/// itself must be one line.
+std::string Rendered(const OutputError& e) {
+  std::string text = e.what();
+  CHECK(text.find('\n') == std::string::npos);
+  for (const std::string& line : e.details()) text += "\n" + e.tool() + ": " + line;
+  return text;
+}
+
 std::string ErrorOf(const fs::path& pdf, const std::string& html,
                     std::chrono::milliseconds timeout = std::chrono::seconds(60)) {
   try {
     WriteReportPdf(pdf, html, timeout);
   } catch (const OutputError& e) {
-    return e.what();
+    return Rendered(e);
   }
   return "";
 }
@@ -210,10 +222,10 @@ TEST_CASE("report pdf: a failing browser is one error with its status and last l
         FakeBrowser(dir, "crash", "echo 'first line' >&2\necho 'Aborting: no display' >&2\nexit 3\n")
             .string());
     const std::string error = ErrorOf(dir / "report.pdf", kTinyHtml);
-    CHECK_THAT(error, StartsWith("chromium ('" + (dir / "crash").string() +
-                                 "') failed to print '" + (dir / "report.pdf").string() +
-                                 "': exit code 3\n"));
-    CHECK_THAT(error, Contains("first line\nAborting: no display"));
+    CHECK(error == "chromium ('" + (dir / "crash").string() + "') failed to print '" +
+                       (dir / "report.pdf").string() +
+                       "': exit code 3; its last lines follow; write --report FILE.html for the same report "
+                       "without a browser\nchromium: first line\nchromium: Aborting: no display");
   }
   SECTION("killed by a signal") {
     const ScopedEnv chosen("COVOPT_CHROMIUM",
@@ -246,16 +258,70 @@ TEST_CASE("report pdf: a hanging browser is killed with its whole process group"
                   "echo 'waiting for the renderer' >&2\nsleep 60 &\necho $! > '" +
                       pid_file.string() + "'\nwait\n")
           .string());
+  // The watchdog of the CLI's call (WriteReportPdf without a time), set to 1 s (default 30 s).
+  const ScopedEnv limit("COVOPT_CHROMIUM_TIMEOUT", "1");
   const auto start = std::chrono::steady_clock::now();
-  const std::string error = ErrorOf(dir / "report.pdf", kTinyHtml, std::chrono::milliseconds(700));
+  std::string error;
+  try {
+    WriteReportPdf(dir / "report.pdf", kTinyHtml);
+  } catch (const OutputError& e) {
+    error = Rendered(e);
+  }
   const auto took = std::chrono::steady_clock::now() - start;
-  CHECK_THAT(error, Contains(": did not finish within 700 ms and was killed\n"
-                             "waiting for the renderer"));
-  CHECK(took < std::chrono::seconds(30));  // the watchdog, not sleep's 60 s, ended it
+  CHECK_THAT(error, Contains(": did not finish within 1 s and was killed (COVOPT_CHROMIUM_TIMEOUT sets the "
+                             "limit); its last lines follow; write --report FILE.html for the same report "
+                             "without a browser\nchromium: waiting for the renderer"));
+  CHECK(took < std::chrono::seconds(20));  // the 1 s watchdog, not the 30 s default nor sleep's 60 s
   const pid_t helper = WaitForPid(pid_file);
   CHECK_FALSE(ProcessAlive(helper));
   CHECK_FALSE(fs::exists(dir / "report.pdf"));
   CHECK(Entries(tmp.path()).empty());
+}
+
+TEST_CASE("report pdf: the watchdog is 30 s, or COVOPT_CHROMIUM_TIMEOUT's seconds in [0.1, 3600]") {
+  {
+    const ScopedEnv unset("COVOPT_CHROMIUM_TIMEOUT", "");
+    CHECK(ChromiumTimeout() == std::chrono::seconds(30));
+  }
+  {
+    const ScopedEnv limit("COVOPT_CHROMIUM_TIMEOUT", "2.5");
+    CHECK(ChromiumTimeout() == std::chrono::milliseconds(2500));
+  }
+  for (const char* bad : {"0", "-1", "abc", "1e9", "nan", "30s", "inf"}) {
+    INFO(bad);
+    const ScopedEnv limit("COVOPT_CHROMIUM_TIMEOUT", bad);
+    CHECK_THROWS_WITH(ChromiumTimeout(), Contains("COVOPT_CHROMIUM_TIMEOUT='" + std::string(bad) +
+                                                  "': expected the PDF browser's time limit in seconds, 0.1 to 3600"));
+    // On the command line: bad input (exit 2) before the run, for a PDF report only.
+    const TempDir dir;
+    const CliRun run = Run({"simulate", "--report", (dir / "r.pdf").string()});
+    CHECK(run.exit_code == 2);
+    CHECK(run.out.empty());
+    CHECK_THAT(run.err, Contains("COVOPT_CHROMIUM_TIMEOUT='" + std::string(bad) + "'"));
+    CHECK(SplitLines(run.err).size() == 1);
+    CHECK(Run({"simulate", "--report", (dir / "r.html").string()}).exit_code == 0);
+  }
+}
+
+TEST_CASE("report pdf: on the command line a failing browser is one error line, its lines indented below") {
+  TempDir dir, tmp;
+  const ScopedEnv tmpdir("TMPDIR", tmp.path().string());
+  const ScopedEnv chosen(
+      "COVOPT_CHROMIUM",
+      FakeBrowser(dir, "crash",
+                  "for i in 1 2 3 4 5 6 7 8 9; do echo \"noise $i\" >&2; done\n"
+                  "printf 'Aborting:\\tno display\\033[0m\\n' >&2\nexit 3\n")
+          .string());
+  const CliRun run = Run({"simulate", "--report", (dir / "r.pdf").string()});
+  CHECK(run.exit_code == 1);
+  const std::vector<std::string> lines = SplitLines(run.err);
+  REQUIRE(lines.size() == 7);  // the error and the browser's last 6 lines
+  CHECK_THAT(lines[0], StartsWith("covopt simulate: error: chromium ('" + (dir / "crash").string() +
+                                  "') failed to print '" + (dir / "r.pdf").string() + "': exit code 3; "));
+  CHECK(lines[1] == "  chromium: noise 5");
+  CHECK(lines[5] == "  chromium: noise 9");
+  CHECK(lines[6] == "  chromium: Aborting:\\tno display\\x1b[0m");  // control characters escaped
+  CHECK_FALSE(fs::exists(dir / "r.pdf"));
 }
 
 TEST_CASE("report pdf: SIGTERM while the browser prints ends the process, leaving nothing") {
