@@ -52,7 +52,17 @@ class Result:
         provenance, made by the library from ``to_dict()`` (without ``history``) exactly as the
         CLI's ``--report`` makes it from its ``--json``. Results of simulate, worst_case,
         injury_probability, optimize, robust_optimize, speed_limit, check_trajectory and audit
-        have one; others raise TypeError."""
+        have one; others raise TypeError. `path` must end in .html or .htm (any case), else
+        ValueError: there is no to_pdf (a PDF is printed by a browser, which the CLI's
+        ``--report FILE.pdf`` runs; docs/guide/python.md shows how)."""
+        try:
+            suffix = pathlib.PurePath(path).suffix.lower()
+        except TypeError:  # not a str or os.PathLike
+            suffix = None
+        if suffix not in (".html", ".htm"):
+            raise ValueError(f"to_html: path must be a file name ending in .html or .htm (got {path!r}); "
+                             "for a PDF, print the HTML with a browser or run the CLI with --report FILE.pdf "
+                             "(docs/guide/python.md)")
         if self._report_kind is None:
             raise TypeError(f"{self._name} has no report (simulate, optimize, speed_limit, check_trajectory "
                             "and audit results have one)")

@@ -109,6 +109,18 @@ def test_to_html_writes_the_report(tmp_path):
         covopt.max_safe_speed().to_html(tmp_path / "x.html")
 
 
+@pytest.mark.parametrize("name", ["x.pdf", "x.PDF", "x.txt", "x", "report.html.bak"])
+def test_to_html_refuses_a_name_that_is_not_html(tmp_path, name):
+    """to_html writes HTML: a .pdf (or any other) name is refused, naming the argument and the
+    value, and nothing is written (issue 33)."""
+    with pytest.raises(ValueError, match=r"to_html: path must be a file name ending in \.html or \.htm "
+                                         r"\(got .*" + re.escape(name) + r"'\)"):
+        covopt.simulate().to_html(tmp_path / name)
+    assert list(tmp_path.iterdir()) == []
+    for accepted in ("y.HTML", "y.htm"):
+        assert covopt.simulate().to_html(str(tmp_path / accepted)) == str(tmp_path / accepted)
+
+
 def _figures(html):
     """The report's chart figures, as HTML text."""
     return re.findall(r'<figure class="chart".*?</figure>', html, flags=re.S)
