@@ -251,11 +251,10 @@ std::vector<std::string> LogTail(const fs::path& log, std::size_t max_lines) {
 [[noreturn]] void BrowserFailed(const fs::path& browser, const std::string& target, const std::string& status,
                                 const fs::path& log) {
   std::vector<std::string> tail = LogTail(log, kChromiumLogLines);
-  throw OutputError(fmt::format("chromium ('{}') failed to print '{}': {}; {}write --report FILE.html for the "
-                                "same report without a browser",
-                                browser.string(), target, status,
-                                tail.empty() ? "" : "its last lines follow; "),
-                    "chromium", std::move(tail));
+  const std::string message = fmt::format(
+      "chromium ('{}') failed to print '{}': {}; {}write --report FILE.html for the same report without a browser",
+      browser.string(), target, status, tail.empty() ? "" : "its last lines follow; ");
+  throw OutputError(message, "chromium", std::move(tail));
 }
 
 /// A file: URL for an absolute path, every byte but unreserved ones and '/' percent-encoded.

@@ -44,7 +44,8 @@ std::vector<std::string> Fr3Audit(std::vector<std::string> more) {
 }  // namespace
 
 TEST_CASE("an echoed value's control characters and NUL bytes are escaped", "[bad-input][messages]") {
-  CHECK(ShortenLongWords(std::string("a\nb\tc\rd\0e\x1b[0m\x7f", 13)) == "a\\nb\\tc\\rd\\0e\\x1b[0m\\x7f");
+  constexpr char kRaw[] = "a\nb\tc\rd\0e\x1b[0m\x7f";
+  CHECK(ShortenLongWords(std::string(kRaw, sizeof kRaw - 1)) == "a\\nb\\tc\\rd\\0e\\x1b[0m\\x7f");
   CHECK(ShortenLongWords("plain text, 'quoted' and \xc3\xa9") == "plain text, 'quoted' and \xc3\xa9");
 }
 
