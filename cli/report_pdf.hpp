@@ -18,9 +18,10 @@ inline constexpr std::string_view kChromiumMissing =
     "--report FILE.html";
 
 /// How long a Chromium may take to print a report before it is killed, unless
-/// $COVOPT_CHROMIUM_TIMEOUT says otherwise: a report prints in 1.2-1.4 s (docs/guide/report.md),
-/// so 30 s is over 20 times that, and a browser stuck on a missing display or a dead profile
-/// lock is not waited for two minutes.
+/// $COVOPT_CHROMIUM_TIMEOUT says otherwise: a report prints in 1.2-1.4 s, 2.7-3.8 s for the whole
+/// command on a loaded 2-core machine (docs/guide/report.md), so 30 s is ten times the worst of
+/// these, and a browser stuck on a missing display or a dead profile lock is not waited for
+/// two minutes.
 inline constexpr std::chrono::seconds kChromiumTimeout{30};
 
 /// The most lines of a failing browser's output shown under the error (OutputError::details).
