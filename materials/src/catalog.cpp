@@ -95,7 +95,7 @@ const Material* Catalog::Find(std::string_view name) const noexcept {
 
 std::string Catalog::MissingMaterialMessage(std::string_view name) const {
   const std::vector<std::string> suggestions = Suggest(name);
-  std::string message = "no material '" + std::string(name) + "' in the catalog";
+  std::string message = "no material '" + covopt::internal::EscapeControlCharacters(name) + "' in the catalog";
   if (suggestions.empty()) return message + "; run 'covopt materials list' for the names";
   message += "; did you mean ";
   for (std::size_t i = 0; i < suggestions.size(); ++i) {

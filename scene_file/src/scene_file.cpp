@@ -70,7 +70,8 @@ struct Reading {
   const std::vector<std::string_view> keys = KeysOf(table_name);
   const auto suggestion = Closest(key.str(), keys);
   throw std::invalid_argument(fmt::format(
-      "{}: unknown key '{}.{}'; {}", Where(source, key.source()), table_name, key.str(),
+      "{}: unknown key '{}.{}'; {}", Where(source, key.source()), table_name,
+      covopt::internal::EscapeControlCharacters(key.str()),
       suggestion ? fmt::format("did you mean '{}.{}'?", table_name, *suggestion)
                  : fmt::format("[{}] takes {}", table_name, JoinQuoted(keys))));
 }
@@ -217,7 +218,8 @@ std::vector<std::string> ApplySceneToml(std::string_view toml_text, std::string_
                           : fmt::format("; the tables are {}", JoinQuoted(table_names));
       }
       throw std::invalid_argument(
-          fmt::format("{}: unknown table '{}'{}", Where(source, key.source()), name, hint));
+          fmt::format("{}: unknown table '{}'{}", Where(source, key.source()),
+                      covopt::internal::EscapeControlCharacters(name), hint));
     }
     if (!node.is_table()) {
       throw std::invalid_argument(fmt::format("{}: '{}' must be a table ([{}]), got {}",

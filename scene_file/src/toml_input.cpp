@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "covopt/internal/text.hpp"
 #include "covopt/internal/toml_text.hpp"
 
 namespace covopt::scene_file::internal {
@@ -59,7 +60,7 @@ std::string NumberText(const toml::node& node) {
 }
 
 std::string Shown(const toml::node& node) {
-  if (node.is_string()) return fmt::format("'{}'", **node.as_string());
+  if (node.is_string()) return fmt::format("'{}'", covopt::internal::EscapeControlCharacters(**node.as_string()));
   return NumberText(node);
 }
 

@@ -78,6 +78,23 @@ TEST_CASE("a NUL byte in a trajectory cell does not cut the message", "[bad-inpu
   CHECK_THAT(run.err, Contains("in decimal"));  // the message goes on past the NUL
 }
 
+TEST_CASE("a NUL in a scene file's value or key does not cut the message", "[bad-input][messages]") {
+  const TempDir dir;
+  const CliRun material =
+      Run({"simulate", "--scene", dir.Write("m.toml", "[covering]\nmaterial = \"PORON\\u0000x\"\n").string()});
+  RequireOneLineBadInput(material);
+  CHECK_THAT(material.err, Contains("no material 'PORON\\0x' in the catalog"));
+  const CliRun speed = Run({"simulate", "--scene", dir.Write("s.toml", "[robot]\nspeed = \"2\\u0000m/s\"\n").string()});
+  RequireOneLineBadInput(speed);
+  CHECK_THAT(speed.err, Contains("(got '2\\0m/s')"));
+  const CliRun key = Run({"simulate", "--scene", dir.Write("k.toml", "[robot]\n\"spe\\u0000ed\" = 2\n").string()});
+  RequireOneLineBadInput(key);
+  CHECK_THAT(key.err, Contains("unknown key 'robot.spe\\0ed'; did you mean 'robot.speed'?"));
+  const CliRun table = Run({"simulate", "--scene", dir.Write("t.toml", "[\"ro\\u0000bot\"]\nspeed = 2\n").string()});
+  RequireOneLineBadInput(table);
+  CHECK_THAT(table.err, Contains("unknown table 'ro\\0bot'"));
+}
+
 TEST_CASE("audit --design's thickness flags name the flag, the value and the range", "[bad-input][messages]") {
   SECTION("--max-thickness 0") {
     const CliRun run = Run(Fr3Audit({"--design", "--max-thickness", "0"}));
