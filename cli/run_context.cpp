@@ -12,21 +12,7 @@
 namespace covopt::cli {
 namespace {
 
-/// Appends the input files `command`'s flags name, then those of its parsed subcommands.
-void CollectInputFiles(const CLI::App& command, std::vector<report::InputFile>& files) {
-  for (const CLI::Option* option : command.get_options()) {
-    if (option->count() == 0) continue;
-    for (const std::string& name : option->get_lnames()) {
-      const std::string_view role = InputFileRole("--" + name);
-      if (role.empty()) continue;
-      for (const std::string& value : option->results()) files.push_back({std::string(role), value});
-      break;
-    }
-  }
-  for (const CLI::App* sub : command.get_subcommands()) CollectInputFiles(*sub, files);
-}
-
-/// A file-naming flag's value, for OutputPathClash.
+/// A file-naming flag's value: an input (InputFileRole) or an output (IsOutputFileFlag).
 struct NamedFile {
   std::string flag;
   std::string path;
@@ -43,7 +29,7 @@ void CollectNamedFiles(const CLI::App& command, std::vector<NamedFile>& files) {
       const bool output = IsOutputFileFlag(flag);
       if (!output && InputFileRole(flag).empty()) continue;
       for (const std::string& value : option->results()) {
-        if (value != "-") files.push_back({flag, value, output});
+        if (!output || value != "-") files.push_back({flag, value, output});  // an output '-' is stdout
       }
       break;
     }
@@ -102,7 +88,11 @@ std::string_view InputFileRole(std::string_view long_flag) noexcept {
 RunContext MakeRunContext(const CLI::App& app, std::span<const char* const> argv) {
   RunContext run;
   run.command_line = report::CommandLine(argv);
-  CollectInputFiles(app, run.input_files);
+  std::vector<NamedFile> files;
+  CollectNamedFiles(app, files);
+  for (const NamedFile& file : files) {
+    if (!file.output) run.input_files.push_back({std::string(InputFileRole(file.flag)), file.path});
+  }
   return run;
 }
 
