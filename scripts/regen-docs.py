@@ -264,7 +264,7 @@ def run_python(block: Block, scratch: Path, verbose: bool) -> Outcome:
 TIME_TOKEN = re.compile(r"\d+(\.\d+)?(e[-+]?\d+)? ?(ms|s|µs)\b")
 JSON_SECONDS = re.compile(r'("seconds": )[0-9.e+-]+')
 JSON_COMMIT = re.compile(r'("commit": ")[0-9a-f]{40}(-dirty)?(")')
-WORKPRECISION_TIME = re.compile(r"(?<=\s)\d+\.\d\d(?=\s)")  # the µs/impact column
+WORKPRECISION_TIME = re.compile(r"\s+\d+\.\d\d(?=\s)")  # the µs/impact column, with its padding
 
 
 def masked(lines: list[str]) -> list[str]:
@@ -279,7 +279,7 @@ def masked(lines: list[str]) -> list[str]:
             line = JSON_SECONDS.sub(r"\1#", line)
             line = JSON_COMMIT.sub(r"\1#\3", line)
             if in_workprecision:
-                line = WORKPRECISION_TIME.sub("#", line)
+                line = WORKPRECISION_TIME.sub(" #", line)  # a wider time shifts no column
         out.append(line)
     return out
 
