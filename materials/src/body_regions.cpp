@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include <toml++/toml.h>
+#include "covopt/internal/toml.hpp"
 
 #include "builtin_body_regions.hpp"
 #include "covopt/core/number_format.hpp"

@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include <toml++/toml.h>
+#include "covopt/internal/toml.hpp"
 #include <urdf_model/model.h>
 
 #include "chain_impl.hpp"

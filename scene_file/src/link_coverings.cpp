@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include <fmt/format.h>
-#include <toml++/toml.h>
+#include "covopt/internal/toml.hpp"
 
 #include "covopt/core/quantity.hpp"
 #include "covopt/internal/text.hpp"

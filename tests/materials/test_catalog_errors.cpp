@@ -571,3 +571,22 @@ TEST_CASE("a catalog file larger than 1 MiB, or an endless device, is refused at
   CHECK(covopt::materials::Catalog::FromTomlFile(big).empty());
   std::filesystem::remove(big);
 }
+
+// toml++ 3.3.0 reached __builtin_unreachable() (undefined behaviour: UBSan aborts, an optimised
+// build may do anything) when it asked whether a code point of U+00A1-U+0499, U+2C5E-U+3057 or
+// U+FB26-U+FEFE is whitespace (covopt/internal/toml.hpp). Each such character where whitespace
+// may stand is now an ordinary syntax error at its place.
+TEST_CASE("A non-ASCII character where whitespace may stand is a syntax error, not undefined behaviour",
+          "[catalog][errors]") {
+  for (const char* character : {"\xd0\x80" /* U+0400 */, "\xc2\xa1" /* U+00A1 */,
+                                "\xe3\x80\x81" /* U+3001 */, "\xef\xbc\x80" /* U+FF00 */,
+                                "\xef\xac\xa6" /* U+FB26 */}) {
+    const std::string c(character);
+    for (const std::string& text : {"[[material]]" + c + "\n", "[[material]]\nname =" + c + " \"x\"\n",
+                                    c + "[[material]]\n"}) {
+      CAPTURE(text);
+      const CatalogError error = ErrorFor(text);
+      CHECK_THAT(error.what(), StartsWith("mine.toml:"));
+    }
+  }
+}
