@@ -161,7 +161,7 @@ def audit_many(trajectories, urdf, tip, base=None, *, scene=None, urdf_text=None
     if errors not in ("collect", "raise"):
         raise ValueError(f"errors: expected \"collect\" or \"raise\" (got {errors!r})")
     if not isinstance(processes, bool):
-        raise TypeError(f"processes: expected True or False (got {processes!r})")
+        raise ValueError(f"processes: expected True or False (got {processes!r})")
     items = _expand(trajectories)
     urdf = os.fspath(urdf) if urdf is not None else None
     if client is None and scheduler_address is None and processes:
