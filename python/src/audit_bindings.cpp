@@ -96,7 +96,14 @@ optim::AuditCovering CoveringOf(const scene_file::LinkCoveringEntry& entry) {
 /// link_coverings=: a link-covering file (str or os.PathLike), or a dict {link: {material or
 /// modulus (and poisson), thickness}} with the file's keys and values.
 std::vector<scene_file::LinkCoveringEntry> ReadLinkCoverings(const py::object& value) {
-  if (!py::isinstance<py::dict>(value)) return scene_file::ReadLinkCoverings(Path(value));
+  if (!py::isinstance<py::dict>(value)) {
+    if (!py::isinstance<py::str>(value) && !py::hasattr(value, "__fspath__")) {
+      throw std::invalid_argument("link_coverings: expected a link-covering file (a path) or a dict {link: {material "
+                                  "or modulus (and poisson), thickness}} (got " +
+                                  py::repr(value).cast<std::string>() + ")");
+    }
+    return scene_file::ReadLinkCoverings(Path(value));
+  }
   std::vector<scene_file::LinkCoveringEntry> entries;
   for (const auto& [key, item] : value.cast<py::dict>()) {
     scene_file::LinkCoveringEntry entry;
@@ -105,6 +112,10 @@ std::vector<scene_file::LinkCoveringEntry> ReadLinkCoverings(const py::object& v
       throw std::invalid_argument("link_coverings: " + *problem);
     }
     entry.where = "link_coverings['" + entry.link + "']";
+    if (!py::isinstance<py::dict>(item)) {
+      throw std::invalid_argument(entry.where + ": expected a dict of material or modulus (and poisson), thickness (got " +
+                                  py::repr(item).cast<std::string>() + ")");
+    }
     const py::dict fields = item.cast<py::dict>();
     for (const auto& [name, _] : fields) {
       const std::string k = py::str(name).cast<std::string>();
@@ -117,7 +128,11 @@ std::vector<scene_file::LinkCoveringEntry> ReadLinkCoverings(const py::object& v
     entry.thickness_m = ReadSceneQuantity(fields["thickness"], quantity_specs::kCoveringThickness,
                                           entry.where + " thickness");
     if (fields.contains("material")) {
-      entry.material = py::str(fields["material"]).cast<std::string>();
+      if (!py::isinstance<py::str>(fields["material"])) {
+        throw std::invalid_argument(entry.where + " material: expected a catalog name (a string), got " +
+                                    py::repr(fields["material"]).cast<std::string>());
+      }
+      entry.material = fields["material"].cast<std::string>();
       if (auto problem = scene_file::NameProblem("material name", *entry.material)) {
         throw std::invalid_argument(entry.where + " material: " + *problem);
       }

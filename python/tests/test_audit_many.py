@@ -213,3 +213,14 @@ def test_the_guides_link_coverings_example_is_read(tmp_path):
                            "--link-coverings", str(example), "--body-region", "chest", "--contact-area", "1cm2",
                            "--json"], capture_output=True, text=True, check=False)
     assert done.returncode == 0, done.stderr
+
+
+@pytest.mark.parametrize("link_coverings, match", [
+    ({"fr3_link6": 5}, r"^link_coverings\['fr3_link6'\]: expected a dict of material or modulus"),
+    ({"fr3_link6": {"material": 5, "thickness": "5mm"}},
+     r"^link_coverings\['fr3_link6'\] material: expected a catalog name \(a string\), got 5"),
+    (5, r"^link_coverings: expected a link-covering file \(a path\) or a dict"),
+])
+def test_link_coverings_of_another_type_is_a_value_error_naming_it(link_coverings, match):
+    with pytest.raises(ValueError, match=match):
+        covopt.audit(FR3, "fr3_link8", PICK, scene=covopt.Scene(**SCENE), link_coverings=link_coverings, **QUICK)
