@@ -29,7 +29,7 @@ constexpr std::array<std::string_view, 5> kLinkKeys{"name", "material", "modulus
 
 LinkCoveringEntry ReadLink(const toml::table& table, const std::string& source, std::size_t index) {
   LinkCoveringEntry entry;
-  entry.where = Where(source, table.source());
+  entry.where = Printable(Where(source, table.source()));  // echoed by the callers: one line
   if (const toml::key* key = FirstUnknownKey(table, kLinkKeys)) {
     const auto suggestion = Closest(key->str(), std::vector<std::string_view>(kLinkKeys.begin(), kLinkKeys.end()));
     throw std::invalid_argument(fmt::format("{}: unknown key '{}' in [[link]] {}; {}", Where(source, key->source()),

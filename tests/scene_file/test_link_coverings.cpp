@@ -93,4 +93,7 @@ TEST_CASE("link coverings: every message is one line, whatever it echoes", "[lin
   } catch (const std::invalid_argument& e) {
     CHECK_THAT(std::string(e.what()), StartsWith("dir\\nlinks.toml:1:1: [[link]] 1 needs name"));
   }
+  // The place an accepted entry keeps for the callers' messages is one line too.
+  const auto entries = ParseLinkCoverings("[[link]]\nname = \"l\"\nthickness = 0\n", "dir\nlinks.toml");
+  CHECK(entries.front().where == "dir\\nlinks.toml:1:1");
 }
