@@ -20,7 +20,7 @@ release the GIL.
 from . import _body_regions, _covopt, _provenance
 from ._body_regions import (BodyContact, BodyRegionDesign, BodyRegionSpeedLimitTable, BodyRegionSweep,
                             BodyRegionTrajectoryCheck)
-from ._audit import Audit, audit, audit_many
+from ._audit import Audit, AuditFailure, AuditManyError, audit, audit_many
 from ._errors import ComputationError
 from ._results import (ContactMotion, Design, Material, ReflectedMass, Result, RobustDesign,
                        RobustSimulation, Sensitivities, Simulation, SpeedLimit, SpeedLimitTable,
@@ -34,7 +34,8 @@ __all__ = ["Scene", "Result", "simulate", "sweep", "optimize", "materials", "mat
            "ComputationError", "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "iso_robot_mass",
            "contact_motion", "check_trajectory", "worst_case", "injury_probability",
            "sensitivities", "robust_optimize", "load_scene", "BodyContact", "BodyRegionSpeedLimitTable",
-           "BodyRegionDesign", "BodyRegionTrajectoryCheck", "BodyRegionSweep", "Audit", "audit", "audit_many"]
+           "BodyRegionDesign", "BodyRegionTrajectoryCheck", "BodyRegionSweep", "Audit", "AuditFailure", "AuditManyError",
+           "audit", "audit_many"]
 
 
 def _scene(scene, ranged=False):

@@ -158,9 +158,24 @@ std::optional<py::object> Option(const py::dict& kwargs, const char* name) {
   return value;
 }
 
+bool Bool(const py::handle& value, const char* name) {
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
+  // numpy's bool (np.True_, a 0-d boolean array) is a bool too; "yes", 1 or a list are not.
+  if (py::hasattr(value, "dtype") && py::hasattr(value, "ndim") && value.attr("ndim").cast<int>() == 0 &&
+      py::str(value.attr("dtype").attr("kind")).cast<std::string>() == "b") {
+    return PyObject_IsTrue(value.ptr()) == 1;
+  }
+  std::string shown = py::repr(value).cast<std::string>();
+  if (shown.size() > 40) {
+    shown.resize(40);
+    shown += "...";  // appended: GCC 12's LTO warns on substr(...) + "..." (robot_bindings.cpp)
+  }
+  throw std::invalid_argument(std::string(name) + ": expected True or False (got " + shown + ")");
+}
+
 bool Flag(const py::dict& kwargs, const char* name) {
   const auto value = Option(kwargs, name);
-  return value && py::bool_(*value).cast<bool>();
+  return value && Bool(*value, name);
 }
 
 namespace {

@@ -2,7 +2,7 @@
 /// @file text.hpp
 /// Private text helpers shared by covopt's readers of user input (the materials catalog, scene
 /// files, the CLI's flag suggestions): ASCII case folding, the edit distance and the "did you
-/// mean" candidate. Header-only and not installed: target covopt_text_internal, linked
+/// mean" candidate, a text made printable on one line. Header-only and not installed: target covopt_text_internal, linked
 /// PRIVATE (at build time only) by covopt_materials, covopt_scene_file and the CLI.
 
 #include <algorithm>
@@ -71,6 +71,32 @@ inline std::optional<std::string_view> Closest(std::string_view word,
   }
   if (best && best_distance <= TypoTolerance(word)) return best;
   return std::nullopt;
+}
+
+/// `text` with every control character escaped, so that echoing it keeps a message on one line
+/// and whole: a newline becomes the two characters \n (likewise \r, \t), another control byte
+/// (NUL, ESC, DEL) \xHH; other bytes stay as they are.
+inline std::string Printable(std::string_view text) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      out += "\\x";
+      out += kHex[byte >> 4];
+      out += kHex[byte & 0xf];
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace covopt::internal
