@@ -589,4 +589,10 @@ TEST_CASE("A non-ASCII character where whitespace may stand is a syntax error, n
       CHECK_THAT(error.what(), StartsWith("mine.toml:"));
     }
   }
+  // Upstream's own case: a line-ending backslash in a multi-line string skips the whitespace
+  // that follows, and asks of U+00A7 whether it is some.
+  const Catalog catalog =
+      Catalog::FromTomlString(With("name", "name = \"\"\"\\\n\xc2\xa7 foam\"\"\""), "mine.toml");
+  REQUIRE(catalog.size() == 1);
+  CHECK(catalog.materials().front().name == "\xc2\xa7 foam");
 }
