@@ -296,6 +296,8 @@ py::dict TimePathDict(const BodyContactResult& r) {
   d["energy_transferred_J"] = r.energy_transferred_J;
   d["contact_duration_s"] = OrNone(r.contact_duration_s);
   d["rebound_speed_m_per_s"] = r.rebound_speed_m_per_s;
+  d["energy_residual"] = OrNone(r.energy_residual);
+  d["warnings"] = r.WarningMessages();
   return d;
 }
 
@@ -407,9 +409,12 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
                               std::string(ToString(timed->status)) + "): " + timed->message,
                           std::string(ToString(timed->status)));
   }
+  std::vector<std::string> warnings = ContactWarnings(inputs, scene);
+  for (std::string& w : report::TimePathWarnings(judgements.front(), timed ? &*timed : nullptr)) {
+    warnings.push_back(std::move(w));
+  }
   py::dict d = JsonToPython(report::BodyContactSimulationJson(scene, MaterialName(inputs), judgements,
-                                                              inputs.safety_factor, std::nullopt,
-                                                              ContactWarnings(inputs, scene)));
+                                                              inputs.safety_factor, std::nullopt, warnings));
   if (timed) d["time_path"] = TimePathDict(*timed);
   if (options.record_history) {
     py::dict columns;

@@ -187,9 +187,28 @@ struct BodyContactResult {
   /// Speed of separation [m/s]: the time path's; the impact speed on the exact path (the
   /// contact is conservative).
   double rebound_speed_m_per_s = 0.0;
+  /// The time path's own accuracy check [-] (as ImpactResult::energy_residual), empty on the
+  /// exact path and for a failed run. The contact conserves energy, so for an exact solution
+  ///     max( |(body_energy_J + covering_energy_J) / (½ mu v0²) - 1|,  |rebound speed / v0 - 1| )
+  /// vanishes (the second term only with the rebound: not from SolveBodyContactPeaks). A braking
+  /// robot: the energy balance with the brake's work, at maximum compression and at separation,
+  ///     max | ΔK + U + W | / (½ mu v0²),  K = ½ m_R v_R² + ½ m_H v_H² (v_H = 0 clamped).
+  /// Above max(100 rtol, 1e-9) `warnings` says the integrator did not keep its tolerance.
+  std::optional<double> energy_residual;
+  /// The time path's warnings: ValidityCode::kToleranceNotKept ("the time path did not keep its
+  /// tolerance: energy residual ... exceeds max(100 rtol, 1e-9) = ...") where energy_residual
+  /// exceeds that bound, as the head's time path; the peaks and the rebound of such a result
+  /// are not within the tolerance asked for. Empty on the exact path.
+  std::vector<ValidityWarning> warnings;
   /// The time-path history (with SolveOptions::record_history).
   std::vector<BodyContactSample> history;
   bool ok() const noexcept { return status == SolveStatus::kSuccess; }
+  /// The messages of `warnings`, in order.
+  std::vector<std::string> WarningMessages() const {
+    std::vector<std::string> messages;
+    for (const ValidityWarning& w : warnings) messages.push_back(w.message);
+    return messages;
+  }
 };
 
 /// Solves one body-region contact. kAuto and kExact take the exact path (a record_history
