@@ -611,6 +611,7 @@ void CheckSurfaceSize(const std::vector<LinkSurface>& links, double spacing) {
 }  // namespace
 
 SurfaceFileShapes ParseSurfaceFile(const std::string& toml_text, const std::string& source_name) {
+  covopt::internal::RefuseTomlUndefinedCharacters(toml_text, source_name);  // toml++ 3.3's UB
   toml::table root;
   try {
     root = toml::parse(toml_text, source_name);

@@ -224,6 +224,25 @@ TEST_CASE("only the shapes a surface uses are held to the floor", "[robot][surfa
              Catch::Contains("link 'hand' <collision> 1: <sphere radius>"));
 }
 
+TEST_CASE("a surface file's character that toml++ 3.3 cannot classify is refused, not undefined behaviour", "[robot][surface][sizes]") {
+  // Found by fuzz_surface_file under UBSan: toml++ 3.3.0 reaches __builtin_unreachable() when
+  // it asks whether U+0424 is whitespace (outside strings and comments, and in multi-line
+  // basic strings).
+  const std::string points = "points = [ { at_m = [0, 0, 0], radius_m = 0.01 } ]\n";
+  CHECK_THAT(MessageOf([&] { covopt::robot::ParseSurfaceFile("[[link]]\nname = \"arm\" \xd0\xa4\n" + points, "u.toml"); }),
+             Catch::Contains("u.toml:2:14: the character U+0424 is not allowed outside a string or a comment"));
+  CHECK_THAT(MessageOf([&] { covopt::robot::ParseSurfaceFile("[[link]]\nname = \"\"\"\\\n\xc2\xa7\"\"\"\n" + points, "m.toml"); }),
+             Catch::Contains("m.toml:3:1: the character U+00A7"));
+  // In comments and one-line strings any character is fine.
+  CHECK(covopt::robot::ParseSurfaceFile("# \xd0\xa4 \xc2\xb5m\n[[link]]\nname = \"arm\" # \xc2\xa7\n" + points, "c.toml")
+            .links.size() == 1);
+  CHECK(covopt::robot::ParseSurfaceFile("[[link]]\nname = 'a\xd0\xa4'\n" + points, "s.toml").links.front().link ==
+        "a\xd0\xa4");
+  // U+3000 has its case in toml++'s table: toml++ refuses it itself.
+  CHECK_THAT(MessageOf([&] { covopt::robot::ParseSurfaceFile("[[link]]\nname = \"arm\"\xe3\x80\x80\n" + points, "w.toml"); }),
+             Catch::Contains("w.toml:2:13: not a TOML surface file"));
+}
+
 TEST_CASE("a surface file's radius below 0.1 mm is refused naming file:line:column", "[robot][surface][sizes]") {
   const std::string urdf = TwoLinkUrdf("");
   const auto message = [&](const std::string& name, const std::string& toml) {
