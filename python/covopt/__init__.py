@@ -104,8 +104,9 @@ def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=No
     x, y: ``(quantity, values)``; the quantity is a scene keyword or CLI flag name
     ("speed", "robot_mass" or "robot-mass", "covering_thickness", ...), the values SI
     numbers (a list or numpy array; math.inf, "fixed" or "flat" where a body may be fixed
-    or the robot flat). threads: worker threads, None or 0 = all cores; results are the
-    same for any number.
+    or the robot flat); at most 100000 values per axis and 1000000 points in all, as ``covopt
+    sweep`` (a ValueError before anything is allocated; an iterator is read up to the cap).
+    threads: worker threads, None or 0 = all cores; results are the same for any number.
 
     Returns a Sweep: ``x`` (and ``y``) as numpy arrays with ``x_quantity`` (``y_quantity``);
     one numpy array per result, ``a[i, j]`` at ``x[i]``, ``y[j]`` (``a[i]`` with one axis):
@@ -285,8 +286,8 @@ def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
     """A table of limits, as ``covopt speed-limit --json``: solve_for="speed" gives the max
     safe speed for each robot mass in values [kg] (math.inf or "fixed" for a fixed robot;
     default the scene's), solve_for="mass" the max safe reflected mass for each speed in
-    values [m/s] (default the scene's). materials: a catalog name or a list of names, one
-    block of rows each (default the scene's covering).
+    values [m/s] (default the scene's; at most 100000, as the CLI's lists). materials: a catalog
+    name or a list of names, one block of rows each (default the scene's covering).
 
     oracle, method, rtol, max_steps: as optimize's.
 

@@ -45,6 +45,7 @@
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
 #include "covopt/scene_file/fields.hpp"
+#include "bounded.hpp"
 #include "report_charts.hpp"
 #include "scene_keywords.hpp"
 
@@ -468,7 +469,8 @@ SweepAxis ReadAxis(const py::handle& axis, const char* keyword) {
   py::object values = pair[1];
   if (py::isinstance<py::str>(values)) fail("the values must be a sequence of numbers");
   if (!py::isinstance<py::iterable>(values)) fail("the values must be a sequence of numbers");
-  for (const py::handle value : values) {
+  ForEachBounded(values, kMaxSweepAxisValues, std::string(keyword) + " (" + result.quantity + ")",
+                 [&](const py::handle value) {
     if (py::isinstance<py::str>(value)) {
       const std::string word = value.cast<std::string>();
       if (word != "fixed" && word != "flat") fail("a value is a number in SI, 'fixed' or 'flat' (not '" + word + "')");
@@ -479,7 +481,7 @@ SweepAxis ReadAxis(const py::handle& axis, const char* keyword) {
     } else {
       fail("a value is a number in SI, 'fixed' or 'flat' (not " + Repr(value) + ")");
     }
-  }
+  });
   return result;
 }
 
@@ -501,7 +503,9 @@ py::dict SweepGrid(const py::object& x, const py::object& y, const SceneInputs& 
     options.threads = threads_.cast<unsigned>();
   }
 
-  // The arrays, a[i, j] at x[i], y[j]; invalid points are NaN (numbers) or False (flags).
+  // The arrays, a[i, j] at x[i], y[j]; invalid points are NaN (numbers) or False (flags),
+  // allocated only for a grid within the library's caps.
+  CheckSweepSize(spec.x.values.size(), spec.y ? std::optional(spec.y->values.size()) : std::nullopt);
   const std::size_t nx = spec.x.values.size();
   const std::size_t ny = spec.y ? spec.y->values.size() : 0;
   std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(nx)};

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -17,6 +18,7 @@
 
 #include "covopt/report/robot_json.hpp"
 #include "covopt/robot.hpp"
+#include "bounded.hpp"
 #include "robot_inputs.hpp"
 #include "scene_keywords.hpp"
 
@@ -60,14 +62,18 @@ double Number(const py::handle& value, const std::string& what) {
   return x;
 }
 
-std::vector<double> Numbers(const py::handle& value, const std::string& what) {
+/// At most `at_most` numbers (default: one per joint of the largest URDF).
+std::vector<double> Numbers(const py::handle& value, const std::string& what,
+                            std::size_t at_most = robot::kMaxUrdfLinks) {
   if (py::isinstance<py::str>(value) || !py::isinstance<py::iterable>(value)) {
     throw std::invalid_argument(what + ": expected a sequence of numbers (got " +
                                 Excerpt(py::repr(value).cast<std::string>()) + ")");
   }
   std::vector<double> numbers;
   std::size_t i = 0;
-  for (const py::handle item : value) numbers.push_back(Number(item, what + "[" + std::to_string(i++) + "]"));
+  ForEachBounded(value, at_most, what, [&](const py::handle item) {
+    numbers.push_back(Number(item, what + "[" + std::to_string(i++) + "]"));
+  });
   return numbers;
 }
 
@@ -220,25 +226,28 @@ robot::JointTrajectory Trajectory(const py::object& trajectory, std::size_t join
                                     "' (a dict has time_s, positions, velocities)");
       }
     }
-    if (py::len(d["time_s"]) > robot::kMaxTrajectorySamples) {
-      throw std::invalid_argument("trajectory['time_s']: " + std::to_string(py::len(d["time_s"])) +
-                                  " samples is not allowed (at most 1000000)");
-    }
     for (const char* key : {"time_s", "positions", "velocities"}) {
       if (!d.contains(key)) {
         throw std::invalid_argument(std::string("trajectory: missing key '") + key +
                                     "' (a dict needs time_s, positions, velocities)");
       }
     }
+    // Every array at most kMaxTrajectorySamples long, checked before it is read.
     robot::JointTrajectory t;
-    t.time_s = Numbers(d["time_s"], "trajectory['time_s']");
-    std::size_t i = 0;
-    for (const py::handle row : d["positions"]) {
-      t.positions.push_back(Vector(Numbers(row, "trajectory['positions'][" + std::to_string(i++) + "]")));
-    }
-    i = 0;
-    for (const py::handle row : d["velocities"]) {
-      t.velocities.push_back(Vector(Numbers(row, "trajectory['velocities'][" + std::to_string(i++) + "]")));
+    t.time_s = Numbers(d["time_s"], "trajectory['time_s']", robot::kMaxTrajectorySamples);
+    for (const char* key : {"positions", "velocities"}) {
+      const py::object rows = d[key];
+      if (py::isinstance<py::str>(rows) || !py::isinstance<py::iterable>(rows)) {
+        throw std::invalid_argument(std::string("trajectory['") + key + "']: expected a sequence of rows (got " +
+                                    Excerpt(py::repr(rows).cast<std::string>()) + ")");
+      }
+      std::vector<Eigen::VectorXd>& out = std::string_view(key) == "positions" ? t.positions : t.velocities;
+      std::size_t i = 0;
+      ForEachBounded(rows, robot::kMaxTrajectorySamples, std::string("trajectory['") + key + "']",
+                     [&](const py::handle row) {
+                       out.push_back(Vector(Numbers(row, std::string("trajectory['") + key + "'][" +
+                                                              std::to_string(i++) + "]")));
+                     });
     }
     if (t.positions.size() != t.size() || t.velocities.size() != t.size()) {
       throw std::invalid_argument("trajectory: time_s, positions and velocities must have the same number of "
