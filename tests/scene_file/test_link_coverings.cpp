@@ -48,7 +48,7 @@ TEST_CASE("link coverings: a thickness out of its range is refused at its file:l
   CHECK(ParseLinkCoverings(Link("thickness = \"0.1mm\"\n"), "x").front().thickness_m == covopt::kMinLayerThickness_m);
 }
 
-TEST_CASE("link coverings: the Poisson range is covering.poisson's, (-1, 0.5]", "[link_coverings]") {
+TEST_CASE("link coverings: the Poisson range is covering.poisson's: above -1, at most 0.5", "[link_coverings]") {
   for (const double nu : {-0.5, 0.0, 0.45, 0.5}) {
     INFO(nu);
     const auto entries = ParseLinkCoverings(Link("poisson = " + std::to_string(nu) + "\nthickness = \"5mm\"\n"), "x");
