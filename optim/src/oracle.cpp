@@ -271,9 +271,7 @@ DesignOracle::DesignOracle(const Scene& scene, double covering_poisson_ratio, co
   Scene bare = scene_;
   bare.covering.thickness_m = 0.0;
   (void)ImpactModel::FromScene(bare);  // validates everything but the design
-  if (!(limits.laceration_tensile_stress_Pa > 0 && limits.contusion_energy_density_J_per_m2 > 0)) {
-    throw std::invalid_argument("injury limits must be > 0");
-  }
+  CheckInjuryLimits(limits);
   if (time_path) {
     method_ = time_path->method;
     relative_tolerance_ = time_path->relative_tolerance;

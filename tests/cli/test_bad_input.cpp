@@ -298,7 +298,7 @@ TEST_CASE("broken scene files are rejected with file:line:column and the key", "
       {"bad_unit.toml", "[robot]\nspeed = \"2 kg\"\n", {"bad_unit.toml:2:9", "robot.speed", "unit 'kg'", "m/s"}},
       {"nan.toml", "[robot]\nspeed = nan\n", {"nan.toml:2:9", "robot.speed", "not a finite number"}},
       {"inf.toml", "[head]\nmass = inf\n", {"inf.toml:2:8", "head.mass", "not a finite number"}},
-      {"negative.toml", "[robot]\nmass = -10\n", {"robot.mass", "must be in (0, 1e+06] kg", "(got -10)"}},
+      {"negative.toml", "[robot]\nmass = -10\n", {"robot.mass", "must be in [0.001, 1e+06] kg", "(got -10)"}},
       {"zero.toml", "[head]\nradius = 0\n", {"head.radius", "must be in", "(got 0)"}},
       {"huge.toml", "[robot]\nspeed = \"1e6 km/h\"\n", {"robot.speed", "[1e-06, 100] m/s", "(got 277777.77"}},
       {"thick.toml", "[covering]\nthickness = \"2 m\"\n", {"covering.thickness", "[0, 1] m", "(got 2)"}},
@@ -400,10 +400,10 @@ TEST_CASE("broken catalogs are rejected with file:line:column and the key", "[ba
 
 TEST_CASE("a covering thicker than the model's bound is rejected, at the bound accepted",
           "[bad-input]") {
-  // The bound is the library's (ImpactModel::FromScene): covering.thickness in [0, 1] m.
-  CheckRejected({{"simulate", "--covering-thickness", "1.001m"}, {"covering.thickness", "[0, 1] m", "(got 1.001)"}});
-  CheckRejected({{"simulate", "--covering-thickness", "1e300m"}, {"covering.thickness", "[0, 1] m"}});
-  CheckRejected({{"optimize", "--thickness", "1.5m"}, {"--thickness", "(0, 1 m]"}});
+  // The bound is the library's (ImpactModel::FromScene): covering.thickness 0 or in [0.0001, 1] m.
+  CheckRejected({{"simulate", "--covering-thickness", "1.001m"}, {"covering.thickness", "[0.0001, 1] m", "(got 1.001)"}});
+  CheckRejected({{"simulate", "--covering-thickness", "1e300m"}, {"covering.thickness", "[0.0001, 1] m"}});
+  CheckRejected({{"optimize", "--thickness", "1.5m"}, {"--thickness", "[0.1 mm, 1 m]"}});
   CheckRejected({{"optimize", "--max-thickness", "1001mm"}, {"--max-thickness", "1 m]"}});
   const CliRun at_bound = Run({"simulate", "--covering-thickness", "1m", "--json"});
   CHECK(at_bound.exit_code == 0);

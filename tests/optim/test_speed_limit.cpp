@@ -322,7 +322,8 @@ TEST_CASE("a scene safe at 100 m/s is safe up to the search limit, which is stat
 
 TEST_CASE("nothing safe: no safe speed, no safe mass", "[speed_limit]") {
   SpeedLimitOptions options;
-  options.limits.laceration_tensile_stress_Pa = 1e-9;  // absurd: any contact lacerates
+  options.limits.laceration_tensile_stress_Pa = 1e3;  // the floor, with SF 100: any contact lacerates
+  options.safety_factor = 100.0;
   const SpeedLimit limit = MaxSafeSpeed(Scene{}, options);
   CHECK(limit.status == SpeedLimitStatus::kNoSafeValue);
   CHECK(limit.max_safe_speed_m_per_s == 0.0);
@@ -330,7 +331,8 @@ TEST_CASE("nothing safe: no safe speed, no safe mass", "[speed_limit]") {
   CHECK(limit.at_limit.laceration_ratio > 1.0);
   CHECK(limit.message.find("no safe speed") != std::string::npos);
   const MassLimit mass = MaxSafeMass(Scene{}, options);
-  CHECK(mass.max_safe_mass_kg < 1e-9);
+  CHECK(mass.max_safe_mass_kg == 0.0);  // not even the floor of 1 g
+  CHECK(mass.status == SpeedLimitStatus::kNoSafeValue);
 }
 
 TEST_CASE("a fixed robot that is still safe: unlimited mass", "[speed_limit]") {
