@@ -13,15 +13,16 @@ import covopt
 
 def test_denormal_radius_is_a_value_error_naming_robot_radius():
     scene = covopt.Scene(robot_radius=5e-324, covering_thickness=0, robot_mass=10)
-    for call in (covopt.max_safe_speed, covopt.max_safe_mass, covopt.simulate):
+    for call, given in ((covopt.max_safe_speed, scene), (covopt.max_safe_mass, scene.replace(robot_mass=None)),
+                        (covopt.simulate, scene)):
         with pytest.raises(ValueError, match=r"robot_radius") as error:
-            call(scene)
+            call(given)
         assert "[0.0001, 100] m" in str(error.value)
         assert "5e-324" in str(error.value)
 
 
 @pytest.mark.parametrize("keywords,words", [
-    ({"reaction_delay": 1e-300, "braking": 1e4}, "robot.reaction_delay must be 0 (brake at contact) or in [1e-06, 10] s"),
+    ({"reaction_delay": "1e-300s", "braking": "1e4m/s2"}, "robot.reaction_delay must be 0 (brake at contact) or in [1e-06, 10] s"),
     ({"torso_mass": 5e-324, "neck_stiffness": 1e4}, "head.torso_mass must be in [0.001, 1e+06] kg"),
     ({"covering_thickness": "0.05mm"}, "covering.thickness must be 0 (no covering) or in [0.0001, 1] m"),
     ({"covering_modulus": "5e-324Pa"}, "covering.modulus must be in [1000, 1e+13] Pa"),
@@ -36,7 +37,7 @@ def test_below_a_floor_is_a_value_error(keywords, words):
 def test_contact_area_floor():
     bare = covopt.Scene(covering_thickness=0)
     with pytest.raises(ValueError, match=r"contact_area must be in \[1e-06, 1\] m2"):
-        covopt.simulate(bare, body_region="chest", contact_area=1e-300)
+        covopt.simulate(bare, body_region="chest", contact_area="1e-300m2")
     r = covopt.simulate(bare, body_region="chest", contact_area="1mm2")
     assert math.isfinite(r.peak_force_N)
 
@@ -71,8 +72,8 @@ def test_property_every_accepted_scene_gives_finite_numbers():
     taken = refused = 0
     for _ in range(300):
         keywords = {
-            "robot_mass": log_uniform(rng, 1e-3, 1e6),
-            "speed": log_uniform(rng, 1e-6, 100.0),
+            "robot_mass": f"{log_uniform(rng, 1e-3, 1e6)!r}kg",
+            "speed": f"{log_uniform(rng, 1e-6, 100.0)!r}m/s",
             "robot_radius": f"{log_uniform(rng, 1e-4, 100.0)!r}m",
             "covering_thickness": 0 if rng.random() < 0.2 else f"{log_uniform(rng, 1e-4, 1.0)!r}m",
             "covering_modulus": f"{log_uniform(rng, 1e3, 1e13)!r}Pa",
@@ -81,12 +82,20 @@ def test_property_every_accepted_scene_gives_finite_numbers():
         try:
             scene = covopt.Scene(**keywords)
             result = covopt.simulate(scene).to_dict()
-            limit = covopt.max_safe_speed(scene).to_dict()
+            limit = covopt.max_safe_speed(scene.replace(speed=None)).to_dict()
         except ValueError:
             refused += 1
             continue
         taken += 1
         for number in list(finite_numbers(result)) + list(finite_numbers(limit)):
             assert math.isfinite(number), keywords
+        # A NaN reaches JSON as null: the numbers that must be there are.
+        for key in ("max_penetration_m", "peak_force_N", "max_compressive_stress_Pa", "max_energy_density_J_per_m2",
+                    "contact_duration_s"):
+            assert isinstance(result[key], float) and math.isfinite(result[key]), (key, keywords)
+        for key in ("laceration", "contusion"):
+            assert math.isfinite(result[key]["ratio"]), (key, keywords)
+        for key in ("laceration_ratio", "contusion_ratio", "compression_ratio"):
+            assert limit[key] is None or math.isfinite(limit[key]), (key, keywords)
     assert taken > 100
     assert refused > 10

@@ -91,7 +91,7 @@ strength_source = "test"
 TEST_CASE("at the floors the command line answers with finite numbers", "[floors]") {
   CheckFinite({"simulate", "--robot-radius", "0.1mm", "--covering-thickness", "0", "--json"});
   CheckFinite({"speed-limit", "--robot-mass", "10kg", "--robot-radius", "0.1mm", "--covering-thickness", "0"});
-  CheckFinite({"simulate", "--reaction-delay", "1us", "--braking", "1e4m/s2", "--json"});
+  CheckFinite({"simulate", "--reaction-delay", "0.001ms", "--braking", "1e4m/s2", "--json"});
   CheckFinite({"simulate", "--torso-mass", "1g", "--neck-stiffness", "1e9N/m", "--json"});
   CheckFinite({"simulate", "--body-region", "chest", "--covering-thickness", "0", "--contact-area", "1mm2"});
 }
