@@ -357,6 +357,11 @@ TEST_CASE("property: every head scene the validator takes gives finite numbers",
     }
     CHECK(Finite(r.peaks));
     if (r.contact_duration_s) CHECK(std::isfinite(*r.contact_duration_s));
+    // Bounded too, at the limits' floors (1 kPa, 1 J/m²): a ratio printed "%.3f" is never
+    // a 300-digit number (the largest seen is about 5e13).
+    const covopt::InjuryAssessment worst = covopt::Assess(r.peaks, {covopt::kMinModulus_Pa, covopt::kMinEnergyDensity_J_per_m2});
+    CHECK(worst.laceration.ratio < 1e15);
+    CHECK(worst.contusion.ratio < 1e15);
     if (!extended) {
       co::SpeedLimitOptions options;
       if (draw.Chance(0.3)) options.covering_compressive_strength_Pa = draw(1e3, 1e12);
