@@ -211,17 +211,7 @@ SweepResult Sweep(const SweepSpec& spec, const SweepOptions& options,
   const std::size_t nx = spec.x.values.size();
   const std::size_t ny = spec.y ? spec.y->values.size() : 1;
   CheckSweepSize(nx, spec.y ? std::optional(ny) : std::nullopt);
-  if (!(spec.limits.laceration_tensile_stress_Pa > 0.0) ||
-      !std::isfinite(spec.limits.laceration_tensile_stress_Pa)) {
-    throw std::invalid_argument("limits.laceration_tensile_stress_Pa must be > 0 Pa and finite (got " +
-                                FormatNumber(spec.limits.laceration_tensile_stress_Pa) + ")");
-  }
-  if (!(spec.limits.contusion_energy_density_J_per_m2 > 0.0) ||
-      !std::isfinite(spec.limits.contusion_energy_density_J_per_m2)) {
-    throw std::invalid_argument(
-        "limits.contusion_energy_density_J_per_m2 must be > 0 J/m2 and finite (got " +
-        FormatNumber(spec.limits.contusion_energy_density_J_per_m2) + ")");
-  }
+  CheckInjuryLimits(spec.limits);
   if (!(spec.safety_factor >= 1.0 && spec.safety_factor <= kMaxSafetyFactor)) {
     throw std::invalid_argument("safety_factor must be in [1, 100] (got " +
                                 FormatNumber(spec.safety_factor) + ")");

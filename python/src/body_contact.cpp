@@ -30,6 +30,7 @@
 #include <pybind11/stl.h>
 
 #include "covopt/core/body_contact.hpp"
+#include "covopt/core/physical_floors.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/solve.hpp"
@@ -206,7 +207,7 @@ RegionChoice ReadRegions(const py::kwargs& kwargs) {
 }
 
 /// contact_area= [m²]: a number in m², or a string with its unit ("1cm2", read as the CLI's
-/// --contact-area); in (0, 1] m².
+/// --contact-area); in [1e-6, 1] m² (the floor kMinContactArea_m2).
 double ReadContactArea(const py::kwargs& kwargs) {
   const auto v = Option(kwargs, "contact_area");
   if (!v) return 0.0;
@@ -216,8 +217,9 @@ double ReadContactArea(const py::kwargs& kwargs) {
                                 Repr(*v) + ")");
   }
   const double area = ReadSceneQuantity(*v, quantity_specs::kContactArea, "contact_area");
-  if (!(area > 0.0 && area <= 1.0)) {
-    throw std::invalid_argument("contact_area must be in (0, 1] m2 (1 cm2 is 1e-4) (got " + Repr(*v) + ")");
+  if (!(area >= kMinContactArea_m2 && area <= 1.0)) {  // the floor (physical_floors.hpp): 1 mm2
+    throw std::invalid_argument("contact_area must be in [1e-06, 1] m2 (1 mm2 is 1e-6, 1 cm2 is 1e-4) (got " + Repr(*v) +
+                                ")");
   }
   return area;
 }

@@ -30,6 +30,7 @@
 #include <pybind11/stl.h>
 
 #include "covopt/optim/design_map.hpp"
+#include "covopt/core/physical_floors.hpp"
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
@@ -264,11 +265,15 @@ SceneInputs ReadScene(const py::kwargs& keywords) {
     }
   }
   InjuryLimits& limits = inputs.limits;
-  const auto positive = [](double v) { return v > 0.0; };
-  limits.laceration_tensile_stress_Pa = ReadChecked(inputs.given, "laceration_limit", specs::kLacerationLimit,
-                                                    positive, "> 0 Pa", limits.laceration_tensile_stress_Pa);
-  limits.contusion_energy_density_J_per_m2 = ReadChecked(inputs.given, "contusion_limit", specs::kContusionLimit,
-                                                         positive, "> 0 J/m2", limits.contusion_energy_density_J_per_m2);
+  // The floors (physical_floors.hpp), as CheckInjuryLimits.
+  limits.laceration_tensile_stress_Pa =
+      ReadChecked(inputs.given, "laceration_limit", specs::kLacerationLimit,
+                  [](double v) { return v >= kMinModulus_Pa && v <= 1e13; }, "in [1000, 1e+13] Pa",
+                  limits.laceration_tensile_stress_Pa);
+  limits.contusion_energy_density_J_per_m2 =
+      ReadChecked(inputs.given, "contusion_limit", specs::kContusionLimit,
+                  [](double v) { return v >= kMinEnergyDensity_J_per_m2 && v <= 1e13; }, "in [1, 1e+13] J/m2",
+                  limits.contusion_energy_density_J_per_m2);
   inputs.safety_factor = ReadChecked(inputs.given, "safety_factor", specs::kSafetyFactor,
                                      [](double v) { return v >= 1.0 && v <= kMaxSafetyFactor; }, "in [1, 100]", 1.0);
   return inputs;
@@ -716,9 +721,9 @@ py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
   const auto shown = [&](const char* keyword) { return get(keyword) ? Repr(*get(keyword)) : std::string(); };
   require(d.space.max_thickness_m > d.space.min_thickness_m && d.space.max_thickness_m <= 1.0,
           "max_thickness must be in (0.1 mm, 1 m] (got " + shown("max_thickness") + ")");
-  require(d.space.min_modulus_Pa > 0 && d.space.max_modulus_Pa > d.space.min_modulus_Pa &&
+  require(d.space.min_modulus_Pa >= kMinModulus_Pa && d.space.max_modulus_Pa > d.space.min_modulus_Pa &&
               d.space.max_modulus_Pa <= 1e13,
-          "min_modulus/max_modulus must satisfy 0 < min < max <= 1e13 Pa (got " +
+          "min_modulus/max_modulus must satisfy 1000 <= min < max <= 1e13 Pa (got " +
               std::to_string(d.space.min_modulus_Pa) + " Pa, " + std::to_string(d.space.max_modulus_Pa) + " Pa)");
   require(d.covering_poisson_ratio > -1.0 && d.covering_poisson_ratio <= 0.5,
           "covering_poisson must be in (-1, 0.5] (got " + shown("covering_poisson") + ")");
@@ -726,8 +731,8 @@ py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
           "thickness_step must be in [0, 10 mm] (got " + shown("thickness_step") + ")");
   if (const auto v = get("thickness")) {
     request.thickness_m = ReadSceneQuantity(*v, specs::kCoveringThickness, "thickness");
-    require(*request.thickness_m > 0.0 && *request.thickness_m <= 1.0,
-            "thickness must be in (0, 1 m] (got " + Repr(*v) + "); for no covering use "
+    require(*request.thickness_m >= kMinLayerThickness_m && *request.thickness_m <= 1.0,
+            "thickness must be in [0.1 mm, 1 m] (got " + Repr(*v) + "); for no covering use "
             "simulate(covering_thickness=0)");
   }
   d.allow_full_compression = Flag(kwargs, "allow_full_compression");

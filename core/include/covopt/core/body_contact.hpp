@@ -47,12 +47,13 @@ std::optional<ContactType> ParseContactType(std::string_view text) noexcept;
 
 /// One robot–body-region contact: plain SI inputs, checked by BodyContactModel::FromScene.
 struct BodyContactScene {
-  /// The robot's effective (reflected) mass m_R along the impact direction [kg], > 0 and
-  /// <= 1e6; kFixed for an immovable robot (then the contact must be transient).
+  /// The robot's effective (reflected) mass m_R along the impact direction [kg], in
+  /// [1e-3, 1e6] (the floor kMinMass_kg); kFixed for an immovable robot (then the contact must be transient).
   double robot_mass_kg = 10.0;
   /// Relative approach speed at first contact [m/s], in [1e-6, 100].
   double speed_m_per_s = 0.25;
-  /// Radius of curvature of the robot surface under the covering [m], > 0; kFlat if flat.
+  /// Radius of curvature of the robot surface under the covering [m], in [1e-4, 100] (the
+  /// floor kMinRadius_m); kFlat if flat.
   /// A covering needs a finite radius (its Hertz contact is sphere-on-flat).
   double robot_radius_m = kFlat;
   /// The covering. thickness_m == 0 (the default): the bare robot, modulus and Poisson ratio
@@ -60,11 +61,11 @@ struct BodyContactScene {
   CoveringSpec covering{27.6e6, 0.25, 0.0};
   /// The body region's effective spring constant k_H [N/m], > 0 and <= 1e9 (Table A.3).
   double body_stiffness_N_per_m = 25e3;
-  /// The body region's effective mass m_H [kg], > 0 (Table A.3); not read when clamped.
+  /// The body region's effective mass m_H [kg], in [1e-3, 1e6] (Table A.3); not read when clamped.
   double body_mass_kg = 40.0;
   /// Transient (default) or clamped.
   ContactType contact = ContactType::kTransient;
-  /// The bare robot's contact area A [m²], > 0 and <= 1; 0 (default): not given, and the bare
+  /// The bare robot's contact area A [m²], in [1e-6, 1] (the floor kMinContactArea_m2); 0 (default): not given, and the bare
   /// robot's pressure is not evaluated. With a covering the pressure is the Hertz pressure
   /// and this is not read.
   double contact_area_m2 = 0.0;
