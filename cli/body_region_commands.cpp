@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
@@ -151,6 +152,12 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
   }
   std::vector<std::string> warnings = InputWarnings(plan);
   if (const auto note = ContactAreaNote(regions, plan.scene, false)) warnings.push_back(*note);
+  // The time path's self-check (a braking robot's judgement is its time path), per region.
+  for (std::size_t i = 0; i < judgements.size(); ++i) {
+    for (std::string& w : report::TimePathWarnings(judgements[i], time_paths[i] ? &*time_paths[i] : nullptr)) {
+      warnings.push_back(std::move(w));
+    }
+  }
 
   std::optional<std::string> head_text;
   if (regions.has_head()) {
@@ -204,8 +211,9 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
                      : std::string());
       if (time_paths[iso]) {
         const BodyContactResult& t = *time_paths[iso];
-        fmt::print(out, "  Time path  force {} ({}); relative difference to the exact path {:.2g}\n",
-                   Newtons(t.peak_force_N), t.method, std::abs(t.peak_force_N - c.peak_force_N) / c.peak_force_N);
+        fmt::print(out, "  Time path  force {} ({}); relative difference to the exact path {:.2g}; energy residual {:.2g} (self-check)\n",
+                   Newtons(t.peak_force_N), t.method, std::abs(t.peak_force_N - c.peak_force_N) / c.peak_force_N,
+                   t.energy_residual.value_or(0.0));
       }
       fmt::print(out, "  Verdicts\n");
       PrintJudgement(out, v, sf, "    ");

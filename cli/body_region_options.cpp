@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "covopt/core/physical_floors.hpp"
 #include "errors.hpp"
 #include "quantity.hpp"
 #include "simulate.hpp"
@@ -116,8 +117,8 @@ std::optional<BodyRegionPlan> ResolveBodyRegions(const BodyRegionFlags& flags) {
   }
   if (flags.contact_area) {
     plan.contact_area_m2 = ParseQuantity(*flags.contact_area, quantity_specs::kContactArea, "--contact-area");
-    if (!(plan.contact_area_m2 > 0.0) || plan.contact_area_m2 > 1.0) {
-      throw InputError(fmt::format("--contact-area must be in (0, 1] m² (got '{}')", *flags.contact_area));
+    if (!(plan.contact_area_m2 >= kMinContactArea_m2) || plan.contact_area_m2 > 1.0) {  // the floor: 1 mm²
+      throw InputError(fmt::format("--contact-area must be in [1 mm², 1 m²] (got '{}')", *flags.contact_area));
     }
   }
 

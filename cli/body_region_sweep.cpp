@@ -50,6 +50,7 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
     }
     x = ParseSweepAxis(options.x, "--x");
     if (options.y) y = ParseSweepAxis(*options.y, "--y");
+    CheckGridSize(x, y ? &*y : nullptr);
     for (const SweepAxisArgument* axis : {&x, y ? &*y : nullptr}) {
       if (axis && !optim::IsBodyContactField(axis->field->dotted_name())) {
         throw InputError(fmt::format("{} sweeps {}, which the body region does not read; sweep robot-mass, speed, "

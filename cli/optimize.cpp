@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "covopt/core/impact_model.hpp"
+#include "covopt/core/physical_floors.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/materials/catalog.hpp"
@@ -161,14 +162,15 @@ void ResolveDesignFlags(const OptimizeOptions& o, Resolved& r) {
   require(d.covering_poisson_ratio > -1.0 && d.covering_poisson_ratio <= 0.5,
           fmt::format("--covering-poisson must be in (-1, 0.5] (got '{}')", o.covering_poisson.value_or("")));
   RequireThicknessStep(d.thickness_step_m, o.thickness_step);
-  require(d.limits.laceration_tensile_stress_Pa > 0.0 && d.limits.laceration_tensile_stress_Pa <= 1e9,
-          fmt::format("--laceration-limit must be in (0, 1 GPa] (got '{}')", o.laceration_limit.value_or("")));
-  require(d.limits.contusion_energy_density_J_per_m2 > 0.0 && d.limits.contusion_energy_density_J_per_m2 <= 1e7,
-          fmt::format("--contusion-limit must be in (0, 1000 J/cm²] (got '{}')", o.contusion_limit.value_or("")));
+  require(d.limits.laceration_tensile_stress_Pa >= kMinModulus_Pa && d.limits.laceration_tensile_stress_Pa <= 1e9,
+          fmt::format("--laceration-limit must be in [1 kPa, 1 GPa] (got '{}')", o.laceration_limit.value_or("")));
+  require(d.limits.contusion_energy_density_J_per_m2 >= kMinEnergyDensity_J_per_m2 &&
+              d.limits.contusion_energy_density_J_per_m2 <= 1e7,
+          fmt::format("--contusion-limit must be in [1 J/m², 1000 J/cm²] (got '{}')", o.contusion_limit.value_or("")));
   if (o.thickness) {
     r.request.thickness_m = ParseQuantity(*o.thickness, specs::kCoveringThickness, "--thickness");
-    require(*r.request.thickness_m > 0.0 && *r.request.thickness_m <= 1.0,
-            fmt::format("--thickness must be in (0, 1 m] (got '{}'); for no covering use "
+    require(*r.request.thickness_m >= kMinLayerThickness_m && *r.request.thickness_m <= 1.0,
+            fmt::format("--thickness must be in [0.1 mm, 1 m] (got '{}'); for no covering use "
                         "'covopt simulate --covering-thickness 0'",
                         *o.thickness));
     if (o.max_thickness) {

@@ -239,6 +239,14 @@ SweepAxisArgument ParseSweepAxis(std::string_view text, std::string_view flag) {
   return axis;
 }
 
+void CheckGridSize(const SweepAxisArgument& x, const SweepAxisArgument* y) {
+  try {
+    covopt::CheckSweepSize(x.values.size(), y ? std::optional(y->values.size()) : std::nullopt);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+}
+
 covopt::SweepSpec MakeSweepSpec(const SweepAxisArgument& x, const SweepAxisArgument* y,
                                 const SimulationPlan& plan) {
   covopt::SweepSpec spec;
@@ -321,11 +329,7 @@ SweepRun ResolveSweep(const SweepCommandOptions& options) {
                                    *options.y));
     }
   }
-  if (run.x.values.size() * (run.y ? run.y->values.size() : 1) > kMaxSweepPoints) {
-    throw InputError(fmt::format("the grid has {} x {} = {} points; at most {} are allowed",
-                                 run.x.values.size(), run.y->values.size(),
-                                 run.x.values.size() * run.y->values.size(), kMaxSweepPoints));
-  }
+  CheckGridSize(run.x, run.y_axis());
   for (const SweepAxisArgument* axis : {static_cast<const SweepAxisArgument*>(&run.x), run.y_axis()}) {
     if (axis == nullptr) continue;
     const std::string key = axis->field->dotted_name();

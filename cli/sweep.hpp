@@ -94,14 +94,18 @@ struct SweepAxisArgument {
 
 /// An axis with at most this many values is drawn as a family of lines.
 inline constexpr std::size_t kMaxFamilies = 8;
-/// Limits on the grid: values per axis and points in total.
-inline constexpr std::size_t kMaxAxisValues = 100000;
-inline constexpr std::size_t kMaxSweepPoints = 1000000;
+/// Limits on the grid: values per axis and points in total (the library's, covopt/core/sweep.hpp).
+inline constexpr std::size_t kMaxAxisValues = covopt::kMaxSweepAxisValues;
+inline constexpr std::size_t kMaxSweepPoints = covopt::kMaxSweepPoints;
 
 /// Reads "NAME=SPEC".
 /// @param flag "--x" or "--y", for messages.
 /// @throws InputError naming the flag, the value and what is allowed.
 SweepAxisArgument ParseSweepAxis(std::string_view text, std::string_view flag);
+
+/// Refuses a grid over the library's caps (covopt::CheckSweepSize), before any point.
+/// @throws InputError "the grid has 1000 x 2000 = 2000000 points; at most 1000000 are allowed".
+void CheckGridSize(const SweepAxisArgument& x, const SweepAxisArgument* y);
 
 /// The library's sweep of these axes over `plan`'s scene, limits and safety factor: what
 /// `covopt sweep` computes.

@@ -3,7 +3,7 @@
 # for SECONDS seconds (default 600), one after the other.
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]     TARGET: scene_file, catalog, quantity, urdf,
-#                                             trajectory (default: all)
+#                                             trajectory, surface_file, link_coverings (default: all)
 #
 # Installs clang with apt-get if it is missing (Debian bookworm: clang-14 carries libFuzzer).
 # The committed seeds (fuzz/corpus/<target>/) are read, never written: new inputs go to
@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-600}
 shift || true
 targets=("$@")
-if [ ${#targets[@]} -eq 0 ]; then targets=(scene_file catalog quantity urdf trajectory); fi
+if [ ${#targets[@]} -eq 0 ]; then targets=(scene_file catalog quantity urdf trajectory surface_file link_coverings); fi
 
 if ! command -v clang++ >/dev/null 2>&1; then
   echo "fuzz.sh: clang++ not found; installing clang with apt-get" >&2

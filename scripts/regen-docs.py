@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Re-runs every shown output of README.md and docs/guide/*.md and writes it back.
+"""Re-runs every shown output of README.md and docs/guide/*.md, and every marked worked number of
+docs/model.md, and writes them back.
 
 A shown output is a ```text block whose first line is a command:
 
@@ -33,6 +34,25 @@ table's µs/impact column, JSON "seconds") are masked before comparing, since th
 run to run. Every command and Python session runs with SOURCE_DATE_EPOCH=1700000000, so the
 provenance block of a JSON (docs/guide/output-files.md) shows a fixed date; its "commit" (the
 build's, which changes with every commit) is masked before comparing too.
+
+Worked numbers in prose and tables (docs/model.md) are a second kind: a number followed by a
+marker `<!-- value: NAME -->` (invisible when rendered), and somewhere in the same file a
+definition block
+
+    <!-- regen-docs values
+    $ ./build/cli/covopt simulate --covering-thickness 0 --json
+    bare-dmax-mm: "max_penetration_m": ([0-9.e+-]+) | mm 7
+    -->
+
+Each `$ ` line is a command (run as a block's, in the scratch directory; it must exit 0); each
+`NAME: REGEX` line after it defines a value from that command's output: the first match of
+REGEX (Python, multiline), its group 1; `json:KEY` stands for the REGEX `"KEY": (number)`, the
+first such key of a --json output. An optional `| UNIT DIGITS` converts an SI value (m to mm,
+s to ms, Pa to MPa or kPa, anything else as it is with x1) and prints it with DIGITS
+significant digits, trailing zeros kept, and `| UNIT DIGITS group` groups the integer part's
+thousands with a space from five digits on (54 593.88, 3310.561); without it the matched text is the value as shown. Every marked number is replaced by its value (--check: compared with it);
+a marker naming no definition, a definition that matches nothing and a command that fails are
+errors. The default files include docs/model.md for these values (it has no command blocks).
 
 Usage: scripts/regen-docs.py [--check] [--build DIR] [--verbose] [FILE.md ...]
 """
@@ -244,7 +264,7 @@ def run_python(block: Block, scratch: Path, verbose: bool) -> Outcome:
 TIME_TOKEN = re.compile(r"\d+(\.\d+)?(e[-+]?\d+)? ?(ms|s|µs)\b")
 JSON_SECONDS = re.compile(r'("seconds": )[0-9.e+-]+')
 JSON_COMMIT = re.compile(r'("commit": ")[0-9a-f]{40}(-dirty)?(")')
-WORKPRECISION_TIME = re.compile(r"(?<=\s)\d+\.\d\d(?=\s)")  # the µs/impact column
+WORKPRECISION_TIME = re.compile(r"\s+\d+\.\d\d(?=\s)")  # the µs/impact column, with its padding
 
 
 def masked(lines: list[str]) -> list[str]:
@@ -259,9 +279,118 @@ def masked(lines: list[str]) -> list[str]:
             line = JSON_SECONDS.sub(r"\1#", line)
             line = JSON_COMMIT.sub(r"\1#\3", line)
             if in_workprecision:
-                line = WORKPRECISION_TIME.sub("#", line)
+                line = WORKPRECISION_TIME.sub(" #", line)  # a wider time shifts no column
         out.append(line)
     return out
+
+
+VALUE_BLOCK = "<!-- regen-docs values"
+VALUE_MARKER = re.compile(r"([+-]?(?:\d{1,3}(?: \d{3})+(?:\.\d+)?|\d[\d.]*(?:e[+-]?\d+)?))<!-- value: ([\w.-]+) -->")
+VALUE_DEFINITION = re.compile(r"^([\w.-]+): (.*?)(?: \| (mm|ms|MPa|kPa|x1) (\d+)( group)?)?$")
+JSON_NUMBER = r'"{}": ([-+0-9.eE]+)'
+SI_SCALE = {"mm": 1e3, "ms": 1e3, "MPa": 1e-6, "kPa": 1e-3, "x1": 1.0}
+
+
+def format_value(text: str, unit: str | None, digits: str | None, group: bool = False) -> str:
+    """The value as the document shows it: the matched text, or an SI number scaled to `unit`
+    with `digits` significant digits (trailing zeros kept), thousands grouped with `group`."""
+    if unit is None:
+        return text
+    value = float(text) * SI_SCALE[unit]
+    shown = f"{value:#.{int(digits)}g}"
+    shown = shown[:-1] if shown.endswith(".") else shown
+    if "e" in shown:  # 6e-8, as prose writes it, not 6.e-08
+        mantissa, _, exponent = shown.partition("e")
+        shown = mantissa.rstrip(".") + "e" + str(int(exponent))
+    elif group:
+        whole, dot, fraction = shown.partition(".")
+        sign = whole[0] if whole[0] in "+-" else ""
+        whole = whole[len(sign):]
+        groups = []
+        while len(whole) > 3 and len(whole) + 3 * len(groups) > 4:  # 4 digits stay whole (3310.561)
+            groups.insert(0, whole[-3:])
+            whole = whole[:-3]
+        shown = sign + " ".join([whole] + groups) + dot + fraction
+    return shown
+
+
+def regen_values(path: Path, lines: list[str], scratch: Path, check: bool,
+                 verbose: bool) -> tuple[list[str], list[str], int]:
+    """The marked worked numbers of `path` (see the module comment): replaced in `lines` by the
+    values the binary prints now, or with `check` compared. Returns (drift, problems, commands run)."""
+    problems: list[str] = []
+    definitions: dict[str, tuple[str, str, str | None, str | None, bool, int]] = {}
+    i = 0
+    while i < len(lines):
+        if lines[i].strip() != VALUE_BLOCK:
+            i += 1
+            continue
+        command = None
+        i += 1
+        while i < len(lines) and lines[i].strip() != "-->":
+            line = lines[i].rstrip()
+            if line.startswith("$ "):
+                command = line[2:]
+                while command.endswith("\\") and i + 1 < len(lines):
+                    i += 1
+                    command = command[:-1] + "\n" + lines[i].rstrip()
+            elif line.strip():
+                m = VALUE_DEFINITION.match(line.strip())
+                if not m or command is None:
+                    problems.append(f"{path.relative_to(REPO)}:{i + 1}: not a value definition (NAME: REGEX [| UNIT DIGITS]) after a $ command: {line!r}")
+                else:
+                    pattern = m.group(2)
+                    if pattern.startswith("json:"):
+                        pattern = JSON_NUMBER.format(re.escape(pattern[5:]))
+                    definitions[m.group(1)] = (command, pattern, m.group(3), m.group(4), bool(m.group(5)), i + 1)
+            i += 1
+        i += 1
+    used = {m.group(2) for line in lines for m in VALUE_MARKER.finditer(line)}
+    if not used and not definitions:
+        return [], problems, 0
+    outputs: dict[str, str | None] = {}
+    for command in dict.fromkeys(d[0] for d in definitions.values()):
+        start = time.monotonic()
+        try:
+            proc = subprocess.run(["bash", "-c", command], cwd=scratch, capture_output=True,
+                                  timeout=COMMAND_TIMEOUT_S, env=dict(os.environ, **FIXED_ENV))
+        except subprocess.TimeoutExpired:
+            problems.append(f"{path.relative_to(REPO)}: '{command}' ran over {COMMAND_TIMEOUT_S} s")
+            outputs[command] = None
+            continue
+        if verbose:
+            print(f"  {time.monotonic() - start:6.2f} s  $ {command}", file=sys.stderr)
+        text = proc.stdout.decode("utf-8", "replace") + proc.stderr.decode("utf-8", "replace")
+        if proc.returncode != 0:
+            problems.append(f"{path.relative_to(REPO)}: '{command}' exited {proc.returncode}:\n    "
+                            + "\n    ".join(clean(text)[-5:]))
+            outputs[command] = None
+        else:
+            outputs[command] = text
+    values: dict[str, str] = {}
+    for name, (command, pattern, unit, digits, group, line_number) in definitions.items():
+        if outputs.get(command) is None:
+            continue
+        m = re.search(pattern, outputs[command], re.MULTILINE)
+        if not m:
+            problems.append(f"{path.relative_to(REPO)}:{line_number}: value {name}: /{pattern}/ matches nothing in the output of '{command}'")
+            continue
+        values[name] = format_value(m.group(1), unit, digits, group)
+    for name in sorted(used - set(definitions)):
+        problems.append(f"{path.relative_to(REPO)}: a number is marked '{name}', which no regen-docs values block defines")
+    drift: list[str] = []
+    for k, line in enumerate(lines):
+        def replace(m: re.Match) -> str:
+            name = m.group(2)
+            if name not in values:
+                return m.group(0)
+            if values[name] != m.group(1):
+                drift.append(f"{path.relative_to(REPO)}:{k + 1}: {name} shows {m.group(1)}, the binary gives {values[name]}")
+            return values[name] + m.group(0)[len(m.group(1)):]
+        new = VALUE_MARKER.sub(replace, line)
+        if not check:
+            lines[k] = new
+    return (drift if check else []), problems, len(outputs)
 
 
 def diff(old: list[str], new: list[str]) -> str:
@@ -282,7 +411,8 @@ def main() -> int:
     if not os.access(build / "cli" / "covopt", os.X_OK):
         print(f"regen-docs: no binary at {build / 'cli' / 'covopt'}; build first or give --build", file=sys.stderr)
         return 2
-    files = [f.resolve() for f in args.files] or [REPO / "README.md", *sorted((REPO / "docs" / "guide").glob("*.md"))]
+    files = [f.resolve() for f in args.files] or [REPO / "README.md", *sorted((REPO / "docs" / "guide").glob("*.md")),
+                                                   REPO / "docs" / "model.md"]
 
     scratch = make_scratch(build)
     problems: list[str] = []
@@ -313,6 +443,10 @@ def main() -> int:
                 else:
                     lines[block.start:block.end] = outcome.new_lines
             drifted += reversed(file_drift)
+            value_drift, value_problems, values_run = regen_values(path, lines, scratch, args.check, args.verbose)
+            drifted += value_drift
+            problems += value_problems
+            blocks_run += values_run
             if not args.check:
                 text = "\n".join(lines)
                 if text != path.read_text(encoding="utf-8"):

@@ -10,7 +10,9 @@
 #include <string>
 
 #include "body_contact_time_path.hpp"
+#include "covopt/core/physical_floors.hpp"
 #include "numeric_format.hpp"
+#include "range_check.hpp"
 #include "robot_reaction.hpp"
 
 namespace covopt {
@@ -29,63 +31,50 @@ constexpr double kMaxThickness_m = 1.0;
 constexpr double kMaxContactArea_m2 = 1.0;
 constexpr double kHertzPressureFactor = 3.0 / (2.0 * std::numbers::pi);  // p0 = 3F/(2πa²)
 
-[[noreturn, gnu::cold]] void Reject(const std::string& field, const std::string& requirement,
-                                    double value) {
-  throw std::invalid_argument(field + " must be " + requirement + " (got " + FormatNumber(value) +
-                              ")");
-}
+using internal::CheckInRange;
+using internal::CheckPositive;
+using internal::CheckZeroOrInRange;
 
-/// In (0, max] [unit], or +inf when `infinite_word` names what it means.
-void CheckPositive(const char* field, double value, double max, const char* unit,
-                   const char* infinite_word = nullptr) {
-  if (value > 0.0 && value <= max) return;
-  if (infinite_word != nullptr && std::isinf(value) && value > 0.0) return;
-  Reject(field,
-         "in (0, " + FormatNumber(max) + "] " + unit +
-             (infinite_word ? std::string(", or ") + infinite_word : std::string()),
-         value);
+[[noreturn]] void Reject(const std::string& field, const std::string& requirement, double value) {
+  internal::RejectValue(field, requirement, value);
 }
 
 void CheckScene(const BodyContactScene& s) {
-  CheckPositive("robot.mass", s.robot_mass_kg, kMaxMass_kg, "kg", "fixed (infinite)");
+  CheckInRange("robot.mass", s.robot_mass_kg, kMinMass_kg, kMaxMass_kg, "kg", "fixed (infinite)");
   if (!(s.speed_m_per_s >= kMinSpeed_m_per_s && s.speed_m_per_s <= kMaxSpeed_m_per_s)) {
     Reject("robot.speed",
            "in [" + FormatNumber(kMinSpeed_m_per_s) + ", " + FormatNumber(kMaxSpeed_m_per_s) +
                "] m/s",
            s.speed_m_per_s);
   }
-  CheckPositive("robot.radius", s.robot_radius_m, kMaxRadius_m, "m", "flat (infinite)");
+  CheckInRange("robot.radius", s.robot_radius_m, kMinRadius_m, kMaxRadius_m, "m", "flat (infinite)");
   const double b_c = s.covering.thickness_m;
-  if (!(b_c >= 0.0 && b_c <= kMaxThickness_m)) {
-    Reject("covering.thickness", "in [0, 1] m (0 = no covering)", b_c);
-  }
+  CheckZeroOrInRange("covering.thickness", b_c, kMinLayerThickness_m, kMaxThickness_m, "m", "no covering");
   if (b_c > 0.0) {
-    CheckPositive("covering.modulus", s.covering.youngs_modulus_Pa, kMaxModulus_Pa, "Pa");
+    CheckInRange("covering.modulus", s.covering.youngs_modulus_Pa, kMinModulus_Pa, kMaxModulus_Pa, "Pa");
     if (!(s.covering.poisson_ratio > -1.0 && s.covering.poisson_ratio <= 0.5)) {
       Reject("covering.poisson", "in (-1, 0.5]", s.covering.poisson_ratio);
     }
     if (std::isinf(s.robot_radius_m)) {
       throw std::invalid_argument(
           "robot.radius: a covering needs the radius of the robot surface under it (its Hertz "
-          "contact is a sphere on a flat), in (0, 100] m (got a flat robot)");
+          "contact is a sphere on a flat), in [0.0001, 100] m (got a flat robot)");
     }
   }
   CheckPositive("body.stiffness", s.body_stiffness_N_per_m, kMaxStiffness_N_per_m, "N/m");
   if (s.contact == ContactType::kTransient) {
     if (std::isinf(s.body_mass_kg) && s.body_mass_kg > 0.0) {
       throw std::invalid_argument(
-          "body.mass: a transient contact needs a body region that moves, in (0, 1e+06] kg (got "
+          "body.mass: a transient contact needs a body region that moves, in [0.001, 1e+06] kg (got "
           "fixed; a region held against a fixed object is contact clamped)");
     }
-    CheckPositive("body.mass", s.body_mass_kg, kMaxMass_kg, "kg");
+    CheckInRange("body.mass", s.body_mass_kg, kMinMass_kg, kMaxMass_kg, "kg");
   } else if (std::isinf(s.robot_mass_kg)) {
     throw std::invalid_argument(
-        "robot.mass: a clamped contact needs a robot that moves, in (0, 1e+06] kg (got fixed: the "
+        "robot.mass: a clamped contact needs a robot that moves, in [0.001, 1e+06] kg (got fixed: the "
         "robot and the clamped body region would both be immovable)");
   }
-  if (!(s.contact_area_m2 >= 0.0 && s.contact_area_m2 <= kMaxContactArea_m2)) {
-    Reject("contact_area", "in [0, 1] m2 (0 = not given)", s.contact_area_m2);
-  }
+  CheckZeroOrInRange("contact_area", s.contact_area_m2, kMinContactArea_m2, kMaxContactArea_m2, "m2", "not given");
   if (!(s.full_compression_fraction > 0.0 && s.full_compression_fraction <= 1.0)) {
     Reject("full_compression_fraction", "in (0, 1]", s.full_compression_fraction);
   }

@@ -99,6 +99,14 @@ Contact ContactAt(const Run& run, const sunrealtype* y) noexcept {
   return c;
 }
 
+/// The covering's energy W_c at `c` [J]: 2/5 K_c δ_c^2.5 (= 2/5 K_c^(-2/3) F^(5/3) below the
+/// bottoming out).
+double CoveringEnergy(const Run& run, const Contact& c) noexcept {
+  return 0.4 * run.covering_stiffness * c.covering_m * c.covering_m * std::sqrt(c.covering_m);
+}
+/// The energy both springs store at `c` [J]: F²/(2 k_H) + W_c.
+double StoredEnergy(const Run& run, const Contact& c) noexcept { return 0.5 * c.force_N * c.body_m + CoveringEnergy(run, c); }
+
 int BodyRightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_data) {
   const auto& run = *static_cast<const Run*>(user_data);
   const sunrealtype* s = NV_DATA_S(y);
@@ -246,6 +254,8 @@ class BodyContactRun {
       Fail(SolveStatus::kEventMissed,
            to_peak_ ? "the integration ended without locating maximum compression"
                     : "the integration ended without locating maximum compression and separation");
+    } else {
+      FinishChecks();
     }
     return std::move(result_);
   }
@@ -346,6 +356,12 @@ class BodyContactRun {
       separated_ = true;
       result_.contact_duration_s = t_;
       result_.rebound_speed_m_per_s = -y_[kApproachRate];
+      if (run_.braking) {
+        CheckEnergy(StoredEnergy(run_, ContactAt(run_, y_)));
+      } else {
+        // Conservative: the rebound is the impact speed (momentum and energy), never faster.
+        Worsen(std::abs(result_.rebound_speed_m_per_s / v0_ - 1.0));
+      }
       return kRootFound;
     }
     if (brake_changed) return Switch(run_.phase, y_[kDeflection]);
@@ -365,13 +381,48 @@ class BodyContactRun {
     result_.contact_radius_m =
         run_.covered ? std::sqrt(model_.covering_outer_radius_m() * c.covering_m) : 0.0;
     result_.body_energy_J = 0.5 * c.force_N * c.body_m;
-    // W_c = 2/5 K_c^(-2/3) F^(5/3) = 2/5 K_c δ_c^2.5
-    result_.covering_energy_J =
-        0.4 * run_.covering_stiffness * c.covering_m * c.covering_m * std::sqrt(c.covering_m);
+    result_.covering_energy_J = CoveringEnergy(run_, c);
     result_.compression_ratio = run_.covered ? (bottomed ? 1.0 : c.covering_m / run_.travel_m) : 0.0;
     result_.fully_compressed = bottomed;
     // Less than ½ mu v0² with braking: the springs hold what reached them.
     if (run_.braking) result_.energy_transferred_J = result_.body_energy_J + result_.covering_energy_J;
+    CheckEnergy(StoredEnergy(run_, c));
+  }
+
+  /// The self-check's energy balance at the state y_ (maximum compression or separation),
+  /// `stored` the springs' energy there [J]: its error relative to ½ mu v0² joins the residual.
+  /// Without braking the balance at the turn is U(δ_max) = ½ mu v0²; a braking robot's counts the
+  /// kinetic energies of both bodies and the brake's work (BodyContactResult::energy_residual).
+  void CheckEnergy(double stored) {
+    const double impact_energy_J = model_.impact_energy_J();
+    double balance_J = stored - impact_energy_J;  // δ' = 0 at the turn
+    if (run_.braking) {
+      const BodyContactScene& scene = model_.scene();
+      const double robot_speed = y_[kRobotSpeed];
+      const double body_speed = robot_speed - y_[kApproachRate];
+      const double body_kinetic_J =
+          scene.contact == ContactType::kClamped ? 0.0 : 0.5 * scene.body_mass_kg * body_speed * body_speed;
+      balance_J = 0.5 * run_.robot_mass_kg * (robot_speed * robot_speed - v0_ * v0_) + body_kinetic_J + stored +
+                  y_[kBrakeWork];
+    }
+    Worsen(std::abs(balance_J) / impact_energy_J);
+  }
+
+  /// The residual becomes `error` where that is larger, or NaN (which the warning then reports).
+  void Worsen(double error) noexcept {
+    if (!(error <= residual_)) residual_ = error;
+  }
+
+  /// The self-check after a run that ended well: the energy residual and, above
+  /// max(100 rtol, 1e-9), the head's time path's tolerance warning.
+  void FinishChecks() {
+    result_.energy_residual = residual_;
+    const bool exact_reference = !run_.braking;
+    if (auto warning = ToleranceWarning(residual_, options_, /*restarted=*/true,
+                                        run_.braking ? "energy residual (brake work accounted for)" : "energy residual",
+                                        exact_reference ? "; the exact path is the reference for peaks" : "")) {
+      result_.warnings.push_back(std::move(*warning));
+    }
   }
 
   /// Records the state y_ at t_ (with a history); after a step or at a root (`interpolate`),
@@ -433,6 +484,7 @@ class BodyContactRun {
   double work_tolerance_J_ = 0.0;
   bool turned_ = false;
   bool separated_ = false;
+  double residual_ = 0.0;  // the self-check's worst relative energy error so far [-]
 };
 
 /// The SUNDIALS context, the state's vectors (2 entries, or 4 for a braking robot) and one
@@ -450,6 +502,9 @@ struct Workspace {
     resources.roots = BodyRootFunctions;
     resources.root_directions = directions;
     resources.jacobian = BodyJacobian;
+    // BodyJacobian at first contact (δ_c = 0, its floor) is far off a moment later: re-evaluate
+    // it at every Newton setup (a 2×2 or 4×4 matrix: cheap).
+    resources.jacobian_at_every_setup = true;
     return resources;
   }
 };

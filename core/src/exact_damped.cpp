@@ -445,7 +445,9 @@ void ForEachNode(const ImpactModel& model, std::size_t top, double delta_max,
       const double width = s_upper - s_lower;
       const ImpactModel::EnergyGapBelow gap_below_upper(model, j, upper);
       const double upper_local = upper - seg.origin_m;
-      for (int i = 0; i < N; ++i) {
+      // An empty piece (δ_max exactly on the top segment's start) adds nothing; its nodes
+      // would be 0/0 (s = q = 0), as the conservative duration's first piece was.
+      for (int i = 0; i < N && width > 0.0; ++i) {
         const double s = s_lower + width * nodes.phi[i];
         const double gap = (s - s_lower) * (s + s_lower);  // δ = upper - gap
         const double q = std::sqrt(two_over_mass * (energy_above + gap_below_upper(gap)));

@@ -9,7 +9,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "covopt/core/physical_floors.hpp"
 #include "numeric_format.hpp"
+#include "range_check.hpp"
 #include "robot_reaction.hpp"
 
 namespace covopt {
@@ -20,32 +22,15 @@ using internal::FormatNumber;
 constexpr double kMinSpeed_m_per_s = 1e-6;  // see CheckScene
 constexpr double kHertzPressureFactor = 3.0 / (2.0 * std::numbers::pi);  // k = 3/(2π)
 
-[[noreturn]] void Reject(const std::string& field, const std::string& requirement, double value) {
-  throw std::invalid_argument(field + " must be " + requirement + " (got " + FormatNumber(value) +
-                              ")");
-}
+using internal::CheckInRange;
+using internal::CheckZeroOrInRange;
 
-[[noreturn, gnu::cold, gnu::noinline]] void RejectPositive(const char* field, double value,
-                                                           double max, const char* unit,
-                                                           const char* infinite_word) {
-  Reject(field,
-         "in (0, " + FormatNumber(max) + "] " + unit +
-             (infinite_word ? std::string(", or ") + infinite_word : std::string()),
-         value);
+[[noreturn]] void Reject(const std::string& field, const std::string& requirement, double value) {
+  internal::RejectValue(field, requirement, value);
 }
 
 [[noreturn, gnu::cold, gnu::noinline]] void RejectPoisson(const char* field, double value) {
   Reject(field, "in (-1, 0.5]", value);
-}
-
-/// finite and in (0, max] [unit]; `infinite_word` (e.g. "fixed") also admits +inf.
-/// The message is only built on failure (out of line): validation runs in every optimiser
-/// evaluation.
-inline void CheckPositive(const char* field, double value, double max, const char* unit,
-                          const char* infinite_word = nullptr) {
-  if (value > 0.0 && value <= max) return;  // false for NaN and +inf (max is finite)
-  if (std::isinf(value) && value > 0 && infinite_word) return;
-  RejectPositive(field, value, max, unit, infinite_word);
 }
 
 inline void CheckPoisson(const char* field, double value) {
@@ -57,6 +42,11 @@ void CheckNonNegative(const char* field, double value, double max, const char* u
                       const char* zero_means) {
   if (value >= 0.0 && value <= max) return;
   Reject(field, "in [0, " + FormatNumber(max) + "] " + unit + " (0 = " + zero_means + ")", value);
+}
+
+/// An elastic modulus [Pa]: from the floor kMinModulus_Pa to 1e13 Pa.
+inline void CheckModulus(const char* field, double value) {
+  CheckInRange(field, value, kMinModulus_Pa, 1e13, "Pa");
 }
 
 /// The inputs of the scenes beyond the conservative two-mass model (docs/model.md §10): out
@@ -72,11 +62,11 @@ void CheckNonNegative(const char* field, double value, double max, const char* u
     if (neck) {
       throw std::invalid_argument(
           "head.torso_mass is needed for a neck: head.neck_stiffness and head.neck_damping "
-          "connect the head to a torso (give head.torso_mass in (0, 1e+06] kg or fixed)");
+          "connect the head to a torso (give head.torso_mass in [0.001, 1e+06] kg or fixed)");
     }
     return;
   }
-  CheckPositive("head.torso_mass", h.torso_mass_kg, 1e6, "kg", "fixed (infinite), or 0 for no neck");
+  CheckInRange("head.torso_mass", h.torso_mass_kg, kMinMass_kg, 1e6, "kg", "fixed (infinite), or 0 for no neck");
   if (!neck) {
     throw std::invalid_argument(
         "head.torso_mass is given but the neck has neither stiffness nor damping (give "
@@ -88,10 +78,22 @@ void CheckNonNegative(const char* field, double value, double max, const char* u
         "head.torso_mass needs a head that moves: head.mass is fixed, so the neck would carry "
         "nothing (give a finite head.mass, or no torso)");
   }
+  // The time floor holds for the neck too: its damper relaxes the head against the torso in
+  // μ_n / c_n (μ_n the two bodies' reduced mass). Below 1 µs it is a rigid link, and the time
+  // path's explicit integrators run out of steps (1 g torso, 1e7 N*s/m: τ = 1e-10 s).
+  const double neck_mass_kg = 1.0 / (1.0 / h.mass_kg + (std::isinf(h.torso_mass_kg) ? 0.0 : 1.0 / h.torso_mass_kg));
+  const double max_neck_damping = neck_mass_kg / kMinTime_s;
+  if (h.neck_damping_N_s_per_m > max_neck_damping) {
+    Reject("head.neck_damping",
+           "in [0, " + FormatSignificant(max_neck_damping) + "] N*s/m for head.mass " + FormatNumber(h.mass_kg) +
+               " kg and head.torso_mass " + FormatNumber(h.torso_mass_kg) +
+               " kg: a stiffer damper stops the head against the torso within 1 us, below the model's time floor",
+           h.neck_damping_N_s_per_m);
+  }
   if (std::isinf(h.torso_mass_kg) && std::isinf(s.robot.mass_kg)) {
     throw std::invalid_argument(
         "robot.mass and head.torso_mass are both fixed: the robot would drive the head into the "
-        "torso for ever and the contact could never end (give a finite mass in (0, 1e+06] kg to "
+        "torso for ever and the contact could never end (give a finite mass in [0.001, 1e+06] kg to "
         "one of them)");
   }
 }
@@ -99,7 +101,7 @@ void CheckNonNegative(const char* field, double value, double max, const char* u
 }  // namespace
 
 void internal::CheckRobotReaction(double reaction_delay_s, double braking_m_per_s2, double robot_mass_kg) {
-  CheckNonNegative("robot.reaction_delay", reaction_delay_s, 10.0, "s", "brake at contact");
+  CheckZeroOrInRange("robot.reaction_delay", reaction_delay_s, kMinTime_s, 10.0, "s", "brake at contact");
   CheckNonNegative("robot.braking", braking_m_per_s2, 1e4, "m/s2", "no braking");
   if (braking_m_per_s2 > 0.0 && std::isinf(robot_mass_kg)) {
     throw std::invalid_argument(
@@ -111,40 +113,42 @@ void internal::CheckRobotReaction(double reaction_delay_s, double braking_m_per_
 namespace {
 
 void CheckScene(const Scene& s) {
-  CheckPositive("robot.mass", s.robot.mass_kg, 1e6, "kg", "fixed (infinite)");
+  CheckInRange("robot.mass", s.robot.mass_kg, kMinMass_kg, 1e6, "kg", "fixed (infinite)");
   // Below ~1e-150 m/s the energy ½mv² underflows and the contact duration is NaN; 1 µm/s
   // is far below any impact and keeps every quantity of the exact path finite.
   if (!(s.robot.speed_m_per_s >= kMinSpeed_m_per_s && s.robot.speed_m_per_s <= 100.0)) {
     Reject("robot.speed", "in [" + FormatNumber(kMinSpeed_m_per_s) + ", 100] m/s", s.robot.speed_m_per_s);
   }
-  CheckPositive("robot.radius", s.robot.radius_m, 100.0, "m", "flat (infinite)");
-  CheckPositive("robot.modulus", s.robot.youngs_modulus_Pa, 1e13, "Pa");
+  CheckInRange("robot.radius", s.robot.radius_m, kMinRadius_m, 100.0, "m", "flat (infinite)");
+  CheckModulus("robot.modulus", s.robot.youngs_modulus_Pa);
   CheckPoisson("robot.poisson", s.robot.poisson_ratio);
 
   const double b_c = s.covering.thickness_m;
-  if (!(b_c >= 0.0 && b_c <= 1.0)) Reject("covering.thickness", "in [0, 1] m (0 = no covering)", b_c);
+  CheckZeroOrInRange("covering.thickness", b_c, kMinLayerThickness_m, 1.0, "m", "no covering");
   if (b_c > 0.0) {
-    CheckPositive("covering.modulus", s.covering.youngs_modulus_Pa, 1e13, "Pa");
+    CheckModulus("covering.modulus", s.covering.youngs_modulus_Pa);
     CheckPoisson("covering.poisson", s.covering.poisson_ratio);
   }
 
-  CheckPositive("head.mass", s.head.mass_kg, 1e6, "kg", "fixed (infinite)");
-  CheckPositive("head.radius", s.head.radius_m, 10.0, "m");
-  CheckPositive("scalp.modulus", s.scalp.youngs_modulus_Pa, 1e13, "Pa");
+  CheckInRange("head.mass", s.head.mass_kg, kMinMass_kg, 1e6, "kg", "fixed (infinite)");
+  CheckInRange("head.radius", s.head.radius_m, kMinRadius_m, 10.0, "m");
+  CheckModulus("scalp.modulus", s.scalp.youngs_modulus_Pa);
   CheckPoisson("scalp.poisson", s.scalp.poisson_ratio);
-  CheckPositive("scalp.thickness", s.scalp.thickness_m, 1.0, "m");
-  if (!(s.scalp.thickness_m < s.head.radius_m)) {
-    throw std::invalid_argument("head.radius must be larger than scalp.thickness (" +
-                                FormatNumber(s.scalp.thickness_m) + " m) (got " +
-                                FormatNumber(s.head.radius_m) + " m)");
+  CheckInRange("scalp.thickness", s.scalp.thickness_m, kMinLayerThickness_m, 1.0, "m");
+  // The skull's radius, head.radius - scalp.thickness, is a radius too: at least the floor.
+  if (!(s.head.radius_m - s.scalp.thickness_m >= kMinRadius_m)) {
+    Reject("head.radius",
+           "at least scalp.thickness + " + FormatSignificant(kMinRadius_m) + " m (the skull's least radius) = " +
+               FormatSignificant(s.scalp.thickness_m + kMinRadius_m) + " m",
+           s.head.radius_m);
   }
-  CheckPositive("skull.modulus", s.skull.youngs_modulus_Pa, 1e13, "Pa");
+  CheckModulus("skull.modulus", s.skull.youngs_modulus_Pa);
   CheckPoisson("skull.poisson", s.skull.poisson_ratio);
 
   if (std::isinf(s.robot.mass_kg) && std::isinf(s.head.mass_kg)) {
     throw std::invalid_argument(
         "robot.mass and head.mass are both fixed: at least one body must be free to move "
-        "(give a finite mass in (0, 1e+06] kg to one of them)");
+        "(give a finite mass in [0.001, 1e+06] kg to one of them)");
   }
 
   const ModelConstants& m = s.model;

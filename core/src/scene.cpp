@@ -1,5 +1,8 @@
-// String forms of the scene enums.
+// String forms of the scene enums, and the check of the injury limits.
 #include "covopt/core/scene.hpp"
+
+#include "covopt/core/physical_floors.hpp"
+#include "range_check.hpp"
 
 namespace covopt {
 
@@ -9,6 +12,13 @@ std::string_view ToString(ThresholdReading reading) noexcept {
     case ThresholdReading::kLiteral: return "literal";
   }
   return "unknown";
+}
+
+void CheckInjuryLimits(const InjuryLimits& limits) {
+  internal::CheckInRange("limits.laceration_tensile_stress_Pa", limits.laceration_tensile_stress_Pa, kMinModulus_Pa,
+                         1e13, "Pa");
+  internal::CheckInRange("limits.contusion_energy_density_J_per_m2", limits.contusion_energy_density_J_per_m2,
+                         kMinEnergyDensity_J_per_m2, 1e13, "J/m2");
 }
 
 }  // namespace covopt

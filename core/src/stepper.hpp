@@ -106,6 +106,12 @@ struct StepperResources {
   std::span<const int> root_directions = kRootDirections;
   /// The Jacobian for the implicit methods; null: SUNDIALS' difference quotients.
   JacobianFunction jacobian = Jacobian;
+  /// The implicit methods evaluate the Jacobian at every setup of Newton's matrix instead of
+  /// SUNDIALS' default of once per 51 steps. For a Jacobian that is far off where it was last
+  /// evaluated: the body-region path's phase 1 is singular at first contact (d δ_c'/d δ_c
+  /// unbounded), and a Jacobian from there, kept for the whole contact, made Newton's
+  /// corrections vanish and its "converged" stages the predictor's (docs/numerics.md).
+  bool jacobian_at_every_setup = false;
 };
 
 std::unique_ptr<Stepper> MakeCvodeStepper(ComputationMethod method, const StepperResources& r);

@@ -121,6 +121,7 @@ class DirkStepper final : public Stepper {
     if (flag == ARK_SUCCESS) flag = ARKStepSetLinearSolver(mem_, linear_solver_, matrix_);
     // Without an analytic Jacobian, difference quotients.
     if (flag == ARK_SUCCESS && resources_.jacobian) flag = ARKStepSetJacFn(mem_, resources_.jacobian);
+    if (flag == ARK_SUCCESS && resources_.jacobian_at_every_setup) flag = ARKStepSetJacEvalFrequency(mem_, 1);
     return flag;
   }
   void Release() noexcept {

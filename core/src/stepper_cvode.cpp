@@ -37,6 +37,7 @@ class CvodeStepper final : public Stepper {
       linear_solver_ = SUNLinSol_Dense(r.state, matrix_, r.context);
       CVodeSetLinearSolver(mem_, linear_solver_, matrix_);
       if (r.jacobian) CVodeSetJacFn(mem_, r.jacobian);  // else difference quotients
+      if (r.jacobian_at_every_setup) CVodeSetJacEvalFrequency(mem_, 1);
     } else {
       fixed_point_ = SUNNonlinSol_FixedPoint(r.state, 0, r.context);
       CVodeSetNonlinearSolver(mem_, fixed_point_);

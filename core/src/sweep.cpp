@@ -181,6 +181,24 @@ std::string SweepResult::BriefReport() const {
   return text;
 }
 
+std::size_t CheckSweepSize(std::size_t nx, std::optional<std::size_t> y_values) {
+  const std::size_t ny = y_values.value_or(1);
+  for (const auto& [name, count] : {std::pair{"x", nx}, std::pair{"y", y_values.value_or(0)}}) {
+    if (count > kMaxSweepAxisValues) {
+      throw std::invalid_argument(std::string(name) + ".values: " + std::to_string(count) +
+                                  " values is not allowed (at most " + std::to_string(kMaxSweepAxisValues) +
+                                  " per axis)");
+    }
+  }
+  // Both at most kMaxSweepAxisValues: the product cannot overflow.
+  if (nx * ny > kMaxSweepPoints) {
+    throw std::invalid_argument("the grid has " + std::to_string(nx) + " x " + std::to_string(ny) + " = " +
+                                std::to_string(nx * ny) + " points; at most " + std::to_string(kMaxSweepPoints) +
+                                " are allowed");
+  }
+  return nx * ny;
+}
+
 SweepResult Sweep(const SweepSpec& spec, const SweepOptions& options,
                   const SweepConsumer& consumer) {
   // Check everything before any work.
@@ -192,21 +210,8 @@ SweepResult Sweep(const SweepSpec& spec, const SweepOptions& options,
   }
   const std::size_t nx = spec.x.values.size();
   const std::size_t ny = spec.y ? spec.y->values.size() : 1;
-  if (nx > std::numeric_limits<std::size_t>::max() / ny) {
-    throw std::invalid_argument("the grid has " + std::to_string(nx) + " x " +
-                                std::to_string(ny) + " points, more than can be counted");
-  }
-  if (!(spec.limits.laceration_tensile_stress_Pa > 0.0) ||
-      !std::isfinite(spec.limits.laceration_tensile_stress_Pa)) {
-    throw std::invalid_argument("limits.laceration_tensile_stress_Pa must be > 0 Pa and finite (got " +
-                                FormatNumber(spec.limits.laceration_tensile_stress_Pa) + ")");
-  }
-  if (!(spec.limits.contusion_energy_density_J_per_m2 > 0.0) ||
-      !std::isfinite(spec.limits.contusion_energy_density_J_per_m2)) {
-    throw std::invalid_argument(
-        "limits.contusion_energy_density_J_per_m2 must be > 0 J/m2 and finite (got " +
-        FormatNumber(spec.limits.contusion_energy_density_J_per_m2) + ")");
-  }
+  CheckSweepSize(nx, spec.y ? std::optional(ny) : std::nullopt);
+  CheckInjuryLimits(spec.limits);
   if (!(spec.safety_factor >= 1.0 && spec.safety_factor <= kMaxSafetyFactor)) {
     throw std::invalid_argument("safety_factor must be in [1, 100] (got " +
                                 FormatNumber(spec.safety_factor) + ")");

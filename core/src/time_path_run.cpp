@@ -102,15 +102,8 @@ void TimePathRun::FinishChecks(double residual, std::string_view residual_name,
   }
   // The self-check: the energy balance of the model, which an exact solution keeps.
   result_.energy_residual = residual;
-  const double allowed = std::max(100.0 * options_.relative_tolerance, 1e-9);
-  if (!(residual <= allowed)) {
-    result_.AddWarning(
-        ValidityCode::kToleranceNotKept,
-        "the time path did not keep its tolerance: " + std::string(residual_name) + " " +
-            FormatNumber(residual) + " exceeds max(100 rtol, 1e-9) = " + FormatNumber(allowed) +
-            " (" + std::string(ToString(options_.method)) +
-            (options_.restart_at_phase_switches ? "" : ", no restart at the phase switches") +
-            ")" + std::string(tail));
+  if (auto warning = ToleranceWarning(residual, options_, options_.restart_at_phase_switches, residual_name, tail)) {
+    result_.AddWarning(warning->code, std::move(warning->message));
   }
   if (!options_.restart_at_phase_switches) {
     result_.AddWarning(
@@ -119,6 +112,19 @@ void TimePathRun::FinishChecks(double residual, std::string_view residual_name,
         "off): the local error test does not see them, so the error may exceed the "
         "tolerance (a numerics-study setting)");
   }
+}
+
+std::optional<ValidityWarning> ToleranceWarning(double residual, const TimeIntegrationOptions& options,
+                                                bool restarted, std::string_view residual_name,
+                                                std::string_view tail) {
+  const double allowed = std::max(100.0 * options.relative_tolerance, 1e-9);
+  if (residual <= allowed) return std::nullopt;
+  return ValidityWarning{
+      ValidityCode::kToleranceNotKept,
+      "the time path did not keep its tolerance: " + std::string(residual_name) + " " +
+          FormatNumber(residual) + " exceeds max(100 rtol, 1e-9) = " + FormatNumber(allowed) + " (" +
+          std::string(ToString(options.method)) + (restarted ? "" : ", no restart at the phase switches") +
+          ")" + std::string(tail)};
 }
 
 SundialsContext::SundialsContext() {

@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -29,6 +30,14 @@ void ForEachFillPoint(double duration, double interval, At&& at) {
   const int gaps = static_cast<int>(std::ceil(duration / interval));
   for (int k = 1; k < gaps; ++k) at(duration * k / gaps);
 }
+
+/// The time path's self-check against its tolerance, shared by every time path: the warning
+/// ValidityCode::kToleranceNotKept, "the time path did not keep its tolerance: <residual_name>
+/// <residual> exceeds max(100 rtol, 1e-9) = <allowed> (<method>[, no restart at the phase
+/// switches])<tail>", when `residual` exceeds max(100 rtol, 1e-9) or is NaN; empty otherwise.
+std::optional<ValidityWarning> ToleranceWarning(double residual, const TimeIntegrationOptions& options,
+                                                bool restarted, std::string_view residual_name,
+                                                std::string_view tail);
 
 /// The most root functions a path has (the extended path's eight).
 inline constexpr int kMaxRootCount = 8;

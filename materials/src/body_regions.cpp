@@ -13,10 +13,11 @@
 #include <utility>
 #include <vector>
 
-#include <toml++/toml.h>
+#include "covopt/internal/toml.hpp"
 
 #include "builtin_body_regions.hpp"
 #include "covopt/core/number_format.hpp"
+#include "covopt/core/physical_floors.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/internal/toml_text.hpp"
 #include "text.hpp"
@@ -56,7 +57,7 @@ struct NumberRange {
 constexpr NumberRange kForceRange{0.0, true, 1e4, "N"};
 constexpr NumberRange kFactorRange{1.0, false, 10.0, ""};
 constexpr NumberRange kStiffnessRange{0.0, true, 1e6, "N/mm"};
-constexpr NumberRange kMassRange{0.0, true, 1e3, "kg"};
+constexpr NumberRange kMassRange{kMinMass_kg, false, 1e3, "kg"};  // the mass floor (physical_floors.hpp)
 constexpr NumberRange kPressureRange{0.0, true, 1e4, "N/cm²"};
 
 /// A name as looked up: lower case, "_", "/" and " " read as "-", outer blanks dropped.

@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include <toml++/toml.h>
+#include "covopt/internal/toml.hpp"
 
 #include "builtin_catalog.hpp"
 #include "covopt/internal/toml_text.hpp"

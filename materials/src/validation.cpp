@@ -2,16 +2,17 @@
 
 #include <cmath>
 
+#include "covopt/core/physical_floors.hpp"
+
 #include "text.hpp"
 
 namespace covopt::materials::internal {
 
 std::optional<std::string> ModulusProblem(double youngs_modulus_Pa) {
-  if (std::isfinite(youngs_modulus_Pa) && youngs_modulus_Pa > 0.0 &&
-      youngs_modulus_Pa <= kMaxModulus_Pa) {
-    return std::nullopt;
-  }
-  return "must be > 0 and <= 1e12 (Pa) (got " + FormatNumber(youngs_modulus_Pa) + ")";
+  // The floor kMinModulus_Pa (1 kPa): softer than any gel a covering is made of.
+  if (youngs_modulus_Pa >= kMinModulus_Pa && youngs_modulus_Pa <= kMaxModulus_Pa) return std::nullopt;
+  return "must be in [" + FormatNumber(kMinModulus_Pa) + ", " + FormatNumber(kMaxModulus_Pa) + "] Pa (got " +
+         FormatNumber(youngs_modulus_Pa) + ")";
 }
 
 std::optional<std::string> PoissonProblem(double poisson_ratio) {
@@ -30,12 +31,12 @@ std::optional<std::string> DensityProblem(double density_kg_per_m3) {
 }
 
 std::optional<std::string> StrengthProblem(double compressive_strength_Pa) {
-  if (std::isfinite(compressive_strength_Pa) && compressive_strength_Pa > 0.0 &&
-      compressive_strength_Pa <= kMaxStrength_Pa) {
+  // The same floor as a modulus: a strength below 1 kPa made crush ratios of 1e300 and inf.
+  if (compressive_strength_Pa >= kMinModulus_Pa && compressive_strength_Pa <= kMaxStrength_Pa) {
     return std::nullopt;
   }
-  return "must be > 0 and <= 1e12 (Pa), or \"does not crush\" or \"unknown\" (got " +
-         FormatNumber(compressive_strength_Pa) + ")";
+  return "must be in [" + FormatNumber(kMinModulus_Pa) + ", " + FormatNumber(kMaxStrength_Pa) +
+         "] Pa, or \"does not crush\" or \"unknown\" (got " + FormatNumber(compressive_strength_Pa) + ")";
 }
 
 std::optional<std::pair<std::string, std::string>> StrengthFieldsProblem(const Material& m) {

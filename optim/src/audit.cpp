@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <covopt/core/number_format.hpp>
+#include <covopt/core/poisson_ratio.hpp>
 #include <covopt/robot/link_kinematics.hpp>
 
 #include "robust_internal.hpp"
@@ -236,8 +237,8 @@ void ValidateCovering(const AuditCovering& c, const std::string& where) {
   if (s.thickness_m == 0.0) return;
   Require(std::isfinite(s.youngs_modulus_Pa) && s.youngs_modulus_Pa > 0.0 && s.youngs_modulus_Pa <= 1e13,
           where + ".covering.youngs_modulus_Pa must be in (0, 1e13] Pa (got " + Number(s.youngs_modulus_Pa) + ")");
-  Require(s.poisson_ratio > -1.0 && s.poisson_ratio <= 0.5,
-          where + ".covering.poisson_ratio must be in (-1, 0.5] (got " + Number(s.poisson_ratio) + ")");
+  Require(IsPoissonRatio(s.poisson_ratio), where + ".covering.poisson_ratio must be in " +
+                                                std::string(kPoissonRatioRange) + " (got " + Number(s.poisson_ratio) + ")");
 }
 
 void ValidateDesign(const AuditDesignOptions& d) {

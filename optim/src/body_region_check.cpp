@@ -58,11 +58,7 @@ void ValidateRule(const DesignRule& rule) {
 
 void ValidateMaterial(const CandidateMaterial& m) {
   if (m.crush_behaviour != materials::CrushBehaviour::kCrushes) return;
-  if (!(std::isfinite(m.compressive_strength_Pa) && m.compressive_strength_Pa > 0.0)) {
-    throw std::invalid_argument("material '" + m.name +
-                                "': compressive strength must be finite and > 0 Pa for a material that crushes (got " +
-                                Number(m.compressive_strength_Pa) + ")");
-  }
+  internal::CheckCompressiveStrength(m.compressive_strength_Pa, "material '" + m.name + "': ");
 }
 
 void ValidateOptions(const BodyRegionOptions& options) {

@@ -8,6 +8,7 @@
 
 #include <covopt/core/scene.hpp>
 #include <covopt/core/scene_fields.hpp>
+#include <covopt/core/sweep.hpp>
 
 namespace covopt::optim {
 namespace {
@@ -39,6 +40,7 @@ std::vector<BodyRegionSweepPoint> SweepBodyRegion(const BodyContactScene& scene,
                                                   const BodyRegionOptions& options) {
   const SceneField& x_field = AxisField(x, "x");
   const SceneField* y_field = y ? &AxisField(*y, "y") : nullptr;
+  CheckSweepSize(x.values.size(), y ? std::optional(y->values.size()) : std::nullopt);  // before the points
   // The body contact's fields as a core Scene, so the axes set them as core's sweep does.
   Scene base;
   base.robot.mass_kg = scene.robot_mass_kg;

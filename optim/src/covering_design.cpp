@@ -54,9 +54,7 @@ void ValidateOptions(const DesignOptions& o) {
 void ValidateCandidates(std::span<const CandidateMaterial> materials) {
   for (const CandidateMaterial& m : materials) {
     if (m.crush_behaviour != materials::CrushBehaviour::kCrushes) continue;
-    Require(std::isfinite(m.compressive_strength_Pa) && m.compressive_strength_Pa > 0.0,
-            "material '" + m.name + "': compressive strength must be finite and > 0 Pa for a material that crushes (got " +
-                Number(m.compressive_strength_Pa) + ")");
+    internal::CheckCompressiveStrength(m.compressive_strength_Pa, "material '" + m.name + "': ");
   }
 }
 

@@ -14,6 +14,7 @@
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
 #include <covopt/core/number_format.hpp>
+#include <covopt/core/physical_floors.hpp>
 #include <covopt/core/sensitivity.hpp>
 #include <covopt/core/time_path_sensitivity.hpp>
 
@@ -77,9 +78,15 @@ bool CentralDifference(const ScoreAt& score_at, const DesignScore& centre, doubl
   const std::array<double, 3> f0 = {centre.laceration_ratio, centre.contusion_ratio, centre.compression_ratio};
   disagreement = 0.0;
   for (int p = 0; p < 2; ++p) {
+    // The points stay within the scene's range: at the floor (physical_floors.hpp: 1 kPa, 0.1 mm,
+    // where the design spaces begin) the forward difference alone, at the top the backward one.
+    const double value = p == 0 ? d.youngs_modulus_Pa : d.thickness_m;
+    const bool down_ok = value * std::exp(-2 * h) >= (p == 0 ? kMinModulus_Pa : kMinLayerThickness_m);
+    const bool up_ok = value * std::exp(2 * h) <= (p == 0 ? 1e13 : 1.0);
     std::array<DesignScore, 4> at;  // +h, -h, +2h, -2h
     const std::array<double, 4> steps = {h, -h, 2 * h, -2 * h};
     for (std::size_t k = 0; k < 4; ++k) {
+      if ((steps[k] < 0 && !down_ok) || (steps[k] > 0 && !up_ok)) continue;
       CoveringDesign shifted = d;
       (p == 0 ? shifted.youngs_modulus_Pa : shifted.thickness_m) *= std::exp(steps[k]);
       at[k] = score_at(shifted);
@@ -91,7 +98,8 @@ bool CentralDifference(const ScoreAt& score_at, const DesignScore& centre, doubl
     const auto same_phase = [&](std::size_t k) { return at[k].peaks.phase_at_max == centre.peaks.phase_at_max; };
     const std::array<double, 3> up = ratios(at[0]), down = ratios(at[1]), up2 = ratios(at[2]), down2 = ratios(at[3]);
     std::array<double, 3> slope{};  // d ratio / d ln θ
-    const bool forward = same_phase(0) && same_phase(2), backward = same_phase(1) && same_phase(3);
+    const bool forward = up_ok && (!down_ok || (same_phase(0) && same_phase(2)));
+    const bool backward = down_ok && (!up_ok || (same_phase(1) && same_phase(3)));
     for (std::size_t r = 0; r < 3; ++r) {
       if (forward == backward) {  // smooth on both sides (or kinked on both: central regardless)
         slope[r] = (up[r] - down[r]) / (2 * h);
@@ -271,9 +279,7 @@ DesignOracle::DesignOracle(const Scene& scene, double covering_poisson_ratio, co
   Scene bare = scene_;
   bare.covering.thickness_m = 0.0;
   (void)ImpactModel::FromScene(bare);  // validates everything but the design
-  if (!(limits.laceration_tensile_stress_Pa > 0 && limits.contusion_energy_density_J_per_m2 > 0)) {
-    throw std::invalid_argument("injury limits must be > 0");
-  }
+  CheckInjuryLimits(limits);
   if (time_path) {
     method_ = time_path->method;
     relative_tolerance_ = time_path->relative_tolerance;

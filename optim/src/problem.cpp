@@ -56,15 +56,30 @@ bool CentralDifferenceLagrangianHessian(const Problem& problem, std::span<const 
     }
     return true;
   };
-  std::vector<double> full(n * n), plus(n), minus(n);  // full[j * n + k] = ∂²L/∂x_j∂x_k
+  // The points stay inside the bounds, where every scene is one the library takes (a design
+  // space begins at the physical floors, physical_floors.hpp): at a bound the difference is
+  // one-sided, from the centre.
+  const std::vector<double> lower = problem.lower_bounds(), upper = problem.upper_bounds();
+  std::vector<double> full(n * n), plus(n), minus(n), centre;  // full[j * n + k] = ∂²L/∂x_j∂x_k
   for (std::size_t j = 0; j < n; ++j) {
     const double h = relative_step * std::max(1.0, std::abs(x[j]));
-    point[j] = x[j] + h;
-    if (!lagrangian_gradient(plus)) return false;
-    point[j] = x[j] - h;
-    if (!lagrangian_gradient(minus)) return false;
+    const double up = j < upper.size() ? std::clamp(upper[j] - x[j], 0.0, h) : h;
+    const double down = j < lower.size() ? std::clamp(x[j] - lower[j], 0.0, h) : h;
+    if (!(up + down > 0.0)) return false;  // a box of zero width: nothing to difference
+    if (up == 0.0 || down == 0.0) {
+      if (centre.empty()) {
+        centre.resize(n);
+        if (!lagrangian_gradient(centre)) return false;
+      }
+    }
+    point[j] = x[j] + up;
+    if (up == 0.0) plus = centre;
+    else if (!lagrangian_gradient(plus)) return false;
+    point[j] = x[j] - down;
+    if (down == 0.0) minus = centre;
+    else if (!lagrangian_gradient(minus)) return false;
     point[j] = x[j];
-    for (std::size_t k = 0; k < n; ++k) full[j * n + k] = (plus[k] - minus[k]) / (2.0 * h);
+    for (std::size_t k = 0; k < n; ++k) full[j * n + k] = (plus[k] - minus[k]) / (up + down);
   }
   for (std::size_t r = 0, e = 0; r < n; ++r) {
     for (std::size_t c = 0; c <= r; ++c, ++e) lower_triangle[e] = 0.5 * (full[r * n + c] + full[c * n + r]);

@@ -15,6 +15,7 @@
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
 #include <covopt/core/number_format.hpp>
+#include <covopt/core/physical_floors.hpp>
 #include <covopt/core/quantity.hpp>
 #include <covopt/core/time_integration.hpp>
 
@@ -36,21 +37,16 @@ void CheckOptions(const SpeedLimitOptions& o) {
   if (!(o.safety_factor >= 1.0 && o.safety_factor <= 100.0)) {
     Reject("safety_factor", "in [1, 100]", o.safety_factor);
   }
-  const double laceration = o.limits.laceration_tensile_stress_Pa;
-  const double contusion = o.limits.contusion_energy_density_J_per_m2;
-  if (!(laceration > 0.0 && std::isfinite(laceration))) {
-    Reject("limits.laceration_tensile_stress_Pa", "finite and > 0 Pa", laceration);
-  }
-  if (!(contusion > 0.0 && std::isfinite(contusion))) {
-    Reject("limits.contusion_energy_density_J_per_m2", "finite and > 0 J/m²", contusion);
-  }
+  CheckInjuryLimits(o.limits);
   if (!(o.max_speed_m_per_s >= kMinSpeed_m_per_s && o.max_speed_m_per_s <= 100.0)) {
     Reject("max_speed_m_per_s", "in [1e-06, 100] m/s", o.max_speed_m_per_s);
   }
-  if (!(o.max_mass_kg > 0.0 && o.max_mass_kg <= 1e6)) Reject("max_mass_kg", "in (0, 1e+06] kg", o.max_mass_kg);
-  if (!(std::isfinite(o.covering_compressive_strength_Pa) && o.covering_compressive_strength_Pa >= 0.0)) {
-    Reject("covering_compressive_strength_Pa", "finite and >= 0 Pa (0: no crush check)",
-           o.covering_compressive_strength_Pa);
+  if (!(o.max_mass_kg >= kMinMass_kg && o.max_mass_kg <= 1e6)) Reject("max_mass_kg", "in [0.001, 1e+06] kg", o.max_mass_kg);
+  // 0 or at least the modulus floor (physical_floors.hpp): a denormal strength made crush
+  // ratios of 1e300 and inf.
+  const double strength = o.covering_compressive_strength_Pa;
+  if (!(strength == 0.0 || (strength >= kMinModulus_Pa && strength <= 1e13))) {
+    Reject("covering_compressive_strength_Pa", "0 (no crush check) or in [1000, 1e+13] Pa", strength);
   }
 }
 
@@ -257,12 +253,13 @@ class Judge {
 /// Lowers `value` by a few ulps until the exact path at `set(value)` is admissible: the limit
 /// computed on the δ axis can round to just above the switch or the limit it stands for.
 template <class Setter>
-ImpactJudgement NudgeDown(double& value, const Scene& scene, const Judge& judge, Setter set) {
+ImpactJudgement NudgeDown(double& value, const Scene& scene, const Judge& judge, Setter set, double floor) {
   Scene probe = scene;
   set(probe, value);
   ImpactJudgement e = judge(probe);
   double step = 2.0 * std::numeric_limits<double>::epsilon();
-  for (int attempt = 0; attempt < 40 && !e.admissible; ++attempt, step *= 2.0) {
+  // Never below `floor`, the smallest value the library takes (a scene there would be refused).
+  for (int attempt = 0; attempt < 40 && !e.admissible && value * (1.0 - step) >= floor; ++attempt, step *= 2.0) {
     value *= 1.0 - step;
     set(probe, value);
     e = judge(probe);
@@ -394,7 +391,8 @@ MassLimit MaxSafeMassOnOracle(const Scene& base, const SpeedLimitOptions& option
     }
   }
   const auto set_mass = [](Scene& s, double m) { s.robot.mass_kg = m; };
-  constexpr double kMinMass_kg = 1e-6;
+  // From the mass floor (physical_floors.hpp, 1 g; the search once began at 1 mg): every
+  // scene the bracket visits is one the library takes.
   const BracketedLimit limit = BracketOnOracle(judge, base, kMinMass_kg, options.max_mass_kg, set_mass);
   result.status = limit.status;
   result.limited_by = limit.by;
@@ -402,7 +400,8 @@ MassLimit MaxSafeMassOnOracle(const Scene& base, const SpeedLimitOptions& option
   result.at_limit = limit.at.ratios;
   switch (limit.status) {
     case SpeedLimitStatus::kNoSafeValue:
-      result.message = std::string("no safe mass: unsafe even at 1e-06 kg (") + std::string(ToString(limit.by)) + ")";
+      result.message = "no safe mass: unsafe even at " + FormatSignificant(kMinMass_kg, 6) + " kg, the model's floor (" +
+                       std::string(ToString(limit.by)) + ")";
       break;
     case SpeedLimitStatus::kSafeUpToSearchLimit:
       result.message = "safe up to the search limit of " + FormatSignificant(limit.value, 6) + " kg" +
@@ -459,14 +458,14 @@ SpeedLimit MaxSafeSpeedOnPenetrationAxis(const Scene& base, const SpeedLimitOpti
     result.status = SpeedLimitStatus::kSafeUpToSearchLimit;
     result.limited_by = LimitingCriterion::kNone;
     result.max_safe_speed_m_per_s = options.max_speed_m_per_s;
-    result.at_limit = NudgeDown(result.max_safe_speed_m_per_s, base, judge, set_speed).ratios;
+    result.at_limit = NudgeDown(result.max_safe_speed_m_per_s, base, judge, set_speed, kMinSpeed_m_per_s).ratios;
     result.message = "safe up to the search limit of " + FormatSignificant(result.max_safe_speed_m_per_s, 6) +
                      " m/s" + (options.max_speed_m_per_s == 100.0 ? " (the model's ceiling)" : "");
     return result;
   }
   double value = speed;
   ImpactJudgement at = {};
-  if (value >= kMinSpeed_m_per_s) at = NudgeDown(value, base, judge, set_speed);
+  if (value >= kMinSpeed_m_per_s) at = NudgeDown(value, base, judge, set_speed, kMinSpeed_m_per_s);
   if (!(value >= kMinSpeed_m_per_s) || !at.admissible) {
     result.status = SpeedLimitStatus::kNoSafeValue;
     result.max_safe_speed_m_per_s = 0.0;
@@ -512,18 +511,20 @@ MassLimit MaxSafeMassOnPenetrationAxis(const Scene& base, const SpeedLimitOption
     result.status = SpeedLimitStatus::kSafeUpToSearchLimit;
     result.limited_by = LimitingCriterion::kNone;
     result.max_safe_mass_kg = options.max_mass_kg;
-    result.at_limit = NudgeDown(result.max_safe_mass_kg, base, judge, set_mass).ratios;
+    result.at_limit = NudgeDown(result.max_safe_mass_kg, base, judge, set_mass, kMinMass_kg).ratios;
     result.message = "safe up to the search limit of " + FormatSignificant(result.max_safe_mass_kg, 6) + " kg" +
                      (options.max_mass_kg == 1e6 ? " (the model's ceiling)" : "");
     return result;
   }
   double value = mass;
   ImpactJudgement at = {};
-  if (value > 0.0) at = NudgeDown(value, base, judge, set_mass);
-  if (!(value > 0.0) || !at.admissible) {
+  // Below the mass floor (physical_floors.hpp) there is no scene to judge.
+  if (value >= kMinMass_kg) at = NudgeDown(value, base, judge, set_mass, kMinMass_kg);
+  if (!(value >= kMinMass_kg) || !at.admissible) {
     result.status = SpeedLimitStatus::kNoSafeValue;
     result.max_safe_mass_kg = 0.0;
-    result.message = std::string("no safe mass: the limit underflows (") + std::string(ToString(limit.by)) + ")";
+    result.message = "no safe mass: the limit is below " + FormatSignificant(kMinMass_kg, 6) + " kg, the model's floor (" +
+                     std::string(ToString(limit.by)) + ")";
     return result;
   }
   result.status = SpeedLimitStatus::kLimited;

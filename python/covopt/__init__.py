@@ -20,7 +20,7 @@ release the GIL.
 from . import _body_regions, _covopt, _provenance
 from ._body_regions import (BodyContact, BodyRegionDesign, BodyRegionSpeedLimitTable, BodyRegionSweep,
                             BodyRegionTrajectoryCheck)
-from ._audit import Audit, audit, audit_many
+from ._audit import Audit, AuditFailure, AuditManyError, audit, audit_many
 from ._errors import ComputationError
 from ._results import (ContactMotion, Design, Material, ReflectedMass, Result, RobustDesign,
                        RobustSimulation, Sensitivities, Simulation, SpeedLimit, SpeedLimitTable,
@@ -34,7 +34,8 @@ __all__ = ["Scene", "Result", "simulate", "sweep", "optimize", "materials", "mat
            "ComputationError", "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "iso_robot_mass",
            "contact_motion", "check_trajectory", "worst_case", "injury_probability",
            "sensitivities", "robust_optimize", "load_scene", "BodyContact", "BodyRegionSpeedLimitTable",
-           "BodyRegionDesign", "BodyRegionTrajectoryCheck", "BodyRegionSweep", "Audit", "audit", "audit_many"]
+           "BodyRegionDesign", "BodyRegionTrajectoryCheck", "BodyRegionSweep", "Audit", "AuditFailure", "AuditManyError",
+           "audit", "audit_many"]
 
 
 def _scene(scene, ranged=False):
@@ -103,8 +104,9 @@ def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=No
     x, y: ``(quantity, values)``; the quantity is a scene keyword or CLI flag name
     ("speed", "robot_mass" or "robot-mass", "covering_thickness", ...), the values SI
     numbers (a list or numpy array; math.inf, "fixed" or "flat" where a body may be fixed
-    or the robot flat). threads: worker threads, None or 0 = all cores; results are the
-    same for any number.
+    or the robot flat); at most 100000 values per axis and 1000000 points in all, as ``covopt
+    sweep`` (a ValueError before anything is allocated; an iterator is read up to the cap).
+    threads: worker threads, None or 0 = all cores; results are the same for any number.
 
     Returns a Sweep: ``x`` (and ``y``) as numpy arrays with ``x_quantity`` (``y_quantity``);
     one numpy array per result, ``a[i, j]`` at ``x[i]``, ``y[j]`` (``a[i]`` with one axis):
@@ -284,8 +286,8 @@ def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
     """A table of limits, as ``covopt speed-limit --json``: solve_for="speed" gives the max
     safe speed for each robot mass in values [kg] (math.inf or "fixed" for a fixed robot;
     default the scene's), solve_for="mass" the max safe reflected mass for each speed in
-    values [m/s] (default the scene's). materials: a catalog name or a list of names, one
-    block of rows each (default the scene's covering).
+    values [m/s] (default the scene's; at most 100000, as the CLI's lists). materials: a catalog
+    name or a list of names, one block of rows each (default the scene's covering).
 
     oracle, method, rtol, max_steps: as optimize's.
 

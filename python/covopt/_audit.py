@@ -7,11 +7,12 @@ import os
 from . import _covopt, _provenance
 from ._results import Result
 
-__all__ = ["Audit", "audit", "audit_many"]
+__all__ = ["Audit", "AuditFailure", "AuditManyError", "audit", "audit_many"]
 
 
 class Audit(Result):
-    """covopt.audit's result: the object of ``covopt audit --json`` (``to_dict()`` is it).
+    """covopt.audit's result: the object of ``covopt audit --json`` (``to_dict()`` is it);
+    ``ok`` is True (audit_many's AuditFailure has False).
 
     status ("safe", "unsafe", "at-rest"), message, safe_speed_scale (None: at rest
     throughout), limiting (the cell that sets the scale: link, region, binding, time_s,
@@ -26,6 +27,7 @@ class Audit(Result):
     governing_ratio, message), warnings.
     """
     _report_kind = "audit"
+    ok = True  # not a JSON key: audit_many's results are Audits or AuditFailures
 
     def cell(self, link, region):
         """The cell of `link` and `region` (names)."""
@@ -71,13 +73,19 @@ def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surfa
     options = dict(surface_file=surface_file, surface_spacing=surface_spacing, box_edge_radius=box_edge_radius,
                    flat_face_radius=flat_face_radius, link_coverings=link_coverings, body_region=body_region,
                    body_area=body_area, contact=contact, contact_area=contact_area,
-                   allow_full_compression=allow_full_compression or None, allow_crushing=allow_crushing or None,
-                   design=design or None, materials=materials, families=families,
-                   allow_unknown_strength=allow_unknown_strength or None, max_thickness=max_thickness,
+                   allow_full_compression=_given_flag(allow_full_compression), allow_crushing=_given_flag(allow_crushing),
+                   design=_given_flag(design), materials=materials, families=families,
+                   allow_unknown_strength=_given_flag(allow_unknown_strength), max_thickness=max_thickness,
                    thickness_step=thickness_step, payload_mass=payload_mass, payload_com=payload_com,
-                   payload_inertia=payload_inertia, ignore_joint_limits=ignore_joint_limits or None,
-                   keep_ratio_over_time=None if keep_ratio_over_time else False)
+                   payload_inertia=payload_inertia, ignore_joint_limits=_given_flag(ignore_joint_limits),
+                   keep_ratio_over_time=None if keep_ratio_over_time is True else keep_ratio_over_time)
     return Audit(_covopt.audit(urdf, tip, trajectory, base, urdf_text, _scene(scene), **_given(**options)))
+
+
+def _given_flag(value):
+    """A flag as the extension takes it: None for its default False (not an input given), else
+    the value itself, which must be a bool (design="yes" or design=0 is a ValueError there)."""
+    return None if value is False else value
 
 
 def _audit_one(trajectory, urdf, tip, base, urdf_text, scene, options):
@@ -86,30 +94,78 @@ def _audit_one(trajectory, urdf, tip, base, urdf_text, scene, options):
     return audit(urdf, tip, trajectory, base, scene=scene, urdf_text=urdf_text, **options).to_dict()
 
 
+class AuditFailure:
+    """audit_many's result for a program whose audit raised: ``ok`` is False (an Audit's is
+    True), ``index`` its place in the list, ``program`` the trajectory as given (a path, or
+    "trajectories[i]" for a dict), ``error`` the exception (ValueError for bad input, as
+    audit() raises it), ``error_type`` its class name and ``message`` its text."""
+
+    ok = False
+
+    def __init__(self, index, program, error):
+        self.index = index
+        self.program = program
+        self.error = error
+        self.error_type = type(error).__name__
+        self.message = str(error)
+
+    def __str__(self):
+        return f"{self.program}: {self.error_type}: {self.message}"
+
+    def __repr__(self):
+        return f"AuditFailure(index={self.index}, program={self.program!r}, {self.error_type}: {self.message!r})"
+
+
+class AuditManyError(Exception):
+    """audit_many(errors="raise") when a program failed: the message names every failed program;
+    ``results`` holds every program's result (Audits and AuditFailures, in order), ``failures``
+    the failed ones; the first failure's exception is the cause."""
+
+    def __init__(self, results):
+        self.results = results
+        self.failures = [r for r in results if not r.ok]
+        super().__init__(f"{len(self.failures)} of {len(results)} programs failed: " +
+                         "; ".join(str(f) for f in self.failures))
+
+
 def audit_many(trajectories, urdf, tip, base=None, *, scene=None, urdf_text=None, client=None,
-               scheduler_address=None, n_workers=2, threads_per_worker=1, processes=True, **options):
+               scheduler_address=None, n_workers=2, threads_per_worker=1, processes=False, errors="collect",
+               **options):
     """Audits many trajectories (a plant's programs) in parallel through dask.distributed;
-    returns a list of Audits in the order given, each equal to audit(trajectory, ...) run
-    serially (the same library call on the same input: the results are identical).
+    returns one result per program, in the order given: an Audit equal to audit(trajectory, ...)
+    run serially (the same library call on the same input: the results are identical), or an
+    AuditFailure (``ok`` False; ``program``, ``error``, ``error_type``, ``message``) where that
+    program's audit raised. One bad program never loses the others.
 
     trajectories: CSV paths (str or os.PathLike; a directory: its *.csv files, sorted) or
-    trajectory dicts. The other arguments as audit() takes them. Where it runs:
+    trajectory dicts. The other arguments as audit() takes them. errors="collect" (default):
+    failures are in the list; errors="raise": AuditManyError naming every failed program once
+    all have run (its ``results`` holds them all). Where it runs:
     - client: a dask.distributed Client you made (used as it is, not closed);
     - scheduler_address: "tcp://host:8786" of a running scheduler (``dask scheduler``, with
       ``dask worker tcp://host:8786`` on each machine; covopt importable on every worker, and
       the URDF and trajectory paths readable there);
-    - neither: an in-process LocalCluster of n_workers workers, threads_per_worker threads
-      each (processes=False: threads in this process), closed afterwards.
+    - neither: a LocalCluster of n_workers workers, threads_per_worker threads each, closed
+      afterwards. processes=False (default): threads in this process (the audit runs without
+      the GIL, so they run in parallel), which works from any script. processes=True: worker
+      processes, which start by re-running the calling script: its call must be under
+      ``if __name__ == "__main__":``, else RuntimeError naming that fix before any process starts.
     """
     try:
-        from dask.distributed import Client, LocalCluster
+        from dask.distributed import Client, LocalCluster, wait
     except ImportError as e:  # pragma: no cover - the dependency is documented
         raise ImportError("audit_many needs dask.distributed (Debian: apt-get install python3-distributed; "
                           "pip: pip install distributed)") from e
     if client is not None and scheduler_address is not None:
         raise ValueError("give client or scheduler_address, not both")
+    if errors not in ("collect", "raise"):
+        raise ValueError(f"errors: expected \"collect\" or \"raise\" (got {errors!r})")
+    if not isinstance(processes, bool):
+        raise ValueError(f"processes: expected True or False (got {processes!r})")
     items = _expand(trajectories)
     urdf = os.fspath(urdf) if urdf is not None else None
+    if client is None and scheduler_address is None and processes:
+        _refuse_unguarded_script()
     owned = []
     try:
         if client is None:
@@ -123,10 +179,73 @@ def audit_many(trajectories, urdf, tip, base=None, *, scene=None, urdf_text=None
             owned.insert(0, client)
         futures = client.map(_audit_one, items, urdf=urdf, tip=tip, base=base, urdf_text=urdf_text,
                              scene=scene, options=options, pure=False)
-        return [Audit(result) for result in client.gather(futures)]
+        wait(futures)
+        results = []
+        for index, (item, future) in enumerate(zip(items, futures)):
+            try:
+                results.append(Audit(future.result()))
+            except Exception as e:  # the program's error (or its worker's), kept with the program
+                program = item if isinstance(item, str) else f"trajectories[{index}]"
+                results.append(AuditFailure(index, program, e))
     finally:
         for resource in owned:
             resource.close()
+    if errors == "raise" and any(not r.ok for r in results):
+        failure = AuditManyError(results)
+        raise failure from failure.failures[0].error
+    return results
+
+
+def _refuse_unguarded_script():
+    """RuntimeError when audit_many(processes=True) is called from the top level of the script
+    being run outside ``if __name__ == "__main__":``: each worker process starts by re-running
+    that script (multiprocessing's spawn), which would start workers again, crash, and leak
+    their semaphores. Nothing is refused where that cannot be told (an interactive session, no
+    source, multiprocessing's fork method)."""
+    import ast
+    import sys
+    try:
+        from dask import config
+        if config.get("distributed.worker.multiprocessing-method", "spawn") == "fork":
+            return
+    except ImportError:  # pragma: no cover - dask.distributed brings dask
+        pass
+    main = sys.modules.get("__main__")
+    path = getattr(main, "__file__", None)
+    if main is None or not path:
+        return
+    frame = sys._getframe(1)
+    while frame is not None and not (frame.f_globals is vars(main) and frame.f_code.co_name == "<module>"):
+        frame = frame.f_back
+    if frame is None:  # not run by the script's top level (a thread, a callback)
+        return
+    try:
+        with open(path, encoding="utf-8") as f:
+            tree = ast.parse(f.read(), path)
+    except (OSError, SyntaxError, ValueError):
+        return
+    line = frame.f_lineno
+    for statement in tree.body:
+        if statement.lineno <= line <= (statement.end_lineno or statement.lineno):
+            if isinstance(statement, ast.If) and _is_main_test(statement.test) and \
+                    any(s.lineno <= line <= (s.end_lineno or s.lineno) for s in statement.body):
+                return
+            raise RuntimeError(
+                f"audit_many(processes=True) is called at {path}:{line} outside "
+                "'if __name__ == \"__main__\":'; its worker processes start by re-running the script. "
+                "Put the call under 'if __name__ == \"__main__\":', or use processes=False (the default: "
+                "threads in this process)")
+
+
+def _is_main_test(test):
+    """Whether `test` is ``__name__ == "__main__"`` (either side)."""
+    import ast
+    if not (isinstance(test, ast.Compare) and len(test.ops) == 1 and isinstance(test.ops[0], ast.Eq)):
+        return False
+    sides = [test.left, test.comparators[0]]
+    names = [s for s in sides if isinstance(s, ast.Name) and s.id == "__name__"]
+    texts = [s for s in sides if isinstance(s, ast.Constant) and s.value == "__main__"]
+    return len(names) == 1 and len(texts) == 1
 
 
 def _expand(trajectories):

@@ -24,15 +24,18 @@ OPTIONS = dict(contact_area="1cm2", flat_face_radius="20mm", keep_ratio_over_tim
 
 
 def main(scheduler_address=None, n_workers=2, processes=True, programs=PROGRAMS):
-    """The audits of every program, as a list of (file name, covopt.Audit)."""
+    """The audits of every program, as a list of (file name, covopt.Audit or covopt.AuditFailure)."""
     paths = sorted(pathlib.Path(programs).glob("*.csv"))
     results = covopt.audit_many(paths, URDF, "fr3_link8", scene=SCENE, scheduler_address=scheduler_address,
                                 n_workers=n_workers, processes=processes, **OPTIONS)
     return list(zip((p.name for p in paths), results))
 
 
-if __name__ == "__main__":
+if __name__ == "__main__":  # the worker processes re-run this file: start them only from here
     for name, result in main(sys.argv[1] if len(sys.argv) > 1 else None):
+        if not result.ok:  # a program that could not be audited (covopt.AuditFailure)
+            print(f"{name:<20} failed   {result.error_type}: {result.message}")
+            continue
         limiting = result.limiting
         where = f"{limiting.link} against {limiting.region} ({limiting.binding})" if limiting else "-"
         print(f"{name:<20} {result.status:<8} scale {result.safe_speed_scale or float('inf'):.3g}  {where}")

@@ -73,14 +73,8 @@ robot::Payload ReadPayload(const py::kwargs& kwargs) {
                                       "payload mass"};
   payload.mass_kg = ReadSceneQuantity(*mass, kMass, "payload_mass");
   if (const auto com = Option(kwargs, "payload_com")) payload.center_of_mass_m = Triple(*com, "payload_com");
-  if (const auto inertia = Option(kwargs, "payload_inertia")) {
-    const std::vector<double> six = inertia->cast<std::vector<double>>();
-    if (six.size() != 6) {
-      throw std::invalid_argument("payload_inertia: expected 6 numbers (ixx, iyy, izz, ixy, ixz, iyz) in kg m2");
-    }
-    payload.inertia_kg_m2 = robot::Payload::InertiaFromSix(six[0], six[1], six[2], six[3], six[4], six[5]);
-  }
-  robot::CheckPayload(payload, "payload");
+  if (const auto inertia = Option(kwargs, "payload_inertia")) payload.inertia_kg_m2 = PayloadInertia(*inertia);
+  robot::CheckPayload(payload, robot::PayloadInputNames{"payload_mass", "payload_com", "payload_inertia"});
   return payload;
 }
 
@@ -102,12 +96,26 @@ optim::AuditCovering CoveringOf(const scene_file::LinkCoveringEntry& entry) {
 /// link_coverings=: a link-covering file (str or os.PathLike), or a dict {link: {material or
 /// modulus (and poisson), thickness}} with the file's keys and values.
 std::vector<scene_file::LinkCoveringEntry> ReadLinkCoverings(const py::object& value) {
-  if (!py::isinstance<py::dict>(value)) return scene_file::ReadLinkCoverings(Path(value));
+  if (!py::isinstance<py::dict>(value)) {
+    if (!py::isinstance<py::str>(value) && !py::hasattr(value, "__fspath__")) {
+      throw std::invalid_argument("link_coverings: expected a link-covering file (a path) or a dict {link: {material "
+                                  "or modulus (and poisson), thickness}} (got " +
+                                  py::repr(value).cast<std::string>() + ")");
+    }
+    return scene_file::ReadLinkCoverings(Path(value));
+  }
   std::vector<scene_file::LinkCoveringEntry> entries;
   for (const auto& [key, item] : value.cast<py::dict>()) {
     scene_file::LinkCoveringEntry entry;
     entry.link = py::str(key).cast<std::string>();
+    if (auto problem = scene_file::NameProblem("link name", entry.link)) {
+      throw std::invalid_argument("link_coverings: " + *problem);
+    }
     entry.where = "link_coverings['" + entry.link + "']";
+    if (!py::isinstance<py::dict>(item)) {
+      throw std::invalid_argument(entry.where + ": expected a dict of material or modulus (and poisson), thickness (got " +
+                                  py::repr(item).cast<std::string>() + ")");
+    }
     const py::dict fields = item.cast<py::dict>();
     for (const auto& [name, _] : fields) {
       const std::string k = py::str(name).cast<std::string>();
@@ -119,7 +127,16 @@ std::vector<scene_file::LinkCoveringEntry> ReadLinkCoverings(const py::object& v
     if (!fields.contains("thickness")) throw std::invalid_argument(entry.where + ": needs thickness");
     entry.thickness_m = ReadSceneQuantity(fields["thickness"], quantity_specs::kCoveringThickness,
                                           entry.where + " thickness");
-    if (fields.contains("material")) entry.material = py::str(fields["material"]).cast<std::string>();
+    if (fields.contains("material")) {
+      if (!py::isinstance<py::str>(fields["material"])) {
+        throw std::invalid_argument(entry.where + " material: expected a catalog name (a string), got " +
+                                    py::repr(fields["material"]).cast<std::string>());
+      }
+      entry.material = fields["material"].cast<std::string>();
+      if (auto problem = scene_file::NameProblem("material name", *entry.material)) {
+        throw std::invalid_argument(entry.where + " material: " + *problem);
+      }
+    }
     if (fields.contains("modulus")) {
       if (entry.material) throw std::invalid_argument(entry.where + ": give either material or modulus, not both");
       entry.modulus_Pa = ReadSceneQuantity(fields["modulus"], quantity_specs::kCoveringModulus, entry.where + " modulus");
@@ -127,6 +144,9 @@ std::vector<scene_file::LinkCoveringEntry> ReadLinkCoverings(const py::object& v
     if (fields.contains("poisson")) {
       if (!entry.modulus_Pa) throw std::invalid_argument(entry.where + ": poisson is given with modulus only");
       entry.poisson_ratio = ReadSceneQuantity(fields["poisson"], quantity_specs::kPoissonRatio, entry.where + " poisson");
+    }
+    if (auto problem = scene_file::CheckLinkCovering(entry)) {
+      throw std::invalid_argument(entry.where + " " + problem->message);  // the file's ranges
     }
     if (entry.thickness_m > 0.0 && !entry.material && !entry.modulus_Pa) {
       throw std::invalid_argument(entry.where + ": a covering needs material or modulus (thickness 0: bare)");
@@ -176,7 +196,7 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
   }
 
   optim::AuditOptions options;
-  if (const auto keep = Option(kwargs, "keep_ratio_over_time")) options.keep_ratio_over_time = keep->cast<bool>();
+  if (const auto keep = Option(kwargs, "keep_ratio_over_time")) options.keep_ratio_over_time = Bool(*keep, "keep_ratio_over_time");
   if (Flag(kwargs, "design")) {
     try {
       options.design.materials =

@@ -30,6 +30,7 @@
 #include <pybind11/stl.h>
 
 #include "covopt/core/body_contact.hpp"
+#include "covopt/core/physical_floors.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/solve.hpp"
@@ -206,7 +207,7 @@ RegionChoice ReadRegions(const py::kwargs& kwargs) {
 }
 
 /// contact_area= [m²]: a number in m², or a string with its unit ("1cm2", read as the CLI's
-/// --contact-area); in (0, 1] m².
+/// --contact-area); in [1e-6, 1] m² (the floor kMinContactArea_m2).
 double ReadContactArea(const py::kwargs& kwargs) {
   const auto v = Option(kwargs, "contact_area");
   if (!v) return 0.0;
@@ -216,8 +217,9 @@ double ReadContactArea(const py::kwargs& kwargs) {
                                 Repr(*v) + ")");
   }
   const double area = ReadSceneQuantity(*v, quantity_specs::kContactArea, "contact_area");
-  if (!(area > 0.0 && area <= 1.0)) {
-    throw std::invalid_argument("contact_area must be in (0, 1] m2 (1 cm2 is 1e-4) (got " + Repr(*v) + ")");
+  if (!(area >= kMinContactArea_m2 && area <= 1.0)) {  // the floor (physical_floors.hpp): 1 mm2
+    throw std::invalid_argument("contact_area must be in [1e-06, 1] m2 (1 mm2 is 1e-6, 1 cm2 is 1e-4) (got " + Repr(*v) +
+                                ")");
   }
   return area;
 }
@@ -296,6 +298,8 @@ py::dict TimePathDict(const BodyContactResult& r) {
   d["energy_transferred_J"] = r.energy_transferred_J;
   d["contact_duration_s"] = OrNone(r.contact_duration_s);
   d["rebound_speed_m_per_s"] = r.rebound_speed_m_per_s;
+  d["energy_residual"] = OrNone(r.energy_residual);
+  d["warnings"] = r.WarningMessages();
   return d;
 }
 
@@ -407,9 +411,12 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
                               std::string(ToString(timed->status)) + "): " + timed->message,
                           std::string(ToString(timed->status)));
   }
+  std::vector<std::string> warnings = ContactWarnings(inputs, scene);
+  for (std::string& w : report::TimePathWarnings(judgements.front(), timed ? &*timed : nullptr)) {
+    warnings.push_back(std::move(w));
+  }
   py::dict d = JsonToPython(report::BodyContactSimulationJson(scene, MaterialName(inputs), judgements,
-                                                              inputs.safety_factor, std::nullopt,
-                                                              ContactWarnings(inputs, scene)));
+                                                              inputs.safety_factor, std::nullopt, warnings));
   if (timed) d["time_path"] = TimePathDict(*timed);
   if (options.record_history) {
     py::dict columns;

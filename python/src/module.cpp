@@ -30,6 +30,7 @@
 #include <pybind11/stl.h>
 
 #include "covopt/optim/design_map.hpp"
+#include "covopt/core/physical_floors.hpp"
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
@@ -45,6 +46,7 @@
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
 #include "covopt/scene_file/fields.hpp"
+#include "bounded.hpp"
 #include "report_charts.hpp"
 #include "scene_keywords.hpp"
 
@@ -158,9 +160,24 @@ std::optional<py::object> Option(const py::dict& kwargs, const char* name) {
   return value;
 }
 
+bool Bool(const py::handle& value, const char* name) {
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>();
+  // numpy's bool (np.True_, a 0-d boolean array) is a bool too; "yes", 1 or a list are not.
+  if (py::hasattr(value, "dtype") && py::hasattr(value, "ndim") && value.attr("ndim").cast<int>() == 0 &&
+      py::str(value.attr("dtype").attr("kind")).cast<std::string>() == "b") {
+    return PyObject_IsTrue(value.ptr()) == 1;
+  }
+  std::string shown = py::repr(value).cast<std::string>();
+  if (shown.size() > 40) {
+    shown.resize(40);
+    shown += "...";  // appended: GCC 12's LTO warns on substr(...) + "..." (robot_bindings.cpp)
+  }
+  throw std::invalid_argument(std::string(name) + ": expected True or False (got " + shown + ")");
+}
+
 bool Flag(const py::dict& kwargs, const char* name) {
   const auto value = Option(kwargs, name);
-  return value && py::bool_(*value).cast<bool>();
+  return value && Bool(*value, name);
 }
 
 namespace {
@@ -248,11 +265,15 @@ SceneInputs ReadScene(const py::kwargs& keywords) {
     }
   }
   InjuryLimits& limits = inputs.limits;
-  const auto positive = [](double v) { return v > 0.0; };
-  limits.laceration_tensile_stress_Pa = ReadChecked(inputs.given, "laceration_limit", specs::kLacerationLimit,
-                                                    positive, "> 0 Pa", limits.laceration_tensile_stress_Pa);
-  limits.contusion_energy_density_J_per_m2 = ReadChecked(inputs.given, "contusion_limit", specs::kContusionLimit,
-                                                         positive, "> 0 J/m2", limits.contusion_energy_density_J_per_m2);
+  // The floors (physical_floors.hpp), as CheckInjuryLimits.
+  limits.laceration_tensile_stress_Pa =
+      ReadChecked(inputs.given, "laceration_limit", specs::kLacerationLimit,
+                  [](double v) { return v >= kMinModulus_Pa && v <= 1e13; }, "in [1000, 1e+13] Pa",
+                  limits.laceration_tensile_stress_Pa);
+  limits.contusion_energy_density_J_per_m2 =
+      ReadChecked(inputs.given, "contusion_limit", specs::kContusionLimit,
+                  [](double v) { return v >= kMinEnergyDensity_J_per_m2 && v <= 1e13; }, "in [1, 1e+13] J/m2",
+                  limits.contusion_energy_density_J_per_m2);
   inputs.safety_factor = ReadChecked(inputs.given, "safety_factor", specs::kSafetyFactor,
                                      [](double v) { return v >= 1.0 && v <= kMaxSafetyFactor; }, "in [1, 100]", 1.0);
   return inputs;
@@ -453,7 +474,8 @@ SweepAxis ReadAxis(const py::handle& axis, const char* keyword) {
   py::object values = pair[1];
   if (py::isinstance<py::str>(values)) fail("the values must be a sequence of numbers");
   if (!py::isinstance<py::iterable>(values)) fail("the values must be a sequence of numbers");
-  for (const py::handle value : values) {
+  ForEachBounded(values, kMaxSweepAxisValues, std::string(keyword) + " (" + result.quantity + ")",
+                 [&](const py::handle value) {
     if (py::isinstance<py::str>(value)) {
       const std::string word = value.cast<std::string>();
       if (word != "fixed" && word != "flat") fail("a value is a number in SI, 'fixed' or 'flat' (not '" + word + "')");
@@ -464,7 +486,7 @@ SweepAxis ReadAxis(const py::handle& axis, const char* keyword) {
     } else {
       fail("a value is a number in SI, 'fixed' or 'flat' (not " + Repr(value) + ")");
     }
-  }
+  });
   return result;
 }
 
@@ -486,7 +508,9 @@ py::dict SweepGrid(const py::object& x, const py::object& y, const SceneInputs& 
     options.threads = threads_.cast<unsigned>();
   }
 
-  // The arrays, a[i, j] at x[i], y[j]; invalid points are NaN (numbers) or False (flags).
+  // The arrays, a[i, j] at x[i], y[j]; invalid points are NaN (numbers) or False (flags),
+  // allocated only for a grid within the library's caps.
+  CheckSweepSize(spec.x.values.size(), spec.y ? std::optional(spec.y->values.size()) : std::nullopt);
   const std::size_t nx = spec.x.values.size();
   const std::size_t ny = spec.y ? spec.y->values.size() : 0;
   std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(nx)};
@@ -697,9 +721,9 @@ py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
   const auto shown = [&](const char* keyword) { return get(keyword) ? Repr(*get(keyword)) : std::string(); };
   require(d.space.max_thickness_m > d.space.min_thickness_m && d.space.max_thickness_m <= 1.0,
           "max_thickness must be in (0.1 mm, 1 m] (got " + shown("max_thickness") + ")");
-  require(d.space.min_modulus_Pa > 0 && d.space.max_modulus_Pa > d.space.min_modulus_Pa &&
+  require(d.space.min_modulus_Pa >= kMinModulus_Pa && d.space.max_modulus_Pa > d.space.min_modulus_Pa &&
               d.space.max_modulus_Pa <= 1e13,
-          "min_modulus/max_modulus must satisfy 0 < min < max <= 1e13 Pa (got " +
+          "min_modulus/max_modulus must satisfy 1000 <= min < max <= 1e13 Pa (got " +
               std::to_string(d.space.min_modulus_Pa) + " Pa, " + std::to_string(d.space.max_modulus_Pa) + " Pa)");
   require(d.covering_poisson_ratio > -1.0 && d.covering_poisson_ratio <= 0.5,
           "covering_poisson must be in (-1, 0.5] (got " + shown("covering_poisson") + ")");
@@ -707,8 +731,8 @@ py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
           "thickness_step must be in [0, 10 mm] (got " + shown("thickness_step") + ")");
   if (const auto v = get("thickness")) {
     request.thickness_m = ReadSceneQuantity(*v, specs::kCoveringThickness, "thickness");
-    require(*request.thickness_m > 0.0 && *request.thickness_m <= 1.0,
-            "thickness must be in (0, 1 m] (got " + Repr(*v) + "); for no covering use "
+    require(*request.thickness_m >= kMinLayerThickness_m && *request.thickness_m <= 1.0,
+            "thickness must be in [0.1 mm, 1 m] (got " + Repr(*v) + "); for no covering use "
             "simulate(covering_thickness=0)");
   }
   d.allow_full_compression = Flag(kwargs, "allow_full_compression");

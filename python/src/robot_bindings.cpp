@@ -4,11 +4,13 @@
 /// `covopt robot --json` prints) and report::ContactMotionJson. See
 /// python/covopt/__init__.py for the documentation.
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -16,6 +18,7 @@
 
 #include "covopt/report/robot_json.hpp"
 #include "covopt/robot.hpp"
+#include "bounded.hpp"
 #include "robot_inputs.hpp"
 #include "scene_keywords.hpp"
 
@@ -59,14 +62,18 @@ double Number(const py::handle& value, const std::string& what) {
   return x;
 }
 
-std::vector<double> Numbers(const py::handle& value, const std::string& what) {
+/// At most `at_most` numbers (default: one per joint of the largest URDF).
+std::vector<double> Numbers(const py::handle& value, const std::string& what,
+                            std::size_t at_most = robot::kMaxUrdfLinks) {
   if (py::isinstance<py::str>(value) || !py::isinstance<py::iterable>(value)) {
     throw std::invalid_argument(what + ": expected a sequence of numbers (got " +
                                 Excerpt(py::repr(value).cast<std::string>()) + ")");
   }
   std::vector<double> numbers;
   std::size_t i = 0;
-  for (const py::handle item : value) numbers.push_back(Number(item, what + "[" + std::to_string(i++) + "]"));
+  ForEachBounded(value, at_most, what, [&](const py::handle item) {
+    numbers.push_back(Number(item, what + "[" + std::to_string(i++) + "]"));
+  });
   return numbers;
 }
 
@@ -95,6 +102,48 @@ robot::ReflectedMassOptions ReflectedMassOptions(bool ignore_joint_limits) {
   return options;
 }
 
+Eigen::Matrix3d PayloadInertia(const py::handle& value) {
+  static const std::string kExpected =
+      "payload_inertia: expected 6 numbers (ixx, iyy, izz, ixy, ixz, iyz) or a symmetric 3 x 3 matrix, in kg m² "
+      "about the centre of mass";
+  if (py::isinstance<py::str>(value) || !py::isinstance<py::iterable>(value)) {
+    throw std::invalid_argument(kExpected + " (got " + Excerpt(py::repr(value).cast<std::string>()) + ")");
+  }
+  const py::list items = py::list(py::reinterpret_borrow<py::object>(value));
+  const bool nested = std::any_of(items.begin(), items.end(), [](const py::handle item) {
+    return !py::isinstance<py::str>(item) && py::isinstance<py::iterable>(item);
+  });
+  if (!nested) {
+    const std::vector<double> six = Numbers(items, "payload_inertia");
+    if (six.size() != 6) {
+      throw std::invalid_argument(kExpected + " (got " + std::to_string(six.size()) + " numbers)");
+    }
+    return robot::Payload::InertiaFromSix(six[0], six[1], six[2], six[3], six[4], six[5]);
+  }
+  if (items.size() != 3) throw std::invalid_argument(kExpected + " (got " + std::to_string(items.size()) + " rows)");
+  Eigen::Matrix3d matrix;
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    const std::string row_name = "payload_inertia[" + std::to_string(i) + "]";
+    const std::vector<double> row = Numbers(items[static_cast<std::size_t>(i)], row_name);
+    if (row.size() != 3) {
+      throw std::invalid_argument(kExpected + " (got a row " + row_name + " of " + std::to_string(row.size()) +
+                                  " numbers)");
+    }
+    for (Eigen::Index j = 0; j < 3; ++j) matrix(i, j) = row[static_cast<std::size_t>(j)];
+  }
+  for (Eigen::Index i = 0; i < 3; ++i) {
+    for (Eigen::Index j = i + 1; j < 3; ++j) {
+      if (matrix(i, j) != matrix(j, i)) {
+        std::ostringstream message;
+        message << "payload_inertia: a 3 x 3 inertia must be symmetric [kg m²] (got [" << i << "][" << j
+                << "] = " << matrix(i, j) << " and [" << j << "][" << i << "] = " << matrix(j, i) << ")";
+        throw std::invalid_argument(message.str());
+      }
+    }
+  }
+  return matrix;
+}
+
 robot::Payload PayloadFrom(const py::object& mass, const py::object& com, const py::object& inertia) {
   robot::Payload payload;
   if (mass.is_none()) {
@@ -106,14 +155,7 @@ robot::Payload PayloadFrom(const py::object& mass, const py::object& com, const 
   }
   payload.mass_kg = Number(mass, "payload_mass");
   if (!com.is_none()) payload.center_of_mass_m = Triple(com, "payload_com");
-  if (!inertia.is_none()) {
-    const std::vector<double> six = Numbers(inertia, "payload_inertia");
-    if (six.size() != 6) {
-      throw std::invalid_argument("payload_inertia: expected 6 components (ixx, iyy, izz, ixy, ixz, iyz) in kg m² "
-                                  "about the centre of mass (got " + std::to_string(six.size()) + ")");
-    }
-    payload.inertia_kg_m2 = robot::Payload::InertiaFromSix(six[0], six[1], six[2], six[3], six[4], six[5]);
-  }
+  if (!inertia.is_none()) payload.inertia_kg_m2 = PayloadInertia(inertia);
   robot::CheckPayload(payload, robot::PayloadInputNames{"payload_mass", "payload_com", "payload_inertia"});
   return payload;
 }
@@ -184,25 +226,28 @@ robot::JointTrajectory Trajectory(const py::object& trajectory, std::size_t join
                                     "' (a dict has time_s, positions, velocities)");
       }
     }
-    if (py::len(d["time_s"]) > robot::kMaxTrajectorySamples) {
-      throw std::invalid_argument("trajectory['time_s']: " + std::to_string(py::len(d["time_s"])) +
-                                  " samples is not allowed (at most 1000000)");
-    }
     for (const char* key : {"time_s", "positions", "velocities"}) {
       if (!d.contains(key)) {
         throw std::invalid_argument(std::string("trajectory: missing key '") + key +
                                     "' (a dict needs time_s, positions, velocities)");
       }
     }
+    // Every array at most kMaxTrajectorySamples long, checked before it is read.
     robot::JointTrajectory t;
-    t.time_s = Numbers(d["time_s"], "trajectory['time_s']");
-    std::size_t i = 0;
-    for (const py::handle row : d["positions"]) {
-      t.positions.push_back(Vector(Numbers(row, "trajectory['positions'][" + std::to_string(i++) + "]")));
-    }
-    i = 0;
-    for (const py::handle row : d["velocities"]) {
-      t.velocities.push_back(Vector(Numbers(row, "trajectory['velocities'][" + std::to_string(i++) + "]")));
+    t.time_s = Numbers(d["time_s"], "trajectory['time_s']", robot::kMaxTrajectorySamples);
+    for (const char* key : {"positions", "velocities"}) {
+      const py::object rows = d[key];
+      if (py::isinstance<py::str>(rows) || !py::isinstance<py::iterable>(rows)) {
+        throw std::invalid_argument(std::string("trajectory['") + key + "']: expected a sequence of rows (got " +
+                                    Excerpt(py::repr(rows).cast<std::string>()) + ")");
+      }
+      std::vector<Eigen::VectorXd>& out = std::string_view(key) == "positions" ? t.positions : t.velocities;
+      std::size_t i = 0;
+      ForEachBounded(rows, robot::kMaxTrajectorySamples, std::string("trajectory['") + key + "']",
+                     [&](const py::handle row) {
+                       out.push_back(Vector(Numbers(row, std::string("trajectory['") + key + "'][" +
+                                                              std::to_string(i++) + "]")));
+                     });
     }
     if (t.positions.size() != t.size() || t.velocities.size() != t.size()) {
       throw std::invalid_argument("trajectory: time_s, positions and velocities must have the same number of "

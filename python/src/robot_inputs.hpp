@@ -18,8 +18,8 @@
 namespace covopt::python {
 
 /// The keywords payload_mass [kg] (None or 0: no payload), payload_com (x, y, z) [m, tip
-/// frame] and payload_inertia (ixx, iyy, izz, ixy, ixz, iyz) [kg m², about the centre of mass,
-/// tip-frame axes; None: a point mass] as a checked robot::Payload, as the CLI's
+/// frame] and payload_inertia (ixx, iyy, izz, ixy, ixz, iyz, or a symmetric 3 x 3 matrix:
+/// PayloadInertia) [kg m², about the centre of mass, tip-frame axes; None: a point mass] as a checked robot::Payload, as the CLI's
 /// --payload-mass/--payload-com/--payload-inertia.
 /// @throws std::invalid_argument naming the keyword, the value and the allowed range
 ///         (robot::CheckPayload), or payload_com/payload_inertia without payload_mass.
@@ -46,6 +46,12 @@ robot::JointTrajectory Trajectory(const pybind11::object& trajectory, std::size_
 
 /// The library's options for the keyword ignore_joint_limits.
 robot::ReflectedMassOptions ReflectedMassOptions(bool ignore_joint_limits);
+
+/// payload_inertia [kg m², about the centre of mass, tip-frame axes]: six numbers (ixx, iyy,
+/// izz, ixy, ixz, iyz, the order of the CLI's --payload-inertia and URDF's <inertia>) or a
+/// symmetric 3 x 3 matrix (nested sequences or a numpy array: np.eye(3)), each finite.
+/// @throws std::invalid_argument naming payload_inertia, the shapes it takes and what it got.
+Eigen::Matrix3d PayloadInertia(const pybind11::handle& value);
 
 /// Three finite numbers (x, y, z). @throws std::invalid_argument naming `what`.
 Eigen::Vector3d Triple(const pybind11::handle& value, const char* what);

@@ -54,7 +54,10 @@ SceneInputs ReadScene(const pybind11::kwargs& keywords);
 
 /// `kwargs[name]` unless absent or None.
 std::optional<pybind11::object> Option(const pybind11::dict& kwargs, const char* name);
-/// bool(kwargs[name]), false when absent or None.
+/// A bool keyword: True or False (Python's or numpy's bool).
+/// @throws std::invalid_argument "design: expected True or False (got 'yes')" for anything else.
+bool Bool(const pybind11::handle& value, const char* name);
+/// Bool(kwargs[name]), false when absent or None.
 bool Flag(const pybind11::dict& kwargs, const char* name);
 
 /// A Python value as SI: a number (SI; math.inf where the spec allows "fixed" or "flat"), or

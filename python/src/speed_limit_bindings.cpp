@@ -15,9 +15,11 @@
 #include <pybind11/pybind11.h>
 
 #include "covopt/core/quantity.hpp"
+#include "covopt/core/sweep.hpp"
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/optim/speed_limit_table.hpp"
 #include "covopt/report/speed_limit_json.hpp"
+#include "bounded.hpp"
 #include "report_charts.hpp"
 #include "scene_keywords.hpp"
 
@@ -41,11 +43,13 @@ namespace {
 using optim::SpeedLimitQuantity;
 using optim::SpeedLimitRow;
 
-/// One value or a list of values of a scene quantity.
+/// One value or a list of values of a scene quantity: at most kMaxSweepAxisValues, as the
+/// CLI's --robot-mass / --speed lists.
 std::vector<double> ReadValues(const py::handle& value, const QuantitySpec& spec, const char* keyword) {
   std::vector<double> values;
   if (!py::isinstance<py::str>(value) && py::isinstance<py::iterable>(value)) {
-    for (const py::handle item : value) values.push_back(ReadSceneQuantity(item, spec, keyword));
+    ForEachBounded(value, kMaxSweepAxisValues, keyword,
+                   [&](const py::handle item) { values.push_back(ReadSceneQuantity(item, spec, keyword)); });
     if (values.empty()) throw std::invalid_argument(std::string(keyword) + ": no values (got an empty list)");
     return values;
   }
@@ -119,13 +123,13 @@ py::dict SpeedLimitTable(const SceneInputs& scene, const py::kwargs& kwargs) {
     if (py::isinstance<py::str>(*v)) {
       names.emplace_back(v->cast<std::string>());
     } else if (py::isinstance<py::iterable>(*v)) {
-      for (const py::handle item : *v) {
+      ForEachBounded(*v, kMaxSweepAxisValues, "materials", [&](const py::handle item) {
         if (!py::isinstance<py::str>(item)) {
           throw std::invalid_argument("materials: expected a name or a list of names (got " +
                                       py::repr(*v).cast<std::string>() + ")");
         }
         names.emplace_back(item.cast<std::string>());
-      }
+      });
     }
     if (names.empty()) throw std::invalid_argument("materials: expected a name or a list of names (got an empty list)");
   } else {

@@ -109,6 +109,24 @@ def test_time_path_agrees_with_the_exact_path():
     with pytest.raises(ValueError, match="rtol applies to the time path only"):
         covopt.simulate(Scene(robot_mass=10, speed=0.6, **COVERED), body_region="chest", rtol=1e-8)
 
+def test_time_path_self_check():
+    """The body-region time path's energy self-check (docs/numerics.md): C1 of docs/model.md
+    §13.9 at 0.403 m/s. SDIRK 4(3) at rtol 1e-3 gave 179 N for the exact 117 N, silently (a
+    stale Jacobian); ERK 6(5) at rtol 1e-8 misses its tolerance and says so, as the CLI does."""
+    c1 = Scene(robot_mass=10, speed=0.403, covering_modulus="0.5MPa", covering_poisson=0.3,
+               covering_thickness="10mm", robot_radius="40mm")
+    exact = covopt.simulate(c1, body_region="chest")
+    for method in ("arkode-sdirk43", "arkode-esdirk54", "cvode-bdf"):
+        timed = covopt.simulate(c1, body_region="chest", method=method, rtol=1e-3)
+        assert timed.time_path.peak_force_N == pytest.approx(exact.peak_force_N, rel=0.1), method
+        assert timed.time_path.rebound_speed_m_per_s == pytest.approx(0.403, rel=0.1), method
+        assert 0 < timed.time_path.energy_residual <= 0.1 and timed.time_path.warnings == [], method
+    loose = covopt.simulate(c1, body_region="chest", method="arkode-erk65", rtol=1e-8)
+    assert loose.time_path.energy_residual > 1e-6
+    assert loose.time_path.warnings[0].startswith("the time path did not keep its tolerance: energy residual ")
+    assert "chest (sternum): " + loose.time_path.warnings[0] in loose.warnings
+    assert exact.to_dict().get("time_path") is None
+
 
 def test_trajectory_scale_is_annex_a_for_the_bare_robot(cli_json):
     scene = Scene(covering_thickness=0)

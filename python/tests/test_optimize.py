@@ -88,7 +88,7 @@ def test_the_recommendation_is_admissible_and_simulates_as_reported():
 @pytest.mark.parametrize("kwargs,words", [
     ({"materials": ["polystyrene"]}, ["materials: no material 'polystyrene' in the catalog"]),
     ({"families": ["metal"]}, ["families: no family 'metal'"]),
-    ({"thickness": 0.0}, ["thickness must be in (0, 1 m]"]),
+    ({"thickness": 0.0}, ["thickness must be in [0.1 mm, 1 m]"]),
     ({"max_thickness": 2.0}, ["max_thickness 2"]),
     ({"global_algorithm": "newton"}, ["global_algorithm: expected direct-l, isres or mlsl", "newton"]),
     ({"threads": -1}, ["threads must be a whole number in [0, 256]", "-1"]),

@@ -87,11 +87,11 @@ def test_the_max_safe_mass_and_speed_describe_one_boundary():
 
 
 def test_edges_are_answers():
-    top = covopt.max_safe_speed(covopt.Scene(robot_mass="0.1g", covering_thickness=0,
+    top = covopt.max_safe_speed(covopt.Scene(robot_mass="1g", covering_thickness=0,
                                              laceration_limit="1GPa", contusion_limit="1000J/cm2"))
     assert top.max_safe_speed_m_per_s == 100.0
     assert top.limited_by == "none"
-    none = covopt.max_safe_speed(covopt.Scene(laceration_limit="0.001Pa"))
+    none = covopt.max_safe_speed(covopt.Scene(laceration_limit="1kPa", safety_factor=100))
     assert none.max_safe_speed_m_per_s is None
     assert none.status == "no-safe-value"
 

@@ -126,6 +126,18 @@ std::string Cell(const std::optional<double>& value) { return value ? FormatShor
 
 }  // namespace
 
+std::vector<std::string> TimePathWarnings(const optim::BodyRegionJudgement& judgement,
+                                          const BodyContactResult* time_path) {
+  std::vector<std::string> lines;
+  for (const BodyContactResult* run : {&judgement.contact, time_path}) {
+    if (!run) continue;
+    for (const std::string& message : run->WarningMessages()) {
+      lines.push_back(judgement.limits.region->name + " (" + judgement.limits.area->name + "): " + message);
+    }
+  }
+  return lines;
+}
+
 std::string BodyContactSceneJson(const BodyContactScene& scene, const std::optional<std::string>& material,
                                  bool without_robot) {
   return SceneObject(scene, material, without_robot).dump(2);

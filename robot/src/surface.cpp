@@ -13,10 +13,11 @@
 #include <utility>
 #include <vector>
 
-#include <toml++/toml.h>
+#include "covopt/internal/toml.hpp"
 #include <urdf_model/model.h>
 
 #include "chain_impl.hpp"
+#include "covopt/core/physical_floors.hpp"
 #include "covopt/internal/toml_text.hpp"
 #include "urdf_parse.hpp"
 
@@ -59,14 +60,73 @@ void CheckSpacing(double spacing_m) {
   }
 }
 
-/// The number of intervals of at most `spacing` over `length` (at least 1).
+/// The number of intervals of at most `spacing` over `length` (at least 1), as a double (no
+/// overflow: EstimateShapePoints takes it for any length).
+double IntervalCount(double length, double spacing) { return std::max(1.0, std::ceil(length / spacing - 1e-9)); }
+
+/// The number of intervals of at most `spacing` over `length` (at least 1). Only called on
+/// shapes whose estimate is within kMaxSurfacePoints (SampleShape checks it first).
 std::size_t Intervals(double length, double spacing) {
-  return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / spacing - 1e-9)));
+  return static_cast<std::size_t>(IntervalCount(length, spacing));
 }
 
 /// The number of points around a circle of radius `r`: at most `spacing` apart, at least 4.
 std::size_t AroundCount(double r, double spacing) {
   return std::max<std::size_t>(4, Intervals(2.0 * kPi * r, spacing));
+}
+
+// ---- the estimate: Sampler's counts without its points ------------------------------------
+// Each count below mirrors a loop of Sampler with the same arithmetic (IntervalCount), so it is
+// exact, except for the sum of the ring sizes over the rings of a cap or a disc, which is
+// bounded above in closed form. A ring of radius ρ has max(4, ⌈x⌉) points, x = 2πρ/s, which is
+// at most x + 1 when x >= 3 and at most 4 < x + 4 otherwise: so a set of rings has at most
+// Σx + (rings) + 3 · (rings with x < 3) points.
+
+/// A relative margin on the closed-form sums, for the sampler's rounding (its sines against
+/// the bound's).
+constexpr double kRoundingMargin = 1.0 + 1e-9;
+
+/// Points of Sampler::Cap from the pole (0) to polar angle `to` (π/2 or π) [rad], the last
+/// ring included or not. Σ sin(φ_k) over the rings is bounded by the trapezoid rule, which
+/// underestimates the integral of the concave sin: h (Σ_{k=0}^{m} sin φ_k − sin(to)/2) <=
+/// 1 − cos(to), h = to/m.
+double CapCount(double r, double spacing, double to, bool include_to) {
+  const double m = IntervalCount(r * to, spacing);
+  const double x = 2.0 * kPi * r / spacing;  // the equator's x
+  const double rings = m + (include_to ? 1.0 : 0.0);
+  const double sum_sin = m / to * (1.0 - std::cos(to)) + 0.5 * std::sin(to) - (include_to ? 0.0 : std::sin(to));
+  // Rings with x sin φ < 3 lie within asin(3/x) of a pole (both poles for a whole sphere).
+  const double poles = to > 0.5 * kPi ? 2.0 : 1.0;
+  const double small =
+      x <= 3.0 ? rings : std::min(rings, poles * (std::floor(m * std::asin(3.0 / x) / to) + 1.0));
+  return x * std::max(0.0, sum_sin) * kRoundingMargin + rings + 3.0 * small;
+}
+
+/// Points of Sampler::Disc: its centre and rings k r/m, k = 1 .. m−1.
+double DiscCount(double r, double spacing) {
+  const double m = IntervalCount(r, spacing);
+  const double x = 2.0 * kPi * r / spacing;  // the rim's x
+  const double rings = m - 1.0;
+  const double small = std::min(rings, std::floor(3.0 * m / x) + 1.0);  // k x / m < 3
+  return 1.0 + x * rings / 2.0 * kRoundingMargin + rings + 3.0 * small;
+}
+
+/// Points of Sampler::Side: a ring of radius r at each station (exact).
+double SideCount(double length, double r, double spacing) {
+  return (IntervalCount(length, spacing) + 1.0) * std::max(4.0, IntervalCount(2.0 * kPi * r, spacing));
+}
+
+/// Points of Sampler::Box (exact).
+double BoxCount(const Eigen::Vector3d& size, double e, double spacing) {
+  const Eigen::Vector3d c = (size.array() / 2.0 - e).max(0.0).matrix();
+  const auto midpoints = [&](double ci) { return ci <= 0.0 ? 0.0 : IntervalCount(2.0 * ci, spacing); };
+  const auto stations = [&](double ci) { return ci <= 0.0 ? 1.0 : IntervalCount(2.0 * ci, spacing) + 1.0; };
+  const double arc = IntervalCount(0.5 * kPi * e, spacing);
+  double count = 8.0;  // corners
+  for (int k = 0; k < 3; ++k) {
+    count += 2.0 * midpoints(c[(k + 1) % 3]) * midpoints(c[(k + 2) % 3]) + 4.0 * arc * stations(c[k]);
+  }
+  return count;
 }
 
 /// Two unit vectors completing the unit `u` to a right-handed orthonormal basis.
@@ -209,9 +269,37 @@ struct Sampler {
 
 }  // namespace
 
-std::vector<SurfacePoint> SampleShape(const SurfaceShape& shape, double spacing_m, std::size_t shape_index) {
+double EstimateShapePoints(const SurfaceShape& shape, double spacing_m) {
   CheckSpacing(spacing_m);
+  const double r = shape.radius_m;
+  const Eigen::Vector3d axis = shape.b_m - shape.a_m;
+  const bool finite = std::isfinite(r) && shape.a_m.allFinite() && shape.b_m.allFinite() && shape.size_m.allFinite() &&
+                      std::isfinite(shape.edge_radius_m);
+  if (!finite && shape.type != SurfaceShapeType::kPoint) return std::numeric_limits<double>::infinity();
+  double count = 1.0;
+  switch (shape.type) {
+    case SurfaceShapeType::kSphere: count = CapCount(r, spacing_m, kPi, true); break;
+    case SurfaceShapeType::kCapsule:
+      count = axis.norm() <= 1e-12 ? CapCount(r, spacing_m, kPi, true)
+                                   : SideCount(axis.norm(), r, spacing_m) + 2.0 * CapCount(r, spacing_m, 0.5 * kPi, false);
+      break;
+    case SurfaceShapeType::kCylinder: count = SideCount(axis.norm(), r, spacing_m) + 2.0 * DiscCount(r, spacing_m); break;
+    case SurfaceShapeType::kBox: count = BoxCount(shape.size_m, shape.edge_radius_m, spacing_m); break;
+    case SurfaceShapeType::kPoint: count = 1.0; break;
+  }
+  return std::isnan(count) ? std::numeric_limits<double>::infinity() : std::ceil(count);
+}
+
+std::vector<SurfacePoint> SampleShape(const SurfaceShape& shape, double spacing_m, std::size_t shape_index) {
+  const double estimate = EstimateShapePoints(shape, spacing_m);
+  if (!(estimate <= static_cast<double>(kMaxSurfacePoints))) {
+    throw std::invalid_argument((shape.origin.empty() ? std::string(ToString(shape.type)) : shape.origin) + ": a " +
+                                ToString(shape.type) + " sampled at a spacing of " + Num(spacing_m) + " m gives about " +
+                                Num(estimate) + " points, more than the " + std::to_string(kMaxSurfacePoints) +
+                                " a surface may have: choose a coarser spacing or a smaller shape");
+  }
   Sampler sampler{spacing_m, shape_index, {}};
+  sampler.points.reserve(static_cast<std::size_t>(estimate));
   const double r = shape.radius_m;
   const Eigen::Vector3d axis = shape.b_m - shape.a_m;
   const bool degenerate = axis.norm() <= 1e-12;
@@ -245,11 +333,22 @@ std::vector<SurfacePoint> SampleShape(const SurfaceShape& shape, double spacing_
 
 namespace {
 
-/// A length within (0, kMaxLengthM].
-void CheckPositive(double value, const std::string& where, const std::string& field) {
-  if (!(value > 0.0 && value <= kMaxLengthM)) {
-    throw std::invalid_argument(where + ": " + field + " = " + Num(value) +
-                                " m is not allowed (a length > 0 and at most 1000 m)");
+/// "[0.0001, 1000] m": the range of a shape's radius or length.
+std::string ShapeRange() {
+  std::ostringstream out;  // a stream, not "[" + Num(...): GCC 12 warns (-Wrestrict) on that
+  out << "[" << kMinRadius_m << ", " << kMaxLengthM << "] m";
+  return out.str();
+}
+
+/// A radius of curvature (sphere, cylinder, capsule, a box's edges) or a shape's length, in
+/// [kMinRadius_m, kMaxLengthM]: below the floor an edge cuts and the model's blunt contact does
+/// not describe it (physical_floors.hpp); a denormal radius once read as safe.
+void CheckDimension(double value, const std::string& where, const std::string& field) {
+  if (!(value >= kMinRadius_m && value <= kMaxLengthM)) {
+    throw std::invalid_argument(where + ": " + field + " = " + Num(value) + " m is not allowed (a " +
+                                (field.find("radius") != std::string::npos ? "radius" : "length") + " in " +
+                                ShapeRange() + "; below " + Num(kMinRadius_m) +
+                                " m an edge cuts, which the model does not describe)");
   }
 }
 
@@ -291,7 +390,7 @@ std::vector<SurfaceShape> UrdfShapes(const urdf::Link& link, const SurfaceOption
     switch (collision->geometry->type) {
       case urdf::Geometry::SPHERE: {
         const auto& sphere = static_cast<const urdf::Sphere&>(*collision->geometry);
-        CheckPositive(sphere.radius, where, "<sphere radius>");
+        CheckDimension(sphere.radius, where, "<sphere radius>");
         shape.type = SurfaceShapeType::kSphere;
         shape.radius_m = sphere.radius;
         shape.a_m = pose.translation();
@@ -299,8 +398,8 @@ std::vector<SurfaceShape> UrdfShapes(const urdf::Link& link, const SurfaceOption
       }
       case urdf::Geometry::CYLINDER: {
         const auto& cylinder = static_cast<const urdf::Cylinder&>(*collision->geometry);
-        CheckPositive(cylinder.radius, where, "<cylinder radius>");
-        CheckPositive(cylinder.length, where, "<cylinder length>");
+        CheckDimension(cylinder.radius, where, "<cylinder radius>");
+        CheckDimension(cylinder.length, where, "<cylinder length>");
         shape.type = SurfaceShapeType::kCylinder;
         shape.radius_m = cylinder.radius;
         const Eigen::Vector3d half = pose.linear() * Eigen::Vector3d(0.0, 0.0, 0.5 * cylinder.length);
@@ -311,16 +410,16 @@ std::vector<SurfaceShape> UrdfShapes(const urdf::Link& link, const SurfaceOption
       case urdf::Geometry::BOX: {
         const auto& box = static_cast<const urdf::Box&>(*collision->geometry);
         const Eigen::Vector3d size(box.dim.x, box.dim.y, box.dim.z);
-        for (int i = 0; i < 3; ++i) CheckPositive(size[i], where, std::string("<box size> ") + "xyz"[i]);
+        for (int i = 0; i < 3; ++i) CheckDimension(size[i], where, std::string("<box size> ") + "xyz"[i]);
         if (!options.box_edge_radius_m) {
           throw std::invalid_argument(where + ": a <box> needs an edge radius (URDF boxes have sharp edges; "
                                               "give the housing's edge radius, box_edge_radius_m / --box-edge-radius)");
         }
         const double e = *options.box_edge_radius_m;
-        if (!(e > 0.0 && e <= 0.5 * size.minCoeff())) {
-          throw std::invalid_argument(where + ": box edge radius = " + Num(e) +
-                                      " m is not allowed (> 0 and at most half the box's smallest extent, " +
-                                      Num(0.5 * size.minCoeff()) + " m)");
+        if (!(e >= kMinRadius_m && e <= 0.5 * size.minCoeff())) {
+          throw std::invalid_argument(where + ": box edge radius = " + Num(e) + " m is not allowed (in [" +
+                                      Num(kMinRadius_m) + " m, half the box's smallest extent, " +
+                                      Num(0.5 * size.minCoeff()) + " m])");
         }
         shape.type = SurfaceShapeType::kBox;
         shape.pose = pose;
@@ -409,9 +508,10 @@ double ReadRadius(const toml::table& table, const std::string& source, const std
     FileError(source, node->source(), what + ": radius_m is " + std::string(covopt::internal::TypeName(*node)) +
                                           ", not a number [m]" + (flat_allowed ? " or \"flat\"" : ""));
   }
-  if (!(*value > 0.0 && *value <= kMaxLengthM)) {
-    FileError(source, node->source(), what + ": radius_m = " + Num(*value) +
-                                          " m is not allowed (a radius > 0 and at most 1000 m)");
+  if (!(*value >= kMinRadius_m && *value <= kMaxLengthM)) {
+    FileError(source, node->source(), what + ": radius_m = " + Num(*value) + " m is not allowed (a radius in " +
+                                          ShapeRange() + (flat_allowed ? ", or \"flat\"" : "") + "; below " +
+                                          Num(kMinRadius_m) + " m an edge cuts, which the model does not describe)");
   }
   return *value;
 }
@@ -439,6 +539,73 @@ const toml::array* ArrayOfTables(const toml::table& table, std::string_view key,
     }
   }
   return array;
+}
+
+/// "a sphere of radius 0.1 m", "a capsule of radius 0.05 m and length 0.3 m", "a box of
+/// 0.1 x 0.2 x 0.3 m".
+std::string Describe(const SurfaceShape& shape) {
+  std::ostringstream out;
+  out << "a " << ToString(shape.type);
+  switch (shape.type) {
+    case SurfaceShapeType::kBox:
+      out << " of " << shape.size_m.x() << " x " << shape.size_m.y() << " x " << shape.size_m.z() << " m";
+      break;
+    case SurfaceShapeType::kCylinder:
+    case SurfaceShapeType::kCapsule:
+      out << " of radius " << shape.radius_m << " m and length " << (shape.b_m - shape.a_m).norm() << " m";
+      break;
+    default: out << " of radius " << shape.radius_m << " m";
+  }
+  return out.str();
+}
+
+/// The estimate of every shape of `links` at `spacing` [points].
+double EstimateLinksPoints(const std::vector<LinkSurface>& links, double spacing) {
+  double total = 0.0;
+  for (const LinkSurface& link : links) {
+    for (const SurfaceShape& shape : link.shapes) total += EstimateShapePoints(shape, spacing);
+  }
+  return total;
+}
+
+/// Refuses shapes whose estimate at `spacing` exceeds kMaxSurfacePoints, naming the shape that
+/// gives the most, the estimate, the cap and the spacing that would do.
+void CheckSurfaceSize(const std::vector<LinkSurface>& links, double spacing) {
+  const double total = EstimateLinksPoints(links, spacing);
+  const double cap = static_cast<double>(kMaxSurfacePoints);
+  if (total <= cap) return;
+  const SurfaceShape* largest = nullptr;
+  double largest_count = -1.0;
+  for (const LinkSurface& link : links) {
+    for (const SurfaceShape& shape : link.shapes) {
+      if (const double count = EstimateShapePoints(shape, spacing); count > largest_count) {
+        largest = &shape;
+        largest_count = count;
+      }
+    }
+  }
+  // The smallest spacing in whole millimetres that fits (bisection: fewer points the coarser).
+  std::ostringstream message;
+  message << "the surface sampled at a spacing of " << spacing << " m would have about " << total
+          << " points, more than the " << kMaxSurfacePoints << " allowed (the most from " << largest->origin << ", "
+          << Describe(*largest) << ": about " << largest_count << "); give ";
+  if (EstimateLinksPoints(links, kMaxSurfaceSpacingM) <= cap) {
+    double lo = spacing, hi = kMaxSurfaceSpacingM;  // lo does not fit, hi does
+    while (hi - lo > 1e-4) {
+      const double mid = 0.5 * (lo + hi);
+      (EstimateLinksPoints(links, mid) <= cap ? hi : lo) = mid;
+    }
+    double coarser = std::min(kMaxSurfaceSpacingM, std::ceil(hi * 1e3) / 1e3);
+    // The count steps with the rings' rounding: make sure the rounded spacing fits too.
+    while (coarser < kMaxSurfaceSpacingM && EstimateLinksPoints(links, coarser) > cap) {
+      coarser = std::min(kMaxSurfaceSpacingM, coarser + 1e-3);
+    }
+    message << "a spacing of at least " << coarser << " m (--surface-spacing, surface_spacing) or smaller shapes";
+  } else {
+    message << "smaller shapes (even the largest spacing, " << kMaxSurfaceSpacingM << " m, gives about "
+            << EstimateLinksPoints(links, kMaxSurfaceSpacingM) << " points)";
+  }
+  throw std::invalid_argument(message.str());
 }
 
 }  // namespace
@@ -510,8 +677,15 @@ SurfaceFileShapes ReadSurfaceFile(const std::filesystem::path& path) {
 RobotSurface SurfaceFromUrdfString(const std::string& urdf_text, const KinematicChain& chain,
                                    const SurfaceOptions& options, const std::string& source_name) {
   CheckSpacing(options.spacing_m);
-  std::optional<SurfaceFileShapes> file;
-  if (options.surface_file) file = ReadSurfaceFile(*options.surface_file);
+  if (!options.surface_file) return SurfaceFromUrdfString(urdf_text, chain, options, source_name, nullptr);
+  const SurfaceFileShapes file = ReadSurfaceFile(*options.surface_file);
+  return SurfaceFromUrdfString(urdf_text, chain, options, source_name, &file);
+}
+
+RobotSurface SurfaceFromUrdfString(const std::string& urdf_text, const KinematicChain& chain,
+                                   const SurfaceOptions& options, const std::string& source_name,
+                                   const SurfaceFileShapes* file) {
+  CheckSpacing(options.spacing_m);
   const urdf::ModelInterfaceSharedPtr model = internal::ParseUrdf(urdf_text, source_name);
   const internal::ModelReleaser release{model.get()};
 
@@ -553,15 +727,15 @@ RobotSurface SurfaceFromUrdfString(const std::string& urdf_text, const Kinematic
                                  "never checked");
       continue;
     }
+    surface.links.push_back(std::move(link));
+  }
+  // The size, from the shapes, before any point is made.
+  CheckSurfaceSize(surface.links, options.spacing_m);
+  for (LinkSurface& link : surface.links) {
     for (std::size_t i = 0; i < link.shapes.size(); ++i) {
       std::vector<SurfacePoint> points = SampleShape(link.shapes[i], options.spacing_m, i);
-      if (surface.point_count() + link.points.size() + points.size() > kMaxSurfacePoints) {
-        throw std::invalid_argument("surface spacing = " + Num(options.spacing_m) +
-                                    " m gives more than 1000000 surface points: choose a coarser spacing");
-      }
       link.points.insert(link.points.end(), points.begin(), points.end());
     }
-    surface.links.push_back(std::move(link));
   }
   return surface;
 }

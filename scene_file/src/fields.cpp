@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "covopt/core/physical_floors.hpp"
+
 namespace covopt::scene_file {
 namespace {
 
@@ -40,9 +42,13 @@ void CheckLimitValue(const LimitField& field, double value, std::string_view nam
     }
     return;
   }
-  if (!(value > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("{} must be > 0 {} (got {})", name, SiUnit(field.spec.kind), shown));
+  // The floors (physical_floors.hpp): 1 kPa for the laceration limit, 1 J/m² for the
+  // contusion limit; a denormal limit once made a ratio infinite.
+  const bool laceration = field.key == "laceration";
+  const double floor = laceration ? kMinModulus_Pa : kMinEnergyDensity_J_per_m2;
+  if (!(value >= floor && value <= 1e13)) {
+    throw std::invalid_argument(fmt::format("{} must be in [{:g}, 1e+13] {} (got {})", name, floor,
+                                            SiUnit(field.spec.kind), shown));
   }
 }
 

@@ -14,7 +14,7 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
-#include <toml++/toml.h>
+#include "covopt/internal/toml.hpp"
 
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/scene_fields.hpp"

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include <toml++/toml.h>
+#include "covopt/internal/toml.hpp"
 
 #include "covopt/core/quantity.hpp"
 

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -342,4 +343,58 @@ TEST_CASE("sweep --body-region --plot draws the governing ratio", "[body_regions
     CHECK(svg.find("<svg") != std::string::npos);
     CHECK(svg.find("chest (sternum): 280 N") != std::string::npos);
   }
+}
+
+// The body-region time path's self-check (docs/numerics.md, "The body-region path's
+// self-check"): C1 of docs/model.md §13.9 at 0.403 m/s. SDIRK 4(3) at rtol 1e-3 gave 179 N for
+// the exact 117 N (a stale Jacobian), silently; ERK 6(5) at rtol 1e-8 misses its tolerance and
+// says so in a warning naming the region.
+TEST_CASE("simulate --body-region: the time path's energy self-check and the implicit methods at rtol 1e-3",
+          "[body_regions][numerics]") {
+  const std::vector<std::string> c1 = {"simulate", "--body-region", "chest", "--speed", "0.403m/s", "--robot-mass", "10kg",
+                                       "--robot-radius", "40mm", "--covering-thickness", "10mm", "--covering-modulus",
+                                       "0.5MPa", "--covering-poisson", "0.3"};
+  const auto run_with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = c1;
+    args.insert(args.end(), extra.begin(), extra.end());
+    const CliRun run = Run(args);
+    INFO(fmt::format("{}", fmt::join(args, " ")) << " -> " << run.err);
+    REQUIRE(run.exit_code == 0);
+    return run.out;
+  };
+  /// The "Time path" line's relative difference to the exact path and its energy residual.
+  const auto time_path_numbers = [](const std::string& out) {
+    const std::size_t line = out.find("  Time path  force ");
+    REQUIRE(line != std::string::npos);
+    const std::string text = out.substr(line, out.find('\n', line) - line);
+    INFO(text);
+    const std::string difference = "relative difference to the exact path ", residual = "energy residual ";
+    REQUIRE(text.find(difference) != std::string::npos);
+    REQUIRE(text.find(residual) != std::string::npos);
+    return std::pair{std::stod(text.substr(text.find(difference) + difference.size())),
+                     std::stod(text.substr(text.find(residual) + residual.size()))};
+  };
+  for (const char* method : {"arkode-sdirk43", "arkode-esdirk54", "cvode-bdf"}) {
+    const std::string out = run_with({"--method", method, "--rtol", "1e-3"});
+    INFO(out);
+    const auto [difference, residual] = time_path_numbers(out);
+    CHECK(difference <= 0.1);  // 100 rtol
+    CHECK(residual <= 0.1);
+    CHECK(out.find("did not keep its tolerance") == std::string::npos);
+  }
+  const std::string loose = run_with({"--method", "arkode-erk65", "--rtol", "1e-8"});
+  INFO(loose);
+  CHECK(time_path_numbers(loose).second > 1e-6);
+  CHECK(loose.find("Warning: chest (sternum): the time path did not keep its tolerance: energy residual ") !=
+        std::string::npos);
+  const json j = JsonOf([&] {
+    std::vector<std::string> args = c1;
+    for (const char* extra : {"--method", "arkode-erk65", "--rtol", "1e-8", "--json"}) args.emplace_back(extra);
+    return args;
+  }());
+  bool warned = false;
+  for (const json& w : j["warnings"]) {
+    warned = warned || w.get<std::string>().starts_with("chest (sternum): the time path did not keep its tolerance");
+  }
+  CHECK(warned);
 }

@@ -188,18 +188,18 @@ TEST_CASE("speed-limit: several --material give one block of rows each", "[speed
 }
 
 TEST_CASE("speed-limit: safe up to 100 m/s says so, and nothing safe is null", "[speed_limit]") {
-  const json safe = JsonOf(Run({"speed-limit", "--robot-mass", "0.1g", "--covering-thickness", "0",
+  const json safe = JsonOf(Run({"speed-limit", "--robot-mass", "1g", "--covering-thickness", "0",
                                 "--laceration-limit", "1GPa", "--contusion-limit", "1000J/cm2", "--json"}));
   CHECK(safe["rows"][0]["max_safe_speed_m_per_s"] == 100.0);
   CHECK(safe["rows"][0]["limited_by"] == "none");
   REQUIRE(safe["warnings"].size() == 1);
   CHECK(safe["warnings"][0].get<std::string>().find("100 m/s") != std::string::npos);
 
-  const json none = JsonOf(Run({"speed-limit", "--laceration-limit", "0.001Pa", "--json"}));
+  const json none = JsonOf(Run({"speed-limit", "--laceration-limit", "1kPa", "--safety-factor", "100", "--json"}));
   CHECK(none["rows"][0]["max_safe_speed_m_per_s"].is_null());
   CHECK(none["rows"][0]["status"] == "no-safe-value");
   CHECK(none["rows"][0]["limited_by"] == "laceration");
-  const CliRun table = Run({"speed-limit", "--laceration-limit", "0.001Pa"});
+  const CliRun table = Run({"speed-limit", "--laceration-limit", "1kPa", "--safety-factor", "100"});
   REQUIRE(table.exit_code == 0);
   CHECK(table.out.find("none safe") != std::string::npos);
   CHECK(table.out.find("nan") == std::string::npos);

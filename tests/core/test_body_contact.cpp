@@ -301,3 +301,116 @@ TEST_CASE("every integrator's body-contact time path agrees with the exact path"
   CHECK(Relative(timed.max_approach_m, exact.max_approach_m) <= 1e-6);
   CHECK(Relative(timed.rebound_speed_m_per_s, scene.speed_m_per_s) <= 1e-6);
 }
+
+namespace {
+
+/// docs/model.md §13.9's C1 (PU foam, 0.5 MPa, 10 mm on a 40 mm robot; chest, 10 kg robot) and
+/// C3 (27.6 MPa, 5 mm on 15 mm), transient or clamped, at `speed` [m/s].
+BodyContactScene ModelScene(bool stiff, ContactType contact, double speed) {
+  BodyContactScene s = Bare(10.0, speed, 25e3, 40.0, contact);
+  return stiff ? Covered(s, 27.6e6, 0.25, 5e-3, 0.015) : Covered(s, 0.5e6, 0.3, 10e-3, 0.04);
+}
+
+/// The worst relative error of F_max, δ_max and the rebound speed against the exact path [-].
+double WorstError(const BodyContactScene& scene, const BodyContactResult& timed) {
+  const BodyContactResult exact = covopt::Solve(scene);
+  return std::max({Relative(timed.peak_force_N, exact.peak_force_N), Relative(timed.max_approach_m, exact.max_approach_m),
+                   Relative(timed.rebound_speed_m_per_s, scene.speed_m_per_s)});
+}
+
+bool WarnsTolerance(const BodyContactResult& r) {
+  return std::any_of(r.warnings.begin(), r.warnings.end(), [](const covopt::ValidityWarning& w) {
+    return w.code == covopt::ValidityCode::kToleranceNotKept &&
+           w.message.starts_with("the time path did not keep its tolerance: energy residual ");
+  });
+}
+
+}  // namespace
+
+// The implicit methods' Newton matrix used a Jacobian from first contact, where d δ_c'/d δ_c is
+// unbounded (floored), for the whole contact: Newton's corrections of δ_c vanished and the
+// "converged" stages were the predictor's. At rtol 1e-3 and 1e-4 the SDIRK/ESDIRK tables gave
+// F_max 5-300 % high and a rebound faster than the impact (0.51 m/s after 0.403), CVODE BDF 60 %
+// at 1e-3, all reported as success with no warning. Now the Jacobian is evaluated at every
+// Newton setup (docs/numerics.md, "The body-region path's self-check").
+TEST_CASE("the implicit methods keep the body-region path's tolerance from rtol 1e-3 or the self-check warns",
+          "[body_contact][time][numerics]") {
+  using covopt::ComputationMethod;
+  const ComputationMethod method = GENERATE(ComputationMethod::kArkodeSdirk43, ComputationMethod::kArkodeEsdirk54,
+                                            ComputationMethod::kCvodeBdf);
+  const double rtol = GENERATE(1e-3, 1e-4);
+  const bool stiff = GENERATE(false, true);
+  const ContactType contact = GENERATE(ContactType::kTransient, ContactType::kClamped);
+  for (const double speed : {0.1, 0.25, 0.403, 0.6, 1.0}) {
+    const BodyContactScene scene = ModelScene(stiff, contact, speed);
+    CAPTURE(covopt::ToString(method), rtol, stiff, covopt::ToString(contact), speed);
+    covopt::SolveOptions options = TimePath(rtol);
+    options.time_path.method = method;
+    const BodyContactResult timed = covopt::Solve(scene, options);
+    REQUIRE(timed.ok());
+    REQUIRE(timed.energy_residual.has_value());
+    const double error = WorstError(scene, timed);
+    CAPTURE(error / rtol, *timed.energy_residual / rtol);
+    // The documented bound, or the warning: never a wrong answer reported silently.
+    CHECK((error <= 100.0 * rtol || WarnsTolerance(timed)));
+    // And since the fix the bound itself (measured: at most 21 rtol here), with no warning.
+    CHECK(error <= 100.0 * rtol);
+    CHECK(timed.warnings.empty());
+    // The rebound is never faster than the impact by more than the tolerance allows.
+    CHECK(timed.rebound_speed_m_per_s <= scene.speed_m_per_s * (1.0 + 100.0 * rtol));
+  }
+}
+
+TEST_CASE("the body-region path's energy self-check tracks the error and warns above max of 100 rtol and 1e-9",
+          "[body_contact][time][numerics]") {
+  // ERK 6(5) (a 3rd-order table in this SUNDIALS, docs/numerics.md) misses its tolerance: the
+  // self-check must see it. Measured on these scenes: residual/error >= 0.93, warned where
+  // the error exceeded 100 rtol, never where it was below rtol.
+  covopt::SolveOptions options = TimePath(1e-8);
+  options.time_path.method = covopt::ComputationMethod::kArkodeErk65;
+  int warned = 0;
+  for (const bool stiff : {false, true}) {
+    for (const double speed : {0.1, 0.25, 0.403, 0.6, 1.0}) {
+      const BodyContactScene scene = ModelScene(stiff, ContactType::kTransient, speed);
+      CAPTURE(stiff, speed);
+      const BodyContactResult timed = covopt::Solve(scene, options);
+      REQUIRE(timed.ok());
+      REQUIRE(timed.energy_residual.has_value());
+      const double error = WorstError(scene, timed);
+      CAPTURE(error, *timed.energy_residual);
+      CHECK(*timed.energy_residual >= 0.5 * error);
+      CHECK(WarnsTolerance(timed) == (*timed.energy_residual > 100.0 * 1e-8));
+      if (error > 200.0 * 1e-8) CHECK(WarnsTolerance(timed));
+      if (WarnsTolerance(timed)) CHECK(error > 1e-8);
+      warned += WarnsTolerance(timed) ? 1 : 0;
+    }
+  }
+  CHECK(warned > 0);  // the check was exercised
+  // The exact path has no self-check; the peaks-only run checks the peak's energy alone.
+  const BodyContactScene scene = ModelScene(false, ContactType::kTransient, 0.403);
+  CHECK_FALSE(covopt::Solve(scene).energy_residual.has_value());
+  CHECK(covopt::Solve(scene).warnings.empty());
+  covopt::TimeIntegrationOptions peaks_options;
+  const BodyContactResult peaks = covopt::SolveBodyContactPeaks(BodyContactModel::FromScene(scene), peaks_options);
+  REQUIRE(peaks.energy_residual.has_value());
+  CHECK(*peaks.energy_residual <= 100.0 * peaks_options.relative_tolerance);
+  CHECK(*peaks.energy_residual > 0.0);
+}
+
+TEST_CASE("a braking robot's self-check is the energy balance with the brake's work", "[body_contact][time][braking]") {
+  // Without the work term the balance would be off by the brake's share (tens of per cent here).
+  for (const ContactType contact : {ContactType::kTransient, ContactType::kClamped}) {
+    BodyContactScene scene = ModelScene(false, contact, 0.6);
+    scene.reaction_delay_s = 5e-3;
+    scene.braking_m_per_s2 = 100.0;
+    CAPTURE(covopt::ToString(contact));
+    for (const double rtol : {1e-6, 1e-10}) {
+      const BodyContactResult timed = covopt::Solve(scene, TimePath(rtol));
+      REQUIRE(timed.ok());
+      REQUIRE(timed.energy_residual.has_value());
+      CHECK(*timed.energy_residual <= 100.0 * rtol);
+      CHECK(timed.warnings.empty());
+      CHECK(timed.rebound_speed_m_per_s < scene.speed_m_per_s);  // the brake took energy out
+    }
+  }
+}

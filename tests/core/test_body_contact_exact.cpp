@@ -169,7 +169,7 @@ TEST_CASE("bad body-contact scenes are refused naming the field and the range", 
   flat.covering.thickness_m = 5e-3;
   refused(flat, "robot.radius: a covering needs the radius");
   BodyContactScene nan_mass = Chest(std::nan(""), 0.5);
-  refused(nan_mass, "robot.mass must be in (0, 1e+06] kg");
+  refused(nan_mass, "robot.mass must be in [0.001, 1e+06] kg");
   refused(Chest(10.0, 0.0), "robot.speed must be in [1e-06, 100] m/s");
   BodyContactScene both_fixed = Chest(covopt::kFixed, 0.5);
   both_fixed.contact = ContactType::kClamped;
@@ -179,7 +179,7 @@ TEST_CASE("bad body-contact scenes are refused naming the field and the range", 
   refused(fixed_body, "contact clamped");
   BodyContactScene area = Chest(10.0, 0.5);
   area.contact_area_m2 = -1.0;
-  refused(area, "contact_area must be in [0, 1] m2");
+  refused(area, "contact_area must be 0 (not given) or in [1e-06, 1] m2");
   BodyContactScene spring = Chest(10.0, 0.5);
   spring.body_stiffness_N_per_m = 0.0;
   refused(spring, "body.stiffness must be in (0, 1e+09] N/m");

@@ -446,3 +446,29 @@ TEST_CASE("Validity warnings on a braking scene compare on the exact path withou
   }
   CHECK(noted == 2);
 }
+
+TEST_CASE("A damped delta_max landing exactly on a switch gives finite e_A and duration", "[exact][damping]") {
+  // Found by the grazing scan of the extended path (docs/numerics.md): with damping, a δ_max
+  // exactly on t1 or t2 (the top segment's start) made the quadratures' first piece empty, its
+  // nodes 0/0, and e_A,max and the contact duration NaN in a result that said ok.
+  for (const double thickness : {0.015, 0.0}) {
+    Scene scene = PaperScene(thickness, 27.6e6, 0.22);
+    scene.model.damping_s_per_m = 0.2;
+    const ImpactModel base = ImpactModel::FromScene(scene);
+    for (std::size_t segment = 1; segment < base.segment_count(); ++segment) {
+      const double at_switch = base.segment(segment).start_m;
+      const ImpactResult on = SolveExact(ImpactModel::FromScene(test::WithMaxPenetration(scene, at_switch)));
+      const ImpactResult above =
+          SolveExact(ImpactModel::FromScene(test::WithMaxPenetration(scene, at_switch * (1.0 + 1e-12))));
+      INFO("covering " << thickness << " m, switch " << segment << ", δ_max " << on.peaks.max_penetration_m);
+      REQUIRE(on.ok());
+      CHECK(std::isfinite(on.peaks.max_energy_density_J_per_m2));
+      REQUIRE(on.contact_duration_s.has_value());
+      CHECK(std::isfinite(*on.contact_duration_s));
+      CHECK(std::isfinite(*on.time_of_max_compression_s));
+      // Continuous across the switch.
+      CHECK(RelativeError(on.peaks.max_energy_density_J_per_m2, above.peaks.max_energy_density_J_per_m2) < 1e-9);
+      CHECK(RelativeError(*on.contact_duration_s, *above.contact_duration_s) < 1e-9);
+    }
+  }
+}

@@ -227,5 +227,5 @@ TEST_CASE("a fixed robot cannot brake: refused, naming the field", "[body_region
   s.robot_mass_kg = 10.0;
   s.reaction_delay_s = -1.0;
   CHECK_THROWS_WITH(co::JudgeBodyContact(s, Region("chest"), {}),
-                    Catch::StartsWith("robot.reaction_delay must be in [0, 10] s"));
+                    Catch::StartsWith("robot.reaction_delay must be 0 (brake at contact) or in [1e-06, 10] s"));
 }

@@ -242,11 +242,11 @@ TEST_CASE("Bad ranges are refused naming the field, the value and the range", "[
   // Corners: the scalp must stay thinner than the head radius everywhere in the box.
   refuse_default({{"head-radius", 0.004, 0.09}, {"scalp-thickness", 0.002, 0.005}},
                  "the box leaves the model's input range at the corner head-radius = 4 mm, scalp-thickness = 5 mm: "
-                 "head.radius must be larger than scalp.thickness");
+                 "head.radius must be at least scalp.thickness + 0.0001 m");
   refuse_default({{"speed", 0.5, 200}}, "robot.speed must be in [1e-06, 100] m/s (got 200)");
   Scene bad = scene;
   bad.head.radius_m = -1;
-  refuse({}, "head.radius must be in (0, 10] m", bad);
+  refuse({}, "head.radius must be in [0.0001, 10] m", bad);
 
   // A valid box: a point range and a normal distribution inside its range.
   const UncertaintyBox box = UncertaintyBox::FromScene(

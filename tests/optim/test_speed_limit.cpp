@@ -18,6 +18,7 @@
 
 #include <covopt/core/exact.hpp>
 #include <covopt/core/impact_model.hpp>
+#include <covopt/core/physical_floors.hpp>
 #include <covopt/optim/speed_limit.hpp>
 
 namespace {
@@ -134,7 +135,8 @@ double BruteForceMass(const Case& c) {
   };
   if (!std::isinf(c.scene.head.mass_kg) && safe(kFixed)) return kFixed;
   if (safe(1e6)) return 1e6;
-  return Bisect(1e-9, 1e6, safe);
+  if (!safe(covopt::kMinMass_kg)) return 0.0;  // not even at the mass floor, 1 g
+  return Bisect(covopt::kMinMass_kg, 1e6, safe);
 }
 
 }  // namespace
@@ -302,7 +304,7 @@ TEST_CASE("the paper's scene: the recommended 15 mm polystyrene is safe only bel
 
 TEST_CASE("a scene safe at 100 m/s is safe up to the search limit, which is stated", "[speed_limit]") {
   Scene light;
-  light.robot.mass_kg = 1e-4;  // 0.1 g
+  light.robot.mass_kg = covopt::kMinMass_kg;  // 1 g, the floor
   light.covering.thickness_m = 0.0;
   SpeedLimitOptions options;
   options.limits.laceration_tensile_stress_Pa = 1e9;
@@ -322,15 +324,17 @@ TEST_CASE("a scene safe at 100 m/s is safe up to the search limit, which is stat
 
 TEST_CASE("nothing safe: no safe speed, no safe mass", "[speed_limit]") {
   SpeedLimitOptions options;
-  options.limits.laceration_tensile_stress_Pa = 1e-9;  // absurd: any contact lacerates
+  options.limits.laceration_tensile_stress_Pa = 1e3;  // the floor, with SF 100: any contact lacerates
+  options.safety_factor = 100.0;
   const SpeedLimit limit = MaxSafeSpeed(Scene{}, options);
   CHECK(limit.status == SpeedLimitStatus::kNoSafeValue);
   CHECK(limit.max_safe_speed_m_per_s == 0.0);
   CHECK(limit.limited_by == LimitingCriterion::kLaceration);
-  CHECK(limit.at_limit.laceration_ratio > 1.0);
+  CHECK(limit.at_limit.laceration_ratio * options.safety_factor > 1.0);
   CHECK(limit.message.find("no safe speed") != std::string::npos);
   const MassLimit mass = MaxSafeMass(Scene{}, options);
-  CHECK(mass.max_safe_mass_kg < 1e-9);
+  CHECK(mass.max_safe_mass_kg == 0.0);  // not even the floor of 1 g
+  CHECK(mass.status == SpeedLimitStatus::kNoSafeValue);
 }
 
 TEST_CASE("a fixed robot that is still safe: unlimited mass", "[speed_limit]") {

@@ -142,7 +142,8 @@ TEST_CASE("trajectory check: a fixed reflected mass (a singular direction) is ju
 
 TEST_CASE("trajectory check: limits nothing meets give no safe speed, and say so", "[trajectory]") {
   TrajectoryCheckOptions options;
-  options.limit.limits.laceration_tensile_stress_Pa = 1.0;  // 1 Pa: nothing is safe
+  options.limit.limits.laceration_tensile_stress_Pa = 1e3;  // the floor, 1 kPa, with SF 100: nothing is safe
+  options.limit.safety_factor = 100.0;
   const TrajectoryCheck check = CheckTrajectory(Scene{}, SampleMotion(), options);
   CHECK(check.status == TrajectoryCheckStatus::kUnsafe);
   CHECK(check.safe_speed_scale == 0.0);

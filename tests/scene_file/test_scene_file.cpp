@@ -161,7 +161,7 @@ TEST_CASE("bad limits are named with their location", "[scene_file]") {
         "scene.toml:2:14: limits.laceration 1: a bare number is in pascals (1 Pa); write "
         "\"1MPa\" or \"1Pa\"");
   CHECK(ErrorFor("[limits]\nlaceration = \"-1MPa\"\n") ==
-        "scene.toml:2:14: limits.laceration must be > 0 Pa (got '-1MPa')");
+        "scene.toml:2:14: limits.laceration must be in [1000, 1e+13] Pa (got '-1MPa')");
   CHECK(ErrorFor("[limits]\nsafety_factor = 0.5\n") ==
         "scene.toml:2:17: limits.safety_factor must be in [1, 100] (got 0.5)");
   CHECK_THAT(ErrorFor("[limits]\ncontusion = \"2.52 MPa\"\n"),
@@ -324,7 +324,7 @@ TEST_CASE("the [limits] fields are checked with one message for every front end"
   CHECK_THROWS_WITH(CheckLimitValue(limits[2], 0.5, "limits.safety_factor", "0.5"),
                     "limits.safety_factor must be in [1, 100] (got 0.5)");
   CHECK_THROWS_WITH(CheckLimitValue(limits[1], 0.0, "limits.contusion", "0"),
-                    "limits.contusion must be > 0 J/m2 (got 0)");
+                    "limits.contusion must be in [1, 1e+13] J/m2 (got 0)");
   CHECK(covopt::scene_file::ParseThresholds("literal", "model.thresholds") ==
         covopt::ThresholdReading::kLiteral);
   CHECK(covopt::scene_file::ThresholdsName(covopt::ThresholdReading::kCumulative) == "cumulative");

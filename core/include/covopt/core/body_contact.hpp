@@ -47,12 +47,13 @@ std::optional<ContactType> ParseContactType(std::string_view text) noexcept;
 
 /// One robot–body-region contact: plain SI inputs, checked by BodyContactModel::FromScene.
 struct BodyContactScene {
-  /// The robot's effective (reflected) mass m_R along the impact direction [kg], > 0 and
-  /// <= 1e6; kFixed for an immovable robot (then the contact must be transient).
+  /// The robot's effective (reflected) mass m_R along the impact direction [kg], in
+  /// [1e-3, 1e6] (the floor kMinMass_kg); kFixed for an immovable robot (then the contact must be transient).
   double robot_mass_kg = 10.0;
   /// Relative approach speed at first contact [m/s], in [1e-6, 100].
   double speed_m_per_s = 0.25;
-  /// Radius of curvature of the robot surface under the covering [m], > 0; kFlat if flat.
+  /// Radius of curvature of the robot surface under the covering [m], in [1e-4, 100] (the
+  /// floor kMinRadius_m); kFlat if flat.
   /// A covering needs a finite radius (its Hertz contact is sphere-on-flat).
   double robot_radius_m = kFlat;
   /// The covering. thickness_m == 0 (the default): the bare robot, modulus and Poisson ratio
@@ -60,11 +61,11 @@ struct BodyContactScene {
   CoveringSpec covering{27.6e6, 0.25, 0.0};
   /// The body region's effective spring constant k_H [N/m], > 0 and <= 1e9 (Table A.3).
   double body_stiffness_N_per_m = 25e3;
-  /// The body region's effective mass m_H [kg], > 0 (Table A.3); not read when clamped.
+  /// The body region's effective mass m_H [kg], in [1e-3, 1e6] (Table A.3); not read when clamped.
   double body_mass_kg = 40.0;
   /// Transient (default) or clamped.
   ContactType contact = ContactType::kTransient;
-  /// The bare robot's contact area A [m²], > 0 and <= 1; 0 (default): not given, and the bare
+  /// The bare robot's contact area A [m²], in [1e-6, 1] (the floor kMinContactArea_m2); 0 (default): not given, and the bare
   /// robot's pressure is not evaluated. With a covering the pressure is the Hertz pressure
   /// and this is not read.
   double contact_area_m2 = 0.0;
@@ -187,9 +188,28 @@ struct BodyContactResult {
   /// Speed of separation [m/s]: the time path's; the impact speed on the exact path (the
   /// contact is conservative).
   double rebound_speed_m_per_s = 0.0;
+  /// The time path's own accuracy check [-] (as ImpactResult::energy_residual), empty on the
+  /// exact path and for a failed run. The contact conserves energy, so for an exact solution
+  ///     max( |(body_energy_J + covering_energy_J) / (½ mu v0²) - 1|,  |rebound speed / v0 - 1| )
+  /// vanishes (the second term only with the rebound: not from SolveBodyContactPeaks). A braking
+  /// robot: the energy balance with the brake's work, at maximum compression and at separation,
+  ///     max | ΔK + U + W | / (½ mu v0²),  K = ½ m_R v_R² + ½ m_H v_H² (v_H = 0 clamped).
+  /// Above max(100 rtol, 1e-9) `warnings` says the integrator did not keep its tolerance.
+  std::optional<double> energy_residual;
+  /// The time path's warnings: ValidityCode::kToleranceNotKept ("the time path did not keep its
+  /// tolerance: energy residual ... exceeds max(100 rtol, 1e-9) = ...") where energy_residual
+  /// exceeds that bound, as the head's time path; the peaks and the rebound of such a result
+  /// are not within the tolerance asked for. Empty on the exact path.
+  std::vector<ValidityWarning> warnings;
   /// The time-path history (with SolveOptions::record_history).
   std::vector<BodyContactSample> history;
   bool ok() const noexcept { return status == SolveStatus::kSuccess; }
+  /// The messages of `warnings`, in order.
+  std::vector<std::string> WarningMessages() const {
+    std::vector<std::string> messages;
+    for (const ValidityWarning& w : warnings) messages.push_back(w.message);
+    return messages;
+  }
 };
 
 /// Solves one body-region contact. kAuto and kExact take the exact path (a record_history

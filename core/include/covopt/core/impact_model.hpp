@@ -78,7 +78,8 @@ class ImpactModel {
  public:
   /// Validates every field of `scene` and builds the force law.
   /// @throws std::invalid_argument naming the field, the value and the allowed range,
-  ///         e.g. "covering.thickness must be in [0, 1] m (got -0.001)".
+  ///         e.g. "covering.thickness must be 0 (no covering) or in [0.0001, 1] m (got -0.001)";
+  ///         every length, mass, time and modulus at least its floor (physical_floors.hpp).
   static ImpactModel FromScene(const Scene& scene);
 
   /// The scene as given (after validation).

@@ -32,7 +32,13 @@ inline constexpr double kMinContactArea_m2 = 1e-6;
 inline constexpr double kMinTime_s = 1e-6;
 
 /// The smallest elastic modulus or strength of a material [Pa]: 1 kPa, softer than any gel a
-/// covering is made of.
+/// covering is made of. Also the smallest stress limit (the laceration limit; skin tears at
+/// MPa): a catalog strength or a limit of 5e-324 Pa once printed crush ratios of inf.
 inline constexpr double kMinModulus_Pa = 1e3;
+
+/// The smallest contusion limit, an energy per area [J/m²]: 1 J/m² (0.1 mJ/cm²), a
+/// 25 000th of the paper's 2.52 J/cm²: below it every touch would be a contusion, and a
+/// denormal limit once made the contusion ratio infinite.
+inline constexpr double kMinEnergyDensity_J_per_m2 = 1.0;
 
 }  // namespace covopt

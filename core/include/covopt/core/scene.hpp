@@ -36,20 +36,24 @@ enum class ThresholdReading {
 /// "cumulative" or "literal".
 std::string_view ToString(ThresholdReading reading) noexcept;
 
-/// The robot (impactor) as seen along the impact direction.
+/// The robot (impactor) as seen along the impact direction. Here and below every Young's
+/// modulus is in [1e3, 1e13] Pa (the floor kMinModulus_Pa): the floors of
+/// covopt/core/physical_floors.hpp bound every length, mass, time and modulus from below.
 struct RobotSpec {
-  /// Reflected mass in the impact direction [kg], > 0; kFixed for an immovable plate.
+  /// Reflected mass in the impact direction [kg], in [1e-3, 1e6] (the floor kMinMass_kg,
+  /// physical_floors.hpp); kFixed for an immovable plate.
   double mass_kg = 10.0;
   /// Relative approach speed at first contact [m/s], in [1e-6, 100].
   double speed_m_per_s = 2.0;
-  /// Radius of curvature of the robot surface under the covering [m], > 0; kFlat if flat.
+  /// Radius of curvature of the robot surface under the covering [m], in [1e-4, 100] (the
+  /// floor kMinRadius_m); kFlat if flat.
   double radius_m = 0.015;
   /// Young's modulus of the robot structure [Pa] (aluminium by default).
   double youngs_modulus_Pa = 70e9;
   /// Poisson ratio of the robot structure [-], in (-1, 0.5].
   double poisson_ratio = 0.3;
   /// The robot's reaction (docs/model.md §10.2): from this long after first contact [s],
-  /// in [0, 10], the robot brakes with `braking_m_per_s2` while it still moves forward.
+  /// 0 or in [1e-6, 10] (the floor kMinTime_s), the robot brakes with `braking_m_per_s2` while it still moves forward.
   double reaction_delay_s = 0.0;
   /// Braking deceleration [m/s²], in [0, 1e4]: a force m_r a against the robot's motion once
   /// the reaction delay has passed, until the robot stops. 0 (default): the robot does not
@@ -65,25 +69,26 @@ struct CoveringSpec {
   /// Poisson ratio of the covering [-], in (-1, 0.5]; 0.25 is the paper's Fig. 9 value
   /// used when a continuous design needs one and none is given (docs/model.md §1).
   double poisson_ratio = 0.25;
-  /// Covering thickness [m], >= 0; 0 = no covering.
+  /// Covering thickness [m], 0 (no covering) or in [1e-4, 1] (the floor kMinLayerThickness_m).
   double thickness_m = 0.015;
 };
 
 /// The head as a rigid mass carrying the scalp.
 struct HeadSpec {
-  /// Head mass [kg], > 0; kFixed for a head held still (drop tests on a fixed head).
+  /// Head mass [kg], in [1e-3, 1e6]; kFixed for a head held still (drop tests on a fixed head).
   double mass_kg = 4.5;
   /// Outer radius of the head, i.e. of the scalp surface, R_s [m]; must exceed the scalp
   /// thickness.
   double radius_m = 0.08;
   /// A compliant neck (docs/model.md §10.3): the head hangs on a torso of this mass [kg] by
   /// a spring and a damper along the impact axis. 0 (default): no neck, the head is a free
-  /// (or fixed) body; otherwise > 0, or kFixed for a torso held still. Needs a free head and
+  /// (or fixed) body; otherwise in [1e-3, 1e6], or kFixed for a torso held still. Needs a free head and
   /// a neck stiffness or damping.
   double torso_mass_kg = 0.0;
   /// The neck's stiffness k_n [N/m], in [0, 1e9]; needs a torso.
   double neck_stiffness_N_per_m = 0.0;
-  /// The neck's damping c_n [N·s/m], in [0, 1e7]; needs a torso.
+  /// The neck's damping c_n [N·s/m], in [0, 1e7]; needs a torso; at most μ_n / 1 µs (μ_n the
+  /// reduced mass of head and torso), the time floor of the damper's relaxation.
   double neck_damping_N_s_per_m = 0.0;
   /// The head hangs on a neck (a torso mass is given).
   bool has_neck() const noexcept { return torso_mass_kg != 0.0; }
@@ -93,7 +98,7 @@ struct HeadSpec {
 struct ScalpSpec {
   double youngs_modulus_Pa = 16.7e6;  ///< [Pa]
   double poisson_ratio = 0.42;        ///< [-], in (-1, 0.5]
-  double thickness_m = 0.003;         ///< b_s [m], > 0 and < head radius
+  double thickness_m = 0.003;         ///< b_s [m], in [1e-4, 1], at least 1e-4 below the head radius
 };
 
 /// The skull bone under the scalp.
@@ -151,5 +156,11 @@ struct InjuryLimits {
   /// Contusion: maximum energy density, 2.52 J/cm² = 25 200 J/m² [J/m²].
   double contusion_energy_density_J_per_m2 = 25200.0;
 };
+
+/// Checks injury limits against their floors (physical_floors.hpp): laceration in
+/// [1e3, 1e13] Pa, contusion in [1, 1e13] J/m², so that every ratio to them is finite.
+/// @throws std::invalid_argument naming the field, the value and the range, e.g.
+///         "limits.laceration_tensile_stress_Pa must be in [1000, 1e+13] Pa (got 5e-324)".
+void CheckInjuryLimits(const InjuryLimits& limits);
 
 }  // namespace covopt

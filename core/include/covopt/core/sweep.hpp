@@ -38,6 +38,13 @@
 
 namespace covopt {
 
+/// The most values one axis may have (`covopt sweep`'s N, covopt.sweep's and speed_limit's
+/// value lists).
+inline constexpr std::size_t kMaxSweepAxisValues = 100000;
+/// The most points of a grid (a 1000 x 1000 sweep; covopt.sweep's result arrays, 13 numbers
+/// and 5 flags a point, then take 109 MB).
+inline constexpr std::size_t kMaxSweepPoints = 1000000;
+
 /// One swept quantity: a Scene field by name and the values it takes.
 struct SweepAxis {
   /// The field: its name ("speed", "robot-mass", "covering-thickness", ...: the command
@@ -197,7 +204,8 @@ struct SweepResult {
 /// @throws std::invalid_argument before any work, naming the field, the value and what is
 ///         allowed, for: an unknown quantity ("x.quantity: no scene quantity 'foo'; the
 ///         quantities are robot-mass, speed, ..."), an axis without values, a NaN value,
-///         y sweeping the field x sweeps, a grid of more than SIZE_MAX points, limits not
+///         y sweeping the field x sweeps, an axis of more than kMaxSweepAxisValues values or a
+///         grid of more than kMaxSweepPoints points (CheckSweepSize), limits not
 ///         > 0, a safety factor outside [1, 100], threads above 4096, block_rows outside
 ///         1..1'000'000, time_path options out of range ("time_path.relative_tolerance must
 ///         be in [1e-14, 1e-2] ..."), or an empty consumer.
@@ -206,5 +214,13 @@ struct SweepResult {
 /// the exception propagates to the caller unchanged.
 SweepResult Sweep(const SweepSpec& spec, const SweepOptions& options,
                   const SweepConsumer& consumer);
+
+/// The number of points of a grid of `x_values` by `y_values` (none: one axis), checked
+/// before anything is allocated for them (Sweep calls it; so do the CLI, Python and the
+/// body-region sweep, which allocate per point).
+/// @throws std::invalid_argument naming the axis and the count: "x.values: 100001 values is
+///         not allowed (at most 100000 per axis)", or "the grid has 2000 x 1000 = 2000000
+///         points; at most 1000000 are allowed".
+std::size_t CheckSweepSize(std::size_t x_values, std::optional<std::size_t> y_values);
 
 }  // namespace covopt

@@ -72,7 +72,7 @@ struct Material {
   std::string name;
   /// A coarse group for filtering: "foam", "elastomer", "padding", "thermoplastic", ...
   std::string family;
-  /// Young's modulus E [Pa], > 0 and <= 1e12.
+  /// Young's modulus E [Pa], in [1e3, 1e12] (the floor kMinModulus_Pa, covopt/core/physical_floors.hpp).
   double youngs_modulus_Pa = 0.0;
   /// Poisson ratio ν [-], in (-1, 0.5]; empty when the source gives none (use
   /// PoissonRatioOrDefault and say that the default was used).

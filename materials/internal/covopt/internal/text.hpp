@@ -104,4 +104,5 @@ inline std::optional<std::string_view> Closest(std::string_view word,
   return std::nullopt;
 }
 
+
 }  // namespace covopt::internal

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include <toml++/toml.h>
+#include "covopt/internal/toml.hpp"
 
 namespace covopt::internal {
 

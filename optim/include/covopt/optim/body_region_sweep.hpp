@@ -36,7 +36,9 @@ bool IsBodyContactField(std::string_view dotted_name) noexcept;
 /// "covering-poisson", "covering-thickness", or their dotted names). The points are in
 /// core's Sweep order: index ix × ny + iy (x varies slowest).
 /// @throws std::invalid_argument for an unknown quantity, one the body contact does not read,
-///         or an axis without values (a point's own bad value is that point's error).
+///         an axis without values, or a grid over covopt::kMaxSweepAxisValues values per axis or
+///         covopt::kMaxSweepPoints points (CheckSweepSize, before any point; a point's own bad
+///         value is that point's error).
 std::vector<BodyRegionSweepPoint> SweepBodyRegion(const BodyContactScene& scene, const SweepAxis& x,
                                                   const std::optional<SweepAxis>& y,
                                                   const materials::BodyLimits& limits,

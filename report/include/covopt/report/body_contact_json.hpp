@@ -33,6 +33,13 @@ std::string BodyContactSceneJson(const BodyContactScene& scene, const std::optio
 /// crush {check, ratio}, governing, governing_ratio, safety_factor, admissible, margin}.
 std::string BodyRegionJudgementJson(const optim::BodyRegionJudgement& judgement, double safety_factor);
 
+/// The time path's warnings of one region's contact (BodyContactResult::warnings: the integrator
+/// did not keep its tolerance), of its judgement (a braking robot's is the time path's) and of
+/// `time_path` (a time-path run beside the exact verdict) when given, each "<region> (<area>):
+/// <message>": the lines simulate --body-region adds to its warnings.
+std::vector<std::string> TimePathWarnings(const optim::BodyRegionJudgement& judgement,
+                                          const BodyContactResult* time_path);
+
 /// `simulate --body-region`: {scene (BodyContactSceneJson), safety_factor, regions
 /// [BodyRegionJudgementJson...], head (the head's simulation object, `head_json`, or null),
 /// safe (every verdict), warnings}.
