@@ -15,7 +15,8 @@ using internal::EqualsIgnoringCase;
 using internal::Lower;
 
 CatalogError::CatalogError(const std::string& message, std::string location, std::string key)
-    : std::runtime_error(message), location_(std::move(location)), key_(std::move(key)) {}
+    : std::runtime_error(covopt::internal::EscapeControlCharacters(message)),  // a name's NUL or newline: one line, whole
+      location_(std::move(location)), key_(std::move(key)) {}
 
 bool Range::Contains(double value) const noexcept {
   if (min && !(value >= *min)) return false;

@@ -18,6 +18,7 @@
 
 #include "chain_impl.hpp"
 #include "covopt/core/physical_floors.hpp"
+#include "covopt/internal/text.hpp"
 #include "covopt/internal/toml_text.hpp"
 #include "urdf_parse.hpp"
 
@@ -632,10 +633,11 @@ SurfaceFileShapes ParseSurfaceFile(const std::string& toml_text, const std::stri
     RefuseUnknownKeys(link, std::array<std::string_view, 3>{"name", "segments", "points"}, source_name, "[[link]]");
     const std::optional<std::string> name = link["name"].value<std::string>();
     if (!name || name->empty()) FileError(source_name, link.source(), "[[link]]: name must be the URDF link's name (a string)");
-    if (!seen.insert(*name).second) FileError(source_name, link.source(), "[[link]] '" + *name + "' is given twice");
+    const std::string shown = covopt::internal::EscapeControlCharacters(*name);  // one line, whole
+    if (!seen.insert(*name).second) FileError(source_name, link.source(), "[[link]] '" + shown + "' is given twice");
     LinkSurface surface;
     surface.link = *name;
-    const std::string what = "link '" + *name + "'";
+    const std::string what = "link '" + shown + "'";
     if (const toml::array* segments = ArrayOfTables(link, "segments", source_name, what)) {
       for (const toml::node& item : *segments) {
         const toml::table& segment = *item.as_table();
@@ -697,7 +699,7 @@ RobotSurface SurfaceFromUrdfString(const std::string& urdf_text, const Kinematic
       if (std::find(chain_links.begin(), chain_links.end(), link.link) == chain_links.end()) {
         std::string names;
         for (const std::string& name : chain_links) names += (names.empty() ? "" : ", ") + name;
-        throw std::invalid_argument(file->source + ": link '" + link.link + "' is not a moving link of the chain " +
+        throw std::invalid_argument(file->source + ": link '" + covopt::internal::EscapeControlCharacters(link.link) + "' is not a moving link of the chain " +
                                     chain.base_link() + " -> " + chain.tip_link() + " (its links: " + names + ")");
       }
       from_file[link.link] = &link;

@@ -95,6 +95,25 @@ TEST_CASE("a NUL in a scene file's value or key does not cut the message", "[bad
   CHECK_THAT(table.err, Contains("unknown table 'ro\\0bot'"));
 }
 
+TEST_CASE("a NUL or a line break in a catalog's or a surface file's name does not cut or break the message",
+          "[bad-input][messages]") {
+  const TempDir dir;
+  const std::string entry =
+      "[[material]]\nname = \"soft\\u0000foam\"\nfamily = \"foam\"\nyoungs_modulus_Pa = 2.5e6\npoisson_ratio = 0.3\n"
+      "density_kg_per_m3 = 30\nmodulus_basis = \"compressive\"\nsource = \"a datasheet\"\n";
+  const CliRun twice =
+      Run({"materials", "list", "--catalog", dir.Write("c.toml", entry + entry).string()});
+  RequireOneLineBadInput(twice);
+  CHECK_THAT(twice.err, Contains("duplicate material name 'soft\\0foam'"));
+  const CliRun surface = Run(Fr3Audit(
+      {"--surface-file",
+       dir.Write("s.toml", "[[link]]\nname = \"fr3\\nlink3\\u0000x\"\n"
+                           "points = [ { at_m = [0, 0, 0], radius_m = 0.05 } ]\n")
+           .string()}));
+  RequireOneLineBadInput(surface);
+  CHECK_THAT(surface.err, Contains("link 'fr3\\nlink3\\0x'"));
+}
+
 TEST_CASE("audit --design's thickness flags name the flag, the value and the range", "[bad-input][messages]") {
   SECTION("--max-thickness 0") {
     const CliRun run = Run(Fr3Audit({"--design", "--max-thickness", "0"}));
