@@ -85,6 +85,8 @@ def test_contact_motion_from_a_csv_file_equals_the_dict_and_the_closed_form(tmp_
     (dict(urdf=None, tip="tool", joints=[0, 0]), "exactly one of them"),
     (dict(urdf=None, tip="a", joints=[0], urdf_text="<robot"), "urdf_text: malformed URDF"),
     (dict(urdf=PLANAR, tip="hand", joints=[0, 0]), "tip link 'hand' is not in the URDF"),
+    # A name with a line break or a NUL is echoed escaped: the message stays one line, whole.
+    (dict(urdf=PLANAR, tip="ha\nnd\0x", joints=[0, 0]), "tip link 'ha\\nnd\\0x' is not in the URDF"),
     (dict(urdf=PLANAR, tip="link1", joints=[0], base="link2"), "not an ancestor"),
     (dict(urdf=PLANAR, tip="tool", joints=[0, 0, 0]), "3 values given"),
     (dict(urdf=PLANAR, tip="tool", joints=[0, math.nan]), "joints[1]: must be a finite number"),

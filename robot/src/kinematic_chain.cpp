@@ -25,6 +25,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include "chain_impl.hpp"
+#include "covopt/internal/text.hpp"
 #include "urdf_parse.hpp"
 
 namespace covopt::robot {
@@ -286,7 +287,8 @@ std::shared_ptr<const KinematicChain::Impl> BuildChain(const urdf::ModelInterfac
   }
   for (const auto& [role, name] : {std::pair{"base", base}, std::pair{"tip", spec.tip_link}}) {
     if (!model.getLink(name)) {
-      throw std::invalid_argument(source + ": " + role + " link '" + name +
+      throw std::invalid_argument(source + ": " + role + " link '" +
+                                  covopt::internal::EscapeControlCharacters(name) +  // one line, whole
                                   "' is not in the URDF (links: " + KnownLinks(model) + ")");
     }
   }

@@ -715,7 +715,10 @@ RobotSurface SurfaceFromUrdfString(const std::string& urdf_text, const Kinematic
       link.shapes = it->second->shapes;
     } else {
       const urdf::LinkConstSharedPtr urdf_link = model->getLink(name);
-      if (!urdf_link) throw std::invalid_argument(source_name + ": link '" + name + "' is not in the URDF");
+      if (!urdf_link) {
+        throw std::invalid_argument(source_name + ": link '" + covopt::internal::EscapeControlCharacters(name) +
+                                    "' is not in the URDF");
+      }
       std::string mesh;
       link.shapes = UrdfShapes(*urdf_link, options, source_name, mesh);
       if (!mesh.empty()) {
