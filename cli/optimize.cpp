@@ -25,6 +25,7 @@
 #include "covopt/report/design_json.hpp"
 #include "covopt/report/robust_json.hpp"
 #include "body_region_commands.hpp"
+#include "design_flag_ranges.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
 #include "oracle_options.hpp"
@@ -697,21 +698,6 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
 }
 
 }  // namespace
-
-void RequireMaxThickness(double max_thickness_m, double min_thickness_m, const std::optional<std::string>& typed) {
-  if (!(max_thickness_m > min_thickness_m && max_thickness_m <= 1.0)) {
-    throw InputError(fmt::format("--max-thickness must be in ({}, 1 m] (got '{}')",
-                                 FormatQuantity(min_thickness_m, QuantityKind::kLength),
-                                 typed.value_or(FormatQuantity(max_thickness_m, QuantityKind::kLength))));
-  }
-}
-
-void RequireThicknessStep(double thickness_step_m, const std::optional<std::string>& typed) {
-  if (!(thickness_step_m >= 0.0 && thickness_step_m <= 0.01)) {
-    throw InputError(fmt::format("--thickness-step must be in [0, 10 mm] (got '{}')",
-                                 typed.value_or(FormatQuantity(thickness_step_m, QuantityKind::kLength))));
-  }
-}
 
 CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
   CLI::App* sub = app.add_subcommand(

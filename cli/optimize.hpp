@@ -84,14 +84,6 @@ struct OptimizeOptions {
 
 CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options);
 
-/// The covering design's thickness flags, shared by optimize and audit --design, checked
-/// against their ranges by the flag's name (the library would name its own fields):
-/// --max-thickness in (min_thickness_m, 1 m], --thickness-step in [0, 10 mm].
-/// @param typed the value as the user wrote it, echoed in the message (nullopt: the default).
-/// @throws InputError "--max-thickness must be in (0.1 mm, 1 m] (got '0')".
-void RequireMaxThickness(double max_thickness_m, double min_thickness_m, const std::optional<std::string>& typed);
-void RequireThicknessStep(double thickness_step_m, const std::optional<std::string>& typed);
-
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream& err);
 
