@@ -516,13 +516,8 @@ def blank_python(text: str, keep_strings: bool) -> str:
         tokens = list(tokenize.generate_tokens(io.StringIO(text).readline))
     except (tokenize.TokenError, SyntaxError):
         return text
-    previous = tokenize.NEWLINE
     for tok in tokens:
-        # A docstring (a string statement) is text even where string literals are kept.
-        docstring = tok.type == tokenize.STRING and previous in (tokenize.NEWLINE, tokenize.INDENT, tokenize.DEDENT, tokenize.NL)
-        if tok.type not in (tokenize.COMMENT, tokenize.NL):
-            previous = tok.type
-        if tok.type == tokenize.COMMENT or (tok.type == tokenize.STRING and (docstring or not keep_strings)):
+        if tok.type == tokenize.COMMENT or (tok.type == tokenize.STRING and not keep_strings):
             (r0, c0), (r1, c1) = tok.start, tok.end
             for r in range(r0, r1 + 1):
                 row = out[r - 1]

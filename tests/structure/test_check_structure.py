@@ -33,9 +33,10 @@ def cxx_function(name: str, length: int) -> str:
     lambda: a scan that did not skip them would end it early or late."""
     tricky = ('  // } a brace in a comment\n'
               '  const char* s = "}}} {";\n'
-              '  const char* r = R"x(}" )" {{ )x";\n'
+              '  const char* r = R"x(a" } ")x";  // a raw string: no string ends at its inner quote\n'
               '  char c = \'}\';\n'
-              '  long big = 1\'000\'000;\n'
+              '  if (1\'000\'000\'000 > x) {  // digit separators: no character literal\n'
+              '    x = 1; }\n'
               '#define CLOSE }\n'
               '  auto f = [&](int v) {\n'
               '    return v + 1;\n'
@@ -113,7 +114,7 @@ class Functions(Tree):
             const auto kLambda = [](int v) {
               return v;
             };
-            const int kTable[] = {1, 2, 3};
+            const int kTable[] = {1, 2, 3}; const Widget kMade = Make(1, {2, 3});
             int Widget::Twice() const {
               if (a_ > 0) {
                 for (int i : {1, 2}) { b_ += i; }
