@@ -16,12 +16,14 @@ The checks (each prints every offender as path:line: name (length) and a summary
              Python: each def, `ast` end_lineno - lineno + 1 (decorators not counted).
   files      no file over 800 lines.
   shells     cli/ + python/ under 25 % of the lines of the source.
-  includes   in cli/, a command's header is included by its own source and by the registry
-             (app.cpp, main.cpp) only. A command is cli/<stem>.cpp that registers a subcommand
-             (calls add_subcommand); its files are cli/<stem>.cpp and cli/<stem>.hpp. Any other
-             cli/ file that includes cli/<stem>.hpp is an offender: a command including another
-             command's file, or a shared module reaching up into a command (through which
-             commands would include each other).
+  includes   in cli/, a command's files are included by its own files and by the registry
+             (app.cpp, main.cpp) only. A command is cli/<stem> whose .cpp registers a subcommand
+             (calls add_subcommand) or whose .hpp declares the function that sets one up
+             (Setup<Name>(...), called by the registry); its files are cli/<stem>.cpp,
+             cli/<stem>.hpp and its parts, the cli/<stem>_<part>.{cpp,hpp} of which one includes
+             cli/<stem>.hpp. Any other cli/ file that includes one of them is an offender: a
+             command including another command's file, or a shared module reaching up into a
+             command (through which commands would include each other).
   rules      no CLI or Python file (cli/, python/ outside tests) writes a rule that the library
              holds: the patterns of RULE_PATTERNS below, matched on the code with comments
              blanked (and string literals blanked, except for the region-name patterns).
@@ -444,34 +446,63 @@ def check_shells(src: Source) -> Result:
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.M)
 
 
+SETUP_DECLARATION = re.compile(r"\bSetup[A-Z]\w*\s*\(")
+
+
 def command_stems(src: Source) -> set[str]:
+    """The cli/<stem> of each command: its source registers a subcommand (add_subcommand) or its
+    header declares the function that sets one up (Setup<Name>, which the registry calls);
+    the registry itself is none."""
     stems = set()
+    registry = {rel.rsplit(".", 1)[0] for rel in REGISTRY_FILES}
     for rel in src.files:
-        if rel.startswith("cli/") and rel.endswith(".cpp") and "add_subcommand(" in blank_cxx(src.text(rel)):
-            stems.add(rel[: -len(".cpp")])
+        stem, ext = rel.rsplit(".", 1)
+        if not rel.startswith("cli/") or stem in registry:
+            continue
+        code = blank_cxx(src.text(rel))
+        if (ext == "cpp" and "add_subcommand(" in code) or (ext == "hpp" and SETUP_DECLARATION.search(code)):
+            stems.add(stem)
     return stems
+
+
+def cli_includes(src: Source, rel: str) -> list[tuple[int, str]]:
+    """The quoted includes of a cli/ file: (line, the cli/ path they name)."""
+    text = src.text(rel)
+    found = []
+    for m in INCLUDE.finditer(text):
+        target = os.path.normpath(os.path.join(os.path.dirname(rel), m.group(1))).replace(os.sep, "/")
+        if target not in src.files:
+            target = "cli/" + m.group(1)  # the CLI's include directory is cli/
+        found.append((text.count("\n", 0, m.start()) + 1, target))
+    return found
 
 
 def check_includes(src: Source) -> Result:
     commands = command_stems(src)
+    cli_files = [rel for rel in src.files if rel.startswith("cli/") and not rel.endswith(PY_EXTENSIONS)]
+    includes = {rel: cli_includes(src, rel) for rel in cli_files}
+    # Each file's command: the command's own .cpp and .hpp, and its parts (cli/<stem>_*.* that
+    # include cli/<stem>.hpp, e.g. simulate_body_region.cpp); None for a shared module.
+    stems = {rel.rsplit(".", 1)[0] for rel in cli_files}
+    stem_owner: dict[str, str | None] = {}
+    for stem in stems:
+        stem_owner[stem] = stem if stem in commands else None
+        pair = [rel for rel in cli_files if rel.rsplit(".", 1)[0] == stem]
+        for command in sorted(commands, key=len, reverse=True):
+            if stem.startswith(command + "_") and any(t == command + ".hpp" for rel in pair for _, t in includes[rel]):
+                stem_owner[stem] = command
+                break
+    owner = {rel: stem_owner[rel.rsplit(".", 1)[0]] for rel in cli_files}
     offenders = []
-    for rel in src.files:
-        if not rel.startswith("cli/") or rel.endswith(PY_EXTENSIONS) or rel in REGISTRY_FILES:
+    for rel in cli_files:
+        if rel in REGISTRY_FILES:
             continue
-        own = rel.rsplit(".", 1)[0]
-        text = blank_cxx(src.text(rel), keep_strings=True)
-        for m in INCLUDE.finditer(src.text(rel)):
-            line = src.text(rel).count("\n", 0, m.start()) + 1
-            if not text.splitlines()[line - 1].strip():
-                pass  # an include is a preprocessor line: blanked, but read from the file itself
-            target = os.path.normpath(os.path.join(os.path.dirname(rel), m.group(1))).replace(os.sep, "/")
-            if not target.startswith("cli/"):
-                target = "cli/" + m.group(1)  # the CLI's include directory is cli/
-            stem = target.rsplit(".", 1)[0]
-            if stem in commands and stem != own:
-                who = "command " + own if own in commands else "shared module"
-                offenders.append(f"{rel}:{line}: {who} includes command {stem}'s {target}")
-    names = ", ".join(sorted(s[len("cli/"):] for s in commands))
+        for line, target in includes[rel]:
+            command = owner.get(target)
+            if command is not None and command != owner[rel]:
+                who = f"command {owner[rel]}" if owner[rel] else "shared module"
+                offenders.append(f"{rel}:{line}: {who} includes command {command}'s {target}")
+    names = ", ".join(sorted(c[len("cli/"):] for c in commands))
     return Result("includes", offenders,
                   f"{len(offenders)} includes of a command's file from outside it (commands: {names})", [])
 

@@ -205,6 +205,36 @@ class Includes(Tree):
             "cli/shared.hpp:1: shared module includes command cli/beta's cli/beta.hpp",
         ])
 
+    def test_a_command_the_registry_sets_up_is_a_command_too(self) -> None:
+        write(self.root, {
+            "cli/app.cpp": '#include "alpha.hpp"\n#include "beta.hpp"\n'
+                           'void Add(CLI::App& app) { SetupAlpha(app.add_subcommand("alpha")); }\n',
+            "cli/app.hpp": "int RunCli();\n",
+            "cli/main.cpp": '#include "app.hpp"\n',
+            "cli/alpha.hpp": "void SetupAlpha(CLI::App* sub);\nint RunAlpha();\n",
+            "cli/alpha.cpp": '#include "alpha.hpp"\n',
+            "cli/beta.hpp": '#include "alpha.hpp"\nvoid SetupBeta(CLI::App* sub);\n',
+            "cli/beta.cpp": '#include "beta.hpp"\n',
+            "cli/shared.hpp": "// SetupGamma( in a comment is no command\nvoid AddSharedOptions(CLI::App* sub);\n",
+            "cli/shared.cpp": '#include "shared.hpp"\n',
+        })
+        result = self.result("includes")
+        self.assertEqual(result.offenders, ["cli/beta.hpp:1: command cli/beta includes command cli/alpha's cli/alpha.hpp"])
+        self.assertIn("commands: alpha, beta)", result.summary)
+
+    def test_a_commands_parts_are_its_own(self) -> None:
+        write(self.root, {
+            "cli/alpha.cpp": self.COMMAND.format(stem="alpha"),
+            "cli/alpha.hpp": "struct Alpha {};\n",
+            "cli/alpha_csv.hpp": '#include "alpha.hpp"\n',  # a part: it includes alpha.hpp
+            "cli/alpha_csv.cpp": '#include "alpha_csv.hpp"\n',
+            "cli/alpha_options.hpp": "struct Options {};\n",  # a shared module, whatever its name
+            "cli/beta.cpp": self.COMMAND.format(stem="beta") + '#include "alpha_options.hpp"\n',
+            "cli/beta_more.cpp": '#include "beta.hpp"\n#include "alpha_csv.hpp"\n',
+        })
+        self.assertEqual(self.where("includes"), [
+            "cli/beta_more.cpp:2: command cli/beta includes command cli/alpha's cli/alpha_csv.hpp"])
+
     def test_commands_on_shared_modules_only_are_accepted(self) -> None:
         write(self.root, {
             "cli/app.cpp": '#include "alpha.hpp"\n#include "beta.hpp"\n',
