@@ -282,7 +282,8 @@ def function_name(head: str) -> str:
 def classify(head: str) -> str:
     """What a '{' opens at namespace or class scope, from the text since the last ; { or }:
     namespace, class, function, lambda, init (a member's brace initialiser in a constructor's
-    init list) or other (data, an enum's or an initialiser's braces)."""
+    init list, or braces inside parentheses) or other (data, an enum's or an initialiser's
+    braces)."""
     while ACCESS_LABEL.match(head):
         head = ACCESS_LABEL.sub("", head, count=1)
     bare = strip_template(head)
@@ -290,6 +291,8 @@ def classify(head: str) -> str:
         return "namespace"
     if LAMBDA_TAIL.search(head) and "]" in head:
         return "lambda"
+    if head.count("(") > head.count(")"):
+        return "init"  # a braced value inside parentheses: a default argument `= {}`, an argument
     if TYPE_KEYWORD.match(bare):
         return "class"
     if "(" not in bare or CONTROL.match(bare):
@@ -341,7 +344,7 @@ def cxx_functions(path: str, text: str) -> tuple[list[Function], list[str]]:
                 in_function += 1
             else:
                 stack.append((kind, "", 0))
-                if kind != "init":  # a member's brace initialiser: the constructor's head goes on
+                if kind != "init":  # a brace initialiser within the head: the head goes on
                     head_start = k + 1
         elif ch == "}":
             if not stack:

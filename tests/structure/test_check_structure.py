@@ -115,7 +115,7 @@ class Functions(Tree):
               return v;
             };
             const int kTable[] = {1, 2, 3}; const Widget kMade = Make(1, {2, 3});
-            int Widget::Twice() const {
+            int Widget::Twice(Options o = {}, std::vector<int> v = {1, 2}) const {
               if (a_ > 0) {
                 for (int i : {1, 2}) { b_ += i; }
               }
