@@ -9,6 +9,7 @@
 #include <fstream>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 #include <dlfcn.h>
 
@@ -26,7 +27,7 @@ using Json = nlohmann::ordered_json;
 
 /// OpenSSL's digest functions, from libcrypto opened the first time a file is hashed: a run that
 /// hashes no file (`covopt --version`, every output without provenance) never loads it, and its
-/// load and 3000-odd symbol bindings were a third of a hello-world process (docs/performance.md,
+/// load and 3377 symbol bindings cost 0.44 of a hello-world process (docs/performance.md,
 /// start-up). The library is OpenSSL's (libcrypto.so.<OPENSSL_SHLIB_VERSION>) whose headers built this.
 struct Crypto {
   decltype(&EVP_MD_CTX_new) md_ctx_new;
@@ -37,20 +38,17 @@ struct Crypto {
   decltype(&EVP_DigestFinal_ex) digest_final;
 };
 
-#define COVOPT_STRINGIFY_(x) #x
-#define COVOPT_STRINGIFY(x) COVOPT_STRINGIFY_(x)
-constexpr const char* kLibcrypto = "libcrypto.so." COVOPT_STRINGIFY(OPENSSL_SHLIB_VERSION);
-
 const Crypto& OpenCrypto() {
   static const Crypto crypto = [] {
-    void* handle = dlopen(kLibcrypto, RTLD_NOW | RTLD_LOCAL);
+    const std::string library = fmt::format("libcrypto.so.{}", OPENSSL_SHLIB_VERSION);
+    void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (handle == nullptr) {
       const char* why = dlerror();
-      throw std::runtime_error(fmt::format("SHA-256: cannot load OpenSSL's {}: {}", kLibcrypto, why ? why : "?"));
+      throw std::runtime_error(fmt::format("SHA-256: cannot load OpenSSL's {}: {}", library, why ? why : "?"));
     }
-    const auto symbol = [handle]<class F>(F& function, const char* name) {
+    const auto symbol = [handle, &library]<class F>(F& function, const char* name) {
       function = reinterpret_cast<F>(dlsym(handle, name));
-      if (function == nullptr) throw std::runtime_error(fmt::format("SHA-256: {} has no {}", kLibcrypto, name));
+      if (function == nullptr) throw std::runtime_error(fmt::format("SHA-256: {} has no {}", library, name));
     };
     Crypto c{};
     symbol(c.md_ctx_new, "EVP_MD_CTX_new");
