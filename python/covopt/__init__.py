@@ -22,6 +22,7 @@ from ._body_regions import (BodyContact, BodyRegionDesign, BodyRegionSpeedLimitT
                             BodyRegionTrajectoryCheck)
 from ._audit import Audit, AuditFailure, AuditManyError, audit, audit_many
 from ._errors import ComputationError
+from ._inputs import Regions, Rule, takes_objects as _takes_objects
 from ._results import (ContactMotion, Design, Material, ReflectedMass, Result, RobustDesign,
                        RobustSimulation, Sensitivities, Simulation, SpeedLimit, SpeedLimitTable,
                        Sweep, TrajectoryCheck)
@@ -30,7 +31,7 @@ Scene = _covopt.Scene
 for _public in (Scene, ComputationError):
     _public.__module__ = __name__  # shown as covopt.Scene, covopt.ComputationError
 
-__all__ = ["Scene", "Result", "simulate", "sweep", "optimize", "materials", "material",
+__all__ = ["Scene", "Rule", "Regions", "Result", "simulate", "sweep", "optimize", "materials", "material",
            "ComputationError", "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "iso_robot_mass",
            "contact_motion", "check_trajectory", "worst_case", "injury_probability",
            "sensitivities", "robust_optimize", "load_scene", "BodyContact", "BodyRegionSpeedLimitTable",
@@ -54,6 +55,7 @@ def _given(**options):
     return {name: value for name, value in options.items() if value is not None}
 
 
+@_takes_objects
 @_provenance.stamped
 def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, history=False,
              body_region=None, body_area=None, contact=None, contact_area=None):
@@ -94,6 +96,7 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
         method=method, rtol=rtol, atol=atol, max_steps=max_steps, history=history)))
 
 
+@_takes_objects
 @_provenance.stamped
 def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=None, contact=None,
           contact_area=None):
@@ -134,6 +137,7 @@ def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=No
     return Sweep(_covopt.sweep(x, y, _scene(scene), threads))
 
 
+@_takes_objects
 @_provenance.stamped
 def optimize(scene=None, *, materials=None, families=None, catalog=None, no_builtin=False,
              thickness=None, max_thickness=None, min_modulus=None, max_modulus=None,
@@ -235,6 +239,7 @@ def body_region_limits(region, area=None, contact="transient"):
     return BodyLimits(_covopt.body_region_limits(region, area, contact))
 
 
+@_takes_objects
 @_provenance.stamped
 def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=False, oracle=None,
                    method=None, rtol=None, max_steps=None):
@@ -263,6 +268,7 @@ def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=F
         oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
+@_takes_objects
 @_provenance.stamped
 def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=False, oracle=None,
                   method=None, rtol=None, max_steps=None):
@@ -278,6 +284,7 @@ def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=Fa
         oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
+@_takes_objects
 @_provenance.stamped
 def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
                 allow_full_compression=False, allow_crushing=False, oracle=None, method=None,
@@ -387,6 +394,7 @@ def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, u
                                                 payload_inertia=payload_inertia))
 
 
+@_takes_objects
 @_provenance.stamped
 def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, scene=None,
                      urdf_text=None, allow_full_compression=False, allow_crushing=False,
@@ -470,6 +478,7 @@ def sensitivities(scene=None):
     return Sensitivities(_covopt.sensitivities(_scene(scene)))
 
 
+@_takes_objects
 @_provenance.stamped
 def robust_optimize(scene=None, *, ranges=None, samples=None, seed=1, threads=0, distributions=None,
                     max_injury_probability=None, allow_full_compression=False, allow_crushing=False,
