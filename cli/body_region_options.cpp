@@ -1,7 +1,6 @@
 #include "body_region_options.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <string_view>
 
@@ -17,11 +16,6 @@
 namespace covopt::cli {
 namespace {
 
-/// The scene inputs an ISO region reads (the rest belong to the head's model).
-constexpr std::array<std::string_view, 9> kBodyContactInputs{
-    "robot.mass",         "robot.speed",         "robot.radius",         "covering.modulus",
-    "covering.poisson",   "covering.thickness",  "limits.safety_factor", "robot.reaction_delay",
-    "robot.braking"};
 
 }  // namespace
 
@@ -96,7 +90,7 @@ void CheckBodyRegionScene(const BodyRegionPlan& regions, const SimulationPlan& p
   const std::string names = regions.IsoNames();
   if (!regions.has_head()) {
     for (const auto& [field, source] : plan.sources) {
-      if (std::find(kBodyContactInputs.begin(), kBodyContactInputs.end(), field) != kBodyContactInputs.end()) continue;
+      if (scene_file::BodyRegionReads(field)) continue;
       throw InputError(fmt::format("{} from {} does not apply to the ISO/TS 15066 body region ({}): it is an input "
                                    "of the head's model; drop it, or add --body-region head",
                                    field, source, names));

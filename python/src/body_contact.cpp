@@ -44,6 +44,7 @@
 #include "covopt/optim/trajectory_check.hpp"
 #include "covopt/report/body_contact_json.hpp"
 #include "covopt/robot/trajectory.hpp"
+#include "covopt/scene_file/scene_inputs.hpp"
 #include "covopt/scene_file/spelling.hpp"
 #include "covopt/scene_file/targets.hpp"
 #include "body_region_inputs.hpp"
@@ -85,10 +86,6 @@ auto Keyworded(F&& f) {
   }
 }
 
-/// The scene keywords the body-region model reads; every other one given is refused.
-const char* const kReadKeywords[] = {"robot_mass",         "speed",    "robot_radius",  "covering_modulus",
-                                     "covering_poisson",   "material", "safety_factor", "covering_thickness",
-                                     "ranges",             "reaction_delay", "braking"};
 
 /// body_region as given, for messages: "chest", "['chest', 'face']".
 std::string RegionText(const py::kwargs& kwargs) {
@@ -100,9 +97,11 @@ std::string RegionText(const py::kwargs& kwargs) {
 void RefuseHeadKeywords(const SceneInputs& inputs, const std::string& region) {
   for (const auto& item : inputs.given) {
     const std::string keyword = py::str(item.first).cast<std::string>();
-    bool read = false;
-    for (const char* k : kReadKeywords) read = read || keyword == k;
-    if (!read) {
+    std::string_view field;  // the keyword's field, for the library's list of what a region reads
+    for (const scene_file::FieldSpelling& k : scene_file::SceneInputSpellings(scene_file::ValueStyle::kKeyword)) {
+      if (k.name == keyword) field = k.field;
+    }
+    if (keyword != "ranges" && !scene_file::BodyRegionReads(field)) {
       throw std::invalid_argument(
           keyword + ": body_region=" + (region.front() == '[' ? region : "'" + region + "'") +
           " does not read it (ISO/TS 15066's model takes robot_mass, speed, robot_radius, the covering, "

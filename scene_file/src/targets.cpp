@@ -163,6 +163,13 @@ std::optional<std::string> ContactAreaNote(const ContactTargets& targets, const 
                      FormatQuantity(targets.contact_area_m2, QuantityKind::kArea));
 }
 
+bool BodyRegionReads(std::string_view field) noexcept {
+  static constexpr std::string_view kRead[] = {
+      "robot.mass",         "robot.speed",       "robot.radius",         "covering.modulus",      "covering.poisson",
+      "covering.thickness", "covering.material", "limits.safety_factor", "robot.reaction_delay", "robot.braking"};
+  return std::find(std::begin(kRead), std::end(kRead), field) != std::end(kRead);
+}
+
 std::optional<std::string> BarePressureNote(const ContactTargets& targets) {
   if (!targets.has_iso() || targets.contact_area_m2 > 0.0) return std::nullopt;
   return "the bare robot's pressure is not evaluated (no body.contact_area): its limits are those of the force alone";

@@ -216,3 +216,13 @@ TEST_CASE("scene inputs: one resolution, messages naming fields, spelled per fro
   CHECK_THAT(message({{"model.thresholds", std::string("loose"), ""}}),
              Contains("model.thresholds: expected 'cumulative' or 'literal'"));
 }
+
+TEST_CASE("targets: an ISO region reads the robot, the covering and the safety factor only") {
+  for (const char* field : {"robot.mass", "robot.speed", "robot.radius", "covering.thickness", "covering.material",
+                            "limits.safety_factor", "robot.braking"}) {
+    CHECK(covopt::scene_file::BodyRegionReads(field));
+  }
+  for (const char* field : {"head.mass", "scalp.thickness", "model.damping", "limits.laceration", "robot.modulus"}) {
+    CHECK_FALSE(covopt::scene_file::BodyRegionReads(field));
+  }
+}

@@ -18,6 +18,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "covopt/core/body_contact.hpp"
@@ -56,6 +57,12 @@ void RequireBareRobotContactArea(const materials::ContactTargets& targets, const
 /// pressure is used, not the area); nullopt otherwise or when `bare_robot_judged`.
 std::optional<std::string> ContactAreaNote(const materials::ContactTargets& targets, const BodyContactScene& scene,
                                            bool bare_robot_judged = false);
+
+/// Whether an ISO region's model reads the scene input `field` ("robot.mass", "robot.speed",
+/// "robot.radius", the covering's, "limits.safety_factor", "robot.reaction_delay",
+/// "robot.braking"); the rest belong to the head's model, and with only ISO regions named a
+/// front end refuses them rather than ignore them.
+bool BodyRegionReads(std::string_view field) noexcept;
 
 /// The warning of a speed-limit table whose bare column is the force's alone: ISO targets
 /// and no contact area; nullopt otherwise.
