@@ -10,6 +10,8 @@ CLI's scene flags with underscores (``--robot-mass`` is ``robot_mass``); every c
     result.laceration.ratio, result.safe, result.to_dict()
 
 Values are SI floats in and out; a scene value may also be a string with a unit (``"15mm"``).
+The judging rule and the targets may be given as objects, ``rule=covopt.Rule(...)`` and
+``regions=covopt.Regions(...)`` (covopt/_inputs.py), instead of their keywords.
 Results are read-only objects whose attributes are the keys of the CLI's ``--json`` output
 (``to_dict()`` gives that object). Bad input raises ``ValueError`` with the library's (the
 CLI's) message naming the keyword; a computation that fails raises
@@ -75,8 +77,9 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
     the dampers, the brake and a fixed robot's support so far).
 
     The result's warnings are those of ``covopt simulate --json`` for the same input, including
-    the ones about the input itself (a catalog material's unknown Poisson ratio, "ν unknown,
-    0.25 assumed"; a safety factor; covering inputs a zero thickness makes moot), which name
+    the ones about the input itself (the default covering when none is given; a catalog
+    material's unknown Poisson ratio, "ν unknown, 0.25 assumed"; a safety factor; covering
+    inputs a zero thickness makes moot), which name
     the keyword (``safety_factor='2'``) where the CLI names the flag (``--safety-factor '2'``).
 
     body_region: an ISO/TS 15066 region ("chest", "hands-fingers", ...; "head" is the skin
@@ -307,7 +310,8 @@ def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
     object of ``covopt speed-limit --body-region --json``.
 
     Returns a SpeedLimitTable (solve_for, criterion, safety_factor, limits, search_limit,
-    oracle, rows, scene, warnings; without the CLI's warnings about its own input). Raises
+    oracle, rows, scene, warnings: the CLI's, the input's included (a safety factor, an assumed
+    covering or ν), naming the keywords). Raises
     ValueError on bad input, ComputationError (status "evaluation-failed") when the time path
     fails on an impact of a row's search.
     """
@@ -415,8 +419,8 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
     sample_count, unsafe_sample_count, criterion, safety_factor, limits, search_limit, scene,
     joint_names, samples (time_s, speed_m_per_s, reflected_mass_kg ("fixed" if infinite),
     moving, max_safe_speed_m_per_s (None when no speed is safe), speed_scale, limited_by,
-    laceration_ratio, contusion_ratio, compression_ratio, safe), warnings (the robot's and the
-    check's; without the CLI's warnings about its own input). Raises ValueError on bad input,
+    laceration_ratio, contusion_ratio, compression_ratio, safe), warnings (the CLI's: the
+    input's, e.g. an assumed covering or ν, the robot's and the check's). Raises ValueError on bad input,
     ComputationError (status "evaluation-failed") when the time path (a scene with braking or
     a neck) fails at a sample: the trajectory then has no verdict.
 
