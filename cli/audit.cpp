@@ -18,6 +18,7 @@
 #include "body_region_options.hpp"
 #include "covopt/optim/audit.hpp"
 #include "covopt/optim/design.hpp"
+#include "covopt/optim/input_warnings.hpp"
 #include "covopt/report/audit_json.hpp"
 #include "covopt/report/csv.hpp"
 #include "covopt/robot/surface.hpp"
@@ -291,7 +292,7 @@ AuditRun Resolve(const AuditCommandOptions& o) {
   }
 
   for (std::string& w : InputWarnings(plan)) run.input_warnings.push_back(std::move(w));
-  for (std::string& w : CrushCheckOf(plan).notes) run.input_warnings.push_back(std::move(w));
+  optim::AppendNewWarnings(run.input_warnings, CrushCheckOf(plan).notes);  // the default covering is in both
   return run;
 }
 
