@@ -160,6 +160,11 @@ void AddSceneOptions(CLI::App& sub_app, SimulateOptions& options) {
                   "phase thresholds: cumulative (default) or literal (the paper's text)")
       ->check(CLI::IsMember({"cumulative", "literal"}))
       ->group("Scene");
+  sub->add_option("--head-area", options.head_area,
+                  "the struck area of the head, whose lowest published fracture force the peak force is judged against: " +
+                      HeadAreaChoices() + " (default frontal, the forehead; docs/model.md §7.1)")
+      ->type_name("AREA")
+      ->group("Scene");
   sub->add_option("--material", options.material,
                   "covering modulus and Poisson ratio from the material catalog (see 'covopt "
                   "materials list'); ν unknown there: 0.25, with a warning")
@@ -404,6 +409,10 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     plan.scene.model.thresholds = ParseThresholds(*options.thresholds, "--thresholds");
     plan.sources["model.thresholds"] = fmt::format("--thresholds '{}'", *options.thresholds);
   }
+  if (options.head_area) {
+    plan.scene.head.area = ParseHeadArea(*options.head_area, "--head-area");
+    plan.sources["head.area"] = fmt::format("--head-area '{}'", *options.head_area);
+  }
 
   // Outputs.
   plan.json = options.json;
@@ -427,7 +436,8 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
 }
 
 void Judge(report::SimulationReport& report, const SimulationPlan& plan) {
-  report.assessment = report::JudgeInjuries(report.result.peaks, plan.limits, plan.safety_factor);
+  report.assessment =
+      report::JudgeInjuries(report.result.peaks, plan.limits, plan.safety_factor, report.scene.head.area);
   report.safety_factor = plan.safety_factor;
   const optim::CoveringCrushCheck crush = CrushCheckOf(plan);
   if (crush.compressive_strength_Pa > 0.0) {
@@ -557,6 +567,8 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
       optim::WorstCaseOptions worst_options;
       worst_options.safety_factor = plan.safety_factor;
       worst_options.limits = plan.limits;
+      // The material's strength: a crushed covering fails the worst case (docs/model.md §12).
+      worst_options.compressive_strength_Pa = CrushCheckOf(plan).compressive_strength_Pa;
       worst = optim::FindWorstCase(*box, worst_options);
       report.scene = worst.scene;
     }
@@ -570,6 +582,7 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
       SamplingProgressBar bar(err, "sampling");
       sampling->safety_factor = plan.safety_factor;
       sampling->limits = plan.limits;
+      sampling->compressive_strength_Pa = CrushCheckOf(plan).compressive_strength_Pa;
       sampling->progress = bar.Callback();
       probability = optim::EstimateInjuryProbability(*box, *sampling);
     }

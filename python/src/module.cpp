@@ -96,7 +96,7 @@ const SceneKeyword kSceneKeywords[] = {
 using scene_file::kMaxSafetyFactor;  // the one bound of the safety factor, as scene files and the CLI
 
 /// The scene's keywords besides the scene fields'.
-const char* const kSceneOptionKeywords[] = {"thresholds", "laceration_limit", "contusion_limit",
+const char* const kSceneOptionKeywords[] = {"thresholds", "head_area", "laceration_limit", "contusion_limit",
                                             "safety_factor", "material"};
 
 std::string Repr(const py::handle& value) { return py::repr(value).cast<std::string>(); }
@@ -264,6 +264,12 @@ SceneInputs ReadScene(const py::kwargs& keywords) {
       throw std::invalid_argument("thresholds: expected 'cumulative' or 'literal' (got '" + text + "')");
     }
   }
+  if (const auto area = get("head_area")) {
+    if (!py::isinstance<py::str>(*area)) {
+      throw std::invalid_argument("head_area must be one of " + HeadAreaChoices() + " (got " + Repr(*area) + ")");
+    }
+    scene.head.area = ParseHeadAreaOrThrow("head_area", area->cast<std::string>());
+  }
   InjuryLimits& limits = inputs.limits;
   // The floors (physical_floors.hpp), as CheckInjuryLimits.
   limits.laceration_tensile_stress_Pa =
@@ -307,7 +313,7 @@ optim::CoveringCrushCheck SceneInputs::CrushCheck() const {
 }
 
 void SceneInputs::Judge(report::SimulationReport& report) const {
-  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor);
+  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor, report.scene.head.area);
   const optim::CoveringCrushCheck crush = CrushCheck();
   if (crush.compressive_strength_Pa > 0.0) {
     report.crush = optim::CrushVerdict(report.result.peaks, crush.compressive_strength_Pa, report.safety_factor);
