@@ -22,7 +22,7 @@ constexpr std::array<FractureForce, 6> kTable = {{
      "31 unembalmed fixed cadaver heads, flat rigid impactors; the mean fracture force with "
      "the smaller plate (individual minima not published in the abstract)",
      "Allsop, Perl, Warner 1991, Force/deflection and fracture characteristics of the "
-     "temporo-parietal region of the human head, SAE 912907 (35th Stapp)"},
+     "temporo-parietal region of the human head, SAE technical paper (abstract)"},
     {HeadArea::kNasal, "nasal", 450.0, "50 % fracture risk at 450-850 N",
      "male cadavers, anterior-posterior blow of a free-falling flat impactor, fracture onset "
      "by acoustic emission; the low end of the 50 % risk estimates",

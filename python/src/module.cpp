@@ -836,6 +836,7 @@ to_dict(): the scene object of `covopt simulate --json`.)");
       .def_property_readonly("thresholds", [](const SceneInputs& s) {
         return s.scene.model.thresholds == ThresholdReading::kLiteral ? "literal" : "cumulative";
       })
+      .def_property_readonly("head_area", [](const SceneInputs& s) { return std::string(ToString(s.scene.head.area)); })
       .def_property_readonly("laceration_limit", [](const SceneInputs& s) { return s.limits.laceration_tensile_stress_Pa; })
       .def_property_readonly("contusion_limit", [](const SceneInputs& s) { return s.limits.contusion_energy_density_J_per_m2; })
       .def_property_readonly("safety_factor", [](const SceneInputs& s) { return s.safety_factor; })
