@@ -127,6 +127,7 @@ void ResolveScene(const OptimizeOptions& o, Resolved& r) {
   r.request.scene = resolved.scene;
   SetNominalValues(r.request.scene, r.ranges);
   if (o.thresholds) r.request.scene.model.thresholds = ParseThresholds(*o.thresholds, "--thresholds");
+  if (o.head_area) r.request.scene.head.area = ParseHeadArea(*o.head_area, "--head-area");
   if (o.robot_model.given()) {  // --urdf ...: robot.mass from the robot model
     RobotModelMass mass = ResolveRobotModelMass(o.robot_model, o.scene_values.count(kRobotMassField) != 0);
     r.request.scene.robot.mass_kg = mass.mass_kg;
@@ -718,6 +719,11 @@ void SetupOptimize(CLI::App* sub, OptimizeOptions& options) {
   }
   sub->add_option("--thresholds", options.thresholds, "phase thresholds: cumulative (default) or literal")
       ->check(CLI::IsMember({"cumulative", "literal"}))
+      ->group("Scene");
+  sub->add_option("--head-area", options.head_area,
+                  "the struck area of the head, whose lowest published fracture force the peak force is judged against: " +
+                      HeadAreaChoices() + " (default frontal, the forehead; docs/model.md §7.1)")
+      ->type_name("AREA")
       ->group("Scene");
   sub->add_option("--max-thickness", options.max_thickness, "thickest covering considered (default 50 mm)")
       ->type_name("LENGTH")->group("Design");

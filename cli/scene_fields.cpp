@@ -53,4 +53,8 @@ ThresholdReading ParseThresholds(std::string_view text, std::string_view name) {
   return AsInputError([&] { return scene_file::ParseThresholds(text, name); });
 }
 
+HeadArea ParseHeadArea(std::string_view text, std::string_view name) {
+  return AsInputError([&] { return ParseHeadAreaOrThrow(name, text); });
+}
+
 }  // namespace covopt::cli

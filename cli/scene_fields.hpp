@@ -55,4 +55,8 @@ void ApplySceneFlagInputs(std::span<const scene_file::SceneInput> inputs, scene_
 /// scene_file::ParseThresholds ("cumulative" or "literal"), throwing InputError.
 ThresholdReading ParseThresholds(std::string_view text, std::string_view name);
 
+/// covopt::ParseHeadAreaOrThrow (frontal, temporo-parietal, nasal, ...), throwing InputError.
+/// @throws InputError "--head-area must be one of frontal, ... (got \"cheek\")".
+HeadArea ParseHeadArea(std::string_view text, std::string_view name);
+
 }  // namespace covopt::cli

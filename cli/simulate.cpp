@@ -144,6 +144,7 @@ void ApplySceneFlags(const SimulateOptions& options, SimulationPlan& plan) {
     if (typed != options.scene_values.end() && !IsRangeText(typed->second)) add(typed->first, field.flag, typed->second);
   }
   if (options.thresholds) add("model.thresholds", "--thresholds", *options.thresholds);
+  if (options.head_area) add("head.area", "--head-area", *options.head_area);
   scene_file::ResolvedScene resolved{plan.scene, plan.limits, plan.safety_factor, nullptr};
   ApplySceneFlagInputs(inputs, resolved);
   plan.scene = resolved.scene;
@@ -174,6 +175,11 @@ void AddSceneOptions(CLI::App& sub_app, SimulateOptions& options) {
   sub->add_option("--thresholds", options.thresholds,
                   "phase thresholds: cumulative (default) or literal (the paper's text)")
       ->check(CLI::IsMember({"cumulative", "literal"}))
+      ->group("Scene");
+  sub->add_option("--head-area", options.head_area,
+                  "the struck area of the head, whose lowest published fracture force the peak force is judged against: " +
+                      HeadAreaChoices() + " (default frontal, the forehead; docs/model.md §7.1)")
+      ->type_name("AREA")
       ->group("Scene");
   sub->add_option("--material", options.material,
                   "covering modulus and Poisson ratio from the material catalog (see 'covopt "
@@ -433,7 +439,8 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
 }
 
 void Judge(report::SimulationReport& report, const SimulationPlan& plan) {
-  report.assessment = report::JudgeInjuries(report.result.peaks, plan.limits, plan.safety_factor);
+  report.assessment =
+      report::JudgeInjuries(report.result.peaks, plan.limits, plan.safety_factor, report.scene.head.area);
   report.safety_factor = plan.safety_factor;
   const optim::CoveringCrushCheck crush = CrushCheckOf(plan);
   if (crush.compressive_strength_Pa > 0.0) {
@@ -563,6 +570,8 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
       optim::WorstCaseOptions worst_options;
       worst_options.safety_factor = plan.safety_factor;
       worst_options.limits = plan.limits;
+      // The material's strength: a crushed covering fails the worst case (docs/model.md §12).
+      worst_options.compressive_strength_Pa = CrushCheckOf(plan).compressive_strength_Pa;
       worst = optim::FindWorstCase(*box, worst_options);
       report.scene = worst.scene;
     }
@@ -576,6 +585,7 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
       SamplingProgressBar bar(err, "sampling");
       sampling->safety_factor = plan.safety_factor;
       sampling->limits = plan.limits;
+      sampling->compressive_strength_Pa = CrushCheckOf(plan).compressive_strength_Pa;
       sampling->progress = bar.Callback();
       probability = optim::EstimateInjuryProbability(*box, *sampling);
     }

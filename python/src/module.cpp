@@ -277,7 +277,7 @@ optim::CoveringCrushCheck SceneInputs::CrushCheck() const {
 }
 
 void SceneInputs::Judge(report::SimulationReport& report) const {
-  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor);
+  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor, report.scene.head.area);
   const optim::CoveringCrushCheck crush = CrushCheck();
   if (crush.compressive_strength_Pa > 0.0) {
     report.crush = optim::CrushVerdict(report.result.peaks, crush.compressive_strength_Pa, report.safety_factor);
@@ -669,6 +669,7 @@ to_dict(): the scene object of `covopt simulate --json`.)");
       .def_property_readonly("thresholds", [](const SceneInputs& s) {
         return s.scene.model.thresholds == ThresholdReading::kLiteral ? "literal" : "cumulative";
       })
+      .def_property_readonly("head_area", [](const SceneInputs& s) { return std::string(ToString(s.scene.head.area)); })
       .def_property_readonly("laceration_limit", [](const SceneInputs& s) { return s.limits.laceration_tensile_stress_Pa; })
       .def_property_readonly("contusion_limit", [](const SceneInputs& s) { return s.limits.contusion_energy_density_J_per_m2; })
       .def_property_readonly("safety_factor", [](const SceneInputs& s) { return s.safety_factor; })

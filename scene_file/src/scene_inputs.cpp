@@ -65,6 +65,11 @@ void ApplySceneInputs(std::span<const SceneInput> inputs, const materials::Catal
       resolved.scene.model.thresholds = ParseThresholds(text ? *text : Shown(input), input.field);
       continue;
     }
+    if (input.field == "head.area") {
+      const auto* text = std::get_if<std::string>(&input.value);
+      resolved.scene.head.area = ParseHeadAreaOrThrow(input.field, text ? *text : Shown(input));
+      continue;
+    }
     const std::span<const LimitField> limits = LimitFields();
     const auto limit = std::find_if(limits.begin(), limits.end(),
                                     [&](const LimitField& f) { return f.dotted_name() == input.field; });
@@ -99,6 +104,7 @@ struct SpellingTable {
     for (const LimitField& field : LimitFields()) add(field.dotted_name(), field.name);
     add("covering.material", "material");
     add("model.thresholds", "thresholds");
+    add("head.area", "head-area");
   }
 };
 

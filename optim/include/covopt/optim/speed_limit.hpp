@@ -141,6 +141,8 @@ InjuryVerdict CrushVerdict(const ImpactPeaks& peaks, double compressive_strength
 struct LimitRatios {
   double laceration_ratio = 0.0;   ///< σ_t,max / laceration limit [-]
   double contusion_ratio = 0.0;    ///< e_A,max / contusion limit [-]
+  /// F_max / the struck area's lowest published fracture force [-] (docs/model.md §7.1)
+  double fracture_ratio = 0.0;
   /// The covering's travel used [-] (DesignScore::compression_ratio): > 1 fully compressed; 0
   /// without a covering.
   double compression_ratio = 0.0;

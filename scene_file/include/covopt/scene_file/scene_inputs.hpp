@@ -21,11 +21,11 @@ namespace covopt::scene_file {
 
 /// One scene input as a front end was given it.
 struct SceneInput {
-  /// A Scene field's dotted name ("robot.mass"), "covering.material", "model.thresholds", or
+  /// A Scene field's dotted name ("robot.mass"), "covering.material", "model.thresholds", "head.area", or
   /// a limit's ("limits.laceration", "limits.contusion", "limits.safety_factor").
   std::string field;
   /// A number in SI (finite, or +inf where the field allows "fixed"/"flat"), or a text: a
-  /// quantity with its unit ("15mm", "fixed"), a threshold reading, or a material name.
+  /// quantity with its unit ("15mm", "fixed"), a threshold reading, a head area, or a material name.
   std::variant<double, std::string> value;
   /// The number as written, for messages ("40"); empty for a text.
   std::string shown;
