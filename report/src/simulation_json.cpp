@@ -8,6 +8,7 @@
 
 #include "covopt/core/impact_model.hpp"
 #include "json_number.hpp"
+#include "verdict_object.hpp"
 
 namespace covopt::report {
 namespace {
@@ -64,22 +65,23 @@ Json StatisticsObject(const SolverStatistics& st) {
               {"restarts", st.restarts}};
 }
 
-}  // namespace
-
-InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const InjuryLimits& limits,
-                               double safety_factor) noexcept {
-  InjuryAssessment assessment = Assess(peaks, limits);
-  for (InjuryVerdict* verdict : {&assessment.laceration, &assessment.contusion}) {
-    verdict->safe = safety_factor * verdict->ratio <= 1.0;
-  }
-  return assessment;
+/// One criterion of the verdict as the simulation's flat keys (value<unit>, limit<unit>,
+/// ratio, safe, derated_limit<unit>, safety_factor); null when the verdict has no such
+/// criterion or its limit is unknown.
+Json CriterionObject(const Criterion* c, std::string_view unit, double safety_factor) {
+  if (c == nullptr || !std::isfinite(c->limit)) return Json(nullptr);
+  const std::string u(unit);
+  return Json{{"value" + u, Number(c->value)},         {"limit" + u, Number(c->limit)},
+              {"ratio", Number(c->ratio)},             {"safe", c->passed},
+              {"derated_limit" + u, Number(c->derated_limit)}, {"safety_factor", safety_factor}};
 }
+
+}  // namespace
 
 std::string SimulationJson(const SimulationReport& report, int indent) {
   const ImpactResult& r = report.result;
   const ImpactPeaks& p = r.peaks;
-  const InjuryVerdict& lac = report.assessment.laceration;
-  const InjuryVerdict& con = report.assessment.contusion;
+  const Verdict& v = report.verdict;
 
   Json j;
   j["max_penetration_m"] = Number(p.max_penetration_m);
@@ -95,28 +97,13 @@ std::string SimulationJson(const SimulationReport& report, int indent) {
   j["phase_at_max_name"] = ToString(p.phase_at_max);
   j["scalp_fully_compressed"] = p.scalp_fully_compressed;
   j["fully_compressed"] = p.fully_compressed;
-  // The limits stay the limits; the derated ones and the factor join each verdict.
-  j["laceration"] = {{"value_Pa", Number(lac.value)},
-                     {"limit_Pa", Number(lac.limit)},
-                     {"ratio", Number(lac.ratio)},
-                     {"safe", lac.safe},
-                     {"derated_limit_Pa", Number(lac.limit / report.safety_factor)},
-                     {"safety_factor", report.safety_factor}};
-  j["contusion"] = {{"value_J_per_m2", Number(con.value)},
-                    {"limit_J_per_m2", Number(con.limit)},
-                    {"ratio", Number(con.ratio)},
-                    {"safe", con.safe},
-                    {"derated_limit_J_per_m2", Number(con.limit / report.safety_factor)},
-                    {"safety_factor", report.safety_factor}};
-  j["crush"] = report.crush ? Json{{"value_Pa", Number(report.crush->value)},
-                                    {"limit_Pa", Number(report.crush->limit)},
-                                    {"ratio", Number(report.crush->ratio)},
-                                    {"safe", report.crush->safe},
-                                    {"derated_limit_Pa", Number(report.crush->limit / report.safety_factor)},
-                                    {"safety_factor", report.safety_factor}}
-                             : Json(nullptr);
+  // The limits stay the limits; the derated ones and the factor join each criterion.
+  j["laceration"] = CriterionObject(v.Find("laceration"), "_Pa", v.safety_factor);
+  j["contusion"] = CriterionObject(v.Find("contusion"), "_J_per_m2", v.safety_factor);
+  j["crush"] = CriterionObject(v.Find("crush"), "_Pa", v.safety_factor);
   j["safe"] = report.safe();
-  j["scope"] = report.scope;
+  j["verdict"] = internal::VerdictObject(v);
+  j["scope"] = v.scope;
   j["method"] = ToString(r.method);
 
   Json solver = {{"status", ToString(r.status)}, {"message", r.message}, {"raw_code", r.raw_code}};
