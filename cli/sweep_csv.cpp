@@ -53,8 +53,7 @@ const std::array kResultColumns{
   ResultColumn{"phase_at_max", [](const SweepRow& p) { return static_cast<double>(PhaseNumber(p.peaks.phase_at_max)); }, true},
   ResultColumn{"scalp_fully_compressed", [](const SweepRow& p) { return p.peaks.scalp_fully_compressed ? 1.0 : 0.0; }, true},
   ResultColumn{"fully_compressed", [](const SweepRow& p) { return p.peaks.fully_compressed ? 1.0 : 0.0; }, true},
-  // simulate's verdict: the injury ratios and the covering not bottomed out (SweepRow::admissible)
-  ResultColumn{"safe", [](const SweepRow& p) { return p.admissible ? 1.0 : 0.0; }, true},
+  ResultColumn{"safe", [](const SweepRow& p) { return p.assessment.safe() ? 1.0 : 0.0; }, true},
   ResultColumn{"laceration_ratio", [](const SweepRow& p) { return p.assessment.laceration.ratio; }, false},
   ResultColumn{"contusion_ratio", [](const SweepRow& p) { return p.assessment.contusion.ratio; }, false},
   ResultColumn{"worst_ratio", [](const SweepRow& p) { return p.worst_ratio; }, false},
