@@ -15,7 +15,9 @@ struct HeadInjury {
 constexpr HeadInjury kHeadInjuries[] = {
     {"laceration", "Pa", &InjuryAssessment::laceration},
     {"contusion", "J/m2", &InjuryAssessment::contusion},
-    // TODO(issue 34, fracture): {"fracture", "N", &InjuryAssessment::fracture},
+    // TODO(issue 34, fracture): {"fracture", "N", &InjuryAssessment::fracture}, with the struck
+    // area passed to Assess(peaks, limits, area) in HeadCriteria (scene.head.area where a scene is
+    // given): the limit searches judge admissibility with this verdict (speed_limit.cpp's Judge).
 };
 
 }  // namespace
