@@ -24,7 +24,7 @@ report::SimulationReport History() {
   options.record_history = true;
   report::SimulationReport r;
   r.result = SimulateImpact(ImpactModel::FromScene(r.scene), options);
-  r.assessment = report::JudgeInjuries(r.result.peaks, InjuryLimits{}, 1.0);
+  r.verdict = optim::HeadVerdict(r.result.peaks, true, InjuryLimits{}, optim::DesignRule{});
   return r;
 }
 

@@ -334,7 +334,7 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
   if (r.limiting_cell) {
     const optim::AuditCell& c = r.cells[*r.limiting_cell];
     fmt::print(out, "Limit      safe speed scale {}: {} against {} ({}) at t = {:.4g} s, point {} m (base frame)\n",
-               ScaleText(r.safe_speed_scale), r.links[c.link], r.regions[c.region], optim::ToString(c.binding),
+               ScaleText(r.safe_speed_scale), r.links[c.link], r.regions[c.region], c.binding_name(),
                c.time_s, Point(c.point_in_base_m));
   }
 
@@ -356,7 +356,7 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
       const optim::AuditCell& c = r.cell(l, order[k]);
       fmt::print(out, "  {:<14} {:<34} {:>8}  {:<16} {:>8.4g}  {:<26} {:>9.4g} {:>9.4g} {:>9.4g} {:>8}\n",
                  k == 0 ? r.links[l] : "", r.regions[c.region], RatioText(c.governing_ratio),
-                 optim::ToString(c.binding), c.time_s, Point(c.point_in_base_m), c.speed_m_per_s, c.reflected_mass_kg,
+                 c.binding_name(), c.time_s, Point(c.point_in_base_m), c.speed_m_per_s, c.reflected_mass_kg,
                  c.max_safe_speed_m_per_s, ScaleText(c.speed_scale));
     }
   }

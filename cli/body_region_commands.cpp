@@ -10,9 +10,12 @@
 #include <fmt/ostream.h>
 
 #include "covopt/core/quantity.hpp"
+#include "covopt/core/verdict.hpp"
 #include "covopt/report/body_contact_json.hpp"
 #include "covopt/report/csv.hpp"
 #include "covopt/scene_file/targets.hpp"
+#include "covopt/optim/verdicts.hpp"
+#include "covopt/report/verdict_text.hpp"
 #include "errors.hpp"
 #include "output.hpp"
 #include "report_option.hpp"
@@ -26,7 +29,6 @@ std::string Newtons(double n) { return fmt::format("{:.4g} N", n); }
 std::string NPerCm2(double pa) { return fmt::format("{:.4g} N/cm²", pa * 1e-4); }
 std::string Mm(double m) { return fmt::format("{:.3g} mm", m * 1e3); }
 std::string Mass(double kg) { return std::isinf(kg) ? std::string("fixed") : fmt::format("{:.4g} kg", kg); }
-std::string Percent(double fraction) { return fmt::format("{:.1f} %", 100.0 * fraction); }
 
 /// "radius 15 mm; covering 15 mm, 27.6 MPa, ν 0.25 (material)" or "flat; bare".
 std::string RobotSurface(const BodyContactScene& s, const std::optional<std::string>& material) {
@@ -59,38 +61,21 @@ std::optional<std::string> MaterialName(const SimulationPlan& plan) {
   return std::nullopt;
 }
 
-/// "ok" or "EXCEEDED" for a ratio under the safety factor.
-std::string_view Mark(double ratio, double sf) { return sf * ratio <= 1.0 ? "ok" : "EXCEEDED"; }
-
-/// The verdict block of one judgement (simulate; optimize's recommendation).
-void PrintJudgement(std::ostream& out, const BodyRegionJudgement& v, double sf, std::string_view indent) {
-  const BodyContactResult& c = v.contact;
-  fmt::print(out, "{}{:<12} {:<12} limit {:<12} ratio {:.3f}  {}\n", indent, "force", Newtons(c.peak_force_N),
-             Newtons(v.limits.force_N), v.force_ratio, Mark(v.force_ratio, sf));
-  if (v.pressure_ratio && c.peak_pressure_Pa) {
-    fmt::print(out, "{}{:<12} {:<12} limit {:<12} ratio {:.3f}  {}\n", indent, "pressure", NPerCm2(*c.peak_pressure_Pa),
-               NPerCm2(v.limits.pressure_Pa), *v.pressure_ratio, Mark(*v.pressure_ratio, sf));
-  } else {
-    fmt::print(out, "{}{:<12} not evaluated (no --contact-area); limit {}\n", indent, "pressure",
+/// The verdict block of one judgement (simulate; optimize's recommendation): each criterion of
+/// its verdict as the library words it (report::CriterionText: the standard's and the derated
+/// limit with every EXCEEDED), and what was not evaluated.
+void PrintJudgement(std::ostream& out, const BodyRegionJudgement& v, std::string_view indent) {
+  for (const Criterion& c : v.verdict.criteria) {
+    fmt::print(out, "{}{}\n", indent, report::CriterionText(c, v.verdict.safety_factor));
+  }
+  if (!v.pressure_ratio) {
+    fmt::print(out, "{}{:<17} not evaluated (no --contact-area); limit {}\n", indent, "pressure",
                NPerCm2(v.limits.pressure_Pa));
   }
-  if (c.covering_deflection_m > 0.0 || c.fully_compressed) {
-    fmt::print(out, "{}{:<12} {} of the travel{}  ratio {:.3f}  {}\n", indent, "compression", Percent(v.compression_ratio),
-               c.fully_compressed ? " (fully compressed)" : "", v.compression_ratio,
-               c.fully_compressed ? std::string_view("EXCEEDED") : Mark(v.compression_ratio, sf));
-  }
-  if (v.crush_check == optim::CrushCheck::kChecked) {
-    fmt::print(out, "{}{:<12} ratio {:.3f} of the compressive strength  {}\n", indent, "crush", v.crush_ratio,
-               Mark(v.crush_ratio, sf));
-  } else if (v.crush_check != optim::CrushCheck::kNoMaterial) {
-    fmt::print(out, "{}{:<12} {}\n", indent, "crush", optim::ToString(v.crush_check));
-  }
+  if (v.crush_check == optim::CrushCheck::kDoesNotCrush) fmt::print(out, "{}{:<17} does-not-crush\n", indent, "crush");
 }
 
-std::string VerdictWord(const BodyRegionJudgement& v) {
-  return fmt::format("{}: governed by {} (ratio {:.3f}, margin {})", v.admissible ? "safe" : "NOT SAFE",
-                     optim::ToString(v.governing), v.governing_ratio, Percent(v.margin));
-}
+std::string VerdictWord(const BodyRegionJudgement& v) { return report::VerdictSummary(v.verdict); }
 
 /// The head's `simulate`, as the command prints it (text or JSON), without the body flags.
 int RunHead(const SimulateOptions& options, std::ostream& out, std::ostream& err, bool json) {
@@ -203,7 +188,7 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
       if (c.peak_pressure_Pa && c.contact_radius_m > 0.0) peaks += fmt::format(" (Hertz, contact radius {})", Mm(c.contact_radius_m));
       fmt::print(out, "  Peaks      {}\n", peaks);
       fmt::print(out, "             covering deflection {} (compression {}{}); body deflection {}; energy {:.4g} J{}\n",
-                 Mm(c.covering_deflection_m), Percent(v.compression_ratio),
+                 Mm(c.covering_deflection_m), FormatPercent(v.compression_ratio),
                  c.fully_compressed ? ", fully compressed" : "", Mm(c.body_deflection_m), c.energy_transferred_J,
                  scene.robot_brakes()
                      ? fmt::format(" (unbraked ½ mu v² = {:.4g} J); {}", 0.5 * c.reduced_mass_kg *
@@ -218,7 +203,7 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
                    t.energy_residual.value_or(0.0));
       }
       fmt::print(out, "  Verdicts\n");
-      PrintJudgement(out, v, sf, "    ");
+      PrintJudgement(out, v, "    ");
       fmt::print(out, "  Verdict    {}\n", VerdictWord(v));
       fmt::print(out, "  Scope      {}\n", v.scope);  // begins with the limits' Describe()
       ++iso;
@@ -477,7 +462,6 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
     out.flush();
     return out ? 0 : errors.Failed("cannot write the results to standard output");
   }
-  const double sf = request.rule.safety_factor;
   std::string named;
   for (const BodyTarget& target : regions.targets) named += (named.empty() ? "" : ", ") + target.Name();
   fmt::print(out, "Design     the covering that lets the robot reach {:g} m/s for: {}\n", request.scene.speed_m_per_s,
@@ -487,15 +471,17 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
   fmt::print(out, "Contact    {}\n", ContactText(regions));
   fmt::print(out, "Criterion  {}\n", BodyCriterion(request.rule, regions.has_head()));
   fmt::print(out, "\n{}\n", result.message);
-  const auto print_head = [&](const optim::DesignScore& score) {
-    fmt::print(out, "  head ({}): laceration ratio {:.3f}, contusion ratio {:.3f}{}\n", HeadCriteriaName(),
-               score.laceration_ratio, score.contusion_ratio,
-               score.bare() ? std::string() : fmt::format(", compression {:.3f}", score.compression_ratio));
+  // The head's verdict as every head verdict is built and printed (optim::HeadVerdict, report/verdict_text).
+  const auto print_head = [&](const optim::DesignScore& score, double strength_Pa) {
+    const Verdict v = optim::HeadVerdict(score, InjuryLimits{}, request.rule, strength_Pa,
+                                         request.head ? request.head->head.area : HeadArea::kFrontal);
+    fmt::print(out, "  head ({}): {}\n", HeadCriteriaName(), report::VerdictSummary(v));
+    for (const Criterion& c : v.criteria) fmt::print(out, "      {}\n", report::CriterionText(c, v.safety_factor));
   };
   const auto print_regions = [&](const std::vector<BodyRegionJudgement>& judgements) {
     for (const BodyRegionJudgement& v : judgements) {
       fmt::print(out, "  {} {}: {}\n", v.limits.region->name, "(" + v.limits.area->name + ")", VerdictWord(v));
-      PrintJudgement(out, v, sf, "      ");
+      PrintJudgement(out, v, "      ");
     }
   };
   if (result.recommendation) {
@@ -504,12 +490,12 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
                FormatQuantity(c.material.youngs_modulus_Pa, QuantityKind::kModulus), c.material.poisson_ratio,
                Mm(*c.thickness_m));
     print_regions(c.regions);
-    if (c.head) print_head(*c.head);
+    if (c.head) print_head(*c.head, c.material.compressive_strength_Pa);
   }
   fmt::print(out, "\nBare robot at {:g} m/s: {}\n", request.scene.speed_m_per_s,
              result.bare_robot_safe ? "safe for every region named" : "NOT safe for every region named");
   print_regions(result.bare_robot);
-  if (result.bare_head) print_head(*result.bare_head);
+  if (result.bare_head) print_head(*result.bare_head, 0.0);
   // --top N (checked by optimize's Resolve), default 8.
   const std::size_t top = options.runners_up ? std::stoul(*options.runners_up) : 8;
   const std::size_t shown = std::min<std::size_t>(result.candidates.size(), top);

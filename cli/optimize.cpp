@@ -17,6 +17,7 @@
 
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/physical_floors.hpp"
+#include "covopt/core/verdict.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/materials/catalog.hpp"
@@ -228,7 +229,6 @@ Resolved Resolve(const OptimizeOptions& o) {
   return r;
 }
 
-std::string Percent(double fraction) { return fmt::format("{:.1f} %", 100.0 * fraction); }
 std::string Mm(double metres) { return fmt::format("{:.2f} mm", metres * 1e3); }
 std::string MPa(double pascals) { return fmt::format("{:.3g} MPa", pascals * 1e-6); }
 
@@ -265,7 +265,7 @@ void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& can
                c.material.name.substr(0, 28), c.material.youngs_modulus_Pa * 1e-6,
                fmt::format("{:.2f}{}", c.material.poisson_ratio, c.material.poisson_assumed ? "*" : ""),
                thickness, c.score.laceration_ratio, c.score.contusion_ratio, c.score.compression_ratio,
-               CrushCell(c.score), Percent(c.margin), optim::ToString(c.score.governing(rule).criterion),
+               CrushCell(c.score), FormatPercent(c.margin), optim::ToString(c.score.governing(rule).criterion),
                unknown_refused                 ? "; strength unknown, not recommended"
                : c.score.peaks.fully_compressed ? "; fully compressed"
                                                 : "");
@@ -490,7 +490,7 @@ void PrintRobustCandidates(std::ostream& out, const Resolved& r, const optim::Ro
                c.outcome.recommended_thickness_m ? Mm(*c.outcome.recommended_thickness_m)
                                                  : fmt::format("> {}", Mm(c.outcome.score.design.thickness_m)),
                c.worst_case.laceration_ratio, c.worst_case.contusion_ratio, c.worst_case.compression_ratio,
-               CrushCell(c.outcome.score), Percent(c.outcome.margin),
+               CrushCell(c.outcome.score), FormatPercent(c.outcome.margin),
                optim::ToString(c.outcome.score.governing(rule).criterion), c.scenario_rounds,
                c.unconfirmed ? "  unconfirmed" : "");
   }
@@ -554,7 +554,7 @@ void PrintRecommendation(std::ostream& out, const Resolved& r, const optim::Desi
   fmt::print(out, "  laceration ratio {:.3f}, contusion ratio {:.3f}, compression ratio {:.3f}; {}\n",
              c.score.laceration_ratio, c.score.contusion_ratio, c.score.compression_ratio, CrushWords(c.score, c));
   fmt::print(out, "  governed by {} (ratio {:.3f}): margin {} of the {}; {}\n", optim::ToString(governing.criterion),
-             governing.ratio, Percent(c.margin), sf > 1 ? "derated limit" : "limit", CompressionWords(c.score));
+             governing.ratio, FormatPercent(c.margin), sf > 1 ? "derated limit" : "limit", CompressionWords(c.score));
   if (c.min_safe_thickness_m && !r.request.thickness_m) {
     if (c.stock_thickness_beyond_max_m) {
       fmt::print(out,

@@ -18,6 +18,8 @@
 #include <fmt/ostream.h>
 #include <fmt/ranges.h>
 
+#include <covopt/report/verdict_text.hpp>
+
 #include "errors.hpp"
 #include "quantity.hpp"
 #include "scene_fields.hpp"
@@ -35,7 +37,6 @@ using Json = nlohmann::ordered_json;
 Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
 
 std::string_view YesNo(bool b) { return b ? "yes" : "no"; }
-std::string_view SafeWord(bool safe) { return safe ? "SAFE" : "UNSAFE"; }
 
 std::string Mass(double kg) { return FormatQuantity(kg, QuantityKind::kMass); }
 std::string Length(double m) { return FormatQuantity(m, QuantityKind::kLength); }
@@ -46,32 +47,6 @@ void Row(std::ostream& out, std::string_view label, std::string_view value) {
   fmt::print(out, "  {:<24} {}\n", label, value);
 }
 
-/// The verdicts: laceration, contusion, fracture (with its source), crush, overall.
-void PrintVerdicts(std::ostream& out, const SimulationReport& report) {
-  const InjuryVerdict& lac = report.assessment.laceration;
-  const InjuryVerdict& con = report.assessment.contusion;
-  fmt::print(out, "\nVerdicts\n");
-  fmt::print(out, "  {:<12} {:<7} tensile stress {:.6g} MPa, limit {:g} MPa, ratio {:.4g}\n",
-             "laceration", SafeWord(lac.safe), lac.value / 1e6, lac.limit / 1e6, lac.ratio);
-  fmt::print(out, "  {:<12} {:<7} energy density {:.6g} J/cm², limit {:g} J/cm², ratio {:.4g}\n",
-             "contusion", SafeWord(con.safe), con.value / 1e4, con.limit / 1e4, con.ratio);
-  const InjuryVerdict& fracture = report.assessment.fracture;
-  const FractureForce& bone = FractureForceOf(report.assessment.area);
-  const bool published = fracture.limit == bone.force_N;
-  fmt::print(out, "  {:<12} {:<7} peak force {:.6g} N, limit {:g} N ({}: {}{}), ratio {:.4g}\n  {:<20} source: {}\n",
-             "fracture", SafeWord(fracture.safe), fracture.value, fracture.limit, bone.name,
-             published ? "the lowest published fracture force" : "the given fracture force",
-             report.safety_factor != 1.0
-                 ? fmt::format("; derated {:.4g} N at safety factor {:g}", fracture.limit / report.safety_factor,
-                               report.safety_factor)
-                 : std::string(),
-             fracture.ratio, "", published ? bone.source : std::string_view("given"));
-  if (report.crush) {
-    fmt::print(out, "  {:<12} {:<7} compressive stress {:.6g} MPa, strength {:.6g} MPa, ratio {:.4g}\n", "crush",
-               SafeWord(report.crush->safe), report.crush->value / 1e6, report.crush->limit / 1e6, report.crush->ratio);
-  }
-  fmt::print(out, "  {:<12} {}\n", "overall", SafeWord(report.safe()));
-}
 
 }  // namespace
 
@@ -162,7 +137,8 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
   Row(out, "scalp fully compressed", YesNo(p.scalp_fully_compressed));
   Row(out, "fully compressed", YesNo(p.fully_compressed));
 
-  PrintVerdicts(out, report);
+  fmt::print(out, "\nVerdicts\n");
+  for (const std::string& line : report::VerdictLines(report.verdict)) fmt::print(out, "{}\n", line);
 
   fmt::print(out, "\nMethod  {}", ToString(r.method));
   if (report.time_options) {
@@ -183,9 +159,9 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
   }
   fmt::print(out, "\n");
 
-  if (!report.scope.empty()) {
+  if (!report.verdict.scope.empty()) {
     fmt::print(out, "\nScope\n");
-    for (const std::string& line : report.scope) fmt::print(out, "  {}\n", line);
+    for (const std::string& line : report.verdict.scope) fmt::print(out, "  {}\n", line);
   }
   if (r.warnings.empty() && report.input_warnings.empty()) {
     fmt::print(out, "\nWarnings: none\n");

@@ -16,6 +16,7 @@
 #include "covopt/materials/catalog.hpp"
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/optim/robust_design.hpp"
+#include "covopt/optim/verdicts.hpp"
 #include "covopt/report/robust_json.hpp"
 #include "body_region_commands.hpp"
 #include "errors.hpp"
@@ -439,16 +440,8 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
 }
 
 void Judge(report::SimulationReport& report, const SimulationPlan& plan) {
-  report.assessment =
-      report::JudgeInjuries(report.result.peaks, plan.limits, plan.safety_factor, report.scene.head.area);
-  report.safety_factor = plan.safety_factor;
-  const optim::CoveringCrushCheck crush = CrushCheckOf(plan);
-  if (crush.compressive_strength_Pa > 0.0) {
-    report.crush = optim::CrushVerdict(report.result.peaks, crush.compressive_strength_Pa, plan.safety_factor);
-  }
-  // The verdict judges the skin and (with a strength) crushing; full compression is reported.
-  report.scope = optim::HeadVerdictScope(
-      optim::DesignRule{plan.safety_factor, optim::DesignCriterion::kPaper, false, !crush.notes.empty()});
+  report.verdict = optim::SimulationVerdict(report.scene, report.result.peaks, plan.limits, plan.safety_factor,
+                                            CrushCheckOf(plan));
 }
 
 optim::CoveringCrushCheck CrushCheckOf(const SimulationPlan& plan) {

@@ -734,9 +734,7 @@ DesignTry DesignMaterial(const AuditSetup& setup, const AuditDesignOptions& d, c
 
 std::string CellWhere(const AuditResult& r, const AuditCell& c) {
   return r.links[c.link] + ", " + r.regions[c.region] + ", " +
-         std::string(c.region + 1 == r.regions.size() && c.head_criterion != LimitingCriterion::kNone
-                         ? ToString(c.head_criterion)
-                         : ToString(c.binding)) +
+         std::string(c.binding_name()) +
          ", t = " + FormatSignificant(c.time_s, 4) + " s";
 }
 

@@ -2,6 +2,7 @@
 // the closed-form speed limit per region, the all-regions table, and the covering design
 // for every region named (and the head, by Park et al.'s skin model).
 #include "covopt/optim/body_region_check.hpp"
+#include "covopt/optim/verdicts.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -144,9 +145,11 @@ BodyRegionJudgement Judge(const BodyContactModel& model, const materials::BodyLi
     j.governing_ratio = kInfinity;
     j.margin = -kInfinity;
     j.admissible = false;
+    j.verdict = BodyRegionVerdict(c, limits, covered, rule, {});
     if (text) {
       j.scope = ScopeOf(*text, rule, covered, j.pressure_ratio.has_value(), j.crush_check) +
                 "; no verdict: the time path failed (" + std::string(ToString(c.status)) + ": " + c.message + ")";
+      j.verdict.scope = {j.scope};
     }
     return j;
   }
@@ -168,11 +171,14 @@ BodyRegionJudgement Judge(const BodyContactModel& model, const materials::BodyLi
   if (compression_counts) consider(j.compression_ratio, BodyLimitKind::kFullCompression);
   if (j.crush_check == CrushCheck::kChecked && !rule.crushing_allowed) consider(j.crush_ratio, BodyLimitKind::kCrush);
 
-  const double sf = rule.safety_factor;
-  j.margin = 1.0 - sf * j.governing_ratio;
-  j.admissible = sf * j.governing_ratio <= 1.0 && !(compression_counts && c.fully_compressed) &&
-                 !(j.crush_check == CrushCheck::kUnknownStrength && rule.refuses_unknown_strength());
-  if (text) j.scope = ScopeOf(*text, rule, covered, j.pressure_ratio.has_value(), j.crush_check);
+  const double strength = options.material ? options.material->compressive_strength_Pa : 0.0;
+  j.verdict = BodyRegionVerdict(c, limits, covered, rule, {j.crush_check, strength});
+  j.margin = j.verdict.margin();
+  j.admissible = j.verdict.safe();
+  if (text) {
+    j.scope = ScopeOf(*text, rule, covered, j.pressure_ratio.has_value(), j.crush_check);
+    j.verdict.scope = {j.scope};
+  }
   return j;
 }
 
@@ -677,7 +683,7 @@ BodyRegionDesignResult DesignForBodyRegions(const BodyRegionDesignRequest& reque
     out.message = "Recommended: " + best.material.name + " at " + Millimetres(*best.thickness_m) +
                   " (every region" + (request.head ? " and the head" : "") + " safe at " + speed_text +
                   "; governing " + best.governing_where + ", margin " +
-                  FormatSignificant(1.0 - sf * best.governing_ratio, 3) + ")";
+                  FormatPercent(1.0 - sf * best.governing_ratio) + ")";
     if (best.material.poisson_assumed) {
       out.warnings.push_back("the Poisson ratio of '" + best.material.name + "' is not known: " +
                              FormatSignificant(best.material.poisson_ratio, 3) + " is assumed");

@@ -3,6 +3,7 @@
 // mapped back through the energy balance U(δ_max) = ½ μ v0²; for a scene without that energy
 // integral (a braking robot, a neck), by a bracketed bisection on the time path.
 #include "covopt/optim/speed_limit.hpp"
+#include "covopt/optim/verdicts.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -217,9 +218,8 @@ class Judge {
       e.ratios.crush_ratio = peaks.max_compressive_stress_Pa / options_.covering_compressive_strength_Pa;
     }
     e.ratios.max_penetration_m = peaks.max_penetration_m;
-    e.admissible = Violated(e) == LimitingCriterion::kNone &&
-                   (options_.criterion() == DesignCriterion::kPaper || !model.has_covering() ||
-                    !peaks.fully_compressed);
+    e.peaks = peaks;
+    e.admissible = HeadVerdict(scene, peaks, options_).safe();  // the one head rule (verdicts.hpp)
     return e;
   }
 
@@ -577,9 +577,13 @@ CoveringCrushCheck CrushCheckFor(const Scene& scene, const materials::Material* 
     return check;
   }
   switch (material->crush_behaviour) {
-    case materials::CrushBehaviour::kCrushes: check.compressive_strength_Pa = material->compressive_strength_Pa.value_or(0.0); break;
-    case materials::CrushBehaviour::kDoesNotCrush: break;
+    case materials::CrushBehaviour::kCrushes:
+      check.compressive_strength_Pa = material->compressive_strength_Pa.value_or(0.0);
+      check.check = CrushCheck::kChecked;
+      break;
+    case materials::CrushBehaviour::kDoesNotCrush: check.check = CrushCheck::kDoesNotCrush; break;
     case materials::CrushBehaviour::kUnknown:
+      check.check = CrushCheck::kUnknownStrength;
       check.notes.push_back("the compressive strength of '" + material->name +
                             "' is unknown: the limits are unverified for crushing");
       break;

@@ -1,6 +1,7 @@
 // A motion judged sample by sample (optim/trajectory_check.hpp): the impact at each sample's
 // speed and reflected mass, and the largest safe speed there.
 #include "covopt/optim/trajectory_check.hpp"
+#include "covopt/optim/verdicts.hpp"
 
 #include <cmath>
 #include <limits>
@@ -118,7 +119,8 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
       verdict.contusion_ratio = judgement.ratios.contusion_ratio;
       verdict.fracture_ratio = judgement.ratios.fracture_ratio;
       verdict.compression_ratio = judgement.ratios.compression_ratio;
-      verdict.safe = judgement.admissible;
+      verdict.verdict = HeadVerdict(at, judgement.peaks, options.limit);
+      verdict.safe = verdict.verdict.safe();
       verdict.speed_scale = verdict.speed_limit.max_safe_speed_m_per_s / sample.speed_m_per_s;
       if (!verdict.safe) ++check.unsafe_sample_count;
       if (verdict.speed_limit.status == SpeedLimitStatus::kNoSafeValue) ++no_safe_speed_count;

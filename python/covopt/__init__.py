@@ -90,8 +90,11 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
     path, "time-path" or an integrator also runs the time path (``result.time_path``, its
     peaks; the verdict is the exact path's), history=True too (``result.history``).
 
-    Returns a Simulation. Raises ValueError on bad input, ComputationError when the
-    computation fails.
+    Returns a Simulation. ``result.safe`` is the CLI's verdict, made by the same library call:
+    the injury criteria (laceration, contusion) and the covering's design rules (not fully
+    compressed; not crushed, for a material of known strength) all hold; ``result.verdict``
+    holds each criterion (value, limit, derated_limit, ratio, counted, passed), the governing one
+    and the margin. Raises ValueError on bad input, ComputationError when the computation fails.
     """
     if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
         return _body_regions.simulate(_scene(scene), **_given(**{k: v for k, v in locals().items() if k != "scene"}))

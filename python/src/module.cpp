@@ -30,6 +30,7 @@
 #include <pybind11/stl.h>
 
 #include "covopt/optim/design_map.hpp"
+#include "covopt/optim/verdicts.hpp"
 #include "covopt/core/physical_floors.hpp"
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
@@ -277,13 +278,7 @@ optim::CoveringCrushCheck SceneInputs::CrushCheck() const {
 }
 
 void SceneInputs::Judge(report::SimulationReport& report) const {
-  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor, report.scene.head.area);
-  const optim::CoveringCrushCheck crush = CrushCheck();
-  if (crush.compressive_strength_Pa > 0.0) {
-    report.crush = optim::CrushVerdict(report.result.peaks, crush.compressive_strength_Pa, report.safety_factor);
-  }
-  report.scope = optim::HeadVerdictScope(
-      optim::DesignRule{report.safety_factor, optim::DesignCriterion::kPaper, false, !crush.notes.empty()});
+  report.verdict = optim::SimulationVerdict(report.scene, report.result.peaks, limits, safety_factor, CrushCheck());
 }
 
 /// The warnings `covopt simulate` adds about its inputs (optim::SceneInputWarnings, as the
@@ -400,7 +395,6 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   report.scene = inputs.scene;
   report.covering_material = inputs.covering_material;
   report.covering_poisson_assumed = inputs.covering_poisson_assumed;
-  report.safety_factor = inputs.safety_factor;
   if (ChoosePath(inputs.scene, options) == PathChoice::kTimePath) report.time_options = options.time_path;
   std::optional<ImpactModel> model;
   try {

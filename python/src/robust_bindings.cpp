@@ -170,7 +170,6 @@ py::object UncertainSimulation(const SceneInputs& scene, const py::kwargs& kwarg
   }
   impact.covering_material = b.scene.covering_material;
   impact.covering_poisson_assumed = b.scene.covering_poisson_assumed;
-  impact.safety_factor = b.scene.safety_factor;
   b.scene.Judge(impact);
   return JsonToPython(report::UncertainSimulationJson(impact, &*b.box, &worst, probability ? &*probability : nullptr,
                                                       nullptr, -1));

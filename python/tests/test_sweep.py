@@ -27,7 +27,10 @@ def test_each_point_is_the_simulation_of_its_scene():
             assert grid["contact_duration_s"][i, j] == one.contact_duration_s
             assert grid["laceration_ratio"][i, j] == one.laceration.ratio
             assert grid["contusion_ratio"][i, j] == one.contusion.ratio
-            assert grid["safe"][i, j] == one.safe
+            # The sweep's safe is the injury verdict; admissible also needs the covering's
+            # design rules (not fully compressed), as simulate's safe does.
+            assert grid["safe"][i, j] == one.verdict.injury_safe
+            assert grid["admissible"][i, j] == one.safe
             assert grid["fully_compressed"][i, j] == one.fully_compressed
             assert grid["phase_at_max"][i, j] == one.phase_at_max
 

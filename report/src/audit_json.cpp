@@ -35,7 +35,7 @@ ordered_json FlatCell(const optim::AuditResult& result, const optim::AuditCell& 
   j["link"] = result.links.at(cell.link);
   j["region"] = result.regions.at(cell.region);
   j["governing_ratio"] = internal::Number(cell.governing_ratio);
-  j["binding"] = moved ? ordered_json(optim::ToString(cell.binding)) : ordered_json(nullptr);
+  j["binding"] = moved ? ordered_json(cell.binding_name()) : ordered_json(nullptr);
   j["sample"] = moved ? ordered_json(*cell.sample) : ordered_json(nullptr);
   j["time_s"] = when_moved(internal::Number(cell.time_s));
   j["point"] = when_moved(ordered_json(cell.point));
@@ -152,7 +152,7 @@ std::string AuditJson(const optim::AuditSetup& setup, const optim::AuditResult& 
     ordered_json limiting;
     limiting["link"] = result.links.at(cell.link);
     limiting["region"] = result.regions.at(cell.region);
-    limiting["binding"] = optim::ToString(cell.binding);
+    limiting["binding"] = cell.binding_name();
     limiting["time_s"] = internal::Number(cell.time_s);
     limiting["governing_ratio"] = internal::Number(cell.governing_ratio);
     j["limiting"] = std::move(limiting);

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "json_number.hpp"
+#include "verdict_object.hpp"
 
 namespace covopt::report {
 namespace {
@@ -79,6 +80,7 @@ ordered_json JudgementObject(const optim::BodyRegionJudgement& v, double safety_
   j["safety_factor"] = Number(safety_factor);
   j["admissible"] = v.admissible;
   j["margin"] = Number(v.margin);
+  j["verdict"] = internal::VerdictObject(v.verdict);
   return j;
 }
 

@@ -30,8 +30,11 @@ GnuplotChart ChartOfHistory(const SimulationReport& report, const std::string& n
   // σ_t = σ_c (1 - 2ν_t)/3: the chart shows the stress the laceration limit judges; the
   // axis label gives the factor back to the compressive stress.
   const double tensile_per_compressive = model.TensileFromCompressive(1.0);
-  const InjuryVerdict& lac = report.assessment.laceration;
-  const InjuryVerdict& con = report.assessment.contusion;
+  static const Criterion kUnjudged{};  // a report not judged: limits 0, no limit lines drawn
+  const Criterion* found_lac = report.verdict.Find("laceration");
+  const Criterion* found_con = report.verdict.Find("contusion");
+  const Criterion& lac = found_lac ? *found_lac : kUnjudged;
+  const Criterion& con = found_con ? *found_con : kUnjudged;
   const std::string blue = "#1f5fa8";
   const std::string red = "#c0392b";
   const std::string green = "#2e8b57";
@@ -56,7 +59,7 @@ GnuplotChart ChartOfHistory(const SimulationReport& report, const std::string& n
                    kForceHeadroom * r.peaks.peak_force_N,
                    kHeadroom * std::max(r.peaks.max_tensile_stress_Pa, lac.limit) / 1e6);
   // With a safety factor, the derated limit (the one the verdict uses) beside the limit.
-  const double sf = report.safety_factor;
+  const double sf = report.verdict.safety_factor;
   const auto derated = [&](double limit, std::string_view unit, std::string_view colour,
                            std::string_view axes) {
     if (sf == 1.0) return std::string();

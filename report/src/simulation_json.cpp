@@ -8,7 +8,7 @@
 
 #include "covopt/core/impact_model.hpp"
 #include "json_number.hpp"
-#include "limits_json.hpp"
+#include "verdict_object.hpp"
 
 namespace covopt::report {
 namespace {
@@ -66,22 +66,37 @@ Json StatisticsObject(const SolverStatistics& st) {
               {"restarts", st.restarts}};
 }
 
-}  // namespace
-
-InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const InjuryLimits& limits, double safety_factor,
-                               HeadArea area) noexcept {
-  InjuryAssessment assessment = Assess(peaks, limits, area);
-  for (InjuryVerdict* verdict : {&assessment.laceration, &assessment.contusion, &assessment.fracture}) {
-    verdict->safe = safety_factor * verdict->ratio <= 1.0;
-  }
-  return assessment;
+/// One criterion of the verdict as the simulation's flat keys (value<unit>, limit<unit>,
+/// ratio, safe, derated_limit<unit>, safety_factor); null when the verdict has no such
+/// criterion or its limit is unknown.
+Json CriterionObject(const Criterion* c, std::string_view unit, double safety_factor) {
+  if (c == nullptr || !std::isfinite(c->limit)) return Json(nullptr);
+  const std::string u(unit);
+  return Json{{"value" + u, Number(c->value)},         {"limit" + u, Number(c->limit)},
+              {"ratio", Number(c->ratio)},             {"safe", c->passed},
+              {"derated_limit" + u, Number(c->derated_limit)}, {"safety_factor", safety_factor}};
 }
+
+/// The fracture criterion of the verdict (docs/model.md §7.1) with the struck area, the
+/// published range and the source (internal::FractureJson's keys); null when absent.
+Json FractureObject(const Verdict& v, HeadArea area) {
+  const Criterion* c = v.Find("fracture");
+  if (c == nullptr) return Json(nullptr);
+  const FractureForce& row = FractureForceOf(area);
+  const bool published = c->limit == row.force_N;  // else the caller's limits.fracture_force_N
+  Json j = {{"area", row.name}};
+  j.update(CriterionObject(c, "_N", v.safety_factor));
+  j["published_range"] = published ? Json(row.range) : Json(nullptr);
+  j["source"] = published ? std::string(row.source) : std::string("given (limits.fracture_force_N)");
+  return j;
+}
+
+}  // namespace
 
 std::string SimulationJson(const SimulationReport& report, int indent) {
   const ImpactResult& r = report.result;
   const ImpactPeaks& p = r.peaks;
-  const InjuryVerdict& lac = report.assessment.laceration;
-  const InjuryVerdict& con = report.assessment.contusion;
+  const Verdict& v = report.verdict;
 
   Json j;
   j["max_penetration_m"] = Number(p.max_penetration_m);
@@ -97,29 +112,14 @@ std::string SimulationJson(const SimulationReport& report, int indent) {
   j["phase_at_max_name"] = ToString(p.phase_at_max);
   j["scalp_fully_compressed"] = p.scalp_fully_compressed;
   j["fully_compressed"] = p.fully_compressed;
-  // The limits stay the limits; the derated ones and the factor join each verdict.
-  j["laceration"] = {{"value_Pa", Number(lac.value)},
-                     {"limit_Pa", Number(lac.limit)},
-                     {"ratio", Number(lac.ratio)},
-                     {"safe", lac.safe},
-                     {"derated_limit_Pa", Number(lac.limit / report.safety_factor)},
-                     {"safety_factor", report.safety_factor}};
-  j["contusion"] = {{"value_J_per_m2", Number(con.value)},
-                    {"limit_J_per_m2", Number(con.limit)},
-                    {"ratio", Number(con.ratio)},
-                    {"safe", con.safe},
-                    {"derated_limit_J_per_m2", Number(con.limit / report.safety_factor)},
-                    {"safety_factor", report.safety_factor}};
-  j["fracture"] = internal::FractureJson(report.assessment, report.safety_factor);
-  j["crush"] = report.crush ? Json{{"value_Pa", Number(report.crush->value)},
-                                    {"limit_Pa", Number(report.crush->limit)},
-                                    {"ratio", Number(report.crush->ratio)},
-                                    {"safe", report.crush->safe},
-                                    {"derated_limit_Pa", Number(report.crush->limit / report.safety_factor)},
-                                    {"safety_factor", report.safety_factor}}
-                             : Json(nullptr);
+  // The limits stay the limits; the derated ones and the factor join each criterion.
+  j["laceration"] = CriterionObject(v.Find("laceration"), "_Pa", v.safety_factor);
+  j["contusion"] = CriterionObject(v.Find("contusion"), "_J_per_m2", v.safety_factor);
+  j["fracture"] = FractureObject(v, report.scene.head.area);
+  j["crush"] = CriterionObject(v.Find("crush"), "_Pa", v.safety_factor);
   j["safe"] = report.safe();
-  j["scope"] = report.scope;
+  j["verdict"] = internal::VerdictObject(v);
+  j["scope"] = v.scope;
   j["method"] = ToString(r.method);
 
   Json solver = {{"status", ToString(r.status)}, {"message", r.message}, {"raw_code", r.raw_code}};

@@ -21,6 +21,7 @@
 
 #include "cli_test_support.hpp"
 #include "covopt/core.hpp"
+#include "covopt/optim/verdicts.hpp"
 #include "errors.hpp"
 #include "output.hpp"
 #include "plot.hpp"
@@ -165,7 +166,7 @@ TEST_CASE("the gnuplot script labels both axes and carries the whole history", "
   covopt::cli::SimulationReport report;
   const auto model = covopt::ImpactModel::FromScene(report.scene);
   report.result = covopt::SimulateImpact(model, options);
-  report.assessment = covopt::Assess(report.result.peaks);
+  report.verdict = covopt::optim::HeadVerdict(report.result.peaks, true, {}, covopt::optim::DesignRule{});
   report.time_options = options;
   const std::string script =
       covopt::report::HistoryChart(report).script(covopt::report::ChartFormat::kPng, "/tmp/it's.png");
@@ -203,17 +204,17 @@ TEST_CASE("the force/stress chart marks both limits, and the derated ones with a
   covopt::InjuryLimits limits;
   limits.laceration_tensile_stress_Pa = 2e6;
   limits.contusion_energy_density_J_per_m2 = 3e4;
-  report.assessment = covopt::Assess(report.result.peaks, limits);
+  report.verdict = covopt::optim::HeadVerdict(report.result.peaks, true, limits, covopt::optim::DesignRule{});
   std::string script = covopt::report::HistoryChart(report).script(covopt::report::ChartFormat::kSvg, "c.svg");
   // The laceration limit on the tensile axis (MPa), the contusion limit on the energy
-  // density panel (J/cm²): the assessment's limits, not the defaults.
+  // density panel (J/cm²): the verdict's limits, not the defaults.
   CHECK_THAT(script, Contains("     2 axes x1y2 with lines") &&
                          Contains("'laceration limit 2 MPa (tensile)'") &&
                          Contains("     3 with lines") &&
                          Contains("'contusion limit 3 J/cm²'"));
   CHECK_THAT(script, !Contains("derated"));
 
-  report.safety_factor = 2.0;
+  report.verdict = covopt::optim::HeadVerdict(report.result.peaks, true, limits, covopt::optim::DesignRule{2.0});
   script = covopt::report::HistoryChart(report).script(covopt::report::ChartFormat::kSvg, "c.svg");
   CHECK_THAT(script, Contains("1 axes x1y2 with lines") &&
                          Contains("'derated limit 1 MPa (limit / safety factor 2)'") &&

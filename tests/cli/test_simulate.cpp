@@ -78,12 +78,14 @@ TEST_CASE("the default scene prints a table with peaks and verdicts and exits 0"
                            "limit 2.52 J/cm²", "Method  exact", "Warnings"}) {
     CHECK_THAT(run.out, Contains(line));
   }
-  // The verdict words follow the library's assessment.
+  // The verdict words follow the library's assessment (the criterion's name padded to 17).
   const auto verdicts = covopt::Assess(Exact(covopt::Scene{}).peaks);
-  CHECK_THAT(run.out, Contains(std::string("contusion    ") +
+  CHECK_THAT(run.out, Contains(std::string("contusion         ") +
                                (verdicts.contusion.safe ? "SAFE" : "UNSAFE")));
-  CHECK_THAT(run.out, Contains(std::string("laceration   ") +
+  CHECK_THAT(run.out, Contains(std::string("laceration        ") +
                                (verdicts.laceration.safe ? "SAFE" : "UNSAFE")));
+  // The covering's design rules are their own part of the verdict, after the injury lines.
+  CHECK_THAT(run.out, Contains("  injury       ") && Contains("  design rules ") && Contains("full-compression"));
 }
 
 TEST_CASE("simulate --json has every documented key", "[run][json]") {

@@ -157,6 +157,10 @@ TEST_CASE("a sweep point agrees exactly with simulate --json at the same scene",
     } else if (key == "worst_ratio") {
       CHECK(value == std::max(j["laceration"]["ratio"].get<double>(),
                               j["contusion"]["ratio"].get<double>()));
+    } else if (key == "safe") {
+      // The sweep maps the skin ratios: its `safe` is the injury verdict, simulate's
+      // verdict.injury_safe (simulate's own `safe` also needs the covering's design rules).
+      CHECK(value == (j["verdict"]["injury_safe"].get<bool>() ? 1.0 : 0.0));
     } else if (j[key].is_boolean()) {
       CHECK(value == (j[key].get<bool>() ? 1.0 : 0.0));
     } else {

@@ -28,7 +28,7 @@ report::SimulationReport HistoryReport() {
   options.record_history = true;
   report::SimulationReport r;
   r.result = SimulateImpact(ImpactModel::FromScene(r.scene), options);
-  r.assessment = report::JudgeInjuries(r.result.peaks, InjuryLimits{}, 1.0);
+  r.verdict = optim::HeadVerdict(r.result.peaks, true, InjuryLimits{}, optim::DesignRule{});
   return r;
 }
 

@@ -26,6 +26,7 @@
 #include <covopt/materials/catalog.hpp>
 #include <covopt/report/html_report.hpp>
 #include <covopt/report/provenance.hpp>
+#include <covopt/optim/verdicts.hpp>
 #include <covopt/report/simulation_json.hpp>
 
 namespace {
@@ -351,9 +352,9 @@ TEST_CASE("A simulation made by the library renders with its own numbers", "[rep
   report.scene = scene;
   report.result = covopt::SolveExact(covopt::ImpactModel::FromScene(scene));
   for (const double sf : {1.0, 0.5}) {
-    report.safety_factor = sf;
-    report.assessment = covopt::report::JudgeInjuries(report.result.peaks, covopt::InjuryLimits{}, sf);
-    report.scope = {"Criteria: no laceration and no contusion (Park et al. 2011's skin limits)."};
+    report.verdict = covopt::optim::HeadVerdict(report.result.peaks, true, covopt::InjuryLimits{},
+                                                covopt::optim::DesignRule{sf, covopt::optim::DesignCriterion::kPaper});
+    report.verdict.scope = {"Criteria: no laceration and no contusion (Park et al. 2011's skin limits)."};
     const std::string json = covopt::report::SimulationJson(report);
     const Json j = Json::parse(json);
     const std::string html = Render(ReportKind::kSimulate, json);

@@ -13,6 +13,7 @@
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/report/simulation_json.hpp"
+#include "covopt/optim/verdicts.hpp"
 
 namespace {
 
@@ -23,7 +24,8 @@ covopt::report::SimulationReport ExactReport(const covopt::Scene& scene = {}) {
   covopt::report::SimulationReport report;
   report.scene = scene;
   report.result = covopt::SolveExact(covopt::ImpactModel::FromScene(scene));
-  report.assessment = covopt::Assess(report.result.peaks);
+  report.verdict = covopt::optim::HeadVerdict(report.result.peaks, scene.covering.thickness_m > 0.0, {},
+                                              covopt::optim::DesignRule{});
   return report;
 }
 
@@ -80,8 +82,8 @@ TEST_CASE("SimulationJson's numbers read back as the doubles computed, in their 
   CHECK(j["max_tensile_stress_Pa"].get<double>() == p.max_tensile_stress_Pa);
   CHECK(j["max_energy_density_J_per_m2"].get<double>() == p.max_energy_density_J_per_m2);
   CHECK(j["contact_duration_s"].get<double>() == report.result.contact_duration_s);
-  CHECK(j["contusion"]["ratio"].get<double>() == report.assessment.contusion.ratio);
-  CHECK(j["laceration"]["ratio"].get<double>() == report.assessment.laceration.ratio);
+  CHECK(j["contusion"]["ratio"].get<double>() == report.verdict.Find("contusion")->ratio);
+  CHECK(j["laceration"]["ratio"].get<double>() == report.verdict.Find("laceration")->ratio);
   // One line with indent -1, the same values.
   const std::string line = covopt::report::SimulationJson(report, -1);
   CHECK(line.find('\n') == std::string::npos);

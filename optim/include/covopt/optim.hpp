@@ -16,3 +16,4 @@
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/optim/speed_limit_table.hpp"
 #include "covopt/optim/trajectory_check.hpp"
+#include "covopt/optim/verdicts.hpp"

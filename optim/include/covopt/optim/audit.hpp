@@ -134,6 +134,12 @@ struct AuditCell {
   BodyLimitKind binding = BodyLimitKind::kNone;
   /// The head's row only: its criterion (LimitingCriterion::kNone on a body region's row).
   LimitingCriterion head_criterion = LimitingCriterion::kNone;
+  /// The binding criterion's name, as every output shows it: the head's own
+  /// ("laceration", "contusion", "full-compression", "crush") on the head's row, else
+  /// ToString(binding) ("force", "pressure", ...). The head model has no pressure limit.
+  std::string_view binding_name() const noexcept {
+    return head_criterion != LimitingCriterion::kNone ? ToString(head_criterion) : ToString(binding);
+  }
   /// The governing sample (index, time [s]) and point (index into the link's points, its
   /// position in the link frame and in the base frame [m]); empty when the link never moves.
   std::optional<std::size_t> sample;

@@ -36,6 +36,7 @@
 
 #include <covopt/core/body_contact.hpp>
 #include <covopt/core/scene.hpp>
+#include <covopt/core/verdict.hpp>
 #include <covopt/materials/body_regions.hpp>
 
 #include "covopt/optim/covering_design.hpp"
@@ -97,6 +98,9 @@ struct BodyRegionJudgement {
   double margin = 0.0;
   /// Whose criteria, e.g. "ISO/TS 15066:2016 transient, chest (sternum): 280 N, 240 N/cm²".
   std::string scope;
+  /// The verdict (BodyRegionVerdict, verdicts.hpp): force, pressure, the covering's design rules;
+  /// admissible == verdict.safe(), margin == verdict.margin(). Its scope is `scope`.
+  Verdict verdict;
 };
 
 /// Judges `scene` (its robot, speed and covering; the region's fields are taken from

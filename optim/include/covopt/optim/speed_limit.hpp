@@ -122,6 +122,10 @@ struct SpeedLimitOptions {
 struct CoveringCrushCheck {
   /// [Pa]: the catalog material's strength when it crushes; 0 otherwise.
   double compressive_strength_Pa = 0.0;
+  /// How the crush criterion applies: kChecked (a strength), kDoesNotCrush, kUnknownStrength
+  /// (a catalog material of unknown strength), kNoMaterial (no covering, the default one, or
+  /// one given by its modulus).
+  CrushCheck check = CrushCheck::kNoMaterial;
   /// One sentence each: a covering assumed because none was given, one given by its modulus
   /// (no material, no strength), or a material of unknown strength.
   std::vector<std::string> notes;
@@ -154,6 +158,7 @@ struct LimitRatios {
 /// One impact judged by the rules of a limit search.
 struct ImpactJudgement {
   LimitRatios ratios;       ///< the exact path's ratios at the scene's own speed and mass
+  ImpactPeaks peaks;        ///< the impact's peaks (zero when it failed): HeadVerdict(scene, peaks, options)
   /// Every ratio that counts <= 1/safety_factor and, under the default criterion, not fully
   /// compressed.
   bool admissible = false;

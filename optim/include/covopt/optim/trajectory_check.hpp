@@ -23,6 +23,7 @@
 #include <vector>
 
 #include <covopt/core/scene.hpp>
+#include <covopt/core/verdict.hpp>
 
 #include "covopt/optim/speed_limit.hpp"
 
@@ -67,7 +68,11 @@ struct SampleVerdict {
   double contusion_ratio = 0.0;    ///< e_A,max / contusion limit [-]
   double fracture_ratio = 0.0;     ///< F_max / the struck area's fracture force [-] (docs/model.md §7.1)
   double compression_ratio = 0.0;  ///< δ_max / t2 [-]; 0 without a covering
-  /// Ratios within 1/safety factor and, under the default criterion, not fully compressed.
+  /// The impact's verdict (HeadVerdict(scene at this speed and mass, peaks, options.limit)):
+  /// injury criteria and the covering's design rules; empty at rest or when it failed.
+  Verdict verdict;
+  /// verdict.safe(): ratios within 1/safety factor, not crushed and, under the default
+  /// criterion, not fully compressed. True at rest.
   bool safe = true;
   /// The time path failed on this sample's impact or on its speed-limit search (a scene with
   /// braking or a neck): the sample has no verdict, its ratios are 0 and safe is false.

@@ -80,8 +80,8 @@ std::string GnuplotQuoted(std::string_view text);
 
 /// `simulate`: force [N] and tensile stress σ_t = σ_c (1 - 2ν_t)/3 [MPa] over time [ms] (two
 /// axes, the laceration limit on the stress axis), below them the energy density [J/cm²]
-/// with the contusion limit; the limits are report.assessment's, and with
-/// report.safety_factor > 1 the derated limits (limit / factor) are drawn too. 1100 x 900.
+/// with the contusion limit; the limits are report.verdict's criteria, and with its
+/// safety factor > 1 the derated limits (limit / factor) are drawn too. 1100 x 900.
 /// A result without a history (the exact path's) is drawn from the same scene on the time path
 /// (Solve with record_history), and the caption says so with the relative difference of its
 /// peak force from the reported one.

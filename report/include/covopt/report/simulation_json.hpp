@@ -13,6 +13,7 @@
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/core/time_integration.hpp"
+#include "covopt/core/verdict.hpp"
 
 namespace covopt::report {
 
@@ -20,42 +21,27 @@ namespace covopt::report {
 struct SimulationReport {
   Scene scene;                   ///< the resolved scene (SI)
   ImpactResult result;           ///< from SolveExact or SimulateImpact
-  /// The verdicts: JudgeInjuries(result.peaks, limits, safety_factor, scene.head.area).
-  InjuryAssessment assessment;
+  /// The head's verdict (optim::SimulationVerdict: injury criteria, the covering's design
+  /// rules, scope); the CLI and Python judge with the same call.
+  Verdict verdict;
   /// The integrator's options when the time path ran; empty for the exact path.
   std::optional<TimeIntegrationOptions> time_options;
   /// The catalog material of the covering, if any.
   std::optional<std::string> covering_material;
   /// The material's ν is unknown in the catalog and the default was used.
   bool covering_poisson_assumed = false;
-  /// The verdicts are safe when safety_factor x ratio <= 1, i.e. within the derated limits
-  /// limit / safety_factor [-]; 1 = the limits themselves.
-  double safety_factor = 1.0;
-  /// The crush verdict (docs/model.md §12) when the covering is a catalog material of known
-  /// compressive strength: σ_c,max [Pa] against the strength [Pa] (optim::CrushVerdict); part
-  /// of the overall verdict. Empty otherwise.
-  std::optional<InjuryVerdict> crush;
-  /// What the verdict covers, one sentence each (optim::HeadVerdictScope).
-  std::vector<std::string> scope;
   /// What the caller noticed about its input (the CLI's and Python's input warnings),
   /// reported after the result's own warnings, without a code.
   std::vector<std::string> input_warnings;
-  /// The laceration, contusion and (when checked) crush verdicts are all safe.
-  bool safe() const noexcept { return assessment.safe() && (!crush || crush->safe); }
+  /// Verdict::safe(): every counted injury criterion and design rule holds.
+  bool safe() const noexcept { return verdict.safe(); }
 };
-
-/// Judges peaks against limits with a safety factor [-] (>= 1): each ratio stays
-/// value / limit, and a verdict is safe when safety_factor x ratio <= 1 (the value is
-/// within the derated limit limit / safety_factor).
-/// The fracture verdict judges F_max against the lowest published fracture force of `area`
-/// (Assess).
-InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const InjuryLimits& limits, double safety_factor,
-                               HeadArea area = HeadArea::kFrontal) noexcept;
 
 /// The report as one JSON object: the peaks (max_penetration_m, peak_force_N,
 /// contact_duration_s, ...), the laceration and contusion verdicts (value, limit, ratio,
-/// safe, derated_limit and safety_factor), the fracture verdict (the same, in N, with the
-/// struck area, the published range and the source), safe, method, solver (status, message, raw code,
+/// safe, derated_limit and safety_factor), the fracture one (the same in N, with the struck area,
+/// the published range and the source), the crush one (or null), safe (Verdict::safe()),
+/// verdict (VerdictJson's object), scope, method, solver (status, message, raw code,
 /// statistics; tolerances and energy_residual on the time path), scene (SceneJson, with
 /// covering.material the catalog name or null), warnings and warning_codes.
 /// `indent` as in nlohmann's dump: 2 (the CLI's), or -1 for one line.

@@ -1,0 +1,78 @@
+#pragma once
+/// @file verdicts.hpp
+/// The head's verdict (covopt::Verdict, core/verdict.hpp) built in one place from what the
+/// computations return: the impact's peaks, InjuryAssessment (Assess) for the injury criteria,
+/// the covering's travel and the crush check for its design rules, under a DesignRule. Every
+/// command that judges the head (simulate, speed-limit, optimize, robot --trajectory, audit,
+/// covopt.simulate) gets its SAFE/UNSAFE from Verdict::safe() of a verdict built here. The
+/// body regions' verdict is built by JudgeBodyContact (BodyRegionJudgement::verdict).
+
+#include <covopt/core/body_contact.hpp>
+#include <covopt/core/impact_result.hpp>
+#include <covopt/core/scene.hpp>
+#include <covopt/core/verdict.hpp>
+#include <covopt/materials/body_regions.hpp>
+
+#include "covopt/optim/oracle.hpp"
+#include "covopt/optim/speed_limit.hpp"
+
+namespace covopt::optim {
+
+/// How the crush criterion applies to a head impact's covering.
+struct CrushInput {
+  CrushCheck check = CrushCheck::kNoMaterial;
+  double compressive_strength_Pa = 0.0;  ///< [Pa], > 0 when check is kChecked
+};
+
+/// Whose limits the head's criteria are.
+inline constexpr std::string_view kParkSource = "Park et al. 2011";
+
+/// The head's verdict on one impact: the injury criteria of Assess(peaks, limits, area)
+/// (laceration, contusion, and fracture: F_max against the struck area's fracture force) and, with a covering (`covered`), its design rules: full compression
+/// (counted under the no-full-compression criterion; a fully compressed covering fails it
+/// whatever SF) and crush (a known strength: counted unless crushing is allowed; an unknown
+/// one: counted, and failed, only where the rule refuses unknown strengths). The scope is
+/// HeadVerdictScope(rule).
+Verdict HeadVerdict(const ImpactPeaks& peaks, bool covered, const InjuryLimits& limits, const DesignRule& rule,
+                    const CrushInput& crush = {}, HeadArea area = HeadArea::kFrontal);
+
+/// HeadVerdict of a design score (its peaks, its crush check, `compressive_strength_Pa` the
+/// material's when the check is kChecked; `area` the struck area); a failed score is not evaluated.
+Verdict HeadVerdict(const DesignScore& score, const InjuryLimits& limits, const DesignRule& rule,
+                    double compressive_strength_Pa, HeadArea area = HeadArea::kFrontal);
+
+/// The crush input of a covering check (CrushCheckFor): kChecked with its strength, the
+/// material's check otherwise.
+CrushInput CrushInputOf(const CoveringCrushCheck& check) noexcept;
+
+/// The head's verdict of an impact of `scene` judged as a limit search judges it (MaxSafeSpeed,
+/// CheckTrajectory, the audit): options.rule(), its limits and the covering's strength. Its
+/// scope is left empty (HeadVerdictScope(options.rule()) has it): the searches build one per
+/// impact they judge.
+Verdict HeadVerdict(const Scene& scene, const ImpactPeaks& peaks, const SpeedLimitOptions& options);
+
+/// Whose limits the body regions' injury criteria are.
+inline constexpr std::string_view kIsoTableA2Source = "ISO/TS 15066:2016 Table A.2";
+
+/// The covering's design rules of one contact, appended to `verdict` (the head's and the body
+/// regions' alike): "full-compression", the share of the covering's travel used [-] against 1
+/// (counted under the no-full-compression criterion; failed when `fully_compressed`, whatever
+/// SF), then "crush", the covering's peak stress [Pa] against its strength (CrushInput).
+void AddCoveringRules(Verdict& verdict, double compression_ratio, bool fully_compressed, double stress_Pa,
+                      const DesignRule& rule, const CrushInput& crush);
+
+/// A body region's verdict on one contact (JudgeBodyContact fills BodyRegionJudgement::verdict
+/// with it): force against F_lim, pressure against p_lim where the pressure is evaluated (ISO/TS
+/// 15066 Table A.2), and with a covering (`covered`) AddCoveringRules with the contact's
+/// compression and peak pressure. A failed contact (a time-path run) is not evaluated.
+Verdict BodyRegionVerdict(const BodyContactResult& contact, const materials::BodyLimits& limits, bool covered,
+                          const DesignRule& rule, const CrushInput& crush);
+
+/// `covopt simulate`'s and covopt.simulate()'s verdict: the head's verdict under the default
+/// criterion (full compression counts unless `allow_full_compression`), crushing checked where
+/// the covering's material has a known strength (`crush`, from CrushCheckFor), unknown strengths
+/// reported, not refused, as speed-limit does.
+Verdict SimulationVerdict(const Scene& scene, const ImpactPeaks& peaks, const InjuryLimits& limits,
+                          double safety_factor, const CoveringCrushCheck& crush, bool allow_full_compression = false);
+
+}  // namespace covopt::optim

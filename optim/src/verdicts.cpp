@@ -1,0 +1,126 @@
+#include "covopt/optim/verdicts.hpp"
+
+#include <limits>
+
+namespace covopt::optim {
+namespace {
+
+/// The head's injury criteria: name, unit and where Assess puts them. Adding a criterion to
+/// InjuryAssessment adds one line here.
+struct HeadInjury {
+  std::string_view name;
+  std::string_view unit;
+  InjuryVerdict InjuryAssessment::*verdict;
+};
+constexpr HeadInjury kHeadInjuries[] = {
+    {"laceration", "Pa", &InjuryAssessment::laceration},
+    {"contusion", "J/m2", &InjuryAssessment::contusion},
+    {"fracture", "N", &InjuryAssessment::fracture},
+};
+
+/// Whose limit a head criterion is: Park et al.'s for the skin, the struck area's published
+/// fracture force (its citation) for the bone, or the caller's given force.
+std::string_view HeadSource(const HeadInjury& injury, const InjuryVerdict& verdict, HeadArea area) {
+  if (injury.verdict != &InjuryAssessment::fracture) return kParkSource;
+  const FractureForce& row = FractureForceOf(area);
+  return verdict.limit == row.force_N ? row.source : std::string_view("given (limits.fracture_force_N)");
+}
+
+}  // namespace
+
+void AddCoveringRules(Verdict& v, double compression_ratio, bool fully_compressed, double stress_Pa,
+                      const DesignRule& rule, const CrushInput& crush) {
+  v.Add("full-compression", CriterionPart::kDesignRule, "1", compression_ratio, 1.0, "the covering's travel",
+        rule.compression_counts(), fully_compressed);
+  switch (crush.check) {
+    case CrushCheck::kChecked:
+      v.Add("crush", CriterionPart::kDesignRule, "Pa", stress_Pa, crush.compressive_strength_Pa,
+            "the material's compressive strength", !rule.crushing_allowed);
+      return;
+    case CrushCheck::kUnknownStrength: {
+      Criterion& c = v.Add("crush", CriterionPart::kDesignRule, "Pa", stress_Pa,
+                           std::numeric_limits<double>::quiet_NaN(), "the material's compressive strength",
+                           rule.refuses_unknown_strength(), true);
+      c.note = rule.refuses_unknown_strength() ? "strength unknown: refused" : "strength unknown: not checked";
+      return;
+    }
+    case CrushCheck::kDoesNotCrush:
+    case CrushCheck::kNoMaterial: return;
+  }
+}
+
+namespace {
+
+/// HeadVerdict without its scope (the limit searches judge ~70 impacts per answer).
+Verdict HeadCriteria(const ImpactPeaks& peaks, bool covered, const InjuryLimits& limits, const DesignRule& rule,
+                     const CrushInput& crush, HeadArea area) {
+  Verdict v;
+  v.safety_factor = rule.safety_factor;
+  const InjuryAssessment assessment = Assess(peaks, limits, area);
+  for (const HeadInjury& injury : kHeadInjuries) {
+    const InjuryVerdict& iv = assessment.*injury.verdict;
+    v.Add(injury.name, CriterionPart::kInjury, injury.unit, iv.value, iv.limit, HeadSource(injury, iv, area));
+  }
+  if (covered) {
+    AddCoveringRules(v, peaks.covering_compression_ratio(), peaks.fully_compressed, peaks.max_compressive_stress_Pa,
+                     rule, crush);
+  }
+  return v;
+}
+
+}  // namespace
+
+Verdict HeadVerdict(const ImpactPeaks& peaks, bool covered, const InjuryLimits& limits, const DesignRule& rule,
+                    const CrushInput& crush, HeadArea area) {
+  Verdict v = HeadCriteria(peaks, covered, limits, rule, crush, area);
+  v.scope = HeadVerdictScope(rule);
+  return v;
+}
+
+Verdict HeadVerdict(const DesignScore& score, const InjuryLimits& limits, const DesignRule& rule,
+                    double compressive_strength_Pa, HeadArea area) {
+  Verdict v =
+      HeadVerdict(score.peaks, !score.bare(), limits, rule, {score.crush_check, compressive_strength_Pa}, area);
+  v.evaluated = !score.failed;
+  return v;
+}
+
+Verdict BodyRegionVerdict(const BodyContactResult& contact, const materials::BodyLimits& limits, bool covered,
+                          const DesignRule& rule, const CrushInput& crush) {
+  Verdict v;
+  v.safety_factor = rule.safety_factor;
+  if (!contact.ok()) {
+    v.evaluated = false;
+    return v;
+  }
+  v.Add("force", CriterionPart::kInjury, "N", contact.peak_force_N, limits.force_N, kIsoTableA2Source);
+  if (contact.peak_pressure_Pa) {
+    v.Add("pressure", CriterionPart::kInjury, "Pa", *contact.peak_pressure_Pa, limits.pressure_Pa, kIsoTableA2Source);
+  }
+  if (covered) {
+    AddCoveringRules(v, contact.compression_ratio, contact.fully_compressed, contact.peak_pressure_Pa.value_or(0.0),
+                     rule, crush);
+  }
+  return v;
+}
+
+CrushInput CrushInputOf(const CoveringCrushCheck& check) noexcept {
+  if (check.compressive_strength_Pa > 0.0) return {CrushCheck::kChecked, check.compressive_strength_Pa};
+  return {check.check, 0.0};
+}
+
+Verdict HeadVerdict(const Scene& scene, const ImpactPeaks& peaks, const SpeedLimitOptions& options) {
+  const double strength = options.covering_compressive_strength_Pa;
+  const CrushInput crush = strength > 0.0 ? CrushInput{CrushCheck::kChecked, strength} : CrushInput{};
+  return HeadCriteria(peaks, scene.covering.thickness_m > 0.0, options.limits, options.rule(), crush, scene.head.area);
+}
+
+Verdict SimulationVerdict(const Scene& scene, const ImpactPeaks& peaks, const InjuryLimits& limits,
+                          double safety_factor, const CoveringCrushCheck& crush, bool allow_full_compression) {
+  const DesignRule rule{safety_factor,
+                        allow_full_compression ? DesignCriterion::kPaper : DesignCriterion::kNoFullCompression,
+                        false, true};
+  return HeadVerdict(peaks, scene.covering.thickness_m > 0.0, limits, rule, CrushInputOf(crush), scene.head.area);
+}
+
+}  // namespace covopt::optim
