@@ -12,7 +12,7 @@
 #include "covopt/core/physical_floors.hpp"
 #include "errors.hpp"
 #include "quantity.hpp"
-#include "simulate.hpp"
+#include "simulation_plan.hpp"
 
 namespace covopt::cli {
 namespace {

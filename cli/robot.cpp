@@ -13,6 +13,7 @@
 #include "covopt/robot/reflected_mass.hpp"
 #include "errors.hpp"
 #include "run_context.hpp"
+#include "output_options.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -63,7 +64,7 @@ CLI::App* SetupRobot(CLI::App& app, RobotOptions& options) {
                "with --trajectory, the safety check of a motion");
   sub->footer(std::string(kFooter));
   AddRobotModelOptions(*sub, options.model, false, "Robot model");
-  sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")->group("Output");
+  AddJsonFlag(*sub, options.json);
   AddRobotTrajectoryOptions(*sub, options.trajectory);
   return sub;
 }
