@@ -29,10 +29,8 @@
 namespace covopt::cli {
 namespace {
 
-using Json = nlohmann::ordered_json;
 
 /// A number, or null when it is not finite (JSON has no NaN or Infinity).
-Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
 
 std::string_view YesNo(bool b) { return b ? "yes" : "no"; }
 std::string_view SafeWord(bool safe) { return safe ? "SAFE" : "UNSAFE"; }
@@ -180,16 +178,5 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
   }
 }
 
-Json SceneToJson(const Scene& s) { return Json::parse(report::SceneJson(s)); }
-
-Json JsonNumber(double value) { return Number(value); }
-
-Json StatisticsToJson(const SolverStatistics& st) {
-  return Json::parse(report::SolverStatisticsJson(st));
-}
-
-Json ToJson(const SimulationReport& report) {
-  return Json::parse(report::SimulationJson(report));
-}
 
 }  // namespace covopt::cli

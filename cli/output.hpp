@@ -12,8 +12,6 @@
 #include <string_view>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
 #include "covopt/core/scene.hpp"
@@ -36,24 +34,6 @@ using report::SceneHeadline;
 
 /// The readable report: scene, peaks, verdicts, method and solver, warnings.
 void PrintTable(std::ostream& out, const SimulationReport& report);
-
-/// Every resolved scene input in SI; fixed masses are "fixed", a flat radius is "flat"
-/// (report::SceneJson, parsed).
-nlohmann::ordered_json SceneToJson(const Scene& scene);
-
-/// A number for JSON, or null when it is not finite (JSON has no NaN or Infinity).
-nlohmann::ordered_json JsonNumber(double value);
-
-/// The integrator's counters as JSON: steps, rhs_evaluations, root_evaluations,
-/// jacobian_evaluations, nonlinear_iterations, error_test_failures, convergence_failures,
-/// restarts (report::SolverStatisticsJson, parsed).
-nlohmann::ordered_json StatisticsToJson(const SolverStatistics& statistics);
-
-/// The report as one JSON object, values in SI, keys carrying the unit
-/// (max_penetration_m, peak_force_N, ...); missing or non-finite values are null.
-/// scene.covering.material is the catalog material's name, or null. It is
-/// report::SimulationJson parsed (the object Python's covopt.simulate returns).
-nlohmann::ordered_json ToJson(const SimulationReport& report);
 
 /// The history CSV (covopt/report/history_csv.hpp).
 using report::HistoryCsv;

@@ -17,7 +17,7 @@
 namespace covopt::report {
 
 /// The result columns and how each is read; the names are the keys of simulate --json
-/// (the CLI's cli/output.cpp ToJson), which tests/cli/test_sweep.cpp checks.
+/// (report::SimulationJson), which tests/cli/test_sweep.cpp checks.
 struct ResultColumn {
   std::string_view name;
   double (*value)(const covopt::SweepRow&);
