@@ -591,7 +591,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                                          *options.plot_file));
     }
   }
-  if (options.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
+  if (options.body.any()) {  // ISO/TS 15066 body regions (optimize_body_region.cpp)
     if (!r.ranges.empty()) {
       return errors.BadInput(fmt::format("{} '{}': scene ranges (uncertain inputs) are not taken with --body-region",
                                          r.ranges.front().source, r.ranges.front().text));

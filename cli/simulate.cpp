@@ -235,7 +235,7 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
 
 int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "simulate");
-  if (options.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
+  if (options.body.any()) {  // ISO/TS 15066 body regions (simulate_body_region.cpp)
     return RunWithBodyRegions(options.body, errors, [&](const BodyRegionPlan& regions) {
       return RunBodyRegionSimulate(options, regions, out, err);
     });

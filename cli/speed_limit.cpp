@@ -345,7 +345,7 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
 
 int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "speed-limit");
-  if (options.scene.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
+  if (options.scene.body.any()) {  // ISO/TS 15066 body regions (speed_limit_body_region.cpp)
     return RunWithBodyRegions(options.scene.body, errors, [&](const BodyRegionPlan& regions) {
       return RunBodyRegionSpeedLimit(options, regions, out, err);
     });
