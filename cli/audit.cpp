@@ -18,6 +18,7 @@
 #include "body_region_options.hpp"
 #include "covopt/optim/audit.hpp"
 #include "covopt/optim/design.hpp"
+#include "covopt/optim/input_warnings.hpp"
 #include "covopt/report/audit_json.hpp"
 #include "covopt/report/csv.hpp"
 #include "covopt/robot/surface.hpp"
@@ -293,7 +294,7 @@ AuditRun Resolve(const AuditCommandOptions& o) {
   }
 
   for (std::string& w : InputWarnings(plan)) run.input_warnings.push_back(std::move(w));
-  for (std::string& w : CrushCheckOf(plan).notes) run.input_warnings.push_back(std::move(w));
+  optim::AppendNewWarnings(run.input_warnings, CrushCheckOf(plan).notes);  // the default covering is in both
   return run;
 }
 
@@ -395,10 +396,7 @@ std::string CellsCsv(const optim::AuditResult& r) {
 
 }  // namespace
 
-CLI::App* SetupAudit(CLI::App& app, AuditCommandOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "audit", "The whole robot along its motion: every link's surface against every body region; the safe speed "
-               "scale, which link and region set it, and per link the covering that makes the program safe");
+void SetupAudit(CLI::App* sub, AuditCommandOptions& options) {
   sub->footer(std::string(kFooter));
   AddRobotModelOptions(*sub, options.model, false, "Robot model");
   // Each surface point brings its own point and direction; the trajectory its joints.
@@ -461,7 +459,6 @@ CLI::App* SetupAudit(CLI::App& app, AuditCommandOptions& options) {
                   "grow with the trajectory)", "FILE.csv|-");
   AddOutputFileOption(*sub, "--plot", options.plot_file, "heat map of the governing ratio over time and links (gnuplot)", "FILE.png|FILE.svg");
   AddReportOption(*sub, options.report_file);
-  return sub;
 }
 
 int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err) {

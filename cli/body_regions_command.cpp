@@ -10,6 +10,7 @@
 
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/report/body_regions_json.hpp"
+#include "body_region_options.hpp"
 #include "errors.hpp"
 #include "catalog_options.hpp"
 #include "output_options.hpp"
@@ -115,9 +116,7 @@ void PrintRegion(std::ostream& out, const BodyRegion& r) {
 
 }  // namespace
 
-CLI::App* SetupBodyRegions(CLI::App& app, BodyRegionsOptions& options) {
-  CLI::App* command = app.add_subcommand(
-      "body-regions", "ISO/TS 15066:2016's body regions: list or show their limits, k and m_H");
+void SetupBodyRegions(CLI::App* command, BodyRegionsOptions& options) {
   command->require_subcommand(1);
   command->footer(
       "Tables A.2 (biomechanical limits) and A.3 (effective spring constant and mass) of\n"
@@ -137,7 +136,6 @@ CLI::App* SetupBodyRegions(CLI::App& app, BodyRegionsOptions& options) {
       ->required();
   AddJsonFlag(*show, options.json, "print the region as one JSON object (SI units)");
   show->callback([&options] { options.action = BodyRegionsAction::kShow; });
-  return command;
 }
 
 int RunBodyRegions(const BodyRegionsOptions& options, std::ostream& out, std::ostream& err) {
@@ -159,7 +157,7 @@ int RunBodyRegions(const BodyRegionsOptions& options, std::ostream& out, std::os
       try {
         region = &table.Region(options.name);
       } catch (const materials::BodyRegionError& e) {
-        return errors.BadInput(e.what());
+        return errors.BadInput(AsFlags(e.what()));  // "(... --body-region head)"
       }
       if (options.json) {
         out << WithRunProvenance(report::BodyRegionJson(*region), options.run) << '\n';

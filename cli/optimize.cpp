@@ -512,10 +512,7 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
 
 }  // namespace
 
-CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "optimize", "Find the covering (real material and thickness) that prevents laceration and "
-                  "contusion, with its margin");
+void SetupOptimize(CLI::App* sub, OptimizeOptions& options) {
   sub->footer(std::string(kFooter));
   AddSceneFieldOptions(*sub, options.scene_file, options.scene_values, options.thresholds, false);  // not the covering
   sub->add_option("--max-thickness", options.max_thickness, "thickest covering considered (default 50 mm)")
@@ -565,7 +562,6 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
   AddOutputFileOption(*sub, "--csv", options.csv, "write every candidate to FILE as CSV (SI units in the header)", "FILE");
   AddOutputFileOption(*sub, "--plot", options.plot_file, "chart with gnuplot: the design map, the governing ratio over thickness x modulus with each "
                   "criterion's limit and the chosen design (the head's design only)", "FILE.png|FILE.svg");
-  return sub;
 }
 
 int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream& err) {

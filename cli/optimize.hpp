@@ -83,7 +83,9 @@ struct OptimizeOptions {
   std::optional<std::string> plot_file;
 };
 
-CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options);
+/// Registers the options of the `optimize` subcommand `sub` (made by RunCli with its name and
+/// summary), storing what is typed into `options`, which must outlive the parse.
+void SetupOptimize(CLI::App* sub, OptimizeOptions& options);
 
 /// `optimize --body-region ... --speed V` (optimize_body_region.cpp): the covering that lets
 /// the robot reach V for every target. `head` is optimize's resolved request (the robot, the

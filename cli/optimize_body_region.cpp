@@ -5,8 +5,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <utility>
-#include <fmt/format.h>
-#include <fmt/ostream.h>
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
@@ -61,9 +59,11 @@ void CheckRegionDesignFlags(const OptimizeOptions& options, const optim::DesignR
 }  // namespace
 
 int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignRequest& head,
-                          const std::vector<std::string>& input_warnings, const BodyRegionPlan& regions,
+                          const std::vector<std::string>& scene_warnings, const BodyRegionPlan& regions,
                           std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "optimize");
+  std::vector<std::string> input_warnings = scene_warnings;
+  input_warnings.insert(input_warnings.end(), regions.notes.begin(), regions.notes.end());
   optim::BodyRegionDesignRequest request;
   try {
     CheckRegionDesignFlags(options, head, regions);

@@ -1,5 +1,6 @@
 #include "scene_fields.hpp"
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,15 @@ std::span<const LimitField> LimitFields() noexcept {
 void CheckLimitValue(const LimitField& field, double value, std::string_view name,
                      std::string_view shown) {
   AsInputError([&] { scene_file::CheckLimitValue(field, value, name, shown); });
+}
+
+void ApplySceneFlagInputs(std::span<const scene_file::SceneInput> inputs, scene_file::ResolvedScene& resolved) {
+  try {
+    scene_file::ApplySceneInputs(inputs, materials::Catalog{}, resolved);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(scene_file::Respell(e.what(), scene_file::SceneInputSpellings(scene_file::ValueStyle::kFlag),
+                                         scene_file::ValueStyle::kFlag));
+  }
 }
 
 ThresholdReading ParseThresholds(std::string_view text, std::string_view name) {

@@ -47,10 +47,7 @@ written (e.g. gnuplot missing); 2 bad input.)";
 
 }  // namespace
 
-CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "simulate", "Compute one impact: peak force, stresses, energy density and the "
-                  "laceration/contusion verdicts");
+void SetupSimulate(CLI::App* sub, SimulateOptions& options) {
   sub->footer(std::string(kFooter));
   AddSceneOptions(*sub, options);
   AddRuleOptions(*sub, {.safety_factor = &options.safety_factor});
@@ -96,7 +93,6 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
   AddOutputFileOption(*sub, "--history", options.history_file, "write the time history as CSV (uses the time path)", "FILE.csv");
   AddOutputFileOption(*sub, "--plot", options.plot_file, "draw force and stress against time with gnuplot (uses the time path)", "FILE.png|FILE.svg");
   AddReportOption(*sub, options.report_file);
-  return sub;
 }
 
 namespace {

@@ -19,9 +19,9 @@ class App;
 
 namespace covopt::cli {
 
-/// Adds the `simulate` subcommand to `app`, storing what is typed into `options`, which
-/// must outlive the parse.
-CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options);
+/// Registers the options of the `simulate` subcommand `sub` (made by RunCli with its name and
+/// summary), storing what is typed into `options`, which must outlive the parse.
+void SetupSimulate(CLI::App* sub, SimulateOptions& options);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream& err);

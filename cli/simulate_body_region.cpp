@@ -5,8 +5,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <utility>
-#include <fmt/format.h>
-#include <fmt/ostream.h>
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
@@ -120,6 +118,7 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
     return errors.BadInput(AttributeError(e.what(), plan));
   }
   std::vector<std::string> warnings = InputWarnings(plan);
+  warnings.insert(warnings.end(), regions.notes.begin(), regions.notes.end());
   if (const auto note = ContactAreaNote(regions, plan.scene, false)) warnings.push_back(*note);
   // The time path's self-check (a braking robot's judgement is its time path), per region.
   for (std::size_t i = 0; i < judgements.size(); ++i) {

@@ -96,9 +96,9 @@ void ApplyMaterial(const SimulateOptions& options, const SceneFileExtras& extras
   plan.covering_material = *material;
 }
 
-/// The injury limits and the safety factor: defaults, the scene file's [limits], the flags.
-void ApplyLimits(const SimulateOptions& options, const SceneFileExtras& extras,
-                 SimulationPlan& plan) {
+/// The injury limits and the safety factor of the scene file's [limits] (the flags'
+/// are ApplySceneFlags's).
+void ApplyLimits(const SceneFileExtras& extras, SimulationPlan& plan) {
   if (extras.laceration_limit_Pa) {
     plan.limits.laceration_tensile_stress_Pa = *extras.laceration_limit_Pa;
   }
@@ -106,18 +106,33 @@ void ApplyLimits(const SimulateOptions& options, const SceneFileExtras& extras,
     plan.limits.contusion_energy_density_J_per_m2 = *extras.contusion_limit_J_per_m2;
   }
   if (extras.safety_factor) plan.safety_factor = *extras.safety_factor;
+}
+
+/// The flags' scene inputs (the limits, the scene fields not given as ranges, the
+/// thresholds) applied by the library's one resolution (scene_file::ApplySceneInputs), its
+/// messages naming the flags (scene_file::SceneInputSpellings); their sources noted.
+void ApplySceneFlags(const SimulateOptions& options, SimulationPlan& plan) {
+  std::vector<scene_file::SceneInput> inputs;
+  const auto add = [&](std::string field, std::string_view flag, const std::string& typed) {
+    plan.sources[field] = fmt::format("{} '{}'", flag, typed);
+    inputs.push_back({std::move(field), typed, ""});
+  };
   for (const LimitField& field : LimitFields()) {
     const std::optional<std::string>& typed = field.key == "laceration"  ? options.laceration_limit
                                               : field.key == "contusion" ? options.contusion_limit
                                                                          : options.safety_factor;
-    if (!typed) continue;
-    const double value = ParseQuantity(*typed, field.spec, field.flag);
-    CheckLimitValue(field, value, field.flag, fmt::format("'{}'", *typed));
-    if (field.key == "laceration") plan.limits.laceration_tensile_stress_Pa = value;
-    if (field.key == "contusion") plan.limits.contusion_energy_density_J_per_m2 = value;
-    if (field.key == "safety_factor") plan.safety_factor = value;
-    plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, *typed);
+    if (typed) add(field.dotted_name(), field.flag, *typed);
   }
+  for (const SceneField& field : SceneFields()) {
+    const auto typed = options.scene_values.find(field.dotted_name());
+    if (typed != options.scene_values.end() && !IsRangeText(typed->second)) add(typed->first, field.flag, typed->second);
+  }
+  if (options.thresholds) add("model.thresholds", "--thresholds", *options.thresholds);
+  scene_file::ResolvedScene resolved{plan.scene, plan.limits, plan.safety_factor, nullptr};
+  ApplySceneFlagInputs(inputs, resolved);
+  plan.scene = resolved.scene;
+  plan.limits = resolved.limits;
+  plan.safety_factor = resolved.safety_factor;
 }
 
 }  // namespace
@@ -278,7 +293,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
                                  "covering.material)",
                                  options.catalog.files.empty() ? "--no-builtin" : "--catalog"));
   }
-  ApplyLimits(options, extras, plan);
+  ApplyLimits(extras, plan);
   for (const SceneField& field : SceneFields()) {
     const auto typed = options.scene_values.find(field.dotted_name());
     if (typed != options.scene_values.end()) {
@@ -286,12 +301,11 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
       std::erase_if(plan.ranges, [&](const SceneRange& r) { return r.field == field.dotted_name(); });
       if (IsRangeText(typed->second)) {
         plan.ranges.push_back(AsInputError([&] { return scene_file::ParseSceneRange(typed->second, field, field.flag); }));
-      } else {
-        field.field(plan.scene) = ParseQuantity(typed->second, field.spec, field.flag);
+        plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, typed->second);
       }
-      plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, typed->second);
     }
   }
+  ApplySceneFlags(options, plan);
   if (!plan.ranges.empty() && !options.accept_ranges) {
     throw InputError(fmt::format("{} '{}': a range (an uncertain input) is taken by simulate, optimize and speed-limit "
                                  "only; this command needs one value",
@@ -316,10 +330,6 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     }
   }
   SetNominalValues(plan.scene, plan.ranges);
-  if (options.thresholds) {
-    plan.scene.model.thresholds = ParseThresholds(*options.thresholds, "--thresholds");
-    plan.sources["model.thresholds"] = fmt::format("--thresholds '{}'", *options.thresholds);
-  }
 
   // Outputs.
   plan.json = options.json;

@@ -143,10 +143,7 @@ report::GnuplotChart SpeedLimitChartOf(const SpeedLimitPlan& plan) {
   return report::SpeedLimitChart(input);
 }
 
-CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "speed-limit", "The largest safe impact speed of the robot with its covering (or, --solve-for mass, "
-                     "the largest safe reflected mass), per reflected mass");
+void SetupSpeedLimit(CLI::App* sub, SpeedLimitCommandOptions& options) {
   sub->footer(std::string(kFooter));
   AddSceneOptions(*sub, options.scene);
   AddRobotModelOptions(*sub, options.scene.robot_model, true, "Robot model (instead of --robot-mass)");
@@ -172,7 +169,6 @@ CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
   AddOutputFileOption(*sub, "--plot", options.plot_file, "chart with gnuplot: max safe speed over reflected mass, one curve per --material and the "
                   "bare robot", "FILE.png|FILE.svg");
   AddReportOption(*sub, options.report_file);
-  return sub;
 }
 
 SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {

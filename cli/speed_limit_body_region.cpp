@@ -5,8 +5,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <utility>
-#include <fmt/format.h>
-#include <fmt/ostream.h>
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
@@ -14,6 +12,7 @@
 #include "covopt/core/quantity.hpp"
 #include "covopt/report/body_contact_json.hpp"
 #include "covopt/report/csv.hpp"
+#include "covopt/scene_file/targets.hpp"
 #include "body_region_output.hpp"
 #include "errors.hpp"
 #include "output.hpp"
@@ -55,10 +54,8 @@ std::vector<std::string> RegionSpeedLimitWarnings(const SpeedLimitPlan& plan, co
       if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(std::move(w));
     }
   }
-  if (regions.has_iso() && !(regions.contact_area_m2 > 0.0)) {
-    warnings.push_back("the bare robot's pressure is not evaluated (no --contact-area): its limits are those of "
-                       "the force alone");
-  }
+  warnings.insert(warnings.end(), regions.notes.begin(), regions.notes.end());
+  if (const auto note = scene_file::BarePressureNote(regions)) warnings.push_back(AsFlags(*note));
   return warnings;
 }
 

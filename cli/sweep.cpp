@@ -121,11 +121,7 @@ std::size_t SweepBlockRows(std::size_t points, unsigned threads) {
   return std::clamp<std::size_t>(per_block, 16, 1024);
 }
 
-CLI::App* SetupSweep(CLI::App& app, SweepCommandOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "sweep", "Sweep one or two scene quantities over a grid (exact path, or the time path where the "
-               "scene needs it; all cores): CSV of "
-               "every point, and a map or line chart of the injury ratios");
+void SetupSweep(CLI::App* sub, SweepCommandOptions& options) {
   sub->footer(std::string(kFooter));
   sub->add_option("--x", options.x, "first swept quantity, e.g. covering-modulus=0.1MPa..1GPa:log:200")
       ->type_name("NAME=SPEC")
@@ -155,7 +151,6 @@ CLI::App* SetupSweep(CLI::App& app, SweepCommandOptions& options) {
   sub->add_flag("--no-progress", options.no_progress,
                 "no progress bar (it is shown only on a terminal, for long sweeps)")
       ->group("Output");
-  return sub;
 }
 
 /// What RunSweep reads from its options before any computation.
@@ -346,7 +341,7 @@ void DrawSweepChart(const std::string& path, const SweepRun& run, std::span<cons
 
 int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "sweep");
-  if (options.scene.body.any()) {  // ISO/TS 15066 body regions (body_region_sweep.cpp)
+  if (options.scene.body.any()) {  // ISO/TS 15066 body regions (sweep_body_region.cpp)
     return RunWithBodyRegions(options.scene.body, errors, [&](const BodyRegionPlan& regions) {
       return RunBodyRegionSweep(options, regions, out, err);
     });

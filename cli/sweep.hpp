@@ -85,10 +85,11 @@ covopt::SweepSpec MakeSweepSpec(const SweepAxisArgument& x, const SweepAxisArgum
 /// thread, 16..1024 rows, so small grids still spread over the threads.
 std::size_t SweepBlockRows(std::size_t points, unsigned threads);
 
-/// Adds the `sweep` subcommand to `app`, storing what is typed into `options`.
-CLI::App* SetupSweep(CLI::App& app, SweepCommandOptions& options);
+/// Registers the options of the `sweep` subcommand `sub` (made by RunCli with its name and
+/// summary), storing what is typed into `options`.
+void SetupSweep(CLI::App* sub, SweepCommandOptions& options);
 
-/// `sweep --body-region R` (one ISO region; body_region_sweep.cpp): the body contact's ratios
+/// `sweep --body-region R` (one ISO region; sweep_body_region.cpp): the body contact's ratios
 /// per grid point, as CSV columns (or a summary), computed point by point on the exact path; no chart.
 int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan& regions, std::ostream& out,
                        std::ostream& err);

@@ -63,8 +63,9 @@ struct WorkPrecisionOptions {
 /// in [1e-14, 1e-2]. @throws InputError naming --tolerances.
 std::vector<double> ParseToleranceLadder(const std::string& text);
 
-/// Adds the `workprecision` subcommand to `app`.
-CLI::App* SetupWorkPrecision(CLI::App& app, WorkPrecisionOptions& options);
+/// Registers the options of the `workprecision` subcommand `sub` (made by RunCli with its name
+/// and summary).
+void SetupWorkPrecision(CLI::App* sub, WorkPrecisionOptions& options);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std::ostream& err);

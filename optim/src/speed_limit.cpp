@@ -535,15 +535,20 @@ MassLimit MaxSafeMassOnPenetrationAxis(const Scene& base, const SpeedLimitOption
 }
 
 }  // namespace
+
+std::string DefaultCoveringNote(const Scene& scene) {
+  return "no covering given: the default is assumed, " +
+         FormatQuantity(scene.covering.thickness_m, QuantityKind::kLength) + " of " +
+         FormatQuantity(scene.covering.youngs_modulus_Pa, QuantityKind::kModulus) +
+         " (the paper's polystyrene foam, of unknown compressive strength, so crushing is not checked); give the "
+         "covering's thickness with a catalog material (or its modulus), or a thickness of 0 for the bare robot";
+}
+
 CoveringCrushCheck CrushCheckFor(const Scene& scene, const materials::Material* material, bool covering_given) {
   CoveringCrushCheck check;
   if (!(scene.covering.thickness_m > 0.0)) return check;
   if (!covering_given && !material) {
-    check.notes.push_back(
-        "no covering given: the default is assumed, " + FormatQuantity(scene.covering.thickness_m, QuantityKind::kLength) +
-        " of " + FormatQuantity(scene.covering.youngs_modulus_Pa, QuantityKind::kModulus) +
-        " (the paper's polystyrene foam, of unknown compressive strength, so crushing is not checked); give the "
-        "covering's thickness with a catalog material (or its modulus), or a thickness of 0 for the bare robot");
+    check.notes.push_back(DefaultCoveringNote(scene));
     return check;
   }
   if (!material) {

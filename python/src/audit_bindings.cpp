@@ -220,9 +220,7 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(inputs.Attributed(e.what()));
   }
-  std::vector<std::string> warnings = InputWarnings(inputs);
-  const optim::CoveringCrushCheck crush = inputs.CrushCheck();
-  warnings.insert(warnings.end(), crush.notes.begin(), crush.notes.end());
+  std::vector<std::string> warnings = InputAndCrushWarnings(inputs);
   py::dict d = JsonToPython(report::AuditJson(setup, result, warnings, -1));
   if (result.ratio_over_time.empty()) return d;  // the heat map needs keep_ratio_over_time=True
   return WithReportCharts(std::move(d), [result, sf = setup.rule.safety_factor, name = TrajectoryName(trajectory)] {

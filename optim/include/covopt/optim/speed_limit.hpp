@@ -129,6 +129,9 @@ struct CoveringCrushCheck {
 /// `material`: the catalog entry the covering was taken from, or nullptr; `covering_given`:
 /// the user gave any covering input (thickness, modulus, ν or a material).
 CoveringCrushCheck CrushCheckFor(const Scene& scene, const materials::Material* material, bool covering_given);
+/// The warning that the default covering is assumed (no covering input given, `scene`'s
+/// covering the default): one text for the crush notes and optim::SceneInputWarnings.
+std::string DefaultCoveringNote(const Scene& scene);
 
 /// The crush verdict of one impact (docs/model.md §12): σ_c,max [Pa] against a compressive
 /// strength [Pa] (> 0), safe when safety_factor × ratio <= 1.
