@@ -20,9 +20,9 @@
 #include <covopt/core/sweep.hpp>
 
 #include "app.hpp"
-#include "simulate.hpp"
+#include "simulation_plan.hpp"
 #include "sweep.hpp"
-#include "sweep_csv.hpp"
+#include "covopt/report/sweep_csv.hpp"
 
 namespace {
 
@@ -63,7 +63,7 @@ void BM_Sweep1000x1000ToCsvNull(benchmark::State& state) {
   std::FILE* null = std::fopen("/dev/null", "wb");
   std::size_t bytes = 0;
   for (auto _ : state) {
-    covopt::cli::SweepCsvWriter csv(grid.x, &grid.y, [&](std::string_view text) {
+    covopt::report::SweepCsvWriter csv(grid.x, &grid.y, [&](std::string_view text) {
       bytes += std::fwrite(text.data(), 1, text.size(), null);
     });
     covopt::Sweep(grid.spec, options, [&](std::span<const covopt::SweepRow> rows) { csv.Write(rows); });

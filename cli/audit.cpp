@@ -31,6 +31,8 @@
 #include "quantity.hpp"
 #include "report_option.hpp"
 #include "scene_fields.hpp"
+#include "output_options.hpp"
+#include "rule_options.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -431,26 +433,19 @@ void SetupAudit(CLI::App* sub, AuditCommandOptions& options) {
   AddSceneOptions(*sub, options.scene);
   AddBodyRegionOptions(*sub, options.scene.body);
   for (const char* flag : {"--robot-mass", "--speed", "--robot-radius"}) sub->get_option(flag)->group("");
-  sub->add_option("--safety-factor", options.scene.safety_factor, "the ratios must stay <= 1/factor, 1-100 (default 1)")
-      ->type_name("RATIO")
-      ->group("Limits");
-  sub->add_flag("--allow-full-compression", options.allow_full_compression,
-                "a covering fully compressed at the peak may count as safe (default: it may not)")
-      ->group("Limits");
-  sub->add_flag("--allow-crushing", options.allow_crushing, "a sacrificial liner: crushing is reported, not applied")
-      ->group("Limits");
+  AddRuleOptions(*sub, {.safety_factor = &options.scene.safety_factor,
+                        .allow_full_compression = &options.allow_full_compression,
+                        .allow_crushing = &options.allow_crushing});
   constexpr const char* kDesign = "Design (--design)";
   sub->add_flag("--design", options.design,
                 "per link, the thinnest catalog covering that makes the program safe at full speed")
       ->group(kDesign);
+  AddRuleOptions(*sub, {.allow_unknown_strength = &options.allow_unknown_strength}, kDesign);
   sub->add_option("--family", options.families, "only materials of this family (repeatable)")
       ->type_name("NAME")
       ->group(kDesign);
   sub->add_option("--design-material", options.design_materials, "only this catalog material (repeatable)")
       ->type_name("NAME")
-      ->group(kDesign);
-  sub->add_flag("--allow-unknown-strength", options.allow_unknown_strength,
-                "materials of unknown compressive strength may be recommended (each with a warning)")
       ->group(kDesign);
   sub->add_option("--max-thickness", options.max_thickness, "the thickest covering tried (default 50mm)")
       ->type_name("LENGTH")
@@ -458,18 +453,11 @@ void SetupAudit(CLI::App* sub, AuditCommandOptions& options) {
   sub->add_option("--thickness-step", options.thickness_step, "the recommendation is rounded up to it (default 0.5mm)")
       ->type_name("LENGTH")
       ->group(kDesign);
-  sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")->group("Output");
-  sub->add_option("--csv", options.csv_file, "write one row per link x region ('-': to stdout)")
-      ->type_name("FILE.csv|-")
-      ->group("Output");
-  sub->add_option("--samples-csv", options.samples_csv,
-                  "stream one row per sample: per link its largest ratio and region ('-': to stdout; memory does not "
-                  "grow with the trajectory)")
-      ->type_name("FILE.csv|-")
-      ->group("Output");
-  sub->add_option("--plot", options.plot_file, "heat map of the governing ratio over time and links (gnuplot)")
-      ->type_name("FILE.png|FILE.svg")
-      ->group("Output");
+  AddJsonFlag(*sub, options.json);
+  AddOutputFileOption(*sub, "--csv", options.csv_file, "write one row per link x region ('-': to stdout)", "FILE.csv|-");
+  AddOutputFileOption(*sub, "--samples-csv", options.samples_csv, "stream one row per sample: per link its largest ratio and region ('-': to stdout; memory does not "
+                  "grow with the trajectory)", "FILE.csv|-");
+  AddOutputFileOption(*sub, "--plot", options.plot_file, "heat map of the governing ratio over time and links (gnuplot)", "FILE.png|FILE.svg");
   AddReportOption(*sub, options.report_file);
 }
 

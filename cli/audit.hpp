@@ -26,7 +26,7 @@
 
 #include "robot_model_options.hpp"
 #include "run_context.hpp"
-#include "simulate.hpp"
+#include "simulation_plan.hpp"
 
 namespace CLI {
 class App;

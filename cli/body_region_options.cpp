@@ -11,7 +11,7 @@
 #include "covopt/scene_file/targets.hpp"
 #include "errors.hpp"
 #include "quantity.hpp"
-#include "simulate.hpp"
+#include "simulation_plan.hpp"
 
 namespace covopt::cli {
 namespace {

@@ -12,7 +12,8 @@
 #include "covopt/report/body_regions_json.hpp"
 #include "body_region_options.hpp"
 #include "errors.hpp"
-#include "materials_command.hpp"
+#include "catalog_options.hpp"
+#include "output_options.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -123,7 +124,7 @@ void SetupBodyRegions(CLI::App* command, BodyRegionsOptions& options) {
 
   CLI::App* list = command->add_subcommand(
       "list", "List every area: its region's forces, its pressures, k and m_H");
-  list->add_flag("--json", options.json, "print a JSON array of the regions (SI units)");
+  AddJsonFlag(*list, options.json, "print a JSON array of the regions (SI units)");
   list->callback([&options] { options.action = BodyRegionsAction::kList; });
 
   CLI::App* show = command->add_subcommand(
@@ -133,7 +134,7 @@ void SetupBodyRegions(CLI::App* command, BodyRegionsOptions& options) {
                    "hands-fingers, chest, \"hands and fingers\"")
       ->type_name("NAME")
       ->required();
-  show->add_flag("--json", options.json, "print the region as one JSON object (SI units)");
+  AddJsonFlag(*show, options.json, "print the region as one JSON object (SI units)");
   show->callback([&options] { options.action = BodyRegionsAction::kShow; });
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "covopt/internal/text.hpp"
+#include "covopt/report/output_file.hpp"
 
 namespace covopt::cli {
 
@@ -36,20 +37,8 @@ decltype(auto) AsInputError(F&& f) {
   }
 }
 
-/// An output file or an external tool failed. The message names the file or the tool.
-/// `details`: what the tool itself printed (a PDF browser's last lines), shown under the
-/// one-line message as a block of lines each prefixed "  <tool>: " (CommandErrors::Failed).
-class OutputError : public std::runtime_error {
- public:
-  explicit OutputError(const std::string& message, std::string tool = {}, std::vector<std::string> details = {})
-      : std::runtime_error(message), tool_(std::move(tool)), details_(std::move(details)) {}
-  const std::string& tool() const noexcept { return tool_; }
-  const std::vector<std::string>& details() const noexcept { return details_; }
-
- private:
-  std::string tool_;
-  std::vector<std::string> details_;
-};
+/// An output file or an external tool failed (exit 1): the library's (covopt/report/output_file.hpp).
+using report::OutputError;
 
 /// A message with every overlong word (a run of 200+ bytes without a space: a
 /// 100,000-digit value, a pasted file) shown as its first 60 bytes (not cutting a UTF-8

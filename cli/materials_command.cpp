@@ -18,7 +18,9 @@
 #include "covopt/materials/material.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/scene_file/range.hpp"
+#include "catalog_options.hpp"
 #include "errors.hpp"
+#include "output_options.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -134,33 +136,8 @@ void PrintMaterialTable(std::ostream& out, const std::vector<const Material*>& r
   fmt::print(out, "Sources, notes and how E was obtained: covopt materials show NAME\n");
 }
 
-/// `text` broken at spaces into lines of at most `width` characters (longer words, such
-/// as URLs, stay whole).
-std::vector<std::string> Wrap(std::string_view text, std::size_t width) {
-  std::vector<std::string> lines;
-  std::string line;
-  std::size_t at = 0;
-  while (at < text.size()) {
-    const std::size_t space = text.find(' ', at);
-    const std::string_view word =
-        text.substr(at, space == std::string_view::npos ? std::string_view::npos : space - at);
-    if (!line.empty() && line.size() + 1 + word.size() > width) {
-      lines.push_back(line);
-      line.clear();
-    }
-    if (!word.empty()) {
-      if (!line.empty()) line += ' ';
-      line += word;
-    }
-    if (space == std::string_view::npos) break;
-    at = space + 1;
-  }
-  if (!line.empty()) lines.push_back(line);
-  return lines;
-}
-
 void ShowRow(std::ostream& out, std::string_view label, std::string_view value) {
-  const std::vector<std::string> lines = Wrap(value, 76);
+  const std::vector<std::string> lines = WrapWords(value, 76);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     fmt::print(out, "  {:<16} {}\n", i == 0 ? label : "", lines[i]);
   }
@@ -291,45 +268,6 @@ std::string DescribeFilter(const MaterialsOptions& o) {
 
 }  // namespace
 
-std::vector<std::string> WrapWords(std::string_view text, std::size_t width) { return Wrap(text, width); }
-
-void AddCatalogOptions(CLI::App& command, CatalogOptions& options) {
-  command
-      .add_option("--catalog", options.files,
-                  "a catalog file (TOML, the format of materials/data/catalog.toml) added to "
-                  "the built-in catalog; repeatable")
-      ->type_name("FILE.toml")
-      ->allow_extra_args(false)
-      ->group("Catalog");
-  command
-      .add_flag("--no-builtin", options.no_builtin,
-                "use only the --catalog files, not the built-in catalog")
-      ->group("Catalog");
-}
-
-materials::Catalog LoadCatalog(const CatalogOptions& options) {
-  if (options.no_builtin && options.files.empty()) {
-    throw InputError("--no-builtin leaves no catalog; add --catalog FILE");
-  }
-  try {
-    Catalog catalog = options.no_builtin ? Catalog() : Catalog::BuiltIn();
-    for (const std::string& file : options.files) catalog.Add(Catalog::FromTomlFile(file));
-    return catalog;
-  } catch (const materials::CatalogError& e) {
-    throw InputError(e.what());
-  }
-}
-
-std::string NoSuchMaterial(const materials::Catalog& catalog, std::string_view name) {
-  return catalog.MissingMaterialMessage(name);
-}
-
-materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
-                            std::string_view name) {
-  return AsInputError([&] {
-    return scene_file::ParseQuantityRange(text, spec, name, name == "--strength" ? "100kPa..1MPa" : "");
-  });
-}
 
 Json MaterialToJson(const Material& m) { return Json::parse(report::MaterialJson(m)); }
 
@@ -344,7 +282,7 @@ void SetupMaterials(CLI::App* materials, MaterialsOptions& options) {
 
   CLI::App* list = materials->add_subcommand("list", "List every material: name, family, E, ν, "
                                                      "density, strength and the basis of E");
-  list->add_flag("--json", options.json, "print a JSON array of objects (SI units)");
+  AddJsonFlag(*list, options.json, "print a JSON array of objects (SI units)");
   AddCatalogOptions(*list, options.catalog);
   list->callback([&options] { options.action = MaterialsAction::kList; });
 
@@ -365,7 +303,7 @@ void SetupMaterials(CLI::App* materials, MaterialsOptions& options) {
           "the material's name, ignoring case, e.g. \"polystyrene foam 27.6\"")
       ->type_name("NAME")
       ->required();
-  show->add_flag("--json", options.json, "print the material as one JSON object (SI units)");
+  AddJsonFlag(*show, options.json, "print the material as one JSON object (SI units)");
   AddCatalogOptions(*show, options.catalog);
   show->callback([&options] { options.action = MaterialsAction::kShow; });
 
@@ -414,7 +352,7 @@ void SetupMaterials(CLI::App* materials, MaterialsOptions& options) {
                  "let materials whose ν or density is unknown pass a --poisson or --density "
                  "range (by default they are left out)")
       ->group("Filters");
-  find->add_flag("--json", options.json, "print a JSON array of objects (SI units)");
+  AddJsonFlag(*find, options.json, "print a JSON array of objects (SI units)");
   AddCatalogOptions(*find, options.catalog);
   find->footer("Ranges are closed; a bare number is SI (Pa, kg/m³) and must be plausible\n"
                "(--modulus 10..100 is refused: write 10MPa..100MPa). Units: Pa, kPa, MPa, GPa;\n"

@@ -32,7 +32,7 @@
 #include <nlohmann/json.hpp>
 
 #include "covopt/materials/catalog.hpp"
-#include "quantity.hpp"
+#include "catalog_options.hpp"
 #include "run_context.hpp"
 
 namespace CLI {
@@ -41,44 +41,11 @@ class App;
 
 namespace covopt::cli {
 
-/// Where a catalog comes from (`materials` subcommands and `simulate --material`).
-struct CatalogOptions {
-  /// --catalog FILE, repeatable: catalog files added, in order, to the built-in catalog.
-  std::vector<std::string> files;
-  /// --no-builtin: use only the --catalog files.
-  bool no_builtin = false;
-
-  bool given() const { return !files.empty() || no_builtin; }
-};
-
-/// Adds --catalog and --no-builtin to `command`, storing into `options`.
-void AddCatalogOptions(CLI::App& command, CatalogOptions& options);
-
-/// The catalog the options describe.
-/// @throws InputError with the loader's message (file:line:column, key, what is allowed),
-///         or for --no-builtin without --catalog.
-materials::Catalog LoadCatalog(const CatalogOptions& options);
-
-/// "no material 'X' in the catalog; did you mean 'Y' or 'Z'?" (or "...; run 'covopt
-/// materials list' for the names" when nothing is close).
-std::string NoSuchMaterial(const materials::Catalog& catalog, std::string_view name);
-
-/// Reads a closed range "LO..HI", "LO.." or "..HI" of quantities of one kind (units as
-/// ParseQuantity reads them; a bare number is SI). A unit on one end and a bare nonzero
-/// number on the other is refused, since "10..100MPa" would mean 10 Pa to 100 MPa.
-/// @throws InputError naming `name`, e.g. "--modulus: expected a range LO..HI ...".
-materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
-                            std::string_view name);
-
 /// One catalog entry as JSON: name, family, youngs_modulus_Pa, poisson_ratio (null if
 /// unknown), density_kg_per_m3 (null if unknown), modulus_basis, source, note (null if
 /// none), crush_behaviour, compressive_strength_Pa (null unless known), strength_method,
 /// strength_source, defined_at.
 nlohmann::ordered_json MaterialToJson(const materials::Material& material);
-
-/// `text` broken at spaces into lines of at most `width` characters (longer words, such as
-/// URLs, stay whole): how `materials show` and `body-regions show` wrap long values.
-std::vector<std::string> WrapWords(std::string_view text, std::size_t width);
 
 /// Which `materials` subcommand ran.
 enum class MaterialsAction { kNone, kList, kShow, kFind };

@@ -23,12 +23,13 @@
 #include "covopt/materials/catalog.hpp"
 #include "covopt/optim/design.hpp"
 #include "covopt/optim/design_map.hpp"
+#include "covopt/report/design_csv.hpp"
 #include "covopt/report/design_json.hpp"
 #include "covopt/report/robust_json.hpp"
-#include "body_region_commands.hpp"
 #include "design_flag_ranges.hpp"
+#include "optimize_resolve.hpp"
 #include "errors.hpp"
-#include "materials_command.hpp"
+#include "catalog_options.hpp"
 #include "oracle_options.hpp"
 #include "output.hpp"
 #include "plot.hpp"
@@ -36,7 +37,9 @@
 #include "report_option.hpp"
 #include "scene_fields.hpp"
 #include "scene_file.hpp"
-#include "simulate.hpp"
+#include "simulation_plan.hpp"
+#include "output_options.hpp"
+#include "rule_options.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -60,174 +63,6 @@ forward sensitivities, or a central difference with braking or a neck).
 
 Exit codes: 0 an answer (also "no material is safe"); 1 the search failed;
 2 bad input.)";
-
-struct Resolved {
-  optim::DesignRequest request;
-  /// Scene inputs given as ranges LO..HI: the robust design (docs/model.md §11).
-  std::vector<SceneRange> ranges;
-  std::vector<std::string> warnings;  ///< about the input (the library adds its own)
-  int runners_up = 8;
-};
-
-double Parse(const std::optional<std::string>& text, const QuantitySpec& spec, std::string_view flag,
-             double fallback) {
-  return text ? ParseQuantity(*text, spec, flag) : fallback;
-}
-
-/// A whole number in [min, max] as typed after `flag` (no sign for min >= 0, no unit).
-unsigned long long ParseCount(const std::string& text, std::string_view flag, unsigned long long min,
-                              unsigned long long max) {
-  unsigned long long value = 0;
-  const char* const end = text.data() + text.size();
-  const auto [stop, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc() || stop != end || value < min || value > max) {
-    throw InputError(fmt::format("{}: expected a whole number in [{}, {}] (got '{}')", flag, min, max, text));
-  }
-  return value;
-}
-
-bool IsCoveringField(const SceneField& field) { return field.table == "covering"; }
-
-/// --oracle, --method and --rtol into the request's OracleOptions (the scene must be read).
-void ResolveOracle(const OptimizeOptions& o, Resolved& r) {
-  r.request.options.oracle = ResolveOracleFlags(o.oracle_flags, r.request.scene, "optimise", r.warnings);
-}
-
-/// The scene (file, flags, ranges, --urdf) into `r`, with the scene file's limits.
-void ResolveScene(const OptimizeOptions& o, Resolved& r) {
-  DesignOptions& d = r.request.options;
-  if (o.scene_file) {
-    SceneFileExtras extras;
-    for (const std::string& name : ApplySceneFile(*o.scene_file, r.request.scene, &extras)) {
-      if (name.rfind("covering.", 0) == 0) {
-        r.warnings.push_back(fmt::format("{} in {} is ignored: the covering is what optimize designs",
-                                         name, *o.scene_file));
-      }
-    }
-    for (const SceneRange& range : extras.ranges) {
-      if (range.field.rfind("covering.", 0) != 0) r.ranges.push_back(range);  // covering: warned above
-    }
-    if (extras.laceration_limit_Pa) d.limits.laceration_tensile_stress_Pa = *extras.laceration_limit_Pa;
-    if (extras.contusion_limit_J_per_m2) d.limits.contusion_energy_density_J_per_m2 = *extras.contusion_limit_J_per_m2;
-    if (extras.safety_factor) d.safety_factor = *extras.safety_factor;
-  }
-  std::vector<scene_file::SceneInput> inputs;  // the values, for the library's one resolution
-  for (const SceneField& field : SceneFields()) {
-    const auto typed = o.scene_values.find(field.dotted_name());
-    if (typed != o.scene_values.end()) {
-      std::erase_if(r.ranges, [&](const SceneRange& range) { return range.field == field.dotted_name(); });
-      if (IsRangeText(typed->second)) {
-        r.ranges.push_back(AsInputError([&] { return scene_file::ParseSceneRange(typed->second, field, field.flag); }));
-      } else {
-        inputs.push_back({typed->first, typed->second, ""});
-      }
-    }
-  }
-  scene_file::ResolvedScene resolved{r.request.scene, d.limits, d.safety_factor, nullptr};
-  ApplySceneFlagInputs(inputs, resolved);
-  r.request.scene = resolved.scene;
-  SetNominalValues(r.request.scene, r.ranges);
-  if (o.thresholds) r.request.scene.model.thresholds = ParseThresholds(*o.thresholds, "--thresholds");
-  if (o.head_area) r.request.scene.head.area = ParseHeadArea(*o.head_area, "--head-area");
-  if (o.robot_model.given()) {  // --urdf ...: robot.mass from the robot model
-    RobotModelMass mass = ResolveRobotModelMass(o.robot_model, o.scene_values.count(kRobotMassField) != 0);
-    r.request.scene.robot.mass_kg = mass.mass_kg;
-    std::erase_if(r.ranges, [](const SceneRange& range) { return range.field == kRobotMassField; });
-    r.warnings.insert(r.warnings.begin(), mass.notes.begin(), mass.notes.end());
-  }
-}
-
-/// The design flags (criterion, space, limits, safety factor, ν, step, --thickness) into `r`,
-/// each checked against its range with the flag's name.
-void ResolveDesignFlags(const OptimizeOptions& o, Resolved& r) {
-  DesignOptions& d = r.request.options;
-  namespace specs = covopt::quantity_specs;
-  d.allow_full_compression = o.allow_full_compression;
-  d.allow_crushing = o.allow_crushing;
-  d.allow_unknown_strength = o.allow_unknown_strength;
-  d.space.max_thickness_m = Parse(o.max_thickness, specs::kCoveringThickness, "--max-thickness", d.space.max_thickness_m);
-  d.space.min_modulus_Pa = Parse(o.min_modulus, specs::kCoveringModulus, "--min-modulus", d.space.min_modulus_Pa);
-  d.space.max_modulus_Pa = Parse(o.max_modulus, specs::kCoveringModulus, "--max-modulus", d.space.max_modulus_Pa);
-  d.safety_factor = Parse(o.safety_factor, specs::kSafetyFactor, "--safety-factor", d.safety_factor);
-  d.covering_poisson_ratio = Parse(o.covering_poisson, specs::kPoissonRatio, "--covering-poisson", d.covering_poisson_ratio);
-  d.thickness_step_m = Parse(o.thickness_step, specs::kThicknessStep, "--thickness-step", d.thickness_step_m);
-  d.limits.laceration_tensile_stress_Pa =
-      Parse(o.laceration_limit, specs::kLacerationLimit, "--laceration-limit", d.limits.laceration_tensile_stress_Pa);
-  d.limits.contusion_energy_density_J_per_m2 =
-      Parse(o.contusion_limit, specs::kContusionLimit, "--contusion-limit", d.limits.contusion_energy_density_J_per_m2);
-  // Range checks with the flag's name (the library would name its own fields).
-  auto require = [](bool ok, const std::string& message) {
-    if (!ok) throw InputError(message);
-  };
-  RequireMaxThickness(d.space.max_thickness_m, d.space.min_thickness_m, o.max_thickness);
-  require(d.space.min_modulus_Pa > 0 && d.space.max_modulus_Pa > d.space.min_modulus_Pa &&
-              d.space.max_modulus_Pa <= 1e13,
-          fmt::format("--min-modulus/--max-modulus must satisfy 0 < min < max <= 1e13 Pa (got {} Pa, {} Pa)",
-                      d.space.min_modulus_Pa, d.space.max_modulus_Pa));
-  require(d.safety_factor >= 1.0 && d.safety_factor <= 100.0,
-          fmt::format("--safety-factor must be in [1, 100] (got '{}')", o.safety_factor.value_or(fmt::format("{}", d.safety_factor))));
-  require(d.covering_poisson_ratio > -1.0 && d.covering_poisson_ratio <= 0.5,
-          fmt::format("--covering-poisson must be in (-1, 0.5] (got '{}')", o.covering_poisson.value_or("")));
-  RequireThicknessStep(d.thickness_step_m, o.thickness_step);
-  // The limits' one range (scene_file::CheckLimitValue), as simulate, scene files and Python.
-  const std::span<const LimitField> limit_fields = LimitFields();
-  CheckLimitValue(limit_fields[0], d.limits.laceration_tensile_stress_Pa, "--laceration-limit",
-                  fmt::format("'{}'", o.laceration_limit.value_or("")));
-  CheckLimitValue(limit_fields[1], d.limits.contusion_energy_density_J_per_m2, "--contusion-limit",
-                  fmt::format("'{}'", o.contusion_limit.value_or("")));
-  if (o.thickness) {
-    r.request.thickness_m = ParseQuantity(*o.thickness, specs::kCoveringThickness, "--thickness");
-    require(*r.request.thickness_m >= kMinLayerThickness_m && *r.request.thickness_m <= 1.0,
-            fmt::format("--thickness must be in [0.1 mm, 1 m] (got '{}'); for no covering use "
-                        "'covopt simulate --covering-thickness 0'",
-                        *o.thickness));
-    if (o.max_thickness) {
-      throw InputError(fmt::format("--thickness {} and --max-thickness {} conflict: --thickness fixes the thickness "
-                                   "(the least injury there), --max-thickness bounds the search for the thinnest; "
-                                   "give one",
-                                   *o.thickness, *o.max_thickness));
-    }
-  }
-}
-
-Resolved Resolve(const OptimizeOptions& o) {
-  Resolved r;
-  DesignOptions& d = r.request.options;
-  ResolveScene(o, r);
-  ResolveDesignFlags(o, r);
-  if (o.global_algorithm) {
-    const std::string& g = *o.global_algorithm;
-    if (g == "direct-l") d.global_algorithm = optim::NloptAlgorithm::kDirectL;
-    else if (g == "isres") d.global_algorithm = optim::NloptAlgorithm::kIsres;
-    else if (g == "mlsl") d.global_algorithm = optim::NloptAlgorithm::kMlsl;
-    else throw InputError(fmt::format("--global: expected direct-l, isres or mlsl (got '{}')", g));
-  }
-  if (o.seed) d.seed = ParseCount(*o.seed, "--seed", 0, std::numeric_limits<unsigned long>::max());
-  if (o.runners_up) r.runners_up = static_cast<int>(ParseCount(*o.runners_up, "--top", 0, 1000000));
-  if (o.threads) {  // 0 = every core, as simulate's sampling and sweep take it
-    const auto threads = ParseCount(*o.threads, "--threads", 0, 256);
-    d.threads = threads == 0 ? static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 256u))
-                             : static_cast<int>(threads);
-  }
-  ResolveOracle(o, r);
-
-  // The candidates: the built-in catalog and --catalog files (or only those, --no-builtin), filtered.
-  const materials::Catalog catalog = [&] {
-    try {
-      return LoadCatalog(o.catalog);
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      throw InputError(what.rfind("--", 0) == 0 ? what : "--catalog: " + what);
-    }
-  }();
-  try {
-    r.request.materials = optim::SelectCandidates(catalog, o.materials, o.families);
-  } catch (const std::invalid_argument& e) {
-    const std::string what = e.what();
-    throw InputError((what.rfind("no family", 0) == 0 ? "--family: " : "--material: ") + what);
-  }
-  return r;
-}
 
 std::string Mm(double metres) { return fmt::format("{:.2f} mm", metres * 1e3); }
 std::string MPa(double pascals) { return fmt::format("{:.3g} MPa", pascals * 1e-6); }
@@ -312,34 +147,6 @@ std::string CrushWords(const DesignScore& s, const CandidateOutcome& c) {
     case optim::CrushCheck::kNoMaterial: break;
   }
   return "";
-}
-
-/// The candidate table as CSV: every candidate, SI units in the header.
-std::string CandidatesCsv(const std::vector<CandidateOutcome>& candidates, const optim::DesignRule& rule) {
-  std::string csv =
-      "rank,material,family,youngs_modulus_Pa,poisson_ratio,poisson_assumed,crush_behaviour,compressive_strength_Pa,"
-      "admissible,thickness_m,min_safe_thickness_m,laceration_ratio,contusion_ratio,compression_ratio,crush_ratio,"
-      "governing_criterion,governing_ratio,margin,max_compressive_stress_Pa,fully_compressed\n";
-  const auto quoted = [](const std::string& text) { return CsvField(text); };
-  const auto number = [](double v) { return std::isfinite(v) ? fmt::format("{}", v) : std::string(); };
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const CandidateOutcome& c = candidates[i];
-    const optim::GoverningRatio g = c.score.governing(rule);
-    const bool crushes = c.material.crush_behaviour == materials::CrushBehaviour::kCrushes;
-    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", i + 1, quoted(c.material.name),
-                       quoted(c.material.family), number(c.material.youngs_modulus_Pa),
-                       number(c.material.poisson_ratio), c.material.poisson_assumed,
-                       materials::ToString(c.material.crush_behaviour),
-                       crushes ? number(c.material.compressive_strength_Pa) : "", c.safe,
-                       number(c.score.design.thickness_m),
-                       c.min_safe_thickness_m ? number(*c.min_safe_thickness_m) : "",
-                       number(c.score.laceration_ratio), number(c.score.contusion_ratio),
-                       number(c.score.compression_ratio),
-                       c.score.crush_check == optim::CrushCheck::kChecked ? number(c.score.crush_ratio) : "",
-                       optim::ToString(g.criterion), number(g.ratio), number(c.margin),
-                       number(c.score.peaks.max_compressive_stress_Pa), c.score.peaks.fully_compressed);
-  }
-  return csv;
 }
 
 /// "Scene ..." of the reports: the (nominal) scene, its covering to be designed.
@@ -707,51 +514,19 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
 
 void SetupOptimize(CLI::App* sub, OptimizeOptions& options) {
   sub->footer(std::string(kFooter));
-  sub->add_option("--scene", options.scene_file, "TOML scene file; flags override it")->type_name("FILE.toml");
-  for (const SceneField& field : SceneFields()) {
-    if (IsCoveringField(field)) continue;
-    const std::string key = field.dotted_name();
-    sub->add_option_function<std::string>(
-           std::string(field.flag), [&options, key](const std::string& v) { options.scene_values[key] = v; },
-           std::string(field.help))
-        ->type_name("VALUE")
-        ->group("Scene");
-  }
-  sub->add_option("--thresholds", options.thresholds, "phase thresholds: cumulative (default) or literal")
-      ->check(CLI::IsMember({"cumulative", "literal"}))
-      ->group("Scene");
-  sub->add_option("--head-area", options.head_area,
-                  "the struck area of the head, whose lowest published fracture force the peak force is judged against: " +
-                      HeadAreaChoices() + " (default frontal, the forehead; docs/model.md §7.1)")
-      ->type_name("AREA")
-      ->group("Scene");
+  AddSceneFieldOptions(*sub, options.scene_file, options.scene_values, options.thresholds, options.head_area, false);  // not the covering
   sub->add_option("--max-thickness", options.max_thickness, "thickest covering considered (default 50 mm)")
       ->type_name("LENGTH")->group("Design");
   sub->add_option("--min-modulus", options.min_modulus, "softest covering of the continuous search (default 0.1 MPa)")
       ->type_name("MODULUS")->group("Design");
   sub->add_option("--max-modulus", options.max_modulus, "stiffest covering of the continuous search (default 1 GPa)")
       ->type_name("MODULUS")->group("Design");
-  sub->add_option("--safety-factor", options.safety_factor, "ratios must stay <= 1/factor (default 1)")
-      ->type_name("X")->group("Design");
-  sub->add_flag("--allow-full-compression", options.allow_full_compression,
-                "the paper's criterion: a covering fully compressed at the peak may count as safe "
-                "(default: it may not, the robot must never reach bone through it)")
-      ->group("Design");
-  sub->add_flag("--allow-crushing", options.allow_crushing,
-                "a sacrificial liner: a material may be recommended although its peak compressive stress times the "
-                "safety factor exceeds its compressive strength (default: it may not; it would crush at the first "
-                "impact)")
-      ->group("Design");
-  sub->add_flag("--allow-unknown-strength", options.allow_unknown_strength,
-                "materials whose compressive strength is unknown may be recommended, each with a warning (default: "
-                "they are not, a design with them is unverified for crushing)")
-      ->group("Design");
-  sub->add_option("--laceration-limit", options.laceration_limit,
-                  "tensile stress that lacerates the scalp (default 1MPa)")
-      ->type_name("STRESS")->group("Design");
-  sub->add_option("--contusion-limit", options.contusion_limit,
-                  "energy density that bruises (default 2.52J/cm2)")
-      ->type_name("ENERGY/AREA")->group("Design");
+  AddRuleOptions(*sub, {.laceration_limit = &options.laceration_limit,
+                        .contusion_limit = &options.contusion_limit,
+                        .safety_factor = &options.safety_factor,
+                        .allow_full_compression = &options.allow_full_compression,
+                        .allow_crushing = &options.allow_crushing,
+                        .allow_unknown_strength = &options.allow_unknown_strength});
   sub->add_option("--thickness", options.thickness, "fixed thickness: find the least injury there instead")
       ->type_name("LENGTH")->group("Design");
   sub->add_option("--covering-poisson", options.covering_poisson, "ν of the continuous design (default 0.25)")
@@ -782,23 +557,18 @@ void SetupOptimize(CLI::App* sub, OptimizeOptions& options) {
       ->group("Uncertainty");
   sub->add_option("--top", options.runners_up, "rows of the candidate table (default 8)")->type_name("N")->group("Output");
   AddBodyRegionOptions(*sub, options.body);
-  sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the report")->group("Output");
+  AddJsonFlag(*sub, options.json, "print one JSON object (SI units) instead of the report");
   AddReportOption(*sub, options.report_file);
-  sub->add_option("--csv", options.csv, "write every candidate to FILE as CSV (SI units in the header)")
-      ->type_name("FILE")
-      ->group("Output");
-  sub->add_option("--plot", options.plot_file,
-                  "chart with gnuplot: the design map, the governing ratio over thickness x modulus with each "
-                  "criterion's limit and the chosen design (the head's design only)")
-      ->type_name("FILE.png|FILE.svg")
-      ->group("Output");
+  AddOutputFileOption(*sub, "--csv", options.csv, "write every candidate to FILE as CSV (SI units in the header)", "FILE");
+  AddOutputFileOption(*sub, "--plot", options.plot_file, "chart with gnuplot: the design map, the governing ratio over thickness x modulus with each "
+                  "criterion's limit and the chosen design (the head's design only)", "FILE.png|FILE.svg");
 }
 
 int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "optimize");
   Resolved r;
   try {
-    r = Resolve(options);
+    r = ResolveOptimize(options);
     Scene bare = r.request.scene;
     bare.covering.thickness_m = 0.0;
     (void)ImpactModel::FromScene(bare);  // scene range checks, naming the field
@@ -817,7 +587,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                                          *options.plot_file));
     }
   }
-  if (options.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
+  if (options.body.any()) {  // ISO/TS 15066 body regions (optimize_body_region.cpp)
     if (!r.ranges.empty()) {
       return errors.BadInput(fmt::format("{} '{}': scene ranges (uncertain inputs) are not taken with --body-region",
                                          r.ranges.front().source, r.ranges.front().text));
@@ -850,7 +620,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   };
   if (options.csv || options.plot_file) {
     try {
-      if (options.csv) WriteFileAtomically(*options.csv, CandidatesCsv(result.candidates, result.rule));
+      if (options.csv) WriteFileAtomically(*options.csv, report::DesignCandidatesCsv(result.candidates, result.rule));
       if (options.plot_file) RunGnuplot(*options.plot_file, design_map_chart());
     } catch (const OutputError& e) {
       return errors.Failed(e);

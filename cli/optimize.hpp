@@ -16,7 +16,8 @@
 #include <vector>
 
 #include "body_region_options.hpp"
-#include "materials_command.hpp"
+#include "covopt/optim/design.hpp"
+#include "catalog_options.hpp"
 #include "oracle_options.hpp"
 #include "robot_model_options.hpp"
 #include "run_context.hpp"
@@ -87,6 +88,13 @@ struct OptimizeOptions {
 /// Registers the options of the `optimize` subcommand `sub` (made by RunCli with its name and
 /// summary), storing what is typed into `options`, which must outlive the parse.
 void SetupOptimize(CLI::App* sub, OptimizeOptions& options);
+
+/// `optimize --body-region ... --speed V` (optimize_body_region.cpp): the covering that lets
+/// the robot reach V for every target. `head` is optimize's resolved request (the robot, the
+/// head, the candidates, the rule's flags), `warnings` its input warnings. Returns the exit code.
+int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignRequest& head,
+                          const std::vector<std::string>& warnings, const BodyRegionPlan& regions, std::ostream& out,
+                          std::ostream& err);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream& err);

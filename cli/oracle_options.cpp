@@ -11,7 +11,7 @@
 #include "covopt/core/time_integration.hpp"
 #include "errors.hpp"
 #include "quantity.hpp"
-#include "simulate.hpp"
+#include "simulation_plan.hpp"
 
 namespace covopt::cli {
 

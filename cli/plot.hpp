@@ -1,16 +1,9 @@
 #pragma once
 /// @file plot.hpp
-/// --plot FILE.png|FILE.svg of every command: the chart (covopt/report/charts.hpp, drawn by
-/// gnuplot in the report library) written to the file by the CLI's file writer (OutputFile,
-/// atomically), with gnuplot's scratch files registered for removal should Ctrl-C end the
-/// process (RegisterTemporaryFile). PNG uses the pngcairo terminal (gnuplot-nox has it),
-/// SVG the svg terminal.
+/// --plot FILE.png|FILE.svg of every command: the chart written to its file
+/// (covopt/report/chart_file.hpp).
 
-#include <filesystem>
-#include <functional>
-#include <optional>
-#include <string>
-
+#include "covopt/report/chart_file.hpp"
 #include "covopt/report/charts.hpp"
 #include "output.hpp"
 
@@ -22,27 +15,13 @@ using report::GnuplotQuoted;
 using report::GnuplotTerminal;
 using report::kGnuplotMissing;
 
+using report::PlotHistory;
+using report::RunGnuplot;
+using report::SignalSafeScratch;
+
 /// The format for a file name's extension (.png or .svg, any case); empty otherwise.
-std::optional<PlotFormat> PlotFormatFor(const std::filesystem::path& path);
-
-/// The observer that registers gnuplot's scratch files and directory with the CLI's signal
-/// handlers (RegisterTemporaryFile), so an interrupted chart leaves nothing behind.
-report::ScratchObserver SignalSafeScratch();
-
-/// Draws `chart` in the format of `path`'s extension (PNG unless .svg) and writes it to
-/// `path` by OutputFile's rules (checked before gnuplot runs; replaced atomically).
-/// @throws OutputError when gnuplot is missing or fails (with its messages), or the file
-///         cannot be written.
-void RunGnuplot(const std::filesystem::path& path, const report::GnuplotChart& chart);
-
-/// RunGnuplot for a script made here: `make_script(output_path)` sets its own terminal and
-/// `set output` to output_path.
-void RunGnuplot(const std::filesystem::path& path,
-                const std::function<std::string(const std::string& output_path)>& make_script);
-
-/// The chart of `simulate --plot` (report::HistoryChart) into `path`.
-/// @throws OutputError when the report has no history, gnuplot is missing or fails, or the
-///         file cannot be written.
-void PlotHistory(const std::filesystem::path& path, const SimulationReport& report);
+inline std::optional<PlotFormat> PlotFormatFor(const std::filesystem::path& path) {
+  return report::ChartFormatFor(path);
+}
 
 }  // namespace covopt::cli

@@ -13,6 +13,7 @@
 #include "covopt/robot/reflected_mass.hpp"
 #include "errors.hpp"
 #include "run_context.hpp"
+#include "output_options.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -60,7 +61,7 @@ std::string Direction(const Eigen::Vector3d& v) {
 void SetupRobot(CLI::App* sub, RobotOptions& options) {
   sub->footer(std::string(kFooter));
   AddRobotModelOptions(*sub, options.model, false, "Robot model");
-  sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")->group("Output");
+  AddJsonFlag(*sub, options.json);
   AddRobotTrajectoryOptions(*sub, options.trajectory);
 }
 

@@ -28,7 +28,9 @@
 #include "plot.hpp"
 #include "report_option.hpp"
 #include "scene_fields.hpp"
-#include "speed_limit.hpp"
+#include "limit_search_output.hpp"
+#include "rule_options.hpp"
+#include "output_options.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -318,23 +320,11 @@ void AddRobotTrajectoryOptions(CLI::App& sub, RobotTrajectoryOptions& options) {
   // Each sample brings the robot's mass and speed: refused with a message, hidden from --help.
   sub.get_option("--robot-mass")->group("");
   sub.get_option("--speed")->group("");
-  sub.add_option("--safety-factor", options.scene.safety_factor,
-                 "the ratios must stay <= 1/factor, 1-100 (default 1)")
-      ->type_name("RATIO")
-      ->group("Limits");
-  sub.add_flag("--allow-full-compression", options.allow_full_compression,
-               "the paper's criterion: a covering fully compressed at the peak may count as safe (default: "
-               "it may not)")
-      ->group("Limits");
-  sub.add_option("--csv", options.csv_file,
-                 "write the trajectory's samples as CSV ('-': to stdout instead of the table)")
-      ->type_name("FILE.csv|-")
-      ->group("Output");
-  sub.add_option("--plot", options.plot_file,
-                 "chart with gnuplot: speed and max safe speed over time, and the speed scaled by the safe "
-                 "speed scale")
-      ->type_name("FILE.png|FILE.svg")
-      ->group("Output");
+  AddRuleOptions(sub, {.safety_factor = &options.scene.safety_factor,
+                       .allow_full_compression = &options.allow_full_compression});
+  AddOutputFileOption(sub, "--csv", options.csv_file, "write the trajectory's samples as CSV ('-': to stdout instead of the table)", "FILE.csv|-");
+  AddOutputFileOption(sub, "--plot", options.plot_file, "chart with gnuplot: speed and max safe speed over time, and the speed scaled by the safe "
+                 "speed scale", "FILE.png|FILE.svg");
   AddReportOption(sub, options.report_file);
 }
 

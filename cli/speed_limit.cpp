@@ -10,11 +10,11 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include "body_region_commands.hpp"
 #include "errors.hpp"
 #include "output.hpp"
+#include "limit_search_output.hpp"
 #include "report_option.hpp"
-#include "sweep.hpp"
+#include "sweep_axis_option.hpp"
 #include "uncertainty_options.hpp"
 #include "covopt/optim/design.hpp"
 #include "covopt/optim/robust_design.hpp"
@@ -22,6 +22,8 @@
 #include "covopt/report/csv.hpp"
 #include "covopt/report/robust_json.hpp"
 #include "covopt/report/speed_limit_json.hpp"
+#include "output_options.hpp"
+#include "rule_options.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -141,30 +143,6 @@ report::GnuplotChart SpeedLimitChartOf(const SpeedLimitPlan& plan) {
   return report::SpeedLimitChart(input);
 }
 
-optim::DesignRule LimitRule(const optim::SpeedLimitOptions& options, const SimulationPlan& covering) {
-  // Crushing is checked where the strength is known; the notes say when it is not.
-  const bool unchecked = !CrushCheckOf(covering).notes.empty();
-  return {options.safety_factor, options.criterion(), options.allow_crushing, unchecked};
-}
-
-void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& options,
-                             const SimulationPlan& covering) {
-  const double sf = options.safety_factor;
-  fmt::print(out, "Limits     laceration {:g} MPa, contusion {:g} J/cm², safety factor {:g}{}\n",
-             options.limits.laceration_tensile_stress_Pa * 1e-6,
-             options.limits.contusion_energy_density_J_per_m2 * 1e-4, sf,
-             sf > 1 ? fmt::format(": ratios <= {:.4g}", 1.0 / sf) : std::string());
-  const optim::DesignRule rule = LimitRule(options, covering);
-  fmt::print(out, "Criterion  {}{}\n", rule.Describe(),
-             rule.unknown_strength_allowed && !rule.crushing_allowed ? " (this covering has none known: see the warnings)"
-                                                                      : "");
-}
-
-void PrintHeadScope(std::ostream& out, const optim::SpeedLimitOptions& options, const SimulationPlan& covering) {
-  fmt::print(out, "\nScope\n");
-  for (const std::string& line : optim::HeadVerdictScope(LimitRule(options, covering))) fmt::print(out, "  {}\n", line);
-}
-
 void SetupSpeedLimit(CLI::App* sub, SpeedLimitCommandOptions& options) {
   sub->footer(std::string(kFooter));
   AddSceneOptions(*sub, options.scene);
@@ -177,32 +155,19 @@ void SetupSpeedLimit(CLI::App* sub, SpeedLimitCommandOptions& options) {
                   "rows and one chart curve per material")
       ->type_name("NAME")
       ->group("Scene");
-  sub->add_option("--safety-factor", options.scene.safety_factor,
-                  "the ratios must stay <= 1/factor, 1-100 (default 1)")
-      ->type_name("RATIO")
-      ->group("Limits");
-  sub->add_flag("--allow-crushing", options.allow_crushing,
-                "a sacrificial liner: the material's crushing does not limit the speed (default: a --material "
-                "of known strength must not crush, SF x peak compressive stress <= its strength)");
-  sub->add_flag("--allow-full-compression", options.allow_full_compression,
-                "the paper's criterion: a covering fully compressed at the peak may count as safe (default: "
-                "it may not)")
-      ->group("Limits");
+  AddRuleOptions(*sub, {.safety_factor = &options.scene.safety_factor,
+                        .allow_full_compression = &options.allow_full_compression,
+                        .allow_crushing = &options.allow_crushing});
   sub->add_option("--solve-for", options.solve_for,
                   "speed (default): the max safe speed per --robot-mass; mass: the max safe reflected mass per "
                   "--speed")
       ->type_name("speed|mass")
       ->group("Limits");
   AddOracleOptions(*sub, options.oracle, "the impacts of the search", "Oracle");
-  sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")->group("Output");
-  sub->add_option("--csv", options.csv_file, "write the rows as CSV ('-': to stdout instead of the table)")
-      ->type_name("FILE.csv|-")
-      ->group("Output");
-  sub->add_option("--plot", options.plot_file,
-                  "chart with gnuplot: max safe speed over reflected mass, one curve per --material and the "
-                  "bare robot")
-      ->type_name("FILE.png|FILE.svg")
-      ->group("Output");
+  AddJsonFlag(*sub, options.json);
+  AddOutputFileOption(*sub, "--csv", options.csv_file, "write the rows as CSV ('-': to stdout instead of the table)", "FILE.csv|-");
+  AddOutputFileOption(*sub, "--plot", options.plot_file, "chart with gnuplot: max safe speed over reflected mass, one curve per --material and the "
+                  "bare robot", "FILE.png|FILE.svg");
   AddReportOption(*sub, options.report_file);
 }
 
@@ -376,7 +341,7 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
 
 int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "speed-limit");
-  if (options.scene.body.any()) {  // ISO/TS 15066 body regions (body_region_commands.hpp)
+  if (options.scene.body.any()) {  // ISO/TS 15066 body regions (speed_limit_body_region.cpp)
     return RunWithBodyRegions(options.scene.body, errors, [&](const BodyRegionPlan& regions) {
       return RunBodyRegionSpeedLimit(options, regions, out, err);
     });

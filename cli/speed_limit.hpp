@@ -27,7 +27,9 @@
 #include "covopt/report/speed_limit_json.hpp"
 #include "oracle_options.hpp"
 #include "plot.hpp"
-#include "simulate.hpp"
+#include "body_region_options.hpp"
+#include "limit_search_output.hpp"
+#include "simulation_plan.hpp"
 
 namespace CLI {
 class App;
@@ -86,17 +88,13 @@ void SetupSpeedLimit(CLI::App* sub, SpeedLimitCommandOptions& options);
 /// @throws InputError naming the flag, the value and what is allowed.
 SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options);
 
-/// Prints the table's "Limits" and "Criterion" lines (speed-limit and robot --trajectory).
-/// The Limits and Criterion lines of a limit search on `covering` (its crush check).
-void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& options,
-                             const SimulationPlan& covering);
-/// The rule a limit search on `covering` applies (crushing checked where its strength is known).
-optim::DesignRule LimitRule(const optim::SpeedLimitOptions& options, const SimulationPlan& covering);
-/// The Scope block: what the verdicts cover (optim::HeadVerdictScope).
-void PrintHeadScope(std::ostream& out, const optim::SpeedLimitOptions& options, const SimulationPlan& covering);
-
 /// The Safety-Map chart of the plan (report::SpeedLimitChart; computes its curves).
 report::GnuplotChart SpeedLimitChartOf(const SpeedLimitPlan& plan);
+
+/// `speed-limit --body-region ...` (speed_limit_body_region.cpp): one row per target, bare and
+/// with the covering, one block per covering (--material) and robot mass. Returns the exit code.
+int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyRegionPlan& regions,
+                            std::ostream& out, std::ostream& err);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, std::ostream& err);

@@ -26,20 +26,31 @@
 #include <fmt/ranges.h>
 
 #include "covopt/report/csv.hpp"
-#include "body_region_commands.hpp"
 #include "errors.hpp"
-#include "materials_command.hpp"
+#include "sweep_axis_option.hpp"
+#include "catalog_options.hpp"
 #include "output.hpp"
-#include "charts/sweep_charts.hpp"
+#include "covopt/report/sweep_charts.hpp"
 #include "plot.hpp"
 #include "progress.hpp"
-#include "sweep_csv.hpp"
+#include "covopt/report/sweep_csv.hpp"
 #include "quantity.hpp"
+#include "output_options.hpp"
 
 namespace covopt::cli {
 namespace {
 
-constexpr std::size_t kDefaultCount = 50;
+using report::ChartPoint;
+using report::ChartPointOf;
+using report::Display;
+using report::FindResultColumn;
+using report::PlotInput;
+using report::ResultColumn;
+using report::SweepCsvWriter;
+using report::SweepFamiliesScript;
+using report::SweepMapScript;
+using report::SweepResultColumns;
+
 constexpr int kMaxThreads = 4096;
 
 constexpr std::string_view kFooter = R"(An axis is NAME=LO..HI[:lin|:log][:N] (N values, default 50, linear unless
@@ -62,35 +73,6 @@ with the library's message; the others carry the numeric keys of 'simulate
 
 Exit codes: 0 done (also with invalid points); 1 an output could not be written
 (e.g. gnuplot missing); 2 bad input.)";
-
-std::string_view Trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
-/// The flag without its dashes: "--robot-mass" -> "robot-mass".
-std::string_view AxisName(const SceneField& field) {
-  std::string_view flag = field.flag;
-  while (!flag.empty() && flag.front() == '-') flag.remove_prefix(1);
-  return flag;
-}
-
-std::string AxisNames() {
-  std::string names;
-  for (const SceneField& field : SceneFields()) {
-    if (!names.empty()) names += ", ";
-    names += AxisName(field);
-  }
-  return names;
-}
-
-const SceneField* FindField(std::string_view name) {
-  for (const SceneField& field : SceneFields()) {
-    if (AxisName(field) == name || field.dotted_name() == name) return &field;
-  }
-  return nullptr;
-}
 
 /// "0.1 MPa .. 1 GPa, 200 values, log", "3 values: 1 kg, 5 kg, fixed" or, for a mixed
 /// list, "11 values: 2 mm .. 500 mm (10, log), flat".
@@ -122,130 +104,6 @@ std::string PointName(const SweepAxisArgument& x, const SweepAxisArgument* y, st
 }
 
 }  // namespace
-
-SweepAxisArgument ParseSweepAxis(std::string_view text, std::string_view flag) {
-  const auto fail = [&](const std::string& problem) -> void {
-    throw InputError(fmt::format("{}: {} (got '{}')", flag, problem, text));
-  };
-  const std::size_t eq = text.find('=');
-  if (eq == std::string_view::npos) {
-    fail("expected NAME=LO..HI[:lin|:log][:N] or NAME=V1,V2,... (items may mix ranges and "
-         "values), e.g. covering-thickness=0..50mm:101");
-  }
-  const std::string_view name = Trim(text.substr(0, eq));
-  const std::string_view spec = Trim(text.substr(eq + 1));
-  SweepAxisArgument axis;
-  axis.field = FindField(name);
-  if (axis.field == nullptr) {
-    fail(fmt::format("unknown quantity '{}'; the quantities are {}", name, AxisNames()));
-  }
-  axis.name = std::string(AxisName(*axis.field));
-  axis.spec = std::string(spec);
-  const QuantitySpec& quantity = axis.field->spec;
-  if (spec.empty()) fail(fmt::format("no values after '{}='", name));
-
-  // A value's own message names the item; in a list, also say where it is.
-  const auto in_spec = [&](const auto& parse) {
-    try {
-      return parse();
-    } catch (const std::invalid_argument& e) {
-      throw InputError(fmt::format("{} in '{}'", e.what(), text));
-    }
-  };
-
-  // A range LO..HI[:lin|:log][:N], appended to the values.
-  const auto add_range = [&](std::string_view item) {
-    SweepAxisPart part;
-    part.range = true;
-    part.count = kDefaultCount;
-    std::size_t colon = item.find(':');
-    const std::string_view range_text = Trim(item.substr(0, colon));
-    bool count_given = false, spacing_given = false;
-    while (colon != std::string_view::npos) {
-      const std::size_t next = item.find(':', colon + 1);
-      const std::string_view option = Trim(item.substr(
-          colon + 1, next == std::string_view::npos ? std::string_view::npos : next - colon - 1));
-      colon = next;
-      if (option == "lin" || option == "log") {
-        if (spacing_given) fail("give the spacing (lin or log) once per range");
-        spacing_given = true;
-        part.log = option == "log";
-        continue;
-      }
-      std::size_t n = 0;
-      const auto [end, ec] = std::from_chars(option.data(), option.data() + option.size(), n);
-      if (ec != std::errc() || end != option.data() + option.size() || option.empty()) {
-        fail(fmt::format("after the range, expected ':lin', ':log' or a count ':N', not ':{}'",
-                         option));
-      }
-      if (count_given) fail("give the count :N once per range");
-      count_given = true;
-      if (n < 2 || n > kMaxAxisValues) {
-        fail(fmt::format("the count after ':' must be in 2..{}", kMaxAxisValues));
-      }
-      part.count = n;
-    }
-    const materials::Range range = in_spec([&] { return ParseRange(range_text, quantity, flag); });
-    if (!range.min || !range.max) fail("a sweep range needs both ends, LO..HI");
-    const double lo = *range.min, hi = *range.max;
-    if (!std::isfinite(lo) || !std::isfinite(hi)) {
-      fail("a range needs finite ends; list 'fixed' or 'flat' as a value instead, e.g. "
-           "robot-mass=5kg..50kg:10,fixed");
-    }
-    if (!(lo < hi)) fail("the range's low end must be below its high end");
-    if (part.log && !(lo > 0.0)) fail("a :log range needs a low end above 0");
-    if (axis.values.size() + part.count > kMaxAxisValues) {
-      fail(fmt::format("more than {} values", kMaxAxisValues));
-    }
-    part.low = lo;
-    part.high = hi;
-    const std::size_t first = axis.values.size();
-    for (std::size_t i = 0; i < part.count; ++i) {
-      const double k = static_cast<double>(i), n = static_cast<double>(part.count - 1);
-      axis.values.push_back(
-          part.log ? std::pow(10.0, std::log10(lo) + (std::log10(hi) - std::log10(lo)) * k / n)
-                   : lo + (hi - lo) * k / n);
-    }
-    axis.values[first] = lo;
-    axis.values.back() = hi;
-    axis.parts.push_back(part);
-  };
-
-  // A comma list whose items are ranges or single values; one range alone is the old form.
-  std::string_view rest = spec;
-  while (true) {
-    const std::size_t comma = rest.find(',');
-    const std::string_view item = Trim(rest.substr(0, comma));
-    if (item.empty()) fail("empty value in the list");
-    if (item.find("..") != std::string_view::npos) {
-      add_range(item);
-    } else {
-      if (axis.values.size() + 1 > kMaxAxisValues) {
-        fail(fmt::format("more than {} values", kMaxAxisValues));
-      }
-      const double value = in_spec([&] { return ParseQuantity(item, quantity, flag); });
-      axis.values.push_back(value);
-      axis.parts.push_back(SweepAxisPart{value, value, 1, false, false});
-    }
-    if (comma == std::string_view::npos) break;
-    rest.remove_prefix(comma + 1);
-  }
-  // A log axis when a range asked for it and every finite value can sit on it.
-  const bool any_log = std::any_of(axis.parts.begin(), axis.parts.end(),
-                                   [](const SweepAxisPart& p) { return p.log; });
-  const bool all_positive = std::all_of(axis.values.begin(), axis.values.end(),
-                                        [](double v) { return !std::isfinite(v) || v > 0.0; });
-  axis.log = any_log && all_positive;
-  return axis;
-}
-
-void CheckGridSize(const SweepAxisArgument& x, const SweepAxisArgument* y) {
-  try {
-    covopt::CheckSweepSize(x.values.size(), y ? std::optional(y->values.size()) : std::nullopt);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(e.what());
-  }
-}
 
 covopt::SweepSpec MakeSweepSpec(const SweepAxisArgument& x, const SweepAxisArgument* y,
                                 const SimulationPlan& plan) {
@@ -280,17 +138,11 @@ void SetupSweep(CLI::App* sub, SweepCommandOptions& options) {
   AddSceneOptions(*sub, options.scene);
   AddBodyRegionOptions(*sub, options.scene.body);
 
-  sub->add_option("--csv", options.csv_file,
-                  "write one row per point (SI units); '-' prints it on stdout instead of the "
-                  "summary")
-      ->type_name("FILE.csv|-")
-      ->group("Output");
-  sub->add_option("--plot", options.plot_file,
-                  "chart with gnuplot: worst-ratio map with both limit contours and the "
+  AddOutputFileOption(*sub, "--csv", options.csv_file, "write one row per point (SI units); '-' prints it on stdout instead of the "
+                  "summary", "FILE.csv|-");
+  AddOutputFileOption(*sub, "--plot", options.plot_file, "chart with gnuplot: worst-ratio map with both limit contours and the "
                   "full-compression boundary, or line families when an axis has at most 8 "
-                  "values")
-      ->type_name("FILE.png|FILE.svg")
-      ->group("Output");
+                  "values", "FILE.png|FILE.svg");
   sub->add_option("--plot-quantity", options.plot_quantity,
                   "what the chart shows instead of the injury ratios: a CSV result column, "
                   "e.g. max_compressive_stress_Pa, peak_force_N, contact_duration_s")
@@ -330,8 +182,8 @@ SweepRun ResolveSweep(const SweepCommandOptions& options) {
     const std::string key = axis->field->dotted_name();
     const auto typed = options.scene.scene_values.find(key);
     if (typed != options.scene.scene_values.end()) {
-      throw InputError(fmt::format("{} '{}' sets {}, which {} sweeps; give it one way",
-                                   axis->field->flag, typed->second, key,
+      throw InputError(fmt::format("--{} '{}' sets {}, which {} sweeps; give it one way",
+                                   axis->field->name, typed->second, key,
                                    axis == &run.x ? "--x" : "--y"));
     }
     if (options.scene.material &&
@@ -431,9 +283,65 @@ void PrintSweepSummary(std::ostream& out, const SweepRun& run, const covopt::Swe
   if (!written.empty()) fmt::print(out, "Wrote   {}\n", fmt::join(written, ", "));
 }
 
+namespace {
+
+/// The scene without the swept quantities, for the summary and the chart titles.
+std::string SweptSceneLine(const SweepRun& run) {
+  std::vector<std::string_view> swept_fields;
+  std::vector<std::string> swept_names{run.x.field->dotted_name()};
+  if (run.y) swept_names.push_back(run.y->field->dotted_name());
+  for (const std::string& name : swept_names) swept_fields.push_back(name);
+  std::string scene_line = SceneHeadline(run.plan.scene, swept_fields);
+  if (const auto details = SceneDetailsBeyondHeadline(run.plan.scene, swept_fields); !details.empty()) {
+    scene_line += fmt::format("; {}", fmt::join(details, ", "));
+  }
+  return scene_line;
+}
+
+/// Where the CSV streams: a file by the one file writer (output.hpp), or stdout ("--csv -").
+struct SweepCsvOutput {
+  std::optional<OutputFile> file;
+  std::optional<SweepCsvWriter> writer;
+};
+
+/// Opens the CSV before the sweep (an unwritable file costs no computation). @throws OutputError.
+void OpenSweepCsv(SweepCsvOutput& csv, const SweepCommandOptions& options, const SweepRun& run, std::ostream& out) {
+  if (!options.csv_file) return;
+  if (*options.csv_file != "-") {
+    csv.file.emplace(*options.csv_file);
+    csv.writer.emplace(run.x, run.y_axis(), [&file = csv.file](std::string_view text) { file->Write(text); });
+  } else {
+    csv.writer.emplace(run.x, run.y_axis(), [&out](std::string_view text) {
+      out.write(text.data(), static_cast<std::streamsize>(text.size()));
+      if (!out) throw OutputError("cannot write the results to standard output");
+    });
+  }
+}
+
+/// The map (two axes of more than kMaxFamilies values) or the families of lines into `path`.
+/// @throws OutputError.
+void DrawSweepChart(const std::string& path, const SweepRun& run, std::span<const ChartPoint> chart,
+                    const std::string& scene_line) {
+  PlotInput input;
+  input.quantity = run.quantity;
+  input.x = &run.x;
+  input.y = run.y_axis();
+  input.points = chart;
+  input.limits = run.plan.limits;
+  input.scene_line = scene_line;
+  input.safety_factor = run.plan.safety_factor;
+  input.format = *run.plot_format;
+  const bool map = run.y && run.x.values.size() > kMaxFamilies && run.y->values.size() > kMaxFamilies;
+  RunGnuplot(path, [&](const std::string& output_path) {
+    return map ? SweepMapScript(input, output_path) : SweepFamiliesScript(input, output_path);
+  });
+}
+
+}  // namespace
+
 int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "sweep");
-  if (options.scene.body.any()) {  // ISO/TS 15066 body regions (body_region_sweep.cpp)
+  if (options.scene.body.any()) {  // ISO/TS 15066 body regions (sweep_body_region.cpp)
     return RunWithBodyRegions(options.scene.body, errors, [&](const BodyRegionPlan& regions) {
       return RunBodyRegionSweep(options, regions, out, err);
     });
@@ -453,33 +361,18 @@ int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream
   const ResultColumn* quantity = run.quantity;
   const SweepAxisArgument* y_axis = run.y_axis();
 
-  // The scene without the swept quantities, for the summary and the chart titles.
-  std::vector<std::string_view> swept_fields;
-  std::vector<std::string> swept_names{x.field->dotted_name()};
-  if (y) swept_names.push_back(y->field->dotted_name());
-  for (const std::string& name : swept_names) swept_fields.push_back(name);
-  std::string scene_line = SceneHeadline(plan.scene, swept_fields);
-  if (const auto details = SceneDetailsBeyondHeadline(plan.scene, swept_fields); !details.empty()) {
-    scene_line += fmt::format("; {}", fmt::join(details, ", "));
-  }
+  const std::string scene_line = SweptSceneLine(run);
 
   // Outputs that can fail are checked or opened before the sweep: a missing gnuplot or an
   // unwritable CSV file costs no computation and leaves no file.
   const bool csv_to_stdout = options.csv_file && *options.csv_file == "-";
   std::vector<std::string> written;
   if (plot_format && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
-  std::optional<OutputFile> csv_file;  // cli/output.hpp: the one file writer
-  std::optional<SweepCsvWriter> csv;
+  SweepCsvOutput csv_output;
+  std::optional<OutputFile>& csv_file = csv_output.file;
+  std::optional<SweepCsvWriter>& csv = csv_output.writer;
   try {
-    if (options.csv_file && !csv_to_stdout) {
-      csv_file.emplace(*options.csv_file);
-      csv.emplace(x, y_axis, [&csv_file](std::string_view text) { csv_file->Write(text); });
-    } else if (csv_to_stdout) {
-      csv.emplace(x, y_axis, [&out](std::string_view text) {
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        if (!out) throw OutputError("cannot write the results to standard output");
-      });
-    }
+    OpenSweepCsv(csv_output, options, run, out);
   } catch (const OutputError& e) {
     return errors.Failed(e);
   }
@@ -522,19 +415,7 @@ int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream
 
   try {
     if (plot_format) {
-      PlotInput input;
-      input.quantity = quantity;
-      input.x = &x;
-      input.y = y_axis;
-      input.points = chart;
-      input.limits = plan.limits;
-      input.scene_line = scene_line;
-      input.safety_factor = plan.safety_factor;
-      input.format = *plot_format;
-      const bool map = y && x.values.size() > kMaxFamilies && y->values.size() > kMaxFamilies;
-      RunGnuplot(*options.plot_file, [&](const std::string& output_path) {
-        return map ? SweepMapScript(input, output_path) : SweepFamiliesScript(input, output_path);
-      });
+      DrawSweepChart(*options.plot_file, run, chart, scene_line);
       written.push_back(*options.plot_file);
     }
   } catch (const OutputError& e) {

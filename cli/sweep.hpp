@@ -37,7 +37,9 @@
 
 #include "covopt/core/sweep.hpp"
 #include "scene_fields.hpp"
-#include "simulate.hpp"
+#include "sweep_axis_option.hpp"
+#include "body_region_options.hpp"
+#include "simulation_plan.hpp"
 
 namespace CLI {
 class App;
@@ -70,42 +72,9 @@ struct SweepCommandOptions {
   bool no_progress = false;
 };
 
-/// One item of an axis spec: a range LO..HI of `count` values, or a single value.
-struct SweepAxisPart {
-  double low = 0.0;        ///< SI; the value itself for a single value
-  double high = 0.0;       ///< SI; equals `low` for a single value
-  std::size_t count = 1;   ///< values the item gives (1 for a single value)
-  bool log = false;        ///< a :log range
-  bool range = false;      ///< LO..HI rather than a single value
-};
-
-/// One swept quantity.
-struct SweepAxisArgument {
-  const SceneField* field = nullptr;  ///< the scene field it sets
-  std::string name;                   ///< the flag without dashes: "covering-modulus"
-  /// SI, in the order typed (each range expanded in place); kFixed/kFlat where listed as
-  /// 'fixed'/'flat'. Charts draw them sorted; the CSV keeps this order.
-  std::vector<double> values;
-  /// Drawn on a log axis: some range is :log and every finite value is above 0.
-  bool log = false;
-  std::vector<SweepAxisPart> parts;  ///< the items of the spec, in order
-  std::string spec;                  ///< as typed after '='
-};
-
-/// An axis with at most this many values is drawn as a family of lines.
-inline constexpr std::size_t kMaxFamilies = 8;
 /// Limits on the grid: values per axis and points in total (the library's, covopt/core/sweep.hpp).
 inline constexpr std::size_t kMaxAxisValues = covopt::kMaxSweepAxisValues;
 inline constexpr std::size_t kMaxSweepPoints = covopt::kMaxSweepPoints;
-
-/// Reads "NAME=SPEC".
-/// @param flag "--x" or "--y", for messages.
-/// @throws InputError naming the flag, the value and what is allowed.
-SweepAxisArgument ParseSweepAxis(std::string_view text, std::string_view flag);
-
-/// Refuses a grid over the library's caps (covopt::CheckSweepSize), before any point.
-/// @throws InputError "the grid has 1000 x 2000 = 2000000 points; at most 1000000 are allowed".
-void CheckGridSize(const SweepAxisArgument& x, const SweepAxisArgument* y);
 
 /// The library's sweep of these axes over `plan`'s scene, limits and safety factor: what
 /// `covopt sweep` computes.
@@ -119,6 +88,11 @@ std::size_t SweepBlockRows(std::size_t points, unsigned threads);
 /// Registers the options of the `sweep` subcommand `sub` (made by RunCli with its name and
 /// summary), storing what is typed into `options`.
 void SetupSweep(CLI::App* sub, SweepCommandOptions& options);
+
+/// `sweep --body-region R` (one ISO region; sweep_body_region.cpp): the body contact's ratios
+/// per grid point, as CSV columns (or a summary), computed point by point on the exact path; no chart.
+int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan& regions, std::ostream& out,
+                       std::ostream& err);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream& err);

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "covopt/core/scene_fields.hpp"
+#include "covopt/report/tornado_chart.hpp"
 #include "errors.hpp"
 #include "plot.hpp"
 #include "quantity.hpp"
@@ -269,29 +270,7 @@ void PrintElasticities(std::ostream& out, const optim::ElasticityTable& table) {
 
 void PlotTornado(const std::string& path, const optim::ElasticityTable& table, bool svg) {
   RunGnuplot(path, [&](const std::string& output) {
-    const std::size_t n = table.rows.size();
-    std::string script = GnuplotTerminal(svg ? PlotFormat::kSvg : PlotFormat::kPng, 900,
-                                         static_cast<int>(160 + 36 * n));
-    script += fmt::format("set output {}\n", GnuplotQuoted(output));
-    script += "set title 'Sensitivities: elasticity d ln r / d ln x of each injury ratio'\n";
-    script += "set xlabel 'elasticity [-]'\nset grid xtics\nset key bottom right\nset xzeroaxis\n";
-    script += fmt::format("set yrange [-0.7:{}]\n", static_cast<double>(n) - 0.3);
-    std::string tics;
-    for (std::size_t i = 0; i < n; ++i) {
-      tics += fmt::format("{}{} {}", i == 0 ? "" : ", ", GnuplotQuoted(table.rows[i].field), n - 1 - i);
-    }
-    script += fmt::format("set ytics ({})\n", tics);
-    script += "$D << EOD\n";
-    for (std::size_t i = 0; i < n; ++i) {
-      script += fmt::format("{} {:.9g} {:.9g}\n", n - 1 - i, table.rows[i].laceration, table.rows[i].contusion);
-    }
-    script += "EOD\n";
-    script += "set style fill solid 0.75 border -1\n";
-    script += "plot $D using ($2/2):($1+0.2):($2<0?$2:0):($2<0?0:$2):($1):($1+0.4) with boxxyerror lc rgb '#c0392b' "
-              "title 'laceration ratio', \\\n"
-              "     $D using ($3/2):($1-0.2):($3<0?$3:0):($3<0?0:$3):($1-0.4):($1) with boxxyerror lc rgb '#2e86c1' "
-              "title 'contusion ratio'\n";
-    return script;
+    return report::TornadoChart(table, svg ? PlotFormat::kSvg : PlotFormat::kPng, output);
   });
 }
 

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "covopt/core/work_precision.hpp"
-#include "simulate.hpp"
+#include "simulation_plan.hpp"
 
 namespace CLI {
 class App;
@@ -62,9 +62,6 @@ struct WorkPrecisionOptions {
 /// Reads "1e-3..1e-12" (decades between, inclusive) or "1e-4,1e-6,1e-8" into tolerances
 /// in [1e-14, 1e-2]. @throws InputError naming --tolerances.
 std::vector<double> ParseToleranceLadder(const std::string& text);
-
-/// The CSV of `covopt workprecision --csv`: a header, then one row per point.
-std::string WorkPrecisionCsv(const std::vector<covopt::WorkPrecisionPoint>& points);
 
 /// Registers the options of the `workprecision` subcommand `sub` (made by RunCli with its name
 /// and summary).

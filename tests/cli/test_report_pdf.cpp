@@ -353,7 +353,7 @@ TEST_CASE("report pdf: SIGTERM while the browser prints ends the process, leavin
   CHECK_FALSE(ProcessAlive(helper));
   CHECK(Entries(tmp.path()).empty());
   // No new file: the previous report as it was. (The OutputFile's temporary beside it is
-  // removed by cli/output.cpp's signal handlers, installed on its first use in a process, which
+  // removed by the file writer's signal handlers (report/src/output_file.cpp), installed on its first use in a process, which
   // an earlier test case in this process may have left out in favour of Catch's handlers;
   // test_output_files.cpp proves that removal on the built program.)
   std::vector<std::string> left;

@@ -25,7 +25,7 @@
 #include "cli_test_support.hpp"
 #include "plot.hpp"
 #include "sweep.hpp"
-#include "sweep_csv.hpp"
+#include "covopt/report/sweep_csv.hpp"
 
 using Catch::Matchers::Contains;
 using covopt::cli::testing::ReadFile;
@@ -107,7 +107,7 @@ TEST_CASE("sweep CSV has the swept quantities, status, the result columns and on
           "[sweep]") {
   const Csv csv = SweepCsv({"--x", "speed=1m/s..3m/s:5", "--y", "covering-thickness=5mm,10mm,20mm"});
   std::vector<std::string> expected = {"speed", "covering-thickness", "status"};
-  for (const auto column : covopt::cli::SweepResultColumns()) expected.emplace_back(column);
+  for (const auto column : covopt::report::SweepResultColumns()) expected.emplace_back(column);
   expected.insert(expected.end(), {"warnings", "error"});
   CHECK(csv.header == expected);
   REQUIRE(csv.rows.size() == 15);
@@ -131,7 +131,7 @@ TEST_CASE("sweep result columns are the numeric keys of simulate --json plus the
     if (value.is_number() || value.is_boolean()) numeric_keys.insert(key);
   }
   std::set<std::string> columns;
-  for (const auto column : covopt::cli::SweepResultColumns()) columns.emplace(column);
+  for (const auto column : covopt::report::SweepResultColumns()) columns.emplace(column);
   std::set<std::string> expected = numeric_keys;
   expected.insert({"laceration_ratio", "contusion_ratio", "worst_ratio"});
   CHECK(columns == expected);
@@ -146,7 +146,7 @@ TEST_CASE("a sweep point agrees exactly with simulate --json at the same scene",
                         "--covering-modulus", "12MPa"});
   REQUIRE(run.exit_code == 0);
   const json j = json::parse(run.out);
-  for (const auto column : covopt::cli::SweepResultColumns()) {
+  for (const auto column : covopt::report::SweepResultColumns()) {
     const std::string key(column);
     INFO(key);
     const double value = csv.Number(2, key);
@@ -476,7 +476,7 @@ TEST_CASE("the sweep CSV streams: the same text to a file as to stdout, in bound
   const auto y = covopt::cli::ParseSweepAxis(axes[3], "--y");
   std::string text;
   std::size_t pieces = 0;
-  covopt::cli::SweepCsvWriter writer(x, &y, [&](std::string_view piece) {
+  covopt::report::SweepCsvWriter writer(x, &y, [&](std::string_view piece) {
     ++pieces;
     CHECK(piece.size() < (std::size_t{1} << 20) + 4096);
     CHECK(piece.back() == '\n');

@@ -1,4 +1,4 @@
-#include "charts/sweep_charts.hpp"
+#include "covopt/report/sweep_charts.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "quantity.hpp"
+#include "covopt/core/quantity.hpp"
 
-namespace covopt::cli {
+namespace covopt::report {
 namespace {
 
 using covopt::SweepRow;
@@ -90,6 +90,84 @@ std::string TitleText(const std::vector<std::string>& lines) {
   return fmt::format("{}", fmt::join(lines, "\\n"));
 }
 
+/// The map's notes: a limit or the full compression on no side of its line, invalid points.
+std::vector<std::string> MapNotes(const PlotInput& in) {
+  const double at_limit = 1.0 / in.safety_factor;  // the ratio at the (derated) limit
+  std::size_t invalid = 0;
+  bool lac_below = false, lac_above = false, con_below = false, con_above = false;
+  bool full_below = false, full_above = false;
+  for (std::size_t i = 0; i < in.points.size(); ++i) {
+    const ChartPoint& p = in.points[i];
+    if (!p.valid) {
+      ++invalid;
+      continue;
+    }
+    (p.laceration_ratio <= at_limit ? lac_below : lac_above) = true;
+    (p.contusion_ratio <= at_limit ? con_below : con_above) = true;
+    (p.fully_compressed ? full_above : full_below) = true;
+  }
+  std::vector<std::string> notes;
+  if (!(lac_below && lac_above)) {
+    notes.push_back(fmt::format("laceration ratio {} {:.4g} everywhere", lac_above ? ">" : "<=",
+                                at_limit));
+  }
+  if (!(con_below && con_above)) {
+    notes.push_back(fmt::format("contusion ratio {} {:.4g} everywhere", con_above ? ">" : "<=",
+                                at_limit));
+  }
+  if (!(full_below && full_above)) {
+    notes.push_back(full_above ? "fully compressed everywhere" : "never fully compressed");
+  }
+  if (invalid > 0) notes.push_back(fmt::format("{} invalid points left blank", invalid));
+  return notes;
+}
+
+/// The map's data blocks: $grid (x, y, laceration ratio, contusion ratio, the coloured value,
+/// compression ratio; a blank line between x values) and $stipple (the fully compressed points
+/// of a coarse subgrid).
+std::string MapDataBlocks(const PlotInput& in, const std::vector<std::size_t>& x_order,
+                          const std::vector<std::size_t>& y_order) {
+  const SweepAxisArgument& x = *in.x;
+  const SweepAxisArgument& y = *in.y;
+  const double sx = DisplayFor(x.field->spec.kind).scale;
+  const double sy = DisplayFor(y.field->spec.kind).scale;
+  std::string s;
+  const double qscale = in.quantity ? DisplayFor(in.quantity->name).scale : 1.0;
+  // Columns: x, y, laceration ratio, contusion ratio, the coloured value, compression ratio.
+  s += "$grid << EOD\n";
+  for (const std::size_t ix : x_order) {
+    for (const std::size_t iy : y_order) {
+      const ChartPoint& p = At(in, ix, iy);
+      const bool ok = p.valid;
+      s += fmt::format("{} {} {} {} {} {}\n", x.values[ix] / sx, y.values[iy] / sy,
+                       PlotNumber(ok ? p.laceration_ratio : NAN),
+                       PlotNumber(ok ? p.contusion_ratio : NAN),
+                       PlotNumber(ok ? (in.quantity ? p.quantity / qscale : p.worst_ratio) : NAN),
+                       PlotNumber(ok ? p.compression_ratio : NAN));
+    }
+    s += "\n";
+  }
+  s += "EOD\n";
+  // Dots on the fully compressed side, on a coarse subgrid (about 25 x 25) so the colours
+  // stay readable. An empty block still gives the key entry.
+  s += "$stipple << EOD\n";
+  const std::size_t x_step = std::max<std::size_t>(1, x_order.size() / 25);
+  const std::size_t y_step = std::max<std::size_t>(1, y_order.size() / 25);
+  bool stippled = false;
+  for (std::size_t i = 0; i < x_order.size(); i += x_step) {
+    for (std::size_t j = 0; j < y_order.size(); j += y_step) {
+      const ChartPoint& p = At(in, x_order[i], y_order[j]);
+      if (p.valid && p.fully_compressed) {
+        s += fmt::format("{} {}\n", x.values[x_order[i]] / sx, y.values[y_order[j]] / sy);
+        stippled = true;
+      }
+    }
+  }
+  if (!stippled) s += "NaN NaN\n";
+  s += "EOD\n";
+  return s;
+}
+
 }  // namespace
 
 std::string AxisLabel(const SweepAxisArgument& axis) {
@@ -127,33 +205,8 @@ std::string SweepMapScript(const PlotInput& in, const std::string& output) {
   const double sy = DisplayFor(y.field->spec.kind).scale;
   const std::vector<std::size_t> x_order = ChartOrder(x);
   const std::vector<std::size_t> y_order = ChartOrder(y);
-  std::size_t invalid = 0;
-  bool lac_below = false, lac_above = false, con_below = false, con_above = false;
-  bool full_below = false, full_above = false;
   const double at_limit = 1.0 / in.safety_factor;  // the ratio at the (derated) limit
-  for (std::size_t i = 0; i < in.points.size(); ++i) {
-    const ChartPoint& p = in.points[i];
-    if (!p.valid) {
-      ++invalid;
-      continue;
-    }
-    (p.laceration_ratio <= at_limit ? lac_below : lac_above) = true;
-    (p.contusion_ratio <= at_limit ? con_below : con_above) = true;
-    (p.fully_compressed ? full_above : full_below) = true;
-  }
-  std::vector<std::string> notes;
-  if (!(lac_below && lac_above)) {
-    notes.push_back(fmt::format("laceration ratio {} {:.4g} everywhere", lac_above ? ">" : "<=",
-                                at_limit));
-  }
-  if (!(con_below && con_above)) {
-    notes.push_back(fmt::format("contusion ratio {} {:.4g} everywhere", con_above ? ">" : "<=",
-                                at_limit));
-  }
-  if (!(full_below && full_above)) {
-    notes.push_back(full_above ? "fully compressed everywhere" : "never fully compressed");
-  }
-  if (invalid > 0) notes.push_back(fmt::format("{} invalid points left blank", invalid));
+  const std::vector<std::string> notes = MapNotes(in);
 
   std::vector<std::string> title{
       fmt::format("covopt sweep: {} over {} and {}",
@@ -194,39 +247,7 @@ std::string SweepMapScript(const PlotInput& in, const std::string& output) {
     s += "set palette defined (0 '#1a7f3c', 0.5 '#8fd18b', 0.98 '#f4f1bb', 1.02 '#fdd49e', "
          "1.5 '#f0793d', 2 '#a50f15')\n";
   }
-  const double qscale = in.quantity ? DisplayFor(in.quantity->name).scale : 1.0;
-  // Columns: x, y, laceration ratio, contusion ratio, the coloured value, compression ratio.
-  s += "$grid << EOD\n";
-  for (const std::size_t ix : x_order) {
-    for (const std::size_t iy : y_order) {
-      const ChartPoint& p = At(in, ix, iy);
-      const bool ok = p.valid;
-      s += fmt::format("{} {} {} {} {} {}\n", x.values[ix] / sx, y.values[iy] / sy,
-                       PlotNumber(ok ? p.laceration_ratio : NAN),
-                       PlotNumber(ok ? p.contusion_ratio : NAN),
-                       PlotNumber(ok ? (in.quantity ? p.quantity / qscale : p.worst_ratio) : NAN),
-                       PlotNumber(ok ? p.compression_ratio : NAN));
-    }
-    s += "\n";
-  }
-  s += "EOD\n";
-  // Dots on the fully compressed side, on a coarse subgrid (about 25 x 25) so the colours
-  // stay readable. An empty block still gives the key entry.
-  s += "$stipple << EOD\n";
-  const std::size_t x_step = std::max<std::size_t>(1, x_order.size() / 25);
-  const std::size_t y_step = std::max<std::size_t>(1, y_order.size() / 25);
-  bool stippled = false;
-  for (std::size_t i = 0; i < x_order.size(); i += x_step) {
-    for (std::size_t j = 0; j < y_order.size(); j += y_step) {
-      const ChartPoint& p = At(in, x_order[i], y_order[j]);
-      if (p.valid && p.fully_compressed) {
-        s += fmt::format("{} {}\n", x.values[x_order[i]] / sx, y.values[y_order[j]] / sy);
-        stippled = true;
-      }
-    }
-  }
-  if (!stippled) s += "NaN NaN\n";
-  s += "EOD\n";
+  s += MapDataBlocks(in, x_order, y_order);
   // The limit contours and the full-compression boundary, traced by gnuplot into data blocks.
   s += fmt::format("set contour base\nset cntrparam levels discrete {}\nunset surface\n",
                    at_limit);
@@ -362,4 +383,4 @@ std::string SweepFamiliesScript(const PlotInput& in, const std::string& output) 
 }
 
 
-}  // namespace covopt::cli
+}  // namespace covopt::report

@@ -12,12 +12,12 @@
 #include <fmt/format.h>
 
 #include "covopt/core/sweep.hpp"
-#include "sweep.hpp"
+#include "covopt/report/sweep_axis.hpp"
 
-namespace covopt::cli {
+namespace covopt::report {
 
 /// The result columns and how each is read; the names are the keys of simulate --json
-/// (cli/output.cpp ToJson), which tests/cli/test_sweep.cpp checks.
+/// (report::SimulationJson), which tests/cli/test_sweep.cpp checks.
 struct ResultColumn {
   std::string_view name;
   double (*value)(const covopt::SweepRow&);
@@ -67,4 +67,4 @@ class SweepCsvWriter {
   fmt::memory_buffer buffer_;
 };
 
-}  // namespace covopt::cli
+}  // namespace covopt::report

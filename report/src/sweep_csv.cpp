@@ -1,4 +1,4 @@
-#include "sweep_csv.hpp"
+#include "covopt/report/sweep_csv.hpp"
 
 #include <array>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 #include "covopt/report/csv.hpp"
 
-namespace covopt::cli {
+namespace covopt::report {
 namespace {
 
 using covopt::SweepRow;
@@ -33,7 +33,7 @@ void AppendCsvWarnings(fmt::memory_buffer& out, std::span<const covopt::Validity
     if (i > 0) joined += " | ";
     joined += warnings[i].message;
   }
-  report::AppendCsvField(out, joined, report::CsvQuote::kAlways);
+  AppendCsvField(out, joined, CsvQuote::kAlways);
 }
 
 double Optional(const std::optional<double>& v) {
@@ -120,7 +120,7 @@ void SweepCsvWriter::Write(std::span<const SweepRow> rows) {
     buffer_.push_back(',');
     if (row.valid) AppendCsvWarnings(buffer_, row.warnings);
     buffer_.push_back(',');
-    report::AppendCsvField(buffer_, row.error, report::CsvQuote::kAlways);
+    AppendCsvField(buffer_, row.error, CsvQuote::kAlways);
     buffer_.push_back('\n');
     if (buffer_.size() >= kFlushBytes) Flush();
   }
@@ -134,4 +134,4 @@ void SweepCsvWriter::Flush() {
   buffer_.clear();
 }
 
-}  // namespace covopt::cli
+}  // namespace covopt::report

@@ -1,4 +1,4 @@
-#include "plot.hpp"
+#include "covopt/report/chart_file.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -6,35 +6,34 @@
 
 #include <fmt/format.h>
 
-#include "errors.hpp"
-#include "output.hpp"
+#include "covopt/report/output_file.hpp"
 
-namespace covopt::cli {
+namespace covopt::report {
 
-std::optional<PlotFormat> PlotFormatFor(const std::filesystem::path& path) {
+std::optional<ChartFormat> ChartFormatFor(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".png") return PlotFormat::kPng;
-  if (extension == ".svg") return PlotFormat::kSvg;
+  if (extension == ".png") return ChartFormat::kPng;
+  if (extension == ".svg") return ChartFormat::kSvg;
   return std::nullopt;
 }
 
-report::ScratchObserver SignalSafeScratch() {
+ScratchObserver SignalSafeScratch() {
   return {[](const std::string& path) { return RegisterTemporaryFile(path); },
           [](int slot) { UnregisterTemporaryFile(slot); }};
 }
 
-void RunGnuplot(const std::filesystem::path& path, const report::GnuplotChart& chart) {
+void RunGnuplot(const std::filesystem::path& path, const GnuplotChart& chart) {
   if (!FindOnPath("gnuplot")) throw OutputError(std::string(kGnuplotMissing));
   // The target is checked (and its temporary made) before gnuplot runs, by the one file
   // writer's rules; gnuplot draws into its scratch directory, whose file is then copied in.
   OutputFile file(path);
-  report::GnuplotChart named = chart;
+  GnuplotChart named = chart;
   named.title = path.string();  // gnuplot's errors name the file
   std::vector<std::string> drawn;
   try {
-    drawn = report::DrawCharts({&named, 1}, PlotFormatFor(path).value_or(PlotFormat::kPng), SignalSafeScratch());
+    drawn = DrawCharts({&named, 1}, ChartFormatFor(path).value_or(ChartFormat::kPng), SignalSafeScratch());
   } catch (const std::runtime_error& e) {
     throw OutputError(e.what());
   }
@@ -44,8 +43,8 @@ void RunGnuplot(const std::filesystem::path& path, const report::GnuplotChart& c
 
 void RunGnuplot(const std::filesystem::path& path,
                 const std::function<std::string(const std::string& output_path)>& make_script) {
-  report::GnuplotChart chart;
-  chart.script = [&make_script](PlotFormat, const std::string& output_path) { return make_script(output_path); };
+  GnuplotChart chart;
+  chart.script = [&make_script](ChartFormat, const std::string& output_path) { return make_script(output_path); };
   RunGnuplot(path, chart);
 }
 
@@ -53,7 +52,7 @@ void PlotHistory(const std::filesystem::path& path, const SimulationReport& repo
   if (report.result.history.empty()) {
     throw OutputError(fmt::format("cannot plot '{}': the result has no history", path.string()));
   }
-  RunGnuplot(path, report::HistoryChart(report));
+  RunGnuplot(path, HistoryChart(report));
 }
 
-}  // namespace covopt::cli
+}  // namespace covopt::report

@@ -11,11 +11,11 @@
 
 #include "covopt/core/scene.hpp"
 #include "covopt/core/sweep.hpp"
-#include "plot.hpp"
-#include "sweep.hpp"
-#include "sweep_csv.hpp"
+#include "covopt/report/charts.hpp"
+#include "covopt/report/sweep_axis.hpp"
+#include "covopt/report/sweep_csv.hpp"
 
-namespace covopt::cli {
+namespace covopt::report {
 
 /// An axis's label: "covering-thickness [mm]".
 std::string AxisLabel(const SweepAxisArgument& axis);
@@ -51,7 +51,7 @@ struct PlotInput {
   /// A point is safe when safety_factor x ratio <= 1: the limit lines sit at ratio
   /// 1/safety_factor (the derated limits).
   double safety_factor = 1.0;
-  PlotFormat format = PlotFormat::kPng;
+  ChartFormat format = ChartFormat::kPng;
 };
 
 /// The 2-D map of a two-axis sweep into `output` (gnuplot script).
@@ -61,4 +61,4 @@ std::string SweepMapScript(const PlotInput& in, const std::string& output);
 /// `output` (gnuplot script).
 std::string SweepFamiliesScript(const PlotInput& in, const std::string& output);
 
-}  // namespace covopt::cli
+}  // namespace covopt::report

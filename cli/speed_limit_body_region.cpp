@@ -1,0 +1,229 @@
+#include "speed_limit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "covopt/core/quantity.hpp"
+#include "covopt/report/body_contact_json.hpp"
+#include "covopt/report/csv.hpp"
+#include "covopt/scene_file/targets.hpp"
+#include "body_region_output.hpp"
+#include "errors.hpp"
+#include "output.hpp"
+#include "report_option.hpp"
+
+namespace covopt::cli {
+
+using namespace body_text;
+
+namespace {
+
+/// speed-limit's plan, checked for the body-region table. @throws std::invalid_argument (InputError).
+SpeedLimitPlan ResolveRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyRegionPlan& regions) {
+  if (options.solve_for && *options.solve_for == "mass") {
+    throw InputError("--solve-for mass with --body-region: the body-region table solves for the speed; drop one");
+  }
+  if (options.plot_file) throw InputError("--plot with --body-region: the table has no chart; drop --plot");
+  SpeedLimitPlan plan = ResolveSpeedLimit(options);
+  // A braking robot's limits are bracketed on the time path, which --method/--rtol/--max-steps set.
+  if (options.oracle.given() && !plan.coverings.front().scene.robot_brakes()) {
+    throw InputError("--oracle/--method/--rtol with --body-region: the body-region limits are in closed form on the "
+                     "energy balance; drop them");
+  }
+  for (const SimulationPlan& covering : plan.coverings) {
+    if (!covering.ranges.empty()) {
+      throw InputError(fmt::format("{} '{}': scene ranges (uncertain inputs) are not taken with --body-region",
+                                   covering.ranges.front().source, covering.ranges.front().text));
+    }
+    CheckBodyRegionScene(regions, covering);
+  }
+  return plan;
+}
+
+/// The input warnings of every covering (each once) and the bare robot's missing contact area.
+std::vector<std::string> RegionSpeedLimitWarnings(const SpeedLimitPlan& plan, const BodyRegionPlan& regions) {
+  std::vector<std::string> warnings;
+  for (const SimulationPlan& covering : plan.coverings) {
+    for (std::string& w : InputWarnings(covering)) {
+      if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(std::move(w));
+    }
+  }
+  warnings.insert(warnings.end(), regions.notes.begin(), regions.notes.end());
+  if (const auto note = scene_file::BarePressureNote(regions)) warnings.push_back(AsFlags(*note));
+  return warnings;
+}
+
+/// The text table: the robot, the contact, the criterion, one block of rows per material and
+/// robot mass, the scope and the warnings.
+void PrintRegionSpeedLimitTable(std::ostream& out, const SpeedLimitPlan& plan, const BodyRegionPlan& regions,
+                                const std::vector<report::BodyRegionTableRow>& rows, const optim::DesignRule& rule,
+                                const std::vector<std::string>& warnings) {
+  const SimulationPlan& first = plan.coverings.front();
+  const BodyContactScene first_scene = BodyContactSceneOf(first.scene, regions);
+  const std::vector<materials::BodyLimits> iso = regions.IsoLimits();
+  fmt::print(out, "Robot      {}\n",
+             plan.coverings.size() == 1 ? RobotSurface(first_scene, MaterialName(first))
+                                        : fmt::format("{}; covering {} of {} materials, one block each",
+                                                      std::isinf(first_scene.robot_radius_m)
+                                                          ? std::string("flat robot")
+                                                          : "robot radius " + Mm(first_scene.robot_radius_m),
+                                                      Mm(first_scene.covering.thickness_m), plan.coverings.size()));
+  fmt::print(out, "Contact    {}\n", ContactText(regions));
+  if (first_scene.robot_brakes()) {
+    fmt::print(out, "Braking    {}: each ISO limit bracketed on it from the unbraked one\n", BrakingText(first_scene));
+  }
+  fmt::print(out, "Criterion  {}\n", BodyCriterion(rule, regions.has_head()));
+  fmt::print(out, "Speeds     the largest safe impact speed, bare and with the covering; 'binds' is the limit reached\n");
+  std::string block;
+  for (const report::BodyRegionTableRow& row : rows) {
+    const std::string key = fmt::format("{}|{}", row.material, row.robot_mass_kg);
+    if (key != block) {
+      block = key;
+      fmt::print(out, "\n{}robot mass {}\n", row.material.empty() ? "" : "Material " + row.material + ", ",
+                 Mass(row.robot_mass_kg));
+      fmt::print(out, "  {:<18} {:<34} {:>7} {:>8}  {:>9}  {:<16} {:>11}  {:<16} {:>7}\n", "region", "area",
+                 "F_lim N", "p_lim", "bare m/s", "bare binds", "covered m/s", "covered binds", "gain");
+    }
+    const auto speed = [](const std::optional<double>& v, const std::string& status) {
+      if (!v) return std::string("none");
+      return fmt::format("{}{:.4f}", status == "safe-up-to-search-limit" ? ">=" : "", *v);
+    };
+    fmt::print(out, "  {:<18} {:<34} {:>7} {:>8}  {:>9}  {:<16} {:>11}  {:<16} {:>7}\n", row.region,
+               row.area.empty() ? "-" : row.area,
+               row.force_limit_N ? fmt::format("{:.0f}", *row.force_limit_N) : std::string("-"),
+               row.pressure_limit_Pa ? fmt::format("{:.0f}", *row.pressure_limit_Pa * 1e-4) : std::string("-"),
+               speed(row.bare_max_speed_m_per_s, row.bare_status), row.bare_limited_by,
+               row.has_covering ? speed(row.covered_max_speed_m_per_s, row.covered_status) : std::string("-"),
+               row.has_covering ? row.covered_limited_by : std::string("-"),
+               row.gain ? fmt::format("{:.2f}×", *row.gain) : std::string("-"));
+  }
+  fmt::print(out, "\nScope      (p_lim in N/cm²)\n");
+  if (iso.size() <= 3) {
+    for (const materials::BodyLimits& limits : iso) fmt::print(out, "  {}\n", limits.Describe());
+  } else if (!iso.empty()) {
+    fmt::print(out, "  ISO/TS 15066:2016 Table A.2, {} contact{}: each row's F_lim and p_lim; Table A.3's k_H and m_H\n",
+               ToString(regions.contact),
+               regions.contact == ContactType::kTransient ? " (2× quasi-static; not permitted: skull-forehead, face)"
+                                                          : " (quasi-static)");
+  }
+  if (regions.has_head()) {
+    fmt::print(out, "  head: {}\n", HeadCriteriaName());
+    for (const std::string& line :
+         optim::HeadVerdictScope(LimitRule(plan.options, first))) {
+      fmt::print(out, "    {}\n", line);
+    }
+  }
+  for (const std::string& w : warnings) fmt::print(out, "Warning: {}\n", w);
+  if (plan.csv_file) fmt::print(out, "Wrote      {}\n", *plan.csv_file);
+}
+
+}  // namespace
+
+int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyRegionPlan& regions,
+                            std::ostream& out, std::ostream& err) {
+  const CommandErrors errors(err, "speed-limit");
+  SpeedLimitPlan plan;
+  try {
+    plan = ResolveRegionSpeedLimit(options, regions);
+  } catch (const std::invalid_argument& e) {
+    return errors.BadInput(e.what());
+  }
+
+  const std::vector<materials::BodyLimits> iso = regions.IsoLimits();
+  std::vector<report::BodyRegionTableRow> rows;
+  const std::string head_criteria = HeadCriteriaName();
+  optim::DesignRule rule;
+  try {
+    for (const SimulationPlan& covering : plan.coverings) {
+      const optim::BodyRegionOptions body_options =
+          BodyRegionOptionsOf(covering, options.allow_full_compression, options.allow_crushing);
+      rule = body_options.rule;
+      const std::string material = MaterialName(covering).value_or("");
+      for (const double mass : plan.values) {
+        BodyContactScene scene = BodyContactSceneOf(covering.scene, regions);
+        scene.robot_mass_kg = mass;
+        const std::vector<optim::BodyRegionSpeedLimitRow> table =
+            iso.empty() ? std::vector<optim::BodyRegionSpeedLimitRow>{}
+                        : optim::BodyRegionSpeedLimitTable(scene, iso, body_options, plan.options.oracle.time_path);
+        // A limit the time path could not answer (a braking robot) is no answer at all: exit 1.
+        for (const optim::BodyRegionSpeedLimitRow& row : table) {
+          for (const optim::BodyRegionSpeedLimit* limit : {&row.bare, row.covered ? &*row.covered : nullptr}) {
+            if (limit && limit->status == optim::SpeedLimitStatus::kEvaluationFailed) {
+              return errors.Failed("the speed limit could not be evaluated: " + limit->message);
+            }
+          }
+        }
+        std::size_t next = 0;
+        for (const BodyTarget& target : regions.targets) {
+          report::BodyRegionTableRow row;
+          if (target.is_head()) {
+            optim::SpeedLimitOptions head_options = plan.options;
+            head_options.covering_compressive_strength_Pa = CrushCheckOf(covering).compressive_strength_Pa;
+            Scene head = covering.scene;
+            head.robot.mass_kg = mass;
+            std::optional<optim::SpeedLimit> covered;
+            if (head.covering.thickness_m > 0.0) covered = optim::MaxSafeSpeed(head, head_options);
+            head.covering.thickness_m = 0.0;
+            head_options.covering_compressive_strength_Pa = 0.0;
+            const optim::SpeedLimit bare = optim::MaxSafeSpeed(head, head_options);
+            for (const optim::SpeedLimit* limit : {&bare, covered ? static_cast<const optim::SpeedLimit*>(&*covered) : nullptr}) {
+              if (limit && limit->status == optim::SpeedLimitStatus::kEvaluationFailed) {
+                return errors.Failed("the head's speed limit could not be evaluated: " + limit->message);
+              }
+            }
+            row = report::HeadTableRow(mass, bare, covered, head_criteria);
+          } else {
+            row = report::TableRow(mass, table.at(next++));
+          }
+          row.material = material;
+          rows.push_back(std::move(row));
+        }
+      }
+    }
+  } catch (const std::invalid_argument& e) {
+    return errors.BadInput(AttributeError(e.what(), plan.coverings.front()));
+  }
+
+  const std::vector<std::string> warnings = RegionSpeedLimitWarnings(plan, regions);
+  const auto csv_text = [&] {
+    std::string text;
+    report::AppendCsvRecord(text, report::BodyRegionTableColumns());
+    for (const report::BodyRegionTableRow& row : rows) report::AppendCsvRecord(text, report::BodyRegionTableCsvCells(row));
+    return text;
+  };
+  try {
+    if (plan.csv_file && *plan.csv_file != "-") WriteFileAtomically(*plan.csv_file, csv_text());
+  } catch (const OutputError& e) {
+    return errors.Failed(e);
+  }
+  const SimulationPlan& first = plan.coverings.front();
+  const BodyContactScene first_scene = BodyContactSceneOf(first.scene, regions);
+  if (plan.json || options.report_file) {
+    try {
+      PrintAndReport(out, plan.json,
+                     report::BodyRegionSpeedLimitJson(first_scene,
+                                                      plan.coverings.size() == 1 ? MaterialName(first) : std::nullopt,
+                                                      BodyCriterion(rule, regions.has_head()), rule.safety_factor,
+                                                      rows, warnings),
+                     options.run, options.report_file, report::ReportKind::kSpeedLimit, nullptr);
+    } catch (const OutputError& e) {
+      return errors.Failed(e);
+    }
+  }
+  if (!plan.json && plan.csv_file && *plan.csv_file == "-") {
+    out << csv_text();
+  } else if (!plan.json) {
+    PrintRegionSpeedLimitTable(out, plan, regions, rows, rule, warnings);
+  }
+  out.flush();
+  if (!out) return errors.Failed("cannot write the results to standard output");
+  return 0;
+}
+
+}  // namespace covopt::cli

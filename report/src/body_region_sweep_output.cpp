@@ -1,0 +1,112 @@
+#include "covopt/report/body_region_sweep_output.hpp"
+
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "covopt/core/quantity.hpp"
+#include "covopt/report/csv.hpp"
+
+namespace covopt::report {
+namespace {
+
+std::string AxisText(const SweepAxisArgument& axis, double value) {
+  if (std::isinf(value) && value > 0) return axis.field->spec.allow_flat ? "flat" : "fixed";
+  return fmt::format("{}", value);
+}
+
+std::string Number(double value) { return std::isfinite(value) ? fmt::format("{}", value) : std::string(); }
+
+constexpr std::string_view kColumns[] = {"peak_force_N",      "peak_pressure_Pa", "covering_deflection_m",
+                                         "fully_compressed",  "force_ratio",      "pressure_ratio",
+                                         "compression_ratio", "crush_ratio",      "governing",
+                                         "governing_ratio",   "admissible",       "error"};
+
+/// The cells of a point with a verdict, after the axes.
+std::vector<std::string> VerdictCells(const optim::BodyRegionJudgement& v) {
+  const BodyContactResult& c = v.contact;
+  return {Number(c.peak_force_N),
+          c.peak_pressure_Pa ? Number(*c.peak_pressure_Pa) : std::string(),
+          Number(c.covering_deflection_m),
+          std::string(c.fully_compressed ? "1" : "0"),
+          Number(v.force_ratio),
+          v.pressure_ratio ? Number(*v.pressure_ratio) : std::string(),
+          Number(v.compression_ratio),
+          v.crush_check == optim::CrushCheck::kChecked ? Number(v.crush_ratio) : std::string(),
+          std::string(optim::ToString(v.governing)),
+          Number(v.governing_ratio),
+          std::string(v.admissible ? "1" : "0"),
+          std::string()};
+}
+
+}  // namespace
+
+BodyRegionSweepTable LayOutBodyRegionSweep(std::span<const optim::BodyRegionSweepPoint> grid,
+                                           const SweepAxisArgument& x, const SweepAxisArgument* y) {
+  BodyRegionSweepTable t;
+  std::vector<std::string> header{x.name};
+  if (y) header.push_back(y->name);
+  header.insert(header.end(), std::begin(kColumns), std::end(kColumns));
+  AppendCsvRecord(t.csv, header);
+  const std::vector<double> y_values = y ? y->values : std::vector<double>{0.0};
+  for (std::size_t iy = 0; iy < y_values.size(); ++iy) {
+    const double yv = y_values[iy];
+    for (std::size_t ix = 0; ix < x.values.size(); ++ix) {
+      const double xv = x.values[ix];
+      const optim::BodyRegionSweepPoint& point = grid[ix * y_values.size() + iy];
+      std::vector<std::string> row{AxisText(x, xv)};
+      if (y) row.push_back(AxisText(*y, yv));
+      ++t.points;
+      if (point.judgement) {
+        const optim::BodyRegionJudgement& v = *point.judgement;
+        for (std::string& cell : VerdictCells(v)) row.push_back(std::move(cell));
+        if (v.admissible) ++t.admissible;
+        if (std::isfinite(xv) && std::isfinite(yv)) {
+          t.chart_data += y ? fmt::format("{} {} {}\n", xv, yv, v.governing_ratio) : fmt::format("{} {}\n", xv, v.governing_ratio);
+        }
+        if (v.governing_ratio > t.worst) {
+          t.worst = v.governing_ratio;
+          t.worst_at = fmt::format("{} = {}{}, {}", x.name, AxisText(x, xv),
+                                   y ? fmt::format(", {} = {}", y->name, AxisText(*y, yv)) : std::string(),
+                                   optim::ToString(v.governing));
+        }
+      } else {  // a point outside the model's range
+        ++t.invalid;
+        row.resize(row.size() + std::size(kColumns) - 1);
+        row.push_back(point.error);
+      }
+      AppendCsvRecord(t.csv, row);
+    }
+    t.chart_data += "\n";
+  }
+  return t;
+}
+
+std::string BodyRegionSweepChart(const BodyRegionSweepTable& table, const SweepAxisArgument& x,
+                                 const SweepAxisArgument* y, const materials::BodyLimits& limits,
+                                 double safety_factor, ChartFormat format, const std::string& output_path) {
+  const double bound = 1.0 / safety_factor;
+  std::string s = "set encoding utf8\n" + GnuplotTerminal(format, 1000, 700);
+  s += fmt::format("set output {}\n$data << EOD\n{}EOD\n", GnuplotQuoted(output_path), table.chart_data);
+  s += fmt::format("set title {}\n",
+                   GnuplotQuoted(fmt::format("governing ratio (line: {:g}); {}", 1.0 / safety_factor, limits.Describe())));
+  s += fmt::format("set xlabel {}\n", GnuplotQuoted(x.name + " [" + std::string(SiUnit(x.field->spec.kind)) + "]"));
+  if (x.log) s += "set logscale x\n";
+  if (y) {
+    s += fmt::format("set ylabel {}\n", GnuplotQuoted(y->name + " [" + std::string(SiUnit(y->field->spec.kind)) + "]"));
+    if (y->log) s += "set logscale y\n";
+    s += "set view map\nset contour base\nunset surface\nset pm3d at b\nunset key\n";
+    s += fmt::format("set cntrparam levels discrete {}\nset cblabel 'governing ratio'\n", bound);
+    s += fmt::format("splot $data using 1:2:3 with pm3d notitle, $data using 1:2:3 with lines linewidth 2 "
+                     "linecolor rgb '#000000' title 'ratio = {:g}'\n", bound);
+  } else {
+    s += "set ylabel 'governing ratio'\nset grid\n";
+    s += fmt::format("plot $data using 1:2 with lines linewidth 2 title 'governing ratio', {:g} with lines "
+                     "dashtype 2 linecolor rgb '#c0392b' title 'limit (1/SF)'\n", bound);
+  }
+  return s + "unset output\n";
+}
+
+}  // namespace covopt::report
