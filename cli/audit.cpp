@@ -103,11 +103,14 @@ audit::AuditFieldNames FlagNames() {
   n.allow_unknown_strength = "--allow-unknown-strength";
   n.max_thickness = "--max-thickness";
   n.thickness_step = "--thickness-step";
+  n.robot_mass = "--robot-mass";
+  n.speed = "--speed";
+  n.robot_radius = "--robot-radius";
   return n;
 }
 
-/// The checks of the flags no library input stands for: what audit does not take, the
-/// outputs' files.
+/// The checks of the flags no library input stands for: the robot model's flags audit does not
+/// take, the outputs' files.
 std::optional<PlotFormat> CheckFlags(const AuditCommandOptions& o) {
   const RobotModelOptions& model = o.model;
   if (!o.trajectory) throw InputError("--trajectory FILE.csv is required (the motion to audit)");
@@ -117,15 +120,6 @@ std::optional<PlotFormat> CheckFlags(const AuditCommandOptions& o) {
         std::tuple{model.point, "--point", "every point of the robot's surface is audited"},
         std::tuple{model.direction, "--direction", "each impact is along the point's motion"}}) {
     if (typed) throw InputError(fmt::format("{} '{}': not used by audit ({}); drop {}", flag, *typed, why, flag));
-  }
-  for (const auto& [key, flag, what] :
-       {std::tuple{std::string_view("robot.mass"), "--robot-mass", "reflected mass (the robot model's)"},
-        std::tuple{std::string_view("robot.speed"), "--speed", "speed (the trajectory's)"},
-        std::tuple{std::string_view("robot.radius"), "--robot-radius", "radius (the surface's)"}}) {
-    if (const auto typed = o.scene.scene_values.find(key); typed != o.scene.scene_values.end()) {
-      throw InputError(fmt::format("{} '{}': not used by audit (each surface point brings its own {}); drop {}", flag,
-                                   typed->second, what, flag));
-    }
   }
   if (o.csv_file && o.csv_file->empty()) throw InputError("--csv: empty file name");
   if (o.samples_csv && o.samples_csv->empty()) throw InputError("--samples-csv: empty file name");
@@ -194,6 +188,11 @@ AuditRun Resolve(const AuditCommandOptions& o) {
   in.reflected_mass = o.model.reflected_mass_options();
   in.trajectory = *o.trajectory;
   in.scene = plan.scene;
+  for (const char* field : {"robot.mass", "robot.speed", "robot.radius"}) {
+    if (const auto typed = o.scene.scene_values.find(field); typed != o.scene.scene_values.end()) {
+      in.given_robot_inputs.emplace(field, typed->second);
+    }
+  }
   in.regions = regions->IsoLimits();
   in.contact = regions->contact;
   in.contact_area_m2 = regions->contact_area_m2;

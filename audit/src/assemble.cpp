@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -16,6 +17,20 @@ namespace {
 
 [[noreturn]] void Refuse(const std::string& field, const std::string& message) {
   throw std::invalid_argument(field + ": " + message);
+}
+
+/// The robot's mass, speed and radius are each surface point's and sample's.
+void RefuseRobotInputs(const AuditInputs& in) {
+  const AuditFieldNames& n = in.names;
+  for (const auto& [field, name, what] :
+       {std::tuple{"robot.mass", &n.robot_mass, "reflected mass (the robot model's)"},
+        std::tuple{"robot.speed", &n.speed, "speed (the trajectory's)"},
+        std::tuple{"robot.radius", &n.robot_radius, "radius (the surface's)"}}) {
+    if (const auto given = in.given_robot_inputs.find(field); given != in.given_robot_inputs.end()) {
+      throw std::invalid_argument(*name + " '" + given->second + "': not used by audit (each surface point brings its own " +
+                                  what + "); drop " + *name);
+    }
+  }
 }
 
 /// The design's inputs apply with the design only.
@@ -133,6 +148,7 @@ void SetDesign(const AuditInputs& in, const materials::Catalog& catalog, Assembl
 }  // namespace
 
 AssembledAudit AssembleAudit(const AuditInputs& in) {
+  RefuseRobotInputs(in);
   if (in.contact != ContactType::kTransient) {
     Refuse(in.names.contact + " '" + std::string(ToString(in.contact)) + "'",
            "an audit judges the free (transient) impacts of a motion; drop " + in.names.contact);

@@ -12,6 +12,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -160,12 +161,6 @@ void SetDesignKeywords(const py::kwargs& kwargs, audit::AuditInputs& in) {
 py::object Audit(const py::object& urdf, const std::string& tip, const py::object& trajectory,
                  const std::optional<std::string>& base, const std::optional<std::string>& urdf_text,
                  const SceneInputs& inputs, const py::kwargs& kwargs) {
-  for (const char* keyword : {"robot_mass", "speed", "robot_radius"}) {
-    if (inputs.Gave(keyword)) {
-      throw std::invalid_argument(std::string("audit() takes the robot's ") + keyword +
-                                  " from each surface point and sample; drop " + keyword + " from the scene");
-    }
-  }
   py::kwargs region_kwargs = kwargs;
   if (!Option(region_kwargs, "body_region")) region_kwargs["body_region"] = "all";
   const BodyRegionSelection regions = SelectBodyRegions(inputs, region_kwargs);
@@ -185,6 +180,10 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
     in.trajectory = Path(trajectory);
   }
   in.scene = inputs.scene;
+  for (const auto& [keyword, field] : {std::pair{"robot_mass", "robot.mass"}, std::pair{"speed", "robot.speed"},
+                                       std::pair{"robot_radius", "robot.radius"}}) {
+    if (inputs.Gave(keyword)) in.given_robot_inputs.emplace(field, py::str(inputs.given[keyword]).cast<std::string>());
+  }
   in.regions = regions.limits;
   in.contact = regions.contact;
   in.contact_area_m2 = regions.contact_area_m2;

@@ -80,6 +80,8 @@ def test_audit_bad_input_names_the_keyword():
 @pytest.mark.parametrize("keywords, flags, spellings", [
     # A link-covering file naming a link that is not on the surface.
     ({"link_coverings": "LINKS"}, ["--link-coverings", "LINKS"], [("link_coverings", "--link-coverings")]),
+    # The robot's mass, which every surface point brings.
+    ({"robot_mass": 5}, ["--robot-mass", "5"], [("robot_mass", "--robot-mass")] * 2),
     # A design input without the design.
     ({"families": "foam"}, ["--family", "foam"], [("families", "--family"), ("with design", "with --design")]),
     # A material of the design not in the catalog.
@@ -96,9 +98,9 @@ def test_audit_and_the_cli_assemble_the_audit_by_one_library_call(cli, tmp_path,
     code, out, err = cli("audit", "--urdf", str(FR3), "--tip", "fr3_link8", "--trajectory", str(PICK), *FLAGS,
                          "--contact-area", "1cm2", "--flat-face-radius", "20mm", *flags)
     assert code == 2, (out, err)
+    scene = covopt.Scene(**SCENE, **{k: keywords.pop(k) for k in ("robot_mass",) if k in keywords})
     with pytest.raises(ValueError) as raised:
-        covopt.audit(FR3, "fr3_link8", PICK, scene=covopt.Scene(**SCENE), contact_area="1cm2",
-                     flat_face_radius="20mm", **keywords)
+        covopt.audit(FR3, "fr3_link8", PICK, scene=scene, contact_area="1cm2", flat_face_radius="20mm", **keywords)
     message = str(raised.value)
     for keyword, flag in spellings:  # Python's spelling -> the CLI's, once each
         assert keyword in message, message

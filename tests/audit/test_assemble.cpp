@@ -154,6 +154,15 @@ TEST_CASE("AssembleAudit: the design's materials, range and rule", "[audit][asse
 TEST_CASE("AssembleAudit refuses what an audit does not take, naming the input by the caller's spelling",
           "[audit][assemble]") {
   ca::AuditInputs in = Fr3Inputs();
+  SECTION("the robot's mass, speed or radius: each surface point and sample brings its own") {
+    in.given_robot_inputs = {{"robot.speed", "1.5m/s"}};
+    CHECK(MessageOf(in) == "speed '1.5m/s': not used by audit (each surface point brings its own speed (the "
+                           "trajectory's)); drop speed");
+    in.given_robot_inputs = {{"robot.mass", "10kg"}};
+    in.names.robot_mass = "--robot-mass";
+    CHECK(MessageOf(in) == "--robot-mass '10kg': not used by audit (each surface point brings its own reflected mass "
+                           "(the robot model's)); drop --robot-mass");
+  }
   SECTION("a clamped contact") {
     in.contact = ContactType::kClamped;
     CHECK(MessageOf(in) == "contact 'clamped': an audit judges the free (transient) impacts of a motion; drop contact");

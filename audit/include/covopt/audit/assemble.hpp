@@ -4,9 +4,10 @@
 /// covopt.audit() each resolve their own spelling of the shared inputs (the robot model, the
 /// scene, the body regions) and hand the rest over as plain values and paths; AssembleAudit
 /// reads the robot's surface, the trajectory and the link coverings, takes the design's
-/// materials from the catalog, applies the audit's rules (transient contacts only, the design's
-/// inputs only with the design, the design's rule on unknown strengths) and says what it
-/// assumed. Its messages name each input by the front end's own spelling (AuditFieldNames).
+/// materials from the catalog, applies the audit's rules (no robot mass, speed or radius: each
+/// point brings its own; transient contacts only; the design's inputs only with the design;
+/// the design's rule on unknown strengths) and says what it assumed. Its messages name each
+/// input by the front end's own spelling (AuditFieldNames).
 ///
 ///     covopt::audit::AuditInputs in{chain, "fr3.urdf"};
 ///     in.trajectory = std::string("pick.csv");
@@ -16,6 +17,7 @@
 ///     const auto audit = covopt::audit::AssembleAudit(in);
 ///     const auto result = covopt::audit::Audit(audit.setup, audit.trajectory, audit.options);
 
+#include <map>
 #include <optional>
 #include <string>
 #include <variant>
@@ -50,6 +52,9 @@ struct AuditFieldNames {
   std::string allow_unknown_strength = "allow_unknown_strength";
   std::string max_thickness = "max_thickness";
   std::string thickness_step = "thickness_step";
+  std::string robot_mass = "robot_mass";
+  std::string speed = "speed";
+  std::string robot_radius = "robot_radius";
 };
 
 /// What an audit is assembled from: the inputs every command shares already resolved by the
@@ -73,6 +78,10 @@ struct AuditInputs {
   /// The covering of every link, the head's model and the robot's braking (its mass, speed and
   /// radius are each point's).
   Scene scene;
+  /// The scene's robot mass, speed or radius where the caller gave one, by field name
+  /// ("robot.mass", "robot.speed", "robot.radius") -> the value as given: refused, since each
+  /// surface point and sample brings its own.
+  std::map<std::string, std::string> given_robot_inputs;
   /// The exposed body regions, the contact they were resolved for (an audit refuses a clamped
   /// one), the bare robot's contact area [m²] (0: not given), and whether the head is judged.
   std::vector<materials::BodyLimits> regions;
@@ -113,7 +122,8 @@ struct AssembledAudit {
 };
 
 /// Assembles the audit of `inputs`.
-/// @throws std::invalid_argument naming the input by inputs.names: a clamped contact, a
+/// @throws std::invalid_argument naming the input by inputs.names: the scene's robot mass,
+///         speed or radius (given_robot_inputs), a clamped contact, a
 ///         design input without the design, an unreadable surface, trajectory or link-covering
 ///         file, a chain without collision geometry, a link covering for a link not on the
 ///         surface, a material or family not in the catalog.
