@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <covopt/core/exact.hpp>
@@ -196,39 +197,92 @@ DesignScore ScoreOf(const WorstCase& worst, const CandidateMaterial& material, c
   return score;
 }
 
-/// One material: the thinnest thickness admissible for the scenario set (scan, bisection),
-/// confirmed over the whole box, the set grown by every violation found; then the stock step.
-RobustCandidate RobustSnapMaterial(const RobustContext& context, const CandidateMaterial& material,
-                                   const std::vector<std::vector<double>>& initial, long& evaluations) {
-  const DesignOptions& o = context.options.design;
-  const DesignSpace& space = o.space;
-  const ImpactCriterion criterion = context.ForMaterial(material);
-  ScenarioSet set(context.box, criterion);
-  for (const std::vector<double>& s : initial) set.Add(s);
-  auto covering = [&](double b) { return CoveringSpec{material.youngs_modulus_Pa, material.poisson_ratio, b}; };
-  auto admissible_on_set = [&](double b) { return set.Admissible(covering(b)); };
-  long search_evaluations = 0;
-  auto confirm = [&](double b) {
-    WorstCase worst = context.WorstCaseFor(covering(b), &criterion);
-    search_evaluations += worst.evaluations;
-    return worst;
-  };
+/// One material's robust search: its criterion, the scenario set (grown by every violation
+/// found) and the impacts its searches of the whole box cost.
+class MaterialSearch {
+ public:
+  MaterialSearch(const RobustContext& context, const CandidateMaterial& material,
+                 const std::vector<std::vector<double>>& initial)
+      : context_(context), material_(material), criterion_(context.ForMaterial(material)), set_(context.box, criterion_) {
+    for (const std::vector<double>& s : initial) set_.Add(s);
+  }
 
-  // The worst case at the maximum thickness of a material that has no robust design, for the
-  // table. With a braking robot (the time path) a scenario of the set that is inadmissible
-  // there already shows the verdict, and the worst of the set is reported (found by
-  // "scenarios") instead of searching the whole box again; without braking, or when every
-  // scenario is admissible there, the box is searched.
-  auto worst_at_max = [&] {
-    const double b = space.max_thickness_m;
-    if (context.box.brakes()) {
-      Scene base = context.box.nominal();
-      base.covering = covering(b);
+  const ImpactCriterion& criterion() const { return criterion_; }
+  /// The impacts judged so far: the scenario set's and the box searches'.
+  long evaluations() const { return set_.evaluations() + search_evaluations_; }
+
+  /// The thinnest thickness admissible for the whole box and its worst case there: the thinnest
+  /// for the scenario set (scan, bisection) confirmed over the box, the set grown by every
+  /// violation found; none when no thickness is admissible for the set, or none was confirmed
+  /// within the rounds allowed (counted in `rounds`).
+  std::optional<std::pair<double, WorstCase>> Thinnest(int& rounds) {
+    const DesignOptions& o = context_.options.design;
+    const DesignSpace& space = o.space;
+    // Scan points below the first admissible one of a round stay inadmissible for the grown set:
+    // the next round's scan starts there.
+    int first_scan = 0;
+    while (rounds < context_.options.max_scenario_rounds) {
+      ++rounds;
+      double inadmissible = first_scan > 0 ? internal::ScanThickness(space, o.thickness_scan_points, first_scan - 1) : 0.0;
+      double admissible = 0.0;
+      bool found = false;
+      for (int k = first_scan; k < o.thickness_scan_points && !found; ++k) {
+        const double b = internal::ScanThickness(space, o.thickness_scan_points, k);
+        if (AdmissibleOnSet(b)) {
+          found = true;
+          admissible = b;
+          first_scan = k;
+        } else {
+          inadmissible = b;
+        }
+      }
+      if (!found) break;  // inadmissible for the set, hence for the box
+      if (inadmissible > 0.0) {
+        while (admissible - inadmissible > o.thickness_resolution_m) {
+          const double mid = 0.5 * (inadmissible + admissible);
+          (AdmissibleOnSet(mid) ? admissible : inadmissible) = mid;
+        }
+      }
+      WorstCase worst = Confirm(admissible);
+      if (worst.admissible) return std::pair{admissible, std::move(worst)};
+      set_.Add(worst.values);
+    }
+    return std::nullopt;
+  }
+
+  /// The first stock thickness (a multiple of the step) from `thinnest` up admissible for the
+  /// whole box, and its worst case; none beyond the maximum thickness (set in `outcome`).
+  std::optional<WorstCase> AtStock(double thinnest, CandidateOutcome& outcome) {
+    const DesignOptions& o = context_.options.design;
+    double steps = std::ceil(thinnest / o.thickness_step_m - 1e-9);
+    for (double stock = internal::StockThickness(steps, o.thickness_step_m);;
+         stock = internal::StockThickness(++steps, o.thickness_step_m)) {
+      if (stock > o.space.max_thickness_m * (1 + 1e-12)) {
+        outcome.stock_thickness_beyond_max_m = stock;
+        return std::nullopt;
+      }
+      if (!AdmissibleOnSet(stock)) continue;
+      WorstCase worst = Confirm(stock);
+      if (worst.admissible) return worst;
+      set_.Add(worst.values);
+    }
+  }
+
+  /// The worst case at the maximum thickness of a material that has no robust design, for the
+  /// table. With a braking robot (the time path) a scenario of the set that is inadmissible
+  /// there already shows the verdict, and the worst of the set is reported (found by
+  /// "scenarios") instead of searching the whole box again; without braking, or when every
+  /// scenario is admissible there, the box is searched.
+  WorstCase WorstAtMax() {
+    const double b = context_.options.design.space.max_thickness_m;
+    if (context_.box.brakes()) {
+      Scene base = context_.box.nominal();
+      base.covering = Covering(b);
       WorstCase worst;
-      for (const std::vector<double>& values : set.values()) {
+      for (const std::vector<double>& values : set_.values()) {
         Scene scene = base;
-        internal::ApplyInputs(context.box, values, scene);
-        const Judged j = internal::JudgeScene(scene, criterion);
+        internal::ApplyInputs(context_.box, values, scene);
+        const Judged j = internal::JudgeScene(scene, criterion_);
         ++worst.evaluations;
         if (worst.values.empty() || j.governing_ratio > worst.governing_ratio) {
           worst.values = values;
@@ -238,96 +292,67 @@ RobustCandidate RobustSnapMaterial(const RobustContext& context, const Candidate
       }
       if (!worst.values.empty() && !worst.admissible) {
         worst.found_by = "scenarios";
-        search_evaluations += worst.evaluations;
+        search_evaluations_ += worst.evaluations;
         return worst;
       }
     }
-    return confirm(b);
-  };
+    return Confirm(b);
+  }
 
+ private:
+  CoveringSpec Covering(double b) const { return CoveringSpec{material_.youngs_modulus_Pa, material_.poisson_ratio, b}; }
+  bool AdmissibleOnSet(double b) const { return set_.Admissible(Covering(b)); }
+  /// The worst case of the whole box at thickness `b`.
+  WorstCase Confirm(double b) {
+    WorstCase worst = context_.WorstCaseFor(Covering(b), &criterion_);
+    search_evaluations_ += worst.evaluations;
+    return worst;
+  }
+
+  const RobustContext& context_;
+  const CandidateMaterial& material_;
+  ImpactCriterion criterion_;
+  ScenarioSet set_;
+  long search_evaluations_ = 0;
+};
+
+/// One material: the thinnest thickness admissible for the whole box (MaterialSearch::Thinnest),
+/// then the stock step; a material with none, or that the rule refuses, scored at its worst
+/// case at the maximum thickness.
+RobustCandidate RobustSnapMaterial(const RobustContext& context, const CandidateMaterial& material,
+                                   const std::vector<std::vector<double>>& initial, long& evaluations) {
+  const DesignOptions& o = context.options.design;
+  MaterialSearch search(context, material, initial);
   RobustCandidate candidate;
   candidate.outcome.material = material;
-  const DesignRule rule = o.rule();
-  if (material.crush_behaviour == materials::CrushBehaviour::kUnknown && rule.refuses_unknown_strength()) {
-    // Never admissible under the rule: its worst case at the maximum thickness, for the table.
-    candidate.worst_case = worst_at_max();
-    candidate.outcome.score = ScoreOf(candidate.worst_case, material, criterion);
-    candidate.outcome.margin = candidate.outcome.score.margin(rule);
-    evaluations += search_evaluations;
-    return candidate;
-  }
-  std::optional<double> thinnest;
-  std::optional<WorstCase> at_thinnest;
-  // Scan points below the first admissible one of a round stay inadmissible for the grown set:
-  // the next round's scan starts there.
-  int first_scan = 0;
-  while (candidate.scenario_rounds < context.options.max_scenario_rounds) {
-    ++candidate.scenario_rounds;
-    double inadmissible = first_scan > 0 ? internal::ScanThickness(space, o.thickness_scan_points, first_scan - 1) : 0.0;
-    double admissible = 0.0;
-    bool found = false;
-    for (int k = first_scan; k < o.thickness_scan_points && !found; ++k) {
-      const double b = internal::ScanThickness(space, o.thickness_scan_points, k);
-      if (admissible_on_set(b)) {
-        found = true;
-        admissible = b;
-        first_scan = k;
-      } else {
-        inadmissible = b;
-      }
-    }
-    if (!found) break;  // inadmissible for the set, hence for the box
-    if (inadmissible > 0.0) {
-      while (admissible - inadmissible > o.thickness_resolution_m) {
-        const double mid = 0.5 * (inadmissible + admissible);
-        (admissible_on_set(mid) ? admissible : inadmissible) = mid;
-      }
-    }
-    WorstCase worst = confirm(admissible);
-    if (worst.admissible) {
-      thinnest = admissible;
-      at_thinnest = std::move(worst);
-      break;
-    }
-    set.Add(worst.values);
-  }
-
   CandidateOutcome& outcome = candidate.outcome;
+  const DesignRule rule = o.rule();
+  const auto score_at_max = [&] {
+    candidate.worst_case = search.WorstAtMax();
+    outcome.score = ScoreOf(candidate.worst_case, material, search.criterion());
+    outcome.margin = outcome.score.margin(rule);
+    evaluations += search.evaluations();
+    return candidate;
+  };
+  if (material.crush_behaviour == materials::CrushBehaviour::kUnknown && rule.refuses_unknown_strength()) {
+    return score_at_max();  // never admissible under the rule
+  }
+  std::optional<std::pair<double, WorstCase>> thinnest = search.Thinnest(candidate.scenario_rounds);
   if (!thinnest) {
     candidate.unconfirmed = candidate.scenario_rounds >= context.options.max_scenario_rounds;
-    candidate.worst_case = worst_at_max();
-    outcome.score = ScoreOf(candidate.worst_case, material, criterion);
-    outcome.margin = outcome.score.margin(rule);
-    evaluations += set.evaluations() + search_evaluations;
-    return candidate;
+    return score_at_max();
   }
-  outcome.min_safe_thickness_m = *thinnest;
+  outcome.min_safe_thickness_m = thinnest->first;
   std::optional<WorstCase> at_stock;
-  if (o.thickness_step_m > 0.0) {
-    double steps = std::ceil(*thinnest / o.thickness_step_m - 1e-9);
-    for (double stock = internal::StockThickness(steps, o.thickness_step_m);;
-         stock = internal::StockThickness(++steps, o.thickness_step_m)) {
-      if (stock > space.max_thickness_m * (1 + 1e-12)) {
-        outcome.stock_thickness_beyond_max_m = stock;
-        break;
-      }
-      if (!admissible_on_set(stock)) continue;
-      WorstCase worst = confirm(stock);
-      if (worst.admissible) {
-        at_stock = std::move(worst);
-        break;
-      }
-      set.Add(worst.values);
-    }
-  }
-  candidate.worst_case = at_stock ? *at_stock : *at_thinnest;
-  candidate.worst_case_at_thinnest = std::move(at_thinnest);
-  outcome.score = ScoreOf(candidate.worst_case, material, criterion);
+  if (o.thickness_step_m > 0.0) at_stock = search.AtStock(thinnest->first, outcome);
+  candidate.worst_case = at_stock ? *at_stock : thinnest->second;
+  candidate.worst_case_at_thinnest = std::move(thinnest->second);
+  outcome.score = ScoreOf(candidate.worst_case, material, search.criterion());
   outcome.recommended_thickness_m = candidate.worst_case.scene.covering.thickness_m;
   // The box's verdict, and the rule's word on a material of unknown strength.
   outcome.safe = candidate.worst_case.admissible && outcome.score.admissible(rule);
   outcome.margin = outcome.score.margin(rule);
-  evaluations += set.evaluations() + search_evaluations;
+  evaluations += search.evaluations();
   return candidate;
 }
 

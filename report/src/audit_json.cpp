@@ -76,6 +76,39 @@ ordered_json CoveringJson(const std::string& link, const audit::AuditCovering& c
   return j;
 }
 
+/// The audited robot: its name, chain and payload (null without one).
+ordered_json RobotJson(const robot::KinematicChain& chain) {
+  ordered_json robot;
+  robot["name"] = chain.robot_name();
+  robot["base_link"] = chain.base_link();
+  robot["tip_link"] = chain.tip_link();
+  robot["joint_names"] = chain.joint_names();
+  if (const robot::Payload& payload = chain.payload(); !payload.empty()) {
+    ordered_json p;
+    p["mass_kg"] = internal::Number(payload.mass_kg);
+    p["center_of_mass_m"] = Vector(payload.center_of_mass_m);
+    ordered_json inertia = ordered_json::array();
+    for (int r = 0; r < 3; ++r) inertia.push_back(Vector(payload.inertia_kg_m2.row(r).transpose()));
+    p["inertia_kg_m2"] = std::move(inertia);
+    robot["payload"] = std::move(p);
+  } else {
+    robot["payload"] = nullptr;
+  }
+  return robot;
+}
+
+/// The surface judged: its spacing and each link's number of points.
+ordered_json SurfaceJson(const robot::RobotSurface& surface_in) {
+  ordered_json surface;
+  surface["spacing_m"] = internal::Number(surface_in.spacing_m);
+  ordered_json links = ordered_json::array();
+  for (const robot::LinkSurface& link : surface_in.links) {
+    links.push_back(ordered_json{{"name", link.link}, {"point_count", link.points.size()}});
+  }
+  surface["links"] = std::move(links);
+  return surface;
+}
+
 }  // namespace
 
 std::span<const std::string_view> AuditCellColumns() noexcept { return kCellColumns; }
@@ -132,33 +165,8 @@ std::string AuditJson(const audit::AuditSetup& setup, const audit::AuditResult& 
   j["reaction_delay_s"] = internal::Number(setup.reaction_delay_s);
   j["braking_m_per_s2"] = internal::Number(setup.braking_m_per_s2);
 
-  const robot::KinematicChain& chain = setup.chain;
-  ordered_json robot;
-  robot["name"] = chain.robot_name();
-  robot["base_link"] = chain.base_link();
-  robot["tip_link"] = chain.tip_link();
-  robot["joint_names"] = chain.joint_names();
-  if (const robot::Payload& payload = chain.payload(); !payload.empty()) {
-    ordered_json p;
-    p["mass_kg"] = internal::Number(payload.mass_kg);
-    p["center_of_mass_m"] = Vector(payload.center_of_mass_m);
-    ordered_json inertia = ordered_json::array();
-    for (int r = 0; r < 3; ++r) inertia.push_back(Vector(payload.inertia_kg_m2.row(r).transpose()));
-    p["inertia_kg_m2"] = std::move(inertia);
-    robot["payload"] = std::move(p);
-  } else {
-    robot["payload"] = nullptr;
-  }
-  j["robot"] = std::move(robot);
-
-  ordered_json surface;
-  surface["spacing_m"] = internal::Number(setup.surface.spacing_m);
-  ordered_json links = ordered_json::array();
-  for (const robot::LinkSurface& link : setup.surface.links) {
-    links.push_back(ordered_json{{"name", link.link}, {"point_count", link.points.size()}});
-  }
-  surface["links"] = std::move(links);
-  j["surface"] = std::move(surface);
+  j["robot"] = RobotJson(setup.chain);
+  j["surface"] = SurfaceJson(setup.surface);
   j["sample_count"] = result.sample_count;
   j["regions"] = result.regions;
   j["scope"] = result.scope;

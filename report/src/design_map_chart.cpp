@@ -58,11 +58,9 @@ std::optional<std::pair<double, double>> Crossing(const optim::DesignMap& map, o
   return std::nullopt;
 }
 
-}  // namespace
-
-GnuplotChart DesignMapChart(const optim::DesignMap& map) {
-  const double sf = map.rule.safety_factor;
-  const double level = 1.0 / sf;
+/// The grid as a data block ($map: thickness [mm], log10 modulus [MPa], the governing ratio and
+/// each criterion's), and each criterion's contour at `level` traced by gnuplot into $contour<k>.
+std::string MapData(const optim::DesignMap& map, double level) {
   std::string s = "$map << EOD\n";
   for (std::size_t j = 0; j < map.modulus_Pa.size(); ++j) {
     for (std::size_t i = 0; i < map.thickness_m.size(); ++i) {
@@ -85,16 +83,25 @@ GnuplotChart DesignMapChart(const optim::DesignMap& map) {
     s += fmt::format("set table $contour{}\nsplot $map using 1:2:{} with lines notitle\nunset table\n", k, k + 4);
   }
   s += "unset contour\nset surface\nunset view\n";
+  return s;
+}
 
-  const std::array<std::string_view, 2> omitted{"covering.thickness", "covering.modulus"};
-  std::string scene_line = SceneHeadline(map.scene, omitted);
-  if (const auto details = SceneDetailsBeyondHeadline(map.scene, omitted); !details.empty()) {
-    for (const std::string& d : details) scene_line += ", " + d;
-  }
+/// "laceration, contusion and full-compression".
+std::string CriteriaList(const optim::DesignMap& map) {
   std::string criteria;
   for (std::size_t k = 0; k < map.criteria.size(); ++k) {
     criteria += k == 0 ? "" : k + 1 == map.criteria.size() ? " and " : ", ";
     criteria += optim::ToString(map.criteria[k]);
+  }
+  return criteria;
+}
+
+/// The title: the scene, the oracle, the criteria and safety factor, and the chosen design.
+std::string TitleCommand(const optim::DesignMap& map, const std::string& criteria, double level) {
+  const std::array<std::string_view, 2> omitted{"covering.thickness", "covering.modulus"};
+  std::string scene_line = SceneHeadline(map.scene, omitted);
+  if (const auto details = SceneDetailsBeyondHeadline(map.scene, omitted); !details.empty()) {
+    for (const std::string& d : details) scene_line += ", " + d;
   }
   std::string chosen_line;
   if (map.chosen && map.chosen_score) {
@@ -106,12 +113,17 @@ GnuplotChart DesignMapChart(const optim::DesignMap& map) {
   } else {
     chosen_line = map.message;
   }
-  s += fmt::format("set title {}\n",
-                   internal::GnuplotDoubleQuoted(fmt::format(
-                       "covopt optimize: design map, {} ({})\ncriteria {}; safety factor {:g} (every ratio <= {:.4g})\n"
-                       "chosen: {}",
-                       scene_line, map.oracle.Name(), criteria, sf, level, chosen_line)));
-  s += "set xlabel 'covering thickness [mm]'\nset ylabel \"covering Young's modulus [MPa] (log scale)\"\n";
+  return fmt::format("set title {}\n",
+                     internal::GnuplotDoubleQuoted(fmt::format(
+                         "covopt optimize: design map, {} ({})\ncriteria {}; safety factor {:g} (every ratio <= {:.4g})\n"
+                         "chosen: {}",
+                         scene_line, map.oracle.Name(), criteria, map.rule.safety_factor, level, chosen_line)));
+}
+
+/// The axes (thickness [mm]; modulus on a log scale with 1-2-5 tics), the colour scale centred
+/// on `level`, and the key.
+std::string AxesCommands(const optim::DesignMap& map, double level) {
+  std::string s = "set xlabel 'covering thickness [mm]'\nset ylabel \"covering Young's modulus [MPa] (log scale)\"\n";
   const double x0 = map.thickness_m.front() * 1e3, x1 = map.thickness_m.back() * 1e3;
   const double y0 = Y(map.modulus_Pa.front()), y1 = Y(map.modulus_Pa.back());
   // with image: each cell centred on its grid point.
@@ -133,10 +145,13 @@ GnuplotChart DesignMapChart(const optim::DesignMap& map) {
   s += "set palette defined (0 '#1a7f3c', 0.5 '#8fd18b', 0.98 '#f4f1bb', 1.02 '#fdd49e', 1.5 '#f0793d', 2 '#a50f15')\n";
   s += fmt::format("set cblabel 'governing ratio (the limit 1/safety factor = {:.4g} at the middle)'\n", level);
   s += "set key below maxrows 3 width 2\nset bmargin 7\n";
+  return s;
+}
 
-  // The labels: each contour's name where it crosses a middle row; the chosen design.
+/// The labels: each contour's name where it crosses a middle row; the chosen design.
+std::string LabelCommands(const optim::DesignMap& map, double level) {
   int label = 1;
-  s += "set style textbox opaque fillcolor rgb '#ffffff' noborder margins 2, 1\n";
+  std::string s = "set style textbox opaque fillcolor rgb '#ffffff' noborder margins 2, 1\n";
   const std::size_t columns = map.thickness_m.size();
   for (std::size_t k = 0; k < map.criteria.size(); ++k) {
     const optim::LimitingCriterion c = map.criteria[k];
@@ -151,16 +166,13 @@ GnuplotChart DesignMapChart(const optim::DesignMap& map) {
                      GnuplotQuoted(map.chosen->label), map.chosen->design.thickness_m * 1e3,
                      Y(map.chosen->design.youngs_modulus_Pa));
   }
-  s += "$candidates << EOD\n";
-  std::size_t admissible_candidates = 0;
-  for (const optim::DesignMapMark& c : map.candidates) {
-    if (!c.admissible) continue;  // an inadmissible one sits at the maximum thickness: nothing to see
-    ++admissible_candidates;
-    s += fmt::format("{} {}\n", c.design.thickness_m * 1e3, Y(c.design.youngs_modulus_Pa));
-  }
-  s += "EOD\n";
+  return s;
+}
 
-  s += "plot $map using 1:2:3 with image notitle";
+/// The plot: the map, each contour, the admissible candidates (when `candidates` holds any) and
+/// the chosen design.
+std::string PlotCommand(const optim::DesignMap& map, double level, bool candidates) {
+  std::string s = "plot $map using 1:2:3 with image notitle";
   for (std::size_t k = 0; k < map.criteria.size(); ++k) {
     const Style style = StyleOf(map.criteria[k]);
     s += fmt::format(
@@ -168,7 +180,7 @@ GnuplotChart DesignMapChart(const optim::DesignMap& map) {
         style.dashtype, style.colour,
         GnuplotQuoted(fmt::format("{} limit (ratio {:.4g})", optim::ToString(map.criteria[k]), level)));
   }
-  if (admissible_candidates > 0) {
+  if (candidates) {
     s += ", \\\n     $candidates using 1:2 with points pointtype 6 pointsize 1.2 linewidth 1.5 linecolor rgb "
          "'#333333' title 'admissible catalog materials at their recommended thickness (each with its own ν)'";
   }
@@ -178,6 +190,27 @@ GnuplotChart DesignMapChart(const optim::DesignMap& map) {
         GnuplotQuoted("chosen: " + map.chosen->label), map.chosen->design.thickness_m * 1e3,
         Y(map.chosen->design.youngs_modulus_Pa));
   }
+  return s;
+}
+
+}  // namespace
+
+GnuplotChart DesignMapChart(const optim::DesignMap& map) {
+  const double level = 1.0 / map.rule.safety_factor;
+  const std::string criteria = CriteriaList(map);
+  std::string s = MapData(map, level);
+  s += TitleCommand(map, criteria, level);
+  s += AxesCommands(map, level);
+  s += LabelCommands(map, level);
+  s += "$candidates << EOD\n";
+  std::size_t admissible_candidates = 0;
+  for (const optim::DesignMapMark& c : map.candidates) {
+    if (!c.admissible) continue;  // an inadmissible one sits at the maximum thickness: nothing to see
+    ++admissible_candidates;
+    s += fmt::format("{} {}\n", c.design.thickness_m * 1e3, Y(c.design.youngs_modulus_Pa));
+  }
+  s += "EOD\n";
+  s += PlotCommand(map, level, admissible_candidates > 0);
   s += "\nunset output\n";
 
   return internal::MakeChart(

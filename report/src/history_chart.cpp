@@ -18,6 +18,11 @@ namespace covopt::report {
 
 namespace {
 
+// The parts of the chart, defined after it.
+std::string HistoryTitle(const SimulationReport& report, double laceration_ratio, double contusion_ratio);
+std::string HistoryData(const ImpactModel& model, const ImpactResult& r);
+std::string MultiplotLayout(const std::string& title, const ImpactResult& r);
+
 /// The chart of a result with its history; `note` ends the caption.
 GnuplotChart ChartOfHistory(const SimulationReport& report, const std::string& note) {
   const ImpactResult& r = report.result;
@@ -30,51 +35,13 @@ GnuplotChart ChartOfHistory(const SimulationReport& report, const std::string& n
   const std::string blue = "#1f5fa8";
   const std::string red = "#c0392b";
   const std::string green = "#2e8b57";
-  std::string s;
-  std::string title = fmt::format("covopt simulate: {}", SceneHeadline(report.scene));
-  if (const auto details = SceneDetailsBeyondHeadline(report.scene); !details.empty()) {
-    title += fmt::format("; {}", fmt::join(details, ", "));
-  }
-  title += fmt::format(
-      "\npeak force {:.4g} N; max tensile stress {:.4g} MPa (laceration ratio {:.3g}); max "
-      "energy density {:.4g} J/cm² (contusion ratio {:.3g})\n{}, {} history samples",
-      r.peaks.peak_force_N, r.peaks.max_tensile_stress_Pa / 1e6, lac.ratio,
-      r.peaks.max_energy_density_J_per_m2 / 1e4, con.ratio, ToString(r.method),
-      r.history.size());
-  s += "$history << EOD\n";
-  for (const HistorySample& h : r.history) {
-    const double t_ms = h.time_s * 1e3;
-    const double tensile_MPa = model.TensileFromCompressive(h.compressive_stress_Pa) / 1e6;
-    const double energy_density_J_per_cm2 = h.energy_density_J_per_m2 / 1e4;
-    if (!std::isfinite(t_ms) || !std::isfinite(h.force_N) || !std::isfinite(tensile_MPa) ||
-        !std::isfinite(energy_density_J_per_cm2)) {
-      continue;
-    }
-    s += fmt::format("{} {} {} {}\n", t_ms, h.force_N, tensile_MPa, energy_density_J_per_cm2);
-  }
-  s += "EOD\n";
-
-  // Two panels sharing the time axis: force and tensile stress with the laceration limit,
-  // then energy density with the contusion limit. Fixed margins keep the time axes aligned
-  // and leave room for the two title lines.
-  s += fmt::format("set multiplot title {}\n", internal::GnuplotDoubleQuoted(title));
-  s += "set lmargin 12\nset rmargin 14\n";
-  s += "set xrange [0:*]\nset autoscale xfix\nset xtics nomirror\n";
-  s += "set grid xtics ytics linecolor rgb '#dddddd'\n";
-  // The key in two rows across the top of each panel; every axis reaches about a third past
-  // its highest curve or line, so the key sits above them. The force axis has more room
-  // than the stress axis so that its peak does not sit on the laceration limit's line.
+  std::string s = HistoryData(model, r);
+  s += MultiplotLayout(HistoryTitle(report, lac.ratio, con.ratio), r);
+  // Every axis reaches about a third past its highest curve or line, so the key sits above
+  // them. The force axis has more room than the stress axis so that its peak does not sit on
+  // the laceration limit's line.
   constexpr double kHeadroom = 1.3;
   constexpr double kForceHeadroom = 1.5;
-  s += "set key inside top center horizontal maxcols 2 width 1 opaque box linecolor rgb "
-       "'#cccccc'\n";
-  if (r.time_of_max_compression_s && std::isfinite(*r.time_of_max_compression_s)) {
-    const double t_ms = *r.time_of_max_compression_s * 1e3;
-    s += fmt::format(
-        "set arrow 1 from {0}, graph 0 to {0}, graph 1 nohead dashtype 3 linecolor rgb '#777777'\n"
-        "set label 1 'max compression' at {0}, graph 0.04 offset 0.5, 0 textcolor rgb '#555555'\n",
-        t_ms);
-  }
 
   // Top panel.
   s += "set size 1, 0.55\nset origin 0, 0.38\nset tmargin 1\nset bmargin 1\n";
@@ -130,6 +97,61 @@ GnuplotChart ChartOfHistory(const SimulationReport& report, const std::string& n
                   sf == 1.0 ? std::string() : fmt::format("; dotted: the limits divided by the safety factor {:g}", sf)) +
           note,
       1100, 900, std::move(s));
+}
+
+/// The chart's title: the scene, the peaks with their ratios, the method and the samples.
+std::string HistoryTitle(const SimulationReport& report, double laceration_ratio, double contusion_ratio) {
+  const ImpactResult& r = report.result;
+  std::string title = fmt::format("covopt simulate: {}", SceneHeadline(report.scene));
+  if (const auto details = SceneDetailsBeyondHeadline(report.scene); !details.empty()) {
+    title += fmt::format("; {}", fmt::join(details, ", "));
+  }
+  title += fmt::format(
+      "\npeak force {:.4g} N; max tensile stress {:.4g} MPa (laceration ratio {:.3g}); max "
+      "energy density {:.4g} J/cm² (contusion ratio {:.3g})\n{}, {} history samples",
+      r.peaks.peak_force_N, r.peaks.max_tensile_stress_Pa / 1e6, laceration_ratio,
+      r.peaks.max_energy_density_J_per_m2 / 1e4, contusion_ratio, ToString(r.method),
+      r.history.size());
+  return title;
+}
+
+/// The history as a data block $history: time [ms], force [N], tensile stress [MPa], energy
+/// density [J/cm²]; a sample with a non-finite value is left out.
+std::string HistoryData(const ImpactModel& model, const ImpactResult& r) {
+  std::string s = "$history << EOD\n";
+  for (const HistorySample& h : r.history) {
+    const double t_ms = h.time_s * 1e3;
+    const double tensile_MPa = model.TensileFromCompressive(h.compressive_stress_Pa) / 1e6;
+    const double energy_density_J_per_cm2 = h.energy_density_J_per_m2 / 1e4;
+    if (!std::isfinite(t_ms) || !std::isfinite(h.force_N) || !std::isfinite(tensile_MPa) ||
+        !std::isfinite(energy_density_J_per_cm2)) {
+      continue;
+    }
+    s += fmt::format("{} {} {} {}\n", t_ms, h.force_N, tensile_MPa, energy_density_J_per_cm2);
+  }
+  s += "EOD\n";
+  return s;
+}
+
+/// Two panels sharing the time axis: force and tensile stress with the laceration limit,
+/// then energy density with the contusion limit. Fixed margins keep the time axes aligned
+/// and leave room for the two title lines; the key in two rows across the top of each panel;
+/// the moment of maximum compression marked.
+std::string MultiplotLayout(const std::string& title, const ImpactResult& r) {
+  std::string s = fmt::format("set multiplot title {}\n", internal::GnuplotDoubleQuoted(title));
+  s += "set lmargin 12\nset rmargin 14\n";
+  s += "set xrange [0:*]\nset autoscale xfix\nset xtics nomirror\n";
+  s += "set grid xtics ytics linecolor rgb '#dddddd'\n";
+  s += "set key inside top center horizontal maxcols 2 width 1 opaque box linecolor rgb "
+       "'#cccccc'\n";
+  if (r.time_of_max_compression_s && std::isfinite(*r.time_of_max_compression_s)) {
+    const double t_ms = *r.time_of_max_compression_s * 1e3;
+    s += fmt::format(
+        "set arrow 1 from {0}, graph 0 to {0}, graph 1 nohead dashtype 3 linecolor rgb '#777777'\n"
+        "set label 1 'max compression' at {0}, graph 0.04 offset 0.5, 0 textcolor rgb '#555555'\n",
+        t_ms);
+  }
+  return s;
 }
 
 }  // namespace
