@@ -169,7 +169,7 @@ AuditRun Resolve(const AuditCommandOptions& o) {
   const std::optional<PlotFormat> plot_format = CheckFlags(o);
   // The regions: the body-region group, default every transient region and the head.
   BodyRegionFlags body = o.scene.body;
-  if (body.regions.empty()) body.regions.push_back("all");
+  if (body.regions.empty()) body.regions.push_back(audit::kDefaultBodyRegions);
   const std::optional<BodyRegionPlan> regions = ResolveBodyRegions(body);
   const bool head = regions->has_head();
   const SimulationPlan plan = ResolveSimulation(o.scene);

@@ -162,7 +162,7 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
                  const std::optional<std::string>& base, const std::optional<std::string>& urdf_text,
                  const SceneInputs& inputs, const py::kwargs& kwargs) {
   py::kwargs region_kwargs = kwargs;
-  if (!Option(region_kwargs, "body_region")) region_kwargs["body_region"] = "all";
+  if (!Option(region_kwargs, "body_region")) region_kwargs["body_region"] = audit::kDefaultBodyRegions;
   const BodyRegionSelection regions = SelectBodyRegions(inputs, region_kwargs);
 
   // The library's input names are Python's keywords (AuditFieldNames' defaults).

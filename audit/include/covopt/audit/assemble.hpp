@@ -37,6 +37,10 @@
 
 namespace covopt::audit {
 
+/// The body regions an audit judges when the caller names none, as a body-region list: every
+/// region ISO/TS 15066 permits in a transient contact, and the head.
+inline constexpr const char* kDefaultBodyRegions = "all";
+
 /// How a front end spells each input AssembleAudit names in its messages. The defaults are
 /// the library's (and Python's keywords); the CLI passes its flags ("--trajectory", ...).
 struct AuditFieldNames {
