@@ -321,10 +321,7 @@ std::string CellsCsv(const audit::AuditResult& r) {
 
 }  // namespace
 
-CLI::App* SetupAudit(CLI::App& app, AuditCommandOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "audit", "The whole robot along its motion: every link's surface against every body region; the safe speed "
-               "scale, which link and region set it, and per link the covering that makes the program safe");
+void SetupAudit(CLI::App* sub, AuditCommandOptions& options) {
   sub->footer(std::string(kFooter));
   AddRobotModelOptions(*sub, options.model, false, "Robot model");
   // Each surface point brings its own point and direction; the trajectory its joints.
@@ -401,7 +398,6 @@ CLI::App* SetupAudit(CLI::App& app, AuditCommandOptions& options) {
       ->type_name("FILE.png|FILE.svg")
       ->group("Output");
   AddReportOption(*sub, options.report_file);
-  return sub;
 }
 
 int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err) {

@@ -63,8 +63,9 @@ struct AuditCommandOptions {
   std::optional<RunContext> run;
 };
 
-/// Adds the `audit` subcommand to `app`; `options` must outlive the parse.
-CLI::App* SetupAudit(CLI::App& app, AuditCommandOptions& options);
+/// Registers the options of the `audit` subcommand `sub` (made by RunCli with its name and
+/// summary); `options` must outlive the parse.
+void SetupAudit(CLI::App* sub, AuditCommandOptions& options);
 
 /// Runs the audit; returns the exit code (0, 1 or 2).
 int RunAudit(const AuditCommandOptions& options, std::ostream& out, std::ostream& err);

@@ -114,9 +114,7 @@ void PrintRegion(std::ostream& out, const BodyRegion& r) {
 
 }  // namespace
 
-CLI::App* SetupBodyRegions(CLI::App& app, BodyRegionsOptions& options) {
-  CLI::App* command = app.add_subcommand(
-      "body-regions", "ISO/TS 15066:2016's body regions: list or show their limits, k and m_H");
+void SetupBodyRegions(CLI::App* command, BodyRegionsOptions& options) {
   command->require_subcommand(1);
   command->footer(
       "Tables A.2 (biomechanical limits) and A.3 (effective spring constant and mass) of\n"
@@ -136,7 +134,6 @@ CLI::App* SetupBodyRegions(CLI::App& app, BodyRegionsOptions& options) {
       ->required();
   show->add_flag("--json", options.json, "print the region as one JSON object (SI units)");
   show->callback([&options] { options.action = BodyRegionsAction::kShow; });
-  return command;
 }
 
 int RunBodyRegions(const BodyRegionsOptions& options, std::ostream& out, std::ostream& err) {

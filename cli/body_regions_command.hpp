@@ -38,9 +38,9 @@ struct BodyRegionsOptions {
   std::optional<RunContext> run;
 };
 
-/// Adds the `body-regions` subcommand and its `list` and `show` to `app`, storing what is
-/// typed into `options`, which must outlive the parse.
-CLI::App* SetupBodyRegions(CLI::App& app, BodyRegionsOptions& options);
+/// Registers the `list` and `show` of the `body-regions` subcommand (made by RunCli with its
+/// name and summary), storing what is typed into `options`, which must outlive the parse.
+void SetupBodyRegions(CLI::App* command, BodyRegionsOptions& options);
 
 /// Runs the parsed subcommand; returns the exit code (0, 1 or 2).
 int RunBodyRegions(const BodyRegionsOptions& options, std::ostream& out, std::ostream& err);

@@ -333,9 +333,7 @@ materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
 
 Json MaterialToJson(const Material& m) { return Json::parse(report::MaterialJson(m)); }
 
-CLI::App* SetupMaterials(CLI::App& app, MaterialsOptions& options) {
-  CLI::App* materials = app.add_subcommand(
-      "materials", "The covering-material catalog: list, show or find materials");
+void SetupMaterials(CLI::App* materials, MaterialsOptions& options) {
   materials->require_subcommand(1);
   materials->footer(
       "The built-in catalog holds sourced foams, elastomers and paddings, among them the\n"
@@ -422,7 +420,6 @@ CLI::App* SetupMaterials(CLI::App& app, MaterialsOptions& options) {
                "(--modulus 10..100 is refused: write 10MPa..100MPa). Units: Pa, kPa, MPa, GPa;\n"
                "kg/m3, g/cm3. Exit codes: 0 done (also when nothing matches); 2 bad input.");
   find->callback([&options] { options.action = MaterialsAction::kFind; });
-  return materials;
 }
 
 int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostream& err) {

@@ -103,9 +103,9 @@ struct MaterialsOptions {
   std::optional<RunContext> run;
 };
 
-/// Adds the `materials` subcommand and its `list`, `show`, `find` to `app`, storing what
-/// is typed into `options`, which must outlive the parse.
-CLI::App* SetupMaterials(CLI::App& app, MaterialsOptions& options);
+/// Registers the `list`, `show`, `find` of the `materials` subcommand (made by RunCli with its
+/// name and summary), storing what is typed into `options`, which must outlive the parse.
+void SetupMaterials(CLI::App* materials, MaterialsOptions& options);
 
 /// Runs the parsed subcommand; returns the exit code (0, 1 or 2).
 int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostream& err);

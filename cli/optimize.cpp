@@ -699,10 +699,7 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
 
 }  // namespace
 
-CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "optimize", "Find the covering (real material and thickness) that prevents laceration and "
-                  "contusion, with its margin");
+void SetupOptimize(CLI::App* sub, OptimizeOptions& options) {
   sub->footer(std::string(kFooter));
   sub->add_option("--scene", options.scene_file, "TOML scene file; flags override it")->type_name("FILE.toml");
   for (const SceneField& field : SceneFields()) {
@@ -784,7 +781,6 @@ CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options) {
                   "criterion's limit and the chosen design (the head's design only)")
       ->type_name("FILE.png|FILE.svg")
       ->group("Output");
-  return sub;
 }
 
 int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream& err) {

@@ -82,7 +82,9 @@ struct OptimizeOptions {
   std::optional<std::string> plot_file;
 };
 
-CLI::App* SetupOptimize(CLI::App& app, OptimizeOptions& options);
+/// Registers the options of the `optimize` subcommand `sub` (made by RunCli with its name and
+/// summary), storing what is typed into `options`, which must outlive the parse.
+void SetupOptimize(CLI::App* sub, OptimizeOptions& options);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream& err);

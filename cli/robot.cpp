@@ -57,15 +57,11 @@ std::string Direction(const Eigen::Vector3d& v) {
 
 }  // namespace
 
-CLI::App* SetupRobot(CLI::App& app, RobotOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "robot", "Reflected mass of a robot (URDF) at a contact point, along a direction and its extremes; "
-               "with --trajectory, the safety check of a motion");
+void SetupRobot(CLI::App* sub, RobotOptions& options) {
   sub->footer(std::string(kFooter));
   AddRobotModelOptions(*sub, options.model, false, "Robot model");
   sub->add_flag("--json", options.json, "print one JSON object (SI units) instead of the table")->group("Output");
   AddRobotTrajectoryOptions(*sub, options.trajectory);
-  return sub;
 }
 
 int RunRobot(const RobotOptions& options, std::ostream& out, std::ostream& err) {

@@ -32,8 +32,9 @@ struct RobotOptions {
   std::optional<RunContext> run;
 };
 
-/// Adds the `robot` subcommand to `app`; `options` must outlive the parse.
-CLI::App* SetupRobot(CLI::App& app, RobotOptions& options);
+/// Registers the options of the `robot` subcommand `sub` (made by RunCli with its name and
+/// summary); `options` must outlive the parse.
+void SetupRobot(CLI::App* sub, RobotOptions& options);
 
 /// Runs the subcommand: one call to robot::ReflectedMass, or with --trajectory the check of
 /// robot_trajectory.hpp; returns the exit code (0 or 2; 1 when a check's output fails).

@@ -180,10 +180,7 @@ void AddSceneOptions(CLI::App& sub_app, SimulateOptions& options) {
   }
 }
 
-CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "simulate", "Compute one impact: peak force, stresses, energy density and the "
-                  "laceration/contusion verdicts");
+void SetupSimulate(CLI::App* sub, SimulateOptions& options) {
   sub->footer(std::string(kFooter));
   AddSceneOptions(*sub, options);
   sub->add_option("--safety-factor", options.safety_factor,
@@ -240,7 +237,6 @@ CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options) {
       ->type_name("FILE.png|FILE.svg")
       ->group("Output");
   AddReportOption(*sub, options.report_file);
-  return sub;
 }
 
 namespace {

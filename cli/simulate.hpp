@@ -138,9 +138,9 @@ void AddSceneOptions(CLI::App& sub, SimulateOptions& options);
 /// "cvode-adams, cvode-bdf, arkode-erk32, ...": every time-integration method's name.
 std::string IntegratorNames();
 
-/// Adds the `simulate` subcommand to `app`, storing what is typed into `options`, which
-/// must outlive the parse.
-CLI::App* SetupSimulate(CLI::App& app, SimulateOptions& options);
+/// Registers the options of the `simulate` subcommand `sub` (made by RunCli with its name and
+/// summary), storing what is typed into `options`, which must outlive the parse.
+void SetupSimulate(CLI::App* sub, SimulateOptions& options);
 
 /// Reads every value and checks how the options combine (the scene's ranges are left to the
 /// library; limits and the safety factor are checked here). A scene input given as LO..HI

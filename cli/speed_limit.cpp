@@ -165,10 +165,7 @@ void PrintHeadScope(std::ostream& out, const optim::SpeedLimitOptions& options, 
   for (const std::string& line : optim::HeadVerdictScope(LimitRule(options, covering))) fmt::print(out, "  {}\n", line);
 }
 
-CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "speed-limit", "The largest safe impact speed of the robot with its covering (or, --solve-for mass, "
-                     "the largest safe reflected mass), per reflected mass");
+void SetupSpeedLimit(CLI::App* sub, SpeedLimitCommandOptions& options) {
   sub->footer(std::string(kFooter));
   AddSceneOptions(*sub, options.scene);
   AddRobotModelOptions(*sub, options.scene.robot_model, true, "Robot model (instead of --robot-mass)");
@@ -207,7 +204,6 @@ CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options) {
       ->type_name("FILE.png|FILE.svg")
       ->group("Output");
   AddReportOption(*sub, options.report_file);
-  return sub;
 }
 
 SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {

@@ -78,8 +78,9 @@ struct SpeedLimitPlan {
   PlotFormat plot_format = PlotFormat::kPng;
 };
 
-/// Adds the `speed-limit` subcommand to `app`, storing what is typed into `options`.
-CLI::App* SetupSpeedLimit(CLI::App& app, SpeedLimitCommandOptions& options);
+/// Registers the options of the `speed-limit` subcommand `sub` (made by RunCli with its name
+/// and summary), storing what is typed into `options`.
+void SetupSpeedLimit(CLI::App* sub, SpeedLimitCommandOptions& options);
 
 /// Reads and checks the options (the scene's ranges are left to the library).
 /// @throws InputError naming the flag, the value and what is allowed.

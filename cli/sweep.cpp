@@ -263,11 +263,7 @@ std::size_t SweepBlockRows(std::size_t points, unsigned threads) {
   return std::clamp<std::size_t>(per_block, 16, 1024);
 }
 
-CLI::App* SetupSweep(CLI::App& app, SweepCommandOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "sweep", "Sweep one or two scene quantities over a grid (exact path, or the time path where the "
-               "scene needs it; all cores): CSV of "
-               "every point, and a map or line chart of the injury ratios");
+void SetupSweep(CLI::App* sub, SweepCommandOptions& options) {
   sub->footer(std::string(kFooter));
   sub->add_option("--x", options.x, "first swept quantity, e.g. covering-modulus=0.1MPa..1GPa:log:200")
       ->type_name("NAME=SPEC")
@@ -303,7 +299,6 @@ CLI::App* SetupSweep(CLI::App& app, SweepCommandOptions& options) {
   sub->add_flag("--no-progress", options.no_progress,
                 "no progress bar (it is shown only on a terminal, for long sweeps)")
       ->group("Output");
-  return sub;
 }
 
 /// What RunSweep reads from its options before any computation.

@@ -116,8 +116,9 @@ covopt::SweepSpec MakeSweepSpec(const SweepAxisArgument& x, const SweepAxisArgum
 /// thread, 16..1024 rows, so small grids still spread over the threads.
 std::size_t SweepBlockRows(std::size_t points, unsigned threads);
 
-/// Adds the `sweep` subcommand to `app`, storing what is typed into `options`.
-CLI::App* SetupSweep(CLI::App& app, SweepCommandOptions& options);
+/// Registers the options of the `sweep` subcommand `sub` (made by RunCli with its name and
+/// summary), storing what is typed into `options`.
+void SetupSweep(CLI::App* sub, SweepCommandOptions& options);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunSweep(const SweepCommandOptions& options, std::ostream& out, std::ostream& err);

@@ -528,11 +528,7 @@ std::string WorkPrecisionCsv(const std::vector<WorkPrecisionPoint>& points) {
   return csv;
 }
 
-CLI::App* SetupWorkPrecision(CLI::App& app, WorkPrecisionOptions& options) {
-  CLI::App* sub = app.add_subcommand(
-      "workprecision",
-      "Speed against accuracy: every time-integration method over a ladder of tolerances, "
-      "measured against the exact path (table, CSV, charts)");
+void SetupWorkPrecision(CLI::App* sub, WorkPrecisionOptions& options) {
   sub->footer(
       "Each run's errors are relative to the exact path (the reference for every peak);\n"
       "time is the median CPU time per impact of repeated runs. Scene flags as in\n"
@@ -581,7 +577,6 @@ CLI::App* SetupWorkPrecision(CLI::App& app, WorkPrecisionOptions& options) {
                 "the time path per --methods (default arkode-erk54, cvode-adams, cvode-bdf) and --tolerances "
                 "(default 1e-4..1e-10); errors of b_c* and E_c* against the exact optimum, CPU time per search")
       ->group("Study");
-  return sub;
 }
 
 int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std::ostream& err) {

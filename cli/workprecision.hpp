@@ -66,8 +66,9 @@ std::vector<double> ParseToleranceLadder(const std::string& text);
 /// The CSV of `covopt workprecision --csv`: a header, then one row per point.
 std::string WorkPrecisionCsv(const std::vector<covopt::WorkPrecisionPoint>& points);
 
-/// Adds the `workprecision` subcommand to `app`.
-CLI::App* SetupWorkPrecision(CLI::App& app, WorkPrecisionOptions& options);
+/// Registers the options of the `workprecision` subcommand `sub` (made by RunCli with its name
+/// and summary).
+void SetupWorkPrecision(CLI::App* sub, WorkPrecisionOptions& options);
 
 /// Runs the subcommand; returns the exit code (0, 1 or 2).
 int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std::ostream& err);
