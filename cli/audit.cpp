@@ -19,6 +19,7 @@
 #include "body_region_options.hpp"
 #include "covopt/audit/assemble.hpp"
 #include "covopt/audit/audit.hpp"
+#include "covopt/optim/input_warnings.hpp"
 #include "covopt/report/audit_json.hpp"
 #include "covopt/report/csv.hpp"
 #include "covopt/robot/surface.hpp"
@@ -212,7 +213,7 @@ AuditRun Resolve(const AuditCommandOptions& o) {
     in.catalog = &*catalog;
   }
   in.scene_warnings = InputWarnings(plan);
-  for (std::string& w : CrushCheckOf(plan).notes) in.scene_warnings.push_back(std::move(w));
+  optim::AppendNewWarnings(in.scene_warnings, CrushCheckOf(plan).notes);  // the default covering is in both
   AuditRun run(audit::AssembleAudit(in));
   run.plot_format = plot_format;
   if (o.design) {  // optimize's ranges, named by the flags (the library names its own fields)

@@ -12,6 +12,7 @@
 #include "covopt/core/quantity.hpp"
 #include "covopt/report/body_contact_json.hpp"
 #include "covopt/report/csv.hpp"
+#include "covopt/scene_file/targets.hpp"
 #include "errors.hpp"
 #include "output.hpp"
 #include "report_option.hpp"
@@ -151,6 +152,7 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
     return errors.BadInput(AttributeError(e.what(), plan));
   }
   std::vector<std::string> warnings = InputWarnings(plan);
+  warnings.insert(warnings.end(), regions.notes.begin(), regions.notes.end());
   if (const auto note = ContactAreaNote(regions, plan.scene, false)) warnings.push_back(*note);
   // The time path's self-check (a braking robot's judgement is its time path), per region.
   for (std::size_t i = 0; i < judgements.size(); ++i) {
@@ -316,10 +318,8 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
       if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(std::move(w));
     }
   }
-  if (regions.has_iso() && !(regions.contact_area_m2 > 0.0)) {
-    warnings.push_back("the bare robot's pressure is not evaluated (no --contact-area): its limits are those of "
-                       "the force alone");
-  }
+  warnings.insert(warnings.end(), regions.notes.begin(), regions.notes.end());
+  if (const auto note = scene_file::BarePressureNote(regions)) warnings.push_back(AsFlags(*note));
   const auto csv_text = [&] {
     std::string text;
     report::AppendCsvRecord(text, report::BodyRegionTableColumns());
@@ -409,9 +409,11 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
 }
 
 int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignRequest& head,
-                          const std::vector<std::string>& input_warnings, const BodyRegionPlan& regions,
+                          const std::vector<std::string>& scene_warnings, const BodyRegionPlan& regions,
                           std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "optimize");
+  std::vector<std::string> input_warnings = scene_warnings;
+  input_warnings.insert(input_warnings.end(), regions.notes.begin(), regions.notes.end());
   optim::BodyRegionDesignRequest request;
   try {
     const auto refuse = [](bool given, std::string_view flag, std::string_view why) {
@@ -436,6 +438,7 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
         }
       }
       if (options.thresholds) throw InputError("--thresholds applies to the head's model; add --body-region head");
+      if (options.head_area) throw InputError("--head-area applies to the head's model; add --body-region head");
     }
     if (std::isinf(head.scene.robot.radius_m)) {
       throw InputError("--robot-radius flat: a covering on a body region needs a finite robot radius (its Hertz contact "

@@ -1,15 +1,14 @@
 #include "body_region_options.hpp"
 
 #include <algorithm>
-#include <array>
-#include <cctype>
 #include <cmath>
 #include <string_view>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "covopt/core/physical_floors.hpp"
+#include "covopt/scene_file/spelling.hpp"
+#include "covopt/scene_file/targets.hpp"
 #include "errors.hpp"
 #include "quantity.hpp"
 #include "simulate.hpp"
@@ -17,42 +16,6 @@
 namespace covopt::cli {
 namespace {
 
-std::string Lowered(std::string_view text) {
-  std::string lowered(text);
-  for (char& c : lowered) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return lowered;
-}
-
-std::string_view Trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
-/// The names of a comma-separated --body-region value, each trimmed; an empty one is refused.
-std::vector<std::string> SplitNames(const std::string& typed) {
-  std::vector<std::string> names;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = typed.find(',', start);
-    const std::string_view name =
-        Trimmed(std::string_view(typed).substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (name.empty()) {
-      throw InputError(fmt::format("--body-region: an empty name in '{}'; give region names separated by commas, "
-                                   "e.g. chest,hands-fingers (see 'covopt body-regions list'), head or all",
-                                   typed));
-    }
-    names.emplace_back(name);
-    if (comma == std::string::npos) return names;
-    start = comma + 1;
-  }
-}
-
-/// The scene inputs an ISO region reads (the rest belong to the head's model).
-constexpr std::array<std::string_view, 9> kBodyContactInputs{
-    "robot.mass",         "robot.speed",         "robot.radius",         "covering.modulus",
-    "covering.poisson",   "covering.thickness",  "limits.safety_factor", "robot.reaction_delay",
-    "robot.braking"};
 
 }  // namespace
 
@@ -78,99 +41,34 @@ void AddBodyRegionOptions(CLI::App& sub, BodyRegionFlags& flags) {
       ->group(std::string(kGroup));
 }
 
-std::string BodyTarget::Name() const {
-  if (!limits) return "head";
-  return fmt::format("{} ({})", limits->region->name, limits->area->name);
-}
-
-bool BodyRegionPlan::has_head() const noexcept {
-  return std::any_of(targets.begin(), targets.end(), [](const BodyTarget& t) { return t.is_head(); });
-}
-
-bool BodyRegionPlan::has_iso() const noexcept {
-  return std::any_of(targets.begin(), targets.end(), [](const BodyTarget& t) { return !t.is_head(); });
-}
-
-std::vector<materials::BodyLimits> BodyRegionPlan::IsoLimits() const {
-  std::vector<materials::BodyLimits> limits;
-  for (const BodyTarget& target : targets) {
-    if (target.limits) limits.push_back(*target.limits);
-  }
-  return limits;
+std::string AsFlags(std::string_view message) {
+  static constexpr scene_file::FieldSpelling kFlags[] = {
+      {"body.region", "--body-region"},
+      {"body.area", "--body-area"},
+      {"body.contact", "--contact"},
+      {"body.contact_area", "--contact-area"},
+      {"head.mass", "--head-mass"},  // "give head.mass=fixed" for a head held still
+  };
+  return scene_file::Respell(message, kFlags, scene_file::ValueStyle::kFlag);
 }
 
 std::optional<BodyRegionPlan> ResolveBodyRegions(const BodyRegionFlags& flags) {
-  if (flags.regions.empty()) {
-    if (flags.any()) {
-      throw InputError(fmt::format("{} applies with --body-region NAME (see 'covopt body-regions list')",
-                                   flags.area ? "--body-area" : flags.contact ? "--contact" : "--contact-area"));
-    }
-    return std::nullopt;
-  }
-  BodyRegionPlan plan;
-  if (flags.contact) {
-    const std::optional<ContactType> contact = ParseContactType(Lowered(Trimmed(*flags.contact)));
-    if (!contact) {
-      throw InputError(fmt::format("--contact: expected transient or clamped (got '{}')", *flags.contact));
-    }
-    plan.contact = *contact;
-  }
+  scene_file::TargetRequest request;
+  request.names = flags.regions;
+  request.area = flags.area;
+  request.contact = flags.contact;
   if (flags.contact_area) {
-    plan.contact_area_m2 = ParseQuantity(*flags.contact_area, quantity_specs::kContactArea, "--contact-area");
-    if (!(plan.contact_area_m2 >= kMinContactArea_m2) || plan.contact_area_m2 > 1.0) {  // the floor: 1 mm²
-      throw InputError(fmt::format("--contact-area must be in [1 mm², 1 m²] (got '{}')", *flags.contact_area));
-    }
+    request.contact_area_m2 = ParseQuantity(*flags.contact_area, quantity_specs::kContactArea, "--contact-area");
+    request.contact_area_shown = *flags.contact_area;
   }
-
-  std::vector<std::string> names;
-  for (const std::string& typed : flags.regions) {
-    for (std::string& name : SplitNames(typed)) names.push_back(std::move(name));
+  std::optional<BodyRegionPlan> plan;
+  try {
+    plan = scene_file::ResolveTargets(request);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(AsFlags(e.what()));
   }
-  const bool all = std::any_of(names.begin(), names.end(), [](const std::string& n) { return Lowered(n) == "all"; });
-  const auto iso_count = std::count_if(names.begin(), names.end(), [](const std::string& n) {
-    const std::string lowered = Lowered(n);
-    return lowered != "all" && lowered != "head";
-  });
-  if (flags.area && (all || iso_count != 1)) {
-    throw InputError(fmt::format("--body-area '{}' names an area of one region; give exactly one --body-region "
-                                 "with it (got {})",
-                                 *flags.area, all ? "all" : fmt::format("{} regions", iso_count)));
-  }
-
-  const materials::BodyRegionTable& table = materials::BodyRegionTable::BuiltIn();
-  const auto add = [&plan](BodyTarget target) {
-    const bool seen = std::any_of(plan.targets.begin(), plan.targets.end(), [&](const BodyTarget& t) {
-      return t.is_head() == target.is_head() &&
-             (t.is_head() || (t.limits->region == target.limits->region && t.limits->area == target.limits->area));
-    });
-    if (!seen) plan.targets.push_back(std::move(target));
-  };
-  const auto add_head = [&] {
-    if (plan.contact == ContactType::kClamped) {
-      throw InputError("--body-region head is judged by Park et al.'s skin model of a free head, which has no clamped "
-                       "contact; for a head held still give --head-mass fixed (and drop --contact clamped), or name "
-                       "skull-forehead or face, whose ISO/TS 15066 limits are quasi-static");
-    }
-    add(BodyTarget{});
-  };
-  for (const std::string& name : names) {
-    const std::string lowered = Lowered(name);
-    if (lowered == "all") {
-      for (const materials::BodyLimits& limits : table.AllLimits(plan.contact)) add(BodyTarget{limits});
-      if (plan.contact == ContactType::kTransient) add(BodyTarget{});
-    } else if (lowered == "head") {
-      add_head();
-    } else {
-      try {
-        add(BodyTarget{table.Limits(name, flags.area.value_or(""), plan.contact)});
-      } catch (const materials::BodyRegionError& e) {
-        const std::string message = e.what();
-        // An unknown region: the table's choices, and the two names that are not regions.
-        const bool unknown_region = message.rfind("body region '", 0) == 0 && message.find("(regions:") != std::string::npos;
-        throw InputError(fmt::format("{}: {}{}", flags.area && message.find("area") != std::string::npos ? "--body-area" : "--body-region",
-                                     message, unknown_region ? "; or head (Park et al.'s skin model) or all" : ""));
-      }
-    }
+  if (plan) {
+    for (std::string& note : plan->notes) note = AsFlags(note);
   }
   return plan;
 }
@@ -189,19 +87,10 @@ int RunWithBodyRegions(const BodyRegionFlags& flags, const CommandErrors& errors
 
 void CheckBodyRegionScene(const BodyRegionPlan& regions, const SimulationPlan& plan) {
   if (!regions.has_iso()) return;
-  const std::string names = [&] {
-    std::string text;
-    int shown = 0;
-    for (const BodyTarget& target : regions.targets) {
-      if (target.is_head()) continue;
-      if (shown == 2) return text + ", ...";
-      text += (shown++ > 0 ? ", " : "") + target.limits->region->name;
-    }
-    return text;
-  }();
+  const std::string names = regions.IsoNames();
   if (!regions.has_head()) {
     for (const auto& [field, source] : plan.sources) {
-      if (std::find(kBodyContactInputs.begin(), kBodyContactInputs.end(), field) != kBodyContactInputs.end()) continue;
+      if (scene_file::BodyRegionReads(field)) continue;
       throw InputError(fmt::format("{} from {} does not apply to the ISO/TS 15066 body region ({}): it is an input "
                                    "of the head's model; drop it, or add --body-region head",
                                    field, source, names));
@@ -228,16 +117,11 @@ void CheckBodyRegionScene(const BodyRegionPlan& regions, const SimulationPlan& p
         "give the radius, e.g. --robot-radius 15mm, or --covering-thickness 0 for the bare robot",
         given, names));
   }
-  // The bare robot's own verdict needs its pressure: Table A.2 limits the pressure as well as
-  // the force, and the pressure of a bare robot is its force over its contact area. Without
-  // the area the verdict would be the force's alone. (With a covering the pressure is the
-  // covering's Hertz pressure, and the bare robot is only the comparison.)
-  if (optim::BareRobotLacksContactArea(BodyContactSceneOf(scene, regions))) {
-    throw InputError(fmt::format(
-        "--contact-area is needed for the bare robot on {}: ISO/TS 15066 Table A.2 limits the pressure too, and the "
-        "bare robot's pressure is its force over its contact area; give the area of the robot's contact surface, "
-        "e.g. --contact-area 1cm2 (a bare number is m², in [1e-06, 0.1]), or a covering",
-        names));
+  // The bare robot's own verdict needs its pressure: the library's policy.
+  try {
+    scene_file::RequireBareRobotContactArea(regions, BodyContactSceneOf(scene, regions));
+  } catch (const std::invalid_argument& e) {
+    throw InputError(AsFlags(e.what()));
   }
 }
 
@@ -280,10 +164,10 @@ optim::BodyRegionOptions BodyRegionOptionsOf(const SimulationPlan& plan, bool al
 }
 
 std::optional<std::string> ContactAreaNote(const BodyRegionPlan& regions, const Scene& scene, bool bare_robot_judged) {
-  if (!(regions.contact_area_m2 > 0.0) || !(scene.covering.thickness_m > 0.0) || bare_robot_judged) return std::nullopt;
-  return fmt::format("--contact-area {} is the bare robot's; with the covering the pressure is its Hertz pressure "
-                     "(the area is not used here)",
-                     FormatQuantity(regions.contact_area_m2, QuantityKind::kArea));
+  const std::optional<std::string> note =
+      scene_file::ContactAreaNote(regions, BodyContactSceneOf(scene, regions), bare_robot_judged);
+  if (!note) return std::nullopt;
+  return AsFlags(*note);
 }
 
 std::string HeadCriteriaName() { return std::string(optim::HeadCriteriaName()); }

@@ -20,9 +20,11 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "covopt/core/body_contact.hpp"
+#include "covopt/materials/contact_target.hpp"
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/optim/body_region_check.hpp"
@@ -50,33 +52,22 @@ struct BodyRegionFlags {
 /// Adds the group "Body region (ISO/TS 15066)" to `sub`, filling `flags`.
 void AddBodyRegionOptions(CLI::App& sub, BodyRegionFlags& flags);
 
-/// One thing a command judges: an area of an ISO region, or the head (Park et al.).
-struct BodyTarget {
-  /// The region's limits; empty for the head.
-  std::optional<materials::BodyLimits> limits;
-  bool is_head() const noexcept { return !limits.has_value(); }
-  /// "chest (sternum)" or "head".
-  std::string Name() const;
-};
+/// One thing a command judges: an area of an ISO region, or the head (Park et al.): the
+/// library's target (covopt/materials/contact_target.hpp).
+using BodyTarget = materials::ContactTarget;
 
-/// What the flags resolve to.
-struct BodyRegionPlan {
-  std::vector<BodyTarget> targets;  ///< in the order named (table order for "all")
-  ContactType contact = ContactType::kTransient;
-  /// The bare robot's contact area [m²]; 0: not given (the bare pressure is not evaluated).
-  double contact_area_m2 = 0.0;
-  bool has_head() const noexcept;
-  bool has_iso() const noexcept;
-  /// The ISO targets' limits, in order (the head left out).
-  std::vector<materials::BodyLimits> IsoLimits() const;
-};
+/// What the flags resolve to: the library's targets (scene_file::ResolveTargets).
+using BodyRegionPlan = materials::ContactTargets;
 
-/// Reads the flags; empty when --body-region is not given (then --body-area, --contact and
-/// --contact-area are bad input).
-/// @throws InputError one line naming the flag, the value and the choices (an unknown
-///         region or area, transient contact with the skull/forehead or face: the table's
-///         messages; --body-area with other than one ISO region; the head clamped).
+/// Reads the flags with the library's resolver (scene_file::ResolveTargets, which documents
+/// the behaviour: case, "all", "head", duplicates), its messages spelled as flags; empty when
+/// --body-region is not given (then --body-area, --contact and --contact-area are bad input).
+/// @throws InputError one line naming the flag, the value and the choices.
 std::optional<BodyRegionPlan> ResolveBodyRegions(const BodyRegionFlags& flags);
+
+/// A library message naming the body-region fields (body.region, body.contact=clamped) with
+/// the flags (--body-region, --contact clamped): the CLI's one table of their spellings.
+std::string AsFlags(std::string_view message);
 
 /// ResolveBodyRegions(flags) handed to `run`, a refusal being exit 2 through `errors`: how each
 /// command enters its --body-region form.

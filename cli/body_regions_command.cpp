@@ -10,6 +10,7 @@
 
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/report/body_regions_json.hpp"
+#include "body_region_options.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
 
@@ -155,7 +156,7 @@ int RunBodyRegions(const BodyRegionsOptions& options, std::ostream& out, std::os
       try {
         region = &table.Region(options.name);
       } catch (const materials::BodyRegionError& e) {
-        return errors.BadInput(e.what());
+        return errors.BadInput(AsFlags(e.what()));  // "(... --body-region head)"
       }
       if (options.json) {
         out << WithRunProvenance(report::BodyRegionJson(*region), options.run) << '\n';

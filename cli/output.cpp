@@ -46,6 +46,33 @@ void Row(std::ostream& out, std::string_view label, std::string_view value) {
   fmt::print(out, "  {:<24} {}\n", label, value);
 }
 
+/// The verdicts: laceration, contusion, fracture (with its source), crush, overall.
+void PrintVerdicts(std::ostream& out, const SimulationReport& report) {
+  const InjuryVerdict& lac = report.assessment.laceration;
+  const InjuryVerdict& con = report.assessment.contusion;
+  fmt::print(out, "\nVerdicts\n");
+  fmt::print(out, "  {:<12} {:<7} tensile stress {:.6g} MPa, limit {:g} MPa, ratio {:.4g}\n",
+             "laceration", SafeWord(lac.safe), lac.value / 1e6, lac.limit / 1e6, lac.ratio);
+  fmt::print(out, "  {:<12} {:<7} energy density {:.6g} J/cm², limit {:g} J/cm², ratio {:.4g}\n",
+             "contusion", SafeWord(con.safe), con.value / 1e4, con.limit / 1e4, con.ratio);
+  const InjuryVerdict& fracture = report.assessment.fracture;
+  const FractureForce& bone = FractureForceOf(report.assessment.area);
+  const bool published = fracture.limit == bone.force_N;
+  fmt::print(out, "  {:<12} {:<7} peak force {:.6g} N, limit {:g} N ({}: {}{}), ratio {:.4g}\n  {:<20} source: {}\n",
+             "fracture", SafeWord(fracture.safe), fracture.value, fracture.limit, bone.name,
+             published ? "the lowest published fracture force" : "the given fracture force",
+             report.safety_factor != 1.0
+                 ? fmt::format("; derated {:.4g} N at safety factor {:g}", fracture.limit / report.safety_factor,
+                               report.safety_factor)
+                 : std::string(),
+             fracture.ratio, "", published ? bone.source : std::string_view("given"));
+  if (report.crush) {
+    fmt::print(out, "  {:<12} {:<7} compressive stress {:.6g} MPa, strength {:.6g} MPa, ratio {:.4g}\n", "crush",
+               SafeWord(report.crush->safe), report.crush->value / 1e6, report.crush->limit / 1e6, report.crush->ratio);
+  }
+  fmt::print(out, "  {:<12} {}\n", "overall", SafeWord(report.safe()));
+}
+
 }  // namespace
 
 void PrintTable(std::ostream& out, const SimulationReport& report) {
@@ -135,18 +162,7 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
   Row(out, "scalp fully compressed", YesNo(p.scalp_fully_compressed));
   Row(out, "fully compressed", YesNo(p.fully_compressed));
 
-  const InjuryVerdict& lac = report.assessment.laceration;
-  const InjuryVerdict& con = report.assessment.contusion;
-  fmt::print(out, "\nVerdicts\n");
-  fmt::print(out, "  {:<12} {:<7} tensile stress {:.6g} MPa, limit {:g} MPa, ratio {:.4g}\n",
-             "laceration", SafeWord(lac.safe), lac.value / 1e6, lac.limit / 1e6, lac.ratio);
-  fmt::print(out, "  {:<12} {:<7} energy density {:.6g} J/cm², limit {:g} J/cm², ratio {:.4g}\n",
-             "contusion", SafeWord(con.safe), con.value / 1e4, con.limit / 1e4, con.ratio);
-  if (report.crush) {
-    fmt::print(out, "  {:<12} {:<7} compressive stress {:.6g} MPa, strength {:.6g} MPa, ratio {:.4g}\n", "crush",
-               SafeWord(report.crush->safe), report.crush->value / 1e6, report.crush->limit / 1e6, report.crush->ratio);
-  }
-  fmt::print(out, "  {:<12} {}\n", "overall", SafeWord(report.safe()));
+  PrintVerdicts(out, report);
 
   fmt::print(out, "\nMethod  {}", ToString(r.method));
   if (report.time_options) {

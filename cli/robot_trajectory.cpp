@@ -17,6 +17,7 @@
 
 #include "body_region_options.hpp"
 #include "covopt/optim/body_region_trajectory.hpp"
+#include "covopt/optim/input_warnings.hpp"
 #include "covopt/optim/trajectory_check.hpp"
 #include "covopt/report/body_contact_json.hpp"
 #include "covopt/report/csv.hpp"
@@ -168,7 +169,7 @@ TrajectoryRun Resolve(const RobotModelOptions& model, const RobotTrajectoryOptio
     }
   }
   for (std::string& w : InputWarnings(run.scene)) run.input_warnings.push_back(std::move(w));
-  for (std::string& w : CrushCheckOf(run.scene).notes) run.input_warnings.push_back(std::move(w));
+  optim::AppendNewWarnings(run.input_warnings, CrushCheckOf(run.scene).notes);  // the default covering is in both
 
   const RobotModelInput robot_input = ResolveChainAndPoint(model);
   const robot::KinematicChain& chain = robot_input.chain;
@@ -229,6 +230,7 @@ int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptio
   const std::string criterion = BodyCriterion(body_options.rule, regions.has_head());
   std::vector<std::string> warnings = run.input_warnings;
   warnings.insert(warnings.end(), run.motion.warnings.begin(), run.motion.warnings.end());
+  warnings.insert(warnings.end(), regions.notes.begin(), regions.notes.end());
   if (json || options.report_file) {
     const optim::BodyRegionTrajectoryCheck empty;
     try {

@@ -1,5 +1,6 @@
 #include "scene_fields.hpp"
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -39,8 +40,21 @@ void CheckLimitValue(const LimitField& field, double value, std::string_view nam
   AsInputError([&] { scene_file::CheckLimitValue(field, value, name, shown); });
 }
 
+void ApplySceneFlagInputs(std::span<const scene_file::SceneInput> inputs, scene_file::ResolvedScene& resolved) {
+  try {
+    scene_file::ApplySceneInputs(inputs, materials::Catalog{}, resolved);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(scene_file::Respell(e.what(), scene_file::SceneInputSpellings(scene_file::ValueStyle::kFlag),
+                                         scene_file::ValueStyle::kFlag));
+  }
+}
+
 ThresholdReading ParseThresholds(std::string_view text, std::string_view name) {
   return AsInputError([&] { return scene_file::ParseThresholds(text, name); });
+}
+
+HeadArea ParseHeadArea(std::string_view text, std::string_view name) {
+  return AsInputError([&] { return ParseHeadAreaOrThrow(name, text); });
 }
 
 }  // namespace covopt::cli

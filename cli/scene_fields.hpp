@@ -13,6 +13,7 @@
 #include "covopt/core/scene.hpp"
 #include "covopt/core/scene_fields.hpp"
 #include "covopt/scene_file/fields.hpp"
+#include "covopt/scene_file/scene_inputs.hpp"
 #include "quantity.hpp"
 
 namespace covopt::cli {
@@ -45,7 +46,17 @@ std::span<const LimitField> LimitFields() noexcept;
 void CheckLimitValue(const LimitField& field, double value, std::string_view name,
                      std::string_view shown);
 
+/// The library's one resolution of scene inputs (scene_file::ApplySceneInputs) for inputs
+/// typed as flags, its messages naming the flags (the CLI's one table of their spellings,
+/// scene_file::SceneInputSpellings).
+/// @throws InputError "--robot-radius 40: a bare number is in metres ...".
+void ApplySceneFlagInputs(std::span<const scene_file::SceneInput> inputs, scene_file::ResolvedScene& resolved);
+
 /// scene_file::ParseThresholds ("cumulative" or "literal"), throwing InputError.
 ThresholdReading ParseThresholds(std::string_view text, std::string_view name);
+
+/// covopt::ParseHeadAreaOrThrow (frontal, temporo-parietal, nasal, ...), throwing InputError.
+/// @throws InputError "--head-area must be one of frontal, ... (got \"cheek\")".
+HeadArea ParseHeadArea(std::string_view text, std::string_view name);
 
 }  // namespace covopt::cli

@@ -112,9 +112,9 @@ void ApplyMaterial(const SimulateOptions& options, const SceneFileExtras& extras
   plan.covering_material = *material;
 }
 
-/// The injury limits and the safety factor: defaults, the scene file's [limits], the flags.
-void ApplyLimits(const SimulateOptions& options, const SceneFileExtras& extras,
-                 SimulationPlan& plan) {
+/// The injury limits and the safety factor of the scene file's [limits] (the flags'
+/// are ApplySceneFlags's).
+void ApplyLimits(const SceneFileExtras& extras, SimulationPlan& plan) {
   if (extras.laceration_limit_Pa) {
     plan.limits.laceration_tensile_stress_Pa = *extras.laceration_limit_Pa;
   }
@@ -122,18 +122,34 @@ void ApplyLimits(const SimulateOptions& options, const SceneFileExtras& extras,
     plan.limits.contusion_energy_density_J_per_m2 = *extras.contusion_limit_J_per_m2;
   }
   if (extras.safety_factor) plan.safety_factor = *extras.safety_factor;
+}
+
+/// The flags' scene inputs (the limits, the scene fields not given as ranges, the
+/// thresholds) applied by the library's one resolution (scene_file::ApplySceneInputs), its
+/// messages naming the flags (scene_file::SceneInputSpellings); their sources noted.
+void ApplySceneFlags(const SimulateOptions& options, SimulationPlan& plan) {
+  std::vector<scene_file::SceneInput> inputs;
+  const auto add = [&](std::string field, std::string_view flag, const std::string& typed) {
+    plan.sources[field] = fmt::format("{} '{}'", flag, typed);
+    inputs.push_back({std::move(field), typed, ""});
+  };
   for (const LimitField& field : LimitFields()) {
     const std::optional<std::string>& typed = field.key == "laceration"  ? options.laceration_limit
                                               : field.key == "contusion" ? options.contusion_limit
                                                                          : options.safety_factor;
-    if (!typed) continue;
-    const double value = ParseQuantity(*typed, field.spec, field.flag);
-    CheckLimitValue(field, value, field.flag, fmt::format("'{}'", *typed));
-    if (field.key == "laceration") plan.limits.laceration_tensile_stress_Pa = value;
-    if (field.key == "contusion") plan.limits.contusion_energy_density_J_per_m2 = value;
-    if (field.key == "safety_factor") plan.safety_factor = value;
-    plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, *typed);
+    if (typed) add(field.dotted_name(), field.flag, *typed);
   }
+  for (const SceneField& field : SceneFields()) {
+    const auto typed = options.scene_values.find(field.dotted_name());
+    if (typed != options.scene_values.end() && !IsRangeText(typed->second)) add(typed->first, field.flag, typed->second);
+  }
+  if (options.thresholds) add("model.thresholds", "--thresholds", *options.thresholds);
+  if (options.head_area) add("head.area", "--head-area", *options.head_area);
+  scene_file::ResolvedScene resolved{plan.scene, plan.limits, plan.safety_factor, nullptr};
+  ApplySceneFlagInputs(inputs, resolved);
+  plan.scene = resolved.scene;
+  plan.limits = resolved.limits;
+  plan.safety_factor = resolved.safety_factor;
 }
 
 }  // namespace
@@ -159,6 +175,11 @@ void AddSceneOptions(CLI::App& sub_app, SimulateOptions& options) {
   sub->add_option("--thresholds", options.thresholds,
                   "phase thresholds: cumulative (default) or literal (the paper's text)")
       ->check(CLI::IsMember({"cumulative", "literal"}))
+      ->group("Scene");
+  sub->add_option("--head-area", options.head_area,
+                  "the struck area of the head, whose lowest published fracture force the peak force is judged against: " +
+                      HeadAreaChoices() + " (default frontal, the forehead; docs/model.md §7.1)")
+      ->type_name("AREA")
       ->group("Scene");
   sub->add_option("--material", options.material,
                   "covering modulus and Poisson ratio from the material catalog (see 'covopt "
@@ -358,7 +379,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
                                  "covering.material)",
                                  options.catalog.files.empty() ? "--no-builtin" : "--catalog"));
   }
-  ApplyLimits(options, extras, plan);
+  ApplyLimits(extras, plan);
   for (const SceneField& field : SceneFields()) {
     const auto typed = options.scene_values.find(field.dotted_name());
     if (typed != options.scene_values.end()) {
@@ -366,12 +387,11 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
       std::erase_if(plan.ranges, [&](const SceneRange& r) { return r.field == field.dotted_name(); });
       if (IsRangeText(typed->second)) {
         plan.ranges.push_back(AsInputError([&] { return scene_file::ParseSceneRange(typed->second, field, field.flag); }));
-      } else {
-        field.field(plan.scene) = ParseQuantity(typed->second, field.spec, field.flag);
+        plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, typed->second);
       }
-      plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, typed->second);
     }
   }
+  ApplySceneFlags(options, plan);
   if (!plan.ranges.empty() && !options.accept_ranges) {
     throw InputError(fmt::format("{} '{}': a range (an uncertain input) is taken by simulate, optimize and speed-limit "
                                  "only; this command needs one value",
@@ -396,10 +416,6 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     }
   }
   SetNominalValues(plan.scene, plan.ranges);
-  if (options.thresholds) {
-    plan.scene.model.thresholds = ParseThresholds(*options.thresholds, "--thresholds");
-    plan.sources["model.thresholds"] = fmt::format("--thresholds '{}'", *options.thresholds);
-  }
 
   // Outputs.
   plan.json = options.json;
@@ -423,7 +439,8 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
 }
 
 void Judge(report::SimulationReport& report, const SimulationPlan& plan) {
-  report.assessment = report::JudgeInjuries(report.result.peaks, plan.limits, plan.safety_factor);
+  report.assessment =
+      report::JudgeInjuries(report.result.peaks, plan.limits, plan.safety_factor, report.scene.head.area);
   report.safety_factor = plan.safety_factor;
   const optim::CoveringCrushCheck crush = CrushCheckOf(plan);
   if (crush.compressive_strength_Pa > 0.0) {
@@ -553,6 +570,8 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
       optim::WorstCaseOptions worst_options;
       worst_options.safety_factor = plan.safety_factor;
       worst_options.limits = plan.limits;
+      // The material's strength: a crushed covering fails the worst case (docs/model.md §12).
+      worst_options.compressive_strength_Pa = CrushCheckOf(plan).compressive_strength_Pa;
       worst = optim::FindWorstCase(*box, worst_options);
       report.scene = worst.scene;
     }
@@ -566,6 +585,7 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
       SamplingProgressBar bar(err, "sampling");
       sampling->safety_factor = plan.safety_factor;
       sampling->limits = plan.limits;
+      sampling->compressive_strength_Pa = CrushCheckOf(plan).compressive_strength_Pa;
       sampling->progress = bar.Callback();
       probability = optim::EstimateInjuryProbability(*box, *sampling);
     }

@@ -41,6 +41,8 @@ struct SimulateOptions {
   std::map<std::string, std::string, std::less<>> scene_values;
   /// --thresholds cumulative|literal.
   std::optional<std::string> thresholds;
+  /// --head-area frontal|temporo-parietal|nasal|... (docs/model.md §7.1).
+  std::optional<std::string> head_area;
   /// --material NAME: the covering's modulus and Poisson ratio from the material catalog
   /// (ν unknown there: 0.25, with a warning). Overrides the scene file; combined with
   /// --covering-modulus or --covering-poisson it is bad input.

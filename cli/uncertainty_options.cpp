@@ -211,11 +211,13 @@ void PrintWorstCase(std::ostream& out, const optim::UncertaintyBox& box, const o
                     std::string_view indent) {
   out << fmt::format("{}worst case: {} (found by {}, {} evaluations)\n", indent, DescribeValues(box, worst.values),
                      worst.found_by, worst.evaluations);
-  out << fmt::format("{}  laceration ratio {:.4f}, contusion ratio {:.4f}{}; governing ratio {:.4f} ({} binds): {}\n",
-                     indent, worst.laceration_ratio, worst.contusion_ratio,
+  out << fmt::format("{}  laceration ratio {:.4f}, contusion ratio {:.4f}, fracture ratio {:.4f}{}{}; governing "
+                     "ratio {:.4f} ({} binds): {}\n",
+                     indent, worst.laceration_ratio, worst.contusion_ratio, worst.fracture_ratio,
                      worst.scene.covering.thickness_m > 0.0
                          ? fmt::format(", compression {:.1f} % of the covering", 100.0 * worst.compression_ratio)
                          : std::string(),
+                     worst.crush_ratio > 0.0 ? fmt::format(", crush ratio {:.4f}", worst.crush_ratio) : std::string(),
                      worst.governing_ratio, optim::ToString(worst.binding),
                      worst.admissible ? "admissible for every value in the box" : "NOT admissible for the whole box");
   if (worst.corner_governing_ratio) {
@@ -229,8 +231,9 @@ void PrintWorstCase(std::ostream& out, const optim::UncertaintyBox& box, const o
 void PrintInjuryProbability(std::ostream& out, const optim::InjuryProbability& p, std::string_view indent) {
   out << fmt::format("{}probability over {} samples (seed {}), Wilson 95 % intervals:\n", indent, p.any.samples, p.seed);
   const std::pair<const char*, const optim::ProbabilityEstimate*> rows[] = {
-      {"laceration", &p.laceration}, {"contusion", &p.contusion}, {"either injury", &p.any},
-      {"fully compressed", &p.fully_compressed}, {"inadmissible", &p.inadmissible}};
+      {"laceration", &p.laceration},           {"contusion", &p.contusion}, {"fracture", &p.fracture},
+      {"any injury", &p.any},                  {"fully compressed", &p.fully_compressed},
+      {"crushed", &p.crushed},                 {"inadmissible", &p.inadmissible}};
   for (const auto& [name, e] : rows) {
     out << fmt::format("{}  {:<17} {:>10.6f}  [{:.6f}, {:.6f}]  ({} of {})\n", indent, name, e->probability,
                        e->ci95_low, e->ci95_high, e->count, e->samples);

@@ -54,6 +54,7 @@ inline BodyLimitKind FromHead(LimitingCriterion criterion) noexcept {
     case LimitingCriterion::kContusion: return BodyLimitKind::kPressure;
     case LimitingCriterion::kFullCompression: return BodyLimitKind::kFullCompression;
     case LimitingCriterion::kCrush: return BodyLimitKind::kCrush;
+    case LimitingCriterion::kFracture: return BodyLimitKind::kForce;  // the bone's fracture force
     case LimitingCriterion::kNone: break;
   }
   return BodyLimitKind::kNone;

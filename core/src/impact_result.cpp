@@ -66,8 +66,10 @@ Scene ExactComparisonScene(const Scene& scene, std::string& note) {
 
 }  // namespace
 
-InjuryAssessment Assess(const ImpactPeaks& peaks, const InjuryLimits& limits) noexcept {
+InjuryAssessment Assess(const ImpactPeaks& peaks, const InjuryLimits& limits, HeadArea area) noexcept {
   InjuryAssessment assessment;
+  assessment.area = area;
+  assessment.fracture = Judge(peaks.peak_force_N, FractureLimit(limits, area));
   assessment.laceration = Judge(peaks.max_tensile_stress_Pa, limits.laceration_tensile_stress_Pa);
   assessment.contusion =
       Judge(peaks.max_energy_density_J_per_m2, limits.contusion_energy_density_J_per_m2);

@@ -19,6 +19,13 @@ void CheckInjuryLimits(const InjuryLimits& limits) {
                          1e13, "Pa");
   internal::CheckInRange("limits.contusion_energy_density_J_per_m2", limits.contusion_energy_density_J_per_m2,
                          kMinEnergyDensity_J_per_m2, 1e13, "J/m2");
+  if (limits.fracture_force_N != 0.0) {
+    internal::CheckInRange("limits.fracture_force_N", limits.fracture_force_N, 1.0, 1e13, "N (or 0: the struck area's)");
+  }
+}
+
+double FractureLimit(const InjuryLimits& limits, HeadArea area) noexcept {
+  return limits.fracture_force_N > 0.0 ? limits.fracture_force_N : FractureForceOf(area).force_N;
 }
 
 }  // namespace covopt

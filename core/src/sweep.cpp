@@ -84,8 +84,9 @@ void SolveRow(const SweepSpec& spec, const SweepOptions& options, const SceneFie
     row.time_of_max_compression_s = result.time_of_max_compression_s;
     row.rebound_speed_m_per_s = result.rebound_speed_m_per_s.value_or(0.0);
     row.coefficient_of_restitution = result.coefficient_of_restitution.value_or(0.0);
-    row.assessment = Assess(result.peaks, spec.limits);
-    for (InjuryVerdict* verdict : {&row.assessment.laceration, &row.assessment.contusion}) {
+    row.assessment = Assess(result.peaks, spec.limits, scene.head.area);
+    for (InjuryVerdict* verdict :
+         {&row.assessment.laceration, &row.assessment.contusion, &row.assessment.fracture}) {
       verdict->safe = spec.safety_factor * verdict->ratio <= 1.0;
     }
     row.worst_ratio = std::max(row.assessment.laceration.ratio, row.assessment.contusion.ratio);

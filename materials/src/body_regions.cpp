@@ -420,7 +420,7 @@ const BodyRegion& BodyRegionTable::Region(std::string_view name) const {
   const std::vector<std::string_view> names = RegionNames(regions_);
   const std::string head =
       wanted == "head" ? " (the head as a whole is judged by Park et al.'s skin model: "
-                         "--body-region head)"
+                         "body.region=head)"
                        : std::string();
   // An area's name given for a region: say whose it is.
   for (const BodyRegion& r : regions_) {
@@ -465,8 +465,8 @@ BodyLimits BodyRegionTable::Limits(std::string_view region_name, std::string_vie
   if (contact == ContactType::kTransient && !region.transient_permitted()) {
     throw BodyRegionError(std::string(kStandard) +
                           " A.3.2 does not permit transient contact with the " + region.name +
-                          "; use --contact clamped, or judge the head with Park et al.'s skin "
-                          "model (--body-region head)");
+                          "; use body.contact=clamped, or judge the head with Park et al.'s skin "
+                          "model (body.region=head)");
   }
   BodyLimits limits;
   limits.region = &region;

@@ -721,7 +721,7 @@ std::string BodyRegionCriterion(const DesignRule& rule, bool head) {
   char sf[32];
   std::snprintf(sf, sizeof sf, "%g", rule.safety_factor);  // as fmt's {:g}
   std::string text = "each region's force and pressure (ISO/TS 15066:2016 Table A.2)";
-  if (head) text += ", the head's laceration and contusion (Park et al. 2011)";
+  if (head) text += ", the head's laceration and contusion (Park et al. 2011) and bone fracture (docs/model.md §7.1)";
   if (rule.compression_counts()) text += ", the covering not fully compressed";
   if (!rule.crushing_allowed) text += ", the covering not crushed where its strength is known";
   return text + "; safety factor " + sf + " on each";

@@ -98,7 +98,7 @@ class ThinnestProblem : public MinimizeSecondVariable {
         upper_{std::log10(o.space.max_modulus_Pa), 1.0} {}
   std::size_t dimension() const override { return 2; }
   std::size_t inequality_count() const override {
-    return o_.criterion() == DesignCriterion::kNoFullCompression ? 3 : 2;
+    return o_.criterion() == DesignCriterion::kNoFullCompression ? 4 : 3;
   }
   std::vector<double> lower_bounds() const override { return lower_; }
   std::vector<double> upper_bounds() const override { return upper_; }
@@ -124,18 +124,21 @@ class ThinnestProblem : public MinimizeSecondVariable {
     if (score.failed) return false;
     c[0] = std::log(o_.safety_factor * score.laceration_ratio);
     c[1] = std::log(o_.safety_factor * score.contusion_ratio);
-    const bool compression = inequality_count() == 3;
+    c[2] = std::log(o_.safety_factor * score.fracture_ratio);
+    const bool compression = inequality_count() == 4;
     const double travel = std::max(score.compression_ratio, kLeastTravelRatio);
-    if (compression) c[2] = std::log(o_.safety_factor * travel);
+    if (compression) c[3] = std::log(o_.safety_factor * travel);
     if (!jac.empty()) {
       const double db_dx = o_.space.max_thickness_m;
       jac[0] = gradient.laceration[0] / score.laceration_ratio;
       jac[1] = gradient.laceration[1] * db_dx / score.laceration_ratio;
       jac[2] = gradient.contusion[0] / score.contusion_ratio;
       jac[3] = gradient.contusion[1] * db_dx / score.contusion_ratio;
+      jac[4] = gradient.fracture[0] / score.fracture_ratio;
+      jac[5] = gradient.fracture[1] * db_dx / score.fracture_ratio;
       if (compression) {
-        jac[4] = gradient.compression[0] / travel;
-        jac[5] = gradient.compression[1] * db_dx / travel;
+        jac[6] = gradient.compression[0] / travel;
+        jac[7] = gradient.compression[1] * db_dx / travel;
       }
     }
     return true;
@@ -160,11 +163,12 @@ class WorstRatioProblem : public Problem {
     const CoveringDesign design{std::pow(10.0, x[0]), thickness_};
     const DesignScore score = g.empty() ? oracle_.Score(design) : oracle_.Score(design, gradient);
     if (score.failed) return false;
-    const bool laceration = score.laceration_ratio >= score.contusion_ratio;
     value = std::log(o_.safety_factor * score.worst_ratio());
     if (!g.empty()) {  // a subgradient of the max
-      g[0] = laceration ? gradient.laceration[0] / score.laceration_ratio
-                        : gradient.contusion[0] / score.contusion_ratio;
+      const double worst = score.worst_ratio();
+      g[0] = worst == score.laceration_ratio  ? gradient.laceration[0] / score.laceration_ratio
+             : worst == score.contusion_ratio ? gradient.contusion[0] / score.contusion_ratio
+                                              : gradient.fracture[0] / score.fracture_ratio;
     }
     return true;
   }
@@ -183,7 +187,7 @@ class EpigraphProblem : public MinimizeSecondVariable {
   EpigraphProblem(const DesignOracle& oracle, const DesignOptions& o, double thickness, double lower)
       : MinimizeSecondVariable(oracle, o), thickness_(thickness), lower_(lower) {}
   std::size_t dimension() const override { return 2; }
-  std::size_t inequality_count() const override { return 2; }
+  std::size_t inequality_count() const override { return 3; }
   std::vector<double> lower_bounds() const override { return {lower_, -50.0}; }
   std::vector<double> upper_bounds() const override { return {std::log10(o_.space.max_modulus_Pa), 50.0}; }
   bool Constraints(std::span<const double> x, std::span<double> c, std::span<double> jac) const override {
@@ -193,11 +197,14 @@ class EpigraphProblem : public MinimizeSecondVariable {
     if (score.failed) return false;
     c[0] = std::log(o_.safety_factor * score.laceration_ratio) - x[1];
     c[1] = std::log(o_.safety_factor * score.contusion_ratio) - x[1];
+    c[2] = std::log(o_.safety_factor * score.fracture_ratio) - x[1];
     if (!jac.empty()) {
       jac[0] = gradient.laceration[0] / score.laceration_ratio;
       jac[1] = -1.0;
       jac[2] = gradient.contusion[0] / score.contusion_ratio;
       jac[3] = -1.0;
+      jac[4] = gradient.fracture[0] / score.fracture_ratio;
+      jac[5] = -1.0;
     }
     return true;
   }

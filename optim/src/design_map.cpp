@@ -36,6 +36,7 @@ double CriterionRatio(const DesignScore& score, LimitingCriterion criterion) noe
     case LimitingCriterion::kContusion: return score.contusion_ratio;
     case LimitingCriterion::kFullCompression: return score.compression_ratio;
     case LimitingCriterion::kCrush: return score.crush_ratio;
+    case LimitingCriterion::kFracture: return score.fracture_ratio;
     case LimitingCriterion::kNone: break;
   }
   return 0.0;
@@ -112,7 +113,7 @@ DesignMap ComputeDesignMap(const DesignRequest& request, const DesignResult& res
   }
   if (map.chosen) map.chosen_score = score(map.chosen->design);
 
-  map.criteria = {LimitingCriterion::kLaceration, LimitingCriterion::kContusion};
+  map.criteria = {LimitingCriterion::kLaceration, LimitingCriterion::kContusion, LimitingCriterion::kFracture};
   if (map.rule.compression_counts()) map.criteria.push_back(LimitingCriterion::kFullCompression);
   if (!map.rule.crushing_allowed && map.material &&
       map.material->crush_behaviour == materials::CrushBehaviour::kCrushes) {

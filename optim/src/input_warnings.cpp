@@ -1,7 +1,10 @@
 // The warnings about a scene's inputs (input_warnings.hpp), shared by the CLI and Python.
 #include "covopt/optim/input_warnings.hpp"
 
+#include <algorithm>
+
 #include <covopt/core/number_format.hpp>
+#include <covopt/optim/speed_limit.hpp>
 #include <covopt/core/quantity.hpp>
 
 namespace covopt::optim {
@@ -28,11 +31,15 @@ std::vector<std::string> SceneInputWarnings(const Scene& scene, const InjuryLimi
                          source_of("covering.material").value_or("the material") + " is ignored");
       return warnings;
     }
-    if (!covering_material->poisson_ratio) {
+    if (!covering_material->poisson_ratio) {  // the ν assumed
       warnings.push_back("the catalog gives no Poisson ratio for '" + covering_material->name + "': ν unknown, " +
                          FormatSignificant(materials::kDefaultPoissonRatio) + " assumed");
     }
   }
+  const bool covering_given = covering_material != nullptr ||
+                              source_of("covering.thickness") || source_of("covering.modulus") ||
+                              source_of("covering.poisson");
+  if (covered && !covering_given) warnings.push_back(DefaultCoveringNote(scene));  // the covering assumed
   if (!covered) {
     std::vector<std::string> ignored;
     for (const char* name : {"covering.modulus", "covering.poisson"}) {
@@ -47,6 +54,12 @@ std::vector<std::string> SceneInputWarnings(const Scene& scene, const InjuryLimi
     }
   }
   return warnings;
+}
+
+void AppendNewWarnings(std::vector<std::string>& warnings, const std::vector<std::string>& more) {
+  for (const std::string& warning : more) {
+    if (std::find(warnings.begin(), warnings.end(), warning) == warnings.end()) warnings.push_back(warning);
+  }
 }
 
 }  // namespace covopt::optim

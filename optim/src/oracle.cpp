@@ -48,7 +48,7 @@ GradientSource GradientFor(OracleKind kind, const Scene& scene) {
 
 /// The ratio gradient from peak derivatives (per E_c [1/Pa], per b_c [1/m]).
 void FillGradient(const DesignScore& score, const PeakSensitivities& s, const InjuryLimits& limits,
-                  double compression_per_thickness, RatioGradient& gradient) {
+                  double fracture_force_N, double compression_per_thickness, RatioGradient& gradient) {
   const double per_log10 = score.design.youngs_modulus_Pa * kLn10;  // dE/du, u = log10 E
   const double laceration = limits.laceration_tensile_stress_Pa;
   const double contusion = limits.contusion_energy_density_J_per_m2;
@@ -56,6 +56,8 @@ void FillGradient(const DesignScore& score, const PeakSensitivities& s, const In
   gradient.laceration[1] = s.per_covering_thickness.max_tensile_stress / laceration;
   gradient.contusion[0] = s.per_covering_modulus.max_energy_density * per_log10 / contusion;
   gradient.contusion[1] = s.per_covering_thickness.max_energy_density / contusion;
+  gradient.fracture[0] = s.per_covering_modulus.peak_force * per_log10 / fracture_force_N;
+  gradient.fracture[1] = s.per_covering_thickness.peak_force / fracture_force_N;
   // r = (δ_max − s) / (t2 − s): E_c moves neither t2 nor s; 0 (flat) while δ_max <= s.
   const double travel = score.peaks.full_compression_penetration_m - score.peaks.covering_travel_start_m;
   gradient.compression[0] =
@@ -75,7 +77,8 @@ template <class ScoreAt>
 bool CentralDifference(const ScoreAt& score_at, const DesignScore& centre, double h, RatioGradient& gradient,
                        double& disagreement) {
   const CoveringDesign& d = centre.design;
-  const std::array<double, 3> f0 = {centre.laceration_ratio, centre.contusion_ratio, centre.compression_ratio};
+  const std::array<double, 4> f0 = {centre.laceration_ratio, centre.contusion_ratio, centre.compression_ratio,
+                                    centre.fracture_ratio};
   disagreement = 0.0;
   for (int p = 0; p < 2; ++p) {
     // The points stay within the scene's range: at the floor (physical_floors.hpp: 1 kPa, 0.1 mm,
@@ -93,14 +96,14 @@ bool CentralDifference(const ScoreAt& score_at, const DesignScore& centre, doubl
       if (at[k].failed) return false;
     }
     auto ratios = [](const DesignScore& s) {
-      return std::array<double, 3>{s.laceration_ratio, s.contusion_ratio, s.compression_ratio};
+      return std::array<double, 4>{s.laceration_ratio, s.contusion_ratio, s.compression_ratio, s.fracture_ratio};
     };
     const auto same_phase = [&](std::size_t k) { return at[k].peaks.phase_at_max == centre.peaks.phase_at_max; };
-    const std::array<double, 3> up = ratios(at[0]), down = ratios(at[1]), up2 = ratios(at[2]), down2 = ratios(at[3]);
-    std::array<double, 3> slope{};  // d ratio / d ln θ
+    const std::array<double, 4> up = ratios(at[0]), down = ratios(at[1]), up2 = ratios(at[2]), down2 = ratios(at[3]);
+    std::array<double, 4> slope{};  // d ratio / d ln θ
     const bool forward = up_ok && (!down_ok || (same_phase(0) && same_phase(2)));
     const bool backward = down_ok && (!up_ok || (same_phase(1) && same_phase(3)));
-    for (std::size_t r = 0; r < 3; ++r) {
+    for (std::size_t r = 0; r < slope.size(); ++r) {
       if (forward == backward) {  // smooth on both sides (or kinked on both: central regardless)
         slope[r] = (up[r] - down[r]) / (2 * h);
         const double wide = (up2[r] - down2[r]) / (4 * h);
@@ -117,6 +120,7 @@ bool CentralDifference(const ScoreAt& score_at, const DesignScore& centre, doubl
     gradient.laceration[p] = slope[0] * to_parameter;
     gradient.contusion[p] = slope[1] * to_parameter;
     gradient.compression[p] = slope[2] * to_parameter;
+    gradient.fracture[p] = slope[3] * to_parameter;
   }
   return true;
 }
@@ -149,6 +153,7 @@ std::string_view ToString(LimitingCriterion criterion) noexcept {
     case LimitingCriterion::kContusion: return "contusion";
     case LimitingCriterion::kFullCompression: return "full-compression";
     case LimitingCriterion::kCrush: return "crush";
+    case LimitingCriterion::kFracture: return "fracture";
   }
   return "unknown";
 }
@@ -165,14 +170,17 @@ std::string_view ToString(CrushCheck check) noexcept {
 
 std::vector<std::string> DesignRule::Parts() const {
   std::vector<std::string> parts = {std::string(ToString(LimitingCriterion::kLaceration)),
-                                    std::string(ToString(LimitingCriterion::kContusion))};
+                                    std::string(ToString(LimitingCriterion::kContusion)),
+                                    std::string(ToString(LimitingCriterion::kFracture))};
   if (compression_counts()) parts.emplace_back(ToString(LimitingCriterion::kFullCompression));
   if (!crushing_allowed) parts.emplace_back(ToString(LimitingCriterion::kCrush));
   return parts;
 }
 
 std::string DesignRule::Describe() const {
-  std::string text = "no laceration and no contusion (Park et al. 2011's skin limits)";
+  std::string text =
+      "no laceration and no contusion (Park et al. 2011's skin limits), no fracture (the peak force within the "
+      "struck area's lowest published fracture force)";
   if (compression_counts()) text += ", the covering not fully compressed";
   text += crushing_allowed ? "; crushing allowed (a sacrificial liner)" : ", the covering not crushed";
   if (!crushing_allowed && unknown_strength_allowed) text += " where its strength is known";
@@ -184,7 +192,8 @@ std::vector<std::string> HeadVerdictScope(const DesignRule& rule) {
           "ISO/TS 15066:2016 (Annex A, A.3.2) does not permit transient contact with the skull, forehead or face; "
           "its quasi-static limits there (Table A.2) are 130 N and 130 N/cm² on the forehead (110 N/cm² on the "
           "temple) and 65 N and 110 N/cm² on the face. A safe verdict here means no skin injury in Park et al.'s "
-          "model, not compliance with the standard."};
+          "model and a peak force below the struck bone's lowest published fracture force, not compliance with the "
+          "standard."};
 }
 
 GoverningRatio DesignScore::governing(const DesignRule& rule) const noexcept {
@@ -193,6 +202,7 @@ GoverningRatio DesignScore::governing(const DesignRule& rule) const noexcept {
     if (ratio > g.ratio) g = {criterion, ratio};
   };
   consider(contusion_ratio, LimitingCriterion::kContusion);
+  consider(fracture_ratio, LimitingCriterion::kFracture);
   if (rule.compression_counts() && !bare()) consider(compression_ratio, LimitingCriterion::kFullCompression);
   if (!rule.crushing_allowed && crush_check == CrushCheck::kChecked) consider(crush_ratio, LimitingCriterion::kCrush);
   return g;
@@ -303,16 +313,17 @@ OracleReport DesignOracle::Report() const {
 }
 
 void DesignOracle::Judge(DesignScore& score) const {
-  const InjuryAssessment a = Assess(score.peaks, limits_);
+  const InjuryAssessment a = Assess(score.peaks, limits_, scene_.head.area);
   score.laceration_ratio = a.laceration.ratio;
   score.contusion_ratio = a.contusion.ratio;
+  score.fracture_ratio = a.fracture.ratio;
   score.compression_ratio = score.bare() ? 0.0 : score.peaks.covering_compression_ratio();
 }
 
 void DesignOracle::Fail(DesignScore& score, const std::string& message) const {
   ++failed_evaluations_;
   score.failed = true;
-  score.laceration_ratio = score.contusion_ratio = score.compression_ratio = kInfinity;
+  score.laceration_ratio = score.contusion_ratio = score.compression_ratio = score.fracture_ratio = kInfinity;
   score.peaks.fully_compressed = true;  // inadmissible under either criterion, on every side of a bisection
   const std::lock_guard<std::mutex> lock(failure_mutex_);
   if (first_failure_.empty()) first_failure_ = message;
@@ -385,7 +396,7 @@ DesignScore ExactPathOracle::Score(const CoveringDesign& design, RatioGradient& 
   score.peaks = ExactPeaks(model);
   Judge(score);
   const PeakSensitivities s = ExactPeakSensitivities(model, score.peaks);
-  FillGradient(score, s, limits_,
+  FillGradient(score, s, limits_, FractureLimit(limits_, scene_.head.area),
                CompressionThicknessDerivative(score, s.per_covering_thickness.max_penetration), gradient);
   return score;
 }
@@ -473,7 +484,7 @@ DesignScore TimePathOracle::Score(const CoveringDesign& design, RatioGradient& g
                     Exactly(design.thickness_m) + " m: " + std::string(covopt::ToString(s.status)) + ": " + s.message);
     return score;
   }
-  FillGradient(score, s.sensitivities, limits_,
+  FillGradient(score, s.sensitivities, limits_, FractureLimit(limits_, scene_.head.area),
                CompressionThicknessDerivative(score, s.sensitivities.per_covering_thickness.max_penetration),
                gradient);
   return score;

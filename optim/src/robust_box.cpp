@@ -34,6 +34,20 @@ void ValidateCriterion(const ImpactCriterion& c) {
           "laceration limit must be finite and > 0 Pa (got " + Number(laceration) + ")");
   Require(std::isfinite(contusion) && contusion > 0.0,
           "contusion limit must be finite and > 0 J/m2 (got " + Number(contusion) + ")");
+  const double fracture = c.limits.fracture_force_N;
+  Require(std::isfinite(fracture) && fracture >= 0.0,
+          "fracture force must be finite and >= 0 N, 0 for the struck area's (got " + Number(fracture) + ")");
+}
+
+ImpactCriterion MakeCriterion(DesignCriterion rule, double safety_factor, const InjuryLimits& limits,
+                              double compressive_strength_Pa, bool allow_crushing) {
+  Require(std::isfinite(compressive_strength_Pa) && compressive_strength_Pa >= 0.0,
+          "compressive strength must be finite and >= 0 Pa (got " + Number(compressive_strength_Pa) + ")");
+  ImpactCriterion c{rule, safety_factor, limits};
+  c.compressive_strength_Pa = compressive_strength_Pa;
+  c.crush_counts = compressive_strength_Pa > 0.0 && !allow_crushing;
+  ValidateCriterion(c);
+  return c;
 }
 
 void TimePathCounter::Fail(const std::string& message) {
@@ -84,9 +98,10 @@ Scene Unbraked(const Scene& scene) {
 namespace {
 
 /// The ratios, events and governing ratio of an impact from its peaks.
-void JudgePeaks(Judged& j, const ImpactCriterion& c) {
+void JudgePeaks(Judged& j, const ImpactCriterion& c, HeadArea area) {
   j.laceration_ratio = j.peaks.max_tensile_stress_Pa / c.limits.laceration_tensile_stress_Pa;
   j.contusion_ratio = j.peaks.max_energy_density_J_per_m2 / c.limits.contusion_energy_density_J_per_m2;
+  j.fracture_ratio = j.peaks.peak_force_N / FractureLimit(c.limits, area);
   if (j.covered) {
     j.compression_ratio = j.peaks.covering_compression_ratio();
     j.fully_compressed = j.peaks.fully_compressed;
@@ -95,6 +110,8 @@ void JudgePeaks(Judged& j, const ImpactCriterion& c) {
   const double sf = c.safety_factor;
   j.laceration = sf * j.laceration_ratio > 1.0;
   j.contusion = sf * j.contusion_ratio > 1.0;
+  j.fracture = sf * j.fracture_ratio > 1.0;
+  j.crushed = sf * j.crush_ratio > 1.0;
   const bool compression_counts = j.covered && c.criterion == DesignCriterion::kNoFullCompression;
   const bool crush_counts = j.covered && c.crush_counts && c.compressive_strength_Pa > 0.0;
   j.governing_ratio = sf * j.laceration_ratio;
@@ -106,6 +123,7 @@ void JudgePeaks(Judged& j, const ImpactCriterion& c) {
     }
   };
   consider(j.contusion_ratio, LimitingCriterion::kContusion);
+  consider(j.fracture_ratio, LimitingCriterion::kFracture);
   if (compression_counts) consider(j.compression_ratio, LimitingCriterion::kFullCompression);
   if (crush_counts) consider(j.crush_ratio, LimitingCriterion::kCrush);
   j.admissible = j.governing_ratio <= 1.0 && !(compression_counts && j.fully_compressed);
@@ -115,11 +133,11 @@ void JudgePeaks(Judged& j, const ImpactCriterion& c) {
 void JudgeFailed(Judged& j) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   j.failed = true;
-  j.laceration_ratio = j.contusion_ratio = j.governing_ratio = inf;
+  j.laceration_ratio = j.contusion_ratio = j.fracture_ratio = j.governing_ratio = inf;
   j.compression_ratio = j.covered ? inf : 0.0;
   j.crush_ratio = 0.0;
   j.fully_compressed = j.covered;
-  j.laceration = j.contusion = true;
+  j.laceration = j.contusion = j.fracture = true;
   j.admissible = false;
 }
 
@@ -131,7 +149,7 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c, const Screening&
   Judged j;
   j.peaks = ExactPeaks(model);
   j.covered = model.has_covering();
-  JudgePeaks(j, c);
+  JudgePeaks(j, c, scene.head.area);
   if (!brakes) return j;
   // Braking only takes energy out of the impact: the unbraked judgement bounds the braked
   // one (docs/model.md §11). Until the brake starts the two impacts are the same; a brake that
@@ -142,7 +160,7 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c, const Screening&
     if (c.counter) c.counter->BrakeAfterPeak();
     return j;
   }
-  const bool no_event = j.admissible && !j.laceration && !j.contusion && !j.fully_compressed;
+  const bool no_event = j.admissible && !j.injured() && !j.crushed && !j.fully_compressed;
   if ((screening.when_admissible && no_event) || j.governing_ratio <= screening.at_or_below) {
     j.by = JudgedBy::kBound;
     if (c.counter) c.counter->Screened();
@@ -162,7 +180,7 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c, const Screening&
     return j;
   }
   j.peaks = result.peaks;
-  JudgePeaks(j, c);
+  JudgePeaks(j, c, scene.head.area);
   return j;
 }
 
@@ -172,6 +190,7 @@ void FillWorstCase(const Judged& j, WorstCase& worst) {
   worst.compression_ratio = j.compression_ratio;
   worst.fully_compressed = j.fully_compressed;
   worst.crush_ratio = j.crush_ratio;
+  worst.fracture_ratio = j.fracture_ratio;
   worst.governing_ratio = j.governing_ratio;
   worst.binding = j.binding;
   worst.admissible = j.admissible;

@@ -192,6 +192,7 @@ DesignScore ScoreOf(const WorstCase& worst, const CandidateMaterial& material, c
   if (judged.failed) score.peaks.fully_compressed = true;  // as the oracle marks a failed design
   score.laceration_ratio = worst.laceration_ratio;
   score.contusion_ratio = worst.contusion_ratio;
+  score.fracture_ratio = worst.fracture_ratio;
   score.compression_ratio = worst.compression_ratio;
   CheckCrush(material, score);
   return score;

@@ -56,6 +56,11 @@ struct ImpactCriterion {
 };
 /// Checks the safety factor ([1, 100]) and the limits (finite, > 0).
 void ValidateCriterion(const ImpactCriterion& criterion);
+/// The criterion of a worst-case or probability question: its rule, safety factor, limits,
+/// and the covering material's compressive strength [Pa] (0: no crush check); the crush ratio
+/// counts unless `allow_crushing`. Validated (ValidateCriterion, the strength finite, >= 0).
+ImpactCriterion MakeCriterion(DesignCriterion rule, double safety_factor, const InjuryLimits& limits,
+                              double compressive_strength_Pa, bool allow_crushing);
 
 /// Where a judgement came from.
 enum class JudgedBy {
@@ -77,10 +82,17 @@ struct Judged {
   double compression_ratio = 0.0;  ///< the covering's travel used; 0 without a covering
   bool fully_compressed = false;   ///< with a covering only
   double crush_ratio = 0.0;        ///< σ_c,max / strength; 0 without a crush check
+  /// F_max / the struck area's lowest published fracture force (docs/model.md §7.1)
+  double fracture_ratio = 0.0;
   double governing_ratio = 0.0;    ///< g (robust_design.hpp)
   LimitingCriterion binding = LimitingCriterion::kLaceration;
   bool laceration = false;  ///< SF r_L > 1
   bool contusion = false;   ///< SF r_C > 1
+  bool fracture = false;    ///< SF r_F > 1
+  /// SF r_crush > 1 with a crush check (counted whether or not crushing is allowed)
+  bool crushed = false;
+  /// An injury: laceration, contusion or fracture.
+  bool injured() const noexcept { return laceration || contusion || fracture; }
   bool admissible = false;
 };
 

@@ -33,7 +33,7 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 struct SampleCounts {
-  std::uint64_t laceration = 0, contusion = 0, any = 0, fully_compressed = 0, inadmissible = 0;
+  std::uint64_t laceration = 0, contusion = 0, fracture = 0, any = 0, fully_compressed = 0, crushed = 0, inadmissible = 0;
   /// Stopped because the inadmissible count passed the threshold (the counts are then partial).
   bool stopped = false;
   unsigned threads = 0;
@@ -78,7 +78,9 @@ SampleCounts CountSamples(const UncertaintyBox& box, const Scene& base, const Im
       const internal::Judged j = internal::JudgeScene(scene, criterion, {.when_admissible = true});
       c.laceration += j.laceration;
       c.contusion += j.contusion;
-      c.any += j.laceration || j.contusion;
+      c.fracture += j.fracture;
+      c.any += j.injured();
+      c.crushed += j.crushed;
       c.fully_compressed += j.fully_compressed;
       c.inadmissible += !j.admissible;
       unreported_failures += !j.admissible;
@@ -101,7 +103,9 @@ SampleCounts CountSamples(const UncertaintyBox& box, const Scene& base, const Im
   for (const SampleCounts& c : per_thread) {
     total.laceration += c.laceration;
     total.contusion += c.contusion;
+    total.fracture += c.fracture;
     total.any += c.any;
+    total.crushed += c.crushed;
     total.fully_compressed += c.fully_compressed;
     total.inadmissible += c.inadmissible;
     total.evaluated += c.evaluated;
@@ -123,7 +127,9 @@ InjuryProbability ToProbability(const SampleCounts& c, std::uint64_t samples, st
   InjuryProbability p;
   p.laceration = WilsonEstimate(c.laceration, samples);
   p.contusion = WilsonEstimate(c.contusion, samples);
+  p.fracture = WilsonEstimate(c.fracture, samples);
   p.any = WilsonEstimate(c.any, samples);
+  p.crushed = WilsonEstimate(c.crushed, samples);
   p.fully_compressed = WilsonEstimate(c.fully_compressed, samples);
   p.inadmissible = WilsonEstimate(c.inadmissible, samples);
   p.seed = seed;
@@ -137,10 +143,10 @@ InjuryProbability EstimateInjuryProbability(const UncertaintyBox& box, const Inj
   const auto started = std::chrono::steady_clock::now();
   ValidateSampling(options);
   internal::TimePathCounter counter;
-  ImpactCriterion criterion{options.criterion(), options.safety_factor, options.limits};
+  ImpactCriterion criterion = internal::MakeCriterion(options.criterion(), options.safety_factor, options.limits,
+                                                      options.compressive_strength_Pa, options.allow_crushing);
   criterion.time_path = options.time_path;
   criterion.counter = &counter;
-  internal::ValidateCriterion(criterion);
   if (box.brakes()) ValidateTimeIntegrationOptions(options.time_path, "time_path.");
   CountRequest request;
   request.samples = options.samples;

@@ -266,9 +266,9 @@ WorstCase WorstCaseOnScene(const UncertaintyBox& box, const Scene& base, const I
 using internal::ImpactCriterion;
 
 WorstCase FindWorstCase(const UncertaintyBox& box, const WorstCaseOptions& options) {
-  ImpactCriterion criterion{options.criterion(), options.safety_factor, options.limits};
+  ImpactCriterion criterion = internal::MakeCriterion(options.criterion(), options.safety_factor, options.limits,
+                                                      options.compressive_strength_Pa, options.allow_crushing);
   criterion.time_path = options.time_path;
-  internal::ValidateCriterion(criterion);
   internal::ValidateSearch(options.search);
   if (box.brakes()) ValidateTimeIntegrationOptions(options.time_path, "time_path.");
   return internal::WorstCaseOnScene(box, box.nominal(), criterion, options.search);

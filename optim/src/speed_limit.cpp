@@ -103,6 +103,20 @@ Crossing StressCrossing(const ImpactModel& model, double target_Pa) {
   return {};
 }
 
+/// The largest δ up to which the running maximum of F over [0, δ] stays <= target [N]
+/// (ImpactPeaks' F_max of a contact reaching δ; F = F_off + K x^n in each segment).
+Crossing ForceCrossing(const ImpactModel& model, double target_N) {
+  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+    const ForceLawSegment& seg = model.segment(i);
+    if (model.StateInSegment(i, seg.start_m).force_N > target_N) return {seg.start_m, i};  // a jump up
+    const bool last = i + 1 == model.segment_count();
+    if (!last && model.StateInSegment(i, seg.end_m).force_N <= target_N) continue;
+    const double x = std::pow(std::max(target_N - seg.force_offset_N, 0.0) / seg.stiffness, 1.0 / seg.exponent);
+    return {std::clamp(seg.origin_m + x, seg.start_m, seg.end_m), i};
+  }
+  return {};
+}
+
 /// The largest δ up to which e(δ) <= target [J/m²] (e is continuous and increasing).
 Crossing EnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2) {
   for (std::size_t i = 0; i < model.segment_count(); ++i) {
@@ -143,6 +157,8 @@ PenetrationLimit FindPenetrationLimit(const ImpactModel& model, const SpeedLimit
   }
   consider(EnergyDensityCrossing(model, options.limits.contusion_energy_density_J_per_m2 / s),
            LimitingCriterion::kContusion);
+  consider(ForceCrossing(model, FractureLimit(options.limits, model.scene().head.area) / s),
+           LimitingCriterion::kFracture);
   if (options.criterion() == DesignCriterion::kNoFullCompression && model.has_covering()) {
     // The covering's travel the safety factor leaves: s + (t2 − s)/SF (ImpactPeaks::
     // covering_compression_ratio), s the start of its travel; t2 itself at SF 1.
@@ -185,6 +201,7 @@ class Judge {
         if (first_failure_.empty()) first_failure_ = std::string(covopt::ToString(result.status)) + ": " + result.message;
         e.failed = true;
         e.ratios.laceration_ratio = e.ratios.contusion_ratio = e.ratios.compression_ratio = kInfinity;
+        e.ratios.fracture_ratio = kInfinity;
         return e;
       }
       peaks = result.peaks;
@@ -194,6 +211,7 @@ class Judge {
     e.ratios.laceration_ratio = peaks.max_tensile_stress_Pa / options_.limits.laceration_tensile_stress_Pa;
     e.ratios.contusion_ratio =
         peaks.max_energy_density_J_per_m2 / options_.limits.contusion_energy_density_J_per_m2;
+    e.ratios.fracture_ratio = peaks.peak_force_N / FractureLimit(options_.limits, scene.head.area);
     e.ratios.compression_ratio = peaks.covering_compression_ratio();
     if (model.has_covering() && options_.covering_compressive_strength_Pa > 0.0) {
       e.ratios.crush_ratio = peaks.max_compressive_stress_Pa / options_.covering_compressive_strength_Pa;
@@ -219,6 +237,7 @@ class Judge {
     };
     consider(sf * e.ratios.laceration_ratio, LimitingCriterion::kLaceration);
     consider(sf * e.ratios.contusion_ratio, LimitingCriterion::kContusion);
+    consider(sf * e.ratios.fracture_ratio, LimitingCriterion::kFracture);
     if (options_.criterion() == DesignCriterion::kNoFullCompression) {
       consider(sf * e.ratios.compression_ratio, LimitingCriterion::kFullCompression);
     }
@@ -302,7 +321,8 @@ BracketedLimit BracketOnOracle(const Judge& judge, const Scene& base, double low
 
 std::string RatiosText(const LimitRatios& r, bool covered) {
   std::string text = "laceration ratio " + FormatSignificant(r.laceration_ratio, 4) + ", contusion ratio " +
-                     FormatSignificant(r.contusion_ratio, 4);
+                     FormatSignificant(r.contusion_ratio, 4) + ", fracture ratio " +
+                     FormatSignificant(r.fracture_ratio, 4);
   if (covered) text += ", compression ratio " + FormatSignificant(r.compression_ratio, 4);
   return text;
 }
@@ -535,15 +555,20 @@ MassLimit MaxSafeMassOnPenetrationAxis(const Scene& base, const SpeedLimitOption
 }
 
 }  // namespace
+
+std::string DefaultCoveringNote(const Scene& scene) {
+  return "no covering given: the default is assumed, " +
+         FormatQuantity(scene.covering.thickness_m, QuantityKind::kLength) + " of " +
+         FormatQuantity(scene.covering.youngs_modulus_Pa, QuantityKind::kModulus) +
+         " (the paper's polystyrene foam, of unknown compressive strength, so crushing is not checked); give the "
+         "covering's thickness with a catalog material (or its modulus), or a thickness of 0 for the bare robot";
+}
+
 CoveringCrushCheck CrushCheckFor(const Scene& scene, const materials::Material* material, bool covering_given) {
   CoveringCrushCheck check;
   if (!(scene.covering.thickness_m > 0.0)) return check;
   if (!covering_given && !material) {
-    check.notes.push_back(
-        "no covering given: the default is assumed, " + FormatQuantity(scene.covering.thickness_m, QuantityKind::kLength) +
-        " of " + FormatQuantity(scene.covering.youngs_modulus_Pa, QuantityKind::kModulus) +
-        " (the paper's polystyrene foam, of unknown compressive strength, so crushing is not checked); give the "
-        "covering's thickness with a catalog material (or its modulus), or a thickness of 0 for the bare robot");
+    check.notes.push_back(DefaultCoveringNote(scene));
     return check;
   }
   if (!material) {

@@ -116,6 +116,7 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
       }
       verdict.laceration_ratio = judgement.ratios.laceration_ratio;
       verdict.contusion_ratio = judgement.ratios.contusion_ratio;
+      verdict.fracture_ratio = judgement.ratios.fracture_ratio;
       verdict.compression_ratio = judgement.ratios.compression_ratio;
       verdict.safe = judgement.admissible;
       verdict.speed_scale = verdict.speed_limit.max_safe_speed_m_per_s / sample.speed_m_per_s;

@@ -10,6 +10,8 @@ CLI's scene flags with underscores (``--robot-mass`` is ``robot_mass``); every c
     result.laceration.ratio, result.safe, result.to_dict()
 
 Values are SI floats in and out; a scene value may also be a string with a unit (``"15mm"``).
+The judging rule and the targets may be given as objects, ``rule=covopt.Rule(...)`` and
+``regions=covopt.Regions(...)`` (covopt/_inputs.py), instead of their keywords.
 Results are read-only objects whose attributes are the keys of the CLI's ``--json`` output
 (``to_dict()`` gives that object). Bad input raises ``ValueError`` with the library's (the
 CLI's) message naming the keyword; a computation that fails raises
@@ -22,6 +24,7 @@ from ._body_regions import (BodyContact, BodyRegionDesign, BodyRegionSpeedLimitT
                             BodyRegionTrajectoryCheck)
 from ._audit import Audit, AuditFailure, AuditManyError, audit, audit_many
 from ._errors import ComputationError
+from ._inputs import Regions, Rule, takes_objects as _takes_objects
 from ._results import (ContactMotion, Design, Material, ReflectedMass, Result, RobustDesign,
                        RobustSimulation, Sensitivities, Simulation, SpeedLimit, SpeedLimitTable,
                        Sweep, TrajectoryCheck)
@@ -30,7 +33,7 @@ Scene = _covopt.Scene
 for _public in (Scene, ComputationError):
     _public.__module__ = __name__  # shown as covopt.Scene, covopt.ComputationError
 
-__all__ = ["Scene", "Result", "simulate", "sweep", "optimize", "materials", "material",
+__all__ = ["Scene", "Rule", "Regions", "Result", "simulate", "sweep", "optimize", "materials", "material",
            "ComputationError", "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "iso_robot_mass",
            "contact_motion", "check_trajectory", "worst_case", "injury_probability",
            "sensitivities", "robust_optimize", "load_scene", "BodyContact", "BodyRegionSpeedLimitTable",
@@ -54,6 +57,7 @@ def _given(**options):
     return {name: value for name, value in options.items() if value is not None}
 
 
+@_takes_objects
 @_provenance.stamped
 def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, history=False,
              body_region=None, body_area=None, contact=None, contact_area=None):
@@ -73,8 +77,9 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
     the dampers, the brake and a fixed robot's support so far).
 
     The result's warnings are those of ``covopt simulate --json`` for the same input, including
-    the ones about the input itself (a catalog material's unknown Poisson ratio, "ν unknown,
-    0.25 assumed"; a safety factor; covering inputs a zero thickness makes moot), which name
+    the ones about the input itself (the default covering when none is given; a catalog
+    material's unknown Poisson ratio, "ν unknown, 0.25 assumed"; a safety factor; covering
+    inputs a zero thickness makes moot), which name
     the keyword (``safety_factor='2'``) where the CLI names the flag (``--safety-factor '2'``).
 
     body_region: an ISO/TS 15066 region ("chest", "hands-fingers", ...; "head" is the skin
@@ -94,6 +99,7 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
         method=method, rtol=rtol, atol=atol, max_steps=max_steps, history=history)))
 
 
+@_takes_objects
 @_provenance.stamped
 def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=None, contact=None,
           contact_area=None):
@@ -134,6 +140,7 @@ def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=No
     return Sweep(_covopt.sweep(x, y, _scene(scene), threads))
 
 
+@_takes_objects
 @_provenance.stamped
 def optimize(scene=None, *, materials=None, families=None, catalog=None, no_builtin=False,
              thickness=None, max_thickness=None, min_modulus=None, max_modulus=None,
@@ -235,6 +242,7 @@ def body_region_limits(region, area=None, contact="transient"):
     return BodyLimits(_covopt.body_region_limits(region, area, contact))
 
 
+@_takes_objects
 @_provenance.stamped
 def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=False, oracle=None,
                    method=None, rtol=None, max_steps=None):
@@ -263,6 +271,7 @@ def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=F
         oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
+@_takes_objects
 @_provenance.stamped
 def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=False, oracle=None,
                   method=None, rtol=None, max_steps=None):
@@ -278,6 +287,7 @@ def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=Fa
         oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
+@_takes_objects
 @_provenance.stamped
 def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
                 allow_full_compression=False, allow_crushing=False, oracle=None, method=None,
@@ -300,7 +310,8 @@ def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
     object of ``covopt speed-limit --body-region --json``.
 
     Returns a SpeedLimitTable (solve_for, criterion, safety_factor, limits, search_limit,
-    oracle, rows, scene, warnings; without the CLI's warnings about its own input). Raises
+    oracle, rows, scene, warnings: the CLI's, the input's included (a safety factor, an assumed
+    covering or ν), naming the keywords). Raises
     ValueError on bad input, ComputationError (status "evaluation-failed") when the time path
     fails on an impact of a row's search.
     """
@@ -387,6 +398,7 @@ def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, u
                                                 payload_inertia=payload_inertia))
 
 
+@_takes_objects
 @_provenance.stamped
 def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, scene=None,
                      urdf_text=None, allow_full_compression=False, allow_crushing=False,
@@ -407,8 +419,8 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
     sample_count, unsafe_sample_count, criterion, safety_factor, limits, search_limit, scene,
     joint_names, samples (time_s, speed_m_per_s, reflected_mass_kg ("fixed" if infinite),
     moving, max_safe_speed_m_per_s (None when no speed is safe), speed_scale, limited_by,
-    laceration_ratio, contusion_ratio, compression_ratio, safe), warnings (the robot's and the
-    check's; without the CLI's warnings about its own input). Raises ValueError on bad input,
+    laceration_ratio, contusion_ratio, compression_ratio, safe), warnings (the CLI's: the
+    input's, e.g. an assumed covering or ν, the robot's and the check's). Raises ValueError on bad input,
     ComputationError (status "evaluation-failed") when the time path (a scene with braking or
     a neck) fails at a sample: the trajectory then has no verdict.
 
@@ -470,6 +482,7 @@ def sensitivities(scene=None):
     return Sensitivities(_covopt.sensitivities(_scene(scene)))
 
 
+@_takes_objects
 @_provenance.stamped
 def robust_optimize(scene=None, *, ranges=None, samples=None, seed=1, threads=0, distributions=None,
                     max_injury_probability=None, allow_full_compression=False, allow_crushing=False,

@@ -4,6 +4,7 @@ covopt.audit_many: a plant's programs audited in parallel through dask.distribut
 
 import os
 
+from ._inputs import takes_objects
 from . import _covopt, _provenance
 from ._results import Result
 
@@ -43,6 +44,7 @@ _KEYWORDS = ("surface_file", "surface_spacing", "box_edge_radius", "flat_face_ra
              "payload_mass", "payload_com", "payload_inertia", "ignore_joint_limits", "keep_ratio_over_time")
 
 
+@takes_objects
 @_provenance.stamped
 def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surface_file=None,
           surface_spacing=None, box_edge_radius=None, flat_face_radius=None, link_coverings=None,

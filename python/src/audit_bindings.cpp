@@ -192,9 +192,7 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
   if (const auto value = Option(kwargs, "link_coverings")) in.link_coverings = ReadLinkCoverings(*value);
   SetDesignKeywords(kwargs, in);
   if (const auto keep = Option(kwargs, "keep_ratio_over_time")) in.keep_ratio_over_time = Bool(*keep, "keep_ratio_over_time");
-  in.scene_warnings = InputWarnings(inputs);
-  const optim::CoveringCrushCheck crush = inputs.CrushCheck();
-  in.scene_warnings.insert(in.scene_warnings.end(), crush.notes.begin(), crush.notes.end());
+  in.scene_warnings = InputAndCrushWarnings(inputs);
   const audit::AssembledAudit assembled = audit::AssembleAudit(in);
 
   audit::AuditResult result;

@@ -44,6 +44,9 @@
 #include "covopt/optim/trajectory_check.hpp"
 #include "covopt/report/body_contact_json.hpp"
 #include "covopt/robot/trajectory.hpp"
+#include "covopt/scene_file/scene_inputs.hpp"
+#include "covopt/scene_file/spelling.hpp"
+#include "covopt/scene_file/targets.hpp"
 #include "body_region_inputs.hpp"
 #include "robot_inputs.hpp"
 #include "scene_keywords.hpp"
@@ -58,36 +61,20 @@ using materials::BodyRegionTable;
 
 std::string Repr(const py::handle& value) { return py::repr(value).cast<std::string>(); }
 
-/// The library's messages name the CLI's flags; here they are keywords:
-/// "--contact clamped" -> "contact='clamped'", "--body-region head" -> "body_region='head'".
-std::string AsKeywords(std::string message) {
-  for (const std::string_view flag : {"--body-region", "--body-area", "--contact-area", "--contact"}) {
-    std::string keyword(flag.substr(2));
-    for (char& c : keyword) c = c == '-' ? '_' : c;
-    for (std::size_t at = message.find(flag); at != std::string::npos; at = message.find(flag, at)) {
-      const std::size_t end = at + flag.size();
-      if (end < message.size() && (std::isalnum(static_cast<unsigned char>(message[end])) || message[end] == '-')) {
-        at = end;  // a longer flag (--contact-area when looking for --contact)
-        continue;
-      }
-      std::size_t value_end = end;
-      if (end < message.size() && message[end] == ' ') {
-        value_end = end + 1;
-        while (value_end < message.size() &&
-               (std::isalnum(static_cast<unsigned char>(message[value_end])) || message[value_end] == '-')) {
-          ++value_end;
-        }
-      }
-      const std::string value = message.substr(end + 1, value_end > end + 1 ? value_end - end - 1 : 0);
-      const std::string replacement = value.empty() || value == "NAME" || value == "A"
-                                          ? keyword
-                                          : keyword + "='" + value + "'";
-      message.replace(at, (value.empty() ? end : value_end) - at, replacement);
-      at += replacement.size();
-    }
-  }
-  return message;
+}  // namespace
+
+std::string AsKeywords(std::string_view message) {
+  static constexpr scene_file::FieldSpelling kKeywords[] = {
+      {"body.region", "body_region"},
+      {"body.area", "body_area"},
+      {"body.contact", "contact"},
+      {"body.contact_area", "contact_area"},
+      {"head.mass", "head_mass"},  // "give head.mass=fixed" for a head held still
+  };
+  return scene_file::Respell(message, kKeywords, scene_file::ValueStyle::kKeyword);
 }
+
+namespace {
 
 /// Runs `f`, re-raising the library's std::invalid_argument with keywords for flags.
 template <typename F>
@@ -99,10 +86,6 @@ auto Keyworded(F&& f) {
   }
 }
 
-/// The scene keywords the body-region model reads; every other one given is refused.
-const char* const kReadKeywords[] = {"robot_mass",         "speed",    "robot_radius",  "covering_modulus",
-                                     "covering_poisson",   "material", "safety_factor", "covering_thickness",
-                                     "ranges",             "reaction_delay", "braking"};
 
 /// body_region as given, for messages: "chest", "['chest', 'face']".
 std::string RegionText(const py::kwargs& kwargs) {
@@ -114,9 +97,11 @@ std::string RegionText(const py::kwargs& kwargs) {
 void RefuseHeadKeywords(const SceneInputs& inputs, const std::string& region) {
   for (const auto& item : inputs.given) {
     const std::string keyword = py::str(item.first).cast<std::string>();
-    bool read = false;
-    for (const char* k : kReadKeywords) read = read || keyword == k;
-    if (!read) {
+    std::string_view field;  // the keyword's field, for the library's list of what a region reads
+    for (const scene_file::FieldSpelling& k : scene_file::SceneInputSpellings(scene_file::ValueStyle::kKeyword)) {
+      if (k.name == keyword) field = k.field;
+    }
+    if (keyword != "ranges" && !scene_file::BodyRegionReads(field)) {
       throw std::invalid_argument(
           keyword + ": body_region=" + (region.front() == '[' ? region : "'" + region + "'") +
           " does not read it (ISO/TS 15066's model takes robot_mass, speed, robot_radius, the covering, "
@@ -128,16 +113,6 @@ void RefuseHeadKeywords(const SceneInputs& inputs, const std::string& region) {
   if (Option(inputs.given, "ranges") && py::len(inputs.given["ranges"]) > 0) {
     throw std::invalid_argument("ranges: the scene has ranges, a population; a body region takes one scene");
   }
-}
-
-/// contact=: "transient" (default), "clamped" (or "quasi-static").
-ContactType ReadContact(const py::kwargs& kwargs) {
-  const auto v = Option(kwargs, "contact");
-  if (!v) return ContactType::kTransient;
-  const std::string text = py::str(*v).cast<std::string>();
-  const auto contact = ParseContactType(text);
-  if (!contact) throw std::invalid_argument("contact: expected 'transient' or 'clamped' (got " + Repr(*v) + ")");
-  return *contact;
 }
 
 /// body_region=: a name, "all" or a list of names; body_area= (one region only).
@@ -160,99 +135,46 @@ std::vector<std::string> ReadRegionNames(const py::kwargs& kwargs) {
   return names;
 }
 
-/// What body_region, body_area and contact name: the ISO regions' limits and whether the head
-/// (Park et al.'s skin model) is among them. "all" is every region the contact permits, and
-/// the head when transient.
-struct RegionChoice {
-  std::vector<BodyLimits> limits;
-  bool head = false;
-  bool all = false;
-  ContactType contact = ContactType::kTransient;
-};
-
-bool IsHead(std::string name) {
-  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return name == "head";
-}
-
-RegionChoice ReadRegions(const py::kwargs& kwargs) {
-  RegionChoice choice;
-  choice.contact = ReadContact(kwargs);
-  const std::vector<std::string> names = ReadRegionNames(kwargs);
-  const auto area = Option(kwargs, "body_area");
-  const std::string area_name = area ? py::str(*area).cast<std::string>() : std::string();
-  if (area && names.size() != 1) {
-    throw std::invalid_argument("body_area: names an area of one region; give one body_region with it (got " +
-                                std::to_string(names.size()) + " regions)");
-  }
-  const BodyRegionTable& table = BodyRegionTable::BuiltIn();
-  for (const std::string& name : names) {
-    if (name == "all") {
-      if (area) throw std::invalid_argument("body_area: body_region='all' takes every area; drop body_area");
-      choice.all = true;
-      for (BodyLimits& limits : table.AllLimits(choice.contact)) choice.limits.push_back(std::move(limits));
-      choice.head = choice.head || choice.contact == ContactType::kTransient;
-    } else if (IsHead(name)) {
-      if (area) throw std::invalid_argument("body_area: the head is judged by Park et al.'s skin model, not by area");
-      if (choice.contact != ContactType::kTransient) {
-        throw std::invalid_argument("contact='clamped': the head's skin model (Park et al. 2011) is a transient "
-                                    "impact; for the clamped head use body_region='skull-forehead' or 'face'");
-      }
-      choice.head = true;
-    } else {
-      choice.limits.push_back(Keyworded([&] { return table.Limits(name, area_name, choice.contact); }));
+/// body_region=, body_area=, contact= and contact_area= resolved by the library
+/// (scene_file::ResolveTargets: case, "all", "head", duplicates), its messages and notes
+/// spelled as keywords. contact_area= is a number in m² or a string with its unit ("1cm2").
+materials::ContactTargets ReadTargets(const py::kwargs& kwargs) {
+  scene_file::TargetRequest request;
+  request.names = ReadRegionNames(kwargs);
+  if (const auto v = Option(kwargs, "body_area")) request.area = py::str(*v).cast<std::string>();
+  if (const auto v = Option(kwargs, "contact")) request.contact = py::str(*v).cast<std::string>();
+  if (const auto v = Option(kwargs, "contact_area")) {
+    if (py::isinstance<py::bool_>(*v) ||
+        !(py::isinstance<py::float_>(*v) || py::isinstance<py::int_>(*v) || py::isinstance<py::str>(*v))) {
+      throw std::invalid_argument(
+          "contact_area: expected a number in m2 or a string with its unit, e.g. '1cm2' (got " + Repr(*v) + ")");
     }
+    request.contact_area_m2 = ReadSceneQuantity(*v, quantity_specs::kContactArea, "contact_area");
+    request.contact_area_shown = py::str(*v).cast<std::string>();
   }
-  return choice;
+  materials::ContactTargets targets = Keyworded([&] { return *scene_file::ResolveTargets(request); });
+  for (std::string& note : targets.notes) note = AsKeywords(note);
+  return targets;
 }
 
-/// contact_area= [m²]: a number in m², or a string with its unit ("1cm2", read as the CLI's
-/// --contact-area); in [1e-6, 1] m² (the floor kMinContactArea_m2).
-double ReadContactArea(const py::kwargs& kwargs) {
-  const auto v = Option(kwargs, "contact_area");
-  if (!v) return 0.0;
-  if (py::isinstance<py::bool_>(*v) ||
-      !(py::isinstance<py::float_>(*v) || py::isinstance<py::int_>(*v) || py::isinstance<py::str>(*v))) {
-    throw std::invalid_argument("contact_area: expected a number in m2 or a string with its unit, e.g. '1cm2' (got " +
-                                Repr(*v) + ")");
-  }
-  const double area = ReadSceneQuantity(*v, quantity_specs::kContactArea, "contact_area");
-  if (!(area >= kMinContactArea_m2 && area <= 1.0)) {  // the floor (physical_floors.hpp): 1 mm2
-    throw std::invalid_argument("contact_area must be in [1e-06, 1] m2 (1 mm2 is 1e-6, 1 cm2 is 1e-4) (got " + Repr(*v) +
-                                ")");
-  }
-  return area;
-}
-
-/// The robot and covering of `inputs` with the contact's keywords (the region's k_H and m_H are
-/// set by optim::WithRegion).
-BodyContactScene ContactScene(const SceneInputs& inputs, const py::kwargs& kwargs, ContactType contact) {
+/// The robot and covering of `inputs` with the targets' contact and contact area (the region's
+/// k_H and m_H are set by optim::WithRegion).
+BodyContactScene ContactScene(const SceneInputs& inputs, const materials::ContactTargets& targets) {
   BodyContactScene scene;
   scene.robot_mass_kg = inputs.scene.robot.mass_kg;
   scene.speed_m_per_s = inputs.scene.robot.speed_m_per_s;
   scene.robot_radius_m = inputs.scene.robot.radius_m;
   scene.covering = inputs.scene.covering;
-  scene.contact = contact;
-  scene.contact_area_m2 = ReadContactArea(kwargs);
+  scene.contact = targets.contact;
+  scene.contact_area_m2 = targets.contact_area_m2;
   scene.reaction_delay_s = inputs.scene.robot.reaction_delay_s;
   scene.braking_m_per_s2 = inputs.scene.robot.braking_m_per_s2;
   return scene;
 }
 
-/// The bare robot's own verdict needs its pressure (the CLI's CheckBodyRegionScene): Table A.2
-/// limits the pressure as well as the force, and a bare robot's pressure is its force over its
-/// contact area; without the area a "safe" would be the force's alone.
-void RequireBareContactArea(const BodyContactScene& scene, std::span<const BodyLimits> regions) {
-  if (regions.empty() || !optim::BareRobotLacksContactArea(scene)) return;
-  std::string names;
-  for (std::size_t i = 0; i < regions.size() && i < 3; ++i) {
-    names += (i > 0 ? ", " : "") + (i == 2 ? std::string("...") : regions[i].region->name);
-  }
-  throw std::invalid_argument(
-      "contact_area is needed for the bare robot on " + names +
-      ": ISO/TS 15066 Table A.2 limits the pressure too, and the bare robot's pressure is its force over its contact "
-      "area; give the area of the robot's contact surface, e.g. contact_area='1cm2' (a bare number is m²), or a "
-      "covering");
+/// The library's bare-robot contact-area policy (scene_file::RequireBareRobotContactArea).
+void RequireBareContactArea(const materials::ContactTargets& targets, const BodyContactScene& scene) {
+  Keyworded([&] { scene_file::RequireBareRobotContactArea(targets, scene); });
 }
 
 /// How a contact is judged, as the CLI's BodyRegionOptionsOf: the safety factor,
@@ -357,36 +279,44 @@ std::string OptionKeywords(std::string message) {
 }
 
 /// One region the call judges (simulate and sweep take one region, not the head or "all").
-BodyLimits OneRegion(const py::kwargs& kwargs, const char* function) {
-  const RegionChoice choice = ReadRegions(kwargs);
-  if (choice.all || choice.limits.size() != 1 || choice.head) {
+materials::ContactTargets OneRegion(const py::kwargs& kwargs, const char* function) {
+  materials::ContactTargets targets = ReadTargets(kwargs);
+  if (targets.targets.size() != 1 || targets.has_head()) {
     throw std::invalid_argument(std::string("body_region: ") + function +
                                 " takes one region (got " + Repr(kwargs["body_region"]) +
                                 "); speed_limit and optimize take several or 'all'");
   }
-  return choice.limits.front();
+  return targets;
 }
 
 /// "contact_area 1 cm² is the bare robot's; ..." (the CLI's ContactAreaNote, naming the keyword).
-std::vector<std::string> ContactWarnings(const SceneInputs& inputs, const BodyContactScene& scene) {
+std::vector<std::string> ContactWarnings(const SceneInputs& inputs, const materials::ContactTargets& targets,
+                                         const BodyContactScene& scene) {
   std::vector<std::string> warnings = InputWarnings(inputs);
-  if (scene.has_covering() && scene.contact_area_m2 > 0.0) {
-    warnings.push_back("contact_area " + FormatQuantity(scene.contact_area_m2, QuantityKind::kArea) +
-                       " is the bare robot's; with the covering the pressure is its Hertz pressure (the area is not "
-                       "used here)");
-  }
+  warnings.insert(warnings.end(), targets.notes.begin(), targets.notes.end());
+  if (const auto note = scene_file::ContactAreaNote(targets, scene)) warnings.push_back(AsKeywords(*note));
+  return warnings;
+}
+
+/// The input warnings and the targets' notes, without the default covering's: optimize
+/// designs the covering (and the contact area is the bare robot's, judged as such).
+std::vector<std::string> DesignWarnings(const SceneInputs& inputs, const materials::ContactTargets& targets) {
+  std::vector<std::string> warnings = InputWarnings(inputs);
+  std::erase(warnings, optim::DefaultCoveringNote(inputs.scene));
+  warnings.insert(warnings.end(), targets.notes.begin(), targets.notes.end());
   return warnings;
 }
 
 /// covopt.simulate(scene, body_region=..., ...): one contact, judged; the dict is `covopt
 /// simulate --body-region --json`'s, with time_path (and history) when the time path ran.
 py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
-  const BodyLimits limits = OneRegion(kwargs, "simulate");
+  const materials::ContactTargets targets = OneRegion(kwargs, "simulate");
+  const BodyLimits& limits = *targets.targets.front().limits;
   RefuseHeadKeywords(inputs, limits.region->name);
   const SolveOptions options = ReadPath(kwargs);
   const optim::BodyRegionOptions judge = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, kwargs, limits.contact);
-  RequireBareContactArea(scene, std::span(&limits, 1));
+  const BodyContactScene scene = ContactScene(inputs, targets);
+  RequireBareContactArea(targets, scene);
   std::vector<optim::BodyRegionJudgement> judgements;
   std::optional<BodyContactResult> timed;
   try {
@@ -411,7 +341,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
                               std::string(ToString(timed->status)) + "): " + timed->message,
                           std::string(ToString(timed->status)));
   }
-  std::vector<std::string> warnings = ContactWarnings(inputs, scene);
+  std::vector<std::string> warnings = ContactWarnings(inputs, targets, scene);
   for (std::string& w : report::TimePathWarnings(judgements.front(), timed ? &*timed : nullptr)) {
     warnings.push_back(std::move(w));
   }
@@ -464,8 +394,8 @@ report::BodyRegionTableRow HeadRow(const SceneInputs& inputs, const py::kwargs& 
 /// --json`'s object: one row per area (and the head's) per robot mass in values (default the
 /// scene's).
 py::dict SpeedLimitTable(const SceneInputs& inputs, const py::kwargs& kwargs) {
-  const RegionChoice choice = ReadRegions(kwargs);
-  if (!choice.head) RefuseHeadKeywords(inputs, RegionText(kwargs));
+  const materials::ContactTargets targets = ReadTargets(kwargs);
+  if (!targets.has_head()) RefuseHeadKeywords(inputs, RegionText(kwargs));
   if (inputs.Gave("speed")) {
     throw std::invalid_argument("speed_limit() computes the speed; drop speed from the scene");
   }
@@ -480,8 +410,9 @@ py::dict SpeedLimitTable(const SceneInputs& inputs, const py::kwargs& kwargs) {
     if (masses.empty()) throw std::invalid_argument("values: no robot masses (got an empty list)");
   }
   const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, kwargs, choice.contact);
-  RequireBareContactArea(scene, choice.limits);
+  const BodyContactScene scene = ContactScene(inputs, targets);
+  RequireBareContactArea(targets, scene);
+  const std::vector<BodyLimits> iso = targets.IsoLimits();
   const std::string material = MaterialName(inputs).value_or("");
   std::vector<report::BodyRegionTableRow> rows;
   for (const double mass : masses) {
@@ -490,31 +421,32 @@ py::dict SpeedLimitTable(const SceneInputs& inputs, const py::kwargs& kwargs) {
     std::vector<optim::BodyRegionSpeedLimitRow> table;
     try {
       py::gil_scoped_release release;
-      if (!choice.limits.empty()) table = optim::BodyRegionSpeedLimitTable(at, choice.limits, options);
+      if (!iso.empty()) table = optim::BodyRegionSpeedLimitTable(at, iso, options);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
     }
-    for (const optim::BodyRegionSpeedLimitRow& row : table) {
-      // A braking robot's limit the time path could not answer is no answer at all.
-      for (const optim::BodyRegionSpeedLimit* limit : {&row.bare, row.covered ? &*row.covered : nullptr}) {
-        if (limit && limit->status == optim::SpeedLimitStatus::kEvaluationFailed) {
-          RaiseComputationError("the speed limit could not be evaluated: " + limit->message, "evaluation-failed");
+    std::size_t next = 0;  // the rows in the targets' order (the head where it was named)
+    for (const materials::ContactTarget& target : targets.targets) {
+      if (target.is_head()) {
+        rows.push_back(HeadRow(inputs, kwargs, mass));
+      } else {
+        const optim::BodyRegionSpeedLimitRow& row = table.at(next++);
+        // A braking robot's limit the time path could not answer is no answer at all.
+        for (const optim::BodyRegionSpeedLimit* limit : {&row.bare, row.covered ? &*row.covered : nullptr}) {
+          if (limit && limit->status == optim::SpeedLimitStatus::kEvaluationFailed) {
+            RaiseComputationError("the speed limit could not be evaluated: " + limit->message, "evaluation-failed");
+          }
         }
+        rows.push_back(report::TableRow(mass, row));
       }
-      rows.push_back(report::TableRow(mass, row));
-    }
-    if (choice.head) rows.push_back(HeadRow(inputs, kwargs, mass));
-    for (std::size_t i = rows.size() - table.size() - (choice.head ? 1 : 0); i < rows.size(); ++i) {
-      rows[i].material = material;
+      rows.back().material = material;
     }
   }
   std::vector<std::string> warnings = InputWarnings(inputs);
-  if (!choice.limits.empty() && !(scene.contact_area_m2 > 0.0)) {
-    warnings.push_back("the bare robot's pressure is not evaluated (no contact_area): its limits are those of "
-                       "the force alone");
-  }
+  warnings.insert(warnings.end(), targets.notes.begin(), targets.notes.end());
+  if (const auto note = scene_file::BarePressureNote(targets)) warnings.push_back(AsKeywords(*note));
   return JsonToPython(report::BodyRegionSpeedLimitJson(scene, MaterialName(inputs),
-                                                       optim::BodyRegionCriterion(options.rule, choice.head),
+                                                       optim::BodyRegionCriterion(options.rule, targets.has_head()),
                                                        options.rule.safety_factor, rows, warnings));
 }
 
@@ -527,11 +459,11 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
                                   "or families= to choose candidates");
     }
   }
-  const RegionChoice choice = ReadRegions(kwargs);
+  const materials::ContactTargets targets = ReadTargets(kwargs);
   optim::BodyRegionDesignRequest request;
-  request.scene = ContactScene(inputs, kwargs, choice.contact);
-  request.regions = choice.limits;
-  if (choice.head) {
+  request.scene = ContactScene(inputs, targets);
+  request.regions = targets.IsoLimits();
+  if (targets.has_head()) {
     request.head = inputs.scene;  // the head's own keywords apply to its skin model
   } else {
     RefuseHeadKeywords(inputs, RegionText(kwargs));
@@ -570,8 +502,8 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
     throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
   }
   return JsonToPython(report::BodyRegionDesignJson(request, result,
-                                                   optim::BodyRegionCriterion(request.rule, choice.head),
-                                                   InputWarnings(inputs)));
+                                                   optim::BodyRegionCriterion(request.rule, targets.has_head()),
+                                                   DesignWarnings(inputs, targets)));
 }
 
 /// covopt.check_trajectory(..., body_region=...): every sample against the ISO regions named
@@ -582,12 +514,12 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
                          const std::optional<std::string>& urdf_text, bool ignore_joint_limits,
                          const py::tuple& payload, const SceneInputs& inputs, const py::kwargs& kwargs) {
   RefuseSampleKeywords(inputs);
-  const RegionChoice choice = ReadRegions(kwargs);
-  if (!choice.head) RefuseHeadKeywords(inputs, RegionText(kwargs));
+  const materials::ContactTargets targets = ReadTargets(kwargs);
+  const std::vector<BodyLimits> iso = targets.IsoLimits();
+  if (!targets.has_head()) RefuseHeadKeywords(inputs, RegionText(kwargs));
   const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, kwargs, choice.contact);
-  RequireBareContactArea(scene, choice.limits);
-  const optim::CoveringCrushCheck crush = inputs.CrushCheck();
+  const BodyContactScene scene = ContactScene(inputs, targets);
+  RequireBareContactArea(targets, scene);
 
   const robot::ContactMotionResult motion =
       ReadContactMotion(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, PayloadFrom(payload));
@@ -597,8 +529,8 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
   try {
     py::gil_scoped_release release;
     const std::vector<optim::MotionSample> samples = optim::MotionSamples(motion.samples);
-    if (!choice.limits.empty()) check = optim::CheckTrajectoryForBodyRegions(scene, choice.limits, samples, options);
-    if (choice.head) head = optim::CheckTrajectory(inputs.scene, samples, head_options);
+    if (!iso.empty()) check = optim::CheckTrajectoryForBodyRegions(scene, iso, samples, options);
+    if (targets.has_head()) head = optim::CheckTrajectory(inputs.scene, samples, head_options);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
   }
@@ -610,12 +542,12 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
     head_summary = report::HeadTrajectorySummary{std::string(optim::ToString(head->status)), head->safe_speed_scale,
                                                  head->message};
   }
-  std::vector<std::string> warnings = InputWarnings(inputs);
-  warnings.insert(warnings.end(), crush.notes.begin(), crush.notes.end());
+  std::vector<std::string> warnings = InputAndCrushWarnings(inputs);
   warnings.insert(warnings.end(), motion.warnings.begin(), motion.warnings.end());
+  warnings.insert(warnings.end(), targets.notes.begin(), targets.notes.end());
   return JsonToPython(report::BodyRegionTrajectoryJson(check ? *check : optim::BodyRegionTrajectoryCheck{},
-                                                       choice.limits, scene,
-                                                       head_summary, optim::BodyRegionCriterion(options.rule, choice.head),
+                                                       iso, scene,
+                                                       head_summary, optim::BodyRegionCriterion(options.rule, targets.has_head()),
                                                        warnings));
 }
 
@@ -623,13 +555,14 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
 /// (optim::SweepBodyRegion), as numpy arrays a[i, j] at x[i], y[j] (the columns of `covopt
 /// sweep --body-region --csv`); an invalid point is NaN / False, with its message in errors.
 py::dict Sweep(const py::object& x, const py::object& y, const SceneInputs& inputs, const py::kwargs& kwargs) {
-  const BodyLimits limits = OneRegion(kwargs, "sweep");
+  const materials::ContactTargets targets = OneRegion(kwargs, "sweep");
+  const BodyLimits& limits = *targets.targets.front().limits;
   RefuseHeadKeywords(inputs, limits.region->name);
   const SweepAxis x_axis = ReadAxis(x, "x");
   const std::optional<SweepAxis> y_axis = y.is_none() ? std::nullopt : std::optional(ReadAxis(y, "y"));
   const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, kwargs, limits.contact);
-  RequireBareContactArea(scene, std::span(&limits, 1));
+  const BodyContactScene scene = ContactScene(inputs, targets);
+  RequireBareContactArea(targets, scene);
   std::vector<optim::BodyRegionSweepPoint> grid;
   try {
     py::gil_scoped_release release;
@@ -706,8 +639,8 @@ py::dict Sweep(const py::object& x, const py::object& y, const SceneInputs& inpu
 }  // namespace
 
 BodyRegionSelection SelectBodyRegions(const SceneInputs& inputs, const py::kwargs& kwargs) {
-  const RegionChoice choice = ReadRegions(kwargs);
-  return BodyRegionSelection{choice.limits, choice.head, choice.contact, ReadContactArea(kwargs),
+  const materials::ContactTargets targets = ReadTargets(kwargs);
+  return BodyRegionSelection{targets.IsoLimits(), targets.has_head(), targets.contact, targets.contact_area_m2,
                              JudgeOptions(inputs, kwargs)};
 }
 

@@ -3,6 +3,8 @@
 /// The body-region keywords (body_region, body_area, contact, contact_area, the criterion
 /// flags) as body_contact.cpp reads them, for the other binding files (covopt.audit).
 
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -24,6 +26,10 @@ struct BodyRegionSelection {
   /// material (material=) with its crush data.
   optim::BodyRegionOptions judge;
 };
+
+/// A library message naming the body-region fields (body.region, body.contact=clamped) with
+/// the keywords (body_region, contact='clamped'): Python's one table of their spellings.
+std::string AsKeywords(std::string_view message);
 
 /// Reads body_region= ("all", a name, "head" or a list), body_area=, contact=,
 /// contact_area= and the criterion flags of `kwargs`, as covopt.simulate(body_region=...).

@@ -14,6 +14,7 @@
 #include "covopt/core/body_contact.hpp"
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/report/body_regions_json.hpp"
+#include "body_region_inputs.hpp"
 #include "scene_keywords.hpp"
 
 namespace py = pybind11;
@@ -36,8 +37,13 @@ py::dict BodyRegionLimits(const std::string& region, const std::optional<std::st
     throw std::invalid_argument("contact: expected 'transient' or 'clamped' (got '" + contact +
                                 "')");
   }
-  const materials::BodyLimits limits =
-      BodyRegionTable::BuiltIn().Limits(region, area.value_or(""), *type);
+  const materials::BodyLimits limits = [&] {
+    try {
+      return BodyRegionTable::BuiltIn().Limits(region, area.value_or(""), *type);
+    } catch (const materials::BodyRegionError& e) {
+      throw std::invalid_argument(AsKeywords(e.what()));  // "use contact='clamped'"
+    }
+  }();
   py::dict result;
   result["region"] = limits.region->name;
   result["area"] = limits.area->name;

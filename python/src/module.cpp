@@ -45,7 +45,10 @@
 #include "covopt/report/design_json.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
+#include "covopt/core/scene_fields.hpp"
 #include "covopt/scene_file/fields.hpp"
+#include "covopt/scene_file/scene_inputs.hpp"
+#include "covopt/scene_file/spelling.hpp"
 #include "bounded.hpp"
 #include "report_charts.hpp"
 #include "scene_keywords.hpp"
@@ -57,47 +60,19 @@ namespace {
 
 namespace specs = covopt::quantity_specs;
 
-/// One scene keyword: its name, the library's field name (as in the library's messages),
-/// how to read it and where it goes.
-struct SceneKeyword {
-  const char* keyword;  ///< robot_mass
-  const char* field;    ///< robot.mass
-  const QuantitySpec* spec;
-  double& (*value)(Scene&);
-};
+/// The Scene keywords and the fields they name: the library's table of the scene inputs
+/// (scene_file::SceneInputSpellings), "robot_mass" for robot.mass.
+std::span<const scene_file::FieldSpelling> SceneKeywords() {
+  return scene_file::SceneInputSpellings(scene_file::ValueStyle::kKeyword);
+}
 
-// clang-format off
-const SceneKeyword kSceneKeywords[] = {
-  {"robot_mass", "robot.mass", &specs::kRobotMass, [](Scene& s) -> double& { return s.robot.mass_kg; }},
-  {"speed", "robot.speed", &specs::kSpeed, [](Scene& s) -> double& { return s.robot.speed_m_per_s; }},
-  {"robot_radius", "robot.radius", &specs::kRobotRadius, [](Scene& s) -> double& { return s.robot.radius_m; }},
-  {"robot_modulus", "robot.modulus", &specs::kRobotModulus, [](Scene& s) -> double& { return s.robot.youngs_modulus_Pa; }},
-  {"robot_poisson", "robot.poisson", &specs::kPoissonRatio, [](Scene& s) -> double& { return s.robot.poisson_ratio; }},
-  {"covering_modulus", "covering.modulus", &specs::kCoveringModulus, [](Scene& s) -> double& { return s.covering.youngs_modulus_Pa; }},
-  {"covering_poisson", "covering.poisson", &specs::kPoissonRatio, [](Scene& s) -> double& { return s.covering.poisson_ratio; }},
-  {"covering_thickness", "covering.thickness", &specs::kCoveringThickness, [](Scene& s) -> double& { return s.covering.thickness_m; }},
-  {"head_mass", "head.mass", &specs::kHeadMass, [](Scene& s) -> double& { return s.head.mass_kg; }},
-  {"head_radius", "head.radius", &specs::kHeadRadius, [](Scene& s) -> double& { return s.head.radius_m; }},
-  {"scalp_modulus", "scalp.modulus", &specs::kScalpModulus, [](Scene& s) -> double& { return s.scalp.youngs_modulus_Pa; }},
-  {"scalp_poisson", "scalp.poisson", &specs::kPoissonRatio, [](Scene& s) -> double& { return s.scalp.poisson_ratio; }},
-  {"scalp_thickness", "scalp.thickness", &specs::kScalpThickness, [](Scene& s) -> double& { return s.scalp.thickness_m; }},
-  {"skull_modulus", "skull.modulus", &specs::kSkullModulus, [](Scene& s) -> double& { return s.skull.youngs_modulus_Pa; }},
-  {"skull_poisson", "skull.poisson", &specs::kPoissonRatio, [](Scene& s) -> double& { return s.skull.poisson_ratio; }},
-  // Beyond the conservative two-mass model (docs/model.md §10).
-  {"damping", "model.damping", &specs::kContactDamping, [](Scene& s) -> double& { return s.model.damping_s_per_m; }},
-  {"reaction_delay", "robot.reaction_delay", &specs::kReactionDelay, [](Scene& s) -> double& { return s.robot.reaction_delay_s; }},
-  {"braking", "robot.braking", &specs::kBraking, [](Scene& s) -> double& { return s.robot.braking_m_per_s2; }},
-  {"torso_mass", "head.torso_mass", &specs::kTorsoMass, [](Scene& s) -> double& { return s.head.torso_mass_kg; }},
-  {"neck_stiffness", "head.neck_stiffness", &specs::kNeckStiffness, [](Scene& s) -> double& { return s.head.neck_stiffness_N_per_m; }},
-  {"neck_damping", "head.neck_damping", &specs::kNeckDamping, [](Scene& s) -> double& { return s.head.neck_damping_N_s_per_m; }},
-};
-// clang-format on
-
-using scene_file::kMaxSafetyFactor;  // the one bound of the safety factor, as scene files and the CLI
-
-/// The scene's keywords besides the scene fields'.
-const char* const kSceneOptionKeywords[] = {"thresholds", "laceration_limit", "contusion_limit",
-                                            "safety_factor", "material"};
+/// The field of a Scene keyword; empty when it is none.
+std::string_view FieldOfKeyword(std::string_view keyword) {
+  for (const scene_file::FieldSpelling& k : SceneKeywords()) {
+    if (k.name == keyword) return k.field;
+  }
+  return {};
+}
 
 std::string Repr(const py::handle& value) { return py::repr(value).cast<std::string>(); }
 
@@ -114,10 +89,11 @@ std::string AsTyped(const py::handle& number) {
 
 }  // namespace
 
-double ReadSceneQuantity(const py::handle& value, const QuantitySpec& spec, std::string_view keyword) {
-  if (py::isinstance<py::str>(value)) {
-    return ParseQuantity(value.cast<std::string>(), spec, keyword);
-  }
+namespace {
+
+/// A Python number as SI, `keyword` named in messages: not a bool, within a double, finite
+/// (or math.inf where the spec allows "fixed" or "flat"). Not checked for plausibility.
+double NumberOf(const py::handle& value, const QuantitySpec& spec, std::string_view keyword) {
   if (py::isinstance<py::bool_>(value) ||
       !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value))) {
     throw std::invalid_argument(std::string(keyword) + ": expected a number in SI (" +
@@ -147,6 +123,16 @@ double ReadSceneQuantity(const py::handle& value, const QuantitySpec& spec, std:
                            : "") +
         " (got " + Repr(value) + ")");
   }
+  return number;
+}
+
+}  // namespace
+
+double ReadSceneQuantity(const py::handle& value, const QuantitySpec& spec, std::string_view keyword) {
+  if (py::isinstance<py::str>(value)) {
+    return ParseQuantity(value.cast<std::string>(), spec, keyword);
+  }
+  const double number = NumberOf(value, spec, keyword);
   // A number has no unit, as a bare number on the command line: an implausible one is the
   // classic slip (robot_radius=40 meant in mm) and refused with the spellings to use.
   CheckBareNumber(number, AsTyped(value), spec, keyword, "'");
@@ -208,15 +194,13 @@ long ReadMaxSteps(const py::handle& value) {
   return steps;
 }
 
-/// A limit or factor of the scene: `fallback` when not given, else read and checked by `ok`
-/// (`range`: what the message says is allowed).
-double ReadChecked(const py::dict& given, const char* keyword, const QuantitySpec& spec, bool (*ok)(double),
-                   const char* range, double fallback) {
-  const auto v = Option(given, keyword);
-  if (!v) return fallback;
-  const double value = ReadSceneQuantity(*v, spec, keyword);
-  if (!ok(value)) throw std::invalid_argument(std::string(keyword) + " must be " + range + " (got " + Repr(*v) + ")");
-  return value;
+/// The quantity a field holds; nullptr for a word (the material, the thresholds).
+const QuantitySpec* SpecOf(std::string_view field) {
+  if (const SceneField* scene_field = FindSceneField(field)) return &scene_field->spec;
+  for (const scene_file::LimitField& limit : scene_file::LimitFields()) {
+    if (limit.dotted_name() == field) return &limit.spec;
+  }
+  return nullptr;
 }
 
 }  // namespace
@@ -225,10 +209,9 @@ SceneInputs ReadScene(const py::kwargs& keywords) {
   SceneInputs inputs;
   for (const auto& item : keywords) {
     const std::string name = py::str(item.first).cast<std::string>();
-    bool known = false;
-    for (const SceneKeyword& k : kSceneKeywords) known = known || name == k.keyword;
-    for (const char* k : kSceneOptionKeywords) known = known || name == k;
-    if (!known && name != "ranges") throw py::type_error("Scene() got an unexpected keyword argument '" + name + "'");
+    if (FieldOfKeyword(name).empty() && name != "ranges") {
+      throw py::type_error("Scene() got an unexpected keyword argument '" + name + "'");
+    }
     if (py::isinstance<py::str>(item.second) && item.second.cast<std::string>().find("..") != std::string::npos) {
       throw std::invalid_argument(name + "=" + Repr(item.second) + ": a range LO..HI describes a population, not "
                                   "one scene; give ranges={'" + name + "': " + Repr(item.second) +
@@ -236,46 +219,32 @@ SceneInputs ReadScene(const py::kwargs& keywords) {
     }
     if (!item.second.is_none()) inputs.given[item.first] = item.second;
   }
-  const auto get = [&](const char* name) { return Option(inputs.given, name); };
-  Scene& scene = inputs.scene;
-  if (const auto name = get("material")) {
-    for (const char* k : {"covering_modulus", "covering_poisson"}) {
-      if (get(k)) {
-        throw std::invalid_argument(std::string("material sets the covering's modulus and Poisson "
-                                                "ratio; give either material or ") + k + ", not both");
-      }
-    }
-    const materials::Material& m = FindMaterial(py::str(*name).cast<std::string>());
-    scene.covering.youngs_modulus_Pa = m.youngs_modulus_Pa;
-    scene.covering.poisson_ratio = m.poisson_ratio.value_or(materials::kDefaultPoissonRatio);
-    inputs.covering_material = m.name;
-    inputs.covering_poisson_assumed = !m.poisson_ratio.has_value();
-  }
-  for (const SceneKeyword& k : kSceneKeywords) {
-    if (const auto value = get(k.keyword)) k.value(scene) = ReadSceneQuantity(*value, *k.spec, k.keyword);
-  }
-  if (const auto thresholds = get("thresholds")) {
-    const std::string text = py::str(*thresholds).cast<std::string>();
-    if (text == "cumulative") {
-      scene.model.thresholds = ThresholdReading::kCumulative;
-    } else if (text == "literal") {
-      scene.model.thresholds = ThresholdReading::kLiteral;
+  // The library's one resolution (scene_file::ApplySceneInputs), in the table's order; a
+  // number is read here (Python's types), a string there with its unit.
+  std::vector<scene_file::SceneInput> values;
+  for (const scene_file::FieldSpelling& k : SceneKeywords()) {
+    const auto value = Option(inputs.given, std::string(k.name).c_str());
+    if (!value) continue;
+    const QuantitySpec* spec = SpecOf(k.field);
+    if (spec != nullptr && !py::isinstance<py::str>(*value)) {
+      values.push_back({std::string(k.field), NumberOf(*value, *spec, k.name), AsTyped(*value)});
     } else {
-      throw std::invalid_argument("thresholds: expected 'cumulative' or 'literal' (got '" + text + "')");
+      values.push_back({std::string(k.field), py::str(*value).cast<std::string>(), ""});
     }
   }
-  InjuryLimits& limits = inputs.limits;
-  // The floors (physical_floors.hpp), as CheckInjuryLimits.
-  limits.laceration_tensile_stress_Pa =
-      ReadChecked(inputs.given, "laceration_limit", specs::kLacerationLimit,
-                  [](double v) { return v >= kMinModulus_Pa && v <= 1e13; }, "in [1000, 1e+13] Pa",
-                  limits.laceration_tensile_stress_Pa);
-  limits.contusion_energy_density_J_per_m2 =
-      ReadChecked(inputs.given, "contusion_limit", specs::kContusionLimit,
-                  [](double v) { return v >= kMinEnergyDensity_J_per_m2 && v <= 1e13; }, "in [1, 1e+13] J/m2",
-                  limits.contusion_energy_density_J_per_m2);
-  inputs.safety_factor = ReadChecked(inputs.given, "safety_factor", specs::kSafetyFactor,
-                                     [](double v) { return v >= 1.0 && v <= kMaxSafetyFactor; }, "in [1, 100]", 1.0);
+  scene_file::ResolvedScene resolved;
+  try {
+    scene_file::ApplySceneInputs(values, BuiltInCatalog(), resolved, "'");
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(scene_file::Respell(e.what(), SceneKeywords(), scene_file::ValueStyle::kKeyword));
+  }
+  inputs.scene = resolved.scene;
+  inputs.limits = resolved.limits;
+  inputs.safety_factor = resolved.safety_factor;
+  if (const materials::Material* m = resolved.covering_material) {
+    inputs.covering_material = m->name;
+    inputs.covering_poisson_assumed = !m->poisson_ratio.has_value();
+  }
   return inputs;
 }
 
@@ -288,10 +257,11 @@ SceneInputs SceneInputs::With(const py::dict& changes) const {
 
 std::string SceneInputs::Attributed(const std::string& message) const {
   std::string origins;
-  for (const SceneKeyword& k : kSceneKeywords) {
-    if (Gave(k.keyword) && message.find(k.field) != std::string::npos) {
-      origins += std::string(origins.empty() ? "" : "; ") + k.field + " is " + k.keyword + "=" +
-                 Repr(given[k.keyword]);
+  for (const scene_file::FieldSpelling& k : SceneKeywords()) {
+    const std::string keyword(k.name);
+    if (FindSceneField(k.field) != nullptr && Gave(keyword.c_str()) && message.find(k.field) != std::string::npos) {
+      origins += std::string(origins.empty() ? "" : "; ") + std::string(k.field) + " is " + keyword + "=" +
+                 Repr(given[keyword.c_str()]);
     }
   }
   return origins.empty() ? message : message + " (" + origins + ")";
@@ -307,7 +277,7 @@ optim::CoveringCrushCheck SceneInputs::CrushCheck() const {
 }
 
 void SceneInputs::Judge(report::SimulationReport& report) const {
-  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor);
+  report.assessment = report::JudgeInjuries(report.result.peaks, limits, report.safety_factor, report.scene.head.area);
   const optim::CoveringCrushCheck crush = CrushCheck();
   if (crush.compressive_strength_Pa > 0.0) {
     report.crush = optim::CrushVerdict(report.result.peaks, crush.compressive_strength_Pa, report.safety_factor);
@@ -315,10 +285,6 @@ void SceneInputs::Judge(report::SimulationReport& report) const {
   report.scope = optim::HeadVerdictScope(
       optim::DesignRule{report.safety_factor, optim::DesignCriterion::kPaper, false, !crush.notes.empty()});
 }
-
-namespace {
-
-}  // namespace
 
 /// The warnings `covopt simulate` adds about its inputs (optim::SceneInputWarnings, as the
 /// CLI's): where the CLI names a flag or scene file as the source, these name the keyword,
@@ -329,6 +295,7 @@ std::vector<std::string> InputWarnings(const SceneInputs& inputs) {
                           : field == "covering.material"  ? "material"
                           : field == "covering.modulus"   ? "covering_modulus"
                           : field == "covering.poisson"   ? "covering_poisson"
+                          : field == "covering.thickness" ? "covering_thickness"
                                                           : nullptr;
     if (keyword == nullptr || !inputs.Gave(keyword)) return std::nullopt;
     return std::string(keyword) + "=" + Repr(inputs.given[keyword]);
@@ -336,6 +303,12 @@ std::vector<std::string> InputWarnings(const SceneInputs& inputs) {
   const materials::Material* material =
       inputs.covering_material ? BuiltInCatalog().Find(*inputs.covering_material) : nullptr;
   return optim::SceneInputWarnings(inputs.scene, inputs.limits, inputs.safety_factor, material, source_of);
+}
+
+std::vector<std::string> InputAndCrushWarnings(const SceneInputs& inputs) {
+  std::vector<std::string> warnings = InputWarnings(inputs);
+  optim::AppendNewWarnings(warnings, inputs.CrushCheck().notes);
+  return warnings;
 }
 
 namespace {
@@ -452,143 +425,6 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   py::dict result = JsonToPython(report::SimulationJson(report, -1));
   if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model, report.scene);
   return WithReportCharts(std::move(result), [report] { return std::vector{report::HistoryChart(report)}; });
-}
-
-}  // namespace
-
-/// One sweep axis from Python: (quantity, values); the quantity is a CLI scene flag without
-/// dashes, underscores allowed ("robot_mass" = "robot-mass"); values are SI numbers, or
-/// "fixed"/"flat" for +inf.
-SweepAxis ReadAxis(const py::handle& axis, const char* keyword) {
-  const auto fail = [&](const std::string& problem) {
-    throw std::invalid_argument(std::string(keyword) + ": " + problem + " (got " + Repr(axis) + ")");
-  };
-  if (!py::isinstance<py::sequence>(axis) || py::isinstance<py::str>(axis) || py::len(axis) != 2) {
-    fail("expected (quantity, values), e.g. (\"speed\", [0.5, 1.0, 2.0])");
-  }
-  const py::sequence pair = py::reinterpret_borrow<py::sequence>(axis);
-  if (!py::isinstance<py::str>(pair[0])) fail("the quantity must be a name such as \"speed\"");
-  SweepAxis result;
-  result.quantity = pair[0].cast<std::string>();
-  for (char& c : result.quantity) c = c == '_' ? '-' : c;
-  py::object values = pair[1];
-  if (py::isinstance<py::str>(values)) fail("the values must be a sequence of numbers");
-  if (!py::isinstance<py::iterable>(values)) fail("the values must be a sequence of numbers");
-  ForEachBounded(values, kMaxSweepAxisValues, std::string(keyword) + " (" + result.quantity + ")",
-                 [&](const py::handle value) {
-    if (py::isinstance<py::str>(value)) {
-      const std::string word = value.cast<std::string>();
-      if (word != "fixed" && word != "flat") fail("a value is a number in SI, 'fixed' or 'flat' (not '" + word + "')");
-      result.values.push_back(kFixed);
-    } else if (py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value) ||
-               py::hasattr(value, "__float__")) {
-      result.values.push_back(py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>());
-    } else {
-      fail("a value is a number in SI, 'fixed' or 'flat' (not " + Repr(value) + ")");
-    }
-  });
-  return result;
-}
-
-namespace {
-
-/// covopt.sweep(x, y, scene, threads=None): see python/covopt/__init__.py.
-py::dict SweepGrid(const py::object& x, const py::object& y, const SceneInputs& inputs, const py::object& threads_) {
-  SweepSpec spec;
-  spec.scene = inputs.scene;
-  spec.limits = inputs.limits;
-  spec.safety_factor = inputs.safety_factor;
-  spec.x = ReadAxis(x, "x");
-  if (!y.is_none()) spec.y = ReadAxis(y, "y");
-  SweepOptions options;
-  if (!threads_.is_none()) {
-    if (!py::isinstance<py::int_>(threads_) || threads_.cast<long long>() < 0) {
-      throw std::invalid_argument("threads: expected an integer >= 0, 0 = all cores (got " + Repr(threads_) + ")");
-    }
-    options.threads = threads_.cast<unsigned>();
-  }
-
-  // The arrays, a[i, j] at x[i], y[j]; invalid points are NaN (numbers) or False (flags),
-  // allocated only for a grid within the library's caps.
-  CheckSweepSize(spec.x.values.size(), spec.y ? std::optional(spec.y->values.size()) : std::nullopt);
-  const std::size_t nx = spec.x.values.size();
-  const std::size_t ny = spec.y ? spec.y->values.size() : 0;
-  std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(nx)};
-  if (spec.y) shape.push_back(static_cast<py::ssize_t>(ny));
-  struct Column {
-    const char* name;
-    double (*number)(const SweepRow&);  ///< for a float column
-    bool (*flag)(const SweepRow&);      ///< for a bool column
-  };
-  // clang-format off
-  static const Column kColumns[] = {
-    {"max_penetration_m", [](const SweepRow& r) { return r.peaks.max_penetration_m; }, nullptr},
-    {"peak_force_N", [](const SweepRow& r) { return r.peaks.peak_force_N; }, nullptr},
-    {"contact_duration_s", [](const SweepRow& r) { return r.contact_duration_s.value_or(std::numeric_limits<double>::quiet_NaN()); }, nullptr},
-    {"time_of_max_compression_s", [](const SweepRow& r) { return r.time_of_max_compression_s.value_or(std::numeric_limits<double>::quiet_NaN()); }, nullptr},
-    {"max_compressive_stress_Pa", [](const SweepRow& r) { return r.peaks.max_compressive_stress_Pa; }, nullptr},
-    {"max_tensile_stress_Pa", [](const SweepRow& r) { return r.peaks.max_tensile_stress_Pa; }, nullptr},
-    {"max_energy_density_J_per_m2", [](const SweepRow& r) { return r.peaks.max_energy_density_J_per_m2; }, nullptr},
-    {"rebound_speed_m_per_s", [](const SweepRow& r) { return r.rebound_speed_m_per_s; }, nullptr},
-    {"phase_at_max", [](const SweepRow& r) { return static_cast<double>(PhaseNumber(r.peaks.phase_at_max)); }, nullptr},
-    {"laceration_ratio", [](const SweepRow& r) { return r.assessment.laceration.ratio; }, nullptr},
-    {"contusion_ratio", [](const SweepRow& r) { return r.assessment.contusion.ratio; }, nullptr},
-    {"worst_ratio", [](const SweepRow& r) { return r.worst_ratio; }, nullptr},
-    {"compression_ratio", [](const SweepRow& r) { return r.compression_ratio; }, nullptr},
-    {"valid", nullptr, [](const SweepRow& r) { return r.valid; }},
-    {"scalp_fully_compressed", nullptr, [](const SweepRow& r) { return r.valid && r.peaks.scalp_fully_compressed; }},
-    {"fully_compressed", nullptr, [](const SweepRow& r) { return r.valid && r.peaks.fully_compressed; }},
-    {"safe", nullptr, [](const SweepRow& r) { return r.valid && r.assessment.safe(); }},
-    {"admissible", nullptr, [](const SweepRow& r) { return r.valid && r.admissible; }},
-  };
-  // clang-format on
-  py::dict arrays;
-  std::vector<double*> numbers;
-  std::vector<bool*> flags;
-  for (const Column& column : kColumns) {
-    if (column.number) {
-      py::array_t<double> array(shape);
-      numbers.push_back(array.mutable_data());
-      arrays[column.name] = array;
-    } else {
-      py::array_t<bool> array(shape);
-      flags.push_back(array.mutable_data());
-      arrays[column.name] = array;
-    }
-  }
-  SweepResult result;
-  {
-    py::gil_scoped_release release;  // the consumer writes into the arrays' buffers only
-    result = Sweep(spec, options, [&](std::span<const SweepRow> rows) {
-      for (const SweepRow& row : rows) {
-        std::size_t n = 0, f = 0;
-        for (const Column& column : kColumns) {
-          if (column.number) {
-            numbers[n++][row.index] =
-                row.valid ? column.number(row) : std::numeric_limits<double>::quiet_NaN();
-          } else {
-            flags[f++][row.index] = column.flag(row);
-          }
-        }
-      }
-    });
-  }
-  if (!result.ok()) {
-    RaiseComputationError("no point of the sweep is a valid scene: " + result.message,
-                          std::string(ToString(result.status)));
-  }
-  py::dict out;
-  out["x"] = py::array_t<double>(static_cast<py::ssize_t>(nx), spec.x.values.data());
-  out["x_quantity"] = spec.x.quantity;
-  if (spec.y) {
-    out["y"] = py::array_t<double>(static_cast<py::ssize_t>(ny), spec.y->values.data());
-    out["y_quantity"] = spec.y->quantity;
-  }
-  for (const auto& item : arrays) out[item.first] = item.second;
-  out["status"] = std::string(ToString(result.status));
-  out["message"] = result.message;
-  out["brief_report"] = result.BriefReport();
-  return out;
 }
 
 /// A list of strings from a str or a sequence of them.
@@ -821,15 +657,19 @@ ranges: {keyword: (low, high) or "LO..HI"}, a population for worst_case, injury_
 robust_optimize. Attributes: every keyword, in SI. replace(**keywords): a changed copy (None unsets).
 to_dict(): the scene object of `covopt simulate --json`.)");
   scene.def(py::init(&ReadScene));
-  for (const SceneKeyword& k : kSceneKeywords) {
-    const std::string doc = std::string(k.field) + " [" + std::string(SiUnit(k.spec->kind)) + "]";
+  for (const SceneField& field : SceneFields()) {
+    std::string keyword(field.name);
+    std::replace(keyword.begin(), keyword.end(), '-', '_');
+    const std::string doc = field.dotted_name() + " [" + std::string(SiUnit(field.spec.kind)) + "]";
+    const SceneField* f = &field;  // the library's table lives as long as the program
     scene.def_property_readonly(
-        k.keyword, [&k](const SceneInputs& s) { Scene copy = s.scene; return k.value(copy); }, doc.c_str());
+        keyword.c_str(), [f](const SceneInputs& s) { return f->value(s.scene); }, doc.c_str());
   }
   scene.def_property_readonly("material", [](const SceneInputs& s) { return s.covering_material; })
       .def_property_readonly("thresholds", [](const SceneInputs& s) {
         return s.scene.model.thresholds == ThresholdReading::kLiteral ? "literal" : "cumulative";
       })
+      .def_property_readonly("head_area", [](const SceneInputs& s) { return std::string(ToString(s.scene.head.area)); })
       .def_property_readonly("laceration_limit", [](const SceneInputs& s) { return s.limits.laceration_tensile_stress_Pa; })
       .def_property_readonly("contusion_limit", [](const SceneInputs& s) { return s.limits.contusion_energy_density_J_per_m2; })
       .def_property_readonly("safety_factor", [](const SceneInputs& s) { return s.safety_factor; })
@@ -862,6 +702,7 @@ void RegisterBodyRegions(py::module_& m);  // body_regions.cpp
 void RegisterBodyContact(py::module_& m);  // body_contact.cpp
 void BindAudit(py::module_& m);            // audit_bindings.cpp
 void BindReport(py::module_& m);           // report_bindings.cpp
+void BindSweep(py::module_& m);            // sweep_bindings.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -869,7 +710,6 @@ PYBIND11_MODULE(_covopt, m) {
   // std::invalid_argument becomes ValueError.
   covopt::python::BindScene(m);
   m.def("simulate", &covopt::python::Simulate);
-  m.def("sweep", &covopt::python::SweepGrid, py::arg("x"), py::arg("y"), py::arg("scene"), py::arg("threads"));
   m.def("optimize", &covopt::python::Optimize);
   m.def("materials", &covopt::python::Materials);
   m.def("material", &covopt::python::Material, py::arg("name"));
@@ -882,4 +722,5 @@ PYBIND11_MODULE(_covopt, m) {
   covopt::python::RegisterBodyContact(m);
   covopt::python::BindAudit(m);
   covopt::python::BindReport(m);
+  covopt::python::BindSweep(m);
 }

@@ -146,12 +146,15 @@ py::object UncertainSimulation(const SceneInputs& scene, const py::kwargs& kwarg
   optim::WorstCaseOptions worst_options;
   worst_options.limits = b.scene.limits;
   worst_options.safety_factor = b.scene.safety_factor;
+  // The material's strength: a crushed covering fails the worst case (docs/model.md §12).
+  worst_options.compressive_strength_Pa = b.scene.CrushCheck().compressive_strength_Pa;
   std::optional<optim::InjuryProbabilityOptions> sampling;
   if (sample) {
     sampling = ReadSampling(kwargs);
     if (!sampling) throw std::invalid_argument("injury_probability() needs samples=N");
     sampling->limits = b.scene.limits;
     sampling->safety_factor = b.scene.safety_factor;
+    sampling->compressive_strength_Pa = worst_options.compressive_strength_Pa;
   }
   report::SimulationReport impact;
   optim::WorstCase worst;

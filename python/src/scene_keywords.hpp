@@ -74,6 +74,10 @@ optim::OracleOptions ReadOracleKeywords(const pybind11::kwargs& kwargs, const Sc
 /// names its flags (module.cpp).
 std::vector<std::string> InputWarnings(const SceneInputs& inputs);
 
+/// InputWarnings(inputs), then the covering's crush notes not among them (the default covering
+/// is in both): the warnings the CLI's speed-limit, robot --trajectory and audit print.
+std::vector<std::string> InputAndCrushWarnings(const SceneInputs& inputs);
+
 /// One sweep axis from Python, (quantity, values), for `keyword` ("x" or "y") (module.cpp).
 /// @throws std::invalid_argument naming the keyword.
 SweepAxis ReadAxis(const pybind11::handle& axis, const char* keyword);

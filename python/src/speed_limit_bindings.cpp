@@ -86,7 +86,7 @@ py::dict OneLimit(SpeedLimitQuantity quantity, const SceneInputs& inputs, const 
   const double value = by_speed ? inputs.scene.robot.mass_kg : inputs.scene.robot.speed_m_per_s;
   const optim::SpeedLimitCovering covering{inputs.scene, inputs.covering_material, options};
   const SpeedLimitRow row = Compute(quantity, {&covering, 1}, {&value, 1}, inputs).front();
-  const std::vector<std::string> notes = inputs.CrushCheck().notes;
+  const std::vector<std::string> notes = InputAndCrushWarnings(inputs);  // as the CLI's
   const py::dict table = JsonToPython(report::SpeedLimitJson(quantity, inputs.scene, options, {&row, 1}, notes, -1));
   py::dict result = py::list(table["rows"])[0].cast<py::dict>();
   result["message"] = by_speed ? row.speed_limit.message : row.mass_limit.message;
@@ -148,7 +148,7 @@ py::dict SpeedLimitTable(const SceneInputs& scene, const py::kwargs& kwargs) {
     if (name) change["material"] = *name;
     const SceneInputs inputs = scene.With(change);
     options = SpeedLimitOptionsFrom(inputs, kwargs);
-    for (std::string& note : inputs.CrushCheck().notes) {
+    for (std::string& note : InputAndCrushWarnings(inputs)) {
       if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(std::move(note));
     }
     coverings.push_back({inputs.scene, inputs.covering_material, options});

@@ -63,7 +63,6 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
                            const std::optional<std::string>& urdf_text, bool ignore_joint_limits,
                            const py::tuple& payload, const SceneInputs& inputs, const py::kwargs& kwargs) {
   RefuseSampleKeywords(inputs);
-  const optim::CoveringCrushCheck crush = inputs.CrushCheck();
   const optim::TrajectoryCheckOptions options = TrajectoryCheckOptionsFrom(inputs, kwargs);
   const robot::ContactMotionResult motion =
       ReadContactMotion(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, PayloadFrom(payload));
@@ -80,7 +79,7 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
   report::TrajectoryChartInput chart{check, inputs.scene, options.limit, TrajectoryName(trajectory), tip};
   return WithReportCharts(
       JsonToPython(report::TrajectoryCheckJson(check, motion, inputs.scene, inputs.covering_material, options.limit,
-                                               crush.notes, -1)),
+                                               InputAndCrushWarnings(inputs), -1)),
       [chart = std::move(chart)] { return std::vector{report::TrajectoryChart(chart)}; });
 }
 

@@ -247,7 +247,7 @@ def test_with_a_covering_the_bare_column_is_the_force_s_alone_with_a_warning():
      "head_mass: body_region='chest' does not read it"),
     (lambda: covopt.simulate(Scene(), contact="clamped"), "contact applies to an ISO/TS 15066 body region"),
     (lambda: covopt.simulate(Scene(), body_region="chest", contact_area="5m2"),
-     "contact_area must be in [1e-06, 1] m2"),
+     "contact_area must be in [1 mm², 1 m²]"),
     (lambda: covopt.simulate(Scene(), body_region="chest", contact_area="1 parsec"), "contact_area"),
     (lambda: covopt.simulate(Scene(), body_region="chest", contact_area=[1e-4]), "contact_area: expected a number"),
     (lambda: covopt.simulate(Scene(robot_mass=10, speed=0.5, **BARE), body_region="chest"),

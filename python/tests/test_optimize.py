@@ -44,7 +44,7 @@ def test_optimize_returns_the_cli_json_object(cli_json, kwargs, flags):
 
 def test_the_criterion_names_every_part_and_each_design_its_governing_ratio():
     answer = covopt.optimize()
-    assert answer.criterion.parts == ["laceration", "contusion", "full-compression", "crush"]
+    assert answer.criterion.parts == ["laceration", "contusion", "fracture", "full-compression", "crush"]
     assert "A.3.2" in answer.scope[1]
     for c in answer.candidates:
         ratios = {"laceration": c.laceration_ratio, "contusion": c.contusion_ratio,

@@ -35,6 +35,9 @@ SCENES = [
      ["--laceration-limit", "2MPa", "--contusion-limit", "3J/cm2"]),
     ({"method": "cvode", "rtol": 1e-9}, ["--method", "cvode", "--rtol", "1e-9"]),
     ({"method": "arkode-erk54", "speed": 3.0}, ["--method", "arkode-erk54", "--speed", "3m/s"]),
+    ({"robot_mass": 5.145, "robot_radius": "60mm", "speed": 2.3, "covering_thickness": 0.0, "head_area": "nasal"},
+     ["--robot-mass", "5.145kg", "--robot-radius", "60mm", "--speed", "2.3m/s", "--covering-thickness", "0",
+      "--head-area", "nasal"]),
 ]
 
 
@@ -137,6 +140,8 @@ def test_bad_input_is_a_value_error_with_the_clis_message(cli):
     ({"covering_thickness": [1]}, ["covering_thickness: expected a number"]),
     ({"thresholds": "paper"}, ["thresholds", "'cumulative' or 'literal'", "paper"]),
     ({"safety_factor": 0.5}, ["safety_factor must be in [1, 100]", "0.5"]),
+    ({"head_area": "cheek"}, ["head_area must be one of frontal, temporo-parietal, nasal", '"cheek"']),
+    ({"head_area": 3}, ["head_area must be one of frontal", "(got 3)"]),
     ({"method": "euler"}, ["method: expected exact, cvode or one of", "euler"]),
     ({"method": "exact", "history": True}, ["method='exact' computes no time history"]),
     ({"rtol": 1e-6}, ["rtol applies to the time path only"]),
@@ -150,6 +155,19 @@ def test_bad_input_names_the_keyword_and_the_value(kwargs, words):
         call(covopt.simulate, **kwargs)
     for word in words:
         assert word in str(error.value)
+
+
+def test_the_head_area_sets_the_fracture_verdict():
+    # The 2.8 kN bare hit: below the forehead's 3114 N, over the nose's 450 N.
+    trial = dict(robot_mass=5.145, robot_radius="60mm", speed=2.3, covering_thickness=0.0)
+    forehead = covopt.simulate(covopt.Scene(**trial)).to_dict()
+    nose = covopt.simulate(covopt.Scene(head_area="nasal", **trial)).to_dict()
+    assert forehead["fracture"]["area"] == "frontal" and forehead["fracture"]["safe"]
+    assert forehead["safe"]
+    assert nose["fracture"]["limit_N"] == 450.0
+    assert nose["fracture"]["value_N"] == forehead["fracture"]["value_N"] > 2700.0
+    assert not nose["fracture"]["safe"] and not nose["safe"]
+    assert nose["laceration"]["safe"] and nose["contusion"]["safe"]
 
 
 def test_an_unknown_keyword_is_a_type_error():

@@ -31,6 +31,7 @@ Style StyleOf(optim::LimitingCriterion c) {
     case optim::LimitingCriterion::kContusion: return {"#000000", 2};
     case optim::LimitingCriterion::kFullCompression: return {"#8e44ad", 4};
     case optim::LimitingCriterion::kCrush: return {"#d35400", 5};
+    case optim::LimitingCriterion::kFracture: return {"#c0392b", 3};
     case optim::LimitingCriterion::kNone: break;
   }
   return {"#555555", 1};

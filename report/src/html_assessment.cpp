@@ -21,6 +21,7 @@ constexpr std::string_view kPark =
 constexpr std::string_view kCompressionSource =
     "covopt's criterion (docs/model.md §6): at the peak the covering is not fully compressed, i.e. "
     "it uses at most 1/SF of its own travel (80 % of its thickness, the paper's convention)";
+constexpr std::string_view kFractureSource = "published skull and facial fracture forces (docs/model.md §7.1)";
 constexpr std::string_view kCrushSource =
     "the material's compressive strength at yield or 10 % strain, from its datasheet (docs/model.md §12; "
     "see Materials below)";
@@ -60,6 +61,9 @@ void AddHeadCriteria(Assessment& a, const Json& limits_holder, bool with_compres
                         lac ? Reading(*lac, {"Pa", "MPa", 1e-6}) : "1 MPa", std::string(kPark)});
   a.criteria.push_back({"head: contusion (peak energy density)",
                         con ? Reading(*con, {"J/m²", "J/cm²", 1e-4}) : "2.52 J/cm²", std::string(kPark)});
+  a.criteria.push_back({"head: fracture (peak force on the struck bone)",
+                        "the struck area's lowest published fracture force (forehead 3114 N)",
+                        std::string(kFractureSource)});
   if (with_compression) {
     a.criteria.push_back({"full compression of the covering", "compression ratio ≤ 1/SF", std::string(kCompressionSource)});
   }
@@ -92,6 +96,7 @@ void AddRatioRows(Assessment& a, const std::string& prefix, const Json& d, doubl
     VerdictRow row;
     row.subject = prefix + criterion;
     row.criterion = criterion == "laceration" || criterion == "contusion" ? "skin injury, Park et al. 2011"
+                    : criterion == "fracture"                             ? std::string(kFractureSource)
                     : criterion == "full compression"                     ? "covopt (docs/model.md §6)"
                                                                           : "material strength (docs/model.md §12)";
     row.value = std::move(value);
@@ -114,6 +119,7 @@ void AddRatioRows(Assessment& a, const std::string& prefix, const Json& d, doubl
   add("laceration_ratio", "laceration", value_of("max_tensile_stress_Pa", mpa), limit_of("laceration_Pa", mpa));
   add("contusion_ratio", "contusion", value_of("max_energy_density_J_per_m2", {"J/m²", "J/cm²", 1e-4}),
       limit_of("contusion_J_per_m2", {"J/m²", "J/cm²", 1e-4}));
+  add("fracture_ratio", "fracture", "", "the struck area's lowest published fracture force");
   add("compression_ratio", "full compression", "", "the covering's travel");
   std::string strength;
   if (const std::optional<double> s = NumberAt(d, "compressive_strength_Pa")) strength = Reading(*s, mpa);
@@ -212,6 +218,11 @@ void AssessHeadSimulation(Assessment& a, const Json& j, const std::string& prefi
                                   {"Pa", "MPa", 1e-6}));
   a.rows.push_back(HeadVerdictRow(prefix + "contusion", "skin injury, Park et al. 2011", j.at("contusion"),
                                   {"J/m²", "J/cm²", 1e-4}));
+  if (const Json* fracture = Find(j, "fracture"); fracture && fracture->is_object()) {
+    VerdictRow row = HeadVerdictRow(prefix + "fracture", std::string(kFractureSource), *fracture, {"N", "N", 1.0});
+    row.note = StringAt(*fracture, "area") + ": " + StringAt(*fracture, "source");
+    a.rows.push_back(std::move(row));
+  }
   if (const Json* crush = Find(j, "crush"); crush && crush->is_object()) {
     a.rows.push_back(HeadVerdictRow(prefix + "crush", "material strength (docs/model.md §12)", *crush, {"Pa", "MPa", 1e-6}));
   }

@@ -63,6 +63,7 @@ ordered_json WorstJson(const optim::UncertaintyBox& box, const optim::WorstCase&
   j["contusion_ratio"] = Number(w.contusion_ratio);
   j["compression_ratio"] = Number(w.compression_ratio);
   j["crush_ratio"] = Number(w.crush_ratio);
+  j["fracture_ratio"] = Number(w.fracture_ratio);
   j["fully_compressed"] = w.fully_compressed;
   j["governing_ratio"] = Number(w.governing_ratio);
   j["binding"] = optim::ToString(w.binding);
@@ -79,8 +80,10 @@ ordered_json Interval(const optim::ProbabilityEstimate& e) { return ordered_json
 
 ordered_json ProbabilityJson(const optim::InjuryProbability& p) {
   const std::pair<const char*, const optim::ProbabilityEstimate*> events[] = {
-      {"laceration", &p.laceration}, {"contusion", &p.contusion}, {"any", &p.any},
-      {"fully_compressed", &p.fully_compressed}, {"inadmissible", &p.inadmissible}};
+      {"laceration", &p.laceration}, {"contusion", &p.contusion},
+      {"fracture", &p.fracture},     {"any", &p.any},
+      {"fully_compressed", &p.fully_compressed}, {"crushed", &p.crushed},
+      {"inadmissible", &p.inadmissible}};
   ordered_json j = {{"samples", p.any.samples}, {"seed", p.seed}};
   ordered_json ci = ordered_json::object(), counts = ordered_json::object();
   for (const auto& [name, estimate] : events) {

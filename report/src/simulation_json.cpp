@@ -8,6 +8,7 @@
 
 #include "covopt/core/impact_model.hpp"
 #include "json_number.hpp"
+#include "limits_json.hpp"
 
 namespace covopt::report {
 namespace {
@@ -37,7 +38,8 @@ Json SceneObject(const Scene& s) {
                {"radius_m", Number(s.head.radius_m)},
                {"torso_mass_kg", MaybeInfinite(s.head.torso_mass_kg, "fixed")},
                {"neck_stiffness_N_per_m", Number(s.head.neck_stiffness_N_per_m)},
-               {"neck_damping_N_s_per_m", Number(s.head.neck_damping_N_s_per_m)}};
+               {"neck_damping_N_s_per_m", Number(s.head.neck_damping_N_s_per_m)},
+               {"area", ToString(s.head.area)}};
   j["scalp"] = {{"youngs_modulus_Pa", Number(s.scalp.youngs_modulus_Pa)},
                 {"poisson_ratio", Number(s.scalp.poisson_ratio)},
                 {"thickness_m", Number(s.scalp.thickness_m)}};
@@ -66,10 +68,10 @@ Json StatisticsObject(const SolverStatistics& st) {
 
 }  // namespace
 
-InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const InjuryLimits& limits,
-                               double safety_factor) noexcept {
-  InjuryAssessment assessment = Assess(peaks, limits);
-  for (InjuryVerdict* verdict : {&assessment.laceration, &assessment.contusion}) {
+InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const InjuryLimits& limits, double safety_factor,
+                               HeadArea area) noexcept {
+  InjuryAssessment assessment = Assess(peaks, limits, area);
+  for (InjuryVerdict* verdict : {&assessment.laceration, &assessment.contusion, &assessment.fracture}) {
     verdict->safe = safety_factor * verdict->ratio <= 1.0;
   }
   return assessment;
@@ -108,6 +110,7 @@ std::string SimulationJson(const SimulationReport& report, int indent) {
                     {"safe", con.safe},
                     {"derated_limit_J_per_m2", Number(con.limit / report.safety_factor)},
                     {"safety_factor", report.safety_factor}};
+  j["fracture"] = internal::FractureJson(report.assessment, report.safety_factor);
   j["crush"] = report.crush ? Json{{"value_Pa", Number(report.crush->value)},
                                     {"limit_Pa", Number(report.crush->limit)},
                                     {"ratio", Number(report.crush->ratio)},

@@ -19,12 +19,12 @@ namespace {
 
 using nlohmann::ordered_json;
 
-constexpr std::array<std::string_view, 8> kSpeedColumns = {
+constexpr std::array<std::string_view, 9> kSpeedColumns = {
     "material", "robot_mass_kg", "max_safe_speed_m_per_s", "limited_by", "laceration_ratio",
-    "contusion_ratio", "compression_ratio", "status"};
-constexpr std::array<std::string_view, 8> kMassColumns = {
+    "contusion_ratio", "fracture_ratio", "compression_ratio", "status"};
+constexpr std::array<std::string_view, 9> kMassColumns = {
     "material", "speed_m_per_s", "max_safe_mass_kg", "limited_by", "laceration_ratio",
-    "contusion_ratio", "compression_ratio", "status"};
+    "contusion_ratio", "fracture_ratio", "compression_ratio", "status"};
 
 /// The parts every row shares, whichever quantity it solves for.
 struct RowAnswer {
@@ -63,6 +63,7 @@ ordered_json RowJson(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
   j["limited_by"] = optim::ToString(a.limited_by);
   j["laceration_ratio"] = internal::Number(a.ratios->laceration_ratio);
   j["contusion_ratio"] = internal::Number(a.ratios->contusion_ratio);
+  j["fracture_ratio"] = internal::Number(a.ratios->fracture_ratio);
   j["compression_ratio"] = internal::Number(a.ratios->compression_ratio);
   j["status"] = optim::ToString(a.status);
   return j;

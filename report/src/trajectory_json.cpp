@@ -17,10 +17,10 @@ namespace {
 
 using nlohmann::ordered_json;
 
-constexpr std::array<std::string_view, 11> kSampleColumns = {
-    "time_s",     "speed_m_per_s",    "reflected_mass_kg", "moving",          "max_safe_speed_m_per_s",
-    "speed_scale", "limited_by",      "laceration_ratio",  "contusion_ratio", "compression_ratio",
-    "safe"};
+constexpr std::array<std::string_view, 12> kSampleColumns = {
+    "time_s",      "speed_m_per_s", "reflected_mass_kg", "moving",         "max_safe_speed_m_per_s",
+    "speed_scale", "limited_by",    "laceration_ratio",  "contusion_ratio", "fracture_ratio",
+    "compression_ratio", "safe"};
 
 ordered_json MassValue(double kg) { return std::isinf(kg) ? ordered_json("fixed") : internal::Number(kg); }
 
@@ -41,6 +41,7 @@ ordered_json SampleJson(const optim::SampleVerdict& v) {
   j["limited_by"] = optim::ToString(v.speed_limit.limited_by);
   j["laceration_ratio"] = ratio(v.laceration_ratio);
   j["contusion_ratio"] = ratio(v.contusion_ratio);
+  j["fracture_ratio"] = ratio(v.fracture_ratio);
   j["compression_ratio"] = ratio(v.compression_ratio);
   j["safe"] = failed ? ordered_json(nullptr) : ordered_json(v.safe);
   return j;

@@ -48,6 +48,7 @@ std::vector<std::string_view> KeysOf(std::string_view table) {
   }
   if (table == "covering") keys.push_back("material");
   if (table == "model") keys.push_back("thresholds");
+  if (table == "head") keys.push_back("area");
   if (table == "limits") {
     for (const LimitField& field : LimitFields()) keys.push_back(field.key);
   }
@@ -79,6 +80,29 @@ struct Reading {
 /// Refuses what only SceneFileExtras can hold when the caller gave none.
 [[noreturn]] void RefuseExtra(std::string_view where, std::string_view name) {
   throw std::invalid_argument(fmt::format("{}: {} is not read by this command; remove it", where, name));
+}
+
+/// The keys that name a choice: model.thresholds and head.area. False for any other key.
+bool ApplyNamedChoice(std::string_view table_name, std::string_view key_name, const toml::node& node,
+                      const std::string& where, Reading& reading) {
+  const bool thresholds = table_name == "model" && key_name == "thresholds";
+  const bool area = table_name == "head" && key_name == "area";
+  if (!thresholds && !area) return false;
+  const std::string name = fmt::format("{}.{}", table_name, key_name);
+  if (!node.is_string()) {
+    throw std::invalid_argument(fmt::format("{}: {}: expected a string, {}, got {}", where, name,
+                                            thresholds ? "\"cumulative\" or \"literal\""
+                                                       : "one of " + HeadAreaChoices(),
+                                            TypeName(node)));
+  }
+  try {
+    if (thresholds) reading.scene.model.thresholds = ParseThresholds(**node.as_string(), name);
+    if (area) reading.scene.head.area = ParseHeadAreaOrThrow(name, **node.as_string());
+    reading.set_fields.push_back(name);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format("{}: {}", where, e.what()));
+  }
+  return true;
 }
 
 void ApplyLimits(const toml::table& table, std::string_view source, bool extras_wanted,
@@ -120,20 +144,7 @@ void ApplyTable(std::string_view table_name, const toml::table& table, std::stri
   for (const auto& [key, node] : table) {
     const std::string_view key_name = key.str();
     const std::string where = Where(source, node.source());
-    if (table_name == "model" && key_name == "thresholds") {
-      if (!node.is_string()) {
-        throw std::invalid_argument(fmt::format(
-            "{}: model.thresholds: expected a string, \"cumulative\" or \"literal\", got {}",
-            where, TypeName(node)));
-      }
-      try {
-        reading.scene.model.thresholds = ParseThresholds(**node.as_string(), "model.thresholds");
-        reading.set_fields.emplace_back("model.thresholds");
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(fmt::format("{}: {}", where, e.what()));
-      }
-      continue;
-    }
+    if (ApplyNamedChoice(table_name, key_name, node, where, reading)) continue;
     if (table_name == "covering" && key_name == "material") {
       if (!extras_wanted) RefuseExtra(where, "covering.material");
       if (!node.is_string()) {

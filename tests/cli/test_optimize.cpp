@@ -159,7 +159,7 @@ json OptimizeJson(std::vector<std::string> args) {
 
 TEST_CASE("optimize never recommends a covering that bottoms out unless asked to (2 kg robot)", "[optimize]") {
   const json strict = OptimizeJson({"--robot-mass", "2kg"});
-  CHECK(strict["criterion"]["name"] == "laceration+contusion+full-compression+crush");
+  CHECK(strict["criterion"]["name"] == "laceration+contusion+fracture+full-compression+crush");
   CHECK(strict["bare_robot"]["safe"] == false);
   REQUIRE(strict["recommendation"].is_object());
   CHECK(strict["recommendation"]["fully_compressed"] == false);
@@ -170,7 +170,7 @@ TEST_CASE("optimize never recommends a covering that bottoms out unless asked to
   }
   // The paper's criterion takes the 0.5 mm sliver of sponge rubber that is fully compressed.
   const json paper = OptimizeJson({"--robot-mass", "2kg", "--allow-full-compression"});
-  CHECK(paper["criterion"]["name"] == "laceration+contusion+crush");
+  CHECK(paper["criterion"]["name"] == "laceration+contusion+fracture+crush");
   CHECK(paper["recommendation"]["thickness_m"].get<double>() <= 0.5e-3);
   CHECK(paper["recommendation"]["fully_compressed"] == true);
   CHECK(paper["continuous_optimum"]["fully_compressed"] == true);
@@ -185,10 +185,12 @@ TEST_CASE("optimize names its criterion in the table and moves the paper's optim
   const auto run = Run({"optimize"});
   REQUIRE(run.exit_code == 0);
   CHECK_THAT(run.out, Catch::Contains("Criterion  no laceration and no contusion (Park et al. 2011's skin limits), "
-                                      "the covering not fully compressed, the covering not crushed"));
+                                      "no fracture (the peak force within the struck area's lowest published "
+                                      "fracture force), the covering not fully compressed, the covering not crushed"));
   const auto paper = Run({"optimize", "--allow-full-compression"});
   CHECK_THAT(paper.out, Catch::Contains("Criterion  no laceration and no contusion (Park et al. 2011's skin limits), "
-                                        "the covering not crushed"));
+                                        "no fracture (the peak force within the struck area's lowest published "
+                                        "fracture force), the covering not crushed"));
   const json j = OptimizeJson({});
   CHECK(j["continuous_optimum"]["thickness_m"].get<double>() == Approx(15.06e-3).margin(0.01e-3));
   CHECK(j["continuous_optimum"]["youngs_modulus_Pa"].get<double>() == Approx(16.1e6).epsilon(0.01));

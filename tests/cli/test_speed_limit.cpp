@@ -61,7 +61,8 @@ TEST_CASE("speed-limit prints the library's max safe speed for the paper's scene
   const covopt::optim::SpeedLimit expected = covopt::optim::MaxSafeSpeed(covopt::Scene{});
   CHECK(run.out.find(fmt::format("{:.4g} m/s", expected.max_safe_speed_m_per_s)) != std::string::npos);
   CHECK(run.out.find("contusion") != std::string::npos);
-  CHECK(run.out.find("Criterion  no laceration and no contusion (Park et al. 2011's skin limits), the covering not "
+  CHECK(run.out.find("Criterion  no laceration and no contusion (Park et al. 2011's skin limits), no fracture (the "
+                     "peak force within the struck area's lowest published fracture force), the covering not "
                      "fully compressed") != std::string::npos);
   // No covering was given: the default one is assumed, and said so; so is the head's scope.
   CHECK(run.out.find("no covering given: the default is assumed") != std::string::npos);
@@ -72,7 +73,7 @@ TEST_CASE("speed-limit --json: one row per mass of a range, each the library's a
   const json j = JsonOf(Run({"speed-limit", "--robot-mass", "0.5kg..50kg:log:5,fixed", "--covering-thickness",
                              "20mm", "--covering-modulus", "16MPa", "--json"}));
   CHECK(j["solve_for"] == "speed");
-  CHECK(j["criterion"]["parts"] == json::array({"laceration", "contusion", "full-compression", "crush"}));
+  CHECK(j["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "full-compression", "crush"}));
   CHECK(j["search_limit"]["max_speed_m_per_s"] == 100.0);
   CHECK(j["scene"]["robot"].count("speed_m_per_s") == 0);
   CHECK(j["scene"]["robot"].count("mass_kg") == 0);  // the rows vary it
@@ -137,7 +138,7 @@ TEST_CASE("speed-limit --csv writes the JSON rows' columns, and '-' prints them"
   REQUIRE(lines.size() == 4);
   CHECK(lines[0] ==
         "material,robot_mass_kg,max_safe_speed_m_per_s,limited_by,laceration_ratio,contusion_ratio,"
-        "compression_ratio,status");
+        "fracture_ratio,compression_ratio,status");
   CHECK(lines[3].rfind("polystyrene foam 27.6,fixed,", 0) == 0);
   for (std::size_t i = 0; i < 3; ++i) {
     const json& row = j["rows"][i];
@@ -214,7 +215,7 @@ TEST_CASE("speed-limit reads the scene file, limits and the criterion as the oth
   const json paper = JsonOf(Run({"speed-limit", "--covering-thickness", "10mm", "--covering-modulus", "2MPa",
                                  "--allow-full-compression", "--json"}));
   CHECK(strict["rows"][0]["limited_by"] == "full-compression");
-  CHECK(paper["criterion"]["parts"] == json::array({"laceration", "contusion", "crush"}));
+  CHECK(paper["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "crush"}));
   CHECK(paper["rows"][0]["max_safe_speed_m_per_s"].get<double>() >
         strict["rows"][0]["max_safe_speed_m_per_s"].get<double>());
   const json derated = JsonOf(Run({"speed-limit", "--safety-factor", "2", "--json"}));

@@ -103,7 +103,7 @@ TEST_CASE("robot --trajectory --json is the library's check of the same trajecto
   REQUIRE(check.worst_sample.has_value());
   CHECK(j["worst_sample"]["index"] == *check.worst_sample);
   CHECK(j["status"] == "safe");
-  CHECK(j["criterion"]["parts"] == json::array({"laceration", "contusion", "full-compression", "crush"}));
+  CHECK(j["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "full-compression", "crush"}));
   CHECK(j["joint_names"].size() == 7);
   CHECK(j["joint_names"][0] == "fr3_joint1");
   CHECK(j["scene"]["robot"].count("mass_kg") == 0);
@@ -151,7 +151,7 @@ TEST_CASE("robot --trajectory: --json, --csv and the table agree", "[trajectory]
   REQUIRE(lines.size() == 102);
   CHECK(lines[0] ==
         "time_s,speed_m_per_s,reflected_mass_kg,moving,max_safe_speed_m_per_s,speed_scale,limited_by,"
-        "laceration_ratio,contusion_ratio,compression_ratio,safe");
+        "laceration_ratio,contusion_ratio,fracture_ratio,compression_ratio,safe");
   const auto columns = covopt::report::TrajectorySampleColumns();
   for (std::size_t i = 0; i < 101; ++i) {
     std::vector<std::string> cells;
@@ -218,7 +218,7 @@ TEST_CASE("robot --trajectory: the covering, material, safety factor and criteri
   CHECK(derated["safe_speed_scale"].get<double>() < covered);
   CHECK(derated["warnings"].size() == 2);  // the safety factor's input warning, the assumed covering
   const json paper = JsonOf(Run(Fr3(kPick, {"--allow-full-compression", "--json"})));
-  CHECK(paper["criterion"]["parts"] == json::array({"laceration", "contusion", "crush"}));
+  CHECK(paper["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "crush"}));
 
   const json material = JsonOf(Run(Fr3(kPick, {"--material", "XPS Foamular 250", "--json"})));
   CHECK(material["scene"]["covering"]["material"] == "XPS Foamular 250");

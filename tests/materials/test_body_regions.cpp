@@ -232,8 +232,8 @@ TEST_CASE("body regions: transient contact with the skull, forehead and face is 
         BodyRegionErrorOf([&] { Table().Limits(region, "", ContactType::kTransient); });
     CHECK_THAT(message, Contains("ISO/TS 15066:2016 A.3.2"));
     CHECK_THAT(message, Contains("transient contact with the " + std::string(region)));
-    CHECK_THAT(message, Contains("--contact clamped"));
-    CHECK_THAT(message, Contains("--body-region head"));
+    CHECK_THAT(message, Contains("body.contact=clamped"));
+    CHECK_THAT(message, Contains("body.region=head"));
     CHECK(message.find('\n') == std::string::npos);
     // Clamped is allowed, at the quasi-static limits.
     CHECK_NOTHROW(Table().Limits(region, "", ContactType::kClamped));

@@ -64,7 +64,7 @@ class BruteForce {
     const bool reserve_used = peaks.max_penetration_m > t1 + 0.8 * thickness_m / c_.safety_factor;
     if (!c_.allow_full_compression && (peaks.fully_compressed || reserve_used)) return kInf;
     const InjuryAssessment a = Assess(peaks);
-    return c_.safety_factor * std::max(a.laceration.ratio, a.contusion.ratio);
+    return c_.safety_factor * std::max({a.laceration.ratio, a.contusion.ratio, a.fracture.ratio});
   }
 
   /// min over log10 E_c in [5, 9] of Penalised.

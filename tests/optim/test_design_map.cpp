@@ -75,10 +75,10 @@ TEST_CASE("the design map scores the recommendation as the optimiser did, and it
       CHECK(map.modulus_Pa[j] / map.modulus_Pa[j - 1] == Approx(map.modulus_Pa[j + 1] / map.modulus_Pa[j]));
     }
 
-    // The default rule: laceration, contusion, full compression, and crush only for a
-    // material that crushes.
+    // The default rule: laceration, contusion, fracture, full compression, and crush only for
+    // a material that crushes.
     const bool crushes = rec.material.crush_behaviour == materials::CrushBehaviour::kCrushes;
-    CHECK(map.criteria.size() == (crushes ? 4u : 3u));
+    CHECK(map.criteria.size() == (crushes ? 5u : 4u));
 
     // Contour consistency: on the safe side of every contour <=> admissible by the optimiser's
     // own check, at every grid point; admissible points exist on both sides of the chosen one.
@@ -156,7 +156,7 @@ TEST_CASE("without catalog materials the design map marks the continuous optimum
   CHECK(map.poisson_ratio == request.options.covering_poisson_ratio);
   CHECK(map.chosen_score->contusion_ratio == Approx(result.continuous.score.contusion_ratio).epsilon(1e-12));
   CHECK(map.chosen_score->laceration_ratio == Approx(result.continuous.score.laceration_ratio).epsilon(1e-12));
-  CHECK(map.criteria.size() == 3);  // no material: no crush criterion
+  CHECK(map.criteria.size() == 4);  // no material: no crush criterion
 
   DesignRequest slow;
   slow.scene.robot.speed_m_per_s = 0.3;

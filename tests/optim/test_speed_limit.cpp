@@ -35,7 +35,7 @@ using covopt::optim::SpeedLimitOptions;
 using covopt::optim::SpeedLimitStatus;
 
 struct Ratios {
-  double laceration = 0.0, contusion = 0.0, compression = 0.0;
+  double laceration = 0.0, contusion = 0.0, compression = 0.0, fracture = 0.0;
   bool fully_compressed = false;
 };
 
@@ -46,6 +46,7 @@ Ratios RatiosOf(const Scene& scene, const SpeedLimitOptions& options) {
   Ratios r;
   r.laceration = peaks.max_tensile_stress_Pa / options.limits.laceration_tensile_stress_Pa;
   r.contusion = peaks.max_energy_density_J_per_m2 / options.limits.contusion_energy_density_J_per_m2;
+  r.fracture = peaks.peak_force_N / covopt::FractureForceOf(scene.head.area).force_N;  // docs/model.md §7.1
   // The covering's own travel used (docs/model.md §6): from the start of phase 2 at 0.8 b_s,
   // or from 0 where the literal reading has no phase 2 (0.8 b_c <= 0.8 b_s).
   if (model.has_covering()) {
@@ -61,7 +62,7 @@ Ratios RatiosOf(const Scene& scene, const SpeedLimitOptions& options) {
 
 bool Safe(const Scene& scene, const SpeedLimitOptions& options) {
   const Ratios r = RatiosOf(scene, options);
-  return std::max(r.laceration, r.contusion) * options.safety_factor <= 1.0 &&
+  return std::max({r.laceration, r.contusion, r.fracture}) * options.safety_factor <= 1.0 &&
          (options.allow_full_compression ||
           (!r.fully_compressed && r.compression * options.safety_factor <= 1.0));
 }
@@ -214,7 +215,7 @@ TEST_CASE("every ratio is non-decreasing in the impact speed and in the reflecte
 }
 
 TEST_CASE("at the limit the binding ratio is 1/safety factor and none is above", "[speed_limit]") {
-  int seen[5] = {0, 0, 0, 0, 0};
+  int seen[6] = {0, 0, 0, 0, 0, 0};
   for (const Case& c : VariedCases()) {
     INFO(c.name);
     const SpeedLimit limit = MaxSafeSpeed(c.scene, c.options);
@@ -224,6 +225,7 @@ TEST_CASE("at the limit the binding ratio is 1/safety factor and none is above",
     const auto& r = limit.at_limit;
     CHECK(r.laceration_ratio * s <= 1.0);
     CHECK(r.contusion_ratio * s <= 1.0);
+    CHECK(r.fracture_ratio * s <= 1.0 + 1e-9);
     if (!c.options.allow_full_compression && c.scene.covering.thickness_m > 0) {
       CHECK(r.compression_ratio * s <= 1.0 + 1e-9);
     }
@@ -242,6 +244,9 @@ TEST_CASE("at the limit the binding ratio is 1/safety factor and none is above",
       case LimitingCriterion::kCrush:
         FAIL("no strength was given: crushing cannot limit");
         break;
+      case LimitingCriterion::kFracture:
+        CHECK(r.fracture_ratio * s == Approx(1.0).epsilon(1e-9));
+        break;
       case LimitingCriterion::kNone:
         FAIL("a limited answer names its criterion");
     }
@@ -251,6 +256,7 @@ TEST_CASE("at the limit the binding ratio is 1/safety factor and none is above",
     const Ratios r_above = RatiosOf(above, c.options);
     if (limit.limited_by == LimitingCriterion::kLaceration) CHECK(r_above.laceration * s > 1.0);
     if (limit.limited_by == LimitingCriterion::kContusion) CHECK(r_above.contusion * s > 1.0);
+    if (limit.limited_by == LimitingCriterion::kFracture) CHECK(r_above.fracture * s > 1.0);
     if (limit.limited_by == LimitingCriterion::kFullCompression) {
       CHECK((r_above.fully_compressed || r_above.compression * s > 1.0));
     }

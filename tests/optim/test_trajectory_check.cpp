@@ -157,6 +157,7 @@ TEST_CASE("trajectory check: a scale set by the 100 m/s ceiling is flagged as a 
   options.limit.allow_full_compression = true;
   options.limit.limits.laceration_tensile_stress_Pa = 1e12;
   options.limit.limits.contusion_energy_density_J_per_m2 = 1e12;
+  options.limit.limits.fracture_force_N = 1e12;  // no fracture either (docs/model.md §7.1)
   const TrajectoryCheck check = CheckTrajectory(Scene{}, SampleMotion(), options);
   CHECK(check.status == TrajectoryCheckStatus::kSafe);
   REQUIRE(check.warnings.size() == 1);

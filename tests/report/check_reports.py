@@ -145,14 +145,14 @@ def max_of(values, what):
     return max(values)
 
 
-HEAD_RATIOS = ("laceration_ratio", "contusion_ratio", "compression_ratio", "crush_ratio")
+HEAD_RATIOS = ("laceration_ratio", "contusion_ratio", "fracture_ratio", "compression_ratio", "crush_ratio")
 
 
 def verdict_simulate(j):
     safe = j["safe"]
-    ratios = numbers(*[j[k].get("ratio") for k in ("laceration", "contusion", "crush")
+    ratios = numbers(*[j[k].get("ratio") for k in ("laceration", "contusion", "fracture", "crush")
                        if isinstance(j.get(k), dict)])
-    return safe, max_of(ratios, "simulate's laceration, contusion and crush verdicts")
+    return safe, max_of(ratios, "simulate's laceration, contusion, fracture and crush verdicts")
 
 
 def verdict_optimize(j):

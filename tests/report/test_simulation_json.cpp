@@ -35,7 +35,7 @@ TEST_CASE("SimulationJson has every documented key, in SI with the unit in its n
        {"max_penetration_m", "peak_force_N", "contact_duration_s", "time_of_max_compression_s",
         "max_compressive_stress_Pa", "max_tensile_stress_Pa", "max_energy_density_J_per_m2",
         "rebound_speed_m_per_s", "coefficient_of_restitution", "phase_at_max", "phase_at_max_name",
-        "scalp_fully_compressed", "fully_compressed", "laceration", "contusion", "crush", "safe",
+        "scalp_fully_compressed", "fully_compressed", "laceration", "contusion", "fracture", "crush", "safe",
         "scope", "method", "solver", "scene", "warnings", "warning_codes"}) {
     INFO(key);
     CHECK(j.contains(key));

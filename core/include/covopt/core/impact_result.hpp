@@ -67,21 +67,26 @@ ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
 
 /// One injury criterion judged against its limit.
 struct InjuryVerdict {
-  double value = 0.0;  ///< the model's peak (Pa for laceration, J/m² for contusion)
+  double value = 0.0;  ///< the model's peak (Pa for laceration, J/m² for contusion, N for fracture)
   double limit = 0.0;  ///< the limit, same unit
   double ratio = 0.0;  ///< value / limit [-]; <= 1 is safe
   bool safe = true;    ///< ratio <= 1
 };
 
-/// Laceration (tensile stress) and contusion (energy density) verdicts for peaks.
+/// Laceration (tensile stress) and contusion (energy density) verdicts for peaks, and the
+/// fracture verdict of the bone under the struck area (docs/model.md §7.1).
 struct InjuryAssessment {
   InjuryVerdict laceration;  ///< σ_t,max against the laceration limit [Pa]
   InjuryVerdict contusion;   ///< e_A,max against the contusion limit [J/m²]
-  bool safe() const noexcept { return laceration.safe && contusion.safe; }
+  /// F_max against the struck area's lowest published fracture force [N] (FractureForceOf).
+  InjuryVerdict fracture;
+  HeadArea area = HeadArea::kFrontal;  ///< the struck area the fracture verdict is for
+  bool safe() const noexcept { return laceration.safe && contusion.safe && fracture.safe; }
 };
 
-/// Judges peaks against limits.
-InjuryAssessment Assess(const ImpactPeaks& peaks, const InjuryLimits& limits = {}) noexcept;
+/// Judges peaks against limits, and the peak force against the fracture force of `area`.
+InjuryAssessment Assess(const ImpactPeaks& peaks, const InjuryLimits& limits = {},
+                        HeadArea area = HeadArea::kFrontal) noexcept;
 
 /// Which path produced a result: the exact path, or one SUNDIALS integrator.
 enum class ComputationMethod {

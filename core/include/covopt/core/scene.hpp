@@ -11,6 +11,8 @@
 #include <limits>
 #include <string_view>
 
+#include "covopt/core/head_area.hpp"
+
 namespace covopt {
 
 /// Use as a mass [kg] for a body that does not move (a fixed robot/plate, a fixed head).
@@ -90,6 +92,10 @@ struct HeadSpec {
   /// The neck's damping c_n [N·s/m], in [0, 1e7]; needs a torso; at most μ_n / 1 µs (μ_n the
   /// reduced mass of head and torso), the time floor of the damper's relaxation.
   double neck_damping_N_s_per_m = 0.0;
+  /// Where the robot strikes (docs/model.md §7.1): the bone whose lowest published fracture
+  /// force the peak force is judged against (Assess). Default: the forehead, Park et al.'s
+  /// site. It does not change the impact's mechanics.
+  HeadArea area = HeadArea::kFrontal;
   /// The head hangs on a neck (a torso mass is given).
   bool has_neck() const noexcept { return torso_mass_kg != 0.0; }
 };
@@ -155,10 +161,19 @@ struct InjuryLimits {
   double laceration_tensile_stress_Pa = 1.0e6;
   /// Contusion: maximum energy density, 2.52 J/cm² = 25 200 J/m² [J/m²].
   double contusion_energy_density_J_per_m2 = 25200.0;
+  /// Fracture: the peak force the struck bone takes [N], replacing the struck area's lowest
+  /// published fracture force (FractureForceOf, docs/model.md §7.1) when > 0; 0 (default): the
+  /// published value. 0 or in [1, 1e13] N.
+  double fracture_force_N = 0.0;
 };
 
+/// The fracture force [N] the peak force is judged against: limits.fracture_force_N when
+/// given (> 0), else the lowest published fracture force of `area`.
+double FractureLimit(const InjuryLimits& limits, HeadArea area) noexcept;
+
 /// Checks injury limits against their floors (physical_floors.hpp): laceration in
-/// [1e3, 1e13] Pa, contusion in [1, 1e13] J/m², so that every ratio to them is finite.
+/// [1e3, 1e13] Pa, contusion in [1, 1e13] J/m², the fracture force 0 or in [1, 1e13] N, so
+/// that every ratio to them is finite.
 /// @throws std::invalid_argument naming the field, the value and the range, e.g.
 ///         "limits.laceration_tensile_stress_Pa must be in [1000, 1e+13] Pa (got 5e-324)".
 void CheckInjuryLimits(const InjuryLimits& limits);

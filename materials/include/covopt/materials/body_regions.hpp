@@ -106,8 +106,10 @@ class BodyRegionTable {
   /// pressure) under `contact`.
   /// @throws BodyRegionError for an unknown region or area (naming the region's areas), or
   ///         for transient contact where the standard forbids it: "ISO/TS 15066:2016 A.3.2
-  ///         does not permit transient contact with the face; use --contact clamped, or judge
-  ///         the head with Park et al.'s skin model (--body-region head)".
+  ///         does not permit transient contact with the face; use body.contact=clamped, or judge
+  ///         the head with Park et al.'s skin model (body.region=head)". The messages name the
+  ///         inputs by field (body.region, body.contact): each front end spells them its way
+  ///         (covopt/scene_file/spelling.hpp).
   BodyLimits Limits(std::string_view region_name, std::string_view area_name,
                     ContactType contact) const;
   /// Every (region, area) pair the standard permits under `contact`, in table order; the

@@ -62,7 +62,7 @@ struct DesignMap {
   /// scores[j * thickness_m.size() + i] at (thickness_m[i], modulus_Pa[j]).
   std::vector<DesignScore> scores;
   /// The criteria that count under the rule at these points, in the order laceration,
-  /// contusion, full compression (criterion no-full-compression), crush (a material of known
+  /// contusion, fracture (docs/model.md §7.1), full compression (criterion no-full-compression), crush (a material of known
   /// strength, crushing not allowed): one limit contour each, at ratio 1 / safety factor.
   std::vector<LimitingCriterion> criteria;
   /// The design the request chose (the recommendation, else the continuous optimum), scored

@@ -56,8 +56,11 @@ enum class LimitingCriterion {
   kContusion,        ///< e_A,max against the contusion limit / safety factor
   kFullCompression,  ///< the covering's travel used against 1 / safety factor (default criterion)
   kCrush,            ///< σ_c,max against the material's compressive strength / safety factor
+  /// F_max against the struck area's lowest published fracture force / safety factor
+  /// (docs/model.md §7.1)
+  kFracture,
 };
-/// "none", "laceration", "contusion", "full-compression", "crush".
+/// "none", "laceration", "contusion", "full-compression", "crush", "fracture".
 std::string_view ToString(LimitingCriterion criterion) noexcept;
 
 /// How the crush criterion applies to a design (docs/model.md §12).
@@ -70,8 +73,8 @@ enum class CrushCheck {
 /// "no-material", "checked", "does-not-crush", "unknown-strength".
 std::string_view ToString(CrushCheck check) noexcept;
 
-/// What makes a design admissible (docs/model.md §6, §12): the safety factor SF times every
-/// ratio that counts is <= 1. The injury ratios always count; the covering's travel ratio
+/// What makes a design admissible (docs/model.md §6, §7.1, §12): the safety factor SF times every
+/// ratio that counts is <= 1. The injury ratios (laceration, contusion, fracture) always count; the covering's travel ratio
 /// (DesignScore::compression_ratio) under the no-full-compression criterion, with a
 /// covering; the crush ratio for a material of known strength unless crushing is allowed.
 /// A material of unknown strength is inadmissible unless crushing or unknown strengths are
@@ -92,7 +95,8 @@ struct DesignRule {
   /// The criteria applied, in words, e.g. "laceration and contusion (Park et al. 2011), no full
   /// compression, no crushing; safety factor 1".
   std::string Describe() const;
-  /// The criteria applied, by name ("laceration", "contusion", "full-compression", "crush").
+  /// The criteria applied, by name ("laceration", "contusion", "fracture", "full-compression",
+  /// "crush").
   std::vector<std::string> Parts() const;
 };
 
@@ -115,6 +119,9 @@ struct DesignScore {
   ImpactPeaks peaks;
   double laceration_ratio = 0.0;  ///< σ_t,max / laceration limit
   double contusion_ratio = 0.0;   ///< e_A,max / contusion limit
+  /// F_max / the lowest published fracture force of the struck area (Scene's head.area,
+  /// docs/model.md §7.1)
+  double fracture_ratio = 0.0;
   /// The share of the covering's own travel used at the peak [-]
   /// (ImpactPeaks::covering_compression_ratio: (δ_max − t1) / (0.8 b_c)): > 1 means bottomed
   /// out. 0 for the bare robot and while δ_max stays within the scalp's travel.
@@ -128,10 +135,12 @@ struct DesignScore {
   /// best under either criterion; the oracle counts it.
   bool failed = false;
   bool bare() const noexcept { return design.thickness_m == 0.0; }
+  /// The largest injury ratio: laceration, contusion or fracture.
   double worst_ratio() const noexcept {
-    return laceration_ratio > contusion_ratio ? laceration_ratio : contusion_ratio;
+    const double skin = laceration_ratio > contusion_ratio ? laceration_ratio : contusion_ratio;
+    return skin > fracture_ratio ? skin : fracture_ratio;
   }
-  /// Both injury ratios <= 1/safety_factor (the skin criteria alone).
+  /// Every injury ratio <= 1/safety_factor (the skin criteria and the bone's fracture).
   bool safe(double safety_factor) const noexcept { return worst_ratio() * safety_factor <= 1.0; }
   /// The covering is fully compressed, or uses more than 1/safety_factor of its travel
   /// (never for the bare robot).
@@ -163,6 +172,7 @@ struct RatioGradient {
   double laceration[2] = {0.0, 0.0};
   double contusion[2] = {0.0, 0.0};
   double compression[2] = {0.0, 0.0};  ///< of DesignScore::compression_ratio
+  double fracture[2] = {0.0, 0.0};     ///< of DesignScore::fracture_ratio
 };
 
 /// What a caller asks for: core's path choice (kAuto: the exact path where the scene admits

@@ -58,6 +58,10 @@ struct InjuryProbabilityOptions {
   }
   double safety_factor = 1.0;
   InjuryLimits limits;
+  /// The covering material's compressive strength [Pa] and whether crushing is allowed, as
+  /// WorstCaseOptions: a sample that crushes the covering is inadmissible unless allowed.
+  double compressive_strength_Pa = 0.0;
+  bool allow_crushing = false;
   /// Called on the calling thread with the fraction of samples done, in [0, 1], last with 1.
   /// An exception it throws stops the work (the threads are joined) and propagates.
   std::function<void(double fraction_done)> progress;
@@ -71,10 +75,14 @@ struct InjuryProbabilityOptions {
 struct InjuryProbability {
   ProbabilityEstimate laceration;        ///< SF r_L > 1
   ProbabilityEstimate contusion;         ///< SF r_C > 1
-  ProbabilityEstimate any;               ///< either
+  ProbabilityEstimate fracture;          ///< SF r_F > 1 (docs/model.md §7.1)
+  ProbabilityEstimate any;               ///< any injury: laceration, contusion or fracture
   ProbabilityEstimate fully_compressed;  ///< the covering fully compressed at the peak
-  /// Fails the design criterion: any injury or, under the default criterion, fully compressed
-  /// (= `any` under the paper's criterion).
+  /// SF r_crush > 1: the covering crushes (0 without a material of known strength)
+  ProbabilityEstimate crushed;
+  /// Fails the design criterion: any injury, the covering crushed (unless crushing is allowed)
+  /// or, under the default criterion, fully compressed (= `any` under the paper's criterion
+  /// without a crush check).
   ProbabilityEstimate inadmissible;
   std::uint64_t seed = 0;
   unsigned threads = 0;  ///< threads used

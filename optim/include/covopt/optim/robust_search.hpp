@@ -59,6 +59,12 @@ struct WorstCaseOptions {
   double safety_factor = 1.0;
   /// The laceration [Pa] and contusion [J/m²] limits. Default: 1 MPa and 2.52 J/cm².
   InjuryLimits limits;
+  /// The covering material's compressive strength [Pa] when it crushes (docs/model.md §12):
+  /// the crush ratio σ_c,max / strength is judged, and counts unless allow_crushing. 0
+  /// (default): no material of known strength, no crush check.
+  double compressive_strength_Pa = 0.0;
+  /// A sacrificial liner: the crush ratio is reported but does not count. Default: false.
+  bool allow_crushing = false;
   GlobalSearchOptions search;
   /// The time path's integrator and tolerances for a braking robot (UncertaintyBox::brakes()):
   /// checked then only. Default: ARKODE ERK 5(4), rtol 1e-8.
@@ -78,8 +84,10 @@ struct WorstCase {
   bool fully_compressed = false;   ///< the covering is fully compressed at the peak
   /// σ_c,max / the material's compressive strength [-] when a crushing material is judged; else 0.
   double crush_ratio = 0.0;
-  /// g = SF × max(r_L, r_C, r_δ (default criterion, with a covering), r_crush (a material of
-  /// known strength, crushing not allowed)) [-]: what the search maximised.
+  /// F_max / the struck area's lowest published fracture force [-] (docs/model.md §7.1).
+  double fracture_ratio = 0.0;
+  /// g = SF × max(r_L, r_C, r_F, r_δ (default criterion, with a covering), r_crush (a material
+  /// of known strength, crushing not allowed)) [-]: what the search maximised.
   double governing_ratio = 0.0;
   /// The criterion that attains g (kNone never).
   LimitingCriterion binding = LimitingCriterion::kLaceration;

@@ -129,6 +129,9 @@ struct CoveringCrushCheck {
 /// `material`: the catalog entry the covering was taken from, or nullptr; `covering_given`:
 /// the user gave any covering input (thickness, modulus, ν or a material).
 CoveringCrushCheck CrushCheckFor(const Scene& scene, const materials::Material* material, bool covering_given);
+/// The warning that the default covering is assumed (no covering input given, `scene`'s
+/// covering the default): one text for the crush notes and optim::SceneInputWarnings.
+std::string DefaultCoveringNote(const Scene& scene);
 
 /// The crush verdict of one impact (docs/model.md §12): σ_c,max [Pa] against a compressive
 /// strength [Pa] (> 0), safe when safety_factor × ratio <= 1.
@@ -138,6 +141,8 @@ InjuryVerdict CrushVerdict(const ImpactPeaks& peaks, double compressive_strength
 struct LimitRatios {
   double laceration_ratio = 0.0;   ///< σ_t,max / laceration limit [-]
   double contusion_ratio = 0.0;    ///< e_A,max / contusion limit [-]
+  /// F_max / the struck area's lowest published fracture force [-] (docs/model.md §7.1)
+  double fracture_ratio = 0.0;
   /// The covering's travel used [-] (DesignScore::compression_ratio): > 1 fully compressed; 0
   /// without a covering.
   double compression_ratio = 0.0;

@@ -65,6 +65,7 @@ struct SampleVerdict {
   /// The impact at this speed and mass (JudgeImpact); 0 at rest or when the evaluation failed.
   double laceration_ratio = 0.0;   ///< σ_t,max / laceration limit [-]
   double contusion_ratio = 0.0;    ///< e_A,max / contusion limit [-]
+  double fracture_ratio = 0.0;     ///< F_max / the struck area's fracture force [-] (docs/model.md §7.1)
   double compression_ratio = 0.0;  ///< δ_max / t2 [-]; 0 without a covering
   /// Ratios within 1/safety factor and, under the default criterion, not fully compressed.
   bool safe = true;

@@ -20,7 +20,7 @@ namespace covopt::report {
 struct SimulationReport {
   Scene scene;                   ///< the resolved scene (SI)
   ImpactResult result;           ///< from SolveExact or SimulateImpact
-  /// The verdicts: JudgeInjuries(result.peaks, limits, safety_factor).
+  /// The verdicts: JudgeInjuries(result.peaks, limits, safety_factor, scene.head.area).
   InjuryAssessment assessment;
   /// The integrator's options when the time path ran; empty for the exact path.
   std::optional<TimeIntegrationOptions> time_options;
@@ -47,12 +47,15 @@ struct SimulationReport {
 /// Judges peaks against limits with a safety factor [-] (>= 1): each ratio stays
 /// value / limit, and a verdict is safe when safety_factor x ratio <= 1 (the value is
 /// within the derated limit limit / safety_factor).
-InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const InjuryLimits& limits,
-                               double safety_factor) noexcept;
+/// The fracture verdict judges F_max against the lowest published fracture force of `area`
+/// (Assess).
+InjuryAssessment JudgeInjuries(const ImpactPeaks& peaks, const InjuryLimits& limits, double safety_factor,
+                               HeadArea area = HeadArea::kFrontal) noexcept;
 
 /// The report as one JSON object: the peaks (max_penetration_m, peak_force_N,
 /// contact_duration_s, ...), the laceration and contusion verdicts (value, limit, ratio,
-/// safe, derated_limit and safety_factor), safe, method, solver (status, message, raw code,
+/// safe, derated_limit and safety_factor), the fracture verdict (the same, in N, with the
+/// struck area, the published range and the source), safe, method, solver (status, message, raw code,
 /// statistics; tolerances and energy_residual on the time path), scene (SceneJson, with
 /// covering.material the catalog name or null), warnings and warning_codes.
 /// `indent` as in nlohmann's dump: 2 (the CLI's), or -1 for one line.
