@@ -1,4 +1,4 @@
-// Benchmarks of the whole-robot audit (optim/audit.hpp) on the shipped Franka FR3 along its pick
+// Benchmarks of the whole-robot audit (audit/audit.hpp) on the shipped Franka FR3 along its pick
 // move (robot/models/franka_fr3_pick.csv, 101 samples), against every transient body region of
 // ISO/TS 15066 (29 areas) and the head (Park et al.): 30 regions, each point wearing a 10 mm
 // PORON foam on its capsule's radius. Every run is a whole Audit call (validation, the E*
@@ -21,7 +21,7 @@
 
 #include <covopt/materials/body_regions.hpp>
 #include <covopt/materials/catalog.hpp>
-#include <covopt/optim/audit.hpp>
+#include <covopt/audit/audit.hpp>
 #include <covopt/optim/design.hpp>
 #include <covopt/robot/kinematic_chain.hpp>
 #include <covopt/robot/surface.hpp>
@@ -60,20 +60,20 @@ void BM_AuditSamplePointFr3(benchmark::State& state) {
   covopt::robot::LinkSurface link7 = surface.links.back();
   link7.points = {link7.points.front()};
   surface.links = {link7};
-  const covopt::optim::AuditSetup setup = Fr3AuditSetup(surface);
-  covopt::optim::AuditOptions options;
+  const covopt::audit::AuditSetup setup = Fr3AuditSetup(surface);
+  covopt::audit::AuditOptions options;
   options.keep_ratio_over_time = false;
-  for (auto _ : state) benchmark::DoNotOptimize(covopt::optim::Audit(setup, Pick(), options));
+  for (auto _ : state) benchmark::DoNotOptimize(covopt::audit::Audit(setup, Pick(), options));
   state.SetItemsProcessed(state.iterations() * static_cast<benchmark::IterationCount>(Pick().size()));
   state.counters["regions"] = static_cast<double>(setup.regions.size() + 1);
 }
 BENCHMARK(BM_AuditSamplePointFr3)->Unit(benchmark::kMicrosecond);
 
 void BM_AuditPickFr3(benchmark::State& state) {
-  const covopt::optim::AuditSetup setup = Fr3AuditSetup(Surface(static_cast<std::size_t>(state.range(0))));
-  covopt::optim::AuditOptions options;
+  const covopt::audit::AuditSetup setup = Fr3AuditSetup(Surface(static_cast<std::size_t>(state.range(0))));
+  covopt::audit::AuditOptions options;
   options.keep_ratio_over_time = false;
-  for (auto _ : state) benchmark::DoNotOptimize(covopt::optim::Audit(setup, Pick(), options));
+  for (auto _ : state) benchmark::DoNotOptimize(covopt::audit::Audit(setup, Pick(), options));
   state.counters["points"] = static_cast<double>(setup.surface.point_count());
   state.counters["samples"] = static_cast<double>(Pick().size());
   state.counters["regions"] = static_cast<double>(setup.regions.size() + 1);
@@ -81,14 +81,14 @@ void BM_AuditPickFr3(benchmark::State& state) {
 BENCHMARK(BM_AuditPickFr3)->Arg(40)->Arg(0)->Unit(benchmark::kMillisecond);
 
 void BM_AuditPickBrakingFr3(benchmark::State& state) {
-  covopt::optim::AuditSetup setup = Fr3AuditSetup(Surface(40));
+  covopt::audit::AuditSetup setup = Fr3AuditSetup(Surface(40));
   setup.reaction_delay_s = 0.002;
   setup.braking_m_per_s2 = 200.0;
-  covopt::optim::AuditOptions options;
+  covopt::audit::AuditOptions options;
   options.keep_ratio_over_time = false;
   std::string evaluations;
   for (auto _ : state) {
-    const covopt::optim::AuditResult result = covopt::optim::Audit(setup, Pick(), options);
+    const covopt::audit::AuditResult result = covopt::audit::Audit(setup, Pick(), options);
     for (const std::string& w : result.warnings) {
       if (w.find("braked limits") != std::string::npos) evaluations = w.substr(w.find('(') + 1);
       if (w.find("rose with the reflected mass") != std::string::npos) state.SkipWithError(w.c_str());
@@ -99,11 +99,11 @@ void BM_AuditPickBrakingFr3(benchmark::State& state) {
 BENCHMARK(BM_AuditPickBrakingFr3)->Unit(benchmark::kMillisecond);
 
 void BM_AuditPickDesignFr3(benchmark::State& state) {
-  const covopt::optim::AuditSetup setup = Fr3AuditSetup(Surface(40));
-  covopt::optim::AuditOptions options;
+  const covopt::audit::AuditSetup setup = Fr3AuditSetup(Surface(40));
+  covopt::audit::AuditOptions options;
   options.keep_ratio_over_time = false;
   options.design.materials = covopt::optim::SelectCandidates(covopt::materials::Catalog::BuiltIn());
-  for (auto _ : state) benchmark::DoNotOptimize(covopt::optim::Audit(setup, Pick(), options));
+  for (auto _ : state) benchmark::DoNotOptimize(covopt::audit::Audit(setup, Pick(), options));
   state.counters["materials"] = static_cast<double>(options.design.materials.size());
 }
 BENCHMARK(BM_AuditPickDesignFr3)->Unit(benchmark::kMillisecond);

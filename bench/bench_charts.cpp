@@ -11,7 +11,7 @@
 #include <covopt/core.hpp>
 #include <covopt/materials.hpp>
 #include <covopt/optim.hpp>
-#include <covopt/optim/audit.hpp>
+#include <covopt/audit/audit.hpp>
 
 #include "covopt/report/charts.hpp"
 
@@ -41,8 +41,8 @@ report::TrajectoryChartInput Trajectory() {
   return input;
 }
 
-optim::AuditResult Audit() {  // 7 links, 500 samples: the chart's data only
-  optim::AuditResult r;
+audit::AuditResult Audit() {  // 7 links, 500 samples: the chart's data only
+  audit::AuditResult r;
   r.status = optim::TrajectoryCheckStatus::kSafe;
   r.regions = {"chest (sternum)", "head (Park et al. 2011)"};
   for (int l = 0; l < 7; ++l) r.links.push_back("fr3_link" + std::to_string(l + 1));

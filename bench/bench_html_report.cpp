@@ -14,7 +14,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include <covopt/optim/audit.hpp>
+#include <covopt/audit/audit.hpp>
 #include <covopt/report/audit_json.hpp>
 #include <covopt/report/html_report.hpp>
 #include <covopt/report/provenance.hpp>
@@ -73,9 +73,9 @@ BENCHMARK_CAPTURE(BM_HtmlReport, audit, covopt::report::ReportKind::kAudit, "aud
 
 void BM_HtmlReportAuditFull(benchmark::State& state) {
   static const std::string json = [] {
-    const covopt::optim::AuditSetup setup =
+    const covopt::audit::AuditSetup setup =
         Fr3AuditSetup(covopt::robot::SurfaceFromUrdfFile(kFr3Urdf, Fr3()));
-    return covopt::report::AuditJson(setup, covopt::optim::Audit(setup, Pick(), {}));
+    return covopt::report::AuditJson(setup, covopt::audit::Audit(setup, Pick(), {}));
   }();
   Render(state, Content(covopt::report::ReportKind::kAudit, json));
 }

@@ -7,7 +7,7 @@
 
 #include <covopt/materials/body_regions.hpp>
 #include <covopt/materials/catalog.hpp>
-#include <covopt/optim/audit.hpp>
+#include <covopt/audit/audit.hpp>
 #include <covopt/optim/design.hpp>
 
 #include <covopt/robot/kinematic_chain.hpp>
@@ -32,8 +32,8 @@ inline const covopt::robot::JointTrajectory& Pick() {
 
 /// An audit of the FR3 on `surface` against every transient body region of ISO/TS 15066 and
 /// the head (Park et al.), every link wearing 10 mm of PORON 4701-30 320.
-inline covopt::optim::AuditSetup Fr3AuditSetup(covopt::robot::RobotSurface surface) {
-  covopt::optim::AuditSetup setup{Fr3(), std::move(surface)};
+inline covopt::audit::AuditSetup Fr3AuditSetup(covopt::robot::RobotSurface surface) {
+  covopt::audit::AuditSetup setup{Fr3(), std::move(surface)};
   const std::vector<std::string> names{"PU foam PORON 4701-30 320"};
   const covopt::optim::CandidateMaterial foam =
       covopt::optim::SelectCandidates(covopt::materials::Catalog::BuiltIn(), names).front();

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -16,14 +17,12 @@
 #include <fmt/ostream.h>
 
 #include "body_region_options.hpp"
-#include "covopt/optim/audit.hpp"
-#include "covopt/optim/design.hpp"
+#include "covopt/audit/assemble.hpp"
+#include "covopt/audit/audit.hpp"
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/report/audit_json.hpp"
 #include "covopt/report/csv.hpp"
 #include "covopt/robot/surface.hpp"
-#include "covopt/robot/trajectory.hpp"
-#include "covopt/scene_file/link_coverings.hpp"
 #include "design_flag_ranges.hpp"
 #include "errors.hpp"
 #include "output.hpp"
@@ -65,16 +64,11 @@ constexpr QuantitySpec kSpacing{QuantityKind::kLength, false, false, robot::kMin
 constexpr QuantitySpec kEdgeRadius{QuantityKind::kLength, false, false, 1e-4, 0.5, {"mm", "cm"}, "box edge radius"};
 constexpr QuantitySpec kFlatRadius{QuantityKind::kLength, false, false, 1e-3, 1.0, {"mm", "cm"}, "flat-face radius"};
 
-/// Everything the outputs need.
+/// Everything the outputs need: the assembled audit (covopt::audit::AssembleAudit).
 struct AuditRun {
-  explicit AuditRun(optim::AuditSetup s) : setup(std::move(s)) {}
-  optim::AuditSetup setup;
-  robot::JointTrajectory trajectory;
-  optim::AuditOptions options;
-  std::vector<std::string> input_warnings;
-  std::string covering_text;  ///< the all-links covering, for the text
+  explicit AuditRun(audit::AssembledAudit a) : assembled(std::move(a)) {}
+  audit::AssembledAudit assembled;
   std::optional<PlotFormat> plot_format;
-  bool head = false;
 };
 
 double PositiveLength(const std::string& typed, const QuantitySpec& spec, const char* flag) {
@@ -85,21 +79,11 @@ double PositiveLength(const std::string& typed, const QuantitySpec& spec, const 
   return value;
 }
 
-std::string CoveringText(const optim::AuditCovering& c) {
+std::string CoveringText(const audit::AuditCovering& c) {
   if (!(c.covering.thickness_m > 0.0)) return "bare";
   return fmt::format("{}{} (E {}, ν {:g})", c.material ? c.material->name + " " : std::string(),
                      FormatQuantity(c.covering.thickness_m, QuantityKind::kLength),
                      FormatQuantity(c.covering.youngs_modulus_Pa, QuantityKind::kModulus), c.covering.poisson_ratio);
-}
-
-optim::CandidateMaterial CatalogCandidate(const materials::Catalog& catalog, const std::string& name,
-                                          const std::string& where) {
-  try {
-    const std::vector<std::string> names{name};
-    return optim::SelectCandidates(catalog, names).front();
-  } catch (const std::invalid_argument& e) {
-    throw InputError(fmt::format("--link-coverings {}: {}", where, e.what()));
-  }
 }
 
 /// The scene inputs an ISO region reads in an audit (the rest belong to the head's model).
@@ -108,34 +92,37 @@ bool ReadByRegions(std::string_view field) {
          field == "limits.safety_factor";
 }
 
-AuditRun Resolve(const AuditCommandOptions& o) {
+/// The audit's inputs as the CLI spells them, for the library's messages.
+audit::AuditFieldNames FlagNames() {
+  audit::AuditFieldNames n;
+  n.urdf = "--urdf";
+  n.surface_file = "--surface-file";
+  n.trajectory = "--trajectory";
+  n.link_coverings = "--link-coverings";
+  n.contact = "--contact";
+  n.design = "--design";
+  n.design_materials = "--design-material";
+  n.families = "--family";
+  n.allow_unknown_strength = "--allow-unknown-strength";
+  n.max_thickness = "--max-thickness";
+  n.thickness_step = "--thickness-step";
+  n.robot_mass = "--robot-mass";
+  n.speed = "--speed";
+  n.robot_radius = "--robot-radius";
+  return n;
+}
+
+/// The checks of the flags no library input stands for: the robot model's flags audit does not
+/// take, the outputs' files.
+std::optional<PlotFormat> CheckFlags(const AuditCommandOptions& o) {
   const RobotModelOptions& model = o.model;
   if (!o.trajectory) throw InputError("--trajectory FILE.csv is required (the motion to audit)");
-  if (o.trajectory->empty()) throw InputError("--trajectory: empty file name");
   if (!model.urdf) throw InputError("--urdf FILE is required (the robot to audit)");
   for (const auto& [typed, flag, why] :
        {std::tuple{model.joints, "--joints", "the trajectory gives each sample's joint positions"},
         std::tuple{model.point, "--point", "every point of the robot's surface is audited"},
         std::tuple{model.direction, "--direction", "each impact is along the point's motion"}}) {
     if (typed) throw InputError(fmt::format("{} '{}': not used by audit ({}); drop {}", flag, *typed, why, flag));
-  }
-  for (const auto& [key, flag, what] :
-       {std::tuple{std::string_view("robot.mass"), "--robot-mass", "reflected mass (the robot model's)"},
-        std::tuple{std::string_view("robot.speed"), "--speed", "speed (the trajectory's)"},
-        std::tuple{std::string_view("robot.radius"), "--robot-radius", "radius (the surface's)"}}) {
-    if (const auto typed = o.scene.scene_values.find(key); typed != o.scene.scene_values.end()) {
-      throw InputError(fmt::format("{} '{}': not used by audit (each surface point brings its own {}); drop {}", flag,
-                                   typed->second, what, flag));
-    }
-  }
-  if (!o.design) {
-    const char* flag = !o.families.empty()          ? "--family"
-                       : !o.design_materials.empty() ? "--design-material"
-                       : o.allow_unknown_strength   ? "--allow-unknown-strength"
-                       : o.max_thickness            ? "--max-thickness"
-                       : o.thickness_step           ? "--thickness-step"
-                                                    : nullptr;
-    if (flag) throw InputError(fmt::format("{} applies with --design (the per-link covering design)", flag));
   }
   if (o.csv_file && o.csv_file->empty()) throw InputError("--csv: empty file name");
   if (o.samples_csv && o.samples_csv->empty()) throw InputError("--samples-csv: empty file name");
@@ -145,26 +132,49 @@ AuditRun Resolve(const AuditCommandOptions& o) {
     throw InputError("--json, --csv - and --samples-csv - each print to stdout; give only one of them, the others a "
                      "file name");
   }
-
-  std::optional<PlotFormat> plot_format;
-  if (o.plot_file) {
-    plot_format = PlotFormatFor(*o.plot_file);
-    if (!plot_format) {
-      throw InputError(fmt::format("--plot: cannot tell the format of '{}'; name the file *.png or *.svg", *o.plot_file));
-    }
+  if (!o.plot_file) return std::nullopt;
+  std::optional<PlotFormat> plot_format = PlotFormatFor(*o.plot_file);
+  if (!plot_format) {
+    throw InputError(fmt::format("--plot: cannot tell the format of '{}'; name the file *.png or *.svg", *o.plot_file));
   }
+  return plot_format;
+}
 
+/// The surface's flags.
+robot::SurfaceOptions SurfaceOptionsOf(const AuditCommandOptions& o) {
+  robot::SurfaceOptions surface;
+  if (o.surface_spacing) surface.spacing_m = PositiveLength(*o.surface_spacing, kSpacing, "--surface-spacing");
+  if (o.box_edge_radius) surface.box_edge_radius_m = PositiveLength(*o.box_edge_radius, kEdgeRadius, "--box-edge-radius");
+  if (o.surface_file) {
+    if (o.surface_file->empty()) throw InputError("--surface-file: empty file name");
+    surface.surface_file = *o.surface_file;
+  }
+  return surface;
+}
+
+/// The design's flags.
+void SetDesignFlags(const AuditCommandOptions& o, audit::AuditInputs& in) {
+  in.design = o.design;
+  in.design_materials = o.design_materials;
+  in.families = o.families;
+  in.allow_unknown_strength = o.allow_unknown_strength;
+  if (o.max_thickness) {
+    in.max_thickness_m = ParseQuantity(*o.max_thickness, quantity_specs::kCoveringThickness, "--max-thickness");
+  }
+  if (o.thickness_step) {
+    in.thickness_step_m = ParseQuantity(*o.thickness_step, quantity_specs::kThicknessStep, "--thickness-step");
+  }
+}
+
+/// The flags resolved by the groups every command shares (robot model, scene, body regions),
+/// the audit assembled by the library from them and the audit's own flags.
+AuditRun Resolve(const AuditCommandOptions& o) {
+  const std::optional<PlotFormat> plot_format = CheckFlags(o);
   // The regions: the body-region group, default every transient region and the head.
   BodyRegionFlags body = o.scene.body;
-  if (body.regions.empty()) body.regions.push_back("all");
+  if (body.regions.empty()) body.regions.push_back(audit::kDefaultBodyRegions);
   const std::optional<BodyRegionPlan> regions = ResolveBodyRegions(body);
-  if (regions->contact != ContactType::kTransient) {
-    throw InputError(fmt::format("--contact '{}': an audit judges the free (transient) impacts of a motion; drop "
-                                 "--contact",
-                                 o.scene.body.contact.value_or("")));
-  }
   const bool head = regions->has_head();
-
   const SimulationPlan plan = ResolveSimulation(o.scene);
   if (!head) {
     for (const auto& [field, source] : plan.sources) {
@@ -174,127 +184,45 @@ AuditRun Resolve(const AuditCommandOptions& o) {
                                    field, source));
     }
   }
-  const optim::BodyRegionOptions judge = BodyRegionOptionsOf(plan, o.allow_full_compression, o.allow_crushing);
-
-  // The robot, its surface and the motion.
-  const RobotModelInput robot_input = ResolveRobotModelChain(model);
-  robot::SurfaceOptions surface_options;
-  if (o.surface_spacing) surface_options.spacing_m = PositiveLength(*o.surface_spacing, kSpacing, "--surface-spacing");
-  if (o.box_edge_radius) {
-    surface_options.box_edge_radius_m = PositiveLength(*o.box_edge_radius, kEdgeRadius, "--box-edge-radius");
-  }
-  if (o.surface_file) {
-    if (o.surface_file->empty()) throw InputError("--surface-file: empty file name");
-    surface_options.surface_file = *o.surface_file;
-  }
-  robot::RobotSurface surface = [&] {
-    try {
-      return robot::SurfaceFromUrdfFile(*model.urdf, robot_input.chain, surface_options);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(fmt::format("{}: {}", o.surface_file ? "--surface-file" : "--urdf", e.what()));
+  audit::AuditInputs in(ResolveRobotModelChain(o.model).chain, *o.model.urdf);
+  in.names = FlagNames();
+  in.surface = SurfaceOptionsOf(o);
+  if (o.flat_face_radius) in.flat_face_radius_m = PositiveLength(*o.flat_face_radius, kFlatRadius, "--flat-face-radius");
+  in.reflected_mass = o.model.reflected_mass_options();
+  in.trajectory = *o.trajectory;
+  in.scene = plan.scene;
+  for (const char* field : {"robot.mass", "robot.speed", "robot.radius"}) {
+    if (const auto typed = o.scene.scene_values.find(field); typed != o.scene.scene_values.end()) {
+      in.given_robot_inputs.emplace(field, typed->second);
     }
-  }();
-  if (surface.links.empty()) {
-    throw InputError(fmt::format("--urdf '{}': no link of the chain {} -> {} has collision geometry; give "
-                                 "--surface-file FILE.toml",
-                                 *model.urdf, robot_input.chain.base_link(), robot_input.chain.tip_link()));
   }
-  std::optional<double> flat_face_radius;
-  if (o.flat_face_radius) flat_face_radius = PositiveLength(*o.flat_face_radius, kFlatRadius, "--flat-face-radius");
-  robot::ContactMotionOptions motion;
-  motion.reflected_mass = model.reflected_mass_options();
-  AuditRun run(optim::AuditSetup(robot_input.chain, std::move(surface)));
-  optim::AuditSetup& setup = run.setup;
-  setup.covering = optim::AuditCovering{plan.scene.covering, judge.material};
-  setup.regions = regions->IsoLimits();
-  setup.SetReactionAndHead(plan.scene, head);
-  setup.contact_area_m2 = regions->contact_area_m2;
-  setup.flat_face_radius_m = flat_face_radius;
-  setup.rule = judge.rule;
-  setup.motion = motion;
-  run.plot_format = plot_format;
-  run.head = head;
-  try {
-    run.trajectory = robot::ReadJointTrajectory(*o.trajectory, robot_input.chain.joint_count());
-  } catch (const std::invalid_argument& e) {
-    throw InputError(fmt::format("--trajectory: {}", e.what()));
-  }
-
-  run.covering_text = CoveringText(setup.covering);
-
+  in.regions = regions->IsoLimits();
+  in.contact = regions->contact;
+  in.contact_area_m2 = regions->contact_area_m2;
+  in.head = head;
+  in.judge = BodyRegionOptionsOf(plan, o.allow_full_compression, o.allow_crushing);
+  if (o.link_coverings) in.link_coverings = *o.link_coverings;
+  SetDesignFlags(o, in);
   // The catalog, for --link-coverings and --design.
   std::optional<materials::Catalog> catalog;
-  const auto the_catalog = [&]() -> const materials::Catalog& {
-    if (!catalog) {
-      try {
-        catalog = LoadCatalog(o.scene.catalog);
-      } catch (const InputError& e) {
-        const std::string what = e.what();
-        throw InputError(what.rfind("--", 0) == 0 ? what : "--catalog: " + what);
-      }
-    }
-    return *catalog;
-  };
-  if (o.link_coverings) {
-    std::vector<scene_file::LinkCoveringEntry> entries;
+  if (o.link_coverings || o.design) {
     try {
-      entries = scene_file::ReadLinkCoverings(*o.link_coverings);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(fmt::format("--link-coverings: {}", e.what()));
-    }
-    for (const scene_file::LinkCoveringEntry& entry : entries) {
-      const bool on_surface = std::any_of(setup.surface.links.begin(), setup.surface.links.end(),
-                                          [&](const robot::LinkSurface& l) { return l.link == entry.link; });
-      if (!on_surface) {
-        std::string names;
-        for (const robot::LinkSurface& l : setup.surface.links) names += (names.empty() ? "" : ", ") + l.link;
-        throw InputError(fmt::format("--link-coverings {}: link '{}' is not a link of the audited surface ({})",
-                                     entry.where, entry.link, names));
-      }
-      optim::AuditCovering covering;
-      covering.covering.thickness_m = entry.thickness_m;
-      if (entry.material) {
-        optim::CandidateMaterial material = CatalogCandidate(the_catalog(), *entry.material, entry.where);
-        covering.covering.youngs_modulus_Pa = material.youngs_modulus_Pa;
-        covering.covering.poisson_ratio = material.poisson_ratio;
-        if (material.poisson_assumed && entry.thickness_m > 0.0) {
-          run.input_warnings.push_back(fmt::format("link '{}': {} has no Poisson ratio in the catalog; {:g} assumed",
-                                                   entry.link, material.name, material.poisson_ratio));
-        }
-        covering.material = std::move(material);
-      } else if (entry.modulus_Pa) {
-        covering.covering.youngs_modulus_Pa = *entry.modulus_Pa;
-        covering.covering.poisson_ratio = entry.poisson_ratio.value_or(0.25);
-      }
-      setup.link_coverings.emplace(entry.link, std::move(covering));
-    }
-  }
-
-  if (o.design) {
-    try {
-      run.options.design.materials = optim::SelectCandidates(the_catalog(), o.design_materials, o.families);
-    } catch (const std::invalid_argument& e) {
+      catalog = LoadCatalog(o.scene.catalog);
+    } catch (const InputError& e) {
       const std::string what = e.what();
-      throw InputError((what.rfind("no family", 0) == 0 ? "--family: " : "--design-material: ") + what);
+      throw InputError(what.rfind("--", 0) == 0 ? what : "--catalog: " + what);
     }
-    // The design's rule is optimize's: unknown strengths only with --allow-unknown-strength (the
-    // audit alone judges a covering of unknown strength without the crush check, as robot does).
-    setup.rule.unknown_strength_allowed = o.allow_unknown_strength;
-    if (o.max_thickness) {
-      run.options.design.max_thickness_m =
-          ParseQuantity(*o.max_thickness, quantity_specs::kCoveringThickness, "--max-thickness");
-    }
-    if (o.thickness_step) {
-      run.options.design.thickness_step_m = ParseQuantity(*o.thickness_step, quantity_specs::kThicknessStep,
-                                                          "--thickness-step");
-    }
-    // optimize's ranges, named by the flags (the library names its own fields).
-    RequireMaxThickness(run.options.design.max_thickness_m, run.options.design.min_thickness_m, o.max_thickness);
-    RequireThicknessStep(run.options.design.thickness_step_m, o.thickness_step);
+    in.catalog = &*catalog;
   }
-
-  for (std::string& w : InputWarnings(plan)) run.input_warnings.push_back(std::move(w));
-  optim::AppendNewWarnings(run.input_warnings, CrushCheckOf(plan).notes);  // the default covering is in both
+  in.scene_warnings = InputWarnings(plan);
+  optim::AppendNewWarnings(in.scene_warnings, CrushCheckOf(plan).notes);  // the default covering is in both
+  AuditRun run(audit::AssembleAudit(in));
+  run.plot_format = plot_format;
+  if (o.design) {  // optimize's ranges, named by the flags (the library names its own fields)
+    const audit::AuditDesignOptions& design = run.assembled.options.design;
+    RequireMaxThickness(design.max_thickness_m, design.min_thickness_m, o.max_thickness);
+    RequireThicknessStep(design.thickness_step_m, o.thickness_step);
+  }
   return run;
 }
 
@@ -305,8 +233,8 @@ std::string RatioText(double ratio) { return std::isfinite(ratio) ? fmt::format(
 std::string ScaleText(double scale) { return std::isfinite(scale) ? fmt::format("{:.4g}", scale) : "-"; }
 
 
-void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& run, const optim::AuditResult& r) {
-  const optim::AuditSetup& setup = run.setup;
+void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& run, const audit::AuditResult& r) {
+  const audit::AuditSetup& setup = run.assembled.setup;
   const robot::KinematicChain& chain = setup.chain;
   std::string robot_line = fmt::format("{}: {} -> {}, {} movable joint{}", chain.robot_name(), chain.base_link(),
                                        chain.tip_link(), chain.joint_count(), chain.joint_count() == 1 ? "" : "s");
@@ -314,19 +242,19 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
     robot_line += fmt::format("; payload {:.4g} kg at {} m (tip frame)", payload.mass_kg, Point(payload.center_of_mass_m));
   }
   fmt::print(out, "Robot      {}\n", robot_line);
-  const auto& times = run.trajectory.time_s;
+  const auto& times = run.assembled.trajectory.time_s;
   fmt::print(out, "Trajectory {}: {} samples, t = {:g} .. {:g} s\n", *o.trajectory, r.sample_count,
              times.empty() ? 0.0 : times.front(), times.empty() ? 0.0 : times.back());
   fmt::print(out, "Surface    {} links, {} points (spacing {}){}\n", setup.surface.links.size(),
              setup.surface.point_count(), FormatQuantity(setup.surface.spacing_m, QuantityKind::kLength),
              o.surface_file ? fmt::format(", surface file {}", *o.surface_file) : std::string());
-  fmt::print(out, "Covering   all links: {}\n", run.covering_text);
+  fmt::print(out, "Covering   all links: {}\n", CoveringText(setup.covering));
   for (const auto& [link, covering] : setup.link_coverings) {
     fmt::print(out, "           {}: {} (--link-coverings)\n", link, CoveringText(covering));
   }
   fmt::print(out, "Regions    {} ISO/TS 15066 region{} (transient){}\n", setup.regions.size(),
-             setup.regions.size() == 1 ? "" : "s", run.head ? fmt::format(" and the head ({})", HeadCriteriaName()) : "");
-  fmt::print(out, "Criterion  {}\n", BodyCriterion(setup.rule, run.head));
+             setup.regions.size() == 1 ? "" : "s", setup.head ? fmt::format(" and the head ({})", HeadCriteriaName()) : "");
+  fmt::print(out, "Criterion  {}\n", BodyCriterion(setup.rule, setup.head.has_value()));
   if (setup.braking_m_per_s2 > 0.0) {
     fmt::print(out, "Braking    reaction delay {}, braking {}\n",
                FormatQuantity(setup.reaction_delay_s, QuantityKind::kTime),
@@ -334,7 +262,7 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
   }
   fmt::print(out, "Verdict    {}\n", r.message);
   if (r.limiting_cell) {
-    const optim::AuditCell& c = r.cells[*r.limiting_cell];
+    const audit::AuditCell& c = r.cells[*r.limiting_cell];
     fmt::print(out, "Limit      safe speed scale {}: {} against {} ({}) at t = {:.4g} s, point {} m (base frame)\n",
                ScaleText(r.safe_speed_scale), r.links[c.link], r.regions[c.region], c.binding_name(),
                c.time_s, Point(c.point_in_base_m));
@@ -355,7 +283,7 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
       continue;
     }
     for (std::size_t k = 0; k < std::min(kRegionsShownPerLink, order.size()); ++k) {
-      const optim::AuditCell& c = r.cell(l, order[k]);
+      const audit::AuditCell& c = r.cell(l, order[k]);
       fmt::print(out, "  {:<14} {:<34} {:>8}  {:<16} {:>8.4g}  {:<26} {:>9.4g} {:>9.4g} {:>9.4g} {:>8}\n",
                  k == 0 ? r.links[l] : "", r.regions[c.region], RatioText(c.governing_ratio),
                  c.binding_name(), c.time_s, Point(c.point_in_base_m), c.speed_m_per_s, c.reflected_mass_kg,
@@ -365,7 +293,7 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
   if (!r.link_designs.empty()) {
     fmt::print(out, "\nPer-link design: the thinnest catalog covering safe at full speed (checked again)\n");
     fmt::print(out, "  {:<14} {:<28} {:>10} {:>8}  {}\n", "link", "material", "thickness", "ratio", "");
-    for (const optim::AuditLinkDesign& d : r.link_designs) {
+    for (const audit::AuditLinkDesign& d : r.link_designs) {
       fmt::print(out, "  {:<14} {:<28} {:>10} {:>8}  {}\n", r.links[d.link], d.material ? d.material->name : "-",
                  d.thickness_m ? FormatQuantity(*d.thickness_m, QuantityKind::kLength) : "-",
                  d.thickness_m ? RatioText(d.governing_ratio) : "-", d.message);
@@ -373,7 +301,7 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
   }
   fmt::print(out, "\nScope\n");
   for (const std::string& s : r.scope) fmt::print(out, "  {}\n", s);
-  std::vector<std::string> warnings = run.input_warnings;
+  std::vector<std::string> warnings = run.assembled.input_warnings;
   warnings.insert(warnings.end(), r.warnings.begin(), r.warnings.end());
   if (warnings.empty()) fmt::print(out, "\nWarnings: none\n");
   for (const std::string& w : warnings) fmt::print(out, "Warning: {}\n", w);
@@ -387,10 +315,10 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
   if (!files.empty()) fmt::print(out, "Wrote      {}\n", fmt::join(files, ", "));
 }
 
-std::string CellsCsv(const optim::AuditResult& r) {
+std::string CellsCsv(const audit::AuditResult& r) {
   std::string text;
   report::AppendCsvRecord(text, report::AuditCellColumns());
-  for (const optim::AuditCell& cell : r.cells) report::AppendCsvRecord(text, report::AuditCellCsvCells(r, cell));
+  for (const audit::AuditCell& cell : r.cells) report::AppendCsvRecord(text, report::AuditCellCsvCells(r, cell));
   return text;
 }
 
@@ -475,12 +403,8 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
     // The per-sample stream: written as the audit runs (a file through OutputFile).
     std::optional<OutputFile> stream_file;
     std::vector<std::string> link_names;
-    for (const robot::LinkSurface& l : run.setup.surface.links) link_names.push_back(l.link);
-    std::vector<std::string> region_names;  // AuditResult::regions, known before the audit runs
-    for (const materials::BodyLimits& limits : run.setup.regions) {
-      region_names.push_back(fmt::format("{} ({})", limits.region->name, limits.area->name));
-    }
-    if (run.setup.head) region_names.emplace_back("head (Park et al. 2011)");  // as AuditResult::regions
+    for (const robot::LinkSurface& l : run.assembled.setup.surface.links) link_names.push_back(l.link);
+    const std::vector<std::string> region_names = audit::AuditRegionNames(run.assembled.setup);
     if (o.samples_csv) {
       std::string header;
       report::AppendCsvRecord(header, report::AuditSampleColumns(link_names));
@@ -490,17 +414,17 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
       } else {
         out << header;
       }
-      run.options.keep_ratio_over_time = o.plot_file || o.report_file;  // the heat map's data
-      run.options.on_sample = [&](const optim::AuditSampleRow& row) {
+      run.assembled.options.keep_ratio_over_time = o.plot_file || o.report_file;  // the heat map's data
+      run.assembled.options.on_sample = [&](const audit::AuditSampleRow& row) {
         std::string line;
         report::AppendCsvRecord(line, report::AuditSampleCsvCells(row, region_names));
         if (stream_file) stream_file->Write(line);
         else out << line;
       };
     }
-    optim::AuditResult result;
+    audit::AuditResult result;
     try {
-      result = optim::Audit(run.setup, run.trajectory, run.options);
+      result = audit::Audit(run.assembled.setup, run.assembled.trajectory, run.assembled.options);
     } catch (const std::invalid_argument& e) {
       return errors.BadInput(e.what());
     }
@@ -510,14 +434,14 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
     std::optional<report::GnuplotChart> heat_map_chart;
     const auto heat_map = [&]() -> const report::GnuplotChart& {
       if (!heat_map_chart) {
-        heat_map_chart = report::AuditHeatMap(result, run.setup.rule.safety_factor,
+        heat_map_chart = report::AuditHeatMap(result, run.assembled.setup.rule.safety_factor,
                                               std::filesystem::path(*o.trajectory).filename().string());
       }
       return *heat_map_chart;
     };
     if (o.plot_file) RunGnuplot(*o.plot_file, heat_map());
     if (o.json || o.report_file) {
-      PrintAndReport(out, o.json, report::AuditJson(run.setup, result, run.input_warnings), o.run, o.report_file,
+      PrintAndReport(out, o.json, report::AuditJson(run.assembled.setup, result, run.assembled.input_warnings), o.run, o.report_file,
                      report::ReportKind::kAudit, [&] { return std::vector{heat_map()}; });
     }
     if (!o.json && o.csv_file && *o.csv_file == "-") {

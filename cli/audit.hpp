@@ -2,7 +2,7 @@
 /// @file audit.hpp
 /// `covopt audit`: the whole robot along its motion (docs/guide/audit.md). Every surface
 /// point of every link, at every sample of the trajectory, against every exposed body region
-/// (optim::Audit).
+/// (audit::Audit).
 ///
 ///     covopt audit --urdf FILE [--base LINK] --tip LINK --trajectory FILE.csv
 ///                  [--surface-file FILE.toml] [--surface-spacing 50mm] [--box-edge-radius 5mm]

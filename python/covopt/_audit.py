@@ -53,7 +53,7 @@ def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surfa
           max_thickness=None, thickness_step=None, payload_mass=None, payload_com=None, payload_inertia=None,
           ignore_joint_limits=False, keep_ratio_over_time=True):
     """Every surface point of every link, at every sample of `trajectory`, against every exposed
-    body region (optim::Audit), as ``covopt audit --json``; returns an Audit.
+    body region (audit::Audit), as ``covopt audit --json``; returns an Audit.
 
     The robot (urdf or urdf_text, tip, base) and trajectory (a CSV path, or a dict time_s,
     positions, velocities) as check_trajectory takes them; payload_mass (kg), payload_com

@@ -1,24 +1,27 @@
 /// @file audit_bindings.cpp
 /// covopt.audit: the whole robot along its motion, as `covopt audit --json` (the dict is
-/// report::AuditJson, the CLI's). The robot and trajectory are read as covopt.contact_motion
-/// reads them (robot_inputs.hpp), the covering for all links, the head and the limits from a
-/// covopt.Scene, the regions as covopt.simulate(body_region=...) reads them
-/// (body_region_inputs.hpp). See python/covopt/_audit.py for the documentation.
+/// report::AuditJson, the CLI's). The keywords every command shares are read here as the other
+/// functions read them: the robot as covopt.contact_motion (robot_inputs.hpp), the covering for
+/// all links, the head and the limits from a covopt.Scene, the regions as
+/// covopt.simulate(body_region=...) (body_region_inputs.hpp); the audit itself is assembled by
+/// covopt::audit::AssembleAudit, the call `covopt audit` makes. See python/covopt/_audit.py for
+/// the documentation.
 
 #include <array>
 #include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include "body_region_inputs.hpp"
-#include "covopt/materials/catalog.hpp"
-#include "covopt/optim/audit.hpp"
-#include "covopt/optim/design.hpp"
+#include "covopt/audit/assemble.hpp"
+#include "covopt/audit/audit.hpp"
 #include "covopt/report/audit_json.hpp"
 #include "covopt/robot/payload.hpp"
 #include "covopt/robot/surface.hpp"
@@ -78,31 +81,16 @@ robot::Payload ReadPayload(const py::kwargs& kwargs) {
   return payload;
 }
 
-optim::AuditCovering CoveringOf(const scene_file::LinkCoveringEntry& entry) {
-  optim::AuditCovering covering;
-  covering.covering.thickness_m = entry.thickness_m;
-  if (entry.material) {
-    const std::vector<std::string> names{*entry.material};
-    covering.material = optim::SelectCandidates(materials::Catalog::BuiltIn(), names).front();
-    covering.covering.youngs_modulus_Pa = covering.material->youngs_modulus_Pa;
-    covering.covering.poisson_ratio = covering.material->poisson_ratio;
-  } else if (entry.modulus_Pa) {
-    covering.covering.youngs_modulus_Pa = *entry.modulus_Pa;
-    covering.covering.poisson_ratio = entry.poisson_ratio.value_or(0.25);
-  }
-  return covering;
-}
-
-/// link_coverings=: a link-covering file (str or os.PathLike), or a dict {link: {material or
-/// modulus (and poisson), thickness}} with the file's keys and values.
-std::vector<scene_file::LinkCoveringEntry> ReadLinkCoverings(const py::object& value) {
+/// link_coverings=: a link-covering file (str or os.PathLike, read by the library), or a dict
+/// {link: {material or modulus (and poisson), thickness}} with the file's keys and values.
+std::variant<std::string, std::vector<scene_file::LinkCoveringEntry>> ReadLinkCoverings(const py::object& value) {
   if (!py::isinstance<py::dict>(value)) {
     if (!py::isinstance<py::str>(value) && !py::hasattr(value, "__fspath__")) {
       throw std::invalid_argument("link_coverings: expected a link-covering file (a path) or a dict {link: {material "
                                   "or modulus (and poisson), thickness}} (got " +
                                   py::repr(value).cast<std::string>() + ")");
     }
-    return scene_file::ReadLinkCoverings(Path(value));
+    return Path(value);
   }
   std::vector<scene_file::LinkCoveringEntry> entries;
   for (const auto& [key, item] : value.cast<py::dict>()) {
@@ -156,74 +144,68 @@ std::vector<scene_file::LinkCoveringEntry> ReadLinkCoverings(const py::object& v
   return entries;
 }
 
+/// The design's keywords.
+void SetDesignKeywords(const py::kwargs& kwargs, audit::AuditInputs& in) {
+  in.design = Flag(kwargs, "design");
+  in.design_materials = Names(kwargs, "materials");
+  in.families = Names(kwargs, "families");
+  in.allow_unknown_strength = Flag(kwargs, "allow_unknown_strength");
+  if (const auto v = Option(kwargs, "max_thickness")) {
+    in.max_thickness_m = ReadSceneQuantity(*v, quantity_specs::kCoveringThickness, "max_thickness");
+  }
+  if (const auto v = Option(kwargs, "thickness_step")) {
+    in.thickness_step_m = ReadSceneQuantity(*v, quantity_specs::kThicknessStep, "thickness_step");
+  }
+}
+
 py::object Audit(const py::object& urdf, const std::string& tip, const py::object& trajectory,
                  const std::optional<std::string>& base, const std::optional<std::string>& urdf_text,
                  const SceneInputs& inputs, const py::kwargs& kwargs) {
-  for (const char* keyword : {"robot_mass", "speed", "robot_radius"}) {
-    if (inputs.Gave(keyword)) {
-      throw std::invalid_argument(std::string("audit() takes the robot's ") + keyword +
-                                  " from each surface point and sample; drop " + keyword + " from the scene");
-    }
-  }
   py::kwargs region_kwargs = kwargs;
-  if (!Option(region_kwargs, "body_region")) region_kwargs["body_region"] = "all";
+  if (!Option(region_kwargs, "body_region")) region_kwargs["body_region"] = audit::kDefaultBodyRegions;
   const BodyRegionSelection regions = SelectBodyRegions(inputs, region_kwargs);
-  if (regions.contact != ContactType::kTransient) {
-    throw std::invalid_argument("contact='clamped': an audit judges the free (transient) impacts of a motion");
-  }
 
-  const robot::KinematicChain chain = Chain(urdf, urdf_text, tip, base).WithPayload(ReadPayload(kwargs));
-  robot::SurfaceOptions surface_options;
-  if (const auto spacing = Length(kwargs, "surface_spacing")) surface_options.spacing_m = *spacing;
-  surface_options.box_edge_radius_m = Length(kwargs, "box_edge_radius");
-  if (const auto file = Option(kwargs, "surface_file")) surface_options.surface_file = Path(*file);
-  robot::RobotSurface surface = urdf_text ? robot::SurfaceFromUrdfString(*urdf_text, chain, surface_options, "urdf_text")
-                                          : robot::SurfaceFromUrdfFile(Path(urdf), chain, surface_options);
-  const robot::JointTrajectory joints = Trajectory(trajectory, chain.joint_count());
-
-  optim::AuditSetup setup(chain, std::move(surface));
-  setup.covering = optim::AuditCovering{inputs.scene.covering, regions.judge.material};
-  setup.regions = regions.limits;
-  setup.SetReactionAndHead(inputs.scene, regions.head);
-  setup.contact_area_m2 = regions.contact_area_m2;
-  setup.flat_face_radius_m = Length(kwargs, "flat_face_radius");
-  setup.rule = regions.judge.rule;
-  setup.motion.reflected_mass = ReflectedMassOptions(Flag(kwargs, "ignore_joint_limits"));
-  if (const auto value = Option(kwargs, "link_coverings")) {
-    for (const scene_file::LinkCoveringEntry& entry : ReadLinkCoverings(*value)) {
-      setup.link_coverings[entry.link] = CoveringOf(entry);
-    }
+  // The library's input names are Python's keywords (AuditFieldNames' defaults).
+  audit::AuditInputs in(Chain(urdf, urdf_text, tip, base).WithPayload(ReadPayload(kwargs)),
+                        urdf_text ? std::string() : Path(urdf));
+  in.urdf_text = urdf_text;
+  if (const auto spacing = Length(kwargs, "surface_spacing")) in.surface.spacing_m = *spacing;
+  in.surface.box_edge_radius_m = Length(kwargs, "box_edge_radius");
+  if (const auto file = Option(kwargs, "surface_file")) in.surface.surface_file = Path(*file);
+  in.flat_face_radius_m = Length(kwargs, "flat_face_radius");
+  in.reflected_mass = ReflectedMassOptions(Flag(kwargs, "ignore_joint_limits"));
+  if (py::isinstance<py::dict>(trajectory)) {
+    in.trajectory = Trajectory(trajectory, in.chain.joint_count());
+  } else {
+    in.trajectory = Path(trajectory);
   }
-
-  optim::AuditOptions options;
-  if (const auto keep = Option(kwargs, "keep_ratio_over_time")) options.keep_ratio_over_time = Bool(*keep, "keep_ratio_over_time");
-  if (Flag(kwargs, "design")) {
-    try {
-      options.design.materials =
-          optim::SelectCandidates(materials::Catalog::BuiltIn(), Names(kwargs, "materials"), Names(kwargs, "families"));
-    } catch (const std::invalid_argument& e) {
-      const std::string what = e.what();
-      throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
-    }
-    setup.rule.unknown_strength_allowed = Flag(kwargs, "allow_unknown_strength");  // optimize's rule (cli/audit.cpp)
-    if (const auto v = Option(kwargs, "max_thickness")) {
-      options.design.max_thickness_m = ReadSceneQuantity(*v, quantity_specs::kCoveringThickness, "max_thickness");
-    }
-    if (const auto v = Option(kwargs, "thickness_step")) {
-      options.design.thickness_step_m = ReadSceneQuantity(*v, quantity_specs::kThicknessStep, "thickness_step");
-    }
+  in.scene = inputs.scene;
+  for (const auto& [keyword, field] : {std::pair{"robot_mass", "robot.mass"}, std::pair{"speed", "robot.speed"},
+                                       std::pair{"robot_radius", "robot.radius"}}) {
+    if (inputs.Gave(keyword)) in.given_robot_inputs.emplace(field, py::str(inputs.given[keyword]).cast<std::string>());
   }
-  optim::AuditResult result;
+  in.regions = regions.limits;
+  in.contact = regions.contact;
+  in.contact_area_m2 = regions.contact_area_m2;
+  in.head = regions.head;
+  in.judge = regions.judge;
+  if (const auto value = Option(kwargs, "link_coverings")) in.link_coverings = ReadLinkCoverings(*value);
+  SetDesignKeywords(kwargs, in);
+  if (const auto keep = Option(kwargs, "keep_ratio_over_time")) in.keep_ratio_over_time = Bool(*keep, "keep_ratio_over_time");
+  in.scene_warnings = InputAndCrushWarnings(inputs);
+  const audit::AssembledAudit assembled = audit::AssembleAudit(in);
+
+  audit::AuditResult result;
   try {
     py::gil_scoped_release release;
-    result = optim::Audit(setup, joints, options);
+    result = audit::Audit(assembled.setup, assembled.trajectory, assembled.options);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(inputs.Attributed(e.what()));
   }
-  std::vector<std::string> warnings = InputAndCrushWarnings(inputs);
-  py::dict d = JsonToPython(report::AuditJson(setup, result, warnings, -1));
+  py::dict d = JsonToPython(report::AuditJson(assembled.setup, result, assembled.input_warnings, -1));
   if (result.ratio_over_time.empty()) return d;  // the heat map needs keep_ratio_over_time=True
-  return WithReportCharts(std::move(d), [result, sf = setup.rule.safety_factor, name = TrajectoryName(trajectory)] {
+  return WithReportCharts(std::move(d), [result, sf = assembled.setup.rule.safety_factor,
+                                         name = TrajectoryName(trajectory)] {
     return std::vector{report::AuditHeatMap(result, sf, name)};
   });
 }

@@ -77,6 +77,37 @@ def test_audit_bad_input_names_the_keyword():
         covopt.audit(FR3, "fr3_link8", PICK, scene=covopt.Scene(**SCENE), body_region="chest", contact="clamped")
 
 
+@pytest.mark.parametrize("keywords, flags, spellings", [
+    # A link-covering file naming a link that is not on the surface.
+    ({"link_coverings": "LINKS"}, ["--link-coverings", "LINKS"], [("link_coverings", "--link-coverings")]),
+    # The robot's mass, which every surface point brings.
+    ({"robot_mass": 5}, ["--robot-mass", "5"], [("robot_mass", "--robot-mass")] * 2),
+    # A design input without the design.
+    ({"families": "foam"}, ["--family", "foam"], [("families", "--family"), ("with design", "with --design")]),
+    # A material of the design not in the catalog.
+    ({"design": True, "materials": "no such foam"}, ["--design", "--design-material", "no such foam"],
+     [("materials", "--design-material")]),
+])
+def test_audit_and_the_cli_assemble_the_audit_by_one_library_call(cli, tmp_path, keywords, flags, spellings):
+    """Both shells hand their inputs to covopt::audit::AssembleAudit: the same bad input gets the
+    same message word for word, each input named by the shell's own spelling."""
+    links = tmp_path / "links.toml"
+    links.write_text('[[link]]\nname = "fr3_hand"\nthickness = 0\n')
+    keywords = {k: str(links) if v == "LINKS" else v for k, v in keywords.items()}
+    flags = [str(links) if f == "LINKS" else f for f in flags]
+    code, out, err = cli("audit", "--urdf", str(FR3), "--tip", "fr3_link8", "--trajectory", str(PICK), *FLAGS,
+                         "--contact-area", "1cm2", "--flat-face-radius", "20mm", *flags)
+    assert code == 2, (out, err)
+    scene = covopt.Scene(**SCENE, **{k: keywords.pop(k) for k in ("robot_mass",) if k in keywords})
+    with pytest.raises(ValueError) as raised:
+        covopt.audit(FR3, "fr3_link8", PICK, scene=scene, contact_area="1cm2", flat_face_radius="20mm", **keywords)
+    message = str(raised.value)
+    for keyword, flag in spellings:  # Python's spelling -> the CLI's, once each
+        assert keyword in message, message
+        message = message.replace(keyword, flag, 1)
+    assert err.count(message) == 1, (message, err)
+
+
 def test_scene_pickles_as_its_keywords():
     import pickle
     scene = covopt.Scene(**SCENE, safety_factor=1.5)

@@ -11,7 +11,7 @@
 
 namespace covopt::report {
 
-GnuplotChart AuditHeatMap(const optim::AuditResult& result, double safety_factor,
+GnuplotChart AuditHeatMap(const audit::AuditResult& result, double safety_factor,
                           const std::string& trajectory_name) {
   const std::size_t links = result.links.size();
   const std::size_t samples = links > 0 ? result.ratio_over_time.size() / links : 0;
@@ -19,7 +19,7 @@ GnuplotChart AuditHeatMap(const optim::AuditResult& result, double safety_factor
   std::string s;
   std::string verdict = std::string(optim::ToString(result.status));
   if (result.limiting_cell) {
-    const optim::AuditCell& c = result.cells[*result.limiting_cell];
+    const audit::AuditCell& c = result.cells[*result.limiting_cell];
     verdict += fmt::format(", safe speed scale {:.4g} ({}, {}, t = {:.4g} s)", result.safe_speed_scale,
                            result.links[c.link], result.regions[c.region], c.time_s);
   }
@@ -50,7 +50,7 @@ GnuplotChart AuditHeatMap(const optim::AuditResult& result, double safety_factor
   s += ")\nset autoscale xfix\nset key below\nset bmargin 5\n";
   s += "plot $map using 1:2:3 with image notitle";
   if (result.limiting_cell) {
-    const optim::AuditCell& c = result.cells[*result.limiting_cell];
+    const audit::AuditCell& c = result.cells[*result.limiting_cell];
     s += fmt::format(", '-' using 1:2 with points pointtype 6 pointsize 2 linewidth 2 linecolor rgb '#000000' "
                      "title {}\n{} {}\ne",
                      GnuplotQuoted(fmt::format("sets the scale: {} against {}", result.links[c.link],

@@ -28,7 +28,7 @@ ordered_json Vector(const Eigen::Vector3d& v) {
 }
 
 /// A cell with its point's coordinates split (the CSV's columns, in kCellColumns order).
-ordered_json FlatCell(const optim::AuditResult& result, const optim::AuditCell& cell) {
+ordered_json FlatCell(const audit::AuditResult& result, const audit::AuditCell& cell) {
   const bool moved = cell.sample.has_value();
   const auto when_moved = [moved](ordered_json value) { return moved ? std::move(value) : ordered_json(nullptr); };
   ordered_json j;
@@ -64,7 +64,7 @@ std::string CsvText(const ordered_json& value) {
   return FormatShortest(value.get<double>());
 }
 
-ordered_json CoveringJson(const std::string& link, const optim::AuditCovering& covering, const char* from) {
+ordered_json CoveringJson(const std::string& link, const audit::AuditCovering& covering, const char* from) {
   ordered_json j;
   j["link"] = link;
   j["material"] = covering.material && covering.covering.thickness_m > 0.0 ? ordered_json(covering.material->name)
@@ -113,7 +113,7 @@ ordered_json SurfaceJson(const robot::RobotSurface& surface_in) {
 
 std::span<const std::string_view> AuditCellColumns() noexcept { return kCellColumns; }
 
-std::vector<std::string> AuditCellCsvCells(const optim::AuditResult& result, const optim::AuditCell& cell) {
+std::vector<std::string> AuditCellCsvCells(const audit::AuditResult& result, const audit::AuditCell& cell) {
   const ordered_json flat = FlatCell(result, cell);
   std::vector<std::string> cells;
   for (const auto& [key, value] : flat.items()) cells.push_back(CsvText(value));
@@ -129,7 +129,7 @@ std::vector<std::string> AuditSampleColumns(std::span<const std::string> links) 
   return columns;
 }
 
-std::vector<std::string> AuditSampleCsvCells(const optim::AuditSampleRow& row, std::span<const std::string> regions) {
+std::vector<std::string> AuditSampleCsvCells(const audit::AuditSampleRow& row, std::span<const std::string> regions) {
   std::vector<std::string> cells{std::to_string(row.sample), FormatShortest(row.time_s)};
   for (std::size_t i = 0; i < row.link_ratio.size(); ++i) {
     const double ratio = row.link_ratio[i];
@@ -140,7 +140,7 @@ std::vector<std::string> AuditSampleCsvCells(const optim::AuditSampleRow& row, s
   return cells;
 }
 
-std::string AuditJson(const optim::AuditSetup& setup, const optim::AuditResult& result,
+std::string AuditJson(const audit::AuditSetup& setup, const audit::AuditResult& result,
                       std::span<const std::string> input_warnings, int indent) {
   const bool head = setup.head.has_value();
   ordered_json j;
@@ -148,7 +148,7 @@ std::string AuditJson(const optim::AuditSetup& setup, const optim::AuditResult& 
   j["message"] = result.message;
   j["safe_speed_scale"] = internal::Number(result.safe_speed_scale);
   if (result.limiting_cell && *result.limiting_cell < result.cells.size()) {
-    const optim::AuditCell& cell = result.cells[*result.limiting_cell];
+    const audit::AuditCell& cell = result.cells[*result.limiting_cell];
     ordered_json limiting;
     limiting["link"] = result.links.at(cell.link);
     limiting["region"] = result.regions.at(cell.region);
@@ -180,7 +180,7 @@ std::string AuditJson(const optim::AuditSetup& setup, const optim::AuditResult& 
   j["coverings"] = std::move(coverings);
 
   ordered_json cells = ordered_json::array();
-  for (const optim::AuditCell& cell : result.cells) {
+  for (const audit::AuditCell& cell : result.cells) {
     ordered_json flat = FlatCell(result, cell);
     // The point's coordinates as vectors in the JSON (the CSV splits them).
     const bool moved = cell.sample.has_value();
@@ -215,7 +215,7 @@ std::string AuditJson(const optim::AuditSetup& setup, const optim::AuditResult& 
   }
 
   ordered_json designs = ordered_json::array();
-  for (const optim::AuditLinkDesign& design : result.link_designs) {
+  for (const audit::AuditLinkDesign& design : result.link_designs) {
     ordered_json d;
     d["link"] = result.links.at(design.link);
     d["material"] = design.material ? ordered_json(design.material->name) : ordered_json(nullptr);

@@ -1,5 +1,5 @@
 // `covopt audit` run in-process: that --json is the library's audit of the same input to the
-// bit (optim::Audit, report::AuditJson) and has the documented shape; that the scale is the
+// bit (audit::Audit, report::AuditJson) and has the documented shape; that the scale is the
 // minimum over links and regions; that --csv and the streamed --samples-csv agree with it; that
 // a link covering reaches its link only; that the same path at half the speed raises no
 // ratio; that the per-link design is safe when audited again; --plot; and that bad input is
@@ -20,7 +20,7 @@
 
 #include "cli_test_support.hpp"
 #include "covopt/materials/body_regions.hpp"
-#include "covopt/optim/audit.hpp"
+#include "covopt/audit/audit.hpp"
 #include "covopt/report/audit_json.hpp"
 #include "covopt/robot.hpp"
 #include "plot.hpp"
@@ -93,7 +93,7 @@ TEST_CASE("audit --json is the library's audit of the same input, to the bit, in
 
   const auto chain = covopt::robot::KinematicChain::FromUrdfFile(kFr3, {"", "fr3_link8"});
   covopt::robot::SurfaceOptions surface_options;
-  covopt::optim::AuditSetup setup(chain, covopt::robot::SurfaceFromUrdfFile(kFr3, chain, surface_options));
+  covopt::audit::AuditSetup setup(chain, covopt::robot::SurfaceFromUrdfFile(kFr3, chain, surface_options));
   setup.covering.covering = covopt::CoveringSpec{0.5e6, 0.45, 0.010};
   setup.regions = covopt::materials::BodyRegionTable::BuiltIn().AllLimits(covopt::ContactType::kTransient);
   setup.head = covopt::Scene{};
@@ -103,7 +103,7 @@ TEST_CASE("audit --json is the library's audit of the same input, to the bit, in
   // A covering given by its modulus has no known strength: judged without the crush check.
   setup.rule.unknown_strength_allowed = true;
   const auto trajectory = covopt::robot::ReadJointTrajectory(kPick, chain.joint_count());
-  const covopt::optim::AuditResult result = covopt::optim::Audit(setup, trajectory);
+  const covopt::audit::AuditResult result = covopt::audit::Audit(setup, trajectory);
   const json library = json::parse(covopt::report::AuditJson(setup, result));
   for (const auto& [key, value] : library.items()) {
     INFO(key);

@@ -1,7 +1,7 @@
 #pragma once
 /// @file poisson_ratio.hpp
 /// The Poisson ratios the model takes, one check for every reader: a Scene's (covering.poisson,
-/// --covering-poisson, ImpactModel::FromScene), an audit's coverings (optim::Audit) and a
+/// --covering-poisson, ImpactModel::FromScene), an audit's coverings (audit::Audit) and a
 /// link-coverings file's poisson (scene_file::ReadLinkCoverings).
 
 #include <string_view>

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "covopt/optim/audit.hpp"
+#include "covopt/audit/audit.hpp"
 
 namespace covopt::report {
 
@@ -26,7 +26,7 @@ std::span<const std::string_view> AuditCellColumns() noexcept;
 
 /// One cell's fields as CSV text, in AuditCellColumns order: numbers in shortest round-trip
 /// form, "" for null.
-std::vector<std::string> AuditCellCsvCells(const optim::AuditResult& result, const optim::AuditCell& cell);
+std::vector<std::string> AuditCellCsvCells(const audit::AuditResult& result, const audit::AuditCell& cell);
 
 /// The header of the per-sample stream (`covopt audit --samples-csv`): sample, time_s, then
 /// per link "<link>_ratio" and "<link>_region".
@@ -34,7 +34,7 @@ std::vector<std::string> AuditSampleColumns(std::span<const std::string> links);
 
 /// One streamed sample's fields (AuditSampleColumns order); a link at rest has ratio 0 and an
 /// empty region.
-std::vector<std::string> AuditSampleCsvCells(const optim::AuditSampleRow& row, std::span<const std::string> regions);
+std::vector<std::string> AuditSampleCsvCells(const audit::AuditSampleRow& row, std::span<const std::string> regions);
 
 /// The audit as one JSON object:
 ///   status ("safe", "unsafe", "at-rest"), message, safe_speed_scale (null: at rest
@@ -51,7 +51,7 @@ std::vector<std::string> AuditSampleCsvCells(const optim::AuditSampleRow& row, s
 ///   governing_ratio, message}] (empty without a design), warnings: `input_warnings`, then the
 ///   audit's (the surface's among them).
 /// `indent` as in nlohmann's dump: 2 (the CLI's), or -1 for one line.
-std::string AuditJson(const optim::AuditSetup& setup, const optim::AuditResult& result,
+std::string AuditJson(const audit::AuditSetup& setup, const audit::AuditResult& result,
                       std::span<const std::string> input_warnings = {}, int indent = 2);
 
 }  // namespace covopt::report

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "covopt/core/scene.hpp"
-#include "covopt/optim/audit.hpp"
+#include "covopt/audit/audit.hpp"
 #include "covopt/optim/design_map.hpp"
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/optim/trajectory_check.hpp"
@@ -131,7 +131,7 @@ GnuplotChart TrajectoryChart(const TrajectoryChartInput& input);
 /// which must be kept), time across, links up, green below the limit 1/safety_factor and
 /// red above, the limiting cell marked; the title names `trajectory_name`, the verdict and
 /// the limiting link and region. 1100 wide.
-GnuplotChart AuditHeatMap(const optim::AuditResult& result, double safety_factor,
+GnuplotChart AuditHeatMap(const audit::AuditResult& result, double safety_factor,
                           const std::string& trajectory_name);
 
 /// `optimize`: the design map (optim::DesignMap): the governing ratio over covering thickness

@@ -1,7 +1,7 @@
 #pragma once
 /// @file link_kinematics.hpp
 /// The motion of any point of any chain link at one sample (q, q̇): its position, velocity and
-/// the reflected mass along its velocity. The whole-robot audit (covopt/optim/audit.hpp) asks
+/// the reflected mass along its velocity. The whole-robot audit (covopt/audit/audit.hpp) asks
 /// this for every surface point (surface.hpp) at every trajectory sample, so the work is split:
 ///
 ///     ChainSampleKinematics kin(chain);        // once: storage for the chain's size

@@ -1,4 +1,4 @@
-// The whole-robot audit (optim/audit.hpp, docs/model.md §14): the E* shortcut against the
+// The whole-robot audit (audit/audit.hpp, docs/model.md §14): the E* shortcut against the
 // direct speed limits and verdicts at random point-samples, a one-joint arm against its closed
 // form, links that never move, the same path at half the speed, the scale as the minimum over
 // the cells and as the ratio rule, the streamed rows, the per-link design checked again, and
@@ -19,7 +19,7 @@
 
 #include <covopt/materials/body_regions.hpp>
 #include <covopt/materials/catalog.hpp>
-#include <covopt/optim/audit.hpp>
+#include <covopt/audit/audit.hpp>
 #include <covopt/optim/body_region_check.hpp>
 #include <covopt/optim/design.hpp>
 #include <covopt/optim/speed_limit.hpp>
@@ -35,6 +35,7 @@ using covopt::BodyContactScene;
 using covopt::ContactType;
 using covopt::materials::BodyLimits;
 using covopt::materials::BodyRegionTable;
+namespace ca = covopt::audit;
 namespace co = covopt::optim;
 namespace rb = covopt::robot;
 using covopt::robot::testing::MessageOf;
@@ -77,9 +78,9 @@ const Fr3& TheFr3() {
 }
 
 /// The FR3 with a catalog covering on every link, `regions` and the head.
-co::AuditSetup Fr3Setup(std::vector<BodyLimits> regions, bool head = true) {
+ca::AuditSetup Fr3Setup(std::vector<BodyLimits> regions, bool head = true) {
   const Fr3& fr3 = TheFr3();
-  co::AuditSetup setup{fr3.chain, fr3.surface};
+  ca::AuditSetup setup{fr3.chain, fr3.surface};
   const co::CandidateMaterial foam = Material("PU foam PORON 4701-30 320");
   setup.covering = {covopt::CoveringSpec{foam.youngs_modulus_Pa, foam.poisson_ratio, 0.01}, foam};
   setup.regions = std::move(regions);
@@ -143,7 +144,7 @@ rb::JointTrajectory AtSpeed(const rb::JointTrajectory& t, double factor) {
 }
 
 /// The direct max safe speed at one point-sample against region r (the head last).
-double DirectMaxSafeSpeed(const co::AuditSetup& setup, const co::AuditCovering& covering, double radius_m,
+double DirectMaxSafeSpeed(const ca::AuditSetup& setup, const ca::AuditCovering& covering, double radius_m,
                           double mass_kg, std::size_t r) {
   const bool covered = covering.covering.thickness_m > 0.0;
   if (r < setup.regions.size()) {
@@ -179,10 +180,10 @@ TEST_CASE("the E* shortcut equals the direct speed limit and verdict at random F
   std::mt19937 rng(20261126);
   for (const double sf : {1.0, 2.0}) {
     for (const bool covered : {true, false}) {
-      co::AuditSetup setup = Fr3Setup(AllTransient());
+      ca::AuditSetup setup = Fr3Setup(AllTransient());
       setup.rule.safety_factor = sf;
       setup.contact_area_m2 = 1e-4;
-      if (!covered) setup.covering = co::AuditCovering{covopt::CoveringSpec{1e6, 0.3, 0.0}, std::nullopt};
+      if (!covered) setup.covering = ca::AuditCovering{covopt::CoveringSpec{1e6, 0.3, 0.0}, std::nullopt};
       int checked = 0;
       for (int trial = 0; trial < 12; ++trial) {
         // A random moving sample, link and point: the audit of that point alone at that sample.
@@ -190,18 +191,18 @@ TEST_CASE("the E* shortcut equals the direct speed limit and verdict at random F
         const std::size_t l = 1 + rng() % (fr3.surface.links.size() - 1);  // link0 never moves
         const rb::LinkSurface& link = fr3.surface.links[l];
         const std::size_t p = rng() % link.points.size();
-        co::AuditSetup one = setup;
+        ca::AuditSetup one = setup;
         rb::LinkSurface single = link;
         single.points = {link.points[p]};
         one.surface.links = {single};
         const rb::JointTrajectory sample =
             Trajectory({fr3.pick.time_s[i]}, {fr3.pick.positions[i]}, {fr3.pick.velocities[i]});
-        const co::AuditResult result = co::Audit(one, sample);
+        const ca::AuditResult result = ca::Audit(one, sample);
         kin.Update(fr3.pick.positions[i], fr3.pick.velocities[i]);
         const rb::PointMotion m = kin.Point(*kin.LinkIndex(link.link), link.points[p].position_m);
         REQUIRE(m.moving);
         for (std::size_t r = 0; r < result.regions.size(); ++r) {
-          const co::AuditCell& c = result.cell(0, r);
+          const ca::AuditCell& c = result.cell(0, r);
           REQUIRE(c.sample == std::size_t{0});
           CHECK(c.speed_m_per_s == Approx(m.speed_m_per_s).epsilon(1e-12));
           CHECK(c.reflected_mass_kg == Approx(m.reflected_mass_kg).epsilon(1e-12));
@@ -250,7 +251,7 @@ TEST_CASE("a one-joint arm's audit is its closed form: v = ω r, m = I/r², v_ma
   const rb::KinematicChain chain = rb::KinematicChain::FromUrdfString(urdf, {"", "arm"});
   rb::SurfaceOptions options;
   options.spacing_m = 0.02;
-  co::AuditSetup setup{chain, rb::SurfaceFromUrdfString(urdf, chain, options)};
+  ca::AuditSetup setup{chain, rb::SurfaceFromUrdfString(urdf, chain, options)};
   setup.regions = SomeRegions();
   setup.covering.covering = {5e6, 0.3, 0.008};
   setup.head = covopt::Scene{};
@@ -258,10 +259,10 @@ TEST_CASE("a one-joint arm's audit is its closed form: v = ω r, m = I/r², v_ma
   const rb::JointTrajectory t =
       Trajectory({0.0, 0.1}, {Eigen::VectorXd::Constant(1, 0.3), Eigen::VectorXd::Constant(1, 0.45)},
                  {Eigen::VectorXd::Constant(1, omega), Eigen::VectorXd::Constant(1, omega)});
-  const co::AuditResult result = co::Audit(setup, t);
+  const ca::AuditResult result = ca::Audit(setup, t);
   REQUIRE(result.links == std::vector<std::string>{"arm"});
   for (std::size_t r = 0; r < result.regions.size(); ++r) {
-    const co::AuditCell& c = result.cell(0, r);
+    const ca::AuditCell& c = result.cell(0, r);
     REQUIRE(c.sample);
     const double radius = std::hypot(c.point_in_link_m.x(), c.point_in_link_m.y());
     CHECK(c.speed_m_per_s == Approx(omega * radius).epsilon(1e-12));
@@ -282,10 +283,10 @@ TEST_CASE("a one-joint arm's audit is its closed form: v = ω r, m = I/r², v_ma
 TEST_CASE("a link that never moves never limits: ratio 0, scale infinite, no governing sample", "[audit][rest]") {
   // The FR3's link0 sits on the base; on the two-link arm the upper link rests while the
   // elbow turns.
-  const co::AuditResult fr3 = co::Audit(Fr3Setup(SomeRegions()), TheFr3().pick);
+  const ca::AuditResult fr3 = ca::Audit(Fr3Setup(SomeRegions()), TheFr3().pick);
   REQUIRE(fr3.links.front() == "fr3_link0");
   for (std::size_t r = 0; r < fr3.regions.size(); ++r) {
-    const co::AuditCell& c = fr3.cell(0, r);
+    const ca::AuditCell& c = fr3.cell(0, r);
     CHECK(c.governing_ratio == 0.0);
     CHECK(c.speed_scale == kInf);
     CHECK_FALSE(c.sample);
@@ -295,13 +296,13 @@ TEST_CASE("a link that never moves never limits: ratio 0, scale infinite, no gov
 
   const std::string urdf = TwoLinkUrdf(Capsule(0.0, 0.4, 0.05), Capsule(0.0, 0.3, 0.04));
   const rb::KinematicChain chain = rb::KinematicChain::FromUrdfString(urdf, {"", "fore"});
-  co::AuditSetup setup{chain, rb::SurfaceFromUrdfString(urdf, chain)};
+  ca::AuditSetup setup{chain, rb::SurfaceFromUrdfString(urdf, chain)};
   setup.regions = SomeRegions();
   setup.covering.covering = {5e6, 0.3, 0.01};
   Eigen::VectorXd q(2), qd(2);
   q << 0.2, 0.5;
   qd << 0.0, 2.0;
-  const co::AuditResult two = co::Audit(setup, Trajectory({0.0, 0.01}, {q, q}, {qd, qd}));
+  const ca::AuditResult two = ca::Audit(setup, Trajectory({0.0, 0.01}, {q, q}, {qd, qd}));
   REQUIRE(two.links == std::vector<std::string>{"upper", "fore"});
   for (std::size_t r = 0; r < two.regions.size(); ++r) {
     CHECK(two.cell(0, r).governing_ratio == 0.0);
@@ -311,19 +312,19 @@ TEST_CASE("a link that never moves never limits: ratio 0, scale infinite, no gov
   CHECK(two.cells[*two.limiting_cell].link == 1);
   // Nothing moves at all: at rest, scale infinite.
   qd.setZero();
-  const co::AuditResult still = co::Audit(setup, Trajectory({0.0}, {q}, {qd}));
+  const ca::AuditResult still = ca::Audit(setup, Trajectory({0.0}, {q}, {qd}));
   CHECK(still.status == co::TrajectoryCheckStatus::kAtRest);
   CHECK(still.safe_speed_scale == kInf);
   CHECK_FALSE(still.limiting_cell);
 }
 
 TEST_CASE("the same path at half the speed halves every ratio and doubles every scale", "[audit][scaling]") {
-  co::AuditSetup setup = Fr3Setup(AllTransient());
-  const co::AuditResult full = co::Audit(setup, TheFr3().pick);
-  const co::AuditResult half = co::Audit(setup, AtSpeed(TheFr3().pick, 0.5));
+  ca::AuditSetup setup = Fr3Setup(AllTransient());
+  const ca::AuditResult full = ca::Audit(setup, TheFr3().pick);
+  const ca::AuditResult half = ca::Audit(setup, AtSpeed(TheFr3().pick, 0.5));
   REQUIRE(full.cells.size() == half.cells.size());
   for (std::size_t k = 0; k < full.cells.size(); ++k) {
-    const co::AuditCell &a = full.cells[k], &b = half.cells[k];
+    const ca::AuditCell &a = full.cells[k], &b = half.cells[k];
     CHECK(b.governing_ratio <= a.governing_ratio);
     CHECK(b.governing_ratio == Approx(0.5 * a.governing_ratio).epsilon(1e-12));
     if (a.sample) {
@@ -342,12 +343,12 @@ TEST_CASE("the same path at half the speed halves every ratio and doubles every 
 TEST_CASE("the safe speed scale is the minimum over links and regions and the ratio rule 1/(SF max ratio)",
           "[audit][scale]") {
   for (const double sf : {1.0, 1.5, 3.0}) {
-    co::AuditSetup setup = Fr3Setup(AllTransient());
+    ca::AuditSetup setup = Fr3Setup(AllTransient());
     setup.rule.safety_factor = sf;
-    const co::AuditResult result = co::Audit(setup, TheFr3().pick);
+    const ca::AuditResult result = ca::Audit(setup, TheFr3().pick);
     REQUIRE(result.cells.size() == result.links.size() * result.regions.size());
     double min_scale = kInf, max_ratio = 0.0;
-    for (const co::AuditCell& c : result.cells) {
+    for (const ca::AuditCell& c : result.cells) {
       min_scale = std::min(min_scale, c.speed_scale);
       max_ratio = std::max(max_ratio, c.governing_ratio);
       if (c.sample) CHECK(c.speed_scale == Approx(1.0 / (sf * c.governing_ratio)).epsilon(1e-12));
@@ -360,21 +361,21 @@ TEST_CASE("the safe speed scale is the minimum over links and regions and the ra
     CHECK(result.status == (result.safe_speed_scale >= 1.0 ? co::TrajectoryCheckStatus::kSafe
                                                            : co::TrajectoryCheckStatus::kUnsafe));
     // Scaling the program by the scale puts it on the limit: its scale becomes 1.
-    const co::AuditResult scaled = co::Audit(setup, AtSpeed(TheFr3().pick, result.safe_speed_scale));
+    const ca::AuditResult scaled = ca::Audit(setup, AtSpeed(TheFr3().pick, result.safe_speed_scale));
     CHECK(scaled.safe_speed_scale == Approx(1.0).epsilon(1e-12));
   }
 }
 
 TEST_CASE("the streamed rows are the kept rows, and without them the result does not grow", "[audit][stream]") {
-  const co::AuditSetup setup = Fr3Setup(SomeRegions());
-  const co::AuditResult kept = co::Audit(setup, TheFr3().pick);
+  const ca::AuditSetup setup = Fr3Setup(SomeRegions());
+  const ca::AuditResult kept = ca::Audit(setup, TheFr3().pick);
   REQUIRE(kept.ratio_over_time.size() == kept.sample_count * kept.links.size());
   REQUIRE(kept.time_s.size() == kept.sample_count);
-  co::AuditOptions options;
+  ca::AuditOptions options;
   options.keep_ratio_over_time = false;
   std::vector<double> streamed;
   std::size_t next = 0;
-  options.on_sample = [&](const co::AuditSampleRow& row) {
+  options.on_sample = [&](const ca::AuditSampleRow& row) {
     CHECK(row.sample == next++);
     CHECK(row.link_ratio.size() == kept.links.size());
     for (std::size_t l = 0; l < row.link_ratio.size(); ++l) {
@@ -383,7 +384,7 @@ TEST_CASE("the streamed rows are the kept rows, and without them the result does
     }
     streamed.insert(streamed.end(), row.link_ratio.begin(), row.link_ratio.end());
   };
-  const co::AuditResult lean = co::Audit(setup, TheFr3().pick, options);
+  const ca::AuditResult lean = ca::Audit(setup, TheFr3().pick, options);
   CHECK(streamed == kept.ratio_over_time);
   CHECK(lean.ratio_over_time.empty());
   CHECK(lean.time_s.empty());
@@ -397,7 +398,7 @@ TEST_CASE("the streamed rows are the kept rows, and without them the result does
   }
   twice.line_numbers.clear();
   options.on_sample = nullptr;
-  const co::AuditResult longer = co::Audit(setup, twice, options);
+  const ca::AuditResult longer = ca::Audit(setup, twice, options);
   CHECK(longer.sample_count == 2 * lean.sample_count);
   CHECK(longer.cells.size() == lean.cells.size());
   CHECK(longer.ratio_over_time.empty());
@@ -406,27 +407,27 @@ TEST_CASE("the streamed rows are the kept rows, and without them the result does
 
 TEST_CASE("the per-link design is safe at full speed when audited again, and one step thinner is not",
           "[audit][design]") {
-  co::AuditSetup setup = Fr3Setup(SomeRegions());
-  co::AuditOptions options;
+  ca::AuditSetup setup = Fr3Setup(SomeRegions());
+  ca::AuditOptions options;
   options.design.materials = {Material("PU foam PORON 4701-30 320"), Material("neoprene sponge D1056 2C2"),
                               Material("polystyrene foam 27.6")};
-  const co::AuditResult result = co::Audit(setup, TheFr3().pick, options);
+  const ca::AuditResult result = ca::Audit(setup, TheFr3().pick, options);
   REQUIRE(result.link_designs.size() == result.links.size());
   CHECK(result.link_designs[0].message.find("never moves") != std::string::npos);
   CHECK_FALSE(result.link_designs[0].material);
   int designed = 0, thinner_checked = 0;
   for (std::size_t l = 1; l < result.links.size(); ++l) {
-    const co::AuditLinkDesign& d = result.link_designs[l];
+    const ca::AuditLinkDesign& d = result.link_designs[l];
     INFO(result.links[l] << ": " << d.message);
     if (!d.material) continue;
     ++designed;
     REQUIRE(d.thickness_m);
     CHECK(d.governing_ratio * setup.rule.safety_factor <= 1.0);
     // Checked independently: the link at that covering, audited on its own.
-    co::AuditSetup again = setup;
+    ca::AuditSetup again = setup;
     again.link_coverings[result.links[l]] = {
         covopt::CoveringSpec{d.material->youngs_modulus_Pa, d.material->poisson_ratio, *d.thickness_m}, d.material};
-    const co::AuditResult at = co::Audit(again, TheFr3().pick);
+    const ca::AuditResult at = ca::Audit(again, TheFr3().pick);
     double worst = 0.0;
     for (std::size_t r = 0; r < at.regions.size(); ++r) worst = std::max(worst, at.cell(l, r).governing_ratio);
     CHECK(worst == d.governing_ratio);
@@ -436,7 +437,7 @@ TEST_CASE("the per-link design is safe at full speed when audited again, and one
     const double thinner = *d.thickness_m - options.design.thickness_step_m;
     if (thinner >= options.design.min_thickness_m) {
       again.link_coverings[result.links[l]].covering.thickness_m = thinner;
-      const co::AuditResult thin = co::Audit(again, TheFr3().pick);
+      const ca::AuditResult thin = ca::Audit(again, TheFr3().pick);
       double thin_worst = 0.0;
       for (std::size_t r = 0; r < thin.regions.size(); ++r) {
         thin_worst = std::max(thin_worst, thin.cell(l, r).governing_ratio);
@@ -452,66 +453,66 @@ TEST_CASE("the per-link design is safe at full speed when audited again, and one
   unknown.name = "mystery foam";
   unknown.crush_behaviour = covopt::materials::CrushBehaviour::kUnknown;
   options.design.materials = {unknown};
-  const co::AuditResult none = co::Audit(setup, TheFr3().pick, options);
+  const ca::AuditResult none = ca::Audit(setup, TheFr3().pick, options);
   CHECK_FALSE(none.link_designs[3].material);
   CHECK(none.link_designs[3].message.find("mystery foam: compressive strength unknown") != std::string::npos);
 }
 
 TEST_CASE("the audit refuses bad input in one line naming the field", "[audit][bad-input]") {
-  const co::AuditSetup good = Fr3Setup(SomeRegions());
+  const ca::AuditSetup good = Fr3Setup(SomeRegions());
   const rb::JointTrajectory& pick = TheFr3().pick;
   {
-    co::AuditSetup s = good;
+    ca::AuditSetup s = good;
     s.regions.push_back(BodyRegionTable::BuiltIn().Limits("chest", "", ContactType::kClamped));
-    CHECK_THAT(MessageOf([&] { co::Audit(s, pick); }),
+    CHECK_THAT(MessageOf([&] { ca::Audit(s, pick); }),
                Catch::Contains("regions[3]") && Catch::Contains("clamped") && Catch::Contains("transient"));
   }
   {
-    co::AuditSetup s = good;
+    ca::AuditSetup s = good;
     s.link_coverings["fr3_link9"] = s.covering;
-    CHECK_THAT(MessageOf([&] { co::Audit(s, pick); }),
+    CHECK_THAT(MessageOf([&] { ca::Audit(s, pick); }),
                Catch::Contains("link_coverings: 'fr3_link9' is not a link of the surface") &&
                    Catch::Contains("fr3_link7"));
   }
   {
-    co::AuditSetup s = good;
-    s.link_coverings["fr3_link4"] = co::AuditCovering{covopt::CoveringSpec{1e6, 0.3, 0.0}, std::nullopt};
-    CHECK_THAT(MessageOf([&] { co::Audit(s, pick); }),
+    ca::AuditSetup s = good;
+    s.link_coverings["fr3_link4"] = ca::AuditCovering{covopt::CoveringSpec{1e6, 0.3, 0.0}, std::nullopt};
+    CHECK_THAT(MessageOf([&] { ca::Audit(s, pick); }),
                Catch::Contains("contact_area_m2: link 'fr3_link4' is bare"));
     s.contact_area_m2 = 1e-4;
-    CHECK_NOTHROW(co::Audit(s, pick));
+    CHECK_NOTHROW(ca::Audit(s, pick));
     s.regions.clear();  // the head alone needs no area
     s.contact_area_m2 = 0.0;
-    CHECK_NOTHROW(co::Audit(s, pick));
+    CHECK_NOTHROW(ca::Audit(s, pick));
   }
   {
-    co::AuditSetup s = good;
+    ca::AuditSetup s = good;
     s.regions.clear();
     s.head.reset();
-    CHECK_THAT(MessageOf([&] { co::Audit(s, pick); }), Catch::Contains("regions: no body region"));
+    CHECK_THAT(MessageOf([&] { ca::Audit(s, pick); }), Catch::Contains("regions: no body region"));
   }
   {
-    co::AuditSetup s = good;
+    ca::AuditSetup s = good;
     s.covering.covering.thickness_m = -0.01;
-    CHECK_THAT(MessageOf([&] { co::Audit(s, pick); }), Catch::Contains("covering.covering.thickness_m"));
+    CHECK_THAT(MessageOf([&] { ca::Audit(s, pick); }), Catch::Contains("covering.covering.thickness_m"));
     s = good;
     s.rule.safety_factor = 0.5;
-    CHECK_THAT(MessageOf([&] { co::Audit(s, pick); }), Catch::Contains("rule.safety_factor"));
+    CHECK_THAT(MessageOf([&] { ca::Audit(s, pick); }), Catch::Contains("rule.safety_factor"));
     s = good;
     s.head->head.torso_mass_kg = 30.0;
     s.head->head.neck_stiffness_N_per_m = 1e4;
-    CHECK_THAT(MessageOf([&] { co::Audit(s, pick); }), Catch::Contains("head.torso_mass_kg"));
+    CHECK_THAT(MessageOf([&] { ca::Audit(s, pick); }), Catch::Contains("head.torso_mass_kg"));
     s = good;
     s.braking_m_per_s2 = -1.0;
-    CHECK_THAT(MessageOf([&] { co::Audit(s, pick); }), Catch::Contains("braking_m_per_s2 must be in [0, 1e4]"));
+    CHECK_THAT(MessageOf([&] { ca::Audit(s, pick); }), Catch::Contains("braking_m_per_s2 must be in [0, 1e4]"));
   }
   {
     // A sample of the wrong size names the sample.
     rb::JointTrajectory t = pick;
     t.positions[5] = Eigen::VectorXd::Zero(3);
-    CHECK_THAT(MessageOf([&] { co::Audit(good, t); }), Catch::Contains("franka_fr3_pick.csv:"));
+    CHECK_THAT(MessageOf([&] { ca::Audit(good, t); }), Catch::Contains("franka_fr3_pick.csv:"));
     rb::JointTrajectory empty;
-    CHECK_THAT(MessageOf([&] { co::Audit(good, empty); }), Catch::Contains("trajectory: no samples"));
+    CHECK_THAT(MessageOf([&] { ca::Audit(good, empty); }), Catch::Contains("trajectory: no samples"));
   }
   {
     // A covered cylinder's flat end disc needs the radius to judge it at.
@@ -519,18 +520,18 @@ TEST_CASE("the audit refuses bad input in one line naming the field", "[audit][b
         "<collision><origin xyz=\"0.2 0 0\" rpy=\"0 1.5707963267948966 0\"/><geometry><cylinder radius=\"0.04\" "
         "length=\"0.2\"/></geometry></collision>");
     const rb::KinematicChain chain = rb::KinematicChain::FromUrdfString(urdf, {"", "arm"});
-    co::AuditSetup s{chain, rb::SurfaceFromUrdfString(urdf, chain)};
+    ca::AuditSetup s{chain, rb::SurfaceFromUrdfString(urdf, chain)};
     s.regions = SomeRegions();
     s.covering.covering = {5e6, 0.3, 0.01};
     const rb::JointTrajectory t = Trajectory({0.0}, {Eigen::VectorXd::Zero(1)}, {Eigen::VectorXd::Ones(1)});
-    CHECK_THAT(MessageOf([&] { co::Audit(s, t); }),
+    CHECK_THAT(MessageOf([&] { ca::Audit(s, t); }),
                Catch::Contains("flat_face_radius_m: link 'arm' has flat points (cylinder"));
     s.flat_face_radius_m = 0.5;
-    const co::AuditResult judged = co::Audit(s, t);
+    const ca::AuditResult judged = ca::Audit(s, t);
     CHECK(std::any_of(judged.warnings.begin(), judged.warnings.end(),
                       [](const std::string& w) { return w.find("flat points are judged at") != std::string::npos; }));
     s.flat_face_radius_m = -1.0;
-    CHECK_THAT(MessageOf([&] { co::Audit(s, t); }), Catch::Contains("flat_face_radius_m must be in (0, 100]"));
+    CHECK_THAT(MessageOf([&] { ca::Audit(s, t); }), Catch::Contains("flat_face_radius_m must be in (0, 100]"));
   }
 }
 
@@ -542,20 +543,20 @@ TEST_CASE("a surface file's points on a synthetic arm are audited at their radii
   const rb::KinematicChain chain = rb::KinematicChain::FromUrdfString(urdf, {"", "fore"});
   rb::SurfaceOptions options;
   options.surface_file = path;
-  co::AuditSetup setup{chain, rb::SurfaceFromUrdfString(urdf, chain, options)};
+  ca::AuditSetup setup{chain, rb::SurfaceFromUrdfString(urdf, chain, options)};
   std::filesystem::remove(path);
   setup.regions = SomeRegions();
   setup.covering.covering = {5e6, 0.3, 0.01};
   Eigen::VectorXd q(2), qd(2);
   q << 0.0, 0.3;
   qd << 1.2, -0.4;
-  const co::AuditResult result = co::Audit(setup, Trajectory({0.0}, {q}, {qd}));
+  const ca::AuditResult result = ca::Audit(setup, Trajectory({0.0}, {q}, {qd}));
   REQUIRE(result.links == std::vector<std::string>{"upper", "fore"});
   REQUIRE(result.link_point_counts[0] == 2);
   rb::ChainSampleKinematics kin(chain);
   kin.Update(q, qd);
   for (std::size_t r = 0; r < result.regions.size(); ++r) {
-    const co::AuditCell& c = result.cell(0, r);
+    const ca::AuditCell& c = result.cell(0, r);
     REQUIRE(c.sample);
     // The governing point is the one with the lower v_max / v of the two, each at its radius.
     double best = kInf;
@@ -581,7 +582,7 @@ TEST_CASE("a braking robot's audit is the brute-force braked maximum, found by b
   // A few FR3 points on a few samples, every one judged braked on the time path by brute force,
   // against three regions and the head.
   const Fr3& fr3 = TheFr3();
-  co::AuditSetup setup = Fr3Setup(SomeRegions());
+  ca::AuditSetup setup = Fr3Setup(SomeRegions());
   for (rb::LinkSurface& link : setup.surface.links) {
     std::vector<rb::SurfacePoint> some;
     for (std::size_t p = 0; p < link.points.size(); p += 12) some.push_back(link.points[p]);
@@ -593,10 +594,10 @@ TEST_CASE("a braking robot's audit is the brute-force braked maximum, found by b
     some_samples.positions.push_back(fr3.pick.positions[i]);
     some_samples.velocities.push_back(fr3.pick.velocities[i]);
   }
-  const co::AuditResult unbraked = co::Audit(setup, some_samples);
+  const ca::AuditResult unbraked = ca::Audit(setup, some_samples);
   setup.reaction_delay_s = 0.002;
   setup.braking_m_per_s2 = 200.0;
-  const co::AuditResult braked = co::Audit(setup, some_samples);
+  const ca::AuditResult braked = ca::Audit(setup, some_samples);
   REQUIRE(braked.status != co::TrajectoryCheckStatus::kEvaluationFailed);
   const std::size_t n_regions = braked.regions.size();
   REQUIRE(n_regions == 4);
@@ -648,7 +649,7 @@ TEST_CASE("a braking robot's audit is the brute-force braked maximum, found by b
   }
   bool helped = false;
   for (std::size_t k = 0; k < braked.cells.size(); ++k) {
-    const co::AuditCell &b = braked.cells[k], &u = unbraked.cells[k];
+    const ca::AuditCell &b = braked.cells[k], &u = unbraked.cells[k];
     INFO(braked.links[b.link] << ", " << braked.regions[b.region]);
     CHECK(b.governing_ratio == Approx(brute[k]).epsilon(1e-12));
     CHECK(b.governing_ratio <= u.governing_ratio * (1 + 1e-9));

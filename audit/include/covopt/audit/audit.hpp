@@ -18,10 +18,10 @@
 /// ratio is computed on the time path only where the unbraked bound could govern
 /// (branch and bound per link × region): the result is the braked governing ratio, exactly.
 ///
-///     covopt::optim::AuditSetup setup{chain, surface};
+///     covopt::audit::AuditSetup setup{chain, surface};
 ///     setup.regions = table.AllLimits(covopt::ContactType::kTransient);
 ///     setup.head = covopt::Scene{};                         // the head under Park et al.
-///     const auto result = covopt::optim::Audit(setup, trajectory);
+///     const auto result = covopt::audit::Audit(setup, trajectory);
 ///     result.safe_speed_scale;                              // min over links × regions
 
 #include <cstddef>
@@ -42,18 +42,18 @@
 #include <covopt/robot/surface.hpp>
 #include <covopt/robot/trajectory.hpp>
 
-#include "covopt/optim/body_region_check.hpp"
-#include "covopt/optim/covering_design.hpp"
-#include "covopt/optim/trajectory_check.hpp"
+#include <covopt/optim/body_region_check.hpp>
+#include <covopt/optim/covering_design.hpp>
+#include <covopt/optim/trajectory_check.hpp>
 
-namespace covopt::optim {
+namespace covopt::audit {
 
 /// The covering of a link: a catalog material (its crush data then count) or a modulus.
 struct AuditCovering {
   /// Modulus, Poisson ratio and thickness; thickness 0: the bare link.
   CoveringSpec covering{27.6e6, 0.25, 0.0};
   /// The catalog material, when it is one (its name, crush behaviour and strength).
-  std::optional<CandidateMaterial> material;
+  std::optional<optim::CandidateMaterial> material;
 };
 
 /// What an audit judges. The chain, its surface and the exposed regions.
@@ -98,7 +98,7 @@ struct AuditSetup {
   /// bare link's flat points need none (its force and pressure do not read the radius).
   std::optional<double> flat_face_radius_m;
   /// Safety factor, criterion, crushing, unknown strengths.
-  DesignRule rule;
+  optim::DesignRule rule;
   /// The robot's reaction after first contact [s] and its braking deceleration [m/s²]
   /// (both 0: it does not brake), for every region and the head (docs/model.md §10.2).
   double reaction_delay_s = 0.0;
@@ -110,7 +110,7 @@ struct AuditSetup {
 /// The per-link design: the catalog materials to try (SelectCandidates order), and the
 /// thickness scan. Empty materials: no design.
 struct AuditDesignOptions {
-  std::vector<CandidateMaterial> materials;
+  std::vector<optim::CandidateMaterial> materials;
   double min_thickness_m = 0.1e-3;
   double max_thickness_m = 0.05;
   int thickness_scan_points = 250;
@@ -131,14 +131,15 @@ struct AuditCell {
   /// contusion (surface stress and energy density of the skin) → kPressure, the covering's
   /// travel → kFullCompression, crush → kCrush (head_criterion has the head's own). kNone
   /// where v_max is the model's 100 m/s ceiling (nothing binds below it).
-  BodyLimitKind binding = BodyLimitKind::kNone;
-  /// The head's row only: its criterion (LimitingCriterion::kNone on a body region's row).
-  LimitingCriterion head_criterion = LimitingCriterion::kNone;
+  optim::BodyLimitKind binding = optim::BodyLimitKind::kNone;
+  /// The head's row only: its criterion (optim::LimitingCriterion::kNone on a body region's row).
+  optim::LimitingCriterion head_criterion = optim::LimitingCriterion::kNone;
   /// The binding criterion's name, as every output shows it: the head's own
-  /// ("laceration", "contusion", "full-compression", "crush") on the head's row, else
+  /// ("laceration", "contusion", "fracture", "full-compression", "crush") on the head's row, else
   /// ToString(binding) ("force", "pressure", ...). The head model has no pressure limit.
   std::string_view binding_name() const noexcept {
-    return head_criterion != LimitingCriterion::kNone ? ToString(head_criterion) : ToString(binding);
+    return head_criterion != optim::LimitingCriterion::kNone ? optim::ToString(head_criterion)
+                                                             : optim::ToString(binding);
   }
   /// The governing sample (index, time [s]) and point (index into the link's points, its
   /// position in the link frame and in the base frame [m]); empty when the link never moves.
@@ -159,7 +160,7 @@ struct AuditCell {
 /// against every region (and the head), checked again by a second audit of that link.
 struct AuditLinkDesign {
   std::size_t link = 0;
-  std::optional<CandidateMaterial> material;  ///< empty: none in range (or no need: see message)
+  std::optional<optim::CandidateMaterial> material;  ///< empty: none in range (or no need: see message)
   std::optional<double> thickness_m;          ///< rounded up to the step
   double governing_ratio = 0.0;               ///< re-checked, at that covering [-]
   std::string message;
@@ -189,7 +190,7 @@ struct AuditOptions {
 
 /// The answer of Audit.
 struct AuditResult {
-  TrajectoryCheckStatus status = TrajectoryCheckStatus::kAtRest;  ///< safe, unsafe, at-rest
+  optim::TrajectoryCheckStatus status = optim::TrajectoryCheckStatus::kAtRest;  ///< safe, unsafe, at-rest
   std::vector<std::string> links;    ///< the surface's links, base to tip
   std::vector<std::size_t> link_point_counts;
   /// "chest (sternum)", ..., and "head (Park et al. 2011)" last when the head is judged.
@@ -216,6 +217,10 @@ struct AuditResult {
   }
 };
 
+/// The names of the regions an audit of `setup` judges, in AuditResult::regions' order (known
+/// before it runs: the streamed rows' header).
+std::vector<std::string> AuditRegionNames(const AuditSetup& setup);
+
 /// Audits `trajectory` (its samples are checked as ContactMotion checks them).
 /// @throws std::invalid_argument naming the field: no regions and no head, a clamped region, a
 ///         link covering for a link not on the surface, a bare link without a contact area, a
@@ -224,4 +229,4 @@ struct AuditResult {
 AuditResult Audit(const AuditSetup& setup, const robot::JointTrajectory& trajectory,
                   const AuditOptions& options = {});
 
-}  // namespace covopt::optim
+}  // namespace covopt::audit
