@@ -78,7 +78,7 @@ TEST_CASE("Verdict: the covering's design rules are separate from the injury ver
   CHECK(crushed.governing_ratio() == Approx(18.75));
 }
 
-TEST_CASE("Verdict: an unknown limit counted fails without governing; a failed evaluation is never safe",
+TEST_CASE("Verdict: an unknown limit counted fails without governing, and a failed evaluation is never safe",
           "[verdict]") {
   Verdict v = TwoInjuries(1.0);
   v.Add("crush", CriterionPart::kDesignRule, "Pa", 1e5, std::numeric_limits<double>::quiet_NaN(),

@@ -44,7 +44,7 @@ std::string MessageOf(const TargetRequest& request) {
 
 }  // namespace
 
-TEST_CASE("targets: nothing named is no target; a contact input without a region is refused") {
+TEST_CASE("targets: nothing named is no target, and a contact input without a region is refused") {
   CHECK_FALSE(ResolveTargets(TargetRequest{}).has_value());
   TargetRequest contact;
   contact.contact = "clamped";
