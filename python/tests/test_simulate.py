@@ -141,7 +141,7 @@ def test_bad_input_is_a_value_error_with_the_clis_message(cli):
     ({"thresholds": "paper"}, ["thresholds", "'cumulative' or 'literal'", "paper"]),
     ({"safety_factor": 0.5}, ["safety_factor must be in [1, 100]", "0.5"]),
     ({"head_area": "cheek"}, ["head_area must be one of frontal, temporo-parietal, nasal", '"cheek"']),
-    ({"head_area": 3}, ["head_area must be one of frontal", "(got 3)"]),
+    ({"head_area": 3}, ["head_area must be one of frontal", '(got "3")']),
     ({"method": "euler"}, ["method: expected exact, cvode or one of", "euler"]),
     ({"method": "exact", "history": True}, ["method='exact' computes no time history"]),
     ({"rtol": 1e-6}, ["rtol applies to the time path only"]),
