@@ -242,12 +242,12 @@ void PrintSweepSummary(std::ostream& out, const SweepRun& run, const covopt::Swe
                  ? std::string()
                  : fmt::format("; {} on the time path (no energy integral)", result.time_path_rows));
   if (valid > 0) {
-    // With a safety factor s, a ratio above 1/s is unsafe (InputWarnings says so).
-    fmt::print(out, "Safe    {} ({:.1f} %); laceration ratio > {:.4g} at {} ({:.1f} %), "
-                    "contusion ratio > {:.4g} at {} ({:.1f} %)\n",
-               result.safe, percent(result.safe), 1.0 / plan.safety_factor,
+    // The library's counts (core::Sweep judges each row under the safety factor).
+    fmt::print(out, "Safe    {} ({:.1f} %); laceration over its {}limit at {} ({:.1f} %), "
+                    "contusion over its {}limit at {} ({:.1f} %)\n",
+               result.safe, percent(result.safe), plan.safety_factor > 1.0 ? "derated " : "",
                result.laceration_unsafe, percent(result.laceration_unsafe),
-               1.0 / plan.safety_factor, result.contusion_unsafe,
+               plan.safety_factor > 1.0 ? "derated " : "", result.contusion_unsafe,
                percent(result.contusion_unsafe));
     // The design criterion: safe, and a covering not fully compressed (a bare robot has
     // no covering to bottom out, so safe is enough for it).
