@@ -44,6 +44,7 @@
 #include "covopt/optim/design.hpp"
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/report/design_json.hpp"
+#include "covopt/report/history_csv.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
 #include "covopt/core/scene_fields.hpp"
@@ -363,27 +364,10 @@ SolveOptions ReadSolveOptions(const py::dict& kwargs, const Scene& scene) {
 }
 
 /// The columns of `--history` as numpy arrays (the extended ones beyond the two-mass model).
-py::dict HistoryColumns(const std::vector<HistorySample>& h, const ImpactModel& model, const Scene& scene) {
+py::dict HistoryColumns(const std::vector<HistorySample>& h, const ImpactModel& model) {
   py::dict columns;
-  const auto column = [&](const char* name, auto field) {
-    py::array_t<double> array(static_cast<py::ssize_t>(h.size()));
-    double* data = array.mutable_data();
-    for (std::size_t i = 0; i < h.size(); ++i) data[i] = field(h[i]);
-    columns[name] = array;
-  };
-  column("time_s", [](const HistorySample& s) { return s.time_s; });
-  column("penetration_m", [](const HistorySample& s) { return s.penetration_m; });
-  column("penetration_rate_m_per_s", [](const HistorySample& s) { return s.penetration_rate_m_per_s; });
-  column("force_N", [](const HistorySample& s) { return s.force_N; });
-  column("compressive_stress_Pa", [](const HistorySample& s) { return s.compressive_stress_Pa; });
-  column("tensile_stress_Pa",
-         [&model](const HistorySample& s) { return model.TensileFromCompressive(s.compressive_stress_Pa); });
-  column("energy_density_J_per_m2", [](const HistorySample& s) { return s.energy_density_J_per_m2; });
-  if (!scene.is_conservative_two_mass()) {  // the CLI's extra --history columns
-    column("robot_speed_m_per_s", [](const HistorySample& s) { return s.robot_speed_m_per_s; });
-    column("head_speed_m_per_s", [](const HistorySample& s) { return s.head_speed_m_per_s; });
-    column("neck_force_N", [](const HistorySample& s) { return s.neck_force_N; });
-    column("dissipated_work_J", [](const HistorySample& s) { return s.dissipated_work_J; });
+  for (const report::HistoryColumn& c : report::ImpactHistoryColumns(model, h)) {
+    columns[py::str(std::string(c.name))] = py::array_t<double>(static_cast<py::ssize_t>(c.values.size()), c.values.data());
   }
   return columns;
 }
@@ -417,7 +401,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   inputs.Judge(report);
   report.input_warnings = InputWarnings(inputs);
   py::dict result = JsonToPython(report::SimulationJson(report, -1));
-  if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model, report.scene);
+  if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model);
   return WithReportCharts(std::move(result), [report] { return std::vector{report::HistoryChart(report)}; });
 }
 
@@ -493,10 +477,6 @@ optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& s
   return oracle;
 }
 
-namespace {
-
-/// optimize's candidates: the built-in catalog and the catalog files (or only those), filtered
-/// by materials= and families=.
 std::vector<optim::CandidateMaterial> Candidates(const py::kwargs& kwargs) {
   const auto get = [&](const char* name) { return Option(kwargs, name); };
   const bool no_builtin = Flag(kwargs, "no_builtin");
@@ -517,6 +497,8 @@ std::vector<optim::CandidateMaterial> Candidates(const py::kwargs& kwargs) {
     throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
   }
 }
+
+namespace {
 
 /// covopt.optimize(**scene, ...): see python/covopt/__init__.py.
 py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
