@@ -100,11 +100,7 @@ std::string RegionText(const py::kwargs& kwargs) {
 void RefuseHeadKeywords(const SceneInputs& inputs, const std::string& region) {
   for (const auto& item : inputs.given) {
     const std::string keyword = py::str(item.first).cast<std::string>();
-    std::string_view field;  // the keyword's field, for the library's list of what a region reads
-    for (const scene_file::FieldSpelling& k : scene_file::SceneInputSpellings(scene_file::ValueStyle::kKeyword)) {
-      if (k.name == keyword) field = k.field;
-    }
-    if (keyword != "ranges" && !scene_file::BodyRegionReads(field)) {
+    if (keyword != "ranges" && !scene_file::BodyRegionReads(FieldOfKeyword(keyword))) {
       throw std::invalid_argument(
           keyword + ": body_region=" + (region.front() == '[' ? region : "'" + region + "'") +
           " does not read it (ISO/TS 15066's model takes robot_mass, speed, robot_radius, the covering, "
@@ -231,15 +227,6 @@ SolveOptions ReadPath(const py::kwargs& kwargs) {
   return options;
 }
 
-/// Solve's option messages name time_path.*: here they are the keywords.
-std::string OptionKeywords(std::string message) {
-  for (const auto& [field, keyword] : {std::pair{"time_path.relative_tolerance", "rtol"},
-                                       {"time_path.absolute_tolerance", "atol"}, {"time_path.max_steps", "max_steps"}}) {
-    if (message.rfind(field, 0) == 0) message = keyword + message.substr(std::string_view(field).size());
-  }
-  return message;
-}
-
 /// One region the call judges (simulate and sweep take one region, not the head or "all").
 materials::ContactTargets OneRegion(const py::kwargs& kwargs, const char* function) {
   materials::ContactTargets targets = ReadTargets(kwargs);
@@ -291,7 +278,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
     judgements.push_back(optim::JudgeBodyContact(scene, limits, judge, options.time_path));
     if (options.path == PathChoice::kTimePath) timed = Solve(optim::WithRegion(scene, limits), options);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(inputs.Attributed(OptionKeywords(AsKeywords(e.what()))));
+    throw std::invalid_argument(inputs.Attributed(SolveKeywords(AsKeywords(e.what()))));
   }
   if (const BodyContactResult& c = judgements.front().contact; !c.ok()) {
     RaiseComputationError("the time path failed on " + limits.region->name + " (" + std::string(ToString(c.status)) +

@@ -68,13 +68,6 @@ std::span<const scene_file::FieldSpelling> SceneKeywords() {
   return scene_file::SceneInputSpellings(scene_file::ValueStyle::kKeyword);
 }
 
-/// The field of a Scene keyword; empty when it is none.
-std::string_view FieldOfKeyword(std::string_view keyword) {
-  for (const scene_file::FieldSpelling& k : SceneKeywords()) {
-    if (k.name == keyword) return k.field;
-  }
-  return {};
-}
 
 std::string Repr(const py::handle& value) { return py::repr(value).cast<std::string>(); }
 
@@ -206,6 +199,21 @@ const QuantitySpec* SpecOf(std::string_view field) {
 }
 
 }  // namespace
+
+std::string_view FieldOfKeyword(std::string_view keyword) {
+  for (const scene_file::FieldSpelling& k : SceneKeywords()) {
+    if (k.name == keyword) return k.field;
+  }
+  return {};
+}
+
+std::string SolveKeywords(std::string message) {
+  for (const auto& [field, keyword] : {std::pair{"time_path.relative_tolerance", "rtol"},
+                                       {"time_path.absolute_tolerance", "atol"}, {"time_path.max_steps", "max_steps"}}) {
+    if (message.rfind(field, 0) == 0) message = keyword + message.substr(std::string_view(field).size());
+  }
+  return message;
+}
 
 SceneInputs ReadScene(const py::kwargs& keywords) {
   SceneInputs inputs;
@@ -390,12 +398,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
     py::gil_scoped_release release;
     report.result = Solve(*model, options);
   } catch (const std::invalid_argument& e) {  // an option out of range, named as the keyword
-    std::string message = e.what();
-    for (const auto& [field, keyword] : {std::pair{"time_path.relative_tolerance", "rtol"},
-                                         {"time_path.absolute_tolerance", "atol"}, {"time_path.max_steps", "max_steps"}}) {
-      if (message.rfind(field, 0) == 0) message = keyword + message.substr(std::string_view(field).size());
-    }
-    throw std::invalid_argument(message);
+    throw std::invalid_argument(SolveKeywords(e.what()));
   }
   if (!report.result.ok()) RaiseImpactFailure(report.result);
   inputs.Judge(report);

@@ -88,6 +88,12 @@ SweepAxis ReadAxis(const pybind11::handle& axis, const char* keyword);
 /// keywords (speed_limit_bindings.cpp).
 optim::SpeedLimitOptions SpeedLimitOptionsFrom(const SceneInputs& inputs, const pybind11::kwargs& kwargs);
 
+/// The field of a Scene keyword ("robot.mass" for robot_mass); empty when it is none.
+std::string_view FieldOfKeyword(std::string_view keyword);
+
+/// Solve's option messages name time_path.*: here they are the keywords rtol, atol, max_steps.
+std::string SolveKeywords(std::string message);
+
 /// optimize's candidates: the built-in catalog and the catalog files (catalog=; only those with
 /// no_builtin=True), filtered by materials= and families= (module.cpp).
 std::vector<optim::CandidateMaterial> Candidates(const pybind11::kwargs& kwargs);
