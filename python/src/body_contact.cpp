@@ -156,11 +156,6 @@ materials::ContactTargets ReadTargets(const py::kwargs& kwargs) {
   return targets;
 }
 
-/// The robot and covering of `inputs` with the targets' contact and contact area.
-BodyContactScene ContactScene(const SceneInputs& inputs, const materials::ContactTargets& targets) {
-  return scene_file::BodyContactSceneOf(inputs.scene, targets);
-}
-
 /// The library's bare-robot contact-area policy (scene_file::RequireBareRobotContactArea).
 void RequireBareContactArea(const materials::ContactTargets& targets, const BodyContactScene& scene) {
   Keyworded([&] { scene_file::RequireBareRobotContactArea(targets, scene); });
@@ -264,7 +259,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   RefuseHeadKeywords(inputs, limits.region->name);
   const SolveOptions options = ReadPath(kwargs);
   const optim::BodyRegionOptions judge = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, targets);
+  const BodyContactScene scene = scene_file::BodyContactSceneOf(inputs.scene, targets);
   RequireBareContactArea(targets, scene);
   std::vector<optim::BodyRegionJudgement> judgements;
   std::optional<BodyContactResult> timed;
@@ -280,15 +275,12 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(inputs.Attributed(SolveKeywords(AsKeywords(e.what()))));
   }
-  if (const BodyContactResult& c = judgements.front().contact; !c.ok()) {
-    RaiseComputationError("the time path failed on " + limits.region->name + " (" + std::string(ToString(c.status)) +
-                              "): " + c.message,
-                          std::string(ToString(c.status)));
-  }
-  if (timed && !timed->ok()) {
-    RaiseComputationError("the time path failed on " + limits.region->name + " (" +
-                              std::string(ToString(timed->status)) + "): " + timed->message,
-                          std::string(ToString(timed->status)));
+  for (const BodyContactResult* c : {&judgements.front().contact, timed ? &*timed : nullptr}) {
+    if (c && !c->ok()) {
+      RaiseComputationError("the time path failed on " + limits.region->name + " (" +
+                                std::string(ToString(c->status)) + "): " + c->message,
+                            std::string(ToString(c->status)));
+    }
   }
   std::vector<std::string> warnings = ContactWarnings(inputs, targets, scene);
   for (std::string& w : report::TimePathWarnings(judgements.front(), timed ? &*timed : nullptr)) {
@@ -327,7 +319,7 @@ py::dict SpeedLimitTable(const SceneInputs& inputs, const py::kwargs& kwargs) {
     if (masses.empty()) throw std::invalid_argument("values: no robot masses (got an empty list)");
   }
   const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, targets);
+  const BodyContactScene scene = scene_file::BodyContactSceneOf(inputs.scene, targets);
   RequireBareContactArea(targets, scene);
   const optim::TargetSpeedLimitRequest request{inputs.scene, scene, masses, options,
                                                SpeedLimitOptionsFrom(inputs, kwargs), TimeIntegrationOptions{}};
@@ -360,7 +352,7 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
   }
   const materials::ContactTargets targets = ReadTargets(kwargs);
   optim::BodyRegionDesignRequest request;
-  request.scene = ContactScene(inputs, targets);
+  request.scene = scene_file::BodyContactSceneOf(inputs.scene, targets);
   request.regions = targets.IsoLimits();
   if (targets.has_head()) {
     request.head = inputs.scene;  // the head's own keywords apply to its skin model
@@ -399,7 +391,7 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
   const std::vector<BodyLimits> iso = targets.IsoLimits();
   if (!targets.has_head()) RefuseHeadKeywords(inputs, RegionText(kwargs));
   const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, targets);
+  const BodyContactScene scene = scene_file::BodyContactSceneOf(inputs.scene, targets);
   RequireBareContactArea(targets, scene);
 
   const robot::ContactMotionResult motion =
@@ -442,7 +434,7 @@ py::dict Sweep(const py::object& x, const py::object& y, const SceneInputs& inpu
   const SweepAxis x_axis = ReadAxis(x, "x");
   const std::optional<SweepAxis> y_axis = y.is_none() ? std::nullopt : std::optional(ReadAxis(y, "y"));
   const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, targets);
+  const BodyContactScene scene = scene_file::BodyContactSceneOf(inputs.scene, targets);
   RequireBareContactArea(targets, scene);
   std::vector<optim::BodyRegionSweepPoint> grid;
   try {
