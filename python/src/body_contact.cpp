@@ -47,6 +47,7 @@
 #include "covopt/report/body_contact_json.hpp"
 #include "covopt/report/body_region_sweep_output.hpp"
 #include "covopt/robot/trajectory.hpp"
+#include "covopt/scene_file/integrators.hpp"
 #include "covopt/scene_file/scene_inputs.hpp"
 #include "covopt/scene_file/spelling.hpp"
 #include "covopt/scene_file/targets.hpp"
@@ -186,18 +187,16 @@ SolveOptions ReadPath(const py::kwargs& kwargs) {
   options.record_history = Flag(kwargs, "history");
   if (const auto v = Option(kwargs, "method")) {
     const std::string method = py::str(*v).cast<std::string>();
-    const auto named = method == "cvode" ? std::optional(ComputationMethod::kCvodeAdams) : ParseComputationMethod(method);
     if (method == "exact") {
       options.path = PathChoice::kExact;
     } else if (method == "time-path") {
       options.path = PathChoice::kTimePath;  // the default integrator
-    } else if (named && *named != ComputationMethod::kExact) {
+    } else if (const auto named = scene_file::ParseIntegrator(method)) {
       options.path = PathChoice::kTimePath;
       options.time_path.method = *named;
     } else {
-      std::string names;
-      for (const ComputationMethod m : TimeIntegrationMethods()) names += ", " + std::string(ToString(m));
-      throw std::invalid_argument("method: expected exact, time-path, cvode" + names + " (got '" + method + "')");
+      throw std::invalid_argument("method: expected exact, time-path, cvode, " + scene_file::IntegratorNames() +
+                                  " (got '" + method + "')");
     }
   }
   if (options.record_history && options.path == PathChoice::kExact) {

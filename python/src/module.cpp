@@ -49,6 +49,7 @@
 #include "covopt/report/simulation_json.hpp"
 #include "covopt/core/scene_fields.hpp"
 #include "covopt/scene_file/fields.hpp"
+#include "covopt/scene_file/integrators.hpp"
 #include "covopt/scene_file/scene_inputs.hpp"
 #include "covopt/scene_file/spelling.hpp"
 #include "bounded.hpp"
@@ -326,7 +327,6 @@ SolveOptions ReadSolveOptions(const py::dict& kwargs, const Scene& scene) {
   options.record_history = Flag(kwargs, "history");
   if (const auto v = get("method")) {
     const std::string method = py::str(*v).cast<std::string>();
-    const auto named = method == "cvode" ? std::optional(ComputationMethod::kCvodeAdams) : ParseComputationMethod(method);
     if (method == "exact") {
       if (!scene.has_energy_integral()) {
         throw std::invalid_argument("method='exact': the exact path needs an energy integral; a scene with "
@@ -339,16 +339,12 @@ SolveOptions ReadSolveOptions(const py::dict& kwargs, const Scene& scene) {
                                     "give a time-path method");
       }
       options.path = PathChoice::kExact;
-    } else if (named && *named != ComputationMethod::kExact) {
+    } else if (const auto named = scene_file::ParseIntegrator(method)) {
       options.path = PathChoice::kTimePath;
       options.time_path.method = *named;
     } else {
-      std::string names;
-      for (const ComputationMethod m : TimeIntegrationMethods()) {
-        names += std::string(names.empty() ? "" : ", ") + std::string(ToString(m));
-      }
-      throw std::invalid_argument("method: expected exact, cvode or one of " + names + " (got '" +
-                                  method + "')");
+      throw std::invalid_argument("method: expected exact, cvode or one of " + scene_file::IntegratorNames() +
+                                  " (got '" + method + "')");
     }
   }
   const bool time_path = ChoosePath(scene, options) == PathChoice::kTimePath;
@@ -440,16 +436,11 @@ optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& s
     const std::string method = py::str(*v).cast<std::string>();
     if (method == "exact") {
       method_exact = true;
-    } else if (method == "cvode") {
-      oracle.time_path.method = ComputationMethod::kCvodeAdams;
-    } else if (const auto named = ParseComputationMethod(method); named && *named != ComputationMethod::kExact) {
+    } else if (const auto named = scene_file::ParseIntegrator(method)) {
       oracle.time_path.method = *named;
     } else {
-      std::string names;
-      for (const ComputationMethod m : TimeIntegrationMethods()) {
-        names += std::string(names.empty() ? "" : ", ") + std::string(ToString(m));
-      }
-      throw std::invalid_argument("method: expected exact, cvode or one of " + names + " (got '" + method + "')");
+      throw std::invalid_argument("method: expected exact, cvode or one of " + scene_file::IntegratorNames() +
+                                  " (got '" + method + "')");
     }
   }
   if (method_exact) {

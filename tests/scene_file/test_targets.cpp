@@ -8,6 +8,7 @@
 
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/materials/catalog.hpp"
+#include "covopt/scene_file/integrators.hpp"
 #include "covopt/scene_file/scene_inputs.hpp"
 #include "covopt/scene_file/spelling.hpp"
 #include "covopt/scene_file/targets.hpp"
@@ -256,4 +257,18 @@ TEST_CASE("targets: the head alone is named by head in any case, nothing else") 
     CAPTURE(other);
     CHECK_FALSE(covopt::scene_file::NamesTheHead(other));
   }
+}
+
+TEST_CASE("integrators: cvode is CVODE's Adams method, each integrator by its name, exact none") {
+  using covopt::ComputationMethod;
+  using covopt::scene_file::ParseIntegrator;
+  CHECK(ParseIntegrator("cvode") == ComputationMethod::kCvodeAdams);
+  for (const ComputationMethod method : covopt::TimeIntegrationMethods()) {
+    CAPTURE(covopt::ToString(method));
+    CHECK(ParseIntegrator(covopt::ToString(method)) == method);
+    CHECK_THAT(covopt::scene_file::IntegratorNames(), Contains(std::string(covopt::ToString(method))));
+  }
+  CHECK_FALSE(ParseIntegrator("exact").has_value());
+  CHECK_FALSE(ParseIntegrator("time-path").has_value());
+  CHECK_FALSE(ParseIntegrator("").has_value());
 }
