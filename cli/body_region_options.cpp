@@ -125,42 +125,13 @@ void CheckBodyRegionScene(const BodyRegionPlan& regions, const SimulationPlan& p
   }
 }
 
-BodyContactScene BodyContactSceneOf(const Scene& scene, const BodyRegionPlan& regions) {
-  BodyContactScene contact;
-  contact.robot_mass_kg = scene.robot.mass_kg;
-  contact.speed_m_per_s = scene.robot.speed_m_per_s;
-  contact.robot_radius_m = scene.robot.radius_m;
-  contact.covering = scene.covering;
-  contact.contact = regions.contact;
-  contact.contact_area_m2 = regions.contact_area_m2;
-  contact.reaction_delay_s = scene.robot.reaction_delay_s;
-  contact.braking_m_per_s2 = scene.robot.braking_m_per_s2;
-  return contact;
-}
-
 optim::BodyRegionOptions BodyRegionOptionsOf(const SimulationPlan& plan, bool allow_full_compression,
                                              bool allow_crushing) {
-  optim::BodyRegionOptions options;
   // Crushing is checked where the strength is known; a covering of unknown strength is judged
   // without it (the crush check's notes say so), as speed-limit does for the head.
-  const bool unchecked = !CrushCheckOf(plan).notes.empty();
-  options.rule = optim::DesignRule{plan.safety_factor,
-                                   allow_full_compression ? optim::DesignCriterion::kPaper
-                                                          : optim::DesignCriterion::kNoFullCompression,
-                                   allow_crushing, unchecked};
-  if (plan.covering_material) {
-    const materials::Material& m = *plan.covering_material;
-    optim::CandidateMaterial candidate;
-    candidate.name = m.name;
-    candidate.youngs_modulus_Pa = m.youngs_modulus_Pa;
-    candidate.poisson_ratio = materials::PoissonRatioOrDefault(m);
-    candidate.poisson_assumed = !m.poisson_ratio.has_value();
-    candidate.family = m.family;
-    candidate.crush_behaviour = m.crush_behaviour;
-    candidate.compressive_strength_Pa = m.compressive_strength_Pa.value_or(0.0);
-    options.material = std::move(candidate);
-  }
-  return options;
+  return optim::BodyRegionOptionsOf(plan.safety_factor, allow_full_compression, allow_crushing,
+                                    !CrushCheckOf(plan).notes.empty(),
+                                    plan.covering_material ? &*plan.covering_material : nullptr);
 }
 
 std::optional<std::string> ContactAreaNote(const BodyRegionPlan& regions, const Scene& scene, bool bare_robot_judged) {

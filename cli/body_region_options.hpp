@@ -28,6 +28,7 @@
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/optim/body_region_check.hpp"
+#include "covopt/scene_file/targets.hpp"
 
 namespace CLI {
 class App;
@@ -82,11 +83,8 @@ int RunWithBodyRegions(const BodyRegionFlags& flags, const CommandErrors& errors
 /// @throws InputError.
 void CheckBodyRegionScene(const BodyRegionPlan& regions, const SimulationPlan& plan);
 
-/// The body contact of `plan`'s robot (mass, speed, radius, reaction delay and braking) and
-/// covering, with the region's
-/// contact type and the bare robot's contact area; k_H and m_H are set per region by the
-/// library (optim::WithRegion).
-BodyContactScene BodyContactSceneOf(const Scene& scene, const BodyRegionPlan& regions);
+/// The body contact of a scene with the targets' contact: the library's (scene_file).
+using scene_file::BodyContactSceneOf;
 
 /// The rule and the covering's material (its crush behaviour and strength) a body-region
 /// verdict applies: the command's safety factor, criterion and crushing flag.

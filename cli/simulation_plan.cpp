@@ -47,19 +47,6 @@ std::string_view TypeName(QuantityKind kind) {
   return "VALUE";
 }
 
-}  // namespace
-
-std::string IntegratorNames() {
-  std::string names;
-  for (const ComputationMethod method : TimeIntegrationMethods()) {
-    if (!names.empty()) names += ", ";
-    names += ToString(method);
-  }
-  return names;
-}
-
-namespace {
-
 /// Sets the covering's E and ν from a catalog entry: --material NAME, else the scene file's
 /// covering.material (after the file's values, before the flags, which may not set E or ν
 /// too).

@@ -18,6 +18,7 @@
 #include "covopt/core/solve.hpp"
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/materials/material.hpp"
+#include "covopt/scene_file/integrators.hpp"
 #include "body_region_options.hpp"
 #include "catalog_options.hpp"
 #include "plot.hpp"
@@ -146,8 +147,9 @@ void AddSceneFieldOptions(CLI::App& command, std::optional<std::string>& scene_f
 /// parse); ResolveSimulation reads them.
 void AddSceneOptions(CLI::App& sub, SimulateOptions& options);
 
-/// "cvode-adams, cvode-bdf, arkode-erk32, ...": every time-integration method's name.
-std::string IntegratorNames();
+/// "cvode-adams, cvode-bdf, arkode-erk32, ...": every time-integration method's name (the
+/// library's list, as Python names them).
+using scene_file::IntegratorNames;
 
 /// Reads every value and checks how the options combine (the scene's ranges are left to the
 /// library; limits and the safety factor are checked here). A scene input given as LO..HI

@@ -10,6 +10,7 @@
 #include <fmt/ostream.h>
 
 #include "covopt/core/quantity.hpp"
+#include "covopt/optim/target_speed_limits.hpp"
 #include "covopt/report/body_contact_json.hpp"
 #include "covopt/report/csv.hpp"
 #include "covopt/scene_file/targets.hpp"
@@ -135,55 +136,21 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
     return errors.BadInput(e.what());
   }
 
-  const std::vector<materials::BodyLimits> iso = regions.IsoLimits();
   std::vector<report::BodyRegionTableRow> rows;
-  const std::string head_criteria = HeadCriteriaName();
   optim::DesignRule rule;
   try {
     for (const SimulationPlan& covering : plan.coverings) {
-      const optim::BodyRegionOptions body_options =
-          BodyRegionOptionsOf(covering, options.allow_full_compression, options.allow_crushing);
-      rule = body_options.rule;
-      const std::string material = MaterialName(covering).value_or("");
-      for (const double mass : plan.values) {
-        BodyContactScene scene = BodyContactSceneOf(covering.scene, regions);
-        scene.robot_mass_kg = mass;
-        const std::vector<optim::BodyRegionSpeedLimitRow> table =
-            iso.empty() ? std::vector<optim::BodyRegionSpeedLimitRow>{}
-                        : optim::BodyRegionSpeedLimitTable(scene, iso, body_options, plan.options.oracle.time_path);
-        // A limit the time path could not answer (a braking robot) is no answer at all: exit 1.
-        for (const optim::BodyRegionSpeedLimitRow& row : table) {
-          for (const optim::BodyRegionSpeedLimit* limit : {&row.bare, row.covered ? &*row.covered : nullptr}) {
-            if (limit && limit->status == optim::SpeedLimitStatus::kEvaluationFailed) {
-              return errors.Failed("the speed limit could not be evaluated: " + limit->message);
-            }
-          }
-        }
-        std::size_t next = 0;
-        for (const BodyTarget& target : regions.targets) {
-          report::BodyRegionTableRow row;
-          if (target.is_head()) {
-            optim::SpeedLimitOptions head_options = plan.options;
-            head_options.covering_compressive_strength_Pa = CrushCheckOf(covering).compressive_strength_Pa;
-            Scene head = covering.scene;
-            head.robot.mass_kg = mass;
-            std::optional<optim::SpeedLimit> covered;
-            if (head.covering.thickness_m > 0.0) covered = optim::MaxSafeSpeed(head, head_options);
-            head.covering.thickness_m = 0.0;
-            head_options.covering_compressive_strength_Pa = 0.0;
-            const optim::SpeedLimit bare = optim::MaxSafeSpeed(head, head_options);
-            for (const optim::SpeedLimit* limit : {&bare, covered ? static_cast<const optim::SpeedLimit*>(&*covered) : nullptr}) {
-              if (limit && limit->status == optim::SpeedLimitStatus::kEvaluationFailed) {
-                return errors.Failed("the head's speed limit could not be evaluated: " + limit->message);
-              }
-            }
-            row = report::HeadTableRow(mass, bare, covered, head_criteria);
-          } else {
-            row = report::TableRow(mass, table.at(next++));
-          }
-          row.material = material;
-          rows.push_back(std::move(row));
-        }
+      optim::TargetSpeedLimitRequest request{covering.scene, BodyContactSceneOf(covering.scene, regions), plan.values,
+                                             BodyRegionOptionsOf(covering, options.allow_full_compression,
+                                                                 options.allow_crushing),
+                                             plan.options, plan.options.oracle.time_path};
+      request.head_options.covering_compressive_strength_Pa = CrushCheckOf(covering).compressive_strength_Pa;
+      rule = request.region_options.rule;
+      // A limit the time path could not answer (a braking robot) is no answer at all: exit 1.
+      const optim::TargetSpeedLimits table = optim::TargetSpeedLimitTable(request, regions);
+      if (!table.failure.empty()) return errors.Failed(table.failure);
+      for (const optim::TargetSpeedLimit& row : table.rows) {
+        rows.push_back(report::TableRow(row, MaterialName(covering).value_or("")));
       }
     }
   } catch (const std::invalid_argument& e) {

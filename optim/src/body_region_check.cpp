@@ -2,6 +2,7 @@
 // the closed-form speed limit per region, the all-regions table, and the covering design
 // for every region named (and the head, by Park et al.'s skin model).
 #include "covopt/optim/body_region_check.hpp"
+#include "covopt/optim/design.hpp"
 #include "covopt/optim/verdicts.hpp"
 
 #include <algorithm>
@@ -731,6 +732,16 @@ std::string BodyRegionCriterion(const DesignRule& rule, bool head) {
   if (rule.compression_counts()) text += ", the covering not fully compressed";
   if (!rule.crushing_allowed) text += ", the covering not crushed where its strength is known";
   return text + "; safety factor " + sf + " on each";
+}
+
+BodyRegionOptions BodyRegionOptionsOf(double safety_factor, bool allow_full_compression, bool allow_crushing,
+                                      bool unknown_strength_allowed, const materials::Material* material) {
+  BodyRegionOptions options;
+  options.rule = DesignRule{safety_factor,
+                            allow_full_compression ? DesignCriterion::kPaper : DesignCriterion::kNoFullCompression,
+                            allow_crushing, unknown_strength_allowed};
+  if (material) options.material = CandidateOf(*material);
+  return options;
 }
 
 }  // namespace covopt::optim

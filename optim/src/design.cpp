@@ -201,12 +201,13 @@ std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalo
     });
   }
   std::vector<CandidateMaterial> candidates;
-  for (const materials::Material* m : chosen) {
-    candidates.push_back({m->name, m->youngs_modulus_Pa, materials::PoissonRatioOrDefault(*m),
-                          !m->poisson_ratio.has_value(), m->family, m->crush_behaviour,
-                          m->compressive_strength_Pa.value_or(0.0)});
-  }
+  for (const materials::Material* m : chosen) candidates.push_back(CandidateOf(*m));
   return candidates;
+}
+
+CandidateMaterial CandidateOf(const materials::Material& m) {
+  return {m.name, m.youngs_modulus_Pa, materials::PoissonRatioOrDefault(m), !m.poisson_ratio.has_value(),
+          m.family, m.crush_behaviour, m.compressive_strength_Pa.value_or(0.0)};
 }
 
 DesignResult Design(const DesignRequest& request) {

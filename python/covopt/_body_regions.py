@@ -137,7 +137,7 @@ def is_region(body_region, **contact):
             raise ValueError(f"{named[0]} applies to an ISO/TS 15066 body region; give body_region= "
                              "(e.g. body_region='chest')")
         return False
-    if isinstance(body_region, str) and body_region.lower() == "head":
+    if isinstance(body_region, str) and _covopt.names_the_head(body_region):
         named = [k for k, v in contact.items()
                  if v is not None and not (k == "contact" and v == "transient")]
         if named:

@@ -13,6 +13,7 @@
 /// The dicts are built here; their keys carry their units. Bad input raises ValueError with
 /// the library's one-line message (flags named as keywords).
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstddef>
@@ -41,9 +42,12 @@
 #include "covopt/optim/body_region_trajectory.hpp"
 #include "covopt/optim/design.hpp"
 #include "covopt/optim/speed_limit.hpp"
+#include "covopt/optim/target_speed_limits.hpp"
 #include "covopt/optim/trajectory_check.hpp"
 #include "covopt/report/body_contact_json.hpp"
+#include "covopt/report/body_region_sweep_output.hpp"
 #include "covopt/robot/trajectory.hpp"
+#include "covopt/scene_file/integrators.hpp"
 #include "covopt/scene_file/scene_inputs.hpp"
 #include "covopt/scene_file/spelling.hpp"
 #include "covopt/scene_file/targets.hpp"
@@ -97,11 +101,7 @@ std::string RegionText(const py::kwargs& kwargs) {
 void RefuseHeadKeywords(const SceneInputs& inputs, const std::string& region) {
   for (const auto& item : inputs.given) {
     const std::string keyword = py::str(item.first).cast<std::string>();
-    std::string_view field;  // the keyword's field, for the library's list of what a region reads
-    for (const scene_file::FieldSpelling& k : scene_file::SceneInputSpellings(scene_file::ValueStyle::kKeyword)) {
-      if (k.name == keyword) field = k.field;
-    }
-    if (keyword != "ranges" && !scene_file::BodyRegionReads(field)) {
+    if (keyword != "ranges" && !scene_file::BodyRegionReads(FieldOfKeyword(keyword))) {
       throw std::invalid_argument(
           keyword + ": body_region=" + (region.front() == '[' ? region : "'" + region + "'") +
           " does not read it (ISO/TS 15066's model takes robot_mass, speed, robot_radius, the covering, "
@@ -157,21 +157,6 @@ materials::ContactTargets ReadTargets(const py::kwargs& kwargs) {
   return targets;
 }
 
-/// The robot and covering of `inputs` with the targets' contact and contact area (the region's
-/// k_H and m_H are set by optim::WithRegion).
-BodyContactScene ContactScene(const SceneInputs& inputs, const materials::ContactTargets& targets) {
-  BodyContactScene scene;
-  scene.robot_mass_kg = inputs.scene.robot.mass_kg;
-  scene.speed_m_per_s = inputs.scene.robot.speed_m_per_s;
-  scene.robot_radius_m = inputs.scene.robot.radius_m;
-  scene.covering = inputs.scene.covering;
-  scene.contact = targets.contact;
-  scene.contact_area_m2 = targets.contact_area_m2;
-  scene.reaction_delay_s = inputs.scene.robot.reaction_delay_s;
-  scene.braking_m_per_s2 = inputs.scene.robot.braking_m_per_s2;
-  return scene;
-}
-
 /// The library's bare-robot contact-area policy (scene_file::RequireBareRobotContactArea).
 void RequireBareContactArea(const materials::ContactTargets& targets, const BodyContactScene& scene) {
   Keyworded([&] { scene_file::RequireBareRobotContactArea(targets, scene); });
@@ -183,46 +168,15 @@ void RequireBareContactArea(const materials::ContactTargets& targets, const Body
 /// crush check (the crush notes say so), unless `unknown_strength` says otherwise.
 optim::BodyRegionOptions JudgeOptions(const SceneInputs& inputs, const py::kwargs& kwargs,
                                       std::optional<bool> unknown_strength = std::nullopt) {
-  optim::BodyRegionOptions options;
-  options.rule.safety_factor = inputs.safety_factor;
-  options.rule.criterion = Flag(kwargs, "allow_full_compression") ? optim::DesignCriterion::kPaper
-                                                                   : optim::DesignCriterion::kNoFullCompression;
-  options.rule.crushing_allowed = Flag(kwargs, "allow_crushing");
-  options.rule.unknown_strength_allowed = unknown_strength.value_or(!inputs.CrushCheck().notes.empty());
-  if (inputs.covering_material) {
-    const std::vector<std::string> name{*inputs.covering_material};
-    options.material = optim::SelectCandidates(materials::Catalog::BuiltIn(), name).front();
-  }
-  return options;
+  return optim::BodyRegionOptionsOf(
+      inputs.safety_factor, Flag(kwargs, "allow_full_compression"), Flag(kwargs, "allow_crushing"),
+      unknown_strength.value_or(!inputs.CrushCheck().notes.empty()),
+      inputs.covering_material ? materials::Catalog::BuiltIn().Find(*inputs.covering_material) : nullptr);
 }
 
 std::optional<std::string> MaterialName(const SceneInputs& inputs) {
   if (inputs.covering_material && inputs.scene.covering.thickness_m > 0.0) return inputs.covering_material;
   return std::nullopt;
-}
-
-py::object OrNone(const std::optional<double>& value) {
-  return value ? py::object(py::float_(*value)) : py::object(py::none());
-}
-
-/// The contact of the time path (simulate with method= "time-path" or an integrator).
-py::dict TimePathDict(const BodyContactResult& r) {
-  py::dict d;
-  d["method"] = r.method;
-  d["peak_force_N"] = r.peak_force_N;
-  d["peak_pressure_Pa"] = OrNone(r.peak_pressure_Pa);
-  d["contact_radius_m"] = r.contact_radius_m;
-  d["covering_deflection_m"] = r.covering_deflection_m;
-  d["body_deflection_m"] = r.body_deflection_m;
-  d["max_approach_m"] = r.max_approach_m;
-  d["compression_ratio"] = r.compression_ratio;
-  d["fully_compressed"] = r.fully_compressed;
-  d["energy_transferred_J"] = r.energy_transferred_J;
-  d["contact_duration_s"] = OrNone(r.contact_duration_s);
-  d["rebound_speed_m_per_s"] = r.rebound_speed_m_per_s;
-  d["energy_residual"] = OrNone(r.energy_residual);
-  d["warnings"] = r.WarningMessages();
-  return d;
 }
 
 /// The solver options of simulate: method= None or "exact" (the exact path), or
@@ -233,18 +187,16 @@ SolveOptions ReadPath(const py::kwargs& kwargs) {
   options.record_history = Flag(kwargs, "history");
   if (const auto v = Option(kwargs, "method")) {
     const std::string method = py::str(*v).cast<std::string>();
-    const auto named = method == "cvode" ? std::optional(ComputationMethod::kCvodeAdams) : ParseComputationMethod(method);
     if (method == "exact") {
       options.path = PathChoice::kExact;
     } else if (method == "time-path") {
       options.path = PathChoice::kTimePath;  // the default integrator
-    } else if (named && *named != ComputationMethod::kExact) {
+    } else if (const auto named = scene_file::ParseIntegrator(method)) {
       options.path = PathChoice::kTimePath;
       options.time_path.method = *named;
     } else {
-      std::string names;
-      for (const ComputationMethod m : TimeIntegrationMethods()) names += ", " + std::string(ToString(m));
-      throw std::invalid_argument("method: expected exact, time-path, cvode" + names + " (got '" + method + "')");
+      throw std::invalid_argument("method: expected exact, time-path, cvode, " + scene_file::IntegratorNames() +
+                                  " (got '" + method + "')");
     }
   }
   if (options.record_history && options.path == PathChoice::kExact) {
@@ -267,15 +219,6 @@ SolveOptions ReadPath(const py::kwargs& kwargs) {
     options.time_path.max_steps = v->cast<long>();
   }
   return options;
-}
-
-/// Solve's option messages name time_path.*: here they are the keywords.
-std::string OptionKeywords(std::string message) {
-  for (const auto& [field, keyword] : {std::pair{"time_path.relative_tolerance", "rtol"},
-                                       {"time_path.absolute_tolerance", "atol"}, {"time_path.max_steps", "max_steps"}}) {
-    if (message.rfind(field, 0) == 0) message = keyword + message.substr(std::string_view(field).size());
-  }
-  return message;
 }
 
 /// One region the call judges (simulate and sweep take one region, not the head or "all").
@@ -315,7 +258,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   RefuseHeadKeywords(inputs, limits.region->name);
   const SolveOptions options = ReadPath(kwargs);
   const optim::BodyRegionOptions judge = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, targets);
+  const BodyContactScene scene = scene_file::BodyContactSceneOf(inputs.scene, targets);
   RequireBareContactArea(targets, scene);
   std::vector<optim::BodyRegionJudgement> judgements;
   std::optional<BodyContactResult> timed;
@@ -329,17 +272,14 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
     judgements.push_back(optim::JudgeBodyContact(scene, limits, judge, options.time_path));
     if (options.path == PathChoice::kTimePath) timed = Solve(optim::WithRegion(scene, limits), options);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(inputs.Attributed(OptionKeywords(AsKeywords(e.what()))));
+    throw std::invalid_argument(inputs.Attributed(SolveKeywords(AsKeywords(e.what()))));
   }
-  if (const BodyContactResult& c = judgements.front().contact; !c.ok()) {
-    RaiseComputationError("the time path failed on " + limits.region->name + " (" + std::string(ToString(c.status)) +
-                              "): " + c.message,
-                          std::string(ToString(c.status)));
-  }
-  if (timed && !timed->ok()) {
-    RaiseComputationError("the time path failed on " + limits.region->name + " (" +
-                              std::string(ToString(timed->status)) + "): " + timed->message,
-                          std::string(ToString(timed->status)));
+  for (const BodyContactResult* c : {&judgements.front().contact, timed ? &*timed : nullptr}) {
+    if (c && !c->ok()) {
+      RaiseComputationError("the time path failed on " + limits.region->name + " (" +
+                                std::string(ToString(c->status)) + "): " + c->message,
+                            std::string(ToString(c->status)));
+    }
   }
   std::vector<std::string> warnings = ContactWarnings(inputs, targets, scene);
   for (std::string& w : report::TimePathWarnings(judgements.front(), timed ? &*timed : nullptr)) {
@@ -347,47 +287,15 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   }
   py::dict d = JsonToPython(report::BodyContactSimulationJson(scene, MaterialName(inputs), judgements,
                                                               inputs.safety_factor, std::nullopt, warnings));
-  if (timed) d["time_path"] = TimePathDict(*timed);
+  if (timed) d["time_path"] = JsonToPython(report::BodyContactTimePathJson(*timed));
   if (options.record_history) {
     py::dict columns;
-    const auto column = [&](const char* name, double (*field)(const BodyContactSample&)) {
-      py::array_t<double> array(static_cast<py::ssize_t>(timed->history.size()));
-      double* data = array.mutable_data();
-      for (std::size_t i = 0; i < timed->history.size(); ++i) data[i] = field(timed->history[i]);
-      columns[name] = array;
-    };
-    column("time_s", [](const BodyContactSample& s) { return s.time_s; });
-    column("approach_m", [](const BodyContactSample& s) { return s.approach_m; });
-    column("approach_rate_m_per_s", [](const BodyContactSample& s) { return s.approach_rate_m_per_s; });
-    column("force_N", [](const BodyContactSample& s) { return s.force_N; });
-    column("robot_speed_m_per_s", [](const BodyContactSample& s) { return s.robot_speed_m_per_s; });
-    column("braking_work_J", [](const BodyContactSample& s) { return s.braking_work_J; });
+    for (const report::HistoryColumn& c : report::BodyContactHistoryColumns(timed->history)) {
+      columns[py::str(std::string(c.name))] = py::array_t<double>(static_cast<py::ssize_t>(c.values.size()), c.values.data());
+    }
     d["history"] = columns;
   }
   return d;
-}
-
-/// The head's speed limits as covopt.max_safe_speed computes them (the CLI's speed-limit
-/// --body-region head row): bare, and with the covering.
-report::BodyRegionTableRow HeadRow(const SceneInputs& inputs, const py::kwargs& kwargs, double mass_kg) {
-  optim::SpeedLimitOptions options = SpeedLimitOptionsFrom(inputs, kwargs);
-  Scene head = inputs.scene;
-  head.robot.mass_kg = mass_kg;
-  std::optional<optim::SpeedLimit> covered;
-  optim::SpeedLimit bare;
-  {
-    py::gil_scoped_release release;
-    if (head.covering.thickness_m > 0.0) covered = optim::MaxSafeSpeed(head, options);
-    head.covering.thickness_m = 0.0;
-    options.covering_compressive_strength_Pa = 0.0;
-    bare = optim::MaxSafeSpeed(head, options);
-  }
-  for (const optim::SpeedLimit* limit : {&bare, covered ? &*covered : nullptr}) {
-    if (limit && limit->status == optim::SpeedLimitStatus::kEvaluationFailed) {
-      RaiseComputationError("the head's speed limit could not be evaluated: " + limit->message, "evaluation-failed");
-    }
-  }
-  return report::HeadTableRow(mass_kg, bare, covered, std::string(optim::HeadCriteriaName()));
 }
 
 /// covopt.speed_limit(scene, body_region=..., values=None): `covopt speed-limit --body-region
@@ -410,38 +318,20 @@ py::dict SpeedLimitTable(const SceneInputs& inputs, const py::kwargs& kwargs) {
     if (masses.empty()) throw std::invalid_argument("values: no robot masses (got an empty list)");
   }
   const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, targets);
+  const BodyContactScene scene = scene_file::BodyContactSceneOf(inputs.scene, targets);
   RequireBareContactArea(targets, scene);
-  const std::vector<BodyLimits> iso = targets.IsoLimits();
-  const std::string material = MaterialName(inputs).value_or("");
-  std::vector<report::BodyRegionTableRow> rows;
-  for (const double mass : masses) {
-    BodyContactScene at = scene;
-    at.robot_mass_kg = mass;
-    std::vector<optim::BodyRegionSpeedLimitRow> table;
-    try {
-      py::gil_scoped_release release;
-      if (!iso.empty()) table = optim::BodyRegionSpeedLimitTable(at, iso, options);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
-    }
-    std::size_t next = 0;  // the rows in the targets' order (the head where it was named)
-    for (const materials::ContactTarget& target : targets.targets) {
-      if (target.is_head()) {
-        rows.push_back(HeadRow(inputs, kwargs, mass));
-      } else {
-        const optim::BodyRegionSpeedLimitRow& row = table.at(next++);
-        // A braking robot's limit the time path could not answer is no answer at all.
-        for (const optim::BodyRegionSpeedLimit* limit : {&row.bare, row.covered ? &*row.covered : nullptr}) {
-          if (limit && limit->status == optim::SpeedLimitStatus::kEvaluationFailed) {
-            RaiseComputationError("the speed limit could not be evaluated: " + limit->message, "evaluation-failed");
-          }
-        }
-        rows.push_back(report::TableRow(mass, row));
-      }
-      rows.back().material = material;
-    }
+  const optim::TargetSpeedLimitRequest request{inputs.scene, scene, masses, options,
+                                               SpeedLimitOptionsFrom(inputs, kwargs), TimeIntegrationOptions{}};
+  optim::TargetSpeedLimits table;
+  try {
+    py::gil_scoped_release release;
+    table = optim::TargetSpeedLimitTable(request, targets);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
   }
+  if (!table.failure.empty()) RaiseComputationError(table.failure, "evaluation-failed");
+  std::vector<report::BodyRegionTableRow> rows;
+  for (const optim::TargetSpeedLimit& row : table.rows) rows.push_back(report::TableRow(row, MaterialName(inputs).value_or("")));
   std::vector<std::string> warnings = InputWarnings(inputs);
   warnings.insert(warnings.end(), targets.notes.begin(), targets.notes.end());
   if (const auto note = scene_file::BarePressureNote(targets)) warnings.push_back(AsKeywords(*note));
@@ -461,32 +351,14 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
   }
   const materials::ContactTargets targets = ReadTargets(kwargs);
   optim::BodyRegionDesignRequest request;
-  request.scene = ContactScene(inputs, targets);
+  request.scene = scene_file::BodyContactSceneOf(inputs.scene, targets);
   request.regions = targets.IsoLimits();
   if (targets.has_head()) {
     request.head = inputs.scene;  // the head's own keywords apply to its skin model
   } else {
     RefuseHeadKeywords(inputs, RegionText(kwargs));
   }
-  const auto names = [&](const char* keyword) {
-    std::vector<std::string> list;
-    if (const auto v = Option(kwargs, keyword)) {
-      if (py::isinstance<py::str>(*v)) {
-        list.push_back(v->cast<std::string>());
-      } else {
-        for (const py::handle item : *v) list.push_back(py::str(item).cast<std::string>());
-      }
-    }
-    return list;
-  };
-  const std::vector<std::string> material_names = names("materials");
-  const std::vector<std::string> families = names("families");
-  try {
-    request.materials = optim::SelectCandidates(materials::Catalog::BuiltIn(), material_names, families);
-  } catch (const std::invalid_argument& e) {
-    const std::string what = e.what();
-    throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
-  }
+  request.materials = Candidates(kwargs);
   request.rule = JudgeOptions(inputs, kwargs, Flag(kwargs, "allow_unknown_strength")).rule;
   if (const auto v = Option(kwargs, "max_thickness")) {
     request.max_thickness_m = ReadSceneQuantity(*v, quantity_specs::kCoveringThickness, "max_thickness");
@@ -518,7 +390,7 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
   const std::vector<BodyLimits> iso = targets.IsoLimits();
   if (!targets.has_head()) RefuseHeadKeywords(inputs, RegionText(kwargs));
   const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, targets);
+  const BodyContactScene scene = scene_file::BodyContactSceneOf(inputs.scene, targets);
   RequireBareContactArea(targets, scene);
 
   const robot::ContactMotionResult motion =
@@ -561,7 +433,7 @@ py::dict Sweep(const py::object& x, const py::object& y, const SceneInputs& inpu
   const SweepAxis x_axis = ReadAxis(x, "x");
   const std::optional<SweepAxis> y_axis = y.is_none() ? std::nullopt : std::optional(ReadAxis(y, "y"));
   const optim::BodyRegionOptions options = JudgeOptions(inputs, kwargs);
-  const BodyContactScene scene = ContactScene(inputs, targets);
+  const BodyContactScene scene = scene_file::BodyContactSceneOf(inputs.scene, targets);
   RequireBareContactArea(targets, scene);
   std::vector<optim::BodyRegionSweepPoint> grid;
   try {
@@ -572,27 +444,7 @@ py::dict Sweep(const py::object& x, const py::object& y, const SceneInputs& inpu
   }
   std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(x_axis.values.size())};
   if (y_axis) shape.push_back(static_cast<py::ssize_t>(y_axis->values.size()));
-  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  using Judgement = optim::BodyRegionJudgement;
-  struct Column {
-    const char* name;
-    double (*number)(const Judgement&);
-    bool (*flag)(const Judgement&);
-  };
-  // clang-format off
-  static const Column kColumns[] = {
-    {"peak_force_N", [](const Judgement& v) { return v.contact.peak_force_N; }, nullptr},
-    {"peak_pressure_Pa", [](const Judgement& v) { return v.contact.peak_pressure_Pa.value_or(kNaN); }, nullptr},
-    {"covering_deflection_m", [](const Judgement& v) { return v.contact.covering_deflection_m; }, nullptr},
-    {"fully_compressed", nullptr, [](const Judgement& v) { return v.contact.fully_compressed; }},
-    {"force_ratio", [](const Judgement& v) { return v.force_ratio; }, nullptr},
-    {"pressure_ratio", [](const Judgement& v) { return v.pressure_ratio.value_or(kNaN); }, nullptr},
-    {"compression_ratio", [](const Judgement& v) { return v.compression_ratio; }, nullptr},
-    {"crush_ratio", [](const Judgement& v) { return v.crush_check == optim::CrushCheck::kChecked ? v.crush_ratio : kNaN; }, nullptr},
-    {"governing_ratio", [](const Judgement& v) { return v.governing_ratio; }, nullptr},
-    {"admissible", nullptr, [](const Judgement& v) { return v.admissible; }},
-  };
-  // clang-format on
+  const report::BodyRegionSweepColumns table = report::BodyRegionSweepColumnsOf(grid, limits);
   py::dict out;
   out["x"] = py::array_t<double>(static_cast<py::ssize_t>(x_axis.values.size()), x_axis.values.data());
   out["x_quantity"] = x_axis.quantity;
@@ -600,39 +452,21 @@ py::dict Sweep(const py::object& x, const py::object& y, const SceneInputs& inpu
     out["y"] = py::array_t<double>(static_cast<py::ssize_t>(y_axis->values.size()), y_axis->values.data());
     out["y_quantity"] = y_axis->quantity;
   }
-  for (const Column& column : kColumns) {
-    if (column.number) {
-      py::array_t<double> array(shape);
-      double* data = array.mutable_data();
-      for (std::size_t i = 0; i < grid.size(); ++i) data[i] = grid[i].judgement ? column.number(*grid[i].judgement) : kNaN;
-      out[column.name] = array;
-    } else {
-      py::array_t<bool> array(shape);
-      bool* data = array.mutable_data();
-      for (std::size_t i = 0; i < grid.size(); ++i) data[i] = grid[i].judgement && column.flag(*grid[i].judgement);
-      out[column.name] = array;
-    }
+  for (const report::BodyRegionSweepColumn& column : table.columns) {
+    py::array_t<double> array(shape);
+    std::copy(column.values.begin(), column.values.end(), array.mutable_data());
+    out[py::str(std::string(column.name))] = column.flag ? py::object(array.attr("astype")(py::dtype::of<bool>())) : array;
   }
   py::array_t<bool> valid(shape);
-  py::list governing, errors;  // flat, reshaped to the grid by covopt/_body_regions.py
-  std::size_t admissible = 0, invalid = 0;
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    valid.mutable_data()[i] = grid[i].judgement.has_value();
-    governing.append(grid[i].judgement ? std::string(optim::ToString(grid[i].judgement->governing)) : std::string());
-    errors.append(grid[i].error);
-    if (grid[i].judgement && grid[i].judgement->admissible) ++admissible;
-    invalid += grid[i].judgement ? 0 : 1;
-  }
+  std::copy(table.valid.begin(), table.valid.end(), valid.mutable_data());
   out["valid"] = valid;
-  out["governing"] = governing;
-  out["error"] = errors;
+  out["governing"] = table.governing;  // flat, reshaped to the grid by covopt/_body_regions.py
+  out["error"] = table.errors;
   out["region"] = limits.region->name;
   out["area"] = limits.area->name;
   out["contact"] = std::string(ToString(limits.contact));
   out["scope"] = limits.Describe();
-  out["message"] = limits.region->name + " (" + limits.area->name + ") (" + std::string(ToString(limits.contact)) +
-                   " contact): " + std::to_string(grid.size()) + " points, " + std::to_string(admissible) +
-                   " within every limit, " + std::to_string(invalid) + " outside the model's range";
+  out["message"] = table.message;
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -14,6 +15,7 @@
 #include "covopt/core/body_contact.hpp"
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/report/body_regions_json.hpp"
+#include "covopt/scene_file/targets.hpp"
 #include "body_region_inputs.hpp"
 #include "scene_keywords.hpp"
 
@@ -63,6 +65,8 @@ void RegisterBodyRegions(py::module_& m) {
   m.def("body_regions", &BodyRegions);
   m.def("body_region_limits", &BodyRegionLimits, py::arg("region"), py::arg("area"),
         py::arg("contact"));
+  // The library's resolver decides what names the head (scene_file/targets.hpp).
+  m.def("names_the_head", [](std::string_view name) { return scene_file::NamesTheHead(name); }, py::arg("name"));
 }
 
 }  // namespace covopt::python

@@ -44,10 +44,12 @@
 #include "covopt/optim/design.hpp"
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/report/design_json.hpp"
+#include "covopt/report/history_csv.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/simulation_json.hpp"
 #include "covopt/core/scene_fields.hpp"
 #include "covopt/scene_file/fields.hpp"
+#include "covopt/scene_file/integrators.hpp"
 #include "covopt/scene_file/scene_inputs.hpp"
 #include "covopt/scene_file/spelling.hpp"
 #include "bounded.hpp"
@@ -67,13 +69,6 @@ std::span<const scene_file::FieldSpelling> SceneKeywords() {
   return scene_file::SceneInputSpellings(scene_file::ValueStyle::kKeyword);
 }
 
-/// The field of a Scene keyword; empty when it is none.
-std::string_view FieldOfKeyword(std::string_view keyword) {
-  for (const scene_file::FieldSpelling& k : SceneKeywords()) {
-    if (k.name == keyword) return k.field;
-  }
-  return {};
-}
 
 std::string Repr(const py::handle& value) { return py::repr(value).cast<std::string>(); }
 
@@ -206,6 +201,21 @@ const QuantitySpec* SpecOf(std::string_view field) {
 
 }  // namespace
 
+std::string_view FieldOfKeyword(std::string_view keyword) {
+  for (const scene_file::FieldSpelling& k : SceneKeywords()) {
+    if (k.name == keyword) return k.field;
+  }
+  return {};
+}
+
+std::string SolveKeywords(std::string message) {
+  for (const auto& [field, keyword] : {std::pair{"time_path.relative_tolerance", "rtol"},
+                                       {"time_path.absolute_tolerance", "atol"}, {"time_path.max_steps", "max_steps"}}) {
+    if (message.rfind(field, 0) == 0) message = keyword + message.substr(std::string_view(field).size());
+  }
+  return message;
+}
+
 SceneInputs ReadScene(const py::kwargs& keywords) {
   SceneInputs inputs;
   for (const auto& item : keywords) {
@@ -317,7 +327,6 @@ SolveOptions ReadSolveOptions(const py::dict& kwargs, const Scene& scene) {
   options.record_history = Flag(kwargs, "history");
   if (const auto v = get("method")) {
     const std::string method = py::str(*v).cast<std::string>();
-    const auto named = method == "cvode" ? std::optional(ComputationMethod::kCvodeAdams) : ParseComputationMethod(method);
     if (method == "exact") {
       if (!scene.has_energy_integral()) {
         throw std::invalid_argument("method='exact': the exact path needs an energy integral; a scene with "
@@ -330,16 +339,12 @@ SolveOptions ReadSolveOptions(const py::dict& kwargs, const Scene& scene) {
                                     "give a time-path method");
       }
       options.path = PathChoice::kExact;
-    } else if (named && *named != ComputationMethod::kExact) {
+    } else if (const auto named = scene_file::ParseIntegrator(method)) {
       options.path = PathChoice::kTimePath;
       options.time_path.method = *named;
     } else {
-      std::string names;
-      for (const ComputationMethod m : TimeIntegrationMethods()) {
-        names += std::string(names.empty() ? "" : ", ") + std::string(ToString(m));
-      }
-      throw std::invalid_argument("method: expected exact, cvode or one of " + names + " (got '" +
-                                  method + "')");
+      throw std::invalid_argument("method: expected exact, cvode or one of " + scene_file::IntegratorNames() +
+                                  " (got '" + method + "')");
     }
   }
   const bool time_path = ChoosePath(scene, options) == PathChoice::kTimePath;
@@ -363,27 +368,10 @@ SolveOptions ReadSolveOptions(const py::dict& kwargs, const Scene& scene) {
 }
 
 /// The columns of `--history` as numpy arrays (the extended ones beyond the two-mass model).
-py::dict HistoryColumns(const std::vector<HistorySample>& h, const ImpactModel& model, const Scene& scene) {
+py::dict HistoryColumns(const std::vector<HistorySample>& h, const ImpactModel& model) {
   py::dict columns;
-  const auto column = [&](const char* name, auto field) {
-    py::array_t<double> array(static_cast<py::ssize_t>(h.size()));
-    double* data = array.mutable_data();
-    for (std::size_t i = 0; i < h.size(); ++i) data[i] = field(h[i]);
-    columns[name] = array;
-  };
-  column("time_s", [](const HistorySample& s) { return s.time_s; });
-  column("penetration_m", [](const HistorySample& s) { return s.penetration_m; });
-  column("penetration_rate_m_per_s", [](const HistorySample& s) { return s.penetration_rate_m_per_s; });
-  column("force_N", [](const HistorySample& s) { return s.force_N; });
-  column("compressive_stress_Pa", [](const HistorySample& s) { return s.compressive_stress_Pa; });
-  column("tensile_stress_Pa",
-         [&model](const HistorySample& s) { return model.TensileFromCompressive(s.compressive_stress_Pa); });
-  column("energy_density_J_per_m2", [](const HistorySample& s) { return s.energy_density_J_per_m2; });
-  if (!scene.is_conservative_two_mass()) {  // the CLI's extra --history columns
-    column("robot_speed_m_per_s", [](const HistorySample& s) { return s.robot_speed_m_per_s; });
-    column("head_speed_m_per_s", [](const HistorySample& s) { return s.head_speed_m_per_s; });
-    column("neck_force_N", [](const HistorySample& s) { return s.neck_force_N; });
-    column("dissipated_work_J", [](const HistorySample& s) { return s.dissipated_work_J; });
+  for (const report::HistoryColumn& c : report::ImpactHistoryColumns(model, h)) {
+    columns[py::str(std::string(c.name))] = py::array_t<double>(static_cast<py::ssize_t>(c.values.size()), c.values.data());
   }
   return columns;
 }
@@ -406,18 +394,13 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
     py::gil_scoped_release release;
     report.result = Solve(*model, options);
   } catch (const std::invalid_argument& e) {  // an option out of range, named as the keyword
-    std::string message = e.what();
-    for (const auto& [field, keyword] : {std::pair{"time_path.relative_tolerance", "rtol"},
-                                         {"time_path.absolute_tolerance", "atol"}, {"time_path.max_steps", "max_steps"}}) {
-      if (message.rfind(field, 0) == 0) message = keyword + message.substr(std::string_view(field).size());
-    }
-    throw std::invalid_argument(message);
+    throw std::invalid_argument(SolveKeywords(e.what()));
   }
   if (!report.result.ok()) RaiseImpactFailure(report.result);
   inputs.Judge(report);
   report.input_warnings = InputWarnings(inputs);
   py::dict result = JsonToPython(report::SimulationJson(report, -1));
-  if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model, report.scene);
+  if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model);
   return WithReportCharts(std::move(result), [report] { return std::vector{report::HistoryChart(report)}; });
 }
 
@@ -453,16 +436,11 @@ optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& s
     const std::string method = py::str(*v).cast<std::string>();
     if (method == "exact") {
       method_exact = true;
-    } else if (method == "cvode") {
-      oracle.time_path.method = ComputationMethod::kCvodeAdams;
-    } else if (const auto named = ParseComputationMethod(method); named && *named != ComputationMethod::kExact) {
+    } else if (const auto named = scene_file::ParseIntegrator(method)) {
       oracle.time_path.method = *named;
     } else {
-      std::string names;
-      for (const ComputationMethod m : TimeIntegrationMethods()) {
-        names += std::string(names.empty() ? "" : ", ") + std::string(ToString(m));
-      }
-      throw std::invalid_argument("method: expected exact, cvode or one of " + names + " (got '" + method + "')");
+      throw std::invalid_argument("method: expected exact, cvode or one of " + scene_file::IntegratorNames() +
+                                  " (got '" + method + "')");
     }
   }
   if (method_exact) {
@@ -493,10 +471,6 @@ optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& s
   return oracle;
 }
 
-namespace {
-
-/// optimize's candidates: the built-in catalog and the catalog files (or only those), filtered
-/// by materials= and families=.
 std::vector<optim::CandidateMaterial> Candidates(const py::kwargs& kwargs) {
   const auto get = [&](const char* name) { return Option(kwargs, name); };
   const bool no_builtin = Flag(kwargs, "no_builtin");
@@ -517,6 +491,8 @@ std::vector<optim::CandidateMaterial> Candidates(const py::kwargs& kwargs) {
     throw std::invalid_argument((what.rfind("no family", 0) == 0 ? "families: " : "materials: ") + what);
   }
 }
+
+namespace {
 
 /// covopt.optimize(**scene, ...): see python/covopt/__init__.py.
 py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {

@@ -15,6 +15,7 @@
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/core/sweep.hpp"
+#include "covopt/optim/covering_design.hpp"
 #include "covopt/optim/oracle.hpp"
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/report/simulation_json.hpp"
@@ -86,6 +87,16 @@ SweepAxis ReadAxis(const pybind11::handle& axis, const char* keyword);
 /// allow_full_compression=, allow_crushing=, the covering's crush strength and the oracle
 /// keywords (speed_limit_bindings.cpp).
 optim::SpeedLimitOptions SpeedLimitOptionsFrom(const SceneInputs& inputs, const pybind11::kwargs& kwargs);
+
+/// The field of a Scene keyword ("robot.mass" for robot_mass); empty when it is none.
+std::string_view FieldOfKeyword(std::string_view keyword);
+
+/// Solve's option messages name time_path.*: here they are the keywords rtol, atol, max_steps.
+std::string SolveKeywords(std::string message);
+
+/// optimize's candidates: the built-in catalog and the catalog files (catalog=; only those with
+/// no_builtin=True), filtered by materials= and families= (module.cpp).
+std::vector<optim::CandidateMaterial> Candidates(const pybind11::kwargs& kwargs);
 
 /// json.loads(text).
 pybind11::object JsonToPython(const std::string& text);

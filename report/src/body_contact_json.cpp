@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include <covopt/core/number_format.hpp>
 #include <nlohmann/json.hpp>
@@ -196,6 +197,14 @@ BodyRegionTableRow TableRow(double robot_mass_kg, const optim::BodyRegionSpeedLi
   return r;
 }
 
+BodyRegionTableRow TableRow(const optim::TargetSpeedLimit& row, const std::string& material) {
+  BodyRegionTableRow r = row.region ? TableRow(row.robot_mass_kg, *row.region)
+                                    : HeadTableRow(row.robot_mass_kg, row.head_bare.value(), row.head_covered,
+                                                   std::string(optim::HeadCriteriaName()));
+  r.material = material;
+  return r;
+}
+
 BodyRegionTableRow HeadTableRow(double robot_mass_kg, const optim::SpeedLimit& bare,
                                 const std::optional<optim::SpeedLimit>& covered, std::string criteria) {
   BodyRegionTableRow r;
@@ -338,6 +347,44 @@ std::string BodyRegionTrajectoryJson(const optim::BodyRegionTrajectoryCheck& che
   }
   j["warnings"] = Strings(warnings);
   return j.dump(2);
+}
+
+std::string BodyContactTimePathJson(const BodyContactResult& r) {
+  nlohmann::ordered_json j;
+  j["method"] = r.method;
+  j["peak_force_N"] = Number(r.peak_force_N);
+  j["peak_pressure_Pa"] = Number(r.peak_pressure_Pa);
+  j["contact_radius_m"] = Number(r.contact_radius_m);
+  j["covering_deflection_m"] = Number(r.covering_deflection_m);
+  j["body_deflection_m"] = Number(r.body_deflection_m);
+  j["max_approach_m"] = Number(r.max_approach_m);
+  j["compression_ratio"] = Number(r.compression_ratio);
+  j["fully_compressed"] = r.fully_compressed;
+  j["energy_transferred_J"] = Number(r.energy_transferred_J);
+  j["contact_duration_s"] = Number(r.contact_duration_s);
+  j["rebound_speed_m_per_s"] = Number(r.rebound_speed_m_per_s);
+  j["energy_residual"] = Number(r.energy_residual);
+  j["warnings"] = r.WarningMessages();
+  return j.dump(2);
+}
+
+std::vector<HistoryColumn> BodyContactHistoryColumns(std::span<const BodyContactSample> history) {
+  using Field = double (*)(const BodyContactSample&);
+  static constexpr std::pair<std::string_view, Field> kFields[] = {
+      {"time_s", [](const BodyContactSample& s) { return s.time_s; }},
+      {"approach_m", [](const BodyContactSample& s) { return s.approach_m; }},
+      {"approach_rate_m_per_s", [](const BodyContactSample& s) { return s.approach_rate_m_per_s; }},
+      {"force_N", [](const BodyContactSample& s) { return s.force_N; }},
+      {"robot_speed_m_per_s", [](const BodyContactSample& s) { return s.robot_speed_m_per_s; }},
+      {"braking_work_J", [](const BodyContactSample& s) { return s.braking_work_J; }},
+  };
+  std::vector<HistoryColumn> columns;
+  for (const auto& [name, field] : kFields) {
+    HistoryColumn& c = columns.emplace_back(HistoryColumn{name, {}});
+    c.values.reserve(history.size());
+    for (const BodyContactSample& s : history) c.values.push_back(field(s));
+  }
+  return columns;
 }
 
 }  // namespace covopt::report

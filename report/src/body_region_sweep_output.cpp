@@ -1,6 +1,8 @@
 #include "covopt/report/body_region_sweep_output.hpp"
 
 #include <cmath>
+#include <limits>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -107,6 +109,52 @@ std::string BodyRegionSweepChart(const BodyRegionSweepTable& table, const SweepA
                      "dashtype 2 linecolor rgb '#c0392b' title 'limit (1/SF)'\n", bound);
   }
   return s + "unset output\n";
+}
+
+BodyRegionSweepColumns BodyRegionSweepColumnsOf(std::span<const optim::BodyRegionSweepPoint> grid,
+                                                const materials::BodyLimits& limits) {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  using Judgement = optim::BodyRegionJudgement;
+  struct Column {
+    std::string_view name;
+    double (*value)(const Judgement&);
+    bool flag;
+  };
+  // clang-format off
+  static constexpr Column kColumns[] = {
+    {"peak_force_N", [](const Judgement& v) { return v.contact.peak_force_N; }, false},
+    {"peak_pressure_Pa", [](const Judgement& v) { return v.contact.peak_pressure_Pa.value_or(kNaN); }, false},
+    {"covering_deflection_m", [](const Judgement& v) { return v.contact.covering_deflection_m; }, false},
+    {"fully_compressed", [](const Judgement& v) { return v.contact.fully_compressed ? 1.0 : 0.0; }, true},
+    {"force_ratio", [](const Judgement& v) { return v.force_ratio; }, false},
+    {"pressure_ratio", [](const Judgement& v) { return v.pressure_ratio.value_or(kNaN); }, false},
+    {"compression_ratio", [](const Judgement& v) { return v.compression_ratio; }, false},
+    {"crush_ratio", [](const Judgement& v) { return v.crush_check == optim::CrushCheck::kChecked ? v.crush_ratio : kNaN; }, false},
+    {"governing_ratio", [](const Judgement& v) { return v.governing_ratio; }, false},
+    {"admissible", [](const Judgement& v) { return v.admissible ? 1.0 : 0.0; }, true},
+  };
+  // clang-format on
+  BodyRegionSweepColumns out;
+  for (const Column& column : kColumns) {
+    BodyRegionSweepColumn& c = out.columns.emplace_back(BodyRegionSweepColumn{column.name, column.flag, {}});
+    c.values.reserve(grid.size());
+    for (const optim::BodyRegionSweepPoint& point : grid) {
+      c.values.push_back(point.judgement ? column.value(*point.judgement) : (column.flag ? 0.0 : kNaN));
+    }
+  }
+  std::size_t admissible = 0;
+  std::size_t invalid = 0;
+  for (const optim::BodyRegionSweepPoint& point : grid) {
+    out.valid.push_back(point.judgement.has_value());
+    out.governing.push_back(point.judgement ? std::string(optim::ToString(point.judgement->governing)) : std::string());
+    out.errors.push_back(point.error);
+    if (point.judgement && point.judgement->admissible) ++admissible;
+    if (!point.judgement) ++invalid;
+  }
+  out.message = fmt::format("{} ({}) ({} contact): {} points, {} within every limit, {} outside the model's range",
+                            limits.region->name, limits.area->name, ToString(limits.contact), grid.size(), admissible,
+                            invalid);
+  return out;
 }
 
 }  // namespace covopt::report

@@ -175,4 +175,24 @@ std::optional<std::string> BarePressureNote(const ContactTargets& targets) {
   return "the bare robot's pressure is not evaluated (no body.contact_area): its limits are those of the force alone";
 }
 
+BodyContactScene BodyContactSceneOf(const Scene& scene, const materials::ContactTargets& targets) {
+  BodyContactScene contact;
+  contact.robot_mass_kg = scene.robot.mass_kg;
+  contact.speed_m_per_s = scene.robot.speed_m_per_s;
+  contact.robot_radius_m = scene.robot.radius_m;
+  contact.covering = scene.covering;
+  contact.contact = targets.contact;
+  contact.contact_area_m2 = targets.contact_area_m2;
+  contact.reaction_delay_s = scene.robot.reaction_delay_s;
+  contact.braking_m_per_s2 = scene.robot.braking_m_per_s2;
+  return contact;
+}
+
+bool NamesTheHead(std::string_view name) noexcept {
+  constexpr std::string_view kHead = "head";
+  return std::ranges::equal(name, kHead, [](char a, char b) {
+    return std::tolower(static_cast<unsigned char>(a)) == b;
+  });
+}
+
 }  // namespace covopt::scene_file

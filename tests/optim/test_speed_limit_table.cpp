@@ -3,12 +3,16 @@
 // MotionSamples (optim/trajectory_check.hpp), the adapter from any motion's samples.
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
+#include <covopt/materials/body_regions.hpp>
+#include <covopt/materials/contact_target.hpp>
 #include <covopt/optim/speed_limit_table.hpp>
+#include <covopt/optim/target_speed_limits.hpp>
 #include <covopt/optim/trajectory_check.hpp>
 
 namespace {
@@ -82,3 +86,45 @@ TEST_CASE("MotionSamples takes time, speed and reflected mass from any motion's 
 }
 
 }  // namespace
+
+TEST_CASE("the targets' speed-limit table: the regions' rows and the head's where named, per mass", "[speed_limit_table]") {
+  Scene scene;
+  scene.covering.thickness_m = 0.01;
+  covopt::materials::ContactTargets targets;
+  const std::vector<covopt::materials::BodyLimits> all =
+      covopt::materials::BodyRegionTable::BuiltIn().AllLimits(covopt::ContactType::kTransient);
+  targets.targets = {{all.front()}, {std::nullopt}, {all.back()}};  // a region, the head, a region
+  co::TargetSpeedLimitRequest request;
+  request.scene = scene;
+  request.contact_scene.robot_radius_m = scene.robot.radius_m;
+  request.contact_scene.speed_m_per_s = scene.robot.speed_m_per_s;
+  request.contact_scene.covering = scene.covering;
+  request.robot_masses_kg = {2.0, 10.0};
+  const co::TargetSpeedLimits table = co::TargetSpeedLimitTable(request, targets);
+  CHECK(table.failure.empty());
+  REQUIRE(table.rows.size() == 6);
+  for (std::size_t m = 0; m < 2; ++m) {
+    const double mass = request.robot_masses_kg[m];
+    const co::TargetSpeedLimit* rows = &table.rows[3 * m];
+    for (std::size_t t = 0; t < 3; ++t) CHECK(rows[t].robot_mass_kg == mass);
+    // The regions' rows are BodyRegionSpeedLimitTable's at that mass, in the order named.
+    covopt::BodyContactScene at = request.contact_scene;
+    at.robot_mass_kg = mass;
+    const std::vector<covopt::materials::BodyLimits> iso{all.front(), all.back()};
+    const std::vector<co::BodyRegionSpeedLimitRow> expected = co::BodyRegionSpeedLimitTable(at, iso);
+    REQUIRE(rows[0].region.has_value());
+    REQUIRE(rows[2].region.has_value());
+    CHECK(rows[0].region->bare.max_safe_speed_m_per_s == expected[0].bare.max_safe_speed_m_per_s);
+    CHECK(rows[2].region->bare.max_safe_speed_m_per_s == expected[1].bare.max_safe_speed_m_per_s);
+    // The head's is MaxSafeSpeed's, bare and with the covering.
+    REQUIRE_FALSE(rows[1].region.has_value());
+    Scene head = scene;
+    head.robot.mass_kg = mass;
+    REQUIRE(rows[1].head_covered.has_value());
+    CHECK(rows[1].head_covered->max_safe_speed_m_per_s == co::MaxSafeSpeed(head).max_safe_speed_m_per_s);
+    head.covering.thickness_m = 0.0;
+    CHECK(rows[1].head_bare->max_safe_speed_m_per_s == co::MaxSafeSpeed(head).max_safe_speed_m_per_s);
+  }
+  // The heavier robot is limited to a lower speed on the head.
+  CHECK(table.rows[4].head_bare->max_safe_speed_m_per_s < table.rows[1].head_bare->max_safe_speed_m_per_s);
+}

@@ -8,6 +8,7 @@
 
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/materials/catalog.hpp"
+#include "covopt/scene_file/integrators.hpp"
 #include "covopt/scene_file/scene_inputs.hpp"
 #include "covopt/scene_file/spelling.hpp"
 #include "covopt/scene_file/targets.hpp"
@@ -225,4 +226,49 @@ TEST_CASE("targets: an ISO region reads the robot, the covering and the safety f
   for (const char* field : {"head.mass", "scalp.thickness", "model.damping", "limits.laceration", "robot.modulus"}) {
     CHECK_FALSE(covopt::scene_file::BodyRegionReads(field));
   }
+}
+
+TEST_CASE("targets: the body contact takes the scene's robot and covering and the targets' contact") {
+  covopt::Scene scene;
+  scene.robot.mass_kg = 7.5;
+  scene.robot.speed_m_per_s = 0.8;
+  scene.robot.radius_m = 0.03;
+  scene.robot.reaction_delay_s = 0.02;
+  scene.robot.braking_m_per_s2 = 4.0;
+  scene.covering.thickness_m = 0.012;
+  TargetRequest request = Names({"chest"});
+  request.contact = "clamped";
+  request.contact_area_m2 = 2e-4;
+  const ContactTargets targets = *ResolveTargets(request);
+  const covopt::BodyContactScene contact = covopt::scene_file::BodyContactSceneOf(scene, targets);
+  CHECK(contact.robot_mass_kg == 7.5);
+  CHECK(contact.speed_m_per_s == 0.8);
+  CHECK(contact.robot_radius_m == 0.03);
+  CHECK(contact.reaction_delay_s == 0.02);
+  CHECK(contact.braking_m_per_s2 == 4.0);
+  CHECK(contact.covering.thickness_m == 0.012);
+  CHECK(contact.contact == ContactType::kClamped);
+  CHECK(contact.contact_area_m2 == 2e-4);
+}
+
+TEST_CASE("targets: the head alone is named by head in any case, nothing else") {
+  for (const char* head : {"head", "HEAD", "Head"}) CHECK(covopt::scene_file::NamesTheHead(head));
+  for (const char* other : {"chest", "all", "heads", "hea", "head,chest", ""}) {
+    CAPTURE(other);
+    CHECK_FALSE(covopt::scene_file::NamesTheHead(other));
+  }
+}
+
+TEST_CASE("integrators: cvode is CVODE's Adams method, each integrator by its name, exact none") {
+  using covopt::ComputationMethod;
+  using covopt::scene_file::ParseIntegrator;
+  CHECK(ParseIntegrator("cvode") == ComputationMethod::kCvodeAdams);
+  for (const ComputationMethod method : covopt::TimeIntegrationMethods()) {
+    CAPTURE(covopt::ToString(method));
+    CHECK(ParseIntegrator(covopt::ToString(method)) == method);
+    CHECK_THAT(covopt::scene_file::IntegratorNames(), Contains(std::string(covopt::ToString(method))));
+  }
+  CHECK_FALSE(ParseIntegrator("exact").has_value());
+  CHECK_FALSE(ParseIntegrator("time-path").has_value());
+  CHECK_FALSE(ParseIntegrator("").has_value());
 }

@@ -67,6 +67,14 @@ struct BodyRegionOptions {
   std::optional<CandidateMaterial> material;
 };
 
+/// The options of a body-region verdict as both shells take them: the safety factor; the
+/// paper's criterion when `allow_full_compression`, else no full compression; crushing allowed
+/// when `allow_crushing`; a covering of unknown strength judged without the crush check when
+/// `unknown_strength_allowed`; and the covering's catalog `material` (its crush behaviour and
+/// strength), if any.
+BodyRegionOptions BodyRegionOptionsOf(double safety_factor, bool allow_full_compression, bool allow_crushing,
+                                      bool unknown_strength_allowed, const materials::Material* material);
+
 /// The bare robot's own verdict needs its pressure: Table A.2 limits the pressure as well as the
 /// force, and a bare robot's pressure is its force over its contact area. True for a scene with
 /// no covering and no contact area, whose verdict would be the force's alone (the CLI, Python and

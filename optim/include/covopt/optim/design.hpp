@@ -99,6 +99,10 @@ struct DesignResult {
   std::string BriefReport() const;
 };
 
+/// One catalog material as a candidate: its Poisson ratio or materials::kDefaultPoissonRatio
+/// (poisson_assumed), its family, crush behaviour and compressive strength (0 when unknown).
+CandidateMaterial CandidateOf(const materials::Material& material);
+
 /// Candidate materials from a catalog: the entries named in `names` (catalog names, compared
 /// ignoring case, in the order given) or, when `names` is empty, every entry in catalog order;
 /// then only those of the `families` (ignoring case), when any are given. A material without a

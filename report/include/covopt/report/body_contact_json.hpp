@@ -17,6 +17,8 @@
 #include "covopt/optim/body_region_check.hpp"
 #include "covopt/optim/body_region_trajectory.hpp"
 #include "covopt/optim/speed_limit.hpp"
+#include "covopt/optim/target_speed_limits.hpp"
+#include "covopt/report/history_csv.hpp"
 
 namespace covopt::report {
 
@@ -39,6 +41,17 @@ std::string BodyRegionJudgementJson(const optim::BodyRegionJudgement& judgement,
 /// <message>": the lines simulate --body-region adds to its warnings.
 std::vector<std::string> TimePathWarnings(const optim::BodyRegionJudgement& judgement,
                                           const BodyContactResult* time_path);
+
+/// The contact of a time-path run (simulate with a time path beside the exact verdict):
+/// {method, peak_force_N, peak_pressure_Pa, contact_radius_m, covering_deflection_m,
+/// body_deflection_m, max_approach_m, compression_ratio, fully_compressed,
+/// energy_transferred_J, contact_duration_s, rebound_speed_m_per_s, energy_residual, warnings};
+/// a value not evaluated is null.
+std::string BodyContactTimePathJson(const BodyContactResult& time_path);
+
+/// The time history of a body contact as columns: time_s, approach_m, approach_rate_m_per_s,
+/// force_N, robot_speed_m_per_s, braking_work_J.
+std::vector<HistoryColumn> BodyContactHistoryColumns(std::span<const BodyContactSample> history);
 
 /// `simulate --body-region`: {scene (BodyContactSceneJson), safety_factor, regions
 /// [BodyRegionJudgementJson...], head (the head's simulation object, `head_json`, or null),
@@ -77,6 +90,9 @@ BodyRegionTableRow TableRow(double robot_mass_kg, const optim::BodyRegionSpeedLi
 /// The head's row at `robot_mass_kg`: Park et al.'s criteria, `criteria` naming them.
 BodyRegionTableRow HeadTableRow(double robot_mass_kg, const optim::SpeedLimit& bare,
                                 const std::optional<optim::SpeedLimit>& covered, std::string criteria);
+/// A row of optim::TargetSpeedLimitTable (the head's named by optim::HeadCriteriaName), with
+/// the covering's `material` ("" if none).
+BodyRegionTableRow TableRow(const optim::TargetSpeedLimit& row, const std::string& material);
 
 /// The columns, as the JSON rows' keys and the CSV header: material, robot_mass_kg, region, area,
 /// contact, force_limit_N, pressure_limit_Pa, bare_max_speed_m_per_s, bare_limited_by,

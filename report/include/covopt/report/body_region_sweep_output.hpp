@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/optim/body_region_sweep.hpp"
@@ -42,5 +44,32 @@ BodyRegionSweepTable LayOutBodyRegionSweep(std::span<const optim::BodyRegionSwee
 std::string BodyRegionSweepChart(const BodyRegionSweepTable& table, const SweepAxisArgument& x,
                                  const SweepAxisArgument* y, const materials::BodyLimits& limits,
                                  double safety_factor, ChartFormat format, const std::string& output_path);
+
+/// One column of the grid as values per point (Python's covopt.sweep with body_region):
+/// a number, NaN where the point is invalid or the quantity not evaluated; or a flag (`flag`),
+/// 1 or 0, 0 where the point is invalid.
+struct BodyRegionSweepColumn {
+  std::string_view name;  ///< peak_force_N, ..., admissible: the CSV's names
+  bool flag = false;
+  std::vector<double> values;
+};
+
+/// The grid as columns, in the grid's order.
+struct BodyRegionSweepColumns {
+  /// peak_force_N, peak_pressure_Pa, covering_deflection_m, fully_compressed (flag),
+  /// force_ratio, pressure_ratio, compression_ratio, crush_ratio (NaN where not checked),
+  /// governing_ratio, admissible (flag).
+  std::vector<BodyRegionSweepColumn> columns;
+  std::vector<bool> valid;             ///< the point has a verdict
+  std::vector<std::string> governing;  ///< "force", ...; "" where invalid
+  std::vector<std::string> errors;     ///< the library's message where invalid, else ""
+  /// "chest (sternum) (transient contact): 12 points, 3 within every limit, 0 outside the
+  /// model's range".
+  std::string message;
+};
+
+/// Lays out `grid` (optim::SweepBodyRegion's points for `limits`) as columns.
+BodyRegionSweepColumns BodyRegionSweepColumnsOf(std::span<const optim::BodyRegionSweepPoint> grid,
+                                                const materials::BodyLimits& limits);
 
 }  // namespace covopt::report

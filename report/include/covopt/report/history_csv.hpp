@@ -21,6 +21,16 @@ inline constexpr std::string_view kHistoryCsvHeader =
 inline constexpr std::string_view kHistoryCsvExtendedColumns =
     ",robot_speed_m_per_s,head_speed_m_per_s,neck_force_N,dissipated_work_J";
 
+/// One column of a time history: its name (a CSV header's) and its value per sample.
+struct HistoryColumn {
+  std::string_view name;
+  std::vector<double> values;
+};
+
+/// The head impact's history as columns (Python's simulate(history=True)): kHistoryCsvHeader's,
+/// then kHistoryCsvExtendedColumns' for a scene beyond the conservative two-mass model.
+std::vector<HistoryColumn> ImpactHistoryColumns(const ImpactModel& model, const std::vector<HistorySample>& history);
+
 /// The history as CSV text: kHistoryCsvHeader (and kHistoryCsvExtendedColumns for a scene
 /// beyond the conservative two-mass model), then one row per sample (shortest
 /// round-trip decimal numbers; a non-finite value is an empty field). tensile_stress_Pa is

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "covopt/core/body_contact.hpp"
+#include "covopt/core/scene.hpp"
 #include "covopt/materials/contact_target.hpp"
 
 namespace covopt::scene_file {
@@ -44,6 +45,15 @@ struct TargetRequest {
 /// area, contact or contact area but no name: refused).
 /// @throws std::invalid_argument one line naming the field, the value and the choices.
 std::optional<materials::ContactTargets> ResolveTargets(const TargetRequest& request);
+
+/// The body contact of `scene`'s robot (mass, speed, radius, reaction delay and braking) and
+/// covering, with the targets' contact type and the bare robot's contact area; k_H and m_H
+/// are set per region by optim::WithRegion. Both shells build it here.
+BodyContactScene BodyContactSceneOf(const Scene& scene, const materials::ContactTargets& targets);
+
+/// Whether one name given for a target is the head alone ("head", any case): a front end then
+/// judges it by the head's own model.
+bool NamesTheHead(std::string_view name) noexcept;
 
 /// The bare-robot contact-area policy: the bare robot's own verdict needs its pressure
 /// (ISO/TS 15066 Table A.2 limits the pressure as well as the force, and a bare robot's
