@@ -66,10 +66,7 @@ void PrintBodyRegionTable(std::ostream& out, const BodyRegionTable& table) {
 namespace {
 
 void Row(std::ostream& out, std::string_view label, std::string_view value) {
-  const std::vector<std::string> lines = WrapWords(value, 72);
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    fmt::print(out, "  {:<20} {}\n", i == 0 ? label : "", lines[i]);
-  }
+  PrintWrappedRow(out, label, 20, value, 72);
 }
 
 }  // namespace

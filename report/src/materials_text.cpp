@@ -81,11 +81,7 @@ void PrintMaterialTable(std::ostream& out, const std::vector<const Material*>& r
 namespace {
 
 void ShowRow(std::ostream& out, std::string_view label, std::string_view value) {
-  const std::vector<std::string> lines = WrapWords(value, 76);
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    fmt::print(out, "  {:<16} {}\n", i == 0 ? label : "", lines[i]);
-  }
-  if (lines.empty()) fmt::print(out, "  {}\n", label);
+  PrintWrappedRow(out, label, 16, value, 76);
 }
 
 }  // namespace

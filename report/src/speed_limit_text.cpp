@@ -7,6 +7,7 @@
 #include <fmt/ostream.h>
 
 #include "covopt/core/quantity.hpp"
+#include "covopt/report/body_contact_json.hpp"
 #include "covopt/report/robust_text.hpp"
 
 namespace covopt::report {
@@ -72,6 +73,32 @@ std::string RobustSpeedLimitRowText(const optim::UncertaintyBox& box, optim::Spe
                         limit.found_by, limit.evaluations);
   }
   return text;
+}
+
+void PrintBodyRegionSpeedLimitRows(std::ostream& out, std::span<const BodyRegionTableRow> rows) {
+  std::string block;
+  for (const report::BodyRegionTableRow& row : rows) {
+    const std::string key = fmt::format("{}|{}", row.material, row.robot_mass_kg);
+    if (key != block) {
+      block = key;
+      fmt::print(out, "\n{}robot mass {}\n", row.material.empty() ? "" : "Material " + row.material + ", ",
+                 MassText(row.robot_mass_kg));
+      fmt::print(out, "  {:<18} {:<34} {:>7} {:>8}  {:>9}  {:<16} {:>11}  {:<16} {:>7}\n", "region", "area",
+                 "F_lim N", "p_lim", "bare m/s", "bare binds", "covered m/s", "covered binds", "gain");
+    }
+    const auto speed = [](const std::optional<double>& v, const std::string& status) {
+      if (!v) return std::string("none");
+      return fmt::format("{}{:.4f}", status == "safe-up-to-search-limit" ? ">=" : "", *v);
+    };
+    fmt::print(out, "  {:<18} {:<34} {:>7} {:>8}  {:>9}  {:<16} {:>11}  {:<16} {:>7}\n", row.region,
+               row.area.empty() ? "-" : row.area,
+               row.force_limit_N ? fmt::format("{:.0f}", *row.force_limit_N) : std::string("-"),
+               row.pressure_limit_Pa ? fmt::format("{:.0f}", *row.pressure_limit_Pa * 1e-4) : std::string("-"),
+               speed(row.bare_max_speed_m_per_s, row.bare_status), row.bare_limited_by,
+               row.has_covering ? speed(row.covered_max_speed_m_per_s, row.covered_status) : std::string("-"),
+               row.has_covering ? row.covered_limited_by : std::string("-"),
+               row.gain ? fmt::format("{:.2f}×", *row.gain) : std::string("-"));
+  }
 }
 
 }  // namespace covopt::report

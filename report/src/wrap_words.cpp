@@ -1,5 +1,8 @@
 #include "covopt/report/wrap_words.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
 namespace covopt::report {
 
 std::vector<std::string> WrapWords(std::string_view text, std::size_t width) {
@@ -23,6 +26,15 @@ std::vector<std::string> WrapWords(std::string_view text, std::size_t width) {
   }
   if (!line.empty()) lines.push_back(line);
   return lines;
+}
+
+void PrintWrappedRow(std::ostream& out, std::string_view label, std::size_t label_width, std::string_view value,
+                     std::size_t width) {
+  const std::vector<std::string> lines = WrapWords(value, width);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    fmt::print(out, "  {:<{}} {}\n", i == 0 ? label : "", label_width, lines[i]);
+  }
+  if (lines.empty()) fmt::print(out, "  {}\n", label);
 }
 
 }  // namespace covopt::report

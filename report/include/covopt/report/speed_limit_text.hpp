@@ -10,6 +10,7 @@
 
 #include <covopt/optim/robust_search.hpp>
 #include <covopt/optim/speed_limit_table.hpp>
+#include <covopt/report/body_contact_json.hpp>
 
 namespace covopt::report {
 
@@ -24,5 +25,10 @@ void PrintSpeedLimitRows(std::ostream& out, optim::SpeedLimitQuantity quantity, 
 /// evaluations)", each line ending in a newline.
 std::string RobustSpeedLimitRowText(const optim::UncertaintyBox& box, optim::SpeedLimitQuantity quantity,
                                     const optim::RobustSpeedLimitRow& row);
+
+/// The body-region table's rows (speed-limit --body-region): a block per material and robot
+/// mass, each row a region and area with its force and pressure limits, the bare and covered
+/// max safe speeds, what binds and the covering's gain.
+void PrintBodyRegionSpeedLimitRows(std::ostream& out, std::span<const BodyRegionTableRow> rows);
 
 }  // namespace covopt::report
