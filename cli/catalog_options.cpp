@@ -47,27 +47,4 @@ materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
   });
 }
 
-std::vector<std::string> WrapWords(std::string_view text, std::size_t width) {
-  std::vector<std::string> lines;
-  std::string line;
-  std::size_t at = 0;
-  while (at < text.size()) {
-    const std::size_t space = text.find(' ', at);
-    const std::string_view word =
-        text.substr(at, space == std::string_view::npos ? std::string_view::npos : space - at);
-    if (!line.empty() && line.size() + 1 + word.size() > width) {
-      lines.push_back(line);
-      line.clear();
-    }
-    if (!word.empty()) {
-      if (!line.empty()) line += ' ';
-      line += word;
-    }
-    if (space == std::string_view::npos) break;
-    at = space + 1;
-  }
-  if (!line.empty()) lines.push_back(line);
-  return lines;
-}
-
 }  // namespace covopt::cli

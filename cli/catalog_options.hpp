@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "covopt/materials/catalog.hpp"
+#include "covopt/report/wrap_words.hpp"
 #include "quantity.hpp"
 
 namespace CLI {
@@ -47,8 +48,7 @@ std::string NoSuchMaterial(const materials::Catalog& catalog, std::string_view n
 materials::Range ParseRange(std::string_view text, const QuantitySpec& spec,
                             std::string_view name);
 
-/// `text` broken at spaces into lines of at most `width` characters (longer words, such as
-/// URLs, stay whole): how `materials show` and `body-regions show` wrap long values.
-std::vector<std::string> WrapWords(std::string_view text, std::size_t width);
+/// Long values broken at spaces (covopt/report/wrap_words.hpp).
+using report::WrapWords;
 
 }  // namespace covopt::cli

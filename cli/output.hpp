@@ -21,6 +21,7 @@
 #include "covopt/report/output_file.hpp"
 #include "covopt/report/scene_headline.hpp"
 #include "covopt/report/simulation_json.hpp"
+#include "covopt/report/simulation_text.hpp"
 
 namespace covopt::cli {
 
@@ -32,8 +33,8 @@ using report::SimulationReport;
 using report::SceneDetailsBeyondHeadline;
 using report::SceneHeadline;
 
-/// The readable report: scene, peaks, verdicts, method and solver, warnings.
-void PrintTable(std::ostream& out, const SimulationReport& report);
+/// The readable report: scene, peaks, verdicts, method and solver, warnings (report/simulation_text.hpp).
+using report::PrintTable;
 
 /// The history CSV (covopt/report/history_csv.hpp).
 using report::HistoryCsv;

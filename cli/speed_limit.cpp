@@ -22,6 +22,7 @@
 #include "covopt/report/csv.hpp"
 #include "covopt/report/robust_json.hpp"
 #include "covopt/report/speed_limit_json.hpp"
+#include "covopt/report/speed_limit_text.hpp"
 #include "output_options.hpp"
 #include "rule_options.hpp"
 
@@ -72,8 +73,6 @@ std::vector<double> ParseValues(const std::string& text, std::string_view axis_n
   }
 }
 
-std::string MassText(double kg) { return std::isinf(kg) ? std::string("fixed") : fmt::format("{:.4g} kg", kg); }
-
 /// The rows of every covering: one library call.
 std::vector<SpeedLimitRow> ComputeRows(const SpeedLimitPlan& plan, std::string* bad_input) {
   std::vector<optim::SpeedLimitCovering> coverings;
@@ -89,37 +88,6 @@ std::vector<SpeedLimitRow> ComputeRows(const SpeedLimitPlan& plan, std::string* 
   } catch (const optim::SpeedLimitTableError& e) {
     *bad_input = AttributeError(e.what(), plan.coverings[e.covering_index()]);
     return {};
-  }
-}
-
-void PrintRows(std::ostream& out, const SpeedLimitPlan& plan, const std::vector<SpeedLimitRow>& rows) {
-  const bool by_speed = plan.quantity == SpeedLimitQuantity::kSpeed;
-  const bool materials = plan.coverings.size() > 1;
-  if (materials) fmt::print(out, "  {:<28}", "material");
-  fmt::print(out, "  {:>12}  {:>16}  {:<16}  {:>10}  {:>9}  {:>11}\n", by_speed ? "robot mass" : "speed",
-             by_speed ? "max safe speed" : "max safe mass", "limited by", "laceration", "contusion", "compression");
-  for (const SpeedLimitRow& row : rows) {
-    const optim::SpeedLimitStatus status = by_speed ? row.speed_limit.status : row.mass_limit.status;
-    const optim::LimitRatios& r = by_speed ? row.speed_limit.at_limit : row.mass_limit.at_limit;
-    const optim::LimitingCriterion by = by_speed ? row.speed_limit.limited_by : row.mass_limit.limited_by;
-    std::string limit;
-    if (status == optim::SpeedLimitStatus::kNoSafeValue) {
-      limit = "none safe";
-    } else if (by_speed) {
-      limit = fmt::format("{}{:.4g} m/s", status == optim::SpeedLimitStatus::kSafeUpToSearchLimit ? ">= " : "",
-                          row.speed_limit.max_safe_speed_m_per_s);
-    } else {
-      const double m = row.mass_limit.max_safe_mass_kg;
-      limit = std::isinf(m) ? std::string("fixed")
-                            : fmt::format("{}{:.4g} kg",
-                                          status == optim::SpeedLimitStatus::kSafeUpToSearchLimit ? ">= " : "", m);
-    }
-    if (materials) fmt::print(out, "  {:<28}", row.material.value_or("(scene's covering)").substr(0, 28));
-    const std::string compression =
-        r.compression_ratio > 0.0 ? fmt::format("{:.3f}", r.compression_ratio) : std::string("-");
-    fmt::print(out, "  {:>12}  {:>16}  {:<16}  {:>10.3f}  {:>9.3f}  {:>11}\n",
-               by_speed ? MassText(row.robot_mass_kg) : fmt::format("{:g} m/s", row.speed_m_per_s), limit,
-               optim::ToString(by), r.laceration_ratio, r.contusion_ratio, compression);
   }
 }
 
@@ -291,28 +259,14 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
         if (!first_box) first_box = box;
         optim::RobustSpeedLimitRow row;
         if (covering.covering_material) row.material = covering.covering_material->name;
-        const std::string material = row.material.value_or("");
         if (by_speed) {
           row.robot_mass_kg = value;
           row.speed_limit = optim::MaxSafeSpeedOverBox(box, plan.options);
-          const optim::RobustSpeedLimit& limit = row.speed_limit;
-          text += fmt::format("{}{}robot {}: max safe speed {} for every value in the box ({}), limited by {}\n",
-                              material, material.empty() ? "" : ", ", FormatQuantity(value, QuantityKind::kMass),
-                              FormatQuantity(limit.limit.max_safe_speed_m_per_s, QuantityKind::kSpeed),
-                              optim::ToString(limit.limit.status), optim::ToString(limit.limit.limited_by));
-          text += fmt::format("  set at: {} (found by {}, {} evaluations)\n", DescribeValues(box, limit.values),
-                              limit.found_by, limit.evaluations);
         } else {
           row.speed_m_per_s = value;
           row.mass_limit = optim::MaxSafeMassOverBox(box, plan.options);
-          const optim::RobustMassLimit& limit = row.mass_limit;
-          text += fmt::format("{}{}at {}: max safe robot mass {} for every value in the box ({}), limited by {}\n",
-                              material, material.empty() ? "" : ", ", FormatQuantity(value, QuantityKind::kSpeed),
-                              FormatQuantity(limit.limit.max_safe_mass_kg, QuantityKind::kMass),
-                              optim::ToString(limit.limit.status), optim::ToString(limit.limit.limited_by));
-          text += fmt::format("  set at: {} (found by {}, {} evaluations)\n", DescribeValues(box, limit.values),
-                              limit.found_by, limit.evaluations);
         }
+        text += report::RobustSpeedLimitRowText(box, plan.quantity, row);
         rows.push_back(std::move(row));
       }
     }
@@ -420,7 +374,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
                    oracle.reason);
       }
     }
-    PrintRows(out, plan, rows);
+    report::PrintSpeedLimitRows(out, plan.quantity, plan.coverings.size() > 1, rows);
     PrintHeadScope(out, plan.options, plan.coverings.front());
     for (const std::string& w : input_warnings) fmt::print(out, "Warning: {}\n", w);
     for (const std::string& w : report::SpeedLimitRowWarnings(plan.quantity, rows)) {

@@ -13,6 +13,7 @@
 #include "covopt/optim/target_speed_limits.hpp"
 #include "covopt/report/body_contact_json.hpp"
 #include "covopt/report/csv.hpp"
+#include "covopt/report/speed_limit_text.hpp"
 #include "covopt/scene_file/targets.hpp"
 #include "body_region_output.hpp"
 #include "errors.hpp"
@@ -81,29 +82,7 @@ void PrintRegionSpeedLimitTable(std::ostream& out, const SpeedLimitPlan& plan, c
   }
   fmt::print(out, "Criterion  {}\n", BodyCriterion(rule, regions.has_head()));
   fmt::print(out, "Speeds     the largest safe impact speed, bare and with the covering; 'binds' is the limit reached\n");
-  std::string block;
-  for (const report::BodyRegionTableRow& row : rows) {
-    const std::string key = fmt::format("{}|{}", row.material, row.robot_mass_kg);
-    if (key != block) {
-      block = key;
-      fmt::print(out, "\n{}robot mass {}\n", row.material.empty() ? "" : "Material " + row.material + ", ",
-                 Mass(row.robot_mass_kg));
-      fmt::print(out, "  {:<18} {:<34} {:>7} {:>8}  {:>9}  {:<16} {:>11}  {:<16} {:>7}\n", "region", "area",
-                 "F_lim N", "p_lim", "bare m/s", "bare binds", "covered m/s", "covered binds", "gain");
-    }
-    const auto speed = [](const std::optional<double>& v, const std::string& status) {
-      if (!v) return std::string("none");
-      return fmt::format("{}{:.4f}", status == "safe-up-to-search-limit" ? ">=" : "", *v);
-    };
-    fmt::print(out, "  {:<18} {:<34} {:>7} {:>8}  {:>9}  {:<16} {:>11}  {:<16} {:>7}\n", row.region,
-               row.area.empty() ? "-" : row.area,
-               row.force_limit_N ? fmt::format("{:.0f}", *row.force_limit_N) : std::string("-"),
-               row.pressure_limit_Pa ? fmt::format("{:.0f}", *row.pressure_limit_Pa * 1e-4) : std::string("-"),
-               speed(row.bare_max_speed_m_per_s, row.bare_status), row.bare_limited_by,
-               row.has_covering ? speed(row.covered_max_speed_m_per_s, row.covered_status) : std::string("-"),
-               row.has_covering ? row.covered_limited_by : std::string("-"),
-               row.gain ? fmt::format("{:.2f}×", *row.gain) : std::string("-"));
-  }
+  report::PrintBodyRegionSpeedLimitRows(out, rows);
   fmt::print(out, "\nScope      (p_lim in N/cm²)\n");
   if (iso.size() <= 3) {
     for (const materials::BodyLimits& limits : iso) fmt::print(out, "  {}\n", limits.Describe());

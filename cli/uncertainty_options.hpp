@@ -14,6 +14,7 @@
 
 #include "covopt/core/scene.hpp"
 #include "covopt/optim/robust_design.hpp"
+#include "covopt/report/robust_text.hpp"
 #include "progress.hpp"
 #include "scene_file.hpp"
 
@@ -56,28 +57,12 @@ optim::UncertaintyBox MakeUncertaintyBox(const Scene& nominal, std::span<const o
 /// Sets each range's field of `scene` to the middle of the range (the nominal value).
 void SetNominalValues(Scene& scene, std::span<const SceneRange> ranges);
 
-/// "head-mass 5.8 kg, scalp-thickness 5 mm": input values [SI] for people.
-std::string DescribeValues(const optim::UncertaintyBox& box, std::span<const double> values);
-
-/// The worst case as text: "worst case: head-mass 5.8 kg, scalp-thickness 2 mm (found by
-/// corner; 1 234 evaluations, 3.1 ms)" and a line with the ratios and what binds.
-void PrintWorstCase(std::ostream& out, const optim::UncertaintyBox& box, const optim::WorstCase& worst,
-                    std::string_view indent = "");
-
-/// The probability table: laceration, contusion, either, fully compressed, inadmissible, each
-/// with its count and Wilson 95 % interval.
-void PrintInjuryProbability(std::ostream& out, const optim::InjuryProbability& probability,
-                            std::string_view indent = "");
-
-/// For a box with a braking robot (optim::UncertaintyBox::brakes()): how its impacts were
-/// judged ("Braking robot: 1 234 time-path runs; 5 678 impacts screened by the unbraked exact
-/// path's bound, 90 with the brake after the peak"), and a warning for failed runs. Nothing
-/// otherwise.
-void PrintTimePathUse(std::ostream& out, const optim::UncertaintyBox& box, const optim::TimePathUse& use,
-                      std::string_view indent = "");
-
-/// The elasticity table (tornado order).
-void PrintElasticities(std::ostream& out, const optim::ElasticityTable& table);
+/// The text of worst cases, probabilities, time-path use and elasticities (covopt/report/robust_text.hpp).
+using report::DescribeValues;
+using report::PrintElasticities;
+using report::PrintInjuryProbability;
+using report::PrintTimePathUse;
+using report::PrintWorstCase;
 
 /// The tornado chart of `table` into `path` (gnuplot; bars of the laceration and contusion
 /// elasticities per input, largest at the top). @throws OutputError.

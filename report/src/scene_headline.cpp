@@ -80,4 +80,14 @@ std::vector<std::string> SceneDetailsBeyondHeadline(const Scene& scene,
   return details;
 }
 
+std::string DesignedSceneHeadline(const Scene& scene) {
+  Scene bare = scene;
+  bare.covering.thickness_m = 0.0;
+  std::string headline = SceneHeadline(bare);
+  if (const auto at = headline.find("no covering"); at != std::string::npos) {
+    headline.replace(at, 11, "covering to be designed");
+  }
+  return headline;
+}
+
 }  // namespace covopt::report

@@ -21,6 +21,10 @@ namespace covopt::report {
 /// called neither fixed nor free.
 std::string SceneHeadline(const Scene& scene, std::span<const std::string_view> omitted_fields = {});
 
+/// The headline of a scene whose covering a design finds: its covering left out and called
+/// "covering to be designed" (optimize's and workprecision --design's "Scene" line).
+std::string DesignedSceneHeadline(const Scene& scene);
+
 /// The scene inputs SceneHeadline does not show that differ from the paper's scene
 /// (Scene{}), skipping `omitted_fields`: {"scalp-thickness 4 mm", "literal thresholds"}.
 std::vector<std::string> SceneDetailsBeyondHeadline(

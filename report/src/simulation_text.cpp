@@ -1,38 +1,21 @@
-#include "output.hpp"
+#include "covopt/report/simulation_text.hpp"
 
-#include <algorithm>
-#include <array>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
-#include <cstring>
-#include <atomic>
-#include <mutex>
-#include <random>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 #include <fmt/ranges.h>
 
-#include <covopt/report/verdict_text.hpp>
+#include "covopt/core/impact_model.hpp"
+#include "covopt/core/quantity.hpp"
+#include "covopt/core/time_integration.hpp"
+#include "covopt/report/verdict_text.hpp"
 
-#include "errors.hpp"
-#include "quantity.hpp"
-#include "scene_fields.hpp"
-
-// After the project headers: <csignal> defines macros (si_value) that clash with their
-// parameter names.
-#include <csignal>
-
-namespace covopt::cli {
+namespace covopt::report {
 namespace {
-
-
-/// A number, or null when it is not finite (JSON has no NaN or Infinity).
 
 std::string_view YesNo(bool b) { return b ? "yes" : "no"; }
 
@@ -45,15 +28,9 @@ void Row(std::ostream& out, std::string_view label, std::string_view value) {
   fmt::print(out, "  {:<24} {}\n", label, value);
 }
 
-
-}  // namespace
-
-void PrintTable(std::ostream& out, const SimulationReport& report) {
+/// The scene: two lines, and one more with the inputs beyond the paper's two-mass scene.
+void PrintScene(std::ostream& out, const SimulationReport& report) {
   const Scene& s = report.scene;
-  const ImpactResult& r = report.result;
-  const ImpactPeaks& p = r.peaks;
-
-  // Scene: two lines.
   const std::string covering =
       s.covering.thickness_m > 0.0
           ? fmt::format("covering {}{}, E {}, ν {:g}{}", Length(s.covering.thickness_m),
@@ -81,7 +58,7 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
              head, Length(s.head.radius_m), Length(s.scalp.thickness_m),
              Modulus(s.scalp.youngs_modulus_Pa), s.scalp.poisson_ratio,
              Modulus(s.skull.youngs_modulus_Pa), s.skull.poisson_ratio,
-             ThresholdsName(s.model.thresholds));
+             ToString(s.model.thresholds));
   // The inputs beyond the paper's conservative two-mass scene (docs/model.md §10), when set.
   std::vector<std::string> extended;
   if (s.is_damped()) {
@@ -105,7 +82,13 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
         FormatQuantity(s.head.neck_damping_N_s_per_m, QuantityKind::kViscousDamping)));
   }
   if (!extended.empty()) fmt::print(out, "        {}\n", fmt::join(extended, "; "));
+}
 
+/// The peaks of the contact.
+void PrintPeaks(std::ostream& out, const SimulationReport& report) {
+  const Scene& s = report.scene;
+  const ImpactResult& r = report.result;
+  const ImpactPeaks& p = r.peaks;
   fmt::print(out, "\nPeaks\n");
   Row(out, "max penetration", fmt::format("{:.6g} mm", p.max_penetration_m * 1e3));
   Row(out, "peak force", fmt::format("{:.6g} N", p.peak_force_N));
@@ -134,10 +117,11 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
       fmt::format("{} ({})", PhaseNumber(p.phase_at_max), ToString(p.phase_at_max)));
   Row(out, "scalp fully compressed", YesNo(p.scalp_fully_compressed));
   Row(out, "fully compressed", YesNo(p.fully_compressed));
+}
 
-  fmt::print(out, "\nVerdicts\n");
-  for (const std::string& line : report::VerdictLines(report.verdict)) fmt::print(out, "{}\n", line);
-
+/// The method, and the integrator's statistics on the time path.
+void PrintMethod(std::ostream& out, const SimulationReport& report) {
+  const ImpactResult& r = report.result;
   fmt::print(out, "\nMethod  {}", ToString(r.method));
   if (report.time_options) {
     const TimeIntegrationOptions& o = *report.time_options;
@@ -156,7 +140,17 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
     fmt::print(out, " (energy balance and quadrature, no time integration)");
   }
   fmt::print(out, "\n");
+}
 
+}  // namespace
+
+void PrintTable(std::ostream& out, const SimulationReport& report) {
+  PrintScene(out, report);
+  PrintPeaks(out, report);
+  fmt::print(out, "\nVerdicts\n");
+  for (const std::string& line : VerdictLines(report.verdict)) fmt::print(out, "{}\n", line);
+  PrintMethod(out, report);
+  const ImpactResult& r = report.result;
   if (!report.verdict.scope.empty()) {
     fmt::print(out, "\nScope\n");
     for (const std::string& line : report.verdict.scope) fmt::print(out, "  {}\n", line);
@@ -170,5 +164,4 @@ void PrintTable(std::ostream& out, const SimulationReport& report) {
   }
 }
 
-
-}  // namespace covopt::cli
+}  // namespace covopt::report
