@@ -19,7 +19,7 @@ void PrintLimitsAndCriterion(std::ostream& out, const optim::SpeedLimitOptions& 
   fmt::print(out, "Limits     laceration {:g} MPa, contusion {:g} J/cm², safety factor {:g}{}\n",
              options.limits.laceration_tensile_stress_Pa * 1e-6,
              options.limits.contusion_energy_density_J_per_m2 * 1e-4, sf,
-             sf > 1 ? fmt::format(": ratios <= {:.4g}", 1.0 / sf) : std::string());
+             sf > 1 ? std::string(" on each limit (the criterion below derates them)") : std::string());
   const optim::DesignRule rule = LimitRule(options, covering);
   fmt::print(out, "Criterion  {}{}\n", rule.Describe(),
              rule.unknown_strength_allowed && !rule.crushing_allowed ? " (this covering has none known: see the warnings)"
