@@ -193,6 +193,10 @@ SweepRun ResolveSweep(const SweepCommandOptions& options) {
     }
   }
   run.plan = ResolveSimulation(options.scene);
+  // A swept field is given (by its axis): e.g. the covering is not the assumed default.
+  for (const SweepAxisArgument* axis : {static_cast<const SweepAxisArgument*>(&run.x), run.y_axis()}) {
+    if (axis != nullptr) run.plan.sources[axis->field->dotted_name()] = axis == &run.x ? "--x" : "--y";
+  }
   if (options.threads) {
     if (*options.threads < 0 || *options.threads > kMaxThreads) {  // 0 = all cores, as elsewhere
       throw InputError(
