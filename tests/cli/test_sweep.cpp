@@ -499,3 +499,13 @@ TEST_CASE("an unwritable sweep CSV is exit 1 naming the file, nothing on stdout"
   CHECK(run.out.empty());
   CHECK_THAT(run.err, Contains("cannot write '" + missing.string() + "'"));
 }
+
+TEST_CASE("a swept covering field is given: no note that the default covering is assumed", "[sweep]") {
+  const auto swept = Run({"sweep", "--x", "covering-thickness=5mm..20mm:4"});
+  REQUIRE(swept.exit_code == 0);
+  CHECK(swept.out.find("the default is assumed") == std::string::npos);
+  // Sweeping another field leaves the covering the assumed default, and the note says so.
+  const auto speed = Run({"sweep", "--x", "speed=1..2:3"});
+  REQUIRE(speed.exit_code == 0);
+  CHECK(speed.out.find("no covering given: the default is assumed") != std::string::npos);
+}
