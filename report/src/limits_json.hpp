@@ -12,24 +12,6 @@
 
 namespace covopt::report::internal {
 
-/// The fracture verdict (docs/model.md §7.1): {area, value_N (F_max), limit_N (the area's lowest
-/// published fracture force), ratio, safe, derated_limit_N, safety_factor, published_range,
-/// source}. Every output that writes the laceration and contusion verdicts writes it beside them.
-inline nlohmann::ordered_json FractureJson(const InjuryAssessment& assessment, double safety_factor) {
-  const InjuryVerdict& fracture = assessment.fracture;
-  const FractureForce& row = FractureForceOf(assessment.area);
-  const bool published = fracture.limit == row.force_N;  // else the caller's limits.fracture_force_N
-  return {{"area", row.name},
-          {"value_N", fracture.value},
-          {"limit_N", fracture.limit},
-          {"ratio", fracture.ratio},
-          {"safe", fracture.safe},
-          {"derated_limit_N", fracture.limit / safety_factor},
-          {"safety_factor", safety_factor},
-          {"published_range", published ? nlohmann::ordered_json(row.range) : nlohmann::ordered_json(nullptr)},
-          {"source", published ? std::string(row.source) : std::string("given (limits.fracture_force_N)")}};
-}
-
 /// The rule behind a verdict: {name ("laceration+contusion+full-compression+crush"), parts,
 /// safety_factor, crushing_allowed, unknown_strength_allowed, description}.
 inline nlohmann::ordered_json CriterionJson(const optim::DesignRule& rule) {

@@ -78,16 +78,18 @@ Json CriterionObject(const Criterion* c, std::string_view unit, double safety_fa
 }
 
 /// The fracture criterion of the verdict (docs/model.md §7.1) with the struck area, the
-/// published range and the source (internal::FractureJson's keys); null when absent.
+/// published range and the source; null when absent.
 Json FractureObject(const Verdict& v, HeadArea area) {
   const Criterion* c = v.Find("fracture");
   if (c == nullptr) return Json(nullptr);
   const FractureForce& row = FractureForceOf(area);
-  const bool published = c->limit == row.force_N;  // else the caller's limits.fracture_force_N
+  // The criterion's source is the area's citation, unless the caller gave the force
+  // (optim::HeadVerdict decides which, once).
+  const bool published = c->source == row.source;
   Json j = {{"area", row.name}};
   j.update(CriterionObject(c, "_N", v.safety_factor));
   j["published_range"] = published ? Json(row.range) : Json(nullptr);
-  j["source"] = published ? std::string(row.source) : std::string("given (limits.fracture_force_N)");
+  j["source"] = std::string(c->source);
   return j;
 }
 
