@@ -9,8 +9,10 @@
 /// against a free 4.5 kg head, wearing the paper's recommended 15 mm, 27.6 MPa covering.
 
 #include <limits>
+#include <memory>
 #include <string_view>
 
+#include "covopt/core/compressive_curve.hpp"
 #include "covopt/core/head_area.hpp"
 
 namespace covopt {
@@ -73,6 +75,12 @@ struct CoveringSpec {
   double poisson_ratio = 0.25;
   /// Covering thickness [m], 0 (no covering) or in [1e-4, 1] (the floor kMinLayerThickness_m).
   double thickness_m = 0.015;
+  /// The material's measured compressive curve (covopt/core/compressive_curve.hpp), shared and
+  /// immutable; null: none, and only the Hertz law describes the covering.
+  std::shared_ptr<const CompressiveCurve> compressive_curve;
+  /// Which law describes the covering: kAuto (the default) takes the foam law where a curve is
+  /// given and Hertz otherwise; kFoam needs a curve.
+  CoveringLaw law = CoveringLaw::kAuto;
 };
 
 /// The head as a rigid mass carrying the scalp.
