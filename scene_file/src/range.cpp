@@ -6,15 +6,12 @@
 
 #include <fmt/format.h>
 
+#include "covopt/internal/text.hpp"
+
 namespace covopt::scene_file {
 namespace {
 
-std::string_view Trim(std::string_view s) {
-  constexpr std::string_view kSpaces = " \t";
-  const auto first = s.find_first_not_of(kSpaces);
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(kSpaces) - first + 1);
-}
+using internal::TrimBlanks;
 
 std::string_view ExampleRange(const QuantitySpec& spec) {
   switch (spec.kind) {
@@ -30,7 +27,7 @@ bool IsRangeText(std::string_view text) noexcept { return text.find("..") != std
 
 materials::Range ParseQuantityRange(std::string_view text, const QuantitySpec& spec,
                                     std::string_view name, std::string_view example) {
-  const std::string_view s = Trim(text);
+  const std::string_view s = TrimBlanks(text);
   const auto fail = [&](std::string_view problem) {
     throw std::invalid_argument(fmt::format("{}: {} (got '{}')", name, problem, text));
   };
@@ -39,8 +36,8 @@ materials::Range ParseQuantityRange(std::string_view text, const QuantitySpec& s
   if (dots == std::string_view::npos) {
     fail(fmt::format("expected a range LO..HI, LO.. or ..HI, e.g. {}", example));
   }
-  const std::string_view low = Trim(s.substr(0, dots));
-  const std::string_view high = Trim(s.substr(dots + 2));
+  const std::string_view low = TrimBlanks(s.substr(0, dots));
+  const std::string_view high = TrimBlanks(s.substr(dots + 2));
   if (low.empty() && high.empty()) fail(fmt::format("give at least one end, e.g. {}", example));
   if ((!high.empty() && high.front() == '.') || (!low.empty() && low.back() == '.')) {
     fail(fmt::format("malformed range; write LO..HI, e.g. {}", example));

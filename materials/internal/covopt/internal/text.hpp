@@ -16,6 +16,13 @@
 
 namespace covopt::internal {
 
+/// `text` without leading and trailing spaces and tabs.
+constexpr std::string_view TrimBlanks(std::string_view text) noexcept {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
+  return text;
+}
+
 /// ASCII lower case of one character.
 constexpr char LowerChar(char c) noexcept {
   return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
