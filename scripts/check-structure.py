@@ -2,10 +2,11 @@
 """The structure rules of issue 34's "Done when", checked over the repository's source.
 
 The source: every C++ (.cpp .cc .cxx .hpp .hh .h .ipp) and Python (.py) file of the repository
-(`git ls-files` when the tree is a git checkout, else a walk of the tree) outside tests, bench
-and fuzz: not under the top-level tests/, bench/ or fuzz/, not in any folder named tests or
-__pycache__ (python/tests), and not in a build tree (a top-level folder whose name starts with
-"build", or any folder holding a CMakeCache.txt).
+(`git ls-files` when the tree is a git checkout, else a walk of the tree) that ships as the
+library, the CLI or the module: not under the top-level tests/, bench/, fuzz/, scripts/ (the
+project's own tools) or docs/ (the validation scripts), not in any folder named tests, examples
+(python/examples) or __pycache__, and not in a build tree (a top-level folder whose name starts
+with "build", or any folder holding a CMakeCache.txt).
 
 The checks (each prints every offender as path:line: name (length) and a summary line):
   functions  no function over 100 lines. C++: a function body found by a brace-matching scan of
@@ -52,8 +53,8 @@ MAX_SHELL_SHARE = 0.25
 SHELL_DIRS = ("cli", "python")
 CXX_EXTENSIONS = (".cpp", ".cc", ".cxx", ".hpp", ".hh", ".h", ".ipp")
 PY_EXTENSIONS = (".py",)
-EXCLUDED_TOP = ("tests", "bench", "fuzz")
-EXCLUDED_ANYWHERE = ("tests", "__pycache__", ".git")
+EXCLUDED_TOP = ("tests", "bench", "fuzz", "scripts", "docs")
+EXCLUDED_ANYWHERE = ("tests", "examples", "__pycache__", ".git")
 REGISTRY_FILES = ("cli/app.cpp", "cli/main.cpp")
 CHECKS = ("functions", "files", "shells", "includes", "rules")
 

@@ -176,7 +176,7 @@ class Files(Tree):
 class Shells(Tree):
     def test_the_shells_share_is_refused_at_25_percent_and_accepted_below(self) -> None:
         write(self.root, {"core/a.cpp": "int x;\n" * 60, "cli/b.cpp": "int x;\n" * 10,
-                          "python/c.py": "x = 1\n" * 10, "docs/d.py": "x = 1\n" * 5})
+                          "python/c.py": "x = 1\n" * 10, "report/d.py": "x = 1\n" * 5})
         result = self.result("shells")
         self.assertTrue(result.ok, result.summary)
         self.assertIn("20 of 85 lines = 23.5 %", result.summary)
@@ -184,6 +184,16 @@ class Shells(Tree):
         result = self.result("shells")
         self.assertFalse(result.ok)
         self.assertIn("22 of 87 lines = 25.3 %", result.summary)
+
+
+    def test_tools_docs_and_examples_are_not_source(self) -> None:
+        write(self.root, {"core/a.cpp": "int x;\n" * 80, "cli/b.cpp": "int x;\n" * 19,
+                          "scripts/tool.py": "x = 1\n" * 50, "docs/validation/v.py": "x = 1\n" * 50,
+                          "python/examples/e.py": "x = 1\n" * 50})
+        result = self.result("shells")
+        self.assertTrue(result.ok, result.summary)
+        self.assertIn("19 of 99 lines = 19.2 %", result.summary)
+        self.assertEqual(cs.source_files(self.root), ["cli/b.cpp", "core/a.cpp"])
 
 
 class Includes(Tree):
