@@ -186,7 +186,7 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
 
 void SetupOptimize(CLI::App* sub, OptimizeOptions& options) {
   sub->footer(std::string(kFooter));
-  AddSceneFieldOptions(*sub, options.scene_file, options.scene_values, options.thresholds, options.head_area, false);  // not the covering
+  AddSceneFieldOptions(*sub, options.scene_file, options.scene_values, options.choices, false);  // not the covering
   sub->add_option("--max-thickness", options.max_thickness, "thickest covering considered (default 50 mm)")
       ->type_name("LENGTH")->group("Design");
   sub->add_option("--min-modulus", options.min_modulus, "softest covering of the continuous search (default 0.1 MPa)")

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "body_region_options.hpp"
+#include "simulation_plan.hpp"
 #include "covopt/optim/design.hpp"
 #include "catalog_options.hpp"
 #include "oracle_options.hpp"
@@ -34,9 +35,8 @@ struct OptimizeOptions {
   std::optional<std::string> scene_file;
   /// Scene flags by field name ("robot.mass" -> "10kg"); the covering's are not offered.
   std::map<std::string, std::string, std::less<>> scene_values;
-  std::optional<std::string> thresholds;
-  /// --head-area frontal|temporo-parietal|nasal|... (docs/model.md §7.1).
-  std::optional<std::string> head_area;
+  /// --thresholds, --head-area, --covering-law.
+  SceneChoices choices;
   std::optional<std::string> max_thickness;     ///< --max-thickness (default 50 mm)
   std::optional<std::string> min_modulus;       ///< --min-modulus (default 0.1 MPa)
   std::optional<std::string> max_modulus;       ///< --max-modulus (default 1 GPa)

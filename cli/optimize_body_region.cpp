@@ -51,8 +51,8 @@ void CheckRegionDesignFlags(const OptimizeOptions& options, const optim::DesignR
                                      FindSceneField(field) ? std::string(FindSceneField(field)->name) : field, typed));
       }
     }
-    if (options.thresholds) throw InputError("--thresholds applies to the head's model; add --body-region head");
-    if (options.head_area) throw InputError("--head-area applies to the head's model; add --body-region head");
+    if (options.choices.thresholds) throw InputError("--thresholds applies to the head's model; add --body-region head");
+    if (options.choices.head_area) throw InputError("--head-area applies to the head's model; add --body-region head");
   }
   if (std::isinf(head.scene.robot.radius_m)) {
     throw InputError("--robot-radius flat: a covering on a body region needs a finite robot radius (its Hertz contact "

@@ -79,8 +79,12 @@ void ResolveScene(const OptimizeOptions& o, Resolved& r) {
   ApplySceneFlagInputs(inputs, resolved);
   r.request.scene = resolved.scene;
   SetNominalValues(r.request.scene, r.ranges);
-  if (o.thresholds) r.request.scene.model.thresholds = ParseThresholds(*o.thresholds, "--thresholds");
-  if (o.head_area) r.request.scene.head.area = ParseHeadArea(*o.head_area, "--head-area");
+  if (o.choices.thresholds) r.request.scene.model.thresholds = ParseThresholds(*o.choices.thresholds, "--thresholds");
+  if (o.choices.head_area) r.request.scene.head.area = ParseHeadArea(*o.choices.head_area, "--head-area");
+  if (o.choices.covering_law) {
+    r.request.scene.covering.law =
+        AsInputError([&] { return scene_file::ParseCoveringLawOrThrow(*o.choices.covering_law, "--covering-law"); });
+  }
   if (o.robot_model.given()) {  // --urdf ...: robot.mass from the robot model
     RobotModelMass mass = ResolveRobotModelMass(o.robot_model, o.scene_values.count(kRobotMassField) != 0);
     r.request.scene.robot.mass_kg = mass.mass_kg;

@@ -217,7 +217,9 @@ std::optional<std::string> RobotTrajectoryOptions::FirstCheckFlag() const {
   for (const SceneField& field : SceneFields()) {
     if (scene.scene_values.count(field.dotted_name()) != 0) return std::string(field.flag);
   }
-  if (scene.thresholds) return "--thresholds";
+  if (scene.choices.thresholds) return "--thresholds";
+  if (scene.choices.head_area) return "--head-area";
+  if (scene.choices.covering_law) return "--covering-law";
   if (scene.material) return "--material";
   if (scene.catalog.given()) return scene.catalog.files.empty() ? "--no-builtin" : "--catalog";
   if (scene.laceration_limit) return "--laceration-limit";

@@ -115,8 +115,9 @@ void ApplySceneFlags(const SimulateOptions& options, SimulationPlan& plan) {
     const auto typed = options.scene_values.find(field.dotted_name());
     if (typed != options.scene_values.end() && !IsRangeText(typed->second)) add(typed->first, field.flag, typed->second);
   }
-  if (options.thresholds) add("model.thresholds", "--thresholds", *options.thresholds);
-  if (options.head_area) add("head.area", "--head-area", *options.head_area);
+  if (options.choices.thresholds) add("model.thresholds", "--thresholds", *options.choices.thresholds);
+  if (options.choices.head_area) add("head.area", "--head-area", *options.choices.head_area);
+  if (options.choices.covering_law) add("covering.law", "--covering-law", *options.choices.covering_law);
   scene_file::ResolvedScene resolved{plan.scene, plan.limits, plan.safety_factor, nullptr};
   ApplySceneFlagInputs(inputs, resolved);
   plan.scene = resolved.scene;
@@ -127,8 +128,7 @@ void ApplySceneFlags(const SimulateOptions& options, SimulationPlan& plan) {
 }  // namespace
 
 void AddSceneFieldOptions(CLI::App& command, std::optional<std::string>& scene_file,
-                          std::map<std::string, std::string, std::less<>>& scene_values,
-                          std::optional<std::string>& thresholds, std::optional<std::string>& head_area,
+                          std::map<std::string, std::string, std::less<>>& scene_values, SceneChoices& choices,
                           bool with_covering) {
   command
       .add_option("--scene", scene_file, "TOML scene file; flags override it (see cli/examples/paper_scene.toml)")
@@ -146,20 +146,27 @@ void AddSceneFieldOptions(CLI::App& command, std::optional<std::string>& scene_f
         ->group("Scene");
   }
   command
-      .add_option("--thresholds", thresholds, "phase thresholds: cumulative (default) or literal (the paper's text)")
+      .add_option("--thresholds", choices.thresholds, "phase thresholds: cumulative (default) or literal (the paper's text)")
       ->check(CLI::IsMember({"cumulative", "literal"}))
       ->group("Scene");
   command
-      .add_option("--head-area", head_area,
+      .add_option("--head-area", choices.head_area,
                   "the struck area of the head, whose lowest published fracture force the peak force is judged "
                   "against: " + HeadAreaChoices() + " (default frontal, the forehead; docs/model.md §7.1)")
       ->type_name("AREA")
+      ->group("Scene");
+  command
+      .add_option("--covering-law", choices.covering_law,
+                  "the covering's law: auto (default: the foam law where the material has a measured compressive "
+                  "curve, else Hertz), foam, or hertz (docs/model.md §15)")
+      ->check(CLI::IsMember({"auto", "foam", "hertz"}))
+      ->type_name("LAW")
       ->group("Scene");
 }
 
 void AddSceneOptions(CLI::App& sub_app, SimulateOptions& options) {
   CLI::App* sub = &sub_app;
-  AddSceneFieldOptions(sub_app, options.scene_file, options.scene_values, options.thresholds, options.head_area, true);
+  AddSceneFieldOptions(sub_app, options.scene_file, options.scene_values, options.choices, true);
   sub->add_option("--material", options.material,
                   "covering modulus and Poisson ratio from the material catalog (see 'covopt "
                   "materials list'); ν unknown there: 0.25, with a warning")

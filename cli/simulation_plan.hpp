@@ -33,6 +33,17 @@ class App;
 
 namespace covopt::cli {
 
+/// The scene's named choices as typed: --thresholds, --head-area and --covering-law.
+struct SceneChoices {
+  /// --thresholds cumulative|literal.
+  std::optional<std::string> thresholds;
+  /// --head-area frontal|temporo-parietal|nasal|... (docs/model.md §7.1).
+  std::optional<std::string> head_area;
+  /// --covering-law auto|foam|hertz: the law that describes the covering (auto: the foam law
+  /// where the material has a measured curve, else Hertz).
+  std::optional<std::string> covering_law;
+};
+
 /// The options of `covopt simulate`, as typed. Values are read (units, ranges) by
 /// ResolveSimulation, so that every message can name its flag.
 struct SimulateOptions {
@@ -40,10 +51,8 @@ struct SimulateOptions {
   std::optional<std::string> scene_file;
   /// Scene flags as typed, by field name ("robot.mass" -> "10kg"); see SceneFields().
   std::map<std::string, std::string, std::less<>> scene_values;
-  /// --thresholds cumulative|literal.
-  std::optional<std::string> thresholds;
-  /// --head-area frontal|temporo-parietal|nasal|... (docs/model.md §7.1).
-  std::optional<std::string> head_area;
+  /// --thresholds, --head-area, --covering-law.
+  SceneChoices choices;
   /// --material NAME: the covering's modulus and Poisson ratio from the material catalog
   /// (ν unknown there: 0.25, with a warning). Overrides the scene file; combined with
   /// --covering-modulus or --covering-poisson it is bad input.
@@ -134,11 +143,10 @@ struct SimulationPlan {
 
 /// The scene group ("Scene" in --help), registered here once: --scene FILE, every scene field's
 /// flag (--robot-mass ...; not the covering's unless `with_covering`: optimize designs it), each
-/// stored by its dotted name in `scene_values`, --thresholds and --head-area. The targets must
-/// outlive the parse.
+/// stored by its dotted name in `scene_values`, and the choices (--thresholds, --head-area,
+/// --covering-law). The targets must outlive the parse.
 void AddSceneFieldOptions(CLI::App& command, std::optional<std::string>& scene_file,
-                          std::map<std::string, std::string, std::less<>>& scene_values,
-                          std::optional<std::string>& thresholds, std::optional<std::string>& head_area,
+                          std::map<std::string, std::string, std::less<>>& scene_values, SceneChoices& choices,
                           bool with_covering = true);
 
 /// Adds the scene options every scene-taking subcommand shares to `sub`: --scene, the scene

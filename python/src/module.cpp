@@ -620,7 +620,9 @@ covering_modulus [Pa], covering_poisson, covering_thickness [m] (0 = no covering
 damping [s/m] (Hunt-Crossley), reaction_delay [s] and braking [m/s2] (the robot brakes that long
 after first contact), torso_mass [kg], neck_stiffness [N/m], neck_damping [N s/m] (the head on a
 neck). material: a built-in catalog name (sets covering_modulus and covering_poisson);
-thresholds: "cumulative" (default) or "literal"; laceration_limit [Pa] (1e6), contusion_limit
+thresholds: "cumulative" (default) or "literal"; head_area: the struck area ("frontal", ...);
+covering_law: "auto" (default: the foam law where the material has a measured compressive curve,
+else Hertz), "foam" or "hertz"; laceration_limit [Pa] (1e6), contusion_limit
 [J/m2] (25200); safety_factor in [1, 100]: a verdict is safe when safety_factor x ratio <= 1.
 Bad values raise ValueError naming the keyword; an unknown keyword TypeError.
 ranges: {keyword: (low, high) or "LO..HI"}, a population for worst_case, injury_probability and
@@ -640,6 +642,7 @@ to_dict(): the scene object of `covopt simulate --json`.)");
         return s.scene.model.thresholds == ThresholdReading::kLiteral ? "literal" : "cumulative";
       })
       .def_property_readonly("head_area", [](const SceneInputs& s) { return std::string(ToString(s.scene.head.area)); })
+      .def_property_readonly("covering_law", [](const SceneInputs& s) { return std::string(ToString(s.scene.covering.law)); })
       .def_property_readonly("laceration_limit", [](const SceneInputs& s) { return s.limits.laceration_tensile_stress_Pa; })
       .def_property_readonly("contusion_limit", [](const SceneInputs& s) { return s.limits.contusion_energy_density_J_per_m2; })
       .def_property_readonly("safety_factor", [](const SceneInputs& s) { return s.safety_factor; })

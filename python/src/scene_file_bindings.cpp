@@ -4,7 +4,8 @@
 /// errors (ValueError with the library's "file:line:column: ..." message). It returns the
 /// keywords of covopt.Scene (covopt/__init__.py makes the Scene), holding only what the file
 /// sets: each scene field by its keyword (`robot_mass`, SI float, math.inf for "fixed"/"flat"),
-/// `thresholds` ("cumulative" or "literal"), `head_area` ("frontal", ...), `material` (covering.material),
+/// `thresholds` ("cumulative" or "literal"), `head_area` ("frontal", ...), `covering_law` ("auto", "foam"
+/// or "hertz"), `material` (covering.material),
 /// `laceration_limit`, `contusion_limit`, `safety_factor`, and `ranges` ({"head_mass": (low,
 /// high)} in SI, as the robust calls take them) when the file writes ranges.
 
@@ -67,6 +68,9 @@ py::dict LoadScene(const std::string& path) {
   }
   if (std::find(set.begin(), set.end(), "head.area") != set.end()) {
     keywords["head_area"] = std::string(ToString(scene.head.area));
+  }
+  if (std::find(set.begin(), set.end(), "covering.law") != set.end()) {
+    keywords["covering_law"] = std::string(ToString(scene.covering.law));
   }
   if (extras.covering_material) keywords["material"] = *extras.covering_material;
   if (extras.laceration_limit_Pa) keywords["laceration_limit"] = *extras.laceration_limit_Pa;

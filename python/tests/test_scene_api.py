@@ -14,6 +14,7 @@ def test_a_scene_reads_its_keywords_once_into_si_attributes():
     assert scene.robot_radius == math.inf
     assert scene.head_mass == covopt.Scene().head_mass  # the paper's scene where unset
     assert scene.material is None and scene.thresholds == "cumulative" and scene.safety_factor == 1.0
+    assert scene.covering_law == "auto" and covopt.Scene(covering_law="foam").covering_law == "foam"
     assert repr(scene) == "Scene(robot_mass='10kg', speed=1.5, covering_thickness='20mm', robot_radius='flat')"
     assert scene.to_dict()["robot"]["mass_kg"] == 10.0 and scene.to_dict()["robot"]["radius_m"] == "flat"
 

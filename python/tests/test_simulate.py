@@ -38,6 +38,7 @@ SCENES = [
     ({"robot_mass": 5.145, "robot_radius": "60mm", "speed": 2.3, "covering_thickness": 0.0, "head_area": "nasal"},
      ["--robot-mass", "5.145kg", "--robot-radius", "60mm", "--speed", "2.3m/s", "--covering-thickness", "0",
       "--head-area", "nasal"]),
+    ({"covering_law": "hertz"}, ["--covering-law", "hertz"]),
 ]
 
 
@@ -142,6 +143,7 @@ def test_bad_input_is_a_value_error_with_the_clis_message(cli):
     ({"safety_factor": 0.5}, ["safety_factor must be in [1, 100]", "0.5"]),
     ({"head_area": "cheek"}, ["head_area must be one of frontal, temporo-parietal, nasal", '"cheek"']),
     ({"head_area": 3}, ["head_area must be one of frontal", '(got "3")']),
+    ({"covering_law": "soft"}, ["covering_law: expected 'auto', 'foam' or 'hertz'", "soft"]),
     ({"method": "euler"}, ["method: expected exact, cvode or one of", "euler"]),
     ({"method": "exact", "history": True}, ["method='exact' computes no time history"]),
     ({"rtol": 1e-6}, ["rtol applies to the time path only"]),

@@ -33,7 +33,8 @@ Json SceneObject(const Scene& s) {
                 {"braking_m_per_s2", Number(s.robot.braking_m_per_s2)}};
   j["covering"] = {{"youngs_modulus_Pa", Number(s.covering.youngs_modulus_Pa)},
                    {"poisson_ratio", Number(s.covering.poisson_ratio)},
-                   {"thickness_m", Number(s.covering.thickness_m)}};
+                   {"thickness_m", Number(s.covering.thickness_m)},
+                   {"law", ToString(s.covering.law)}};
   j["head"] = {{"mass_kg", MaybeInfinite(s.head.mass_kg, "fixed")},
                {"radius_m", Number(s.head.radius_m)},
                {"torso_mass_kg", MaybeInfinite(s.head.torso_mass_kg, "fixed")},

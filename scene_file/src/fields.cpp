@@ -59,6 +59,11 @@ ThresholdReading ParseThresholds(std::string_view text, std::string_view name) {
       fmt::format("{}: expected 'cumulative' or 'literal' (got '{}')", name, text));
 }
 
+CoveringLaw ParseCoveringLawOrThrow(std::string_view text, std::string_view name) {
+  if (const std::optional<CoveringLaw> law = ParseCoveringLaw(text)) return *law;
+  throw std::invalid_argument(fmt::format("{}: expected 'auto', 'foam' or 'hertz' (got '{}')", name, text));
+}
+
 std::string_view ThresholdsName(ThresholdReading reading) noexcept {
   switch (reading) {
     case ThresholdReading::kCumulative: return "cumulative";

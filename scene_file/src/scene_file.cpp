@@ -46,7 +46,10 @@ std::vector<std::string_view> KeysOf(std::string_view table) {
   for (const SceneField& field : SceneFields()) {
     if (field.table == table) keys.push_back(field.key);
   }
-  if (table == "covering") keys.push_back("material");
+  if (table == "covering") {
+    keys.push_back("material");
+    keys.push_back("law");
+  }
   if (table == "model") keys.push_back("thresholds");
   if (table == "head") keys.push_back("area");
   if (table == "limits") {
@@ -82,22 +85,26 @@ struct Reading {
   throw std::invalid_argument(fmt::format("{}: {} is not read by this command; remove it", where, name));
 }
 
-/// The keys that name a choice: model.thresholds and head.area. False for any other key.
+/// The keys that name a choice: model.thresholds, head.area and covering.law. False for any
+/// other key.
 bool ApplyNamedChoice(std::string_view table_name, std::string_view key_name, const toml::node& node,
                       const std::string& where, Reading& reading) {
   const bool thresholds = table_name == "model" && key_name == "thresholds";
   const bool area = table_name == "head" && key_name == "area";
-  if (!thresholds && !area) return false;
+  const bool law = table_name == "covering" && key_name == "law";
+  if (!thresholds && !area && !law) return false;
   const std::string name = fmt::format("{}.{}", table_name, key_name);
   if (!node.is_string()) {
     throw std::invalid_argument(fmt::format("{}: {}: expected a string, {}, got {}", where, name,
                                             thresholds ? "\"cumulative\" or \"literal\""
+                                            : law      ? "\"auto\", \"foam\" or \"hertz\""
                                                        : "one of " + HeadAreaChoices(),
                                             TypeName(node)));
   }
   try {
     if (thresholds) reading.scene.model.thresholds = ParseThresholds(**node.as_string(), name);
     if (area) reading.scene.head.area = ParseHeadAreaOrThrow(name, **node.as_string());
+    if (law) reading.scene.covering.law = ParseCoveringLawOrThrow(**node.as_string(), name);
     reading.set_fields.push_back(name);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(fmt::format("{}: {}", where, e.what()));

@@ -65,6 +65,11 @@ void ApplySceneInputs(std::span<const SceneInput> inputs, const materials::Catal
       resolved.scene.model.thresholds = ParseThresholds(text ? *text : Shown(input), input.field);
       continue;
     }
+    if (input.field == "covering.law") {
+      const auto* text = std::get_if<std::string>(&input.value);
+      resolved.scene.covering.law = ParseCoveringLawOrThrow(text ? *text : Shown(input), input.field);
+      continue;
+    }
     if (input.field == "head.area") {
       const auto* text = std::get_if<std::string>(&input.value);
       resolved.scene.head.area = ParseHeadAreaOrThrow(input.field, text ? *text : Shown(input));
@@ -105,6 +110,7 @@ struct SpellingTable {
     add("covering.material", "material");
     add("model.thresholds", "thresholds");
     add("head.area", "head-area");
+    add("covering.law", "covering-law");
   }
 };
 

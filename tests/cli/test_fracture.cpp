@@ -59,6 +59,16 @@ TEST_CASE("simulate: the trial's 2.8 kN hit is judged against the forehead's fra
   CHECK(derated.at("safe") == false);
 }
 
+TEST_CASE("simulate --covering-law: the law asked for is in the scene, a bad one is exit 2", "[run][covering_law]") {
+  const CliRun hertz = Run(Trial({"--covering-law", "hertz", "--json"}));
+  REQUIRE(hertz.exit_code == 0);
+  CHECK(Json::parse(hertz.out).at("scene").at("covering").at("law") == "hertz");
+  CHECK(Json::parse(Run(Trial({"--json"})).out).at("scene").at("covering").at("law") == "auto");
+  const CliRun bad = Run(Trial({"--covering-law", "soft"}));
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.err, Contains("--covering-law") && Contains("soft"));
+}
+
 TEST_CASE("simulate --head-area nasal: the same hit breaks the nose and is UNSAFE", "[run][fracture]") {
   const CliRun json_run = Run(Trial({"--head-area", "nasal", "--json"}));
   REQUIRE(json_run.exit_code == 0);

@@ -68,6 +68,7 @@ speed = "250 mm/s"    # a string carries a unit
 radius = "flat"
 [covering]
 thickness = 0
+law = "hertz"
 [head]
 mass = "fixed"
 [model]
@@ -80,7 +81,8 @@ thresholds = "literal"
   CHECK(scene.covering.thickness_m == 0.0);
   CHECK(scene.head.mass_kg == covopt::kFixed);
   CHECK(scene.model.thresholds == covopt::ThresholdReading::kLiteral);
-  CHECK(set.size() == 6);
+  CHECK(scene.covering.law == covopt::CoveringLaw::kHertz);
+  CHECK(set.size() == 7);
 
   // Everything else keeps its default.
   const Scene defaults;
@@ -235,6 +237,11 @@ TEST_CASE("a value of the wrong type is named with its location", "[scene_file]"
              Contains("model.thresholds") && Contains("expected a string"));
   CHECK_THAT(ErrorFor("[model]\nthresholds = \"strict\"\n"),
              Contains("model.thresholds: expected 'cumulative' or 'literal' (got 'strict')"));
+  CHECK_THAT(ErrorFor("[covering]\nlaw = 1\n"),
+             Contains("covering.law: expected a string, \"auto\", \"foam\" or \"hertz\", got an integer"));
+  CHECK_THAT(ErrorFor("[covering]\nlaw = \"soft\"\n"),
+             Contains("covering.law: expected 'auto', 'foam' or 'hertz' (got 'soft')"));
+  CHECK_THAT(ErrorFor("[covering]\nlaws = \"foam\"\n"), Contains("did you mean 'covering.law'?"));
 }
 
 TEST_CASE("a bad value in a string is reported like a bad flag, with the location",

@@ -50,4 +50,9 @@ ThresholdReading ParseThresholds(std::string_view text, std::string_view name);
 /// "cumulative" or "literal": the spelling scene files and the command line use.
 std::string_view ThresholdsName(ThresholdReading reading) noexcept;
 
+/// Reads the covering law: "auto", "foam" or "hertz" (covopt::ParseCoveringLaw).
+/// @param name how messages call the value ("covering.law", "--covering-law").
+/// @throws std::invalid_argument "covering.law: expected 'auto', 'foam' or 'hertz' (got 'soft')".
+CoveringLaw ParseCoveringLawOrThrow(std::string_view text, std::string_view name);
+
 }  // namespace covopt::scene_file
