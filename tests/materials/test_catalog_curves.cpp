@@ -12,6 +12,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "catalog_test_support.hpp"
 #include "covopt/materials.hpp"
 
 using covopt::CompressiveCurve;
@@ -38,25 +39,12 @@ recovers = true
 rate_factor = [1, 3]
 )";
 
-CatalogError ErrorFor(const std::string& text) {
-  try {
-    Catalog::FromTomlString(text, "mine.toml");
-  } catch (const CatalogError& e) {
-    return e;
-  }
-  FAIL("no CatalogError for:\n" << text);
-  throw;  // unreachable
-}
+using covopt::materials::testing::ErrorFor;
 
 /// kCurved with the line starting with `key =` replaced by `line` (dropped if empty), or
 /// `line` appended when no line has that key.
 std::string With(const std::string& key, const std::string& line) {
-  std::string text = kCurved;
-  const auto at = text.find("\n" + key + " = ");
-  if (at == std::string::npos) return text + line + "\n";
-  const auto end = text.find('\n', at + 1);
-  text.replace(at + 1, end - at, line.empty() ? std::string() : line + "\n");
-  return text;
+  return covopt::materials::testing::WithLine(kCurved, key, line, /*append_missing=*/true);
 }
 
 /// The line (1-based) of `text` that holds `needle` first.
