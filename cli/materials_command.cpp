@@ -208,6 +208,8 @@ void SetupMaterials(CLI::App* materials, MaterialsOptions& options) {
       "paper's Table IV coverings. Every entry states how its E was obtained (compressive,\n"
       "tensile, bending, fitted, as-printed, hardness): compare like with like. Each\n"
       "states its compressive strength, or that it does not crush, or that it is unknown.\n"
+      "Some carry a compressive curve (measured points, or a grade band with a named shape):\n"
+      "materials find --has-curve lists them, materials show NAME --plot FILE draws one.\n"
       "Exit codes: 0 done; 2 bad input.");
 
   CLI::App* list = materials->add_subcommand("list", "List every material: name, family, E, ν, "
