@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,12 +17,14 @@
 #include <fmt/ranges.h>
 
 #include "covopt/materials/material.hpp"
+#include "covopt/report/curve_chart.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/materials_text.hpp"
 #include "covopt/scene_file/range.hpp"
 #include "catalog_options.hpp"
 #include "errors.hpp"
 #include "output_options.hpp"
+#include "plot.hpp"
 
 namespace covopt::cli {
 namespace {
@@ -66,6 +69,10 @@ constexpr QuantitySpec kStrengthSpec{QuantityKind::kModulus,
                                      materials::kPlausibleStrengthMax_Pa,
                                      {"kPa", "MPa"},
                                      "compressive strength"};
+
+/// --stress-at-25: a bare end is Pa and must be plausible for a curve's stress.
+constexpr QuantitySpec kStressAt25Spec{QuantityKind::kModulus, false, false, 100.0, 1e9, {"kPa", "MPa"},
+                                       "stress at 25 %"};
 
 constexpr std::array kCrushBehaviours{materials::CrushBehaviour::kCrushes,
                                       materials::CrushBehaviour::kDoesNotCrush,
@@ -112,6 +119,10 @@ materials::MaterialFilter ResolveFilter(const MaterialsOptions& o, const Catalog
   if (o.strength) {
     filter.compressive_strength_Pa = ParseRange(*o.strength, kStrengthSpec, "--strength");
   }
+  if (o.stress_at_25) {
+    filter.stress_at_25_Pa = ParseRange(*o.stress_at_25, kStressAt25Spec, "--stress-at-25");
+  }
+  filter.has_curve = o.has_curve;
   for (const std::string& crush : o.crush) {
     const auto parsed = materials::ParseCrushBehaviour(crush);
     if (!parsed) {
@@ -153,12 +164,36 @@ std::string DescribeFilter(const MaterialsOptions& o) {
   if (o.poisson) parts.push_back("ν " + *o.poisson);
   if (o.density) parts.push_back("ρ " + *o.density);
   if (o.strength) parts.push_back("strength " + *o.strength);
+  if (o.stress_at_25) parts.push_back("σ(25 %) " + *o.stress_at_25);
+  if (o.has_curve) parts.push_back("has a compressive curve");
   if (!o.crush.empty()) parts.push_back("crush " + fmt::format("{}", fmt::join(o.crush, "|")));
   if (!o.families.empty()) parts.push_back("family " + fmt::format("{}", fmt::join(o.families, "|")));
   if (!o.bases.empty()) parts.push_back("basis " + fmt::format("{}", fmt::join(o.bases, "|")));
   if (o.name_contains) parts.push_back("name contains '" + *o.name_contains + "'");
   if (parts.empty()) return "no conditions";
   return fmt::format("{}", fmt::join(parts, ", "));
+}
+
+/// " N were left out for want of a curve (through 25 %)." when the filter asks for a curve.
+std::string ExcludedLine(const Catalog& catalog, const materials::MaterialFilter& filter) {
+  if (!filter.needs_curve()) return {};
+  const std::size_t n = catalog.ExcludedForWantOfCurve(filter);
+  return fmt::format(" {} that pass{} the other conditions {} left out: {}.", Plural(n, "material"),
+                     n == 1 ? "es" : "", n == 1 ? "was" : "were",
+                     filter.stress_at_25_Pa.unbounded() ? "no compressive curve" : "no compressive curve through 25 %");
+}
+
+/// Why `materials show --plot FILE` cannot draw: no curve, or a file name that is not a chart's.
+std::optional<std::string> PlotProblem(const Material& m, const std::string& file) {
+  if (!PlotFormatFor(file)) {
+    return fmt::format("--plot: cannot tell the format of '{}'; name the file *.png or *.svg", file);
+  }
+  if (!m.compressive_curve) {
+    return fmt::format("--plot: material '{}' has no compressive curve to draw (materials find --has-curve lists "
+                       "those that have one)",
+                       m.name);
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -173,6 +208,8 @@ void SetupMaterials(CLI::App* materials, MaterialsOptions& options) {
       "paper's Table IV coverings. Every entry states how its E was obtained (compressive,\n"
       "tensile, bending, fitted, as-printed, hardness): compare like with like. Each\n"
       "states its compressive strength, or that it does not crush, or that it is unknown.\n"
+      "Some carry a compressive curve (measured points, or a grade band with a named shape):\n"
+      "materials find --has-curve lists them, materials show NAME --plot FILE draws one.\n"
       "Exit codes: 0 done; 2 bad input.");
 
   CLI::App* list = materials->add_subcommand("list", "List every material: name, family, E, ν, "
@@ -199,6 +236,9 @@ void SetupMaterials(CLI::App* materials, MaterialsOptions& options) {
       ->type_name("NAME")
       ->required();
   AddJsonFlag(*show, options.json, "print the material as one JSON object (SI units)");
+  AddOutputFileOption(*show, "--plot", options.plot_file,
+                      "chart with gnuplot: the material's compressive curve (stress and W over strain)",
+                      "FILE.png|FILE.svg");
   AddCatalogOptions(*show, options.catalog);
   show->callback([&options] { options.action = MaterialsAction::kShow; });
 
@@ -222,6 +262,13 @@ void SetupMaterials(CLI::App* materials, MaterialsOptions& options) {
                    "materials whose strength is known and in range (not those that do not "
                    "crush, nor those whose strength is unknown)")
       ->type_name("LO..HI")
+      ->group("Filters");
+  find->add_option("--stress-at-25", options.stress_at_25,
+                   "range of the compressive curve's stress at 25 % strain, e.g. 30kPa..80kPa: keeps only "
+                   "materials with a curve through 25 % (the output says how many were left out for want of one)")
+      ->type_name("LO..HI")
+      ->group("Filters");
+  find->add_flag("--has-curve", options.has_curve, "keep only materials with a compressive curve")
       ->group("Filters");
   find->add_option("--crush", options.crush,
                    "keep this crush behaviour: crushes, does-not-crush or unknown; repeatable: "
@@ -285,10 +332,19 @@ int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostrea
     case MaterialsAction::kShow: {
       const Material* m = catalog.Find(Trim(options.name));
       if (m == nullptr) return errors.BadInput(NoSuchMaterial(catalog, Trim(options.name)));
+      if (options.plot_file) {
+        if (auto problem = PlotProblem(*m, *options.plot_file)) return errors.BadInput(*problem);
+        try {
+          RunGnuplot(*options.plot_file, report::CompressiveCurveChart(*m));
+        } catch (const OutputError& e) {
+          return errors.Failed(e);
+        }
+      }
       if (options.json) {
         out << WithRunProvenance(report::MaterialJson(*m), options.run) << '\n';
       } else {
         report::PrintMaterial(out, *m);
+        if (options.plot_file) fmt::print(out, "\nWrote      {}\n", *options.plot_file);
       }
       break;
     }
@@ -300,16 +356,17 @@ int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostrea
         return errors.BadInput(e.what());
       }
       const std::vector<const Material*> rows = catalog.Filter(filter);
+      const std::string excluded = ExcludedLine(catalog, filter);
       if (options.json) {
         out << report::MaterialsJson(rows) << '\n';
       } else if (rows.empty()) {
-        fmt::print(out, "No material of {} ({}) matches {}.\n", where,
-                   Plural(catalog.size(), "material"), DescribeFilter(options));
+        fmt::print(out, "No material of {} ({}) matches {}.{}\n", where,
+                   Plural(catalog.size(), "material"), DescribeFilter(options), excluded);
       } else {
         report::PrintMaterialTable(out, rows,
-                           fmt::format("{} of {} match {} ({}).", rows.size(),
+                           fmt::format("{} of {} match {} ({}).{}", rows.size(),
                                        Plural(catalog.size(), "material"),
-                                       DescribeFilter(options), where));
+                                       DescribeFilter(options), where, excluded));
       }
       break;
     }

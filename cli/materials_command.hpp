@@ -4,15 +4,21 @@
 /// and the catalog options that `covopt simulate --material` shares.
 ///
 ///     covopt materials list [--json] [--catalog FILE]... [--no-builtin]
-///     covopt materials show NAME [--json] [--catalog FILE]... [--no-builtin]
+///     covopt materials show NAME [--json] [--plot FILE.png|FILE.svg] [--catalog FILE]...
+///                           [--no-builtin]
 ///     covopt materials find [--modulus LO..HI] [--poisson LO..HI] [--density LO..HI]
-///                           [--strength LO..HI] [--crush C]... [--family F]...
+///                           [--strength LO..HI] [--stress-at-25 LO..HI] [--has-curve]
+///                           [--crush C]... [--family F]...
 ///                           [--basis B]... [--name TEXT] [--include-unknown] [--json]
 ///                           [--catalog FILE]... [--no-builtin]
 ///
 /// --strength keeps materials whose compressive strength is known and in range (materials
 /// that do not crush, or whose strength is unknown, never pass it); --crush keeps materials
-/// of the given crush behaviours (crushes, does-not-crush, unknown). A bare range end is SI
+/// of the given crush behaviours (crushes, does-not-crush, unknown). --stress-at-25 keeps
+/// materials whose compressive curve's stress at 25 % strain is in range, --has-curve those with
+/// a curve; the closing line says how many were left out for want of a curve. `show` prints the
+/// curve (its points, W at the last point, σ(25 %), source, rate, recovers, rate factor) and
+/// --plot draws it with gnuplot (report::CompressiveCurveChart). A bare range end is SI
 /// and must be plausible for its quantity, as elsewhere ("--modulus 10..100" is refused:
 /// 10 Pa is no covering's modulus).
 ///
@@ -44,7 +50,7 @@ namespace covopt::cli {
 /// One catalog entry as JSON: name, family, youngs_modulus_Pa, poisson_ratio (null if
 /// unknown), density_kg_per_m3 (null if unknown), modulus_basis, source, note (null if
 /// none), crush_behaviour, compressive_strength_Pa (null unless known), strength_method,
-/// strength_source, defined_at.
+/// strength_source, defined_at, then the curve's keys (report::MaterialJson).
 nlohmann::ordered_json MaterialToJson(const materials::Material& material);
 
 /// Which `materials` subcommand ran.
@@ -56,11 +62,14 @@ struct MaterialsOptions {
   CatalogOptions catalog;                           ///< --catalog, --no-builtin
   bool json = false;                                ///< --json: JSON instead of a table
   std::string name;                                 ///< show NAME
+  std::optional<std::string> plot_file;             ///< show --plot FILE.png|FILE.svg
   // find:
   std::optional<std::string> modulus;   ///< --modulus LO..HI (Pa, kPa, MPa, GPa)
   std::optional<std::string> poisson;   ///< --poisson LO..HI
   std::optional<std::string> density;   ///< --density LO..HI (kg/m3, g/cm3)
   std::optional<std::string> strength;  ///< --strength LO..HI (Pa, kPa, MPa, GPa)
+  std::optional<std::string> stress_at_25;  ///< --stress-at-25 LO..HI (Pa, kPa, MPa, GPa)
+  bool has_curve = false;               ///< --has-curve: only materials with a compressive curve
   std::vector<std::string> crush;       ///< --crush C, repeatable: any of them
   std::vector<std::string> families;    ///< --family F, repeatable: any of them
   std::vector<std::string> bases;       ///< --basis B, repeatable: any of them

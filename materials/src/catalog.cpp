@@ -161,9 +161,27 @@ std::vector<const Material*> Catalog::Filter(const MaterialFilter& filter) const
                   m.crush_behaviour) == filter.crush_behaviours.end()) {
       continue;
     }
+    if (filter.has_curve && !m.compressive_curve) continue;
+    if (!filter.stress_at_25_Pa.unbounded()) {
+      const auto stress = StressAt25Pa(m);
+      if (!stress || !filter.stress_at_25_Pa.Contains(*stress)) continue;
+    }
     kept.push_back(&m);
   }
   return kept;
+}
+
+std::size_t Catalog::ExcludedForWantOfCurve(const MaterialFilter& filter) const {
+  if (!filter.needs_curve()) return 0;
+  MaterialFilter others = filter;
+  others.has_curve = false;
+  others.stress_at_25_Pa = Range{};
+  std::size_t excluded = 0;
+  for (const Material* m : Filter(others)) {
+    const bool lacks = filter.stress_at_25_Pa.unbounded() ? !m->compressive_curve : !StressAt25Pa(*m);
+    if (lacks) ++excluded;
+  }
+  return excluded;
 }
 
 std::vector<std::string> Catalog::families() const {

@@ -5,6 +5,8 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <memory>
+#include <span>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -29,21 +31,35 @@ using covopt::internal::TypeName;
 using covopt::internal::Where;
 using internal::FormatNumber;
 
-constexpr std::array<std::string_view, 11> kKeys{
+constexpr std::array<std::string_view, 18> kKeys{
     internal::kKeyName,     internal::kKeyFamily,         internal::kKeyModulus,
     internal::kKeyPoisson,  internal::kKeyDensity,        internal::kKeyBasis,
     internal::kKeySource,   internal::kKeyNote,           internal::kKeyStrength,
-    internal::kKeyStrengthMethod, internal::kKeyStrengthSource};
+    internal::kKeyStrengthMethod, internal::kKeyStrengthSource, internal::kKeyCurve,
+    internal::kKeyCurveSource, internal::kKeyCurveRate,   internal::kKeyRecovers,
+    internal::kKeyRateFactor, internal::kKeyBand,         internal::kKeyShape};
 
 /// A compressive strength without a unit is read as pascals and must be plausible.
 constexpr QuantitySpec kStrengthSpec{QuantityKind::kModulus,   false, false,
                                      kPlausibleStrengthMin_Pa, kPlausibleStrengthMax_Pa,
                                      {"kPa", "MPa"},           "compressive strength"};
+/// A curve's stress and a band's bounds: a string with a unit, 1 Pa to 10 GPa.
+constexpr QuantitySpec kCurveStressSpec{QuantityKind::kModulus, false, false, kMinCurveStress_Pa,
+                                        kMaxCurveStress_Pa,      {"kPa", "MPa"}, "curve stress"};
 constexpr std::string_view kRequiredKeys =
     "name, family, youngs_modulus_Pa, modulus_basis, source";
 
 /// Keys people are likely to write for ours, beyond typos.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 24> kKeyAliases{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 33> kKeyAliases{{
+    {"curve", internal::kKeyCurve},
+    {"stress_strain", internal::kKeyCurve},
+    {"stress_strain_curve", internal::kKeyCurve},
+    {"rate", internal::kKeyCurveRate},
+    {"strain_rate", internal::kKeyCurveRate},
+    {"recovery", internal::kKeyRecovers},
+    {"band", internal::kKeyBand},
+    {"grade_band", internal::kKeyBand},
+    {"shape", internal::kKeyShape},
     {"e", internal::kKeyModulus},
     {"modulus", internal::kKeyModulus},
     {"young", internal::kKeyModulus},
@@ -132,6 +148,7 @@ class EntryReader {
       m.note = note->as_string()->get();
     }
     ReadStrength(m);
+    ReadCurve(m);
     return m;
   }
 
@@ -335,6 +352,137 @@ class EntryReader {
         }
         break;
       }
+    }
+  }
+
+  /// compressive_curve and the keys that go with it (curve_source, curve_rate, recovers,
+  /// rate_factor, stress_at_25_band, curve_shape); their rules are internal::CurveFieldsProblem's.
+  void ReadCurve(Material& m) {
+    const toml::node* curve = table_.get(internal::kKeyCurve);
+    if (curve != nullptr) m.compressive_curve = std::make_shared<const CompressiveCurve>(ReadCurvePoints(*curve));
+    m.curve_source = OptionalText(internal::kKeyCurveSource);
+    m.curve_shape = OptionalText(internal::kKeyShape);
+    if (const toml::node* rate = table_.get(internal::kKeyCurveRate)) ReadCurveRate(*rate, m);
+    if (const toml::node* recovers = table_.get(internal::kKeyRecovers)) {
+      if (!recovers->is_boolean()) {
+        Fail(*recovers, internal::kKeyRecovers,
+             "must be true (a flexible foam that recovers) or false (a crushable liner) (got " + Shown(*recovers) + ")");
+      }
+      m.recovers = recovers->as_boolean()->get();
+    }
+    if (const toml::node* factor = table_.get(internal::kKeyRateFactor)) {
+      const auto [low, high] = ReadPair(*factor, internal::kKeyRateFactor, nullptr);
+      m.rate_factor = Bounds{low, high};
+    }
+    if (const toml::node* band = table_.get(internal::kKeyBand)) {
+      const auto [low, high] = ReadPair(*band, internal::kKeyBand, &kCurveStressSpec);
+      m.stress_at_25_band_Pa = Bounds{low, high};
+    }
+    if (const auto problem = internal::CurveFieldsProblem(m)) {
+      const toml::node* at = table_.get(problem->first);
+      if (at == nullptr) at = curve;
+      if (at == nullptr) at = &table_;
+      Fail(*at, problem->first, problem->second);
+    }
+  }
+
+  /// curve_rate: "quasi-static", "unknown" or a rate with its unit.
+  void ReadCurveRate(const toml::node& node, Material& m) {
+    const std::string_view key = internal::kKeyCurveRate;
+    const std::string allowed = "must be " + std::string(internal::kCurveRateAllowed);
+    if (!node.is_string()) Fail(node, key, allowed + " (got " + Shown(node) + ")");
+    const std::string& text = node.as_string()->get();
+    if (text == internal::kQuasiStatic || text == internal::kUnknownRate) {
+      m.curve_rate = text;
+      return;
+    }
+    const auto rate = internal::ParseCurveRate(text);
+    if (!rate) Fail(node, key, allowed + " (got " + Shown(node) + ")");
+    if (!(*rate > 0.0 && *rate <= internal::kMaxCurveRate_per_s)) {
+      Fail(node, key, "must be a strain rate in (0, 1e6] 1/s (got " + Shown(node) + ")");
+    }
+    m.curve_rate = text;
+    m.curve_rate_per_s = *rate;
+  }
+
+  /// [low, high]: two numbers (spec null), or two stresses with their units (spec set).
+  std::pair<double, double> ReadPair(const toml::node& node, std::string_view key, const QuantitySpec* spec) {
+    const std::string shape = spec != nullptr ? "[low, high] with units, e.g. [\"34.5kPa\", \"62.1kPa\"]"
+                                              : "[low, high], e.g. [1, 3]";
+    const auto* array = node.as_array();
+    if (array == nullptr || array->size() != 2) Fail(node, key, "must be " + shape + " (got " + Shown(node) + ")");
+    double values[2] = {0.0, 0.0};
+    for (std::size_t i = 0; i < 2; ++i) {
+      const toml::node& item = *array->get(i);
+      const auto value = spec != nullptr ? ReadStress(item, key) : AsNumber(item);
+      if (!value) Fail(item, key, "must be " + shape + " (got " + Shown(item) + " in it)");
+      values[i] = *value;
+    }
+    return {values[0], values[1]};
+  }
+
+  /// A curve stress: a string with a unit ("57.3kPa"); a bare number is refused.
+  std::optional<double> ReadStress(const toml::node& node, std::string_view key) {
+    if (AsNumber(node)) {
+      Fail(node, key, "stress " + Shown(node) + " needs its unit, e.g. \"" + Shown(node) +
+                          "kPa\" or \"" + Shown(node) + " Pa\" (a curve's stresses are written with units)");
+    }
+    if (!node.is_string()) return std::nullopt;
+    return ReadQuantity(node, key, kCurveStressSpec);
+  }
+
+  /// A curve strain: a fraction in (0, 1) or a percentage ("25%").
+  double ReadStrain(const toml::node& node) {
+    const std::string_view key = internal::kKeyCurve;
+    if (const auto value = AsNumber(node)) return *value;
+    if (const auto* text = node.as_string()) {
+      std::string t = text->get();
+      while (!t.empty() && t.back() == ' ') t.pop_back();
+      if (!t.empty() && t.back() == '%') {
+        t.pop_back();
+        try {
+          std::size_t used = 0;
+          const double percent = std::stod(t, &used);
+          if (t.find_first_not_of(' ', used) == std::string::npos) return percent / 100.0;
+        } catch (const std::exception&) {
+        }
+      }
+    }
+    Fail(node, key, "strain must be a fraction in (0, 1) or a percentage such as \"25%\" (got " + Shown(node) + ")");
+  }
+
+  /// The points of compressive_curve, checked by CompressiveCurve::FromPoints; its message is
+  /// placed at the offending point.
+  CompressiveCurve ReadCurvePoints(const toml::node& node) {
+    const std::string_view key = internal::kKeyCurve;
+    const std::string shape = "must be a list of [strain, \"stress with unit\"] points, e.g. [[0.1, \"30kPa\"], "
+                              "[0.25, \"57.3kPa\"]] (the origin is implied)";
+    const auto* array = node.as_array();
+    if (array == nullptr || array->empty()) Fail(node, key, shape + " (got " + Shown(node) + ")");
+    std::vector<StrainStressPoint> points;
+    for (const toml::node& item : *array) {
+      const auto* pair = item.as_array();
+      if (pair == nullptr || pair->size() != 2) Fail(item, key, shape + " (got " + Shown(item) + " as a point)");
+      const double strain = ReadStrain(*pair->get(0));
+      const auto stress = ReadStress(*pair->get(1), key);
+      if (!stress) Fail(*pair->get(1), key, "stress must be a string with a unit, e.g. \"57.3kPa\" (got " + Shown(*pair->get(1)) + ")");
+      points.push_back({strain, *stress});
+    }
+    try {
+      return CompressiveCurve::FromPoints(points, key);
+    } catch (const std::invalid_argument& e) {
+      // The first point whose prefix is refused is the offending one (prefix validity is monotone).
+      std::size_t lo = 1, hi = points.size();
+      while (lo < hi) {
+        const std::size_t mid = (lo + hi) / 2;
+        try {
+          (void)CompressiveCurve::FromPoints(std::span(points).first(mid), key);
+          lo = mid + 1;
+        } catch (const std::invalid_argument&) {
+          hi = mid;
+        }
+      }
+      Fail(*array->get(lo - 1), key, std::string(e.what()).substr(key.size() + 2));
     }
   }
 

@@ -64,4 +64,18 @@ double PoissonRatioOrDefault(const Material& material) noexcept {
   return material.poisson_ratio.value_or(kDefaultPoissonRatio);
 }
 
+std::optional<double> StressAt25Pa(const Material& material) noexcept {
+  const CompressiveCurve* curve = material.compressive_curve.get();
+  if (curve == nullptr || curve->last_strain() < kRatingStrain) return std::nullopt;
+  return curve->StressAt(kRatingStrain);
+}
+
+CoveringSpec CoveringOf(const Material& material, double thickness_m) {
+  return CoveringSpec{.youngs_modulus_Pa = material.youngs_modulus_Pa,
+                      .poisson_ratio = PoissonRatioOrDefault(material),
+                      .thickness_m = thickness_m,
+                      .compressive_curve = material.compressive_curve,
+                      .law = CoveringLaw::kAuto};
+}
+
 }  // namespace covopt::materials

@@ -23,6 +23,7 @@ from . import _body_regions, _covopt, _provenance
 from ._body_regions import (BodyContact, BodyRegionDesign, BodyRegionSpeedLimitTable, BodyRegionSweep,
                             BodyRegionTrajectoryCheck)
 from ._audit import Audit, AuditFailure, AuditManyError, audit, audit_many
+from ._catalog import Catalog
 from ._errors import ComputationError
 from ._inputs import Regions, Rule, takes_objects as _takes_objects
 from ._results import (ContactMotion, Design, Material, ReflectedMass, Result, RobustDesign,
@@ -33,7 +34,7 @@ Scene = _covopt.Scene
 for _public in (Scene, ComputationError):
     _public.__module__ = __name__  # shown as covopt.Scene, covopt.ComputationError
 
-__all__ = ["Scene", "Rule", "Regions", "Result", "simulate", "sweep", "optimize", "materials", "material",
+__all__ = ["Scene", "Rule", "Regions", "Result", "simulate", "sweep", "optimize", "materials", "material", "Catalog",
            "ComputationError", "max_safe_speed", "max_safe_mass", "speed_limit", "reflected_mass", "iso_robot_mass",
            "contact_motion", "check_trajectory", "worst_case", "injury_probability",
            "sensitivities", "robust_optimize", "load_scene", "BodyContact", "BodyRegionSpeedLimitTable",

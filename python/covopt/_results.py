@@ -119,7 +119,26 @@ class SpeedLimitTable(Result):
 
 
 class Material(Result):
-    """A catalog material: ``covopt materials show NAME --json``."""
+    """A catalog material: ``covopt materials show NAME --json``. Its compressive curve
+    (None without one): ``compressive_curve``, a list of (strain, stress_Pa) tuples through an
+    implied origin; ``stress_at_25_Pa``; ``curve_source``; ``curve_rate`` ("quasi-static",
+    "unknown" or a rate such as "20 1/s"); ``recovers``; ``rate_factor`` and
+    ``stress_at_25_band_Pa`` as (low, high) tuples; ``curve_shape`` (the assumed shape of a band)."""
+
+    @property
+    def compressive_curve(self):
+        points = self._data.get("compressive_curve")
+        return None if points is None else [tuple(point) for point in points]
+
+    @property
+    def rate_factor(self):
+        bounds = self._data.get("rate_factor")
+        return None if bounds is None else tuple(bounds)
+
+    @property
+    def stress_at_25_band_Pa(self):
+        bounds = self._data.get("stress_at_25_band_Pa")
+        return None if bounds is None else tuple(bounds)
 
 
 class ReflectedMass(Result):

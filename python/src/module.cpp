@@ -473,15 +473,8 @@ optim::OracleOptions ReadOracleKeywords(const py::kwargs& kwargs, const Scene& s
 
 std::vector<optim::CandidateMaterial> Candidates(const py::kwargs& kwargs) {
   const auto get = [&](const char* name) { return Option(kwargs, name); };
-  const bool no_builtin = Flag(kwargs, "no_builtin");
   const std::vector<std::string> files = get("catalog") ? ReadNames(*get("catalog"), "catalog") : std::vector<std::string>{};
-  if (no_builtin && files.empty()) throw std::invalid_argument("no_builtin leaves no catalog; add catalog=FILE");
-  materials::Catalog catalog = no_builtin ? materials::Catalog() : BuiltInCatalog();
-  try {
-    for (const std::string& file : files) catalog.Add(materials::Catalog::FromTomlFile(file));
-  } catch (const materials::CatalogError& e) {
-    throw std::invalid_argument(std::string("catalog: ") + e.what());
-  }
+  const materials::Catalog catalog = LoadCatalogFiles(files, Flag(kwargs, "no_builtin"));
   const std::vector<std::string> names = get("materials") ? ReadNames(*get("materials"), "materials") : std::vector<std::string>{};
   const std::vector<std::string> families = get("families") ? ReadNames(*get("families"), "families") : std::vector<std::string>{};
   try {
@@ -676,6 +669,7 @@ void RegisterBodyContact(py::module_& m);  // body_contact.cpp
 void BindAudit(py::module_& m);            // audit_bindings.cpp
 void BindReport(py::module_& m);           // report_bindings.cpp
 void BindSweep(py::module_& m);            // sweep_bindings.cpp
+void BindCatalog(py::module_& m);          // catalog_bindings.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -686,6 +680,7 @@ PYBIND11_MODULE(_covopt, m) {
   m.def("optimize", &covopt::python::Optimize);
   m.def("materials", &covopt::python::Materials);
   m.def("material", &covopt::python::Material, py::arg("name"));
+  covopt::python::BindCatalog(m);
   covopt::python::BindSpeedLimit(m);
   covopt::python::BindRobot(m);
   covopt::python::BindTrajectory(m);

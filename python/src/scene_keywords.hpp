@@ -15,6 +15,7 @@
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/scene.hpp"
 #include "covopt/core/sweep.hpp"
+#include "covopt/materials/catalog.hpp"
 #include "covopt/optim/covering_design.hpp"
 #include "covopt/optim/oracle.hpp"
 #include "covopt/optim/speed_limit.hpp"
@@ -97,6 +98,10 @@ std::string SolveKeywords(std::string message);
 /// optimize's candidates: the built-in catalog and the catalog files (catalog=; only those with
 /// no_builtin=True), filtered by materials= and families= (module.cpp).
 std::vector<optim::CandidateMaterial> Candidates(const pybind11::kwargs& kwargs);
+
+/// The built-in catalog (unless no_builtin) and the catalog files added to it, in order; a bad
+/// file is ValueError "catalog: file:line:column: ..." (catalog_bindings.cpp).
+materials::Catalog LoadCatalogFiles(const std::vector<std::string>& files, bool no_builtin);
 
 /// json.loads(text).
 pybind11::object JsonToPython(const std::string& text);

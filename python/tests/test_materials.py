@@ -24,7 +24,9 @@ def test_material_ignores_case():
 def test_every_material_has_the_documented_keys_in_si():
     keys = ["name", "family", "youngs_modulus_Pa", "poisson_ratio", "density_kg_per_m3",
             "modulus_basis", "source", "note", "crush_behaviour", "compressive_strength_Pa",
-            "strength_method", "strength_source", "defined_at"]
+            "strength_method", "strength_source", "defined_at", "compressive_curve", "stress_at_25_Pa",
+            "curve_energy_density_J_per_m3", "curve_source", "curve_rate", "curve_rate_per_s", "recovers",
+            "rate_factor", "stress_at_25_band_Pa", "curve_shape"]
     for m in covopt.materials():
         assert list(m.to_dict()) == keys
         assert 1e3 <= m.youngs_modulus_Pa <= 1e12

@@ -20,6 +20,7 @@
 #include <catch2/catch.hpp>
 #include <unistd.h>
 
+#include "catalog_test_support.hpp"
 #include "covopt/materials.hpp"
 
 using covopt::materials::Catalog;
@@ -43,25 +44,11 @@ source = "a datasheet"
 note = "secant over 0-10 % strain"
 )";
 
-/// The CatalogError that loading `text` as "mine.toml" throws; fails the test if none.
-CatalogError ErrorFor(const std::string& text) {
-  try {
-    Catalog::FromTomlString(text, "mine.toml");
-  } catch (const CatalogError& e) {
-    return e;
-  }
-  FAIL("no CatalogError for:\n" << text);
-  throw;  // unreachable
-}
+using covopt::materials::testing::ErrorFor;
 
 /// kGood with the line starting with `key =` replaced by `line` (dropped if empty).
 std::string With(const std::string& key, const std::string& line) {
-  std::string text = kGood;
-  const auto at = text.find("\n" + key + " = ");
-  REQUIRE(at != std::string::npos);
-  const auto end = text.find('\n', at + 1);
-  text.replace(at + 1, end - at, line.empty() ? "" : line + "\n");
-  return text;
+  return covopt::materials::testing::WithLine(kGood, key, line);
 }
 
 }  // namespace

@@ -207,10 +207,11 @@ TEST_CASE("Filter keeps known strengths in range and selects crush behaviours", 
     CHECK(*m->compressive_strength_Pa >= 150e3);
     CHECK(*m->compressive_strength_Pa <= 300e3);
   }
-  // FOAMULAR 250 (172 kPa), 400 (276 kPa), EPS29 (200 kPa), EPS39 (276 kPa), LB-X (300 kPa).
+  // FOAMULAR 250 (172 kPa), 400 (276 kPa), EPS29 (200 kPa), EPS39 (276 kPa), LB-X (300 kPa),
+  // the hard helmet pad's FE card (yield 210 kPa).
   CHECK(names == std::vector<std::string>{"EPS geofoam EPS29", "EPS geofoam EPS39",
                                           "XPS Foamular 250", "XPS Foamular 400",
-                                          "XPS Styrofoam LB-X"});
+                                          "XPS Styrofoam LB-X", "helmet pad hard (FE card)"});
   // Unknown strengths never pass a strength range, not even with include_unknown.
   strong.include_unknown = true;
   CHECK(catalog.Filter(strong).size() == kept.size());

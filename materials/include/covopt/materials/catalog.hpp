@@ -29,6 +29,24 @@
 ///                        Required with either, not allowed with "unknown"
 ///     strength_source    string: a URL or a citation for the strength or for "does not
 ///                        crush". Required with either, not allowed with "unknown"
+///     compressive_curve  optional: the loading curve as measured points, piecewise linear,
+///                        the origin implied: [[strain, "stress with unit"], ...]; a strain is
+///                        a fraction in (0, 1) or a percentage ("25%"); a stress needs its unit
+///                        ("57.3kPa"; a bare number is refused). Strains increase, stresses
+///                        never decrease, 1 Pa to 10 GPa (CompressiveCurve::FromPoints)
+///     curve_source       string: a URL, DOI or citation for the points, and how they were
+///                        read. Required with a curve
+///     curve_rate         "quasi-static", "unknown" or a strain rate with its unit ("20 1/s",
+///                        in (0, 1e6] 1/s). Required with a curve
+///     recovers           true (a flexible foam that recovers) or false (a crushable liner).
+///                        Required with a curve
+///     rate_factor        optional, [low, high]: the factor the curve's stresses may take at
+///                        impact rates, 0.1 <= low <= high <= 10. Only with a curve
+///     stress_at_25_band  optional, ["low unit", "high unit"]: a grade band (e.g. ASTM D1056)
+///                        standing in for a measured curve: the range of σ(25 %), carried as an
+///                        uncertainty. Needs curve_shape, and the curve's σ(25 %) in the band
+///     curve_shape        string: with a band, the assumed shape its curve follows (which
+///                        measured curve, scaled how). Needs stress_at_25_band
 ///
 /// Values with units are read as in scene files (covopt/core/quantity.hpp): a bare number is
 /// SI and must be plausible for its quantity (youngs_modulus_Pa = 27.6 would be 27.6 Pa and
@@ -101,6 +119,14 @@ struct MaterialFilter {
   /// Whether an entry whose ν (or density) is unknown passes a bounded ν (or density)
   /// range. Default false: a value that is not known is not known to be in range.
   bool include_unknown = false;
+  /// σ(25 %) of the compressive curve [Pa] (StressAt25Pa): a bounded range keeps only
+  /// materials with a curve through 25 % whose σ(25 %) is in range; materials without one
+  /// never pass it (include_unknown does not apply).
+  Range stress_at_25_Pa;
+  /// true: keep only materials with a compressive curve.
+  bool has_curve = false;
+  /// Whether the filter asks for a curve (has_curve, or a bounded stress_at_25_Pa).
+  bool needs_curve() const noexcept { return has_curve || !stress_at_25_Pa.unbounded(); }
 };
 
 /// An ordered list of materials with unique names (ignoring case). Value type.
@@ -150,6 +176,11 @@ class Catalog {
 
   /// The entries that pass `filter`, in catalog order.
   std::vector<const Material*> Filter(const MaterialFilter& filter) const;
+
+  /// How many entries `filter` leaves out only because they have no curve through 25 %
+  /// (for --stress-at-25) or no curve (for --has-curve): they pass every other condition.
+  /// 0 when the filter asks for no curve.
+  std::size_t ExcludedForWantOfCurve(const MaterialFilter& filter) const;
 
   /// The distinct families, in order of first appearance.
   std::vector<std::string> families() const;

@@ -8,9 +8,13 @@
 /// carries the basis of its E, and a note saying how it was derived where it was (e.g. a
 /// secant from a stress at a strain).
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+
+#include "covopt/core/compressive_curve.hpp"
+#include "covopt/core/scene.hpp"
 
 namespace covopt::materials {
 
@@ -66,6 +70,21 @@ inline constexpr double kPlausibleStrengthMax_Pa = 1e10;
 /// The largest compressive strength an entry may have [Pa] (as for E).
 inline constexpr double kMaxStrength_Pa = 1e12;
 
+/// The strain at which a compressive curve is rated and filtered (`materials find
+/// --stress-at-25`): 25 %, the compression-deflection strain of ASTM D1056 and D3574.
+inline constexpr double kRatingStrain = 0.25;
+
+/// The range a rate_factor's bounds must lie in [-]: 0.1 to 10 (a tenth to ten times the
+/// measured stresses). low <= high.
+inline constexpr double kMinRateFactor = 0.1;
+inline constexpr double kMaxRateFactor = 10.0;
+
+/// A closed range [low, high] of a quantity (a stress band [Pa], a rate factor [-]).
+struct Bounds {
+  double low = 0.0;
+  double high = 0.0;
+};
+
 /// One catalog entry. Plain data; Catalog validates entries when it loads or adds them.
 struct Material {
   /// Unique within a catalog, compared ignoring case, e.g. "polystyrene foam 27.6".
@@ -100,7 +119,43 @@ struct Material {
   /// Where the entry was defined, "file:line:column" of its [[material]] header; empty
   /// for entries added in code.
   std::string origin;
+
+  // ---- The compressive curve (docs/model.md, "the foam layer"); all empty without one. ----
+  /// The measured (or fitted, or assumed-shape) loading curve σ(ε), piecewise linear through
+  /// the origin; null when the entry has none (then only its E describes it).
+  std::shared_ptr<const CompressiveCurve> compressive_curve;
+  /// Where the curve's points come from (a URL, DOI or citation); set exactly with a curve.
+  std::string curve_source;
+  /// The test's strain rate as the catalog states it: "quasi-static", "unknown", or a rate
+  /// with its unit ("20 1/s"); set exactly with a curve.
+  std::string curve_rate;
+  /// curve_rate as a number [1/s] when it is a rate; empty for "quasi-static" and "unknown".
+  std::optional<double> curve_rate_per_s;
+  /// true: a flexible foam that recovers after the impact; false: a crushable liner (spent
+  /// after one impact). Set exactly with a curve.
+  std::optional<bool> recovers;
+  /// The range of the factor the stresses may be multiplied by at impact rates [-] (e.g.
+  /// [1, 3] for a quasi-static curve), kMinRateFactor <= low <= high <= kMaxRateFactor;
+  /// empty when the catalog gives none. Only with a curve.
+  std::optional<Bounds> rate_factor;
+  /// A grade band standing in for a measured curve: the range of σ(25 %) [Pa] the grade
+  /// allows (e.g. ASTM D1056 grade 2: 34.5-62.1 kPa), carried as an uncertainty. Only with
+  /// curve_shape and a curve whose σ(25 %) lies in the band.
+  std::optional<Bounds> stress_at_25_band_Pa;
+  /// With a band: the assumed shape the curve's points follow, named (which measured curve,
+  /// scaled how), e.g. "VN600 (NIST), scaled to the band's midpoint at 25 %". Empty otherwise.
+  std::string curve_shape;
 };
+
+/// σ(25 %) of the material's curve [Pa]; empty without a curve or when the curve ends before
+/// 25 % (past its end the layer is a rigid stop: no stress of the foam there).
+std::optional<double> StressAt25Pa(const Material& material) noexcept;
+
+/// The covering a layer of `thickness_m` of this material makes: its E, its ν (or
+/// kDefaultPoissonRatio when unknown), the thickness and its compressive curve (null without
+/// one); the law is left at kAuto. Every caller that turns a catalog material into a covering
+/// takes the curve from here.
+CoveringSpec CoveringOf(const Material& material, double thickness_m);
 
 /// ν of the material, or kDefaultPoissonRatio when it is unknown.
 double PoissonRatioOrDefault(const Material& material) noexcept;

@@ -16,7 +16,12 @@ namespace covopt::report {
 void PrintMaterialTable(std::ostream& out, const std::vector<const materials::Material*>& rows,
                         std::string_view closing);
 
-/// One material in full: every field, its sources, strength and note, long values wrapped.
+/// One material in full: every field, its sources, strength and note, long values wrapped,
+/// then its compressive curve (PrintCurve).
 void PrintMaterial(std::ostream& out, const materials::Material& m);
+
+/// The compressive curve's rows (points and W at the last, σ(25 %) and its band, shape, rate,
+/// recovers, rate factor, source) and its points as a table, or that it has none.
+void PrintCurve(std::ostream& out, const materials::Material& m);
 
 }  // namespace covopt::report

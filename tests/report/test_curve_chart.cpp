@@ -1,0 +1,49 @@
+// The compressive-curve chart (`materials show --plot`): its script carries every point of the
+// curve from the origin with W at each, the rigid stop at the last strain, σ(25 %) and a grade
+// band; a material without a curve is refused.
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include <covopt/materials.hpp>
+
+#include "covopt/report/curve_chart.hpp"
+
+using Catch::Matchers::Contains;
+
+namespace {
+
+/// printf's %.<digits>g, as the chart writes its numbers.
+std::string G(double value, int digits = 9) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("the curve chart's script holds the points, W, the rigid stop and the rating", "[charts][curve]") {
+  const auto* m = covopt::materials::Catalog::BuiltIn().Find("neoprene sponge D1056 2C2");
+  REQUIRE(m != nullptr);
+  const std::string script =
+      covopt::report::CompressiveCurveChart(*m).script(covopt::report::ChartFormat::kSvg, "out.svg");
+  CHECK_THAT(script, Contains("$curve << EOD\n0 0 0\n"));
+  for (const auto& p : m->compressive_curve->points()) {
+    CHECK_THAT(script, Contains(G(100.0 * p.strain) + " " + G(p.stress_Pa / 1e3) + " " +
+                                G(m->compressive_curve->EnergyDensityAt(p.strain) / 1e3) + "\n"));
+  }
+  const std::string stop = G(100.0 * m->compressive_curve->last_strain(), 6);
+  CHECK_THAT(script, Contains("set arrow from " + stop + ", graph 0 to " + stop + ", graph 1"));
+  CHECK_THAT(script, Contains("$rated << EOD\n25 " + G(*covopt::materials::StressAt25Pa(*m) / 1e3) + "\nEOD"));
+  CHECK_THAT(script, Contains("grade band at 25 %: 34.47 to 62.05 kPa"));
+  CHECK_THAT(script, Contains("set output 'out.svg'"));
+}
+
+TEST_CASE("a material without a curve has no curve chart", "[charts][curve]") {
+  const auto* m = covopt::materials::Catalog::BuiltIn().Find("polystyrene foam 27.6");
+  REQUIRE(m != nullptr);
+  CHECK_THROWS_AS(covopt::report::CompressiveCurveChart(*m), std::invalid_argument);
+}
