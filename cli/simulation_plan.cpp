@@ -73,8 +73,10 @@ void ApplyMaterial(const SimulateOptions& options, const SceneFileExtras& extras
                                              extras.covering_material_where,
                                              NoSuchMaterial(catalog, name)));
   }
-  plan.scene.covering.youngs_modulus_Pa = material->youngs_modulus_Pa;
-  plan.scene.covering.poisson_ratio = materials::PoissonRatioOrDefault(*material);
+  const CoveringSpec covering = materials::CoveringOf(*material, plan.scene.covering.thickness_m);
+  plan.scene.covering.youngs_modulus_Pa = covering.youngs_modulus_Pa;
+  plan.scene.covering.poisson_ratio = covering.poisson_ratio;
+  plan.scene.covering.compressive_curve = covering.compressive_curve;
   plan.covering_material_source =
       from_flag ? fmt::format("--material '{}'", material->name)
                 : fmt::format("covering.material '{}' ({})", material->name,

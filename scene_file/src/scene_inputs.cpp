@@ -44,8 +44,10 @@ void ApplyMaterial(std::span<const SceneInput> inputs, const materials::Catalog&
   }
   const materials::Material* m = catalog.Find(*name);
   if (m == nullptr) throw std::invalid_argument(catalog.MissingMaterialMessage(*name));
-  resolved.scene.covering.youngs_modulus_Pa = m->youngs_modulus_Pa;
-  resolved.scene.covering.poisson_ratio = materials::PoissonRatioOrDefault(*m);
+  const CoveringSpec covering = materials::CoveringOf(*m, resolved.scene.covering.thickness_m);
+  resolved.scene.covering.youngs_modulus_Pa = covering.youngs_modulus_Pa;
+  resolved.scene.covering.poisson_ratio = covering.poisson_ratio;
+  resolved.scene.covering.compressive_curve = covering.compressive_curve;
   resolved.covering_material = m;
 }
 
