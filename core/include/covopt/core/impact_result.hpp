@@ -43,6 +43,16 @@ struct ImpactPeaks {
   /// t1 = 0.8 b_s; 0 where the literal reading leaves no phase 2; equal to
   /// full_compression_penetration_m without a covering (no travel).
   double covering_travel_start_m = 0.0;
+  /// The law that described the covering (ImpactModel::covering_law): kFoam or kHertz (also
+  /// for the bare robot, whose contact is Park's Hertz chain).
+  CoveringLaw covering_law = CoveringLaw::kHertz;
+  /// The covering's nominal strain at the peak [-]: under the foam law min(δ_max, stop)/h, at
+  /// most the curve's last strain; under the Hertz law the covering's share of δ_max over its
+  /// thickness, (min(δ_max, t2) − t1)/b_c, at most the full-compression fraction; 0 bare.
+  double covering_strain_at_peak = 0.0;
+  /// Foam law: the energy that passed the layer's stop [J], U(δ_max) − U(stop), 0 while the
+  /// peak stays within the curve (and for the Hertz law).
+  double energy_past_stop_J = 0.0;
 
   /// The share of the covering's own travel used at the peak [-]:
   /// (δ_max − s) / (t2 − s), s = covering_travel_start_m, t2 = full_compression_penetration_m;
@@ -64,6 +74,20 @@ struct ImpactPeaks {
 /// replace F_max, σ_c,max, σ_t,max and e_A,max by the damped ones (ImpactPeaks).
 ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
                                   double max_penetration_m) noexcept;
+
+/// Whether the covering stayed within its law's validity at the peak (docs/model.md §16): the
+/// foam law within its measured curve (a used-up layer is a rigid stop, modelled, and the note
+/// says how much energy passed it); the Hertz law not fully compressed.
+struct CoveringValidity {
+  bool within = true;
+  std::string note;  ///< for people, with the numbers
+};
+
+/// The covering's validity at `peaks` of `model`: within, and a note naming the law, e.g.
+/// "foam law: within the measured curve (strain 0.31 of its last 0.49 at the peak)" or "foam
+/// law: the layer is used up (strain 0.49, the curve's last point): a rigid stop; 0.12 J of
+/// the 0.35 J impact energy passed it into the scalp and skull". Bare robot: within, "no covering".
+CoveringValidity CoveringLawValidity(const ImpactModel& model, const ImpactPeaks& peaks);
 
 /// One injury criterion judged against its limit.
 struct InjuryVerdict {
@@ -233,6 +257,9 @@ struct ImpactResult {
   /// result leaves the model's domain (CheckValidity; docs/model.md §5, §7), then the time
   /// path's own (tolerance not kept, no restarts).
   std::vector<ValidityWarning> warnings;
+  /// The covering's law validity at the peaks (CoveringLawValidity); the law is
+  /// peaks.covering_law.
+  CoveringValidity validity;
 
   bool ok() const noexcept { return status == SolveStatus::kSuccess; }
 
