@@ -134,6 +134,52 @@ Crossing EnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2)
   return {};
 }
 
+/// The foam law (docs/model.md §16): the largest δ up to which `value(i, δ)` (F, σ_c, σ_t or e
+/// with segment i's formula) stays <= target. Each is non-decreasing in δ, continuous inside a
+/// segment and jumping up at most at a switch (σ_c and σ_t where the stop concentrates the
+/// load), so the crossing is the segment's start or a bisection inside it.
+template <class Value>
+Crossing FoamCrossing(const ImpactModel& model, double target, Value value) {
+  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+    const ForceLawSegment& seg = model.segment(i);
+    if (value(i, seg.start_m) > target) return {seg.start_m, i};  // a jump up
+    double upper = seg.end_m;
+    if (i + 1 == model.segment_count()) {
+      // The last segment grows without bound: double its extent until it passes the target.
+      upper = seg.start_m + std::max(seg.start_m - seg.origin_m, 1e-6);
+      while (!(value(i, upper) > target)) {
+        if (upper > 10.0) return {};  // never reached within any physical penetration
+        upper = seg.start_m + 2.0 * (upper - seg.start_m);
+      }
+    } else if (!(value(i, upper) > target)) {
+      continue;
+    }
+    double lo = seg.start_m, hi = upper;
+    for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * hi; ++iteration) {
+      const double mid = 0.5 * (lo + hi);
+      (value(i, mid) > target ? hi : lo) = mid;
+    }
+    return {lo, i};
+  }
+  return {};
+}
+
+/// The crossings of the foam law's four criteria' quantities.
+Crossing FoamForceCrossing(const ImpactModel& model, double target_N) {
+  return FoamCrossing(model, target_N, [&](std::size_t i, double d) { return model.StateInSegment(i, d).force_N; });
+}
+Crossing FoamStressCrossing(const ImpactModel& model, double target_Pa) {
+  return FoamCrossing(model, target_Pa,
+                      [&](std::size_t i, double d) { return model.StateInSegment(i, d).compressive_stress_Pa; });
+}
+Crossing FoamTensileCrossing(const ImpactModel& model, double target_Pa) {
+  return FoamCrossing(model, target_Pa, [&](std::size_t i, double d) { return model.TensileStressInSegment(i, d); });
+}
+Crossing FoamEnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2) {
+  return FoamCrossing(model, target_J_per_m2,
+                      [&](std::size_t i, double d) { return model.StateInSegment(i, d).energy_density_J_per_m2; });
+}
+
 /// The smallest δ at which a criterion reaches its limit, which one, and U there [J].
 struct PenetrationLimit {
   double penetration_m = kInfinity;
@@ -152,14 +198,18 @@ PenetrationLimit FindPenetrationLimit(const ImpactModel& model, const SpeedLimit
       limit.energy_J = model.StateInSegment(crossing.segment, crossing.penetration_m).potential_energy_J;
     }
   };
-  if (tensile_factor > 0.0) {
+  const bool foam = model.is_foam();
+  if (foam) {
+    consider(FoamTensileCrossing(model, options.limits.laceration_tensile_stress_Pa / s), LimitingCriterion::kLaceration);
+  } else if (tensile_factor > 0.0) {
     consider(StressCrossing(model, options.limits.laceration_tensile_stress_Pa / (s * tensile_factor)),
              LimitingCriterion::kLaceration);
   }
-  consider(EnergyDensityCrossing(model, options.limits.contusion_energy_density_J_per_m2 / s),
+  const double contusion = options.limits.contusion_energy_density_J_per_m2 / s;
+  consider(foam ? FoamEnergyDensityCrossing(model, contusion) : EnergyDensityCrossing(model, contusion),
            LimitingCriterion::kContusion);
-  consider(ForceCrossing(model, FractureLimit(options.limits, model.scene().head.area) / s),
-           LimitingCriterion::kFracture);
+  const double fracture = FractureLimit(options.limits, model.scene().head.area) / s;
+  consider(foam ? FoamForceCrossing(model, fracture) : ForceCrossing(model, fracture), LimitingCriterion::kFracture);
   if (options.criterion() == DesignCriterion::kNoFullCompression && model.has_covering()) {
     // The covering's travel the safety factor leaves: s + (t2 − s)/SF (ImpactPeaks::
     // covering_compression_ratio), s the start of its travel; t2 itself at SF 1.
@@ -170,7 +220,8 @@ PenetrationLimit FindPenetrationLimit(const ImpactModel& model, const SpeedLimit
     consider({reserved, model.SegmentIndexAt(reserved)}, LimitingCriterion::kFullCompression);
   }
   if (options.covering_compressive_strength_Pa > 0.0 && !options.allow_crushing && model.has_covering()) {
-    consider(StressCrossing(model, options.covering_compressive_strength_Pa / s), LimitingCriterion::kCrush);
+    const double strength = options.covering_compressive_strength_Pa / s;
+    consider(foam ? FoamStressCrossing(model, strength) : StressCrossing(model, strength), LimitingCriterion::kCrush);
   }
   return limit;
 }
