@@ -371,3 +371,35 @@ TEST_CASE("foam head: a thicker layer of the same foam never lowers the force-li
     }
   }
 }
+
+TEST_CASE("foam head: the curve's V inverse and its drop without cancellation", "[foam_head][curve]") {
+  const CompressiveCurve curve = CompressiveCurve::FromPoints(Vn600Points());
+  for (double e : {1e-7, 0.001, 0.02, 0.0333, 0.1, 0.25, 0.4, 0.48999, 0.49}) {
+    CAPTURE(e);
+    const auto back = curve.StrainAtSecondIntegral(curve.SecondIntegralAt(e));
+    REQUIRE(back);
+    CHECK(*back == Approx(e).epsilon(1e-12));
+  }
+  CHECK_FALSE(curve.StrainAtSecondIntegral(curve.total_second_integral_J_per_m3() * 1.000001));
+  CHECK_FALSE(curve.StrainAtSecondIntegral(-1.0));
+  // The drop V(ε) − V(ε − γ) against long-double subtraction, down to gaps of 1e-14 of ε.
+  for (double e : {0.013, 0.2, 0.49}) {
+    for (double gap : {1e-14, 1e-9, 1e-4, 0.01, 0.1}) {
+      if (gap > e) continue;
+      // V on this piece, in long double, from the test's own σ: ∫∫ by the exact cubic.
+      const double lower = e - gap;
+      const long double exact =
+          static_cast<long double>(curve.EnergyDensityAt(lower)) * gap +
+          static_cast<long double>(StressOf(Vn600Points(), lower)) * gap * gap / 2 +
+          static_cast<long double>(curve.SlopeAt(e)) * gap * gap * gap / 6;
+      CAPTURE(e, gap);
+      if (lower >= (e == 0.013 ? 0.0 : e == 0.2 ? 0.15 : 0.45)) {  // the gap inside e's piece
+        CHECK(curve.SecondIntegralDrop(e, gap) == Approx(static_cast<double>(exact)).epsilon(1e-12));
+      }
+      CHECK(curve.SecondIntegralDrop(e, gap) ==
+            Approx(curve.SecondIntegralAt(e) - curve.SecondIntegralAt(lower)).epsilon(1e-6).margin(1e-12));
+    }
+  }
+  CHECK(curve.SlopeAt(0.22) == Approx((57.3e3 - 45.9e3) / 0.05));
+  CHECK(curve.SlopeAt(0.01) == Approx(14.3e3 / 0.02));
+}
