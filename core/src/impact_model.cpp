@@ -206,6 +206,22 @@ double HertzStiffness(double e1, double nu1, double e2, double nu2, double curva
 /// 1/R with 1/∞ = 0.
 double Inverse(double radius) { return std::isinf(radius) ? 0.0 : 1.0 / radius; }
 
+/// A power-law segment of §2 from `start` to +inf, its offsets zero (the caller sets them).
+ForceLawSegment HertzSegment(Phase phase, double start, double origin, double stiffness, double exponent,
+                             double curvature, double radius_a, double radius_b) {
+  ForceLawSegment seg;
+  seg.phase = phase;
+  seg.start_m = start;
+  seg.end_m = std::numeric_limits<double>::infinity();
+  seg.origin_m = origin;
+  seg.stiffness = stiffness;
+  seg.exponent = exponent;
+  seg.curvature_per_m = curvature;
+  seg.radius_a_m = radius_a;
+  seg.radius_b_m = radius_b;
+  return seg;
+}
+
 }  // namespace
 
 int PhaseNumber(Phase phase) noexcept {
@@ -264,47 +280,31 @@ void ImpactModel::BuildFoamLaw(double t1, double c1, double c3, double r_cover, 
   const double force_t1 = k1 * std::pow(t1, n1);  // the bare robot's F at full scalp compression
   const double stress_t1 = kHertzPressureFactor * k1 * c1_bare * std::pow(t1, n1 - 1.0);
   ForceLawSegment& next = segments_[1];
-  next.start_m = stop;
-  next.end_m = std::numeric_limits<double>::infinity();
+  if (at_stop.force_N < force_t1) {
+    // Robot on scalp from x_s = (F/K1)^(1/n1), then robot on bone at x_s + δ − δ_s = t1.
+    const double origin = stop - std::pow(at_stop.force_N / k1, 1.0 / n1);
+    next = HertzSegment(Phase::kRobotOnScalp, stop, origin, k1, n1, c1_bare, r_robot, r_scalp);
+    next.end_m = origin + t1;
+  } else {
+    // The layer carried more than the bare scalp takes: robot on bone at once, from
+    // x_s = t1 + ((F − F1)/K3)^(1/n3) of the bare chain.
+    const double origin = stop - std::pow((at_stop.force_N - force_t1) / k3, 1.0 / n3);
+    next = HertzSegment(Phase::kRobotOnBone, stop, origin, k3, n3, c3, r_robot, r_bone);
+    next.force_offset_N = force_t1;
+    next.stress_offset_Pa = stress_t1;
+  }
   next.energy_at_start_J = at_stop.potential_energy_J;
   next.energy_density_at_start_J_per_m2 = at_stop.energy_density_J_per_m2;
-  next.radius_a_m = r_robot;
   segment_count_ = 2;
-  if (at_stop.force_N < force_t1) {
-    next.phase = Phase::kRobotOnScalp;
-    next.origin_m = stop - std::pow(at_stop.force_N / k1, 1.0 / n1);
-    next.stiffness = k1;
-    next.exponent = n1;
-    next.curvature_per_m = c1_bare;
-    next.radius_b_m = r_scalp;
-    next.end_m = next.origin_m + t1;
-    ForceLawSegment& bone = segments_[2];
-    bone.phase = Phase::kRobotOnBone;
-    bone.start_m = bone.origin_m = next.end_m;
-    bone.end_m = std::numeric_limits<double>::infinity();
-    bone.stiffness = k3;
-    bone.exponent = n3;
-    bone.curvature_per_m = c3;
-    bone.radius_a_m = r_robot;
-    bone.radius_b_m = r_bone;
-    const ContactState at_bone = StateInSegment(1, bone.start_m);
-    bone.force_offset_N = at_bone.force_N;
-    bone.stress_offset_Pa = at_bone.compressive_stress_Pa;
-    bone.energy_at_start_J = at_bone.potential_energy_J;
-    bone.energy_density_at_start_J_per_m2 = at_bone.energy_density_J_per_m2;
-    segment_count_ = 3;
-    return;
-  }
-  // The layer carried more than the bare scalp takes: robot on bone at once, from
-  // x_s = t1 + ((F − F1)/K3)^(1/n3) of the bare chain.
-  next.phase = Phase::kRobotOnBone;
-  next.origin_m = stop - std::pow((at_stop.force_N - force_t1) / k3, 1.0 / n3);
-  next.stiffness = k3;
-  next.exponent = n3;
-  next.curvature_per_m = c3;
-  next.radius_b_m = r_bone;
-  next.force_offset_N = force_t1;
-  next.stress_offset_Pa = stress_t1;
+  if (next.phase == Phase::kRobotOnBone) return;
+  ForceLawSegment& bone = segments_[2];
+  bone = HertzSegment(Phase::kRobotOnBone, next.end_m, next.end_m, k3, n3, c3, r_robot, r_bone);
+  const ContactState at_bone = StateInSegment(1, bone.start_m);
+  bone.force_offset_N = at_bone.force_N;
+  bone.stress_offset_Pa = at_bone.compressive_stress_Pa;
+  bone.energy_at_start_J = at_bone.potential_energy_J;
+  bone.energy_density_at_start_J_per_m2 = at_bone.energy_density_J_per_m2;
+  segment_count_ = 3;
 }
 
 ImpactModel ImpactModel::FromScene(const Scene& scene) {
@@ -339,16 +339,7 @@ ImpactModel ImpactModel::FromScene(const Scene& scene) {
   std::size_t count = 0;
   auto add = [&](Phase phase, double start, double origin, double stiffness, double exponent,
                  double curvature, double radius_a, double radius_b) {
-    ForceLawSegment seg;
-    seg.phase = phase;
-    seg.start_m = start;
-    seg.end_m = std::numeric_limits<double>::infinity();
-    seg.origin_m = origin;
-    seg.stiffness = stiffness;
-    seg.exponent = exponent;
-    seg.curvature_per_m = curvature;
-    seg.radius_a_m = radius_a;
-    seg.radius_b_m = radius_b;
+    ForceLawSegment seg = HertzSegment(phase, start, origin, stiffness, exponent, curvature, radius_a, radius_b);
     if (count > 0) {
       model.segments_[count - 1].end_m = start;
       // Offsets: the previous law at this segment's origin (F, σ) and start (U, e).
