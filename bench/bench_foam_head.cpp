@@ -71,3 +71,16 @@ void BM_FoamHeadSpeedLimit(benchmark::State& state) {
 BENCHMARK(BM_FoamHeadSpeedLimit)->DenseRange(0, 2)->ArgNames({"scene"})->Unit(benchmark::kMicrosecond);
 
 }  // namespace
+
+namespace {
+
+/// The duration quadrature alone (peaks given).
+void BM_FoamHeadDuration(benchmark::State& state) {
+  const covopt::ImpactModel model = covopt::ImpactModel::FromScene(FoamHeadScene(static_cast<int>(state.range(0))));
+  const covopt::ImpactPeaks peaks = covopt::ExactPeaks(model);
+  for (auto _ : state) benchmark::DoNotOptimize(covopt::ExactContactDuration(model, peaks));
+  state.SetLabel(kLabels[state.range(0)]);
+}
+BENCHMARK(BM_FoamHeadDuration)->DenseRange(0, 2)->ArgNames({"scene"});
+
+}  // namespace

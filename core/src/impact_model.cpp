@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -479,8 +480,20 @@ ImpactModel::EnergyGapBelow::EnergyGapBelow(const ImpactModel& model, std::size_
                                             double upper_penetration_m) noexcept {
   const ForceLawSegment& seg = model.segments_[i];
   if (seg.curve) {
+    // U(δ_b) − U(δ_b − g) = A h [W γ − σ γ²/2 + σ' γ³/6], γ = g/h, within δ_b's curve piece.
     foam_ = &seg;
     upper_local_m_ = upper_penetration_m;
+    const CompressiveCurve& curve = *seg.curve;
+    const double h = seg.foam_thickness_m;
+    const double strain = std::clamp(upper_penetration_m / h, 0.0, curve.last_strain());
+    const auto points = curve.points();
+    const auto above = std::lower_bound(points.begin(), points.end(), strain,
+                                        [](const StrainStressPoint& p, double e) { return p.strain < e; });
+    const double piece_start = above == points.begin() ? 0.0 : std::prev(above)->strain;
+    piece_gap_m_ = (strain - piece_start) * h;
+    foam_w_ = seg.foam_area_m2 * h * curve.EnergyDensityAt(strain);
+    foam_stress_ = seg.foam_area_m2 * curve.StressAt(strain);
+    foam_slope_ = seg.foam_area_m2 * curve.SlopeAt(strain) / h;
     return;
   }
   force_offset_N_ = seg.force_offset_N;
@@ -496,6 +509,10 @@ double ImpactModel::EnergyGapBelow::operator()(double gap_m) const noexcept {
   const double x_b = upper_local_m_;
   if (!(x_b > 0.0) || !(gap_m > 0.0)) return 0.0;
   if (foam_) [[unlikely]] {
+    if (gap_m <= piece_gap_m_) {  // the cubic of δ_b's piece: W g/h − σ g²/(2h) + σ' g³/(6h) (scaled)
+      return gap_m / foam_->foam_thickness_m *
+             (foam_w_ - gap_m * (foam_stress_ / 2.0 - gap_m * foam_slope_ / 6.0));
+    }
     const double h = foam_->foam_thickness_m;
     return foam_->foam_area_m2 * h * foam_->curve->SecondIntegralDrop(x_b / h, gap_m / h);
   }

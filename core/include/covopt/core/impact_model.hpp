@@ -148,6 +148,9 @@ class ImpactModel {
     double inverse_upper_local_per_m_ = 0.0;  ///< 1/x_b [1/m] (0 when x_b <= 0: unused)
     double stiffness_over_power_ = 0.0;       ///< K/power
     const ForceLawSegment* foam_ = nullptr;   ///< a foam segment: U's drop from its curve
+    /// A foam segment: W, σ and dσ/dε at δ_b/h on its curve piece (whose start is
+    /// piece_gap_ below δ_b [m]), scaled by A h and h (U's drop is a cubic in the gap there).
+    double foam_w_ = 0.0, foam_stress_ = 0.0, foam_slope_ = 0.0, piece_gap_m_ = 0.0;
   };
 
   /// Tensile stress from compressive stress, σ_t = σ_c (1 - 2ν_t)/3 [Pa] (eq. 5): Park's
