@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -80,9 +81,9 @@ struct Crossing {
 
 /// The largest δ up to which the running maximum of σ_c over [0, δ] stays <= target [Pa]
 /// (ImpactPeaks' σ_c,max of a contact reaching δ).
-Crossing StressCrossing(const ImpactModel& model, double target_Pa) {
+Crossing StressCrossing(const ImpactModel& model, double target_Pa, std::size_t first = 0) {
   // σ_c,max over the segments passed is at their ends, each checked <= target on the way.
-  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+  for (std::size_t i = first; i < model.segment_count(); ++i) {
     const ForceLawSegment& seg = model.segment(i);
     const double at_start = model.StateInSegment(i, seg.start_m).compressive_stress_Pa;
     if (at_start > target_Pa) return {seg.start_m, i};  // a jump up at the switch
@@ -106,8 +107,8 @@ Crossing StressCrossing(const ImpactModel& model, double target_Pa) {
 
 /// The largest δ up to which the running maximum of F over [0, δ] stays <= target [N]
 /// (ImpactPeaks' F_max of a contact reaching δ; F = F_off + K x^n in each segment).
-Crossing ForceCrossing(const ImpactModel& model, double target_N) {
-  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+Crossing ForceCrossing(const ImpactModel& model, double target_N, std::size_t first = 0) {
+  for (std::size_t i = first; i < model.segment_count(); ++i) {
     const ForceLawSegment& seg = model.segment(i);
     if (model.StateInSegment(i, seg.start_m).force_N > target_N) return {seg.start_m, i};  // a jump up
     const bool last = i + 1 == model.segment_count();
@@ -119,8 +120,8 @@ Crossing ForceCrossing(const ImpactModel& model, double target_N) {
 }
 
 /// The largest δ up to which e(δ) <= target [J/m²] (e is continuous and increasing).
-Crossing EnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2) {
-  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+Crossing EnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2, std::size_t first = 0) {
+  for (std::size_t i = first; i < model.segment_count(); ++i) {
     const ForceLawSegment& seg = model.segment(i);
     const bool last = i + 1 == model.segment_count();
     if (!last && model.StateInSegment(i, seg.end_m).energy_density_J_per_m2 <= target_J_per_m2) continue;
@@ -134,50 +135,58 @@ Crossing EnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2)
   return {};
 }
 
-/// The foam law (docs/model.md §16): the largest δ up to which `value(i, δ)` (F, σ_c, σ_t or e
-/// with segment i's formula) stays <= target. Each is non-decreasing in δ, continuous inside a
-/// segment and jumping up at most at a switch (σ_c and σ_t where the stop concentrates the
-/// load), so the crossing is the segment's start or a bisection inside it.
-template <class Value>
-Crossing FoamCrossing(const ImpactModel& model, double target, Value value) {
-  for (std::size_t i = 0; i < model.segment_count(); ++i) {
-    const ForceLawSegment& seg = model.segment(i);
-    if (value(i, seg.start_m) > target) return {seg.start_m, i};  // a jump up
-    double upper = seg.end_m;
-    if (i + 1 == model.segment_count()) {
-      // The last segment grows without bound: double its extent until it passes the target.
-      upper = seg.start_m + std::max(seg.start_m - seg.origin_m, 1e-6);
-      while (!(value(i, upper) > target)) {
-        if (upper > 10.0) return {};  // never reached within any physical penetration
-        upper = seg.start_m + 2.0 * (upper - seg.start_m);
-      }
-    } else if (!(value(i, upper) > target)) {
-      continue;
-    }
-    double lo = seg.start_m, hi = upper;
-    for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * hi; ++iteration) {
-      const double mid = 0.5 * (lo + hi);
-      (value(i, mid) > target ? hi : lo) = mid;
-    }
-    return {lo, i};
+/// The foam law (docs/model.md §16): the crossing of a quantity that grows on the layer (segment
+/// 0) as `on_layer(δ)`: inside the layer where it passes the target there, by `strain_at` (the
+/// curve's closed-form inverse, empty where there is none: then bisection); else on the bare
+/// chain past the stop, by `past_stop` from segment 1 (§2's power laws, their jumps up at the
+/// stop included).
+template <class OnLayer, class StrainAt, class PastStop>
+Crossing FoamCrossing(const ImpactModel& model, double target, OnLayer on_layer, StrainAt strain_at,
+                      PastStop past_stop) {
+  const ForceLawSegment& layer = model.segment(0);
+  if (!(on_layer(layer.end_m) > target)) return past_stop(1);
+  if (const std::optional<double> strain = strain_at(target)) {
+    return {std::clamp(*strain * layer.foam_thickness_m, 0.0, layer.end_m), 0};
   }
-  return {};
+  double lo = 0.0, hi = layer.end_m;
+  for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * hi; ++iteration) {
+    const double mid = 0.5 * (lo + hi);
+    (on_layer(mid) > target ? hi : lo) = mid;
+  }
+  return {lo, 0};
 }
 
-/// The crossings of the foam law's four criteria' quantities.
+/// The foam law's crossings of F, σ_c, σ_t and e (FoamCrossing): the layer's F = A W(δ/h),
+/// σ_c = σ(δ/h) and e = h W(δ/h) invert on the curve; σ_t = (1 − 2ν_t) W(ε)/(2ε) by bisection.
 Crossing FoamForceCrossing(const ImpactModel& model, double target_N) {
-  return FoamCrossing(model, target_N, [&](std::size_t i, double d) { return model.StateInSegment(i, d).force_N; });
+  const ForceLawSegment& layer = model.segment(0);
+  return FoamCrossing(
+      model, target_N, [&](double d) { return model.StateInSegment(0, d).force_N; },
+      [&](double f) { return layer.curve->StrainAtEnergyDensity(f / layer.foam_area_m2); },
+      [&](std::size_t first) { return ForceCrossing(model, target_N, first); });
 }
 Crossing FoamStressCrossing(const ImpactModel& model, double target_Pa) {
-  return FoamCrossing(model, target_Pa,
-                      [&](std::size_t i, double d) { return model.StateInSegment(i, d).compressive_stress_Pa; });
+  const ForceLawSegment& layer = model.segment(0);
+  return FoamCrossing(
+      model, target_Pa, [&](double d) { return model.StateInSegment(0, d).compressive_stress_Pa; },
+      [&](double s) { return layer.curve->StrainAtStress(s); },
+      [&](std::size_t first) { return StressCrossing(model, target_Pa, first); });
 }
 Crossing FoamTensileCrossing(const ImpactModel& model, double target_Pa) {
-  return FoamCrossing(model, target_Pa, [&](std::size_t i, double d) { return model.TensileStressInSegment(i, d); });
+  const double tensile_factor = model.TensileFromCompressive(1.0);  // (1 - 2ν_t)/3 past the stop
+  return FoamCrossing(
+      model, target_Pa, [&](double d) { return model.TensileStressInSegment(0, d); },
+      [](double) { return std::optional<double>(); },
+      [&](std::size_t first) {
+        return tensile_factor > 0.0 ? StressCrossing(model, target_Pa / tensile_factor, first) : Crossing{};
+      });
 }
 Crossing FoamEnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2) {
-  return FoamCrossing(model, target_J_per_m2,
-                      [&](std::size_t i, double d) { return model.StateInSegment(i, d).energy_density_J_per_m2; });
+  const ForceLawSegment& layer = model.segment(0);
+  return FoamCrossing(
+      model, target_J_per_m2, [&](double d) { return model.StateInSegment(0, d).energy_density_J_per_m2; },
+      [&](double e) { return layer.curve->StrainAtEnergyDensity(e / layer.foam_thickness_m); },
+      [&](std::size_t first) { return EnergyDensityCrossing(model, target_J_per_m2, first); });
 }
 
 /// The smallest δ at which a criterion reaches its limit, which one, and U there [J].
