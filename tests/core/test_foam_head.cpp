@@ -240,7 +240,7 @@ TEST_CASE("foam head: the exact duration converges onto a brute-force quadrature
       sum += 2.0 * dmax * u / std::sqrt(2.0 * gap / m);
     }
     CAPTURE(v);
-    CHECK(*exact.contact_duration_s == Approx(2.0 * sum / kCells).epsilon(1e-6));
+    CHECK(*exact.contact_duration_s == Approx(2.0 * sum / kCells).epsilon(1e-8));
   }
 }
 
