@@ -106,8 +106,9 @@ int Jacobian(sunrealtype /*t*/, N_Vector y, N_Vector /*fy*/, SUNMatrix jac, void
                                                    : static_cast<std::size_t>(run.segment);
     const ForceLawSegment& seg = run.model->segment(i);
     const double x = std::max(delta - seg.origin_m, 1e-9 * std::max(seg.start_m, 1e-6));
-    stress_slope = seg.curve ? seg.curve->SlopeAt(delta / seg.foam_thickness_m) / seg.foam_thickness_m : 3.0 / (2.0 * std::numbers::pi) * seg.stiffness * seg.curvature_per_m *
-                   (seg.exponent - 1.0) * std::pow(x, seg.exponent - 2.0);
+    stress_slope = seg.curve ? seg.curve->SlopeAt(delta / seg.foam_thickness_m) / seg.foam_thickness_m
+                             : 3.0 / (2.0 * std::numbers::pi) * seg.stiffness * seg.curvature_per_m *
+                                   (seg.exponent - 1.0) * std::pow(x, seg.exponent - 2.0);
   }
   SM_ELEMENT_D(jac, 0, 0) = 0.0;
   SM_ELEMENT_D(jac, 0, 1) = 1.0;
@@ -332,13 +333,15 @@ class ConservativeRun final : public internal::TimePathRun {
   void SetScales() {
     const ForceLawSegment& first = model_.segment(0);
     const double p1 = first.exponent + 1.0;
-    double length_scale = std::pow(p1 * model_.impact_energy_J() / first.stiffness, 1.0 / p1);
-    double energy_density_scale = 3.0 / (2.0 * std::numbers::pi) * first.stiffness * first.curvature_per_m *
-                                  std::pow(length_scale, first.exponent) / first.exponent;
+    double length_scale = 0.0, energy_density_scale = 0.0;
     if (first.curve) {
       // The foam law: δ where the layer alone stores the energy (at most its stop), and e there.
       length_scale = internal::SolveEnergyBalance(first, model_.impact_energy_J());
       energy_density_scale = model_.StateInSegment(0, length_scale).energy_density_J_per_m2;
+    } else {
+      length_scale = std::pow(p1 * model_.impact_energy_J() / first.stiffness, 1.0 / p1);
+      energy_density_scale = 3.0 / (2.0 * std::numbers::pi) * first.stiffness * first.curvature_per_m *
+                             std::pow(length_scale, first.exponent) / first.exponent;
     }
     const double time_scale = length_scale / v0_;
     const double atol =
