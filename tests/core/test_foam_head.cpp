@@ -5,6 +5,7 @@
 // the bare robot.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -402,4 +403,34 @@ TEST_CASE("foam head: the curve's V inverse and its drop without cancellation", 
   }
   CHECK(curve.SlopeAt(0.22) == Approx((57.3e3 - 45.9e3) / 0.05));
   CHECK(curve.SlopeAt(0.01) == Approx(14.3e3 / 0.02));
+}
+
+TEST_CASE("foam head: the warnings say near the curve's end, and used up with the energy past the stop", "[foam_head]") {
+  auto codes = [](const covopt::ImpactResult& r) {
+    std::vector<covopt::ValidityCode> out;
+    for (const covopt::ValidityWarning& w : r.warnings) out.push_back(w.code);
+    return out;
+  };
+  auto has = [](const std::vector<covopt::ValidityCode>& v, covopt::ValidityCode c) {
+    return std::find(v.begin(), v.end(), c) != v.end();
+  };
+  Scene scene = FoamScene(0.02, 1.0);
+  const ImpactModel probe = ImpactModel::FromScene(scene);
+  // The speed that takes the layer to strain 0.48 (within 5 % of its last 0.49), and 0.40.
+  for (double strain : {0.40, 0.48}) {
+    const double energy = probe.StateAt(strain * 0.02).potential_energy_J;
+    scene.robot.speed_m_per_s = std::sqrt(2.0 * energy / EffectiveMass(scene));
+    const covopt::ImpactResult r = covopt::SolveExact(ImpactModel::FromScene(scene));
+    CAPTURE(strain);
+    CHECK(r.peaks.covering_strain_at_peak == Approx(strain).epsilon(1e-9));
+    CHECK(has(codes(r), covopt::ValidityCode::kNearFullCompression) == (strain > 0.95 * 0.49));
+    CHECK_FALSE(has(codes(r), covopt::ValidityCode::kFullyCompressed));
+    CHECK(r.validity.within);
+  }
+  scene.robot.speed_m_per_s = 1.0;
+  const covopt::ImpactResult used_up = covopt::SolveExact(ImpactModel::FromScene(scene));
+  CHECK(has(codes(used_up), covopt::ValidityCode::kFullyCompressed));
+  CHECK_FALSE(has(codes(used_up), covopt::ValidityCode::kNearFullCompression));
+  CHECK_FALSE(has(codes(used_up), covopt::ValidityCode::kCoveringStifferThanScalp));
+  CHECK(used_up.validity.note.find(" J of the ") != std::string::npos);
 }
