@@ -119,6 +119,43 @@ std::optional<double> CompressiveCurve::StrainAtEnergyDensity(double energy_dens
   return e0 + PieceRoot(energy_[k] - w, s0, slope, length);
 }
 
+std::optional<double> CompressiveCurve::StrainAtSecondIntegral(double second_integral_J_per_m3) const noexcept {
+  const double v = second_integral_J_per_m3;
+  if (!(v >= 0.0) || v > second_.back()) return std::nullopt;
+  if (v == 0.0) return 0.0;
+  const auto it = std::lower_bound(second_.begin() + 1, second_.end(), v);
+  const auto k = static_cast<std::size_t>(it - second_.begin()) - 1;
+  const double e0 = StrainOf(k), length = StrainOf(k + 1) - e0;
+  const double s0 = StressOf(k), slope = (StressOf(k + 1) - s0) / length;
+  // g(x) = V_k + W_k x + s0 x²/2 + slope x³/6 - v on [0, length]: increasing and convex, so
+  // Newton from the piece's end (g >= 0 there) descends monotonically onto the root.
+  double x = length;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double g = second_[k] - v + x * (energy_[k] + x * (s0 / 2.0 + x * slope / 6.0));
+    const double dg = energy_[k] + x * (s0 + x * slope / 2.0);
+    if (!(dg > 0.0)) break;
+    const double next = std::max(x - g / dg, 0.0);
+    if (!(next < x)) break;  // the monotone sequence stopped decreasing: converged
+    x = next;
+  }
+  return e0 + x;
+}
+
+double CompressiveCurve::SecondIntegralDrop(double strain, double gap) const noexcept {
+  const double e = std::clamp(strain, 0.0, last_strain());
+  const double g = std::clamp(gap, 0.0, e);
+  const std::size_t k = PieceOf(e);
+  const double e0 = StrainOf(k);
+  if (e - g < e0) return SecondIntegralAt(e) - SecondIntegralAt(e - g);  // across points: no cancellation to fear
+  const double slope = (StressOf(k + 1) - StressOf(k)) / (StrainOf(k + 1) - e0);
+  return g * (EnergyDensityAt(e) - g * (StressAt(e) / 2.0 - g * slope / 6.0));
+}
+
+double CompressiveCurve::SlopeAt(double strain) const noexcept {
+  const std::size_t k = PieceOf(std::clamp(strain, 0.0, last_strain()));
+  return (StressOf(k + 1) - StressOf(k)) / (StrainOf(k + 1) - StrainOf(k));
+}
+
 std::optional<double> CompressiveCurve::StrainAtStress(double stress_Pa) const noexcept {
   if (!(stress_Pa >= 0.0) || stress_Pa > last_stress_Pa()) return std::nullopt;
   if (stress_Pa == 0.0) return 0.0;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <optional>
 
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/impact_result.hpp"
@@ -142,6 +143,14 @@ inline double SolveEnergyBalanceFromStart(const ForceLawSegment& seg,
 /// next segment's U(start) as rounded: this segment's inverse can land a few ulps past
 /// its end, where a literal law's jumped force would put U(δ) off by F times those ulps.
 inline double SolveEnergyBalance(const ForceLawSegment& seg, double energy_gap_J) noexcept {
+  if (seg.curve) [[unlikely]] {
+    // The foam law (docs/model.md §16), always the first segment: U = A h V(δ/h), V cubic on
+    // each piece of the curve, one root (CompressiveCurve::StrainAtSecondIntegral).
+    const double h = seg.foam_thickness_m;
+    const std::optional<double> strain =
+        seg.curve->StrainAtSecondIntegral(energy_gap_J / (seg.foam_area_m2 * h));
+    return strain ? std::min(*strain * h, seg.end_m) : seg.end_m;
+  }
   const double delta = seg.start_m > seg.origin_m
                            ? seg.start_m + SolveEnergyBalancePastStart(seg, energy_gap_J)
                            : seg.origin_m + SolveEnergyBalanceFromStart(seg, energy_gap_J);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -112,6 +113,31 @@ void internal::CheckRobotReaction(double reaction_delay_s, double braking_m_per_
 
 namespace {
 
+/// The covering's law (docs/model.md §16): a known value; kFoam needs a curve; the foam law
+/// has no damped, braking, neck or literal-threshold variant (those are Park's chain's).
+void CheckCoveringLaw(const Scene& s) {
+  const CoveringLaw law = s.covering.law;
+  if (law != CoveringLaw::kAuto && law != CoveringLaw::kFoam && law != CoveringLaw::kHertz) {
+    throw std::invalid_argument("covering.law must be auto, foam or hertz (got " +
+                                std::to_string(static_cast<int>(law)) + ")");
+  }
+  if (law == CoveringLaw::kFoam && !s.covering.compressive_curve) {
+    throw std::invalid_argument(
+        "covering.law is foam but the covering has no compressive_curve: the foam law needs the "
+        "material's measured curve (give one, or covering.law auto or hertz)");
+  }
+  if (!(s.covering.thickness_m > 0.0) || law == CoveringLaw::kHertz || !s.covering.compressive_curve) return;
+  auto refuse = [](const std::string& field, const std::string& value) {
+    throw std::invalid_argument(field + " (" + value +
+                                ") is not modelled with the foam law of a covering with a measured curve "
+                                "(docs/model.md §16): give covering.law hertz, or leave " + field + " at its default");
+  };
+  if (s.model.damping_s_per_m != 0.0) refuse("model.damping", FormatNumber(s.model.damping_s_per_m) + " s/m");
+  if (s.robot.braking_m_per_s2 != 0.0) refuse("robot.braking", FormatNumber(s.robot.braking_m_per_s2) + " m/s2");
+  if (s.head.torso_mass_kg != 0.0) refuse("head.torso_mass", FormatNumber(s.head.torso_mass_kg) + " kg");
+  if (s.model.thresholds != ThresholdReading::kCumulative) refuse("model.thresholds", "literal");
+}
+
 void CheckScene(const Scene& s) {
   CheckInRange("robot.mass", s.robot.mass_kg, kMinMass_kg, 1e6, "kg", "fixed (infinite)");
   // Below ~1e-150 m/s the energy ½mv² underflows and the contact duration is NaN; 1 µm/s
@@ -129,6 +155,7 @@ void CheckScene(const Scene& s) {
     CheckModulus("covering.modulus", s.covering.youngs_modulus_Pa);
     CheckPoisson("covering.poisson", s.covering.poisson_ratio);
   }
+  CheckCoveringLaw(s);
 
   CheckInRange("head.mass", s.head.mass_kg, kMinMass_kg, 1e6, "kg", "fixed (infinite)");
   CheckInRange("head.radius", s.head.radius_m, kMinRadius_m, 10.0, "m");
@@ -180,6 +207,22 @@ double HertzStiffness(double e1, double nu1, double e2, double nu2, double curva
 /// 1/R with 1/∞ = 0.
 double Inverse(double radius) { return std::isinf(radius) ? 0.0 : 1.0 / radius; }
 
+/// A power-law segment of §2 from `start` to +inf, its offsets zero (the caller sets them).
+ForceLawSegment HertzSegment(Phase phase, double start, double origin, double stiffness, double exponent,
+                             double curvature, double radius_a, double radius_b) {
+  ForceLawSegment seg;
+  seg.phase = phase;
+  seg.start_m = start;
+  seg.end_m = std::numeric_limits<double>::infinity();
+  seg.origin_m = origin;
+  seg.stiffness = stiffness;
+  seg.exponent = exponent;
+  seg.curvature_per_m = curvature;
+  seg.radius_a_m = radius_a;
+  seg.radius_b_m = radius_b;
+  return seg;
+}
+
 }  // namespace
 
 int PhaseNumber(Phase phase) noexcept {
@@ -200,6 +243,69 @@ std::string_view ToString(Phase phase) noexcept {
     case Phase::kRobotOnBone: return "robot on bone";
   }
   return "unknown";
+}
+
+void ImpactModel::BuildFoamLaw(double t1, double c1, double c3, double r_cover, double r_bone) {
+  // The layer takes the whole compression up to its curve's end (the scalp beside it is rigid
+  // under its spread pressure), then is a rigid stop (docs/model.md §16).
+  const Scene& s = scene_;
+  covering_law_ = CoveringLaw::kFoam;
+  const CompressiveCurve& curve = *s.covering.compressive_curve;
+  const double h = s.covering.thickness_m;
+  const double r_robot = s.robot.radius_m, r_scalp = s.head.radius_m;
+  ForceLawSegment& foam = segments_[0];
+  foam.phase = Phase::kCoveringOnScalp;
+  foam.end_m = curve.last_strain() * h;
+  foam.exponent = 2.0;  // F grows as δ² from contact; unused by the foam law's formulas
+  foam.curvature_per_m = c1;  // 1/R, R = 1/(1/R_c + 1/R_s) the relative radius
+  foam.radius_a_m = r_cover;
+  foam.radius_b_m = r_scalp;
+  foam.curve = &curve;
+  foam.foam_thickness_m = h;
+  foam.foam_area_m2 = 2.0 * std::numbers::pi / c1 * h;
+  segment_count_ = 1;
+
+  // Past the stop δ_s the robot presses the head as the bare robot does (robot on scalp, K1 up
+  // to t1, then robot on bone, K3), its chain continued from the penetration x_s at which it
+  // carries the layer's force F(δ_s): F(δ) = F_bare(x_s + δ − δ_s), U(δ) = U(δ_s) +
+  // U_bare(x_s + δ − δ_s) − U_bare(x_s), σ_c and e likewise. The segments' origins lie x_s
+  // before the stop (as the literal reading's do), so the force is continuous there.
+  const double stop = foam.end_m;
+  const ContactState at_stop = StateInSegment(0, stop);
+  const double c1_bare = Inverse(r_robot) + 1.0 / r_scalp;
+  const double k1 = HertzStiffness(s.robot.youngs_modulus_Pa, s.robot.poisson_ratio, s.scalp.youngs_modulus_Pa,
+                                   s.scalp.poisson_ratio, c1_bare);
+  const double k3 = HertzStiffness(s.robot.youngs_modulus_Pa, s.robot.poisson_ratio, s.skull.youngs_modulus_Pa,
+                                   s.skull.poisson_ratio, c3);
+  const double n1 = s.model.exponent_covering_scalp, n3 = s.model.exponent_robot_bone;
+  const double force_t1 = k1 * std::pow(t1, n1);  // the bare robot's F at full scalp compression
+  const double stress_t1 = kHertzPressureFactor * k1 * c1_bare * std::pow(t1, n1 - 1.0);
+  ForceLawSegment& next = segments_[1];
+  if (at_stop.force_N < force_t1) {
+    // Robot on scalp from x_s = (F/K1)^(1/n1), then robot on bone at x_s + δ − δ_s = t1.
+    const double origin = stop - std::pow(at_stop.force_N / k1, 1.0 / n1);
+    next = HertzSegment(Phase::kRobotOnScalp, stop, origin, k1, n1, c1_bare, r_robot, r_scalp);
+    next.end_m = origin + t1;
+  } else {
+    // The layer carried more than the bare scalp takes: robot on bone at once, from
+    // x_s = t1 + ((F − F1)/K3)^(1/n3) of the bare chain.
+    const double origin = stop - std::pow((at_stop.force_N - force_t1) / k3, 1.0 / n3);
+    next = HertzSegment(Phase::kRobotOnBone, stop, origin, k3, n3, c3, r_robot, r_bone);
+    next.force_offset_N = force_t1;
+    next.stress_offset_Pa = stress_t1;
+  }
+  next.energy_at_start_J = at_stop.potential_energy_J;
+  next.energy_density_at_start_J_per_m2 = at_stop.energy_density_J_per_m2;
+  segment_count_ = 2;
+  if (next.phase == Phase::kRobotOnBone) return;
+  ForceLawSegment& bone = segments_[2];
+  bone = HertzSegment(Phase::kRobotOnBone, next.end_m, next.end_m, k3, n3, c3, r_robot, r_bone);
+  const ContactState at_bone = StateInSegment(1, bone.start_m);
+  bone.force_offset_N = at_bone.force_N;
+  bone.stress_offset_Pa = at_bone.compressive_stress_Pa;
+  bone.energy_at_start_J = at_bone.potential_energy_J;
+  bone.energy_density_at_start_J_per_m2 = at_bone.energy_density_J_per_m2;
+  segment_count_ = 3;
 }
 
 ImpactModel ImpactModel::FromScene(const Scene& scene) {
@@ -234,16 +340,7 @@ ImpactModel ImpactModel::FromScene(const Scene& scene) {
   std::size_t count = 0;
   auto add = [&](Phase phase, double start, double origin, double stiffness, double exponent,
                  double curvature, double radius_a, double radius_b) {
-    ForceLawSegment seg;
-    seg.phase = phase;
-    seg.start_m = start;
-    seg.end_m = std::numeric_limits<double>::infinity();
-    seg.origin_m = origin;
-    seg.stiffness = stiffness;
-    seg.exponent = exponent;
-    seg.curvature_per_m = curvature;
-    seg.radius_a_m = radius_a;
-    seg.radius_b_m = radius_b;
+    ForceLawSegment seg = HertzSegment(phase, start, origin, stiffness, exponent, curvature, radius_a, radius_b);
     if (count > 0) {
       model.segments_[count - 1].end_m = start;
       // Offsets: the previous law at this segment's origin (F, σ) and start (U, e).
@@ -259,6 +356,11 @@ ImpactModel ImpactModel::FromScene(const Scene& scene) {
     model.segments_[count++] = seg;
     model.segment_count_ = count;
   };
+
+  if (covered && s.covering.compressive_curve && s.covering.law != CoveringLaw::kHertz) {
+    model.BuildFoamLaw(t1, c1, c3, r_cover, r_bone);
+    return model;
+  }
 
   add(covered ? Phase::kCoveringOnScalp : Phase::kRobotOnScalp, 0.0, 0.0,
       HertzStiffness(e_outer, nu_outer, s.scalp.youngs_modulus_Pa, s.scalp.poisson_ratio, c1),
@@ -296,8 +398,41 @@ std::size_t ImpactModel::SegmentIndexAt(double penetration_m) const noexcept {
   return i;
 }
 
+namespace {
+
+/// The foam law of segment `seg` at δ (docs/model.md §16), δ clamped to [0, the stop].
+ContactState FoamState(const ForceLawSegment& seg, double penetration_m) noexcept {
+  const CompressiveCurve& curve = *seg.curve;
+  const double h = seg.foam_thickness_m;
+  const double strain = std::clamp(penetration_m, 0.0, seg.end_m) / h;
+  const double w = curve.EnergyDensityAt(strain);
+  const double stress = curve.StressAt(strain);
+  ContactState state;
+  state.phase = seg.phase;
+  state.force_N = seg.foam_area_m2 * w;
+  state.potential_energy_J = seg.foam_area_m2 * h * curve.SecondIntegralAt(strain);
+  state.compressive_stress_Pa = stress;
+  state.energy_density_J_per_m2 = h * w;
+  state.stiffness_N_per_m = seg.foam_area_m2 * stress / h;
+  return state;
+}
+
+}  // namespace
+
+double ImpactModel::TensileStressInSegment(std::size_t i, double penetration_m) const noexcept {
+  const ForceLawSegment& seg = segments_[i];
+  if (!seg.curve) return TensileFromCompressive(StateInSegment(i, penetration_m).compressive_stress_Pa);
+  {
+    // (1 − 2ν_t) F/(2π a²) with F = 2π R h W(ε), a² = 2 R δ: (1 − 2ν_t) W(ε)/(2ε) → 0 at contact.
+    const double strain = std::clamp(penetration_m, 0.0, seg.end_m) / seg.foam_thickness_m;
+    if (!(strain > 0.0)) return 0.0;
+    return 1.5 * tensile_factor_ * seg.curve->EnergyDensityAt(strain) / strain;
+  }
+}
+
 ContactState ImpactModel::StateInSegment(std::size_t i, double penetration_m) const noexcept {
   const ForceLawSegment& seg = segments_[i];
+  if (seg.curve) [[unlikely]] return FoamState(seg, penetration_m);
   const double n = seg.exponent;
   const double x = std::max(penetration_m - seg.origin_m, 0.0);
   const double x0 = seg.start_m - seg.origin_m;  // > 0 only in the literal ill-ordered case
@@ -344,6 +479,23 @@ double ImpactModel::EnergyDifferenceInSegment(std::size_t i, double upper_penetr
 ImpactModel::EnergyGapBelow::EnergyGapBelow(const ImpactModel& model, std::size_t i,
                                             double upper_penetration_m) noexcept {
   const ForceLawSegment& seg = model.segments_[i];
+  if (seg.curve) {
+    // U(δ_b) − U(δ_b − g) = A h [W γ − σ γ²/2 + σ' γ³/6], γ = g/h, within δ_b's curve piece.
+    foam_ = &seg;
+    upper_local_m_ = upper_penetration_m;
+    const CompressiveCurve& curve = *seg.curve;
+    const double h = seg.foam_thickness_m;
+    const double strain = std::clamp(upper_penetration_m / h, 0.0, curve.last_strain());
+    const auto points = curve.points();
+    const auto above = std::lower_bound(points.begin(), points.end(), strain,
+                                        [](const StrainStressPoint& p, double e) { return p.strain < e; });
+    const double piece_start = above == points.begin() ? 0.0 : std::prev(above)->strain;
+    piece_gap_m_ = (strain - piece_start) * h;
+    foam_w_ = seg.foam_area_m2 * h * curve.EnergyDensityAt(strain);
+    foam_stress_ = seg.foam_area_m2 * curve.StressAt(strain);
+    foam_slope_ = seg.foam_area_m2 * curve.SlopeAt(strain) / h;
+    return;
+  }
   force_offset_N_ = seg.force_offset_N;
   stiffness_ = seg.stiffness;
   power_ = seg.exponent + 1.0;
@@ -356,6 +508,14 @@ ImpactModel::EnergyGapBelow::EnergyGapBelow(const ImpactModel& model, std::size_
 double ImpactModel::EnergyGapBelow::operator()(double gap_m) const noexcept {
   const double x_b = upper_local_m_;
   if (!(x_b > 0.0) || !(gap_m > 0.0)) return 0.0;
+  if (foam_) [[unlikely]] {
+    if (gap_m <= piece_gap_m_) {  // the cubic of δ_b's piece: W g/h − σ g²/(2h) + σ' g³/(6h) (scaled)
+      return gap_m / foam_->foam_thickness_m *
+             (foam_w_ - gap_m * (foam_stress_ / 2.0 - gap_m * foam_slope_ / 6.0));
+    }
+    const double h = foam_->foam_thickness_m;
+    return foam_->foam_area_m2 * h * foam_->curve->SecondIntegralDrop(x_b / h, gap_m / h);
+  }
   // x_b^p - x_a^p = -x_b^p expm1(p log1p(-d/x_b)), exact in relative terms for small d.
   const double ratio = gap_m * inverse_upper_local_per_m_;
   const double power_difference =

@@ -41,10 +41,10 @@ std::string Modulus(double pascals) {
 std::string Percent(double fraction) { return Scaled(fraction, 0.01, "%"); }
 
 /// "peak force 10.7 kN, compressive stress 154 MPa (tensile 8.2 MPa), energy density 13.4 J/cm²".
-std::string PeakSummary(const ImpactModel& model, const ImpactPeaks& peaks) {
+std::string PeakSummary(const ImpactPeaks& peaks) {
   return "peak force " + Force(peaks.peak_force_N) + ", compressive stress " +
          Stress(peaks.max_compressive_stress_Pa) + " (tensile " +
-         Stress(model.TensileFromCompressive(peaks.max_compressive_stress_Pa)) +
+         Stress(peaks.max_tensile_stress_Pa) +
          "), energy density " + Scaled(peaks.max_energy_density_J_per_m2, 1e4, "J/cm²");
 }
 
@@ -143,6 +143,15 @@ ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
   peaks.peak_force_N = force;
   peaks.max_compressive_stress_Pa = stress;
   peaks.max_tensile_stress_Pa = model.TensileFromCompressive(stress);
+  if (model.is_foam()) {
+    // The foam's σ_t is not proportional to its σ_c: the largest of its own at δ_max and at the
+    // stop (where the load concentrates onto the bare robot's Hertz contact).
+    peaks.max_tensile_stress_Pa = model.TensileStressInSegment(segment, max_penetration_m);
+    if (segment > 0) {
+      peaks.max_tensile_stress_Pa =
+          std::max(peaks.max_tensile_stress_Pa, model.TensileStressInSegment(0, model.segment(0).end_m));
+    }
+  }
   peaks.max_energy_density_J_per_m2 = state.energy_density_J_per_m2;
   peaks.phase_at_max = model.segment(segment).phase;
   peaks.scalp_fully_compressed = segment > 0;
@@ -151,6 +160,21 @@ ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
   peaks.covering_travel_start_m = model.has_covering() ? 0.0 : peaks.full_compression_penetration_m;
   for (std::size_t j = 0; j < model.segment_count(); ++j) {
     if (model.segment(j).phase == Phase::kCoveringOnBone) peaks.covering_travel_start_m = model.segment(j).start_m;
+  }
+  peaks.covering_law = model.covering_law();
+  if (model.is_foam()) {
+    // The layer's travel is its curve: from contact to the stop (docs/model.md §16).
+    const double stop = model.foam_stop_penetration_m();
+    peaks.scalp_fully_compressed = peaks.phase_at_max == Phase::kRobotOnBone;
+    peaks.fully_compressed = segment > 0;
+    peaks.full_compression_penetration_m = stop;
+    peaks.covering_travel_start_m = 0.0;
+    peaks.covering_strain_at_peak = std::min(max_penetration_m, stop) / model.scene().covering.thickness_m;
+    if (segment > 0) peaks.energy_past_stop_J = state.potential_energy_J - model.segment(1).energy_at_start_J;
+  } else if (model.has_covering()) {
+    const double start = peaks.covering_travel_start_m, full = peaks.full_compression_penetration_m;
+    peaks.covering_strain_at_peak =
+        std::max(std::min(max_penetration_m, full) - start, 0.0) / model.scene().covering.thickness_m;
   }
   return peaks;
 }
@@ -189,9 +213,10 @@ void WarnHertzValidity(const ImpactModel& model, const ImpactPeaks& peaks, Warni
   for (std::size_t i = 0; i < model.segment_count(); ++i) {
     const ForceLawSegment& seg = model.segment(i);
     if (!(delta_max > seg.start_m)) break;
-    // Phase-local penetration reached in this contact, and its Hertz contact radius.
+    // Phase-local penetration reached in this contact, and its Hertz contact radius (the foam
+    // law's a² = 2 R δ, R = 1/c the relative radius: docs/model.md §16).
     const double x = std::min(delta_max, seg.end_m) - seg.origin_m;
-    const double contact_radius = std::sqrt(x / seg.curvature_per_m);
+    const double contact_radius = std::sqrt((seg.curve ? 2.0 : 1.0) * x / seg.curvature_per_m);
     const double smallest_radius = std::min(seg.radius_a_m, seg.radius_b_m);
     if (contact_radius >= smallest_radius) {
       warnings.push_back(
@@ -210,6 +235,7 @@ void WarnHertzValidity(const ImpactModel& model, const ImpactPeaks& peaks, Warni
 void WarnStifferCovering(const ImpactModel& model, const ImpactPeaks& peaks, const Scene& comparison_scene,
                          const std::string& comparison_note, Warnings& warnings) {
   const Scene& scene = model.scene();
+  if (model.is_foam()) return;  // the foam law adds no Hertz pressures: its σ_c is the curve's
   if (!(model.has_covering() && scene.covering.youngs_modulus_Pa > scene.scalp.youngs_modulus_Pa)) return;
   // The same outer geometry without a covering: a bare robot of radius R_r + b_c.
   Scene bare_scene = comparison_scene;
@@ -230,16 +256,35 @@ void WarnStifferCovering(const ImpactModel& model, const ImpactPeaks& peaks, con
       {ValidityCode::kCoveringStifferThanScalp,
        "covering stiffer than the scalp (E_c " + Modulus(scene.covering.youngs_modulus_Pa) + " > E_s " +
            Modulus(scene.scalp.youngs_modulus_Pa) + ") and worse than no covering: " +
-           PeakSummary(model, peaks) + ", while " + radius +
-           ", the same outer shape without the covering, gives " + PeakSummary(model, *bare) +
+           PeakSummary(peaks) + ", while " + radius +
+           ", the same outer shape without the covering, gives " + PeakSummary(*bare) +
            comparison_note +
            "; the layered stress law adds phase-wise Hertz pressures and overstates the "
            "stress of a covering stiffer than the scalp (docs/model.md §5)"});
 }
 
+/// The foam law: a layer within 5 % of its curve's last strain, or used up (a rigid stop).
+void WarnFoamCompression(const ImpactModel& model, const ImpactPeaks& peaks, Warnings& warnings) {
+  const double last = model.scene().covering.compressive_curve->last_strain();
+  const double strain = peaks.covering_strain_at_peak;
+  if (!peaks.fully_compressed && strain >= (1.0 - kNearFullCompressionShare) * last) {
+    warnings.push_back({ValidityCode::kNearFullCompression,
+                        "the foam is within 5 % of its measured curve's end at the peak: strain " +
+                            FormatSignificant(strain, 3) + " of its last " + FormatSignificant(last, 3) +
+                            "; a little more impact energy uses the layer up (a rigid stop)"});
+  }
+  if (peaks.fully_compressed) {
+    warnings.push_back({ValidityCode::kFullyCompressed, CoveringLawValidity(model, peaks).note});
+  }
+}
+
 /// A covering within 5 % of full compression, or fully compressed.
 void WarnCompression(const ImpactModel& model, const ImpactPeaks& peaks, Warnings& warnings) {
   if (!model.has_covering()) return;
+  if (model.is_foam()) {
+    WarnFoamCompression(model, peaks, warnings);
+    return;
+  }
   const double delta_max = peaks.max_penetration_m;
   if (peaks.phase_at_max == Phase::kCoveringOnBone) {
     const ForceLawSegment& seg = model.segment(model.SegmentIndexAt(delta_max));
@@ -300,8 +345,8 @@ void WarnLiteralThresholds(const ImpactModel& model, const ImpactPeaks& peaks, c
   std::string message =
       "literal thresholds: the paper's eq. (2) read literally, not covopt's default "
       "cumulative reading (docs/model.md §4); " +
-      LiteralThresholdsChange(model) + ". Peaks: " + PeakSummary(model, peaks) + "; the default reading gives " +
-      PeakSummary(model, cumulative) + comparison_note;
+      LiteralThresholdsChange(model) + ". Peaks: " + PeakSummary(peaks) + "; the default reading gives " +
+      PeakSummary(cumulative) + comparison_note;
   // A drop: the largest value over the contact lies at a switch before δ_max.
   const ContactState at_max = model.StateAt(peaks.max_penetration_m);
   if (peaks.peak_force_N > at_max.force_N) {
@@ -316,6 +361,33 @@ void WarnLiteralThresholds(const ImpactModel& model, const ImpactPeaks& peaks, c
 }
 
 }  // namespace
+
+CoveringValidity CoveringLawValidity(const ImpactModel& model, const ImpactPeaks& peaks) {
+  CoveringValidity validity;
+  if (!model.has_covering()) {
+    validity.note = "no covering";
+    return validity;
+  }
+  validity.within = !peaks.fully_compressed;
+  const std::string strain = FormatSignificant(peaks.covering_strain_at_peak, 3);
+  if (model.is_foam()) {
+    const std::string last = FormatSignificant(model.scene().covering.compressive_curve->last_strain(), 3);
+    if (validity.within) {
+      validity.note = "foam law: within the measured curve (strain " + strain + " of its last " + last + " at the peak)";
+    } else {
+      validity.note = "foam law: the layer is used up (strain " + last +
+                      ", the curve's last point): a rigid stop; " +
+                      FormatSignificant(peaks.energy_past_stop_J, 3) + " J of the " +
+                      FormatSignificant(model.impact_energy_J(), 3) +
+                      " J impact energy passed it into the scalp and skull";
+    }
+    return validity;
+  }
+  validity.note = validity.within ? "hertz law: not fully compressed (" + Percent(peaks.covering_compression_ratio()) +
+                                        " of the covering's travel used at the peak)"
+                                  : "hertz law: fully compressed: the robot reaches the bone through the covering";
+  return validity;
+}
 
 std::vector<ValidityWarning> CheckValidity(const ImpactModel& model, const ImpactPeaks& peaks) {
   Warnings warnings;

@@ -159,6 +159,11 @@ PeakSensitivities ExactPeakSensitivities(const ImpactModel& model, const ImpactP
         "design sensitivities need a covering (covering.thickness > 0): b_c -> 0 is a "
         "discontinuity of the model");
   }
+  if (model.is_foam()) {
+    throw std::invalid_argument(
+        "design sensitivities (d/dE_c, d/db_c) are for the Hertz law: a covering under the foam law (covering.law "
+        "foam or auto with a compressive_curve, docs/model.md §16) has a measured curve, not a modulus");
+  }
   const Scene& scene = model.scene();
   if (!scene.is_conservative_two_mass()) {
     // The damped exact path maximises F and σ_c inside the loading branch and integrates e_A:

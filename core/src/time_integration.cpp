@@ -17,6 +17,7 @@
 #include <string>
 #include <utility>
 
+#include "exact_internal.hpp"
 #include "extended_time_path.hpp"
 #include "numeric_format.hpp"
 #include "stepper.hpp"
@@ -49,6 +50,10 @@ ForceAndStress LawForceAndStress(const RunState& run, double delta) noexcept {
   }
   if (run.segment == 0 && !(delta > 0.0)) return {};  // free flight
   const ForceLawSegment& seg = run.model->segment(static_cast<std::size_t>(run.segment));
+  if (seg.curve) [[unlikely]] {  // the foam law (docs/model.md §16)
+    const ContactState contact = run.model->StateInSegment(static_cast<std::size_t>(run.segment), delta);
+    return {contact.force_N, contact.compressive_stress_Pa};
+  }
   constexpr double kHertzPressureFactor = 3.0 / (2.0 * std::numbers::pi);  // k = 3/(2π)
   const double x = std::max(delta - seg.origin_m, 0.0);
   const double x_pow_nm1 = std::pow(x, seg.exponent - 1.0);
@@ -101,8 +106,9 @@ int Jacobian(sunrealtype /*t*/, N_Vector y, N_Vector /*fy*/, SUNMatrix jac, void
                                                    : static_cast<std::size_t>(run.segment);
     const ForceLawSegment& seg = run.model->segment(i);
     const double x = std::max(delta - seg.origin_m, 1e-9 * std::max(seg.start_m, 1e-6));
-    stress_slope = 3.0 / (2.0 * std::numbers::pi) * seg.stiffness * seg.curvature_per_m *
-                   (seg.exponent - 1.0) * std::pow(x, seg.exponent - 2.0);
+    stress_slope = seg.curve ? seg.curve->SlopeAt(delta / seg.foam_thickness_m) / seg.foam_thickness_m
+                             : 3.0 / (2.0 * std::numbers::pi) * seg.stiffness * seg.curvature_per_m *
+                                   (seg.exponent - 1.0) * std::pow(x, seg.exponent - 2.0);
   }
   SM_ELEMENT_D(jac, 0, 0) = 0.0;
   SM_ELEMENT_D(jac, 0, 1) = 1.0;
@@ -327,10 +333,16 @@ class ConservativeRun final : public internal::TimePathRun {
   void SetScales() {
     const ForceLawSegment& first = model_.segment(0);
     const double p1 = first.exponent + 1.0;
-    const double length_scale = std::pow(p1 * model_.impact_energy_J() / first.stiffness, 1.0 / p1);
-    const double energy_density_scale = 3.0 / (2.0 * std::numbers::pi) * first.stiffness *
-                                        first.curvature_per_m * std::pow(length_scale, first.exponent) /
-                                        first.exponent;
+    double length_scale = 0.0, energy_density_scale = 0.0;
+    if (first.curve) {
+      // The foam law: δ where the layer alone stores the energy (at most its stop), and e there.
+      length_scale = internal::SolveEnergyBalance(first, model_.impact_energy_J());
+      energy_density_scale = model_.StateInSegment(0, length_scale).energy_density_J_per_m2;
+    } else {
+      length_scale = std::pow(p1 * model_.impact_energy_J() / first.stiffness, 1.0 / p1);
+      energy_density_scale = 3.0 / (2.0 * std::numbers::pi) * first.stiffness * first.curvature_per_m *
+                             std::pow(length_scale, first.exponent) / first.exponent;
+    }
     const double time_scale = length_scale / v0_;
     const double atol =
         options_.absolute_tolerance > 0.0 ? options_.absolute_tolerance : options_.relative_tolerance;
@@ -365,7 +377,8 @@ class ConservativeRun final : public internal::TimePathRun {
   double TakeOpening() {
     const std::size_t j = static_cast<std::size_t>(run_.segment);
     const ForceLawSegment& seg = model_.segment(j);
-    if (seg.origin_m != seg.start_m) return 0.0;
+    // The foam law is a polynomial in δ on its curve's first piece: smooth, no opening needed.
+    if (seg.origin_m != seg.start_m || seg.curve) return 0.0;
     const double tol_v = tolerance_[1] + options_.relative_tolerance * std::abs(y_[1]);
     const PhaseOpening opening = OpenPhase(seg, y_[1], run_.inverse_mass, PenetrationTolerance(), tol_v);
     if (!(opening.duration_s > 0.0)) return 0.0;
@@ -616,6 +629,11 @@ ImpactResult TimeIntegrator::Simulate(const ImpactModel& model,
                                       const TimeIntegrationOptions& options) {
   ValidateTimeIntegrationOptions(options);
   Workspace& ws = *workspace_;
+  if (options.force_extended_dynamics && model.is_foam()) {
+    throw std::invalid_argument(
+        "force_extended_dynamics: the extended time path does not model the foam law of a covering with a "
+        "measured curve (docs/model.md §16); leave it off, or give covering.law hertz");
+  }
   if (options.force_extended_dynamics || !model.scene().is_conservative_two_mass()) {
     if (!ws.extended) ws.extended = std::make_unique<internal::ExtendedTimePath>(ws.context.get());
     return ws.extended->Simulate(model, options);

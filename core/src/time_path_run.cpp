@@ -100,6 +100,7 @@ void TimePathRun::FinishChecks(double residual, std::string_view residual_name,
   for (ValidityWarning& warning : CheckValidity(model_, result_.peaks)) {
     result_.AddWarning(warning.code, std::move(warning.message));
   }
+  result_.validity = CoveringLawValidity(model_, result_.peaks);
   // The self-check: the energy balance of the model, which an exact solution keeps.
   result_.energy_residual = residual;
   if (auto warning = ToleranceWarning(residual, options_, options_.restart_at_phase_switches, residual_name, tail)) {

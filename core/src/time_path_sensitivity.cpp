@@ -184,6 +184,11 @@ void Validate(const ImpactModel& model, const TimeIntegrationOptions& o) {
     throw std::invalid_argument(
         "design sensitivities need a covering (covering.thickness > 0): b_c -> 0 is a discontinuity of the model");
   }
+  if (model.is_foam()) {
+    throw std::invalid_argument(
+        "design sensitivities (d/dE_c, d/db_c) are for the Hertz law: a covering under the foam law (covering.law "
+        "foam or auto with a compressive_curve, docs/model.md §16) has a measured curve, not a modulus");
+  }
   if (!scene.has_energy_integral()) {
     throw std::invalid_argument(
         "time-path forward sensitivities cover the two-mass contact (conservative or damped); a braking robot "

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -80,9 +81,9 @@ struct Crossing {
 
 /// The largest δ up to which the running maximum of σ_c over [0, δ] stays <= target [Pa]
 /// (ImpactPeaks' σ_c,max of a contact reaching δ).
-Crossing StressCrossing(const ImpactModel& model, double target_Pa) {
+Crossing StressCrossing(const ImpactModel& model, double target_Pa, std::size_t first = 0) {
   // σ_c,max over the segments passed is at their ends, each checked <= target on the way.
-  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+  for (std::size_t i = first; i < model.segment_count(); ++i) {
     const ForceLawSegment& seg = model.segment(i);
     const double at_start = model.StateInSegment(i, seg.start_m).compressive_stress_Pa;
     if (at_start > target_Pa) return {seg.start_m, i};  // a jump up at the switch
@@ -106,8 +107,8 @@ Crossing StressCrossing(const ImpactModel& model, double target_Pa) {
 
 /// The largest δ up to which the running maximum of F over [0, δ] stays <= target [N]
 /// (ImpactPeaks' F_max of a contact reaching δ; F = F_off + K x^n in each segment).
-Crossing ForceCrossing(const ImpactModel& model, double target_N) {
-  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+Crossing ForceCrossing(const ImpactModel& model, double target_N, std::size_t first = 0) {
+  for (std::size_t i = first; i < model.segment_count(); ++i) {
     const ForceLawSegment& seg = model.segment(i);
     if (model.StateInSegment(i, seg.start_m).force_N > target_N) return {seg.start_m, i};  // a jump up
     const bool last = i + 1 == model.segment_count();
@@ -119,8 +120,8 @@ Crossing ForceCrossing(const ImpactModel& model, double target_N) {
 }
 
 /// The largest δ up to which e(δ) <= target [J/m²] (e is continuous and increasing).
-Crossing EnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2) {
-  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+Crossing EnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2, std::size_t first = 0) {
+  for (std::size_t i = first; i < model.segment_count(); ++i) {
     const ForceLawSegment& seg = model.segment(i);
     const bool last = i + 1 == model.segment_count();
     if (!last && model.StateInSegment(i, seg.end_m).energy_density_J_per_m2 <= target_J_per_m2) continue;
@@ -132,6 +133,60 @@ Crossing EnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2)
     return {std::clamp(seg.origin_m + x, seg.start_m, seg.end_m), i};
   }
   return {};
+}
+
+/// The foam law (docs/model.md §16): the crossing of a quantity that grows on the layer (segment
+/// 0) as `on_layer(δ)`: inside the layer where it passes the target there, by `strain_at` (the
+/// curve's closed-form inverse, empty where there is none: then bisection); else on the bare
+/// chain past the stop, by `past_stop` from segment 1 (§2's power laws, their jumps up at the
+/// stop included).
+template <class OnLayer, class StrainAt, class PastStop>
+Crossing FoamCrossing(const ImpactModel& model, double target, OnLayer on_layer, StrainAt strain_at,
+                      PastStop past_stop) {
+  const ForceLawSegment& layer = model.segment(0);
+  if (!(on_layer(layer.end_m) > target)) return past_stop(1);
+  if (const std::optional<double> strain = strain_at(target)) {
+    return {std::clamp(*strain * layer.foam_thickness_m, 0.0, layer.end_m), 0};
+  }
+  double lo = 0.0, hi = layer.end_m;
+  for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * hi; ++iteration) {
+    const double mid = 0.5 * (lo + hi);
+    (on_layer(mid) > target ? hi : lo) = mid;
+  }
+  return {lo, 0};
+}
+
+/// The foam law's crossings of F, σ_c, σ_t and e (FoamCrossing): the layer's F = A W(δ/h),
+/// σ_c = σ(δ/h) and e = h W(δ/h) invert on the curve; σ_t = (1 − 2ν_t) W(ε)/(2ε) by bisection.
+Crossing FoamForceCrossing(const ImpactModel& model, double target_N) {
+  const ForceLawSegment& layer = model.segment(0);
+  return FoamCrossing(
+      model, target_N, [&](double d) { return model.StateInSegment(0, d).force_N; },
+      [&](double f) { return layer.curve->StrainAtEnergyDensity(f / layer.foam_area_m2); },
+      [&](std::size_t first) { return ForceCrossing(model, target_N, first); });
+}
+Crossing FoamStressCrossing(const ImpactModel& model, double target_Pa) {
+  const ForceLawSegment& layer = model.segment(0);
+  return FoamCrossing(
+      model, target_Pa, [&](double d) { return model.StateInSegment(0, d).compressive_stress_Pa; },
+      [&](double s) { return layer.curve->StrainAtStress(s); },
+      [&](std::size_t first) { return StressCrossing(model, target_Pa, first); });
+}
+Crossing FoamTensileCrossing(const ImpactModel& model, double target_Pa) {
+  const double tensile_factor = model.TensileFromCompressive(1.0);  // (1 - 2ν_t)/3 past the stop
+  return FoamCrossing(
+      model, target_Pa, [&](double d) { return model.TensileStressInSegment(0, d); },
+      [](double) { return std::optional<double>(); },
+      [&](std::size_t first) {
+        return tensile_factor > 0.0 ? StressCrossing(model, target_Pa / tensile_factor, first) : Crossing{};
+      });
+}
+Crossing FoamEnergyDensityCrossing(const ImpactModel& model, double target_J_per_m2) {
+  const ForceLawSegment& layer = model.segment(0);
+  return FoamCrossing(
+      model, target_J_per_m2, [&](double d) { return model.StateInSegment(0, d).energy_density_J_per_m2; },
+      [&](double e) { return layer.curve->StrainAtEnergyDensity(e / layer.foam_thickness_m); },
+      [&](std::size_t first) { return EnergyDensityCrossing(model, target_J_per_m2, first); });
 }
 
 /// The smallest δ at which a criterion reaches its limit, which one, and U there [J].
@@ -152,14 +207,18 @@ PenetrationLimit FindPenetrationLimit(const ImpactModel& model, const SpeedLimit
       limit.energy_J = model.StateInSegment(crossing.segment, crossing.penetration_m).potential_energy_J;
     }
   };
-  if (tensile_factor > 0.0) {
+  const bool foam = model.is_foam();
+  if (foam) {
+    consider(FoamTensileCrossing(model, options.limits.laceration_tensile_stress_Pa / s), LimitingCriterion::kLaceration);
+  } else if (tensile_factor > 0.0) {
     consider(StressCrossing(model, options.limits.laceration_tensile_stress_Pa / (s * tensile_factor)),
              LimitingCriterion::kLaceration);
   }
-  consider(EnergyDensityCrossing(model, options.limits.contusion_energy_density_J_per_m2 / s),
+  const double contusion = options.limits.contusion_energy_density_J_per_m2 / s;
+  consider(foam ? FoamEnergyDensityCrossing(model, contusion) : EnergyDensityCrossing(model, contusion),
            LimitingCriterion::kContusion);
-  consider(ForceCrossing(model, FractureLimit(options.limits, model.scene().head.area) / s),
-           LimitingCriterion::kFracture);
+  const double fracture = FractureLimit(options.limits, model.scene().head.area) / s;
+  consider(foam ? FoamForceCrossing(model, fracture) : ForceCrossing(model, fracture), LimitingCriterion::kFracture);
   if (options.criterion() == DesignCriterion::kNoFullCompression && model.has_covering()) {
     // The covering's travel the safety factor leaves: s + (t2 − s)/SF (ImpactPeaks::
     // covering_compression_ratio), s the start of its travel; t2 itself at SF 1.
@@ -170,7 +229,8 @@ PenetrationLimit FindPenetrationLimit(const ImpactModel& model, const SpeedLimit
     consider({reserved, model.SegmentIndexAt(reserved)}, LimitingCriterion::kFullCompression);
   }
   if (options.covering_compressive_strength_Pa > 0.0 && !options.allow_crushing && model.has_covering()) {
-    consider(StressCrossing(model, options.covering_compressive_strength_Pa / s), LimitingCriterion::kCrush);
+    const double strength = options.covering_compressive_strength_Pa / s;
+    consider(foam ? FoamStressCrossing(model, strength) : StressCrossing(model, strength), LimitingCriterion::kCrush);
   }
   return limit;
 }

@@ -30,7 +30,7 @@ std::string_view HeadSource(const HeadInjury& injury, const InjuryVerdict& verdi
 
 void AddCoveringRules(Verdict& v, double compression_ratio, bool fully_compressed, double stress_Pa,
                       const DesignRule& rule, const CrushInput& crush) {
-  v.Add("full-compression", CriterionPart::kDesignRule, "1", compression_ratio, 1.0, "the covering's travel",
+  v.Add(kFullCompressionRule, CriterionPart::kDesignRule, "1", compression_ratio, 1.0, "the covering's travel",
         rule.compression_counts(), fully_compressed);
   switch (crush.check) {
     case CrushCheck::kChecked:
@@ -64,6 +64,15 @@ Verdict HeadCriteria(const ImpactPeaks& peaks, bool covered, const InjuryLimits&
   if (covered) {
     AddCoveringRules(v, peaks.covering_compression_ratio(), peaks.fully_compressed, peaks.max_compressive_stress_Pa,
                      rule, crush);
+    if (peaks.covering_law == CoveringLaw::kFoam) {
+      // The foam law's travel is its measured curve (docs/model.md §16): the design rule keeps
+      // the peak strain within it, the safety factor as a reserve of strain.
+      for (Criterion& c : v.criteria) {
+        if (c.name != kFullCompressionRule) continue;
+        c.name = kWithinCurveRule;
+        c.source = "the foam's measured curve (strain at the peak over the curve's last strain)";
+      }
+    }
   }
   return v;
 }

@@ -69,6 +69,16 @@ class CompressiveCurve {
   /// The strain at which W(ε) = w [-], w in [0, W(ε_end)] (one root per piece, closed form);
   /// empty for w above W(ε_end) (the layer is used up).
   std::optional<double> StrainAtEnergyDensity(double energy_density_J_per_m3) const noexcept;
+  /// The strain at which V(ε) = v [-], v in [0, V(ε_end)] (the cubic piece's one root, by a
+  /// Newton iteration that descends monotonically onto it: V is increasing and convex); empty
+  /// for v above V(ε_end).
+  std::optional<double> StrainAtSecondIntegral(double second_integral_J_per_m3) const noexcept;
+  /// V(ε) − V(ε − γ) [J/m³] for 0 <= γ <= ε <= ε_end without cancellation: within the piece
+  /// holding ε it is the cubic's exact expansion W(ε) γ − σ(ε) γ²/2 + σ' γ³/6, so it keeps its
+  /// relative accuracy however small γ is (the exact path's duration quadrature needs it).
+  double SecondIntegralDrop(double strain, double gap) const noexcept;
+  /// dσ/dε [Pa] on the piece holding ε (the lower piece at a point), ε clamped to [0, ε_end].
+  double SlopeAt(double strain) const noexcept;
   /// The strain at which σ(ε) = s [-] (the smallest, on a plateau); empty above σ(ε_end).
   std::optional<double> StrainAtStress(double stress_Pa) const noexcept;
 

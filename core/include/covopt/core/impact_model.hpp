@@ -1,6 +1,7 @@
 #pragma once
 /// @file impact_model.hpp
-/// The multi-layer Hertz contact law of Park et al. (2011) as docs/model.md §2 reads it.
+/// The multi-layer Hertz contact law of Park et al. (2011) as docs/model.md §2 reads it, and
+/// the foam law of a covering with a measured curve (docs/model.md §16).
 ///
 /// An ImpactModel is an immutable, validated value built from a Scene. It holds the law
 /// as up to three segments in the penetration δ [m]:
@@ -61,6 +62,14 @@ struct ForceLawSegment {
   /// validity check (contact radius sqrt(x/c) must stay below both).
   double radius_a_m = 0.0;
   double radius_b_m = 0.0;
+  /// The foam law (docs/model.md §16): the covering's measured curve σ(ε) (owned by the
+  /// model's scene), null for a Hertz segment. A foam segment's law is
+  ///     F = A W(δ/h),  U = A h V(δ/h),  σ_c = σ(δ/h),  e = h W(δ/h),  A = 2π R h,
+  /// R = 1/(1/R_c + 1/R_s) the relative radius, h the layer's thickness; stiffness and
+  /// exponent are then unused.
+  const CompressiveCurve* curve = nullptr;
+  double foam_thickness_m = 0.0;  ///< h [m]
+  double foam_area_m2 = 0.0;      ///< A = 2π R h [m²]
 };
 
 /// The force law and its integrals at one penetration.
@@ -92,6 +101,16 @@ class ImpactModel {
   double impact_speed_m_per_s() const noexcept { return scene_.robot.speed_m_per_s; }
   /// True when the scene has a covering (thickness > 0).
   bool has_covering() const noexcept { return scene_.covering.thickness_m > 0.0; }
+  /// The law that describes the covering, resolved from CoveringSpec::law: kFoam (a covering
+  /// with a measured curve under kAuto or kFoam: docs/model.md §16) or kHertz (Park's chain;
+  /// also the bare robot's).
+  CoveringLaw covering_law() const noexcept { return covering_law_; }
+  /// True for a covering under the foam law: segment 0 is the foam layer (covering on scalp),
+  /// then the robot on the scalp through the used-up layer, then the robot on bone.
+  bool is_foam() const noexcept { return covering_law_ == CoveringLaw::kFoam; }
+  /// The foam law's stop [m]: δ where the layer reaches its curve's last strain, ε_end h
+  /// (the end of segment 0); 0 for the Hertz law.
+  double foam_stop_penetration_m() const noexcept { return is_foam() ? segments_[0].end_m : 0.0; }
 
   /// Number of segments of the law (2 without a covering or with an ill-ordered literal
   /// law, 3 otherwise). The last segment is always phase 3, robot on bone.
@@ -128,20 +147,32 @@ class ImpactModel {
     double upper_local_pow_ = 0.0;    ///< x_b^power
     double inverse_upper_local_per_m_ = 0.0;  ///< 1/x_b [1/m] (0 when x_b <= 0: unused)
     double stiffness_over_power_ = 0.0;       ///< K/power
+    const ForceLawSegment* foam_ = nullptr;   ///< a foam segment: U's drop from its curve
+    /// A foam segment: W, σ and dσ/dε at δ_b/h on its curve piece (whose start is
+    /// piece_gap_ below δ_b [m]), scaled by A h and h (U's drop is a cubic in the gap there).
+    double foam_w_ = 0.0, foam_stress_ = 0.0, foam_slope_ = 0.0, piece_gap_m_ = 0.0;
   };
 
-  /// Tensile stress from compressive stress, σ_t = σ_c (1 - 2ν_t)/3 [Pa] (eq. 5).
+  /// Tensile stress from compressive stress, σ_t = σ_c (1 - 2ν_t)/3 [Pa] (eq. 5): Park's
+  /// chain, where σ_c is a Hertz peak pressure. The foam law's σ_t is TensileStressInSegment's.
   double TensileFromCompressive(double compressive_stress_Pa) const noexcept {
     return compressive_stress_Pa * tensile_factor_;
   }
+  /// σ_t [Pa] at δ [m] with segment i's formula: on a foam segment the radial stress at the
+  /// contact edge, (1 − 2ν_t) F/(2π a²) = (1 − 2ν_t) W(ε)/(2ε) (docs/model.md §16); on a Hertz
+  /// segment Park's σ_c (1 − 2ν_t)/3.
+  double TensileStressInSegment(std::size_t i, double penetration_m) const noexcept;
 
  private:
   ImpactModel() = default;
+  /// The foam law's segments (docs/model.md §16), from the Hertz chain's thresholds and radii.
+  void BuildFoamLaw(double t1, double c1, double c3, double r_cover, double r_bone);
 
   Scene scene_{};
   double effective_mass_kg_ = 0.0;
   double impact_energy_J_ = 0.0;
   double tensile_factor_ = 0.0;
+  CoveringLaw covering_law_ = CoveringLaw::kHertz;
   std::array<ForceLawSegment, 3> segments_{};
   std::size_t segment_count_ = 0;
 };

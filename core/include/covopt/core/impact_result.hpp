@@ -26,23 +26,38 @@ struct ImpactPeaks {
   double max_penetration_m = 0.0;               ///< δ_max [m]
   double peak_force_N = 0.0;                    ///< F_max = max F over [0, δ_max] [N]
   double max_compressive_stress_Pa = 0.0;       ///< σ_c,max = max σ_c over [0, δ_max] [Pa]
-  double max_tensile_stress_Pa = 0.0;           ///< σ_t,max = σ_c,max (1 - 2ν_t)/3 [Pa]
+  /// σ_t,max [Pa]: σ_c,max (1 - 2ν_t)/3 under the Hertz law; under the foam law the largest
+  /// of (1 − 2ν_t) F/(2π a²) on the layer and Park's value past its stop (docs/model.md §16).
+  double max_tensile_stress_Pa = 0.0;
   double max_energy_density_J_per_m2 = 0.0;     ///< e_A,max = e(δ_max) = ∫σ_c dδ [J/m²]
   Phase phase_at_max = Phase::kCoveringOnScalp;  ///< the phase δ_max lies in
   /// The scalp reached full compression (δ_max > t1).
   bool scalp_fully_compressed = false;
   /// The covering reached full compression, the robot touching bone: δ_max lies in the
   /// robot-on-bone segment (δ_max > full_compression_penetration_m).
-  /// Without a covering: the scalp did (the bare robot touches bone).
+  /// Without a covering: the scalp did (the bare robot touches bone). Under the foam law
+  /// (docs/model.md §16): the layer is used up, δ_max beyond its stop.
   bool fully_compressed = false;
   /// δ where the robot-on-bone segment (phase 3) begins [m]: t2 = 0.8 b_s + 0.8 b_c with
   /// the default cumulative thresholds, max(0.8 b_c, 0.8 b_s) with the literal ones, and
-  /// t1 = 0.8 b_s without a covering. fully_compressed == (δ_max > this).
+  /// t1 = 0.8 b_s without a covering; the foam law's stop ε_end h (docs/model.md §16).
+  /// fully_compressed == (δ_max > this).
   double full_compression_penetration_m = 0.0;
   /// δ where the covering's own travel begins [m]: the start of phase 2 (covering on bone),
-  /// t1 = 0.8 b_s; 0 where the literal reading leaves no phase 2; equal to
-  /// full_compression_penetration_m without a covering (no travel).
+  /// t1 = 0.8 b_s; 0 where the literal reading leaves no phase 2, and under the foam law (its
+  /// travel is its curve, from contact); equal to full_compression_penetration_m without a
+  /// covering (no travel).
   double covering_travel_start_m = 0.0;
+  /// The law that described the covering (ImpactModel::covering_law): kFoam or kHertz (also
+  /// for the bare robot, whose contact is Park's Hertz chain).
+  CoveringLaw covering_law = CoveringLaw::kHertz;
+  /// The covering's nominal strain at the peak [-]: under the foam law min(δ_max, stop)/h, at
+  /// most the curve's last strain; under the Hertz law the covering's share of δ_max over its
+  /// thickness, (min(δ_max, t2) − t1)/b_c, at most the full-compression fraction; 0 bare.
+  double covering_strain_at_peak = 0.0;
+  /// Foam law: the energy that passed the layer's stop [J], U(δ_max) − U(stop), 0 while the
+  /// peak stays within the curve (and for the Hertz law).
+  double energy_past_stop_J = 0.0;
 
   /// The share of the covering's own travel used at the peak [-]:
   /// (δ_max − s) / (t2 − s), s = covering_travel_start_m, t2 = full_compression_penetration_m;
@@ -64,6 +79,20 @@ struct ImpactPeaks {
 /// replace F_max, σ_c,max, σ_t,max and e_A,max by the damped ones (ImpactPeaks).
 ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
                                   double max_penetration_m) noexcept;
+
+/// Whether the covering stayed within its law's validity at the peak (docs/model.md §16): the
+/// foam law within its measured curve (a used-up layer is a rigid stop, modelled, and the note
+/// says how much energy passed it); the Hertz law not fully compressed.
+struct CoveringValidity {
+  bool within = true;
+  std::string note;  ///< for people, with the numbers
+};
+
+/// The covering's validity at `peaks` of `model`: within, and a note naming the law, e.g.
+/// "foam law: within the measured curve (strain 0.31 of its last 0.49 at the peak)" or "foam
+/// law: the layer is used up (strain 0.49, the curve's last point): a rigid stop; 0.12 J of
+/// the 0.35 J impact energy passed it into the scalp and skull". Bare robot: within, "no covering".
+CoveringValidity CoveringLawValidity(const ImpactModel& model, const ImpactPeaks& peaks);
 
 /// One injury criterion judged against its limit.
 struct InjuryVerdict {
@@ -233,6 +262,9 @@ struct ImpactResult {
   /// result leaves the model's domain (CheckValidity; docs/model.md §5, §7), then the time
   /// path's own (tolerance not kept, no restarts).
   std::vector<ValidityWarning> warnings;
+  /// The covering's law validity at the peaks (CoveringLawValidity); the law is
+  /// peaks.covering_law.
+  CoveringValidity validity;
 
   bool ok() const noexcept { return status == SolveStatus::kSuccess; }
 

@@ -24,6 +24,13 @@ struct CrushInput {
   double compressive_strength_Pa = 0.0;  ///< [Pa], > 0 when check is kChecked
 };
 
+/// The covering's travel rule under the Hertz law: the share of its travel (0.8 b_c) used.
+inline constexpr std::string_view kFullCompressionRule = "full-compression";
+/// The same rule under the foam law (docs/model.md §16): the strain at the peak over the
+/// curve's last strain, the layer kept within its measured curve (a used-up layer fails it
+/// whatever SF). HeadVerdict names a foam covering's rule so; its counting is the same.
+inline constexpr std::string_view kWithinCurveRule = "within-curve";
+
 /// Whose limits the head's criteria are.
 inline constexpr std::string_view kParkSource = "Park et al. 2011";
 
