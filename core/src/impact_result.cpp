@@ -408,4 +408,9 @@ std::vector<std::string> ValidityWarnings(const ImpactModel& model, const Impact
   return messages;
 }
 
+double TensileStressOf(const ImpactModel& model, const HistorySample& sample) noexcept {
+  if (!model.is_foam()) return model.TensileFromCompressive(sample.compressive_stress_Pa);
+  return model.TensileStressInSegment(model.SegmentIndexAt(sample.penetration_m), sample.penetration_m);
+}
+
 }  // namespace covopt

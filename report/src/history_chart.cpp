@@ -50,9 +50,11 @@ GnuplotChart ChartOfHistory(const SimulationReport& report, const std::string& n
   s += "set size 1, 0.55\nset origin 0, 0.38\nset tmargin 1\nset bmargin 1\n";
   s += "set format x ''\nunset xlabel\n";
   s += fmt::format("set ylabel 'force [N]' textcolor rgb '{}'\n", blue);
-  s += fmt::format(
-      "set y2label 'tensile stress σ_t [MPa]  (compressive σ_c = {:.4g} σ_t)' textcolor rgb '{}'\n",
-      1.0 / tensile_per_compressive, red);
+  // Under the foam law σ_t is the radial stress at the contact's edge, no fixed multiple of σ_c.
+  s += model.is_foam()
+           ? fmt::format("set y2label 'tensile stress σ_t [MPa]' textcolor rgb '{}'\n", red)
+           : fmt::format("set y2label 'tensile stress σ_t [MPa]  (compressive σ_c = {:.4g} σ_t)' textcolor rgb '{}'\n",
+                         1.0 / tensile_per_compressive, red);
   s += fmt::format("set ytics nomirror textcolor rgb '{}'\n", blue);
   s += fmt::format("set y2tics nomirror textcolor rgb '{}'\n", red);
   s += fmt::format("set yrange [0:{}]\nset y2range [0:{}]\nset border 11\n",
@@ -124,7 +126,7 @@ std::string HistoryData(const ImpactModel& model, const ImpactResult& r) {
   std::string s = "$history << EOD\n";
   for (const HistorySample& h : r.history) {
     const double t_ms = h.time_s * 1e3;
-    const double tensile_MPa = model.TensileFromCompressive(h.compressive_stress_Pa) / 1e6;
+    const double tensile_MPa = TensileStressOf(model, h) / 1e6;
     const double energy_density_J_per_cm2 = h.energy_density_J_per_m2 / 1e4;
     if (!std::isfinite(t_ms) || !std::isfinite(h.force_N) || !std::isfinite(tensile_MPa) ||
         !std::isfinite(energy_density_J_per_cm2)) {

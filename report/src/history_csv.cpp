@@ -18,7 +18,7 @@ std::vector<HistoryColumn> ImpactHistoryColumns(const ImpactModel& model, const 
     {"penetration_rate_m_per_s", [](const ImpactModel&, const HistorySample& s) { return s.penetration_rate_m_per_s; }},
     {"force_N", [](const ImpactModel&, const HistorySample& s) { return s.force_N; }},
     {"compressive_stress_Pa", [](const ImpactModel&, const HistorySample& s) { return s.compressive_stress_Pa; }},
-    {"tensile_stress_Pa", [](const ImpactModel& m, const HistorySample& s) { return m.TensileFromCompressive(s.compressive_stress_Pa); }},
+    {"tensile_stress_Pa", [](const ImpactModel& m, const HistorySample& s) { return TensileStressOf(m, s); }},
     {"energy_density_J_per_m2", [](const ImpactModel&, const HistorySample& s) { return s.energy_density_J_per_m2; }},
     // the extended scene's (damping, braking, a neck)
     {"robot_speed_m_per_s", [](const ImpactModel&, const HistorySample& s) { return s.robot_speed_m_per_s; }},

@@ -115,6 +115,9 @@ std::string SimulationJson(const SimulationReport& report, int indent) {
   j["phase_at_max_name"] = ToString(p.phase_at_max);
   j["scalp_fully_compressed"] = p.scalp_fully_compressed;
   j["fully_compressed"] = p.fully_compressed;
+  // The covering's law and whether the peak is within what it describes.
+  j["covering_law"] = ToString(p.covering_law);
+  j["validity"] = {{"within", r.validity.within}, {"note", r.validity.note}};
   // The limits stay the limits; the derated ones and the factor join each criterion.
   j["laceration"] = CriterionObject(v.Find("laceration"), "_Pa", v.safety_factor);
   j["contusion"] = CriterionObject(v.Find("contusion"), "_J_per_m2", v.safety_factor);

@@ -117,6 +117,7 @@ void PrintPeaks(std::ostream& out, const SimulationReport& report) {
       fmt::format("{} ({})", PhaseNumber(p.phase_at_max), ToString(p.phase_at_max)));
   Row(out, "scalp fully compressed", YesNo(p.scalp_fully_compressed));
   Row(out, "fully compressed", YesNo(p.fully_compressed));
+  Row(out, "covering law", r.validity.note);
 }
 
 /// The method, and the integrator's statistics on the time path.

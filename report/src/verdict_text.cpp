@@ -25,6 +25,7 @@ Display DisplayOf(const Criterion& c) {
   if (c.name == "crush") return {"compressive stress", "MPa", 1e-6};
   if (c.name == "pressure") return {"pressure", "N/cm²", 1e-4};
   if (c.name == "full-compression") return {"travel used", "", 1.0};
+  if (c.name == "within-curve") return {"curve used (peak strain / last strain)", "", 1.0};
   if (c.name == "fracture") return {"peak force", "N", 1.0};
   if (c.unit == "N") return {"force", "N", 1.0};
   return {"value", c.unit, 1.0};
@@ -56,6 +57,7 @@ std::string RatioText(const Criterion& c, double safety_factor) {
   text += fmt::format(" EXCEEDED (limit {}, derated {} at SF {:g}", Amount(c.limit, d), Amount(c.derated_limit, d),
                       safety_factor);
   if (c.name == "full-compression" && c.ratio > 1.0) text += ": fully compressed";
+  if (c.name == "within-curve" && c.ratio > 1.0) text += ": the layer is used up";
   return text + ")";
 }
 

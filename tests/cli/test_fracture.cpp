@@ -69,6 +69,31 @@ TEST_CASE("simulate --covering-law: the law asked for is in the scene, a bad one
   CHECK_THAT(bad.err, Contains("--covering-law") && Contains("soft"));
 }
 
+TEST_CASE("simulate --material with a measured curve: the foam law, named with its validity", "[run][covering_law]") {
+  const std::vector<std::string> vn600 = {"simulate", "--material", "vinyl-nitrile foam VN600",
+                                          "--covering-thickness", "20mm", "--speed", "0.3m/s", "--json"};
+  const CliRun foam = Run(vn600);
+  REQUIRE(foam.exit_code == 0);
+  const Json j = Json::parse(foam.out);
+  CHECK(j.at("covering_law") == "foam");
+  CHECK(j.at("validity").at("within") == true);
+  CHECK_THAT(j.at("validity").at("note").get<std::string>(), Contains("foam law"));
+  // Faster, the 20 mm layer is used up (0.459 m/s on the paper's head): modelled, and said.
+  std::vector<std::string> faster = vn600;
+  faster[6] = "1m/s";
+  const Json used_up = Json::parse(Run(faster).out);
+  CHECK(used_up.at("validity").at("within") == false);
+  CHECK_THAT(used_up.at("validity").at("note").get<std::string>(), Contains("used up"));
+  // The same covering read by Hertz's law, when asked for.
+  std::vector<std::string> hertz = vn600;
+  hertz.insert(hertz.end(), {"--covering-law", "hertz"});
+  CHECK(Json::parse(Run(hertz).out).at("covering_law") == "hertz");
+  // Without a curve, the foam law is refused (exit 2, naming the field).
+  const CliRun no_curve = Run({"simulate", "--covering-thickness", "10mm", "--covering-law", "foam"});
+  CHECK(no_curve.exit_code == 2);
+  CHECK_THAT(no_curve.err, Contains("covering.law") || Contains("--covering-law"));
+}
+
 TEST_CASE("simulate --head-area nasal: the same hit breaks the nose and is UNSAFE", "[run][fracture]") {
   const CliRun json_run = Run(Trial({"--head-area", "nasal", "--json"}));
   REQUIRE(json_run.exit_code == 0);

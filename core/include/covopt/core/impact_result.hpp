@@ -187,6 +187,11 @@ struct HistorySample {
   double dissipated_work_J = 0.0;
 };
 
+/// The tensile stress σ_t [Pa] of a history sample: on Park's chain σ_c (1 − 2ν_t)/3 of the
+/// sample's compressive stress (damping included); under the foam law the radial stress at
+/// the contact edge of the segment the sample's δ lies in (ImpactModel::TensileStressInSegment).
+double TensileStressOf(const ImpactModel& model, const HistorySample& sample) noexcept;
+
 /// What a warning is about. Stable across versions: programs may match on it.
 enum class ValidityCode {
   /// A phase's Hertz contact radius sqrt(x/c) is not smaller than a radius it touches
