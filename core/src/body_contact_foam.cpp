@@ -70,19 +70,6 @@ double BodyContactModel::FoamStressAtDeflection(double deflection_m) const noexc
   return foam() ? curve_->StressAt(deflection_m / foam_thickness_m_) : 0.0;
 }
 
-double BodyContactModel::FoamStiffnessAtDeflection(double deflection_m) const noexcept {
-  if (!foam()) return 0.0;
-  const double strain = deflection_m / foam_thickness_m_;
-  if (!flat_foam_) return foam_force_factor_ / foam_thickness_m_ * curve_->StressAt(strain);
-  // The piece whose right end is the first point beyond the strain (the last piece at its end).
-  const auto points = curve_->points();
-  const auto it = std::upper_bound(points.begin(), points.end(), strain,
-                                   [](double e, const StrainStressPoint& p) { return e < p.strain; });
-  const auto k = static_cast<std::size_t>(std::min(it - points.begin(), static_cast<std::ptrdiff_t>(points.size() - 1)));
-  const double e0 = k == 0 ? 0.0 : points[k - 1].strain, s0 = k == 0 ? 0.0 : points[k - 1].stress_Pa;
-  return foam_force_factor_ / foam_thickness_m_ * (points[k].stress_Pa - s0) / (points[k].strain - e0);
-}
-
 double BodyContactModel::FoamDeflectionAtStress(double stress_Pa) const noexcept {
   if (!foam() || !(stress_Pa > 0.0)) return 0.0;
   if (stress_Pa >= curve_->last_stress_Pa()) return travel_m_;

@@ -212,3 +212,24 @@ TEST_CASE("foam body region: thicker foam never lowers the speed limit", "[body_
     }
   }
 }
+
+TEST_CASE("foam body region: a braking robot's limit is bracketed on the time path, at or above the unbraked one",
+          "[body_region][foam][braking]") {
+  for (bool keep : {false, true}) {
+    BodyContactScene s = Foam(0.01);
+    const double unbraked = co::MaxSafeSpeed(s, Hand(), Options(1.0, keep)).max_safe_speed_m_per_s;
+    s.reaction_delay_s = 0.005;
+    s.braking_m_per_s2 = 100.0;
+    const co::BodyRegionSpeedLimit braked = co::MaxSafeSpeed(s, Hand(), Options(1.0, keep));
+    INFO("keep_travel " << keep << ": " << braked.message);
+    REQUIRE(braked.status == co::SpeedLimitStatus::kLimited);
+    CHECK(braked.time_path_runs > 0);
+    CHECK(braked.max_safe_speed_m_per_s >= unbraked * (1.0 - 1e-6));
+    CHECK(braked.limited_by == (keep ? co::BodyLimitKind::kFullCompression : co::BodyLimitKind::kForce));
+    // The verdict at the limit holds, and just above it does not.
+    s.speed_m_per_s = braked.max_safe_speed_m_per_s;
+    CHECK(co::JudgeBodyContact(s, Hand(), Options(1.0, keep)).admissible);
+    s.speed_m_per_s = braked.max_safe_speed_m_per_s * 1.001;
+    CHECK_FALSE(co::JudgeBodyContact(s, Hand(), Options(1.0, keep)).admissible);
+  }
+}

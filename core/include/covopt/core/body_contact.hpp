@@ -160,9 +160,6 @@ class BodyContactModel {
   double FoamEnergyAtDeflection(double deflection_m) const noexcept;
   double EnergyAtDeflection(double deflection_m) const noexcept;
   double FoamStressAtDeflection(double deflection_m) const noexcept;
-  /// dF/dd of a foam layer at d [N/m] (2 pi R_c sigma(d/h) curved; A sigma'(d/h)/h flat, the
-  /// right-hand slope at a point of the curve); 0 otherwise.
-  double FoamStiffnessAtDeflection(double deflection_m) const noexcept;
   /// The foam layer's compression d [m] at which EnergyAtDeflection(d) = energy, energy in
   /// [0, bottom_out_energy_J()] (clamped): one monotone root, located on the curve's pieces and
   /// solved by Newton on the piece's polynomial (convex: it descends onto the root), ~1e-15.
