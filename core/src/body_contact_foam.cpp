@@ -100,16 +100,27 @@ std::optional<double> BodyContactModel::FoamPressureAtForce(double force_N) cons
   return curve_->last_stress_Pa() + (force_N - bottom_out_force_N_) / scene_.contact_area_m2;
 }
 
-double BodyContactModel::FoamDeflectionAtEnergy(double energy_J) const noexcept {
-  if (!foam() || !(energy_J > 0.0)) return 0.0;
-  if (energy_J >= bottom_out_energy_J_) return travel_m_;
+BodyContactModel::FoamState BodyContactModel::FoamStateAtEnergy(double energy_J) const noexcept {
+  if (!foam() || !(energy_J > 0.0)) return {};
   const double h = foam_thickness_m_;
+  const double ff = foam_force_factor_, fe = foam_energy_factor_;
+  const double inverse_k = 1.0 / scene_.body_stiffness_N_per_m;
+  if (energy_J >= bottom_out_energy_J_) {
+    const double spring = 0.5 * bottom_out_force_N_ * bottom_out_force_N_ * inverse_k;
+    return {travel_m_, bottom_out_force_N_, bottom_out_energy_J_ - spring, curve_->last_stress_Pa()};
+  }
   const auto points = curve_->points();
-  // The piece: the first point whose energy reaches the target (the last one does).
+  // The balance at point i's strain, from the curve's integrals there (no search).
+  auto balance_at_point = [&](std::size_t i) {
+    const double force = ff * (flat_foam_ ? points[i].stress_Pa : curve_->EnergyDensityAtPoint(i));
+    const double energy = fe * (flat_foam_ ? curve_->EnergyDensityAtPoint(i) : curve_->SecondIntegralAtPoint(i));
+    return energy + 0.5 * force * force * inverse_k;
+  };
+  // The piece: the first point whose balance reaches the target (the last one does).
   std::size_t lo = 0, hi = points.size() - 1;
   while (lo < hi) {
     const std::size_t mid = (lo + hi) / 2;
-    if (EnergyAtDeflection(points[mid].strain * h) >= energy_J) {
+    if (balance_at_point(mid) >= energy_J) {
       hi = mid;
     } else {
       lo = mid + 1;
@@ -117,57 +128,57 @@ double BodyContactModel::FoamDeflectionAtEnergy(double energy_J) const noexcept 
   }
   const double e0 = lo == 0 ? 0.0 : points[lo - 1].strain;
   const double s0 = lo == 0 ? 0.0 : points[lo - 1].stress_Pa;
+  const double w0 = lo == 0 ? 0.0 : curve_->EnergyDensityAtPoint(lo - 1);
+  const double v0 = lo == 0 ? 0.0 : curve_->SecondIntegralAtPoint(lo - 1);
   const double length = points[lo].strain - e0;
   const double slope = (points[lo].stress_Pa - s0) / length;
-  const double w0 = curve_->EnergyDensityAt(e0), v0 = curve_->SecondIntegralAt(e0);
-  const double ff = foam_force_factor_, fe = foam_energy_factor_;
-  const double inverse_k = 1.0 / scene_.body_stiffness_N_per_m;
+  // The state at x into the piece, from the piece's polynomials (W quadratic, V cubic).
+  auto state_at = [&](double x) {
+    const double sigma = s0 + slope * x;
+    const double w = w0 + x * (s0 + 0.5 * slope * x);
+    if (flat_foam_) return FoamState{(e0 + x) * h, ff * sigma, fe * w, sigma};
+    return FoamState{(e0 + x) * h, ff * w, fe * (v0 + x * (w0 + x * (0.5 * s0 + slope * x / 6.0))), sigma};
+  };
   // g(x) = U(e0 + x) + F(e0 + x)²/(2k) - E: a polynomial on the piece, increasing and convex, so
   // Newton from its right end (g >= 0 there) descends monotonically onto the root.
   double x = length;
   for (int iteration = 0; iteration < 100; ++iteration) {
-    const double sigma = s0 + slope * x;
-    const double w = w0 + x * (s0 + 0.5 * slope * x);
-    double g = 0.0, derivative = 0.0;
-    if (flat_foam_) {
-      const double force = ff * sigma;
-      g = fe * w + 0.5 * force * force * inverse_k - energy_J;
-      derivative = fe * sigma + force * ff * slope * inverse_k;
-    } else {
-      const double v = v0 + x * (w0 + x * (0.5 * s0 + slope * x / 6.0));
-      const double force = ff * w;
-      g = fe * v + 0.5 * force * force * inverse_k - energy_J;
-      derivative = fe * w + force * ff * sigma * inverse_k;
-    }
+    const FoamState state = state_at(x);
+    const double g = state.covering_energy_J + 0.5 * state.force_N * state.force_N * inverse_k - energy_J;
+    // dg/dx = dU/dx + F F'/k: curved U' = fe W, F' = ff σ; flat U' = fe σ, F' = ff slope.
+    const double derivative =
+        flat_foam_ ? fe * state.stress_Pa + state.force_N * ff * slope * inverse_k
+                   : state.force_N / ff * fe + state.force_N * ff * state.stress_Pa * inverse_k;
     if (!(g > 0.0) || !(derivative > 0.0)) break;
     const double step = std::min(g / derivative, x);
     x -= step;
     if (step <= 1e-16 * (e0 + x)) break;
   }
-  return (e0 + x) * h;
+  return state_at(x);
 }
 
 namespace internal {
 
-BodyContactResult FoamPeaksAt(const BodyContactModel& model, double deflection_m, double force_N, bool used_up) {
+BodyContactResult FoamPeaksAt(const BodyContactModel& model, const BodyContactModel::FoamState& state, bool used_up) {
   BodyContactResult r;
   const BodyContactScene& scene = model.scene();
-  const bool flat = std::isinf(scene.robot_radius_m);
-  const double d = used_up ? model.covering_travel_m() : deflection_m;
+  const bool flat = model.foam_flat_face();
+  const double d = state.deflection_m;
+  const double force_N = state.force_N;
   r.reduced_mass_kg = model.reduced_mass_kg();
   r.energy_transferred_J = model.impact_energy_J();
   r.peak_force_N = force_N;
   r.body_deflection_m = force_N / scene.body_stiffness_N_per_m;
   r.body_energy_J = 0.5 * force_N * r.body_deflection_m;
   r.covering_deflection_m = d;
-  r.covering_energy_J = model.FoamEnergyAtDeflection(d);
+  r.covering_energy_J = state.covering_energy_J;
   r.contact_radius_m = flat ? std::sqrt(scene.contact_area_m2 / std::numbers::pi)
                             : std::sqrt(2.0 * model.covering_outer_radius_m() * d);
   if (used_up) {
     r.peak_pressure_Pa = model.PressureAtForce(force_N);
     r.pressure_past_stop = !flat;
   } else {
-    r.peak_pressure_Pa = flat ? force_N / scene.contact_area_m2 : model.FoamStressAtDeflection(d);
+    r.peak_pressure_Pa = flat ? force_N / scene.contact_area_m2 : state.stress_Pa;
   }
   r.compression_ratio = used_up ? 1.0 : d / model.covering_travel_m();
   r.fully_compressed = used_up;
@@ -176,12 +187,18 @@ BodyContactResult FoamPeaksAt(const BodyContactModel& model, double deflection_m
   return r;
 }
 
+BodyContactModel::FoamState FoamStateAt(const BodyContactModel& model, double deflection_m, double force_N,
+                                        bool used_up) {
+  const double d = used_up ? model.covering_travel_m() : deflection_m;
+  return {d, force_N, model.FoamEnergyAtDeflection(d), model.FoamStressAtDeflection(d)};
+}
+
 BodyContactResult FoamPeaksAtEnergy(const BodyContactModel& model, double energy_J) {
   if (energy_J > model.bottom_out_energy_J()) {
-    return FoamPeaksAt(model, model.covering_travel_m(), model.ForceAtEnergy(energy_J), true);
+    return FoamPeaksAt(model, FoamStateAt(model, model.covering_travel_m(), model.ForceAtEnergy(energy_J), true),
+                       true);
   }
-  const double d = model.FoamDeflectionAtEnergy(energy_J);
-  return FoamPeaksAt(model, d, model.FoamForceAtDeflection(d), false);
+  return FoamPeaksAt(model, model.FoamStateAtEnergy(energy_J), false);
 }
 
 CoveringValidity FoamValidity(const BodyContactModel& model, const BodyContactResult& r) noexcept {

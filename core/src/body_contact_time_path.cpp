@@ -485,7 +485,7 @@ class BodyContactRun {
 
   /// Peaks() for a foam covering: the exact path's reading of the state (FoamPeaksAt).
   void FoamPeaks(const Contact& c, bool bottomed) {
-    BodyContactResult peaks = FoamPeaksAt(model_, c.covering_m, c.force_N, bottomed);
+    BodyContactResult peaks = FoamPeaksAt(model_, FoamStateAt(model_, c.covering_m, c.force_N, bottomed), bottomed);
     peaks.method = std::move(result_.method);
     peaks.history = std::move(result_.history);
     peaks.energy_transferred_J =

@@ -19,9 +19,13 @@ CoveringLaw ResolveCoveringLaw(const CoveringSpec& covering);
 /// spring's force from the energy left (status, method, duration and rebound speed are left
 /// for the caller).
 BodyContactResult FoamPeaksAtEnergy(const BodyContactModel& model, double energy_J);
-/// A foam layer's peaks at compression `deflection_m` (< d_end: within the curve) or, used up,
-/// at `force_N` (>= F(d_end)): the time path's reading of its state.
-BodyContactResult FoamPeaksAt(const BodyContactModel& model, double deflection_m, double force_N, bool used_up);
+/// A foam layer's peaks at its state (within the curve), or used up at the stop with the state's
+/// force (>= F(d_end)).
+BodyContactResult FoamPeaksAt(const BodyContactModel& model, const BodyContactModel::FoamState& state, bool used_up);
+/// The state at compression `deflection_m` (d_end when `used_up`) with force `force_N`: the
+/// time path's reading of its state.
+BodyContactModel::FoamState FoamStateAt(const BodyContactModel& model, double deflection_m, double force_N,
+                                        bool used_up);
 /// Fills the covering's law, validity, peak strain and energy past the stop of `r` from its
 /// peaks (both laws, both paths); nothing bare.
 void FinishCoveringFields(const BodyContactModel& model, BodyContactResult& r) noexcept;

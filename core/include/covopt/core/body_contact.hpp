@@ -163,7 +163,16 @@ class BodyContactModel {
   /// The foam layer's compression d [m] at which EnergyAtDeflection(d) = energy, energy in
   /// [0, bottom_out_energy_J()] (clamped): one monotone root, located on the curve's pieces and
   /// solved by Newton on the piece's polynomial (convex: it descends onto the root), ~1e-15.
-  double FoamDeflectionAtEnergy(double energy_J) const noexcept;
+  double FoamDeflectionAtEnergy(double energy_J) const noexcept { return FoamStateAtEnergy(energy_J).deflection_m; }
+  /// A foam layer's state at compression d: d [m], F(d) [N], U_c(d) [J], σ(d/h) [Pa].
+  struct FoamState {
+    double deflection_m = 0.0;
+    double force_N = 0.0;
+    double covering_energy_J = 0.0;
+    double stress_Pa = 0.0;
+  };
+  /// The state at the root of FoamDeflectionAtEnergy, from the root's own polynomial.
+  FoamState FoamStateAtEnergy(double energy_J) const noexcept;
   /// A foam layer's law: on a flat face (F = A σ) or a curved one (F = 2π R_c h W), and the
   /// factors of its force and energy in the curve's integrals: F = foam_force_factor() W(d/h)
   /// curved (σ(d/h) flat) [m²], U_c = foam_energy_factor() V(d/h) curved (W(d/h) flat) [m³].
