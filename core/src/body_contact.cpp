@@ -179,7 +179,7 @@ double BodyContactModel::ForceAtEnergy(double energy_J) const noexcept {
     if (energy_J >= bottom_out_energy_J_) {
       return std::sqrt(2.0 * k * (energy_J - bottom_out_energy_J_) + bottom_out_force_N_ * bottom_out_force_N_);
     }
-    return FoamForceAtDeflection(FoamDeflectionAtEnergy(energy_J));
+    return FoamStateAtEnergy(energy_J).force_N;
   }
   // Past the bottoming out the covering stores W_b = 2/5 F_b (0.8 b_c) and the spring the rest.
   const double covering_bottom_energy = 0.4 * bottom_out_force_N_ * travel_m_;
