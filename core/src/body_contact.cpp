@@ -238,6 +238,8 @@ BodyContactResult PeaksAtForce(const BodyContactModel& model, double force_N) {
 void FinishCoveringFields(const BodyContactModel& model, BodyContactResult& r) noexcept {
   if (!model.has_covering()) return;
   r.covering_law = model.covering_law();
+  r.covering_stress_Pa = r.peak_pressure_Pa.value_or(
+      r.pressure_past_stop ? model.scene().covering.compressive_curve->last_stress_Pa() : 0.0);
   r.peak_strain = r.covering_deflection_m / model.scene().covering.thickness_m;
   if (r.fully_compressed) {
     r.energy_past_stop_J = std::max(r.body_energy_J + r.covering_energy_J - model.bottom_out_energy_J(), 0.0);

@@ -165,7 +165,7 @@ BodyRegionJudgement Judge(const BodyContactModel& model, const materials::BodyLi
   j.force_ratio = c.peak_force_N / limits.force_N;
   if (c.peak_pressure_Pa) j.pressure_ratio = *c.peak_pressure_Pa / limits.pressure_Pa;
   j.compression_ratio = c.compression_ratio;
-  if (covered && options.material) ApplyCrushCheck(*options.material, c.peak_pressure_Pa.value_or(0.0), j);
+  if (covered && options.material) ApplyCrushCheck(*options.material, c.covering_stress_Pa, j);
 
   j.governing = BodyLimitKind::kForce;
   j.governing_ratio = j.force_ratio;

@@ -233,3 +233,25 @@ TEST_CASE("foam body region: a braking robot's limit is bracketed on the time pa
     CHECK_FALSE(co::JudgeBodyContact(s, Hand(), Options(1.0, keep)).admissible);
   }
 }
+
+TEST_CASE("foam body region: past the stop without an area the crush check takes sigma_end, a lower bound",
+          "[body_region][foam]") {
+  BodyContactScene s = Foam(0.01);  // curved, no contact area: the pressure past the stop is not evaluated
+  s.speed_m_per_s = 1.0;            // used up (0.6 m/s)
+  co::BodyRegionOptions options = Options(1.0, false);
+  options.material = co::CandidateMaterial{};
+  options.material->name = "crushable foam";
+  options.material->crush_behaviour = covopt::materials::CrushBehaviour::kCrushes;
+  options.material->compressive_strength_Pa = 150e3;  // below σ_end = 189.5 kPa
+  const co::BodyRegionJudgement j = co::JudgeBodyContact(s, Hand(), options);
+  REQUIRE(j.contact.fully_compressed);
+  CHECK_FALSE(j.contact.peak_pressure_Pa.has_value());
+  CHECK(j.contact.covering_stress_Pa == 189.5e3);
+  CHECK(j.crush_ratio == Approx(189.5 / 150.0));
+  CHECK_FALSE(j.admissible);
+  // The limit: where σ(d/h) reaches the strength, within the curve, below the used-up speed.
+  const co::BodyRegionSpeedLimit limit = co::MaxSafeSpeed(s, Hand(), options);
+  CHECK(limit.limited_by == co::BodyLimitKind::kCrush);
+  CHECK(limit.max_safe_speed_m_per_s < *limit.covering_used_up_m_per_s);
+  CHECK(limit.at_limit.crush_ratio == Approx(1.0).epsilon(1e-12));
+}

@@ -272,6 +272,10 @@ struct BodyContactResult {
   /// Past a foam's stop on a curved face, the pressure is sigma_end plus the bare robot's
   /// (F - F(d_end))/A (BodyContactModel's file comment): set then (and empty without an area).
   bool pressure_past_stop = false;
+  /// The covering's compressive stress at the peak [Pa] (what a crush check compares with its
+  /// strength): the peak pressure; past a foam's stop on a curved face without an area, where
+  /// the pressure is not evaluated, σ_end (a lower bound); 0 bare.
+  double covering_stress_Pa = 0.0;
   /// Contact duration [s]: the time path's; on the exact path the bare robot's pi sqrt(mu/k_H),
   /// and empty with a covering (not computed: the peaks need no integration).
   std::optional<double> contact_duration_s;
