@@ -153,7 +153,8 @@ class RegionLimits {
       scene.reaction_delay_s = delay;
       scene.braking_m_per_s2 = braking;
       const BodyRegionSpeedLimit limit =
-          MaxSafeSpeed(scene, setup_.regions[r], BodyRegionOptions{rule, covered ? covering.material : std::nullopt});
+          MaxSafeSpeed(scene, setup_.regions[r],
+                       BodyRegionOptions{rule, covered ? covering.material : std::nullopt, rule.compression_counts()});
       out.status = limit.status;
       out.max_safe_speed_m_per_s = limit.max_safe_speed_m_per_s;
       out.binding = limit.limited_by;

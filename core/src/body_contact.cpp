@@ -50,7 +50,13 @@ void CheckScene(const BodyContactScene& s) {
   CheckInRange("robot.radius", s.robot_radius_m, kMinRadius_m, kMaxRadius_m, "m", "flat (infinite)");
   const double b_c = s.covering.thickness_m;
   CheckZeroOrInRange("covering.thickness", b_c, kMinLayerThickness_m, kMaxThickness_m, "m", "no covering");
-  if (b_c > 0.0) {
+  const bool foam = b_c > 0.0 && internal::ResolveCoveringLaw(s.covering) == CoveringLaw::kFoam;
+  if (foam && std::isinf(s.robot_radius_m) && !(s.contact_area_m2 > 0.0)) {
+    throw std::invalid_argument(
+        "contact_area: a foam covering on a flat robot face needs the face's contact area, in [1e-06, 1] m2 (got "
+        "not given; or give the radius of a curved face)");
+  }
+  if (b_c > 0.0 && !foam) {
     CheckInRange("covering.modulus", s.covering.youngs_modulus_Pa, kMinModulus_Pa, kMaxModulus_Pa, "Pa");
     if (!(s.covering.poisson_ratio > -1.0 && s.covering.poisson_ratio <= 0.5)) {
       Reject("covering.poisson", "in (-1, 0.5]", s.covering.poisson_ratio);
@@ -107,7 +113,9 @@ BodyContactModel BodyContactModel::FromScene(const BodyContactScene& scene) {
       scene.contact == ContactType::kClamped ? 0.0 : 1.0 / scene.body_mass_kg;
   m.reduced_mass_kg_ = 1.0 / (inverse_robot + inverse_body);
   m.impact_energy_J_ = 0.5 * m.reduced_mass_kg_ * scene.speed_m_per_s * scene.speed_m_per_s;
-  if (scene.has_covering()) {
+  if (scene.has_covering() && internal::ResolveCoveringLaw(scene.covering) == CoveringLaw::kFoam) {
+    m.SetUpFoam();
+  } else if (scene.has_covering()) {
     const CoveringSpec& c = scene.covering;
     m.outer_radius_m_ = scene.robot_radius_m + c.thickness_m;
     m.covering_stiffness_ = 4.0 / 3.0 * c.youngs_modulus_Pa / (1.0 - c.poisson_ratio * c.poisson_ratio) *
@@ -117,8 +125,10 @@ BodyContactModel BodyContactModel::FromScene(const BodyContactScene& scene) {
     const double stiffness_root = std::cbrt(m.covering_stiffness_);  // one cube root for both
     m.compliance_factor_ = 1.0 / (stiffness_root * stiffness_root);
     m.bottom_out_root_ = stiffness_root * std::sqrt(m.travel_m_);
+    m.bottom_out_energy_J_ = m.EnergyAtForce(m.bottom_out_force_N_);
   } else {
     m.bottom_out_force_N_ = std::numeric_limits<double>::infinity();
+    m.bottom_out_energy_J_ = std::numeric_limits<double>::infinity();
   }
   return m;
 }
@@ -126,6 +136,8 @@ BodyContactModel BodyContactModel::FromScene(const BodyContactScene& scene) {
 double BodyContactModel::EnergyAtForce(double force_N) const noexcept {
   const double spring = force_N * force_N / (2.0 * scene_.body_stiffness_N_per_m);
   if (!has_covering()) return spring;
+  // A foam: U_c at the last compression with this force (d_end past the stop).
+  if (foam()) return spring + FoamEnergyAtDeflection(FoamDeflectionAtForce(force_N));
   // W_c(F) = 2/5 K_c^(-2/3) F^(5/3) = 2/5 F δ_c(F); past F_b it stays 2/5 F_b (0.8 b_c).
   const double f = force_N < bottom_out_force_N_ ? force_N : bottom_out_force_N_;
   return spring + 0.4 * f * CoveringDeflectionAtForce(f);
@@ -133,6 +145,7 @@ double BodyContactModel::EnergyAtForce(double force_N) const noexcept {
 
 double BodyContactModel::CoveringDeflectionAtForce(double force_N) const noexcept {
   if (!has_covering()) return 0.0;
+  if (foam()) return FoamDeflectionAtForce(force_N);
   if (force_N >= bottom_out_force_N_) return travel_m_;
   const double s = std::cbrt(force_N);
   return s * s * compliance_factor_;
@@ -147,6 +160,7 @@ std::optional<double> BodyContactModel::PressureAtForce(double force_N) const no
     if (scene_.contact_area_m2 > 0.0) return force_N / scene_.contact_area_m2;
     return std::nullopt;
   }
+  if (foam()) return FoamPressureAtForce(force_N);
   // a² = R_c δ_c(min(F, F_b)). At F = 0 the Hertz pressure is 0 (p ∝ F^(1/3)).
   const double contact_radius_sq = outer_radius_m_ * CoveringDeflectionAtForce(force_N);
   if (!(contact_radius_sq > 0.0)) return 0.0;
@@ -161,6 +175,12 @@ double BodyContactModel::ForceAtEnergy(double energy_J) const noexcept {
   const double k = scene_.body_stiffness_N_per_m;
   if (!(energy_J > 0.0)) return 0.0;
   if (!has_covering()) return std::sqrt(2.0 * k * energy_J);
+  if (foam()) {
+    if (energy_J >= bottom_out_energy_J_) {
+      return std::sqrt(2.0 * k * (energy_J - bottom_out_energy_J_) + bottom_out_force_N_ * bottom_out_force_N_);
+    }
+    return FoamStateAtEnergy(energy_J).force_N;
+  }
   // Past the bottoming out the covering stores W_b = 2/5 F_b (0.8 b_c) and the spring the rest.
   const double covering_bottom_energy = 0.4 * bottom_out_force_N_ * travel_m_;
   const double bottom_energy = bottom_out_force_N_ * bottom_out_force_N_ / (2.0 * k) + covering_bottom_energy;
@@ -211,7 +231,26 @@ BodyContactResult PeaksAtForce(const BodyContactModel& model, double force_N) {
     r.peak_pressure_Pa = model.PressureAtForce(force_N);
   }
   r.max_approach_m = r.covering_deflection_m + r.body_deflection_m;
+  FinishCoveringFields(model, r);
   return r;
+}
+
+void FinishCoveringFields(const BodyContactModel& model, BodyContactResult& r) noexcept {
+  if (!model.has_covering()) return;
+  r.covering_law = model.covering_law();
+  r.covering_stress_Pa = r.peak_pressure_Pa.value_or(
+      r.pressure_past_stop ? model.scene().covering.compressive_curve->last_stress_Pa() : 0.0);
+  r.peak_strain = r.covering_deflection_m / model.scene().covering.thickness_m;
+  if (r.fully_compressed) {
+    r.energy_past_stop_J = std::max(r.body_energy_J + r.covering_energy_J - model.bottom_out_energy_J(), 0.0);
+  }
+  if (model.foam()) {
+    r.validity = FoamValidity(model, r);
+  } else {
+    // Today's reading of the Hertz layer; the solid-elastomer limit is the callers' (issue 35).
+    r.validity = {true, r.fully_compressed ? "Hertz half-space law; past its travel the covering is a rigid stop"
+                                           : "Hertz half-space law (a small-strain solid thicker than its contact)"};
+  }
 }
 
 }  // namespace internal
@@ -219,7 +258,8 @@ BodyContactResult PeaksAtForce(const BodyContactModel& model, double force_N) {
 namespace {
 
 BodyContactResult SolveExactBodyContact(const BodyContactModel& model) {
-  BodyContactResult r = internal::PeaksAtForce(model, model.ForceAtEnergy(model.impact_energy_J()));
+  BodyContactResult r = model.foam() ? internal::FoamPeaksAtEnergy(model, model.impact_energy_J())
+                                     : internal::PeaksAtForce(model, model.ForceAtEnergy(model.impact_energy_J()));
   r.method = "exact";  // short enough for the string's small buffer: no allocation
   r.rebound_speed_m_per_s = model.scene().speed_m_per_s;  // conservative: no energy is lost
   if (!model.has_covering()) {

@@ -57,6 +57,23 @@ enum class Phase { kCovering, kBody };
 struct Run {
   Phase phase = Phase::kBody;
   bool covered = false;
+  // A foam covering (docs/model.md §15). The piece of its curve the state is on: its ends [m]
+  // are the phase's events, and on it the force is the piece's polynomial, continued past its
+  // ends (so that the integrator and its dense output see a smooth right-hand side up to the
+  // event; the force's derivative jumps at a point of the curve: the integrator restarts there).
+  const BodyContactModel* foam = nullptr;
+  bool flat_foam = false;
+  std::size_t piece = 0;
+  double piece_low_m = 0.0;
+  double piece_high_m = 0.0;
+  double inverse_thickness = 0.0;  // 1/h [1/m]
+  double force_factor = 0.0;       // F = this W (curved) or this σ (flat) [m²]
+  double energy_factor = 0.0;      // U_c = this V (curved) or this W (flat) [m³]
+  double piece_strain = 0.0;       // ε at the piece's start, and there σ [Pa], W, V [J/m³]
+  double piece_stress = 0.0;
+  double piece_energy = 0.0;
+  double piece_second = 0.0;
+  double piece_slope = 0.0;        // dσ/dε on the piece [Pa]
   double covering_stiffness = 0.0;  // K_c [N/m^1.5]
   double body_stiffness = 0.0;      // k_H [N/m]
   double inverse_mass = 0.0;        // 1/mu [1/kg]
@@ -74,6 +91,28 @@ struct Run {
   bool brake_on = false;            // braking now: t >= t_d and the robot still moving forward
 };
 
+/// A foam's force F(q) [N] and its slope dF/dq [N/m] on the run's piece of the curve (continued
+/// past the piece's ends as its polynomial).
+struct FoamForce {
+  double force_N = 0.0;
+  double slope_N_per_m = 0.0;
+};
+FoamForce FoamForceOnPiece(const Run& run, double q) noexcept {
+  const double x = q * run.inverse_thickness - run.piece_strain;
+  const double stress = run.piece_stress + run.piece_slope * x;
+  if (run.flat_foam) return {run.force_factor * stress, run.force_factor * run.inverse_thickness * run.piece_slope};
+  const double energy = run.piece_energy + x * (run.piece_stress + 0.5 * run.piece_slope * x);
+  return {run.force_factor * energy, run.force_factor * run.inverse_thickness * stress};
+}
+/// The foam's energy U_c(q) [J] on the run's piece.
+double FoamEnergyOnPiece(const Run& run, double q) noexcept {
+  const double x = q * run.inverse_thickness - run.piece_strain;
+  const double energy = run.piece_energy + x * (run.piece_stress + 0.5 * run.piece_slope * x);
+  if (run.flat_foam) return run.energy_factor * energy;
+  return run.energy_factor *
+         (run.piece_second + x * (run.piece_energy + x * (0.5 * run.piece_stress + run.piece_slope * x / 6.0)));
+}
+
 /// The contact at one state: its force, the two deflections and the approach.
 struct Contact {
   double force_N = 0.0;
@@ -88,7 +127,8 @@ Contact ContactAt(const Run& run, const sunrealtype* y) noexcept {
   Contact c;
   if (run.phase == Phase::kCovering) {
     c.covering_m = std::max(y[kDeflection], 0.0);
-    c.force_N = run.covering_stiffness * c.covering_m * std::sqrt(c.covering_m);
+    c.force_N = run.foam ? FoamForceOnPiece(run, c.covering_m).force_N
+                         : run.covering_stiffness * c.covering_m * std::sqrt(c.covering_m);
     c.body_m = c.force_N / run.body_stiffness;
   } else {
     c.covering_m = run.travel_m;  // 0 bare
@@ -102,6 +142,7 @@ Contact ContactAt(const Run& run, const sunrealtype* y) noexcept {
 /// The covering's energy W_c at `c` [J]: 2/5 K_c δ_c^2.5 (= 2/5 K_c^(-2/3) F^(5/3) below the
 /// bottoming out).
 double CoveringEnergy(const Run& run, const Contact& c) noexcept {
+  if (run.foam) return FoamEnergyOnPiece(run, c.covering_m);
   return 0.4 * run.covering_stiffness * c.covering_m * c.covering_m * std::sqrt(c.covering_m);
 }
 /// The energy both springs store at `c` [J]: F²/(2 k_H) + W_c.
@@ -112,7 +153,12 @@ int BodyRightHandSide(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user_d
   const sunrealtype* s = NV_DATA_S(y);
   sunrealtype* rate = NV_DATA_S(ydot);
   double force = 0.0;
-  if (run.phase == Phase::kCovering) {
+  if (run.phase == Phase::kCovering && run.foam) {
+    // dδ/dq = 1 + F'(q)/k_H: the foam and the body spring in series.
+    const FoamForce f = FoamForceOnPiece(run, s[kDeflection]);
+    force = f.force_N;
+    rate[kDeflection] = s[kApproachRate] / (1.0 + f.slope_N_per_m / run.body_stiffness);
+  } else if (run.phase == Phase::kCovering) {
     const double q = std::max(s[kDeflection], 0.0);
     const double root = std::sqrt(q);
     force = run.covering_stiffness * q * root;
@@ -140,8 +186,8 @@ int BodyRootFunctions(sunrealtype t, N_Vector y, sunrealtype* g, void* user_data
   const auto& run = *static_cast<const Run*>(user_data);
   const sunrealtype* s = NV_DATA_S(y);
   const bool covering = run.phase == Phase::kCovering;
-  g[kBottomsOut] = covering ? s[kDeflection] - run.travel_m : -1.0;
-  g[kLowerEnd] = s[kDeflection] - (covering ? 0.0 : run.body_at_bottom_m);
+  g[kBottomsOut] = covering ? s[kDeflection] - (run.foam ? run.piece_high_m : run.travel_m) : -1.0;
+  g[kLowerEnd] = s[kDeflection] - (covering ? run.piece_low_m : run.body_at_bottom_m);
   g[kTurn] = s[kApproachRate];
   if (run.braking) {
     g[kBrakeStart] = run.brake_pending ? t - run.reaction_delay_s : -1.0;
@@ -157,7 +203,12 @@ int BodyJacobian(sunrealtype /*t*/, N_Vector y, N_Vector /*fy*/, SUNMatrix jac, 
   const auto& run = *static_cast<const Run*>(user_data);
   const sunrealtype* s = NV_DATA_S(y);
   double force_slope = 0.0;  // dF/dq [N/m]
-  if (run.phase == Phase::kCovering) {
+  if (run.phase == Phase::kCovering && run.foam) {
+    // Newton's matrix need only be approximate: the foam's dq'/dq (through F''(q)) is left out.
+    force_slope = FoamForceOnPiece(run, s[kDeflection]).slope_N_per_m;
+    SM_ELEMENT_D(jac, 0, 0) = 0.0;
+    SM_ELEMENT_D(jac, 0, 1) = 1.0 / (1.0 + force_slope / run.body_stiffness);
+  } else if (run.phase == Phase::kCovering) {
     const double root = std::sqrt(std::max(s[kDeflection], run.root_floor_m));
     const double divisor = 1.0 + run.series_factor * root;
     SM_ELEMENT_D(jac, 0, 0) = -s[kApproachRate] * run.series_factor / (2.0 * root * divisor * divisor);
@@ -267,6 +318,13 @@ class BodyContactRun {
   void SetUpRun() {
     run_ = Run{};
     run_.covered = model_.has_covering();
+    run_.foam = model_.foam() ? &model_ : nullptr;
+    if (run_.foam) {
+      run_.flat_foam = model_.foam_flat_face();
+      run_.inverse_thickness = 1.0 / model_.scene().covering.thickness_m;
+      run_.force_factor = model_.foam_force_factor();
+      run_.energy_factor = model_.foam_energy_factor();
+    }
     run_.phase = run_.covered ? Phase::kCovering : Phase::kBody;
     run_.covering_stiffness = model_.covering_stiffness();
     run_.body_stiffness = model_.scene().body_stiffness_N_per_m;
@@ -274,6 +332,7 @@ class BodyContactRun {
     run_.series_factor = 1.5 * run_.covering_stiffness / run_.body_stiffness;
     run_.travel_m = model_.covering_travel_m();
     run_.body_at_bottom_m = run_.covered ? model_.bottom_out_force_N() / run_.body_stiffness : 0.0;
+    if (run_.foam) SetPiece(0);
     const BodyContactScene& scene = model_.scene();
     if (scene.robot_brakes()) {  // a finite robot mass (BodyContactModel::FromScene)
       run_.braking = true;
@@ -350,9 +409,16 @@ class BodyContactRun {
       run_.brake_on = false;  // not held: the contact force may push the robot back
       brake_changed = true;
     }
-    if (found[kBottomsOut]) return Switch(Phase::kBody, run_.body_at_bottom_m);
+    if (found[kBottomsOut]) {
+      if (run_.foam && run_.piece_high_m < run_.travel_m) return ToPiece(run_.piece + 1, run_.piece_high_m);
+      return Switch(Phase::kBody, run_.body_at_bottom_m);
+    }
     if (found[kLowerEnd]) {
-      if (run_.phase == Phase::kBody && run_.covered) return Switch(Phase::kCovering, run_.travel_m);
+      if (run_.phase == Phase::kBody && run_.covered) {
+        if (run_.foam) SetPiece(CurvePoints().size() - 1);
+        return Switch(Phase::kCovering, run_.travel_m);
+      }
+      if (run_.foam && run_.piece_low_m > 0.0) return ToPiece(run_.piece - 1, run_.piece_low_m);
       separated_ = true;
       result_.contact_duration_s = t_;
       result_.rebound_speed_m_per_s = -y_[kApproachRate];
@@ -368,11 +434,38 @@ class BodyContactRun {
     return kRootFound;
   }
 
+  /// A foam's curve points, and the piece of it the run is on (its ends in d [m]).
+  std::span<const StrainStressPoint> CurvePoints() const {
+    return model_.scene().covering.compressive_curve->points();
+  }
+  void SetPiece(std::size_t piece) {
+    const auto points = CurvePoints();
+    const double h = model_.scene().covering.thickness_m;
+    run_.piece = piece;
+    run_.piece_low_m = piece == 0 ? 0.0 : points[piece - 1].strain * h;
+    run_.piece_high_m = piece + 1 == points.size() ? run_.travel_m : points[piece].strain * h;
+    const CompressiveCurve& curve = *model_.scene().covering.compressive_curve;
+    run_.piece_strain = piece == 0 ? 0.0 : points[piece - 1].strain;
+    run_.piece_stress = piece == 0 ? 0.0 : points[piece - 1].stress_Pa;
+    run_.piece_slope = (points[piece].stress_Pa - run_.piece_stress) / (points[piece].strain - run_.piece_strain);
+    run_.piece_energy = curve.EnergyDensityAt(run_.piece_strain);
+    run_.piece_second = curve.SecondIntegralAt(run_.piece_strain);
+  }
+  /// Continues on another piece of the foam's curve from its end `at_m` [m]: a restart.
+  int ToPiece(std::size_t piece, double at_m) {
+    SetPiece(piece);
+    return Switch(Phase::kCovering, at_m);
+  }
+
   /// Maximum compression: the peaks from the state (δ' = 0 here).
   void Peaks() {
     turned_ = true;
     const Contact c = ContactAt(run_, y_);
     const bool bottomed = run_.covered && run_.phase == Phase::kBody;
+    if (run_.foam) {
+      FoamPeaks(c, bottomed);
+      return;
+    }
     result_.peak_force_N = c.force_N;
     result_.peak_pressure_Pa = model_.PressureAtForce(c.force_N);
     result_.covering_deflection_m = run_.covered ? c.covering_m : 0.0;
@@ -386,6 +479,18 @@ class BodyContactRun {
     result_.fully_compressed = bottomed;
     // Less than ½ mu v0² with braking: the springs hold what reached them.
     if (run_.braking) result_.energy_transferred_J = result_.body_energy_J + result_.covering_energy_J;
+    FinishCoveringFields(model_, result_);
+    CheckEnergy(StoredEnergy(run_, c));
+  }
+
+  /// Peaks() for a foam covering: the exact path's reading of the state (FoamPeaksAt).
+  void FoamPeaks(const Contact& c, bool bottomed) {
+    BodyContactResult peaks = FoamPeaksAt(model_, FoamStateAt(model_, c.covering_m, c.force_N, bottomed), bottomed);
+    peaks.method = std::move(result_.method);
+    peaks.history = std::move(result_.history);
+    peaks.energy_transferred_J =
+        run_.braking ? peaks.body_energy_J + peaks.covering_energy_J : result_.energy_transferred_J;
+    result_ = std::move(peaks);
     CheckEnergy(StoredEnergy(run_, c));
   }
 

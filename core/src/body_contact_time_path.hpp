@@ -10,6 +10,28 @@ namespace covopt::internal {
 /// method, duration and rebound speed are left for the caller).
 BodyContactResult PeaksAtForce(const BodyContactModel& model, double force_N);
 
+/// The covering's law, resolved: kAuto -> kFoam with a compressive curve, else kHertz.
+/// @throws std::invalid_argument for kFoam without a curve ("covering.law: ...").
+CoveringLaw ResolveCoveringLaw(const CoveringSpec& covering);
+
+/// A foam layer's peaks (body_contact_foam.cpp) when the springs hold `energy_J` [J]: below the
+/// bottoming out at the root d of the energy balance, past it at the stop with the body
+/// spring's force from the energy left (status, method, duration and rebound speed are left
+/// for the caller).
+BodyContactResult FoamPeaksAtEnergy(const BodyContactModel& model, double energy_J);
+/// A foam layer's peaks at its state (within the curve), or used up at the stop with the state's
+/// force (>= F(d_end)).
+BodyContactResult FoamPeaksAt(const BodyContactModel& model, const BodyContactModel::FoamState& state, bool used_up);
+/// The state at compression `deflection_m` (d_end when `used_up`) with force `force_N`: the
+/// time path's reading of its state.
+BodyContactModel::FoamState FoamStateAt(const BodyContactModel& model, double deflection_m, double force_N,
+                                        bool used_up);
+/// Fills the covering's law, validity, peak strain and energy past the stop of `r` from its
+/// peaks (both laws, both paths); nothing bare.
+void FinishCoveringFields(const BodyContactModel& model, BodyContactResult& r) noexcept;
+/// A foam result's validity (docs/model.md §15.5).
+CoveringValidity FoamValidity(const BodyContactModel& model, const BodyContactResult& r) noexcept;
+
 /// Integrates mu δ'' = -F with the covering (Hertz, K_c) and the body spring k_H in series,
 /// by SUNDIALS (options.time_path: method, tolerances, max_steps), without inverting F(δ):
 ///   phase 1 (the covering not bottomed out): q = δ_c,  q' = δ' / (1 + 1.5 K_c sqrt(q)/k_H),

@@ -20,6 +20,7 @@
 #include <covopt/core/number_format.hpp>
 #include <covopt/core/time_integration.hpp>
 
+#include "body_region_limits.hpp"
 #include "limit_bracket.hpp"
 #include "robust_internal.hpp"
 #include "validation_internal.hpp"
@@ -66,6 +67,13 @@ void ValidateMaterial(const CandidateMaterial& m) {
 void ValidateOptions(const BodyRegionOptions& options) {
   ValidateRule(options.rule);
   if (options.material) ValidateMaterial(*options.material);
+}
+
+/// `options` as the body-region code reads them: the travel criterion counts exactly when
+/// keep_travel is set (BodyRegionOptions::keep_travel decides, not the rule's criterion).
+BodyRegionOptions Effective(BodyRegionOptions options) {
+  options.rule.criterion = options.keep_travel ? DesignCriterion::kNoFullCompression : DesignCriterion::kPaper;
+  return options;
 }
 
 /// What a judgement's scope is built from: the limits' Describe() and the safety factor as
@@ -157,7 +165,7 @@ BodyRegionJudgement Judge(const BodyContactModel& model, const materials::BodyLi
   j.force_ratio = c.peak_force_N / limits.force_N;
   if (c.peak_pressure_Pa) j.pressure_ratio = *c.peak_pressure_Pa / limits.pressure_Pa;
   j.compression_ratio = c.compression_ratio;
-  if (covered && options.material) ApplyCrushCheck(*options.material, c.peak_pressure_Pa.value_or(0.0), j);
+  if (covered && options.material) ApplyCrushCheck(*options.material, c.covering_stress_Pa, j);
 
   j.governing = BodyLimitKind::kForce;
   j.governing_ratio = j.force_ratio;
@@ -218,6 +226,16 @@ std::string RegionMessage(const materials::BodyLimits& limits, const ScopeText& 
   return m;
 }
 
+/// `what` of a speed limit, with "; covering used up at v = ... m/s" where the covering is used
+/// up below the limit (not an injury: BodyRegionSpeedLimit::covering_used_up_m_per_s).
+std::string UsedUpText(const BodyRegionSpeedLimit& limit, std::string what) {
+  const std::optional<double>& used_up = limit.covering_used_up_m_per_s;
+  if (used_up && *used_up < limit.max_safe_speed_m_per_s) {
+    what += "; covering used up at v = " + FormatSignificant(*used_up, 6) + " m/s";
+  }
+  return what;
+}
+
 /// A covering of unknown compressive strength that the rule refuses: no speed is safe.
 bool RefusedForUnknownStrength(const BodyContactScene& scene, const BodyRegionOptions& options) {
   return scene.has_covering() && options.material &&
@@ -242,7 +260,7 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
   const double sf = rule.safety_factor;
   const bool covered = model.has_covering();
 
-  double force = limits.force_N / sf;
+  double force = model.foam() ? 0.0 : limits.force_N / sf;  // a foam's limits are energies (below)
   BodyLimitKind by = BodyLimitKind::kForce;
   auto consider = [&](double candidate, BodyLimitKind kind) {
     if (candidate < force) {
@@ -250,15 +268,15 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
       by = kind;
     }
   };
-  if (covered || model.scene().contact_area_m2 > 0.0) {
+  if (!model.foam() && (covered || model.scene().contact_area_m2 > 0.0)) {
     consider(ForceAtPressure(model, limits.pressure_Pa / sf), BodyLimitKind::kPressure);
   }
-  if (covered && rule.compression_counts()) {
+  if (covered && !model.foam() && rule.compression_counts()) {
     const double travel = model.covering_travel_m() / sf;  // at SF 1: F_b itself (inclusive)
     consider(model.covering_stiffness() * travel * std::sqrt(travel), BodyLimitKind::kFullCompression);
   }
   const bool refused = RefusedForUnknownStrength(model.scene(), options);
-  if (covered && options.material) {
+  if (covered && !model.foam() && options.material) {
     const CandidateMaterial& m = *options.material;
     if (m.crush_behaviour == materials::CrushBehaviour::kCrushes && !rule.crushing_allowed) {
       consider(ForceAtPressure(model, m.compressive_strength_Pa / sf), BodyLimitKind::kCrush);
@@ -268,13 +286,19 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
   BodyRegionSpeedLimit out;
   const auto message = [&](std::string_view what) { return RegionMessage(limits, text, what); };
   double speed = force > 0.0 ? model.SpeedAtPeakForce(force) : 0.0;
+  if (model.foam()) {
+    const internal::LimitEnergy limit = internal::FoamLimitEnergy(model, limits, options);
+    by = limit.by;
+    speed = std::sqrt(2.0 * limit.energy_J / model.reduced_mass_kg());
+  }
+  out.covering_used_up_m_per_s = internal::UsedUpSpeed(model, kMaxSpeed_m_per_s);
   if (!refused && speed > kMaxSpeed_m_per_s) {
     out.status = SpeedLimitStatus::kSafeUpToSearchLimit;
     out.limited_by = BodyLimitKind::kNone;
     out.max_safe_speed_m_per_s = kMaxSpeed_m_per_s;
     out.at_limit = Judge(BodyContactModel::FromScene(AtSpeed(region_scene, kMaxSpeed_m_per_s)), limits, options,
                          &text);
-    out.message = message("safe up to the model's 100 m/s");
+    out.message = message(UsedUpText(out, "safe up to the model's 100 m/s"));
     return out;
   }
   if (!refused && speed >= kMinSpeed_m_per_s) {
@@ -296,7 +320,7 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
       const auto end = std::to_chars(digits, digits + sizeof digits, speed, std::chars_format::general, 6).ptr;
       std::string what(digits, end);
       what.append(" m/s, limited by ").append(ToString(by));
-      out.message = message(what);
+      out.message = message(UsedUpText(out, what));
       return out;
     }
   }
@@ -445,8 +469,9 @@ BodyRegionJudgement JudgeBodyContact(const BodyContactScene& scene, const materi
 }
 
 BodyRegionJudgement JudgeBodyContact(const BodyContactScene& scene, const materials::BodyLimits& limits,
-                                     const BodyRegionOptions& options, const TimeIntegrationOptions& time_path) {
-  ValidateOptions(options);
+                                     const BodyRegionOptions& given, const TimeIntegrationOptions& time_path) {
+  ValidateOptions(given);
+  const BodyRegionOptions options = Effective(given);
   const BodyContactModel model = BodyContactModel::FromScene(WithRegion(scene, limits));
   const ScopeText text = ScopeTextOf(limits, options.rule);
   return Judge(model, limits, options, &text, time_path);
@@ -458,8 +483,9 @@ BodyRegionSpeedLimit MaxSafeSpeed(const BodyContactScene& scene, const materials
 }
 
 BodyRegionSpeedLimit MaxSafeSpeed(const BodyContactScene& scene, const materials::BodyLimits& limits,
-                                  const BodyRegionOptions& options, const TimeIntegrationOptions& time_path) {
-  ValidateOptions(options);
+                                  const BodyRegionOptions& given, const TimeIntegrationOptions& time_path) {
+  ValidateOptions(given);
+  const BodyRegionOptions options = Effective(given);
   if (scene.robot_brakes()) ValidateTimeIntegrationOptions(time_path, "time_path.");
   return RegionSpeedLimit(WithRegion(scene, limits), limits, options, ScopeTextOf(limits, options.rule), time_path);
 }
@@ -477,9 +503,10 @@ std::vector<BodyRegionSpeedLimitRow> BodyRegionSpeedLimitTable(const BodyContact
 
 std::vector<BodyRegionSpeedLimitRow> BodyRegionSpeedLimitTable(const BodyContactScene& scene,
                                                                std::span<const materials::BodyLimits> regions,
-                                                               const BodyRegionOptions& options,
+                                                               const BodyRegionOptions& given,
                                                                const TimeIntegrationOptions& time_path) {
-  ValidateOptions(options);
+  ValidateOptions(given);
+  const BodyRegionOptions options = Effective(given);
   if (scene.robot_brakes()) ValidateTimeIntegrationOptions(time_path, "time_path.");
   BodyContactScene bare_scene = scene;
   bare_scene.covering.thickness_m = 0.0;
@@ -598,7 +625,8 @@ void FillGoverning(const DesignRule& rule, BodyRegionDesignCandidate& c) {
 
 BodyRegionDesignCandidate DesignCandidate(const RegionSet& set, const BodyRegionDesignRequest& r,
                                           const CandidateMaterial& material) {
-  BodyRegionOptions options{r.rule, material};
+  // The travel counts as the request's rule says (optimize's design rule).
+  BodyRegionOptions options{r.rule, material, r.rule.compression_counts()};
   auto covering = [&](double b) { return CoveringSpec{material.youngs_modulus_Pa, material.poisson_ratio, b}; };
   BodyRegionDesignCandidate c;
   c.material = material;
@@ -639,7 +667,7 @@ BodyRegionDesignResult DesignForBodyRegions(const BodyRegionDesignRequest& reque
 
   // The bare robot.
   {
-    const BodyRegionOptions bare_options{request.rule, std::nullopt};
+    const BodyRegionOptions bare_options{request.rule, std::nullopt, request.rule.compression_counts()};
     RegionSet::Verdicts bare = set.At(CoveringSpec{1.0, 0.25, 0.0}, bare_options, /*scopes=*/true);
     out.bare_robot = std::move(bare.regions);
     out.bare_head = bare.head;
@@ -741,6 +769,7 @@ BodyRegionOptions BodyRegionOptionsOf(double safety_factor, bool allow_full_comp
                             allow_full_compression ? DesignCriterion::kPaper : DesignCriterion::kNoFullCompression,
                             allow_crushing, unknown_strength_allowed};
   if (material) options.material = CandidateOf(*material);
+  options.keep_travel = !allow_full_compression;
   return options;
 }
 

@@ -107,8 +107,7 @@ Verdict BodyRegionVerdict(const BodyContactResult& contact, const materials::Bod
     v.Add("pressure", CriterionPart::kInjury, "Pa", *contact.peak_pressure_Pa, limits.pressure_Pa, kIsoTableA2Source);
   }
   if (covered) {
-    AddCoveringRules(v, contact.compression_ratio, contact.fully_compressed, contact.peak_pressure_Pa.value_or(0.0),
-                     rule, crush);
+    AddCoveringRules(v, contact.compression_ratio, contact.fully_compressed, contact.covering_stress_Pa, rule, crush);
   }
   return v;
 }

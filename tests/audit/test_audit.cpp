@@ -154,7 +154,8 @@ double DirectMaxSafeSpeed(const ca::AuditSetup& setup, const ca::AuditCovering& 
     scene.covering = covering.covering;
     scene.contact_area_m2 = setup.contact_area_m2;
     return co::MaxSafeSpeed(scene, setup.regions[r],
-                            co::BodyRegionOptions{setup.rule, covered ? covering.material : std::nullopt})
+                            co::BodyRegionOptions{setup.rule, covered ? covering.material : std::nullopt,
+                                                  setup.rule.compression_counts()})
         .max_safe_speed_m_per_s;
   }
   covopt::Scene scene = *setup.head;
@@ -218,7 +219,8 @@ TEST_CASE("the E* shortcut equals the direct speed limit and verdict at random F
             scene.robot_radius_m = link.points[p].radius_of_curvature_m;
             scene.covering = one.covering.covering;
             scene.contact_area_m2 = one.contact_area_m2;
-            const co::BodyRegionOptions options{one.rule, covered ? one.covering.material : std::nullopt};
+            const co::BodyRegionOptions options{one.rule, covered ? one.covering.material : std::nullopt,
+                                                one.rule.compression_counts()};
             scene.speed_m_per_s = c.max_safe_speed_m_per_s * (1.0 - 1e-9);
             CHECK(co::JudgeBodyContact(scene, one.regions[r], options).admissible);
             scene.speed_m_per_s = c.max_safe_speed_m_per_s;
@@ -622,7 +624,7 @@ TEST_CASE("a braking robot's audit is the brute-force braked maximum, found by b
             scene.reaction_delay_s = setup.reaction_delay_s;
             scene.braking_m_per_s2 = setup.braking_m_per_s2;
             const co::BodyRegionSpeedLimit limit =
-                co::MaxSafeSpeed(scene, setup.regions[r], co::BodyRegionOptions{setup.rule, material});
+                co::MaxSafeSpeed(scene, setup.regions[r], co::BodyRegionOptions{setup.rule, material, setup.rule.compression_counts()});
             REQUIRE(limit.status != co::SpeedLimitStatus::kEvaluationFailed);
             v_max = limit.max_safe_speed_m_per_s;
           } else {

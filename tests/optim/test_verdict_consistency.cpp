@@ -124,7 +124,8 @@ TEST_CASE("A body region's verdict agrees across its judgement, its speed limit 
             scene.robot_radius_m = 0.03;
             scene.covering = {candidate.youngs_modulus_Pa, candidate.poisson_ratio, thickness};
             if (thickness == 0.0) scene.contact_area_m2 = 1e-4;
-            const BodyRegionOptions options{DesignRule{sf}, thickness > 0.0 ? std::optional(candidate) : std::nullopt};
+            const BodyRegionOptions options{DesignRule{sf}, thickness > 0.0 ? std::optional(candidate) : std::nullopt,
+                                            /*keep_travel=*/true};
             INFO(limits.Describe() << ", " << name << ", " << thickness * 1e3 << " mm, " << speed << " m/s, SF " << sf);
             const BodyRegionJudgement j = JudgeBodyContact(scene, limits, options);
             ++cases;

@@ -16,6 +16,16 @@
 ///       F_b = K_c (0.8 b_c)^1.5                         the force at which it bottoms out
 ///       mu v²/2 = F²/(2 k_H) + W_c(F),  W_c(F) = 2/5 K_c^(-2/3) min(F, F_b)^(5/3)
 ///       a² = R_c delta_c(min(F, F_b)),  p_max = 3 F_max / (2 pi a²)   (Hertz peak pressure)
+///     a foam layer with its measured curve sigma(eps) (docs/model.md §15; the covering's law,
+///     CoveringSpec::law, kAuto takes it where the covering has a compressive_curve), h = b_c,
+///     d its compression, W and V the curve's integrals (compressive_curve.hpp):
+///       curved face (R_c = R_r + h):  F(d) = 2 pi R_c h W(d/h),  U_c(d) = 2 pi R_c h² V(d/h),
+///                                     p = sigma(d/h),  a² = 2 R_c d
+///       flat face with contact area A:  F(d) = A sigma(d/h),  U_c(d) = A h W(d/h),  p = F/A
+///       mu v²/2 = U_c(d) + F(d)²/(2 k_H): one monotone root in d on [0, d_end], d_end = eps_end h;
+///       past d_end the layer is a rigid stop (used up): mu v²/2 = U_c(d_end) + F²/(2 k_H),
+///       F >= F(d_end); the pressure past the stop is sigma_end + (F - F(d_end))/A on a curved
+///       face (A the bare robot's contact area; not evaluated without one), F/A on a flat face.
 ///
 /// Everything is SI; limits and verdicts are not here (a region's limits are data,
 /// covopt/materials/body_regions.hpp; the verdicts and speed limits are optim's,
@@ -54,7 +64,8 @@ struct BodyContactScene {
   double speed_m_per_s = 0.25;
   /// Radius of curvature of the robot surface under the covering [m], in [1e-4, 100] (the
   /// floor kMinRadius_m); kFlat if flat.
-  /// A covering needs a finite radius (its Hertz contact is sphere-on-flat).
+  /// A Hertz covering needs a finite radius (its contact is sphere-on-flat); a foam covering
+  /// takes a flat face with a contact area.
   double robot_radius_m = kFlat;
   /// The covering. thickness_m == 0 (the default): the bare robot, modulus and Poisson ratio
   /// ignored.
@@ -66,10 +77,12 @@ struct BodyContactScene {
   /// Transient (default) or clamped.
   ContactType contact = ContactType::kTransient;
   /// The bare robot's contact area A [m²], in [1e-6, 1] (the floor kMinContactArea_m2); 0 (default): not given, and the bare
-  /// robot's pressure is not evaluated. With a covering the pressure is the Hertz pressure
-  /// and this is not read.
+  /// robot's pressure is not evaluated. With a Hertz covering the pressure is the Hertz
+  /// pressure and this is not read. With a foam covering it is the flat face's area (needed
+  /// there), or on a curved face the bare robot's, for the pressure past the stop.
   double contact_area_m2 = 0.0;
-  /// The covering is fully compressed at this fraction of its thickness [-], in (0, 1].
+  /// The Hertz covering is fully compressed at this fraction of its thickness [-], in (0, 1].
+  /// A foam covering's travel is its curve's last strain (not read).
   double full_compression_fraction = 0.8;
   /// The robot's reaction, as the head scene's (RobotSpec, docs/model.md §10.2 and §13.10): from
   /// this long after first contact [s], in [0, 10], the robot brakes with `braking_m_per_s2`
@@ -102,31 +115,73 @@ class BodyContactModel {
   /// upper bound of it for a braking robot (the brake takes part of it).
   double impact_energy_J() const noexcept { return impact_energy_J_; }
   bool has_covering() const noexcept { return scene_.has_covering(); }
-  /// K_c [N/m^1.5]; 0 without a covering.
+  /// The covering's law as resolved from CoveringSpec::law (kFoam or kHertz; kHertz bare).
+  CoveringLaw covering_law() const noexcept { return law_; }
+  /// A foam covering (the law resolved to kFoam).
+  bool foam() const noexcept { return law_ == CoveringLaw::kFoam && has_covering(); }
+  /// K_c [N/m^1.5]; 0 without a Hertz covering.
   double covering_stiffness() const noexcept { return covering_stiffness_; }
-  /// R_c = R_r + b_c [m]; 0 without a covering.
+  /// R_c = R_r + b_c [m]; 0 without a covering (and for a foam layer on a flat face).
   double covering_outer_radius_m() const noexcept { return outer_radius_m_; }
-  /// The covering's travel 0.8 b_c [m]; 0 without a covering.
+  /// The covering's travel [m]: 0.8 b_c (Hertz), d_end = eps_end h (foam: the last strain of
+  /// its curve); 0 without a covering.
   double covering_travel_m() const noexcept { return travel_m_; }
-  /// F_b = K_c (0.8 b_c)^1.5 [N]: above it the covering is fully compressed; +inf without a
-  /// covering (nothing to bottom out).
+  /// The force at which the covering is used up [N]: F_b = K_c (0.8 b_c)^1.5 (Hertz), F(d_end)
+  /// (foam); +inf without a covering (nothing to bottom out).
   double bottom_out_force_N() const noexcept { return bottom_out_force_N_; }
+  /// The energy both springs hold when the covering is used up [J]: U_c(travel) + F_b²/(2 k_H);
+  /// +inf without a covering. Above it the contact is past the stop.
+  double bottom_out_energy_J() const noexcept { return bottom_out_energy_J_; }
 
-  /// The energy stored at contact force F [J], F >= 0: F²/(2 k_H) + W_c(F).
+  /// The energy stored at contact force F [J], F >= 0: F²/(2 k_H) + W_c(F). A foam layer's
+  /// F(d) may be constant over a plateau of its curve (a flat face): then the largest energy
+  /// whose peak force is F (the last compression with that force).
   double EnergyAtForce(double force_N) const noexcept;
-  /// The covering's deflection at force F [m]: (min(F, F_b)/K_c)^(2/3); 0 bare.
+  /// The covering's deflection at force F [m]: (min(F, F_b)/K_c)^(2/3) (Hertz); the largest
+  /// d with F(d) <= F, at most d_end (foam); 0 bare.
   double CoveringDeflectionAtForce(double force_N) const noexcept;
   /// The total approach (robot toward the region's mass) at force F [m]: F/k_H + deflection.
   double ApproachAtForce(double force_N) const noexcept;
-  /// The peak pressure at force F [Pa]: Hertz 3F/(2 pi a²) with a covering, F/A bare with an
-  /// area; empty bare without an area.
+  /// The peak pressure at force F [Pa]: Hertz 3F/(2 pi a²) with a Hertz covering; the foam's
+  /// sigma(d/h) (past the stop the rule of the file comment: empty on a curved face without an
+  /// area); F/A bare with an area; empty bare without an area.
   std::optional<double> PressureAtForce(double force_N) const noexcept;
   /// The speed [m/s] at which the peak force is F: sqrt(2 EnergyAtForce(F) / mu).
   double SpeedAtPeakForce(double force_N) const noexcept;
   /// The force of the energy balance EnergyAtForce(F) = energy [N], energy >= 0: one
   /// monotone root, solved in s = F^(1/3) (a polynomial: no pow in the iteration), to ~1e-15
-  /// relative.
+  /// relative (Hertz); for a foam layer the root d of EnergyAtDeflection (below).
   double ForceAtEnergy(double energy_J) const noexcept;
+
+  /// A foam layer (foam() true; 0 otherwise) at compression d [m], clamped to [0, d_end]:
+  /// its force F(d) [N], its energy U_c(d) [J], both springs' energy U_c(d) + F(d)²/(2 k_H) [J]
+  /// and its stress sigma(d/h) [Pa].
+  double FoamForceAtDeflection(double deflection_m) const noexcept;
+  double FoamEnergyAtDeflection(double deflection_m) const noexcept;
+  double EnergyAtDeflection(double deflection_m) const noexcept;
+  double FoamStressAtDeflection(double deflection_m) const noexcept;
+  /// The foam layer's compression d [m] at which EnergyAtDeflection(d) = energy, energy in
+  /// [0, bottom_out_energy_J()] (clamped): one monotone root, located on the curve's pieces and
+  /// solved by Newton on the piece's polynomial (convex: it descends onto the root), ~1e-15.
+  double FoamDeflectionAtEnergy(double energy_J) const noexcept { return FoamStateAtEnergy(energy_J).deflection_m; }
+  /// A foam layer's state at compression d: d [m], F(d) [N], U_c(d) [J], σ(d/h) [Pa].
+  struct FoamState {
+    double deflection_m = 0.0;
+    double force_N = 0.0;
+    double covering_energy_J = 0.0;
+    double stress_Pa = 0.0;
+  };
+  /// The state at the root of FoamDeflectionAtEnergy, from the root's own polynomial.
+  FoamState FoamStateAtEnergy(double energy_J) const noexcept;
+  /// A foam layer's law: on a flat face (F = A σ) or a curved one (F = 2π R_c h W), and the
+  /// factors of its force and energy in the curve's integrals: F = foam_force_factor() W(d/h)
+  /// curved (σ(d/h) flat) [m²], U_c = foam_energy_factor() V(d/h) curved (W(d/h) flat) [m³].
+  bool foam_flat_face() const noexcept { return flat_foam_; }
+  double foam_force_factor() const noexcept { return foam_force_factor_; }
+  double foam_energy_factor() const noexcept { return foam_energy_factor_; }
+  /// The largest foam compression d [m] whose stress sigma(d/h) is <= stress (d_end above
+  /// sigma_end): the end of a plateau, so that a limit on the stress is the largest safe d.
+  double FoamDeflectionAtStress(double stress_Pa) const noexcept;
 
  private:
   BodyContactScene scene_;
@@ -138,6 +193,27 @@ class BodyContactModel {
   double bottom_out_force_N_ = 0.0;
   double compliance_factor_ = 0.0;  // K_c^(-2/3) [m/N^(2/3)]
   double bottom_out_root_ = 0.0;    // F_b^(1/3) [N^(1/3)]
+  double bottom_out_energy_J_ = 0.0;
+  CoveringLaw law_ = CoveringLaw::kHertz;
+  // The foam layer: its curve (owned by scene_.covering), thickness h, and the factors of its
+  // force and energy in the curve's W (curved) or sigma (flat): F = force_factor_ W(d/h) or
+  // force_factor_ sigma(d/h); U_c = energy_factor_ V(d/h) or energy_factor_ W(d/h).
+  const CompressiveCurve* curve_ = nullptr;
+  bool flat_foam_ = false;
+  double foam_thickness_m_ = 0.0;
+  double foam_force_factor_ = 0.0;
+  double foam_energy_factor_ = 0.0;
+  void SetUpFoam();
+  std::optional<double> FoamPressureAtForce(double force_N) const noexcept;
+  double FoamDeflectionAtForce(double force_N) const noexcept;
+};
+
+/// Whether a covering's law describes the contact at the peak (docs/model.md §15.5).
+struct CoveringValidity {
+  /// The result lies where the covering's law holds.
+  bool within = true;
+  /// Why, in words (a static text); empty bare.
+  std::string_view note;
 };
 
 /// One sample of a body-contact history (time path).
@@ -170,18 +246,36 @@ struct BodyContactResult {
   /// p_max [Pa]: the covering's Hertz peak pressure, or F_max/A bare with an area; empty bare
   /// without a contact area (not evaluated).
   std::optional<double> peak_pressure_Pa;
-  /// The Hertz contact radius a at the peak [m] (with a covering; 0 bare).
+  /// The contact radius a at the peak [m]: Hertz's, or a foam's sqrt(2 R_c d) on a curved face
+  /// (sqrt(A/pi) on a flat one); 0 bare.
   double contact_radius_m = 0.0;
   double covering_deflection_m = 0.0;    ///< δ_c at the peak [m]; 0 bare
   double body_deflection_m = 0.0;        ///< F_max / k_H [m]
   double max_approach_m = 0.0;           ///< δ_c + δ_b at the peak [m]
   double body_energy_J = 0.0;            ///< F_max²/(2 k_H) [J]
   double covering_energy_J = 0.0;        ///< W_c(F_max) [J]
-  /// δ_c / (0.8 b_c) at the peak [-]: 1 at full compression; 0 bare. Past F_b it is 1 and
-  /// fully_compressed is set.
+  /// δ_c / travel at the peak [-] (0.8 b_c Hertz, d_end foam: the share of the measured curve
+  /// used): 1 at full compression; 0 bare. Past F_b it is 1 and fully_compressed is set.
   double compression_ratio = 0.0;
-  /// The covering bottomed out (F_max > F_b): the robot pressed on the region through it.
+  /// The covering bottomed out (used up: F_max > F_b, past a foam's measured curve): the robot
+  /// pressed on the region through it, as through a rigid stop.
   bool fully_compressed = false;
+  /// The covering's law (kFoam or kHertz); empty bare.
+  std::optional<CoveringLaw> covering_law;
+  /// Where the law holds (CoveringValidity); within and no note bare.
+  CoveringValidity validity;
+  /// The covering's nominal strain at the peak, δ_c / b_c [-] (d/h for a foam); 0 bare.
+  double peak_strain = 0.0;
+  /// The energy the body spring took after the covering was used up [J]: the energy at the
+  /// peak less bottom_out_energy_J(); 0 when not used up.
+  double energy_past_stop_J = 0.0;
+  /// Past a foam's stop on a curved face, the pressure is sigma_end plus the bare robot's
+  /// (F - F(d_end))/A (BodyContactModel's file comment): set then (and empty without an area).
+  bool pressure_past_stop = false;
+  /// The covering's compressive stress at the peak [Pa] (what a crush check compares with its
+  /// strength): the peak pressure; past a foam's stop on a curved face without an area, where
+  /// the pressure is not evaluated, σ_end (a lower bound); 0 bare.
+  double covering_stress_Pa = 0.0;
   /// Contact duration [s]: the time path's; on the exact path the bare robot's pi sqrt(mu/k_H),
   /// and empty with a covering (not computed: the peaks need no integration).
   std::optional<double> contact_duration_s;

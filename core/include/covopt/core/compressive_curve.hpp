@@ -65,6 +65,10 @@ class CompressiveCurve {
   /// W(ε_end), V(ε_end) [J/m³].
   double total_energy_density_J_per_m3() const noexcept { return energy_.back(); }
   double total_second_integral_J_per_m3() const noexcept { return second_.back(); }
+  /// W and V [J/m³] at the strain of the given point i (0-based, i < points().size()), exact,
+  /// without a search (for callers that walk the pieces).
+  double EnergyDensityAtPoint(std::size_t i) const noexcept { return energy_[i + 1]; }
+  double SecondIntegralAtPoint(std::size_t i) const noexcept { return second_[i + 1]; }
 
   /// The strain at which W(ε) = w [-], w in [0, W(ε_end)] (one root per piece, closed form);
   /// empty for w above W(ε_end) (the layer is used up).

@@ -65,10 +65,21 @@ struct BodyRegionOptions {
   /// scene's). Empty: a covering given by its modulus (no crush check: CrushCheck::kNoMaterial).
   /// Not read for the bare robot.
   std::optional<CandidateMaterial> material;
+  /// The design rule "within the covering's travel" (docs/model.md §15.6) as a limit: the
+  /// covering's compression stays within its travel with the safety factor as a reserve,
+  /// SF × δ_c / travel <= 1 — travel 0.8 b_c for a Hertz layer (today's full-compression limit,
+  /// exactly), the curve's last strain ε_end h for a foam (d <= ε_end h / SF). It is the
+  /// verdict's "full-compression" criterion (a design rule), counted when set. Default false:
+  /// the verdicts and speed limits judge injury, the criterion is reported uncounted, and a
+  /// covering used up below the limit is reported as its own speed
+  /// (BodyRegionSpeedLimit::covering_used_up_m_per_s). The rule's criterion (DesignRule) is not
+  /// read for the body regions: this decides.
+  bool keep_travel = false;
 };
 
 /// The options of a body-region verdict as both shells take them: the safety factor; the
-/// paper's criterion when `allow_full_compression`, else no full compression; crushing allowed
+/// paper's criterion when `allow_full_compression`, else no full compression (keep_travel set:
+/// the shells' behaviour until the covering law is wired into them); crushing allowed
 /// when `allow_crushing`; a covering of unknown strength judged without the crush check when
 /// `unknown_strength_allowed`; and the covering's catalog `material` (its crush behaviour and
 /// strength), if any.
@@ -139,10 +150,16 @@ struct BodyRegionSpeedLimit {
   std::string message;
   /// The time-path runs a braking robot's limit took; 0 in closed form.
   int time_path_runs = 0;
+  /// The speed [m/s] at which the covering is used up (its travel reached: past it a rigid
+  /// stop), when it is below the model's 100 m/s; empty bare and for a braking robot (no closed
+  /// form). Below max_safe_speed_m_per_s the message says "covering used up at v = ...": not an
+  /// injury, and without keep_travel not a limit.
+  std::optional<double> covering_used_up_m_per_s;
 };
 
 /// The largest safe speed of `scene`'s robot and covering against `limits` (scene's speed is
-/// ignored), in closed form on the energy balance; bracketed on the time path for a braking
+/// ignored), in closed form on the energy balance (a foam covering: each limit is an energy,
+/// docs/model.md §15.6); bracketed on the time path for a braking
 /// robot (see the file comment: about 10 runs).
 /// @throws std::invalid_argument as JudgeBodyContact.
 BodyRegionSpeedLimit MaxSafeSpeed(const BodyContactScene& scene,
