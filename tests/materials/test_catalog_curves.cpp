@@ -255,6 +255,22 @@ TEST_CASE("every built-in curve is valid and sourced, and at least 12 materials 
   CHECK(curves - banded >= 5);  // measured or fitted curves, not grade bands
 }
 
+TEST_CASE("the closed-cell PE foam's curve is the paper's table, strain = 1 - stretch", "[curve][builtin]") {
+  const Material* pe = Catalog::BuiltIn().Find("PE foam closed-cell (Kossa 2016)");
+  REQUIRE(pe != nullptr);
+  const CompressiveCurve& curve = *pe->compressive_curve;
+  REQUIRE(curve.points().size() == 15);
+  CHECK(curve.points().front().strain == 0.05);
+  CHECK(curve.points().front().stress_Pa == Approx(9100.0).epsilon(1e-12));
+  CHECK(curve.last_strain() == 0.75);
+  CHECK(curve.last_stress_Pa() == Approx(353570.0).epsilon(1e-12));
+  CHECK(*covopt::materials::StressAt25Pa(*pe) == Approx(41410.0).epsilon(1e-12));
+  // Equal steps of 5 %: the trapezoid rule over the table, by hand (5 % x the mean stresses).
+  CHECK(curve.EnergyDensityAt(0.25) == Approx(5345.25).epsilon(1e-9));
+  CHECK(curve.total_energy_density_J_per_m3() == Approx(72627.75).epsilon(1e-9));
+  CHECK(pe->youngs_modulus_Pa == Approx(41410.0 / 0.25).epsilon(1e-3));
+}
+
 TEST_CASE("VN600's curve is NIST's record: its energy integrals", "[curve][builtin][vn600]") {
   const Material* vn = Catalog::BuiltIn().Find("vinyl-nitrile foam VN600");
   REQUIRE(vn != nullptr);
