@@ -84,6 +84,11 @@ void ResolveScene(const OptimizeOptions& o, Resolved& r) {
   if (o.choices.covering_law) {
     r.request.scene.covering.law =
         AsInputError([&] { return scene_file::ParseCoveringLawOrThrow(*o.choices.covering_law, "--covering-law"); });
+    if (r.request.scene.covering.law == CoveringLaw::kFoam) {
+      throw InputError("--covering-law foam: optimize designs with the Hertz law today (its candidates carry no "
+                       "measured curve yet); judge a foam with simulate or speed-limit --material NAME "
+                       "--covering-law foam");
+    }
   }
   if (o.robot_model.given()) {  // --urdf ...: robot.mass from the robot model
     RobotModelMass mass = ResolveRobotModelMass(o.robot_model, o.scene_values.count(kRobotMassField) != 0);

@@ -311,6 +311,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     }
   }
   ApplySceneFlags(options, plan);
+  scene_file::KeepCurveOnlyUnderFoamLaw(plan.scene.covering);
   if (!plan.ranges.empty() && !options.accept_ranges) {
     throw InputError(fmt::format("{} '{}': a range (an uncertain input) is taken by simulate, optimize and speed-limit "
                                  "only; this command needs one value",

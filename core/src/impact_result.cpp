@@ -368,11 +368,13 @@ CoveringValidity CoveringLawValidity(const ImpactModel& model, const ImpactPeaks
     validity.note = "no covering";
     return validity;
   }
-  validity.within = !peaks.fully_compressed;
+  // A used-up foam layer is modelled (a rigid stop, then the bare robot's chain): within the
+  // law, as for a body region (§15.5); a fully compressed Hertz covering is beyond its law.
+  validity.within = model.is_foam() || !peaks.fully_compressed;
   const std::string strain = FormatSignificant(peaks.covering_strain_at_peak, 3);
   if (model.is_foam()) {
     const std::string last = FormatSignificant(model.scene().covering.compressive_curve->last_strain(), 3);
-    if (validity.within) {
+    if (!peaks.fully_compressed) {
       validity.note = "foam law: within the measured curve (strain " + strain + " of its last " + last + " at the peak)";
     } else {
       validity.note = "foam law: the layer is used up (strain " + last +

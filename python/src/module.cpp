@@ -250,6 +250,7 @@ SceneInputs ReadScene(const py::kwargs& keywords) {
     throw std::invalid_argument(scene_file::Respell(e.what(), SceneKeywords(), scene_file::ValueStyle::kKeyword));
   }
   inputs.scene = resolved.scene;
+  scene_file::KeepCurveOnlyUnderFoamLaw(inputs.scene.covering);
   inputs.limits = resolved.limits;
   inputs.safety_factor = resolved.safety_factor;
   if (const materials::Material* m = resolved.covering_material) {

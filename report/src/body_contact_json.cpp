@@ -67,6 +67,9 @@ ordered_json JudgementObject(const optim::BodyRegionJudgement& v, double safety_
   j["body_deflection_m"] = Number(c.body_deflection_m);
   j["compression_ratio"] = Number(v.compression_ratio);
   j["fully_compressed"] = c.fully_compressed;
+  // The covering's law (null bare) and whether the peak is within what it describes.
+  j["covering_law"] = c.covering_law ? ordered_json(ToString(*c.covering_law)) : ordered_json(nullptr);
+  j["validity"] = {{"within", c.validity.within}, {"note", c.validity.note}};
   j["force"] = {{"value_N", Number(c.peak_force_N)},
                 {"limit_N", Number(v.limits.force_N)},
                 {"ratio", Number(v.force_ratio)}};

@@ -166,7 +166,8 @@ std::optional<std::string> ContactAreaNote(const ContactTargets& targets, const 
 bool BodyRegionReads(std::string_view field) noexcept {
   static constexpr std::string_view kRead[] = {
       "robot.mass",         "robot.speed",       "robot.radius",         "covering.modulus",      "covering.poisson",
-      "covering.thickness", "covering.material", "limits.safety_factor", "robot.reaction_delay", "robot.braking"};
+      "covering.thickness", "covering.material", "covering.law",     "limits.safety_factor", "robot.reaction_delay",
+      "robot.braking"};
   return std::find(std::begin(kRead), std::end(kRead), field) != std::end(kRead);
 }
 

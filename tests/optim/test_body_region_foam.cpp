@@ -155,7 +155,7 @@ TEST_CASE("foam body region: a used-up covering is judged by injury, or by keep_
   CHECK_FALSE(kept.verdict.design_rules_met());
 }
 
-TEST_CASE("foam body region: keep_travel reproduces a Hertz covering's full-compression limit; without it the "
+TEST_CASE("foam body region: keep_travel reproduces a Hertz covering's full-compression limit, and without it the "
           "used-up speed is reported",
           "[body_region][foam]") {
   BodyContactScene s = Foam(0.01, 0.02);

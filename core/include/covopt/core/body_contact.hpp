@@ -208,14 +208,6 @@ class BodyContactModel {
   double FoamDeflectionAtForce(double force_N) const noexcept;
 };
 
-/// Whether a covering's law describes the contact at the peak (docs/model.md §15.5).
-struct CoveringValidity {
-  /// The result lies where the covering's law holds.
-  bool within = true;
-  /// Why, in words (a static text); empty bare.
-  std::string_view note;
-};
-
 /// One sample of a body-contact history (time path).
 struct BodyContactSample {
   double time_s = 0.0;

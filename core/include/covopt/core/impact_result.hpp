@@ -80,9 +80,10 @@ struct ImpactPeaks {
 ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
                                   double max_penetration_m) noexcept;
 
-/// Whether the covering stayed within its law's validity at the peak (docs/model.md §16): the
-/// foam law within its measured curve (a used-up layer is a rigid stop, modelled, and the note
-/// says how much energy passed it); the Hertz law not fully compressed.
+/// Whether the covering stayed within its law's validity at the peak, for the head (docs/model.md
+/// §16: the foam law within its measured curve, a used-up layer being a rigid stop, modelled,
+/// the note saying how much energy passed it; the Hertz law not fully compressed) and for a
+/// body region (§15.5: BodyContactResult::validity).
 struct CoveringValidity {
   bool within = true;
   std::string note;  ///< for people, with the numbers
