@@ -615,8 +615,8 @@ damping [s/m] (Hunt-Crossley), reaction_delay [s] and braking [m/s2] (the robot 
 after first contact), torso_mass [kg], neck_stiffness [N/m], neck_damping [N s/m] (the head on a
 neck). material: a built-in catalog name (sets covering_modulus and covering_poisson);
 thresholds: "cumulative" (default) or "literal"; head_area: the struck area ("frontal", ...);
-covering_law: "auto" (default: the foam law where the material has a measured compressive curve,
-else Hertz), "foam" or "hertz"; laceration_limit [Pa] (1e6), contusion_limit
+covering_law: "auto" (default; today the Hertz law in every call), "foam" (a material's measured
+compressive curve, simulate and speed limits; optimize not yet) or "hertz"; laceration_limit [Pa] (1e6), contusion_limit
 [J/m2] (25200); safety_factor in [1, 100]: a verdict is safe when safety_factor x ratio <= 1.
 Bad values raise ValueError naming the keyword; an unknown keyword TypeError.
 ranges: {keyword: (low, high) or "LO..HI"}, a population for worst_case, injury_probability and
