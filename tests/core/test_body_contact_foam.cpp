@@ -3,7 +3,7 @@
 // here (the pressure of every column integrated over the contact, the columns' energy likewise,
 // and bisection on the energy balance), on curved and flat faces, transient and clamped, within
 // the curve and used up; the time path agrees with the exact path; a covering never reads worse
-// than the bare robot; thicker foam never lowers the force-limited speed; DESIGN's check numbers.
+// than the bare robot; thicker foam never lowers the force-limited speed; the round check numbers of model.md §15.7.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -27,7 +27,7 @@ using covopt::ContactType;
 using covopt::CoveringLaw;
 using covopt::StrainStressPoint;
 
-/// VN600 vinyl-nitrile (NIST foam_db, quasi-static): the eleven points of the brief [kPa].
+/// VN600 vinyl-nitrile (NIST foam_db, quasi-static): the eleven rounded points of model.md §15.7 [kPa].
 std::shared_ptr<const CompressiveCurve> Vn600() {
   static const std::vector<StrainStressPoint> kPoints{
       {0.02, 14.3e3}, {0.05, 22.0e3}, {0.10, 30.2e3},  {0.15, 37.4e3},  {0.20, 45.9e3}, {0.25, 57.3e3},
@@ -35,7 +35,7 @@ std::shared_ptr<const CompressiveCurve> Vn600() {
   static const auto curve = std::make_shared<const CompressiveCurve>(CompressiveCurve::FromPoints(kPoints));
   return curve;
 }
-/// The six points DESIGN's check numbers were computed with (2/5/10/25/40/49 %).
+/// The six points the round check numbers of model.md §15.7 were computed with (2/5/10/25/40/49 %).
 std::shared_ptr<const CompressiveCurve> Vn600SixPoints() {
   static const std::vector<StrainStressPoint> kPoints{{0.02, 14.3e3}, {0.05, 22.0e3},  {0.10, 30.2e3},
                                                       {0.25, 57.3e3}, {0.40, 118.0e3}, {0.49, 189.5e3}};
@@ -343,12 +343,12 @@ TEST_CASE("Foam body contact: thicker foam never lowers the force-limited speed"
   }
 }
 
-TEST_CASE("Foam body contact: DESIGN's check numbers (VN600, hand, 10 kg, R_r 15 mm, transient)",
+TEST_CASE("Foam body contact: the round check numbers (VN600, hand, 10 kg, R_r 15 mm, transient)",
           "[body_contact][foam]") {
   // 280 N: the hand's transient force limit (2 x 140 N, Table A.2).
   const double bare = BodyContactModel::FromScene(Hand(1.0, 0.015, 0.0)).SpeedAtPeakForce(280.0);
   CHECK(bare == Approx(1.35895).epsilon(1e-5));
-  // With the six points DESIGN used: 2.67 m/s (40 mm), used up at 0.62 m/s and force-limited
+  // With the six points of the round numbers: 2.67 m/s (40 mm), used up at 0.62 m/s and force-limited
   // at 1.47 m/s (10 mm), 1.89 m/s (20 mm).
   auto model = [](double thickness, std::shared_ptr<const CompressiveCurve> curve) {
     return BodyContactModel::FromScene(Hand(1.0, 0.015, thickness, std::move(curve)));

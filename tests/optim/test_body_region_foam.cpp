@@ -1,5 +1,5 @@
-// Body-region verdicts and speed limits with a foam covering (docs/model.md §15.6): DESIGN's
-// check numbers through MaxSafeSpeed, the closed-form limit against a bisection on the verdict,
+// Body-region verdicts and speed limits with a foam covering (docs/model.md §15.6): the round
+// check numbers of model.md §15.7 through MaxSafeSpeed, the closed-form limit against a bisection on the verdict,
 // the covering used up reported as its own speed (not a limit, not UNSAFE) unless keep_travel,
 // keep_travel reproducing the Hertz full-compression limits, a covering never below the bare
 // robot's limit on a flat face, and thicker foam never lowering the limit.
@@ -27,7 +27,7 @@ namespace co = covopt::optim;
 std::shared_ptr<const CompressiveCurve> Curve(const std::vector<StrainStressPoint>& points) {
   return std::make_shared<const CompressiveCurve>(CompressiveCurve::FromPoints(points));
 }
-/// VN600 vinyl-nitrile: the eleven points of the brief, and the six DESIGN's numbers used [Pa].
+/// VN600 vinyl-nitrile: the eleven rounded points of model.md §15.7, and the six the round numbers were computed with [Pa].
 std::shared_ptr<const CompressiveCurve> Vn600() {
   static const auto curve = Curve({{0.02, 14.3e3}, {0.05, 22.0e3}, {0.10, 30.2e3}, {0.15, 37.4e3},
                                    {0.20, 45.9e3}, {0.25, 57.3e3}, {0.30, 72.2e3}, {0.35, 91.6e3},
@@ -63,7 +63,7 @@ co::BodyRegionOptions Options(double safety_factor, bool keep_travel) {
 
 }  // namespace
 
-TEST_CASE("foam body region: DESIGN's check numbers through MaxSafeSpeed (VN600, hand, 10 kg, transient)",
+TEST_CASE("foam body region: the round check numbers through MaxSafeSpeed (VN600, hand, 10 kg, transient)",
           "[body_region][foam]") {
   const co::BodyRegionOptions injury = Options(1.0, false);
   BodyContactScene bare = Foam(0.0);
