@@ -247,9 +247,21 @@ void FinishCoveringFields(const BodyContactModel& model, BodyContactResult& r) n
   if (model.foam()) {
     r.validity = FoamValidity(model, r);
   } else {
-    // Today's reading of the Hertz layer; the solid-elastomer limit is the callers' (issue 35).
-    r.validity = {true, r.fully_compressed ? "Hertz half-space law; past its travel the covering is a rigid stop"
-                                           : "Hertz half-space law (a small-strain solid thicker than its contact)"};
+    // Past its travel the layer is modelled as a rigid stop, but as for the head (Park's phase
+    // 3) a fully compressed Hertz covering is beyond its law; a solid elastomer has its limits.
+    r.validity.note = r.fully_compressed
+                          ? "Hertz half-space law: fully compressed; past its travel the covering is a rigid stop"
+                          : "Hertz half-space law (a small-strain solid thicker than its contact)";
+    const CoveringSpec& covering = model.scene().covering;
+    ApplyHertzCoveringLimits({.poisson_ratio = covering.poisson_ratio,
+                                        .thickness_m = covering.thickness_m,
+                                        .strain = r.peak_strain,
+                                        .contact_radius_m = r.contact_radius_m,
+                                        // past the travel: F_max/F_b > 1 (δ_c stays at the travel)
+                                        .travel_ratio = r.fully_compressed ? r.peak_force_N / model.bottom_out_force_N()
+                                                                           : r.compression_ratio,
+                                        .fully_compressed = r.fully_compressed},
+                                       r.validity);
   }
 }
 

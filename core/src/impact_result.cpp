@@ -362,6 +362,59 @@ void WarnLiteralThresholds(const ImpactModel& model, const ImpactPeaks& peaks, c
 
 }  // namespace
 
+void ApplyHertzCoveringLimits(const HertzCoveringAtPeak& peak, CoveringValidity& validity) {
+  validity.ratio_full_compression_allowed = 0.0;
+  std::string limits;
+  if (peak.poisson_ratio >= kSolidElastomerMinPoissonRatio) {
+    const double strain_ratio = peak.strain / kSolidElastomerMaxStrain;
+    const double max_radius_m = kSolidElastomerMaxContactRadiusPerThickness * peak.thickness_m;
+    const double radius_ratio = peak.contact_radius_m / max_radius_m;
+    validity.ratio_full_compression_allowed = std::max(strain_ratio, radius_ratio);
+    const std::string strain = "peak strain " + FormatSignificant(peak.strain, 3);
+    const std::string radius = "contact radius " + Millimetres(peak.contact_radius_m);
+    const std::string thickness = "the layer's thickness " + Millimetres(peak.thickness_m);
+    const std::string max_strain = FormatSignificant(kSolidElastomerMaxStrain, 3);
+    limits = "; solid elastomer (ν " + FormatSignificant(peak.poisson_ratio, 3) + ") under the Hertz law: ";
+    if (strain_ratio > 1.0) {
+      limits += strain + " > " + max_strain +
+                " (a bonded incompressible layer bulges; the half-space law does not describe it)";
+    }
+    if (radius_ratio > 1.0) {
+      limits += std::string(strain_ratio > 1.0 ? ", and " : "") + radius + " > " + thickness +
+                " (the half-space law needs a contact much smaller than the layer)";
+    }
+    if (!(strain_ratio > 1.0) && !(radius_ratio > 1.0)) {
+      limits += "within its limits, " + strain + " <= " + max_strain + " and " + radius + " <= " + thickness;
+    }
+  }
+  validity.ratio = std::max(peak.fully_compressed ? std::max(peak.travel_ratio, 1.0) : std::min(peak.travel_ratio, 1.0),
+                            validity.ratio_full_compression_allowed);
+  validity.within = !peak.fully_compressed && !(validity.ratio_full_compression_allowed > 1.0);
+  validity.note += limits;
+}
+
+namespace {
+
+/// The head's Hertz covering at `peaks`: its phase-2 (covering on bone) compression and
+/// contact radius, √(x/c2) at the phase-local penetration x reached.
+HertzCoveringAtPeak HeadHertzCovering(const ImpactModel& model, const ImpactPeaks& peaks) {
+  HertzCoveringAtPeak peak;
+  peak.poisson_ratio = model.scene().covering.poisson_ratio;
+  peak.thickness_m = model.scene().covering.thickness_m;
+  peak.strain = peaks.covering_strain_at_peak;
+  peak.travel_ratio = peaks.covering_compression_ratio();
+  peak.fully_compressed = peaks.fully_compressed;
+  for (std::size_t i = 0; i < model.segment_count(); ++i) {
+    const ForceLawSegment& seg = model.segment(i);
+    if (seg.phase != Phase::kCoveringOnBone || !(peaks.max_penetration_m > seg.start_m)) continue;
+    const double x = std::min(peaks.max_penetration_m, seg.end_m) - seg.origin_m;
+    peak.contact_radius_m = std::sqrt(x / seg.curvature_per_m);
+  }
+  return peak;
+}
+
+}  // namespace
+
 CoveringValidity CoveringLawValidity(const ImpactModel& model, const ImpactPeaks& peaks) {
   CoveringValidity validity;
   if (!model.has_covering()) {
@@ -370,7 +423,6 @@ CoveringValidity CoveringLawValidity(const ImpactModel& model, const ImpactPeaks
   }
   // A used-up foam layer is modelled (a rigid stop, then the bare robot's chain): within the
   // law, as for a body region (§15.5); a fully compressed Hertz covering is beyond its law.
-  validity.within = model.is_foam() || !peaks.fully_compressed;
   const std::string strain = FormatSignificant(peaks.covering_strain_at_peak, 3);
   if (model.is_foam()) {
     const std::string last = FormatSignificant(model.scene().covering.compressive_curve->last_strain(), 3);
@@ -385,9 +437,11 @@ CoveringValidity CoveringLawValidity(const ImpactModel& model, const ImpactPeaks
     }
     return validity;
   }
-  validity.note = validity.within ? "hertz law: not fully compressed (" + Percent(peaks.covering_compression_ratio()) +
-                                        " of the covering's travel used at the peak)"
-                                  : "hertz law: fully compressed: the robot reaches the bone through the covering";
+  validity.note = !peaks.fully_compressed ? "hertz law: not fully compressed (" +
+                                                Percent(peaks.covering_compression_ratio()) +
+                                                " of the covering's travel used at the peak)"
+                                          : "hertz law: fully compressed: the robot reaches the bone through the covering";
+  ApplyHertzCoveringLimits(HeadHertzCovering(model, peaks), validity);
   return validity;
 }
 

@@ -87,12 +87,65 @@ ImpactPeaks PeaksAtMaxPenetration(const ImpactModel& model, std::size_t segment,
 struct CoveringValidity {
   bool within = true;
   std::string note;  ///< for people, with the numbers
+  /// How far the covering went along its law's validity limits [-]: the largest value/limit
+  /// of the limits that apply, so `within` is ratio <= 1 (up to rounding at the edge). Hertz:
+  /// the share of the covering's travel used (1 at full compression) and, for a solid
+  /// elastomer, strain/kSolidElastomerMaxStrain and a_c/b_c; a foam on a curved body face:
+  /// d/(R_c/2); 0 where the law sets no limit (bare; a foam on the head or on a flat face,
+  /// whose used-up layer is a modelled stop).
+  double ratio = 0.0;
+  /// The same without a Hertz covering's full compression, which the paper's criterion
+  /// (allow_full_compression: Park's phase 3 accepted) does not count [-]: the covering is
+  /// within its law under that criterion while this is <= 1.
+  double ratio_full_compression_allowed = 0.0;
 };
+
+/// A solid elastomer under the Hertz law (docs/model.md §12.2): a covering whose Poisson ratio
+/// is at least this is nearly incompressible [-]. Bonded to the robot it cannot compress
+/// without bulging out sideways, and its shape factor stiffens it (a bonded pad's apparent
+/// modulus E (1 + β S²) grows with loaded area over free area), which the half-space law does
+/// not describe. Below it (foams, ν ≈ 0-0.3) the layer changes volume and the limit does not
+/// apply.
+inline constexpr double kSolidElastomerMinPoissonRatio = 0.45;
+
+/// The largest peak nominal strain δ_c/b_c [-] at which the Hertz law is taken to describe a
+/// solid elastomer bonded as a layer: Hertz is a small-strain law, and beyond about 20 % a
+/// bonded incompressible layer's bulging and shape-factor stiffening dominate its response.
+inline constexpr double kSolidElastomerMaxStrain = 0.20;
+
+/// The largest contact radius a_c of a solid elastomer under the Hertz law, as a multiple of
+/// its thickness b_c [-]: the half-space needs a contact small against the layer (a << b_c);
+/// a contact as wide as the layer is thick feels the rigid core under it, and the
+/// incompressible layer is confined there.
+inline constexpr double kSolidElastomerMaxContactRadiusPerThickness = 1.0;
+
+/// A Hertz covering at the peak, as its validity needs it.
+struct HertzCoveringAtPeak {
+  double poisson_ratio = 0.0;        ///< ν_c [-]
+  double thickness_m = 0.0;          ///< b_c [m]
+  double strain = 0.0;               ///< its own nominal strain δ_c / b_c [-]
+  double contact_radius_m = 0.0;     ///< its contact radius a_c [m]
+  /// The share of its travel used, 1 at full compression and > 1 beyond (the head's δ beyond
+  /// t2, a body region's F_max/F_b) [-]
+  double travel_ratio = 0.0;
+  bool fully_compressed = false;     ///< past its travel
+};
+
+/// Adds a Hertz covering's limits to `validity`, whose note says what the travel did: beyond it
+/// (fully compressed) the covering is not within, and a solid elastomer (ν >= 0.45) is within
+/// only while its strain is <= kSolidElastomerMaxStrain and a_c <= b_c; the note gets the
+/// numbers, e.g. "solid elastomer (ν 0.49) under the Hertz law: peak strain 0.43 > 0.2 (...)".
+/// Sets `within`, `ratio` and `ratio_full_compression_allowed`. For the head (with the
+/// covering's phase-2 compression and contact radius) and for a body region.
+void ApplyHertzCoveringLimits(const HertzCoveringAtPeak& peak, CoveringValidity& validity);
 
 /// The covering's validity at `peaks` of `model`: within, and a note naming the law, e.g.
 /// "foam law: within the measured curve (strain 0.31 of its last 0.49 at the peak)" or "foam
 /// law: the layer is used up (strain 0.49, the curve's last point): a rigid stop; 0.12 J of
 /// the 0.35 J impact energy passed it into the scalp and skull". Bare robot: within, "no covering".
+/// Under the Hertz law: not within when fully compressed, and a solid elastomer's limits
+/// (ApplyHertzCoveringLimits) on its phase-2 compression (min(δ_max, t2) − t1)/b_c and its
+/// phase-2 contact radius √(x/c2), x the phase-local penetration (docs/model.md §12.2).
 CoveringValidity CoveringLawValidity(const ImpactModel& model, const ImpactPeaks& peaks);
 
 /// One injury criterion judged against its limit.
