@@ -152,8 +152,10 @@ def reduction(region, force_n, thickness_mm):
     return 1.0 - row["peak_force_N"] / bare, row
 
 
-def independent_foam_force(region, force_n, thickness_mm):
+def independent_foam_force(region, force_n, thickness_mm, rate_factor=1.0):
+    """The peak force of a VN600 layer (its stresses times rate_factor) by the script's own balance."""
     points, _ = curve_points()
+    points = [(e, rate_factor * s) for e, s in points]
     layer = FoamLayer(points, thickness_mm * 1e-3, ROBOT_RADIUS_M + thickness_mm * 1e-3)
     energy = force_n ** 2 / (2.0 * SPRINGS[region])
     return series_force(energy, SPRINGS[region], [layer.energy_at_force])
@@ -202,6 +204,10 @@ def report():
                 ind = 1.0 - independent_foam_force(region, force, mm) / force
                 cells.append(f"{mm} mm {100 * r:5.1f} % | {100 * ind:5.1f} %{' used up' if row['fully_compressed'] else ''}")
             lines.append(f"  {region:14s} k {SPRINGS[region] / 1e3:4.0f} N/mm, bare {force:.0f} N: " + "; ".join(cells))
+    for factor in (1.0, 2.0, 4.0):
+        cells = [f"{mm} mm {100 * (1 - independent_foam_force('hands-fingers', 200.0, mm, factor) / 200.0):5.1f} %"
+                 for mm in (10, 20, 40)]
+        lines.append(f"  hands-fingers at 200 N, VN600 stresses x {factor:.0f} (rate factor): " + "; ".join(cells))
     lines.append("Device readings (spring + Shore-A pad in series, R_r 40 mm), at bare-spring force 200 N:")
     for spring in (10e3, 25e3, 75e3):
         foam_only = device_reading(spring, 200.0, 0, 0, 20)

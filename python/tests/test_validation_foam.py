@@ -66,6 +66,8 @@ def test_svarny_reduction_table_and_its_trends(fv):
     # The cut grows with the spring's stiffness and with thickness, and falls with the speed.
     assert fv.reduction("hands-fingers", 100.0, 20)[0] > fv.reduction("hands-fingers", 200.0, 20)[0] > \
         fv.reduction("hands-fingers", 300.0, 20)[0]
+    # At an impact rate the curve is stiffer (VN600's rate factor [1, 4]): the cut shrinks.
+    assert fv.independent_foam_force("hands-fingers", 200.0, 20, 4.0) == pytest.approx(200.0 * (1 - 0.374), abs=0.1)
     # A thin layer used up gives little: 5 mm at 300 N on the hand.
     reduction, row = fv.reduction("hands-fingers", 300.0, 5)
     assert row["fully_compressed"] and reduction < 0.05
