@@ -78,6 +78,7 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
   request.regions = regions.IsoLimits();
   if (regions.has_head()) request.head = head.scene;
   request.materials = head.materials;
+  request.covering_law = head.options.covering_law;
   request.rule = optim::DesignRule{head.options.safety_factor,
                                    head.options.allow_full_compression ? optim::DesignCriterion::kPaper
                                                                        : optim::DesignCriterion::kNoFullCompression,

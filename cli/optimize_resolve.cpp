@@ -84,12 +84,9 @@ void ResolveScene(const OptimizeOptions& o, Resolved& r) {
   if (o.choices.covering_law) {
     r.request.scene.covering.law =
         AsInputError([&] { return scene_file::ParseCoveringLawOrThrow(*o.choices.covering_law, "--covering-law"); });
-    if (r.request.scene.covering.law == CoveringLaw::kFoam) {
-      throw InputError("--covering-law foam: optimize designs with the Hertz law today (its candidates carry no "
-                       "measured curve yet); judge a foam with simulate or speed-limit --material NAME "
-                       "--covering-law foam");
-    }
   }
+  // The law the catalog materials are designed with (auto: the foam law where a material has a curve).
+  r.request.options.covering_law = r.request.scene.covering.law;
   if (o.robot_model.given()) {  // --urdf ...: robot.mass from the robot model
     RobotModelMass mass = ResolveRobotModelMass(o.robot_model, o.scene_values.count(kRobotMassField) != 0);
     r.request.scene.robot.mass_kg = mass.mass_kg;
@@ -185,6 +182,9 @@ Resolved ResolveOptimize(const OptimizeOptions& o) {
   }();
   try {
     r.request.materials = optim::SelectCandidates(catalog, o.materials, o.families);
+    // Under --covering-law foam the catalog's materials without a curve are no candidates; one
+    // named with --material is refused by the design, naming it.
+    if (o.materials.empty()) optim::KeepCandidatesForLaw(r.request.materials, r.request.options.covering_law);
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
     throw InputError((what.rfind("no family", 0) == 0 ? "--family: " : "--material: ") + what);

@@ -114,8 +114,8 @@ void AddLinkCoverings(const AuditInputs& in, const materials::Catalog& catalog, 
       } catch (const std::invalid_argument& e) {
         Refuse(EntryWhere(n, entry), e.what());
       }
-      covering.covering.youngs_modulus_Pa = material.youngs_modulus_Pa;
-      covering.covering.poisson_ratio = material.poisson_ratio;
+      // The material's curve comes along: under auto, a material with one takes the foam law.
+      covering.covering = optim::CoveringOf(material, entry.thickness_m, CoveringLaw::kAuto);
       if (material.poisson_assumed && entry.thickness_m > 0.0) {
         warnings.push_back("link '" + entry.link + "': " + material.name + " has no Poisson ratio in the catalog; " +
                            FormatSignificant(material.poisson_ratio) + " assumed");

@@ -34,7 +34,7 @@ DesignTry DesignMaterial(const AuditSetup& setup, const AuditDesignOptions& d, c
   std::sort(pairs.begin(), pairs.end(), [&](std::size_t a, std::size_t b) { return demand[a] > demand[b]; });
   std::size_t last_failed = 0;  // checked first next time (the pair that binds stays the same)
   auto admissible = [&](double b) {
-    AuditCovering covering{CoveringSpec{material.youngs_modulus_Pa, material.poisson_ratio, b}, material};
+    AuditCovering covering{optim::CoveringOf(material, b, CoveringLaw::kAuto), material};
     auto ok = [&](std::size_t k) {
       const EnergyLimit limit = regions.Limit(covering, plan.radii[k / n_regions], k % n_regions);
       return limit.ceiling || limit.energy_J >= demand[k];
@@ -153,8 +153,8 @@ void DesignLinks(const AuditSetup& setup, const robot::JointTrajectory& trajecto
                    " makes the link safe at full speed";
       for (const std::string& w : why_not) ld.message += "; " + w;
     } else {
-      recheck.link_coverings[result.links[l]] = AuditCovering{
-          CoveringSpec{ld.material->youngs_modulus_Pa, ld.material->poisson_ratio, *ld.thickness_m}, ld.material};
+      recheck.link_coverings[result.links[l]] =
+          AuditCovering{optim::CoveringOf(*ld.material, *ld.thickness_m, CoveringLaw::kAuto), ld.material};
       designed.push_back(l);
     }
     result.link_designs.push_back(std::move(ld));

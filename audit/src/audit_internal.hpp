@@ -55,6 +55,7 @@ inline BodyLimitKind FromHead(LimitingCriterion criterion) noexcept {
     case LimitingCriterion::kFullCompression: return BodyLimitKind::kFullCompression;
     case LimitingCriterion::kCrush: return BodyLimitKind::kCrush;
     case LimitingCriterion::kFracture: return BodyLimitKind::kForce;  // the bone's fracture force
+    case LimitingCriterion::kLawValidity: return BodyLimitKind::kLawValidity;
     case LimitingCriterion::kNone: break;
   }
   return BodyLimitKind::kNone;

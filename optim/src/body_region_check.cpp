@@ -447,6 +447,7 @@ std::string_view ToString(BodyLimitKind kind) noexcept {
     case BodyLimitKind::kPressure: return "pressure";
     case BodyLimitKind::kFullCompression: return "full-compression";
     case BodyLimitKind::kCrush: return "crush";
+    case BodyLimitKind::kLawValidity: return "law-validity";
   }
   return "unknown";
 }
@@ -573,7 +574,7 @@ class RegionSet {
     }
     if (head_oracle_) {
       if (covering.thickness_m > 0.0) {
-        v.head = head_oracle_->ScoreMaterial({covering.youngs_modulus_Pa, covering.thickness_m}, covering.poisson_ratio);
+        v.head = head_oracle_->ScoreCovering(covering);
         if (options.material) CheckCrush(*options.material, *v.head);
       } else {
         v.head = head_oracle_->ScoreBare();
@@ -591,8 +592,7 @@ class RegionSet {
       if (!Judge(BodyContactModel::FromScene(scene), request_.regions[i], options, nullptr).admissible) return false;
     }
     if (!head_oracle_) return true;
-    DesignScore head =
-        head_oracle_->ScoreMaterial({covering.youngs_modulus_Pa, covering.thickness_m}, covering.poisson_ratio);
+    DesignScore head = head_oracle_->ScoreCovering(covering);
     if (options.material) CheckCrush(*options.material, head);
     return head.admissible(options.rule);
   }
@@ -627,7 +627,7 @@ BodyRegionDesignCandidate DesignCandidate(const RegionSet& set, const BodyRegion
                                           const CandidateMaterial& material) {
   // The travel counts as the request's rule says (optimize's design rule).
   BodyRegionOptions options{r.rule, material, r.rule.compression_counts()};
-  auto covering = [&](double b) { return CoveringSpec{material.youngs_modulus_Pa, material.poisson_ratio, b}; };
+  auto covering = [&](double b) { return CoveringOf(material, b, r.covering_law); };
   BodyRegionDesignCandidate c;
   c.material = material;
   std::optional<double> thickness;

@@ -51,8 +51,9 @@ void ValidateOptions(const DesignOptions& o) {
           "thickness step must be >= 0 m (got " + Number(o.thickness_step_m) + ")");
 }
 
-void ValidateCandidates(std::span<const CandidateMaterial> materials) {
+void ValidateCandidates(std::span<const CandidateMaterial> materials, CoveringLaw law) {
   for (const CandidateMaterial& m : materials) {
+    (void)CoveringOf(m, 1e-3, law);  // law foam needs a curve
     if (m.crush_behaviour != materials::CrushBehaviour::kCrushes) continue;
     internal::CheckCompressiveStrength(m.compressive_strength_Pa, "material '" + m.name + "': ");
   }
@@ -367,7 +368,7 @@ CandidateOutcome SnapMaterial(const DesignOracle& oracle, const CandidateMateria
   const DesignRule rule = o.rule();
   const DesignSpace& space = o.space;
   auto score_at = [&](double b) {
-    DesignScore score = oracle.ScoreMaterial({material.youngs_modulus_Pa, b}, material.poisson_ratio);
+    DesignScore score = oracle.ScoreCovering(CoveringOf(material, b, o.covering_law));
     CheckCrush(material, score);
     return score;
   };
@@ -410,6 +411,24 @@ std::vector<CandidateOutcome> SnapMaterials(const DesignOracle& oracle,
 }
 
 }  // namespace
+
+CoveringLaw DesignLawOf(const CandidateMaterial& material, CoveringLaw law) noexcept {
+  return law != CoveringLaw::kHertz && material.compressive_curve ? CoveringLaw::kFoam : CoveringLaw::kHertz;
+}
+
+CoveringSpec CoveringOf(const CandidateMaterial& material, double thickness_m, CoveringLaw law) {
+  if (law == CoveringLaw::kFoam && !material.compressive_curve) {
+    throw std::invalid_argument("covering law foam: material '" + material.name +
+                                "' has no compressive_curve (the foam law needs a measured curve); choose materials "
+                                "with a curve (materials find --has-curve) or --covering-law auto|hertz");
+  }
+  const bool foam = DesignLawOf(material, law) == CoveringLaw::kFoam;
+  return CoveringSpec{.youngs_modulus_Pa = material.youngs_modulus_Pa,
+                      .poisson_ratio = material.poisson_ratio,
+                      .thickness_m = thickness_m,
+                      .compressive_curve = foam ? material.compressive_curve : nullptr,
+                      .law = foam ? CoveringLaw::kFoam : CoveringLaw::kHertz};
+}
 
 void CheckCrush(const CandidateMaterial& material, DesignScore& score) noexcept {
   score.crush_ratio = 0.0;
@@ -487,7 +506,7 @@ ThinnestSafeCovering FindThinnestSafeCovering(const Scene& scene,
                                               const DesignOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   ValidateOptions(options);
-  ValidateCandidates(materials);
+  ValidateCandidates(materials, options.covering_law);
   const std::unique_ptr<DesignOracle> owned_oracle =
       MakeOracle(scene, options.covering_poisson_ratio, options.limits, options.oracle);
   const DesignOracle& oracle = *owned_oracle;
@@ -580,7 +599,7 @@ LeastInjuryAtThickness MinimizeInjuryAtThickness(const Scene& scene, double thic
                                                  const DesignOptions& options) {
   const auto started = std::chrono::steady_clock::now();
   ValidateOptions(options);
-  ValidateCandidates(materials);
+  ValidateCandidates(materials, options.covering_law);
   Require(std::isfinite(thickness_m) && thickness_m > 0.0 && thickness_m <= 1.0,
           "thickness must be in (0, 1] m (got " + Number(thickness_m) + ")");
   const std::unique_ptr<DesignOracle> owned_oracle =
@@ -651,7 +670,7 @@ LeastInjuryAtThickness MinimizeInjuryAtThickness(const Scene& scene, double thic
   for (const CandidateMaterial& material : materials) {
     CandidateOutcome outcome;
     outcome.material = material;
-    outcome.score = oracle.ScoreMaterial({material.youngs_modulus_Pa, thickness_m}, material.poisson_ratio);
+    outcome.score = oracle.ScoreCovering(CoveringOf(material, thickness_m, options.covering_law));
     CheckCrush(material, outcome.score);
     outcome.safe = outcome.score.admissible(rule);
     outcome.margin = outcome.score.margin(rule);

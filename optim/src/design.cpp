@@ -55,8 +55,8 @@ std::string Headline(const DesignResult& r, double max_thickness) {
       return (r.thickness_m ? "No catalog material is admissible at " + Mm(*r.thickness_m) + "; a covering of " +
                                   MPa(best.design.youngs_modulus_Pa) + " would be"
                             : "No catalog material is admissible within " + Mm(max_thickness) +
-                                  "; the continuous optimum (" + MPa(best.design.youngs_modulus_Pa) + ", " +
-                                  Mm(best.design.thickness_m) + ") would be") +
+                                  "; the continuous optimum (a Hertz ideal: " + MPa(best.design.youngs_modulus_Pa) +
+                                  ", " + Mm(best.design.thickness_m) + ") would be") +
              (r.rule.crushing_allowed ? "" : ", in a material whose compressive strength is at least " +
                                                  MPa(best.required_strength_Pa(r.rule.safety_factor))) +
              "." + WhyNoMaterial(r);
@@ -122,7 +122,7 @@ std::vector<std::string> Warnings(const DesignRequest& request, const DesignResu
     }
     // Where the recommended design leaves the model's domain (core's validity checks).
     Scene covered = request.scene;
-    covered.covering = {c.material.youngs_modulus_Pa, c.material.poisson_ratio, *c.recommended_thickness_m};
+    covered.covering = CoveringOf(c.material, *c.recommended_thickness_m, request.options.covering_law);
     for (const std::string& w : ValidityWarnings(ImpactModel::FromScene(covered), c.score.peaks)) {
       if (w.find("fully compressed") == std::string::npos) warnings.push_back("recommended covering: " + w);
     }
@@ -160,7 +160,7 @@ std::string_view ToString(DesignStatus status) noexcept {
 std::string DesignResult::BriefReport() const {
   std::string report = std::string(ToString(verdict)) + " (" + std::string(ToString(criterion)) + "): " + message;
   if (covering_needed()) {
-    report += std::string(" Continuous ") + (thickness_m ? "best" : "optimum") + ": " +
+    report += std::string(" Continuous ") + (thickness_m ? "best" : "optimum") + " (Hertz ideal): " +
               MPa(continuous.score.design.youngs_modulus_Pa) + " at " + Mm(continuous.score.design.thickness_m) +
               ", worst ratio " + Ratio(continuous.score.worst_ratio()) + ".";
   }
@@ -206,8 +206,22 @@ std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalo
 }
 
 CandidateMaterial CandidateOf(const materials::Material& m) {
-  return {m.name, m.youngs_modulus_Pa, materials::PoissonRatioOrDefault(m), !m.poisson_ratio.has_value(),
-          m.family, m.crush_behaviour, m.compressive_strength_Pa.value_or(0.0)};
+  return {.name = m.name,
+          .youngs_modulus_Pa = m.youngs_modulus_Pa,
+          .poisson_ratio = materials::PoissonRatioOrDefault(m),
+          .poisson_assumed = !m.poisson_ratio.has_value(),
+          .family = m.family,
+          .crush_behaviour = m.crush_behaviour,
+          .compressive_strength_Pa = m.compressive_strength_Pa.value_or(0.0),
+          .compressive_curve = m.compressive_curve,
+          .recovers = m.recovers,
+          .rate_factor = m.rate_factor,
+          .stress_at_25_band_Pa = m.stress_at_25_band_Pa};
+}
+
+void KeepCandidatesForLaw(std::vector<CandidateMaterial>& candidates, CoveringLaw law) {
+  if (law != CoveringLaw::kFoam) return;
+  std::erase_if(candidates, [](const CandidateMaterial& c) { return !c.compressive_curve; });
 }
 
 DesignResult Design(const DesignRequest& request) {

@@ -154,8 +154,14 @@ std::string_view ToString(LimitingCriterion criterion) noexcept {
     case LimitingCriterion::kFullCompression: return "full-compression";
     case LimitingCriterion::kCrush: return "crush";
     case LimitingCriterion::kFracture: return "fracture";
+    case LimitingCriterion::kLawValidity: return "law-validity";
   }
   return "unknown";
+}
+
+std::string_view ToString(LimitingCriterion criterion, CoveringLaw law) noexcept {
+  if (criterion == LimitingCriterion::kFullCompression && law == CoveringLaw::kFoam) return "within-curve";
+  return ToString(criterion);
 }
 
 std::string_view ToString(CrushCheck check) noexcept {
@@ -181,7 +187,10 @@ std::string DesignRule::Describe() const {
   std::string text =
       "no laceration and no contusion (Park et al. 2011's skin limits), no fracture (the peak force within the "
       "struck area's lowest published fracture force)";
-  if (compression_counts()) text += ", the covering not fully compressed";
+  if (compression_counts()) {
+    text += ", the covering not fully compressed (design rule \"full-compression\" under the Hertz law, "
+            "\"within-curve\" under the foam law: within its measured curve, SF as a strain reserve)";
+  }
   text += crushing_allowed ? "; crushing allowed (a sacrificial liner)" : ", the covering not crushed";
   if (!crushing_allowed && unknown_strength_allowed) text += " where its strength is known";
   return text + "; safety factor " + FormatSignificant(safety_factor) + " on each";
@@ -205,12 +214,14 @@ GoverningRatio DesignScore::governing(const DesignRule& rule) const noexcept {
   consider(fracture_ratio, LimitingCriterion::kFracture);
   if (rule.compression_counts() && !bare()) consider(compression_ratio, LimitingCriterion::kFullCompression);
   if (!rule.crushing_allowed && crush_check == CrushCheck::kChecked) consider(crush_ratio, LimitingCriterion::kCrush);
+  if (validity_fails(rule)) g = {LimitingCriterion::kLawValidity, std::max(g.ratio, 1.0 / rule.safety_factor)};
   return g;
 }
 
 bool DesignScore::admissible(const DesignRule& rule) const noexcept {
   if (failed) return false;
   if (rule.compression_counts() && compression_exceeded(rule.safety_factor)) return false;
+  if (validity_fails(rule)) return false;
   if (crush_check == CrushCheck::kUnknownStrength && rule.refuses_unknown_strength()) {
     return false;
   }
@@ -334,6 +345,12 @@ void DesignOracle::NoteDisagreement(double relative) const {
   gradient_step_disagreement_ = std::max(gradient_step_disagreement_, relative);
 }
 
+DesignScore DesignOracle::ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const {
+  return ScoreCovering(CoveringSpec{.youngs_modulus_Pa = design.youngs_modulus_Pa,
+                                    .poisson_ratio = poisson_ratio,
+                                    .thickness_m = design.thickness_m});
+}
+
 Scene DesignOracle::WithCovering(const CoveringDesign& design, double poisson_ratio) const {
   Scene scene = scene_;
   scene.covering = {design.youngs_modulus_Pa, poisson_ratio, design.thickness_m};
@@ -363,13 +380,17 @@ ExactPathOracle::ExactPathOracle(const Scene& scene, double covering_poisson_rat
   selection_.reason = std::move(reason);
 }
 
-DesignScore ExactPathOracle::ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const {
+DesignScore ExactPathOracle::ScoreCovering(const CoveringSpec& covering) const {
   ++evaluations_;
   DesignScore score;
-  score.design = design;
-  score.poisson_ratio = poisson_ratio;
-  score.peaks = ExactPeaks(ImpactModel::FromScene(WithCovering(design, poisson_ratio)));
+  score.design = {covering.youngs_modulus_Pa, covering.thickness_m};
+  score.poisson_ratio = covering.poisson_ratio;
+  Scene scene = scene_;
+  scene.covering = covering;
+  const ImpactModel model = ImpactModel::FromScene(scene);
+  score.peaks = ExactPeaks(model);
   Judge(score);
+  score.validity = CoveringLawValidity(model, score.peaks);
   return score;
 }
 
@@ -395,6 +416,7 @@ DesignScore ExactPathOracle::Score(const CoveringDesign& design, RatioGradient& 
   score.poisson_ratio = scene.covering.poisson_ratio;
   score.peaks = ExactPeaks(model);
   Judge(score);
+  score.validity = CoveringLawValidity(model, score.peaks);
   const PeakSensitivities s = ExactPeakSensitivities(model, score.peaks);
   FillGradient(score, s, limits_, FractureLimit(limits_, scene_.head.area),
                CompressionThicknessDerivative(score, s.per_covering_thickness.max_penetration), gradient);
@@ -430,39 +452,39 @@ double TimePathOracle::DifferenceStep() const noexcept {
   return selection_.gradient == GradientSource::kCentralDifference ? std::min(0.05, 4.0 * step) : step;
 }
 
-DesignScore TimePathOracle::Simulate(const CoveringDesign& design, double poisson_ratio) const {
+DesignScore TimePathOracle::Simulate(const CoveringSpec& covering) const {
   ++evaluations_;
   DesignScore score;
-  score.design = design;
-  score.poisson_ratio = poisson_ratio;
+  score.design = {covering.youngs_modulus_Pa, covering.thickness_m};
+  score.poisson_ratio = covering.poisson_ratio;
   Scene scene = scene_;
-  if (design.thickness_m > 0.0) {
-    scene = WithCovering(design, poisson_ratio);
+  if (covering.thickness_m > 0.0) {
+    scene.covering = covering;
   } else {
     scene.covering.thickness_m = 0.0;  // the bare robot
   }
   const ImpactModel model = ImpactModel::FromScene(scene);
   const ImpactResult result = SimulateImpact(model, time_path_);
   if (!result.ok()) {
-    Fail(score, "time path at E_c " + Exactly(design.youngs_modulus_Pa) + " Pa, b_c " + Exactly(design.thickness_m) +
-                    " m: " + std::string(covopt::ToString(result.status)) + ": " + result.message);
+    Fail(score, "time path at E_c " + Exactly(covering.youngs_modulus_Pa) + " Pa, b_c " +
+                    Exactly(covering.thickness_m) + " m: " + std::string(covopt::ToString(result.status)) + ": " +
+                    result.message);
     return score;
   }
   score.peaks = result.peaks;
   Judge(score);
+  score.validity = CoveringLawValidity(model, score.peaks);
   return score;
 }
 
-DesignScore TimePathOracle::ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const {
-  return Simulate(design, poisson_ratio);
-}
+DesignScore TimePathOracle::ScoreCovering(const CoveringSpec& covering) const { return Simulate(covering); }
 
 DesignScore TimePathOracle::Score(const CoveringDesign& design) const {
-  return Simulate(design, scene_.covering.poisson_ratio);
+  return ScoreMaterial(design, scene_.covering.poisson_ratio);
 }
 
 DesignScore TimePathOracle::Score(const CoveringDesign& design, RatioGradient& gradient) const {
-  DesignScore score = Simulate(design, scene_.covering.poisson_ratio);
+  DesignScore score = ScoreMaterial(design, scene_.covering.poisson_ratio);
   if (score.failed) return score;
   ++gradient_evaluations_;
   if (selection_.gradient == GradientSource::kCentralDifference) {
@@ -491,7 +513,8 @@ DesignScore TimePathOracle::Score(const CoveringDesign& design, RatioGradient& g
 }
 
 DesignScore TimePathOracle::ScoreBare() const {
-  return Simulate({0.0, 0.0}, scene_.covering.poisson_ratio);
+  return Simulate(CoveringSpec{.youngs_modulus_Pa = 0.0, .poisson_ratio = scene_.covering.poisson_ratio,
+                               .thickness_m = 0.0});
 }
 
 std::unique_ptr<DesignOracle> MakeOracle(const Scene& scene, double covering_poisson_ratio,

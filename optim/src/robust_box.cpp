@@ -129,6 +129,22 @@ void JudgePeaks(Judged& j, const ImpactCriterion& c, HeadArea area) {
   j.admissible = j.governing_ratio <= 1.0 && !(compression_counts && j.fully_compressed);
 }
 
+/// The covering's law validity at j's peaks (as DesignScore::validity_fails): out of it, the
+/// impact is inadmissible and "law-validity" binds with g at least 1.
+void JudgeValidity(Judged& j, const ImpactModel& model, const ImpactCriterion& c) {
+  if (!j.covered) return;
+  j.validity = CoveringLawValidity(model, j.peaks);
+  const bool accepted = c.criterion == DesignCriterion::kPaper && j.peaks.covering_law == CoveringLaw::kHertz &&
+                        j.peaks.fully_compressed;
+  if (j.validity.within || accepted) return;
+  j.out_of_validity = true;
+  j.admissible = false;
+  if (j.governing_ratio <= 1.0) {
+    j.governing_ratio = 1.0;
+    j.binding = LimitingCriterion::kLawValidity;
+  }
+}
+
 /// A failed time-path run: every ratio +inf, every event, inadmissible.
 void JudgeFailed(Judged& j) {
   constexpr double inf = std::numeric_limits<double>::infinity();
@@ -150,6 +166,7 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c, const Screening&
   j.peaks = ExactPeaks(model);
   j.covered = model.has_covering();
   JudgePeaks(j, c, scene.head.area);
+  JudgeValidity(j, model, c);
   if (!brakes) return j;
   // Braking only takes energy out of the impact: the unbraked judgement bounds the braked
   // one (docs/model.md §11). Until the brake starts the two impacts are the same; a brake that
@@ -170,7 +187,8 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c, const Screening&
   if (c.counter) c.counter->Run();
   TimeIntegrationOptions options = c.time_path;
   options.record_history = false;
-  const ImpactResult result = SimulateImpact(ImpactModel::FromScene(scene), options);
+  const ImpactModel result_model = ImpactModel::FromScene(scene);
+  const ImpactResult result = SimulateImpact(result_model, options);
   if (!result.ok()) {
     JudgeFailed(j);
     if (c.counter) {
@@ -181,6 +199,7 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c, const Screening&
   }
   j.peaks = result.peaks;
   JudgePeaks(j, c, scene.head.area);
+  JudgeValidity(j, result_model, c);
   return j;
 }
 

@@ -194,6 +194,7 @@ DesignScore ScoreOf(const WorstCase& worst, const CandidateMaterial& material, c
   score.contusion_ratio = worst.contusion_ratio;
   score.fracture_ratio = worst.fracture_ratio;
   score.compression_ratio = worst.compression_ratio;
+  score.validity = judged.validity;
   CheckCrush(material, score);
   return score;
 }
@@ -301,7 +302,7 @@ class MaterialSearch {
   }
 
  private:
-  CoveringSpec Covering(double b) const { return CoveringSpec{material_.youngs_modulus_Pa, material_.poisson_ratio, b}; }
+  CoveringSpec Covering(double b) const { return CoveringOf(material_, b, context_.options.design.covering_law); }
   bool AdmissibleOnSet(double b) const { return set_.Admissible(Covering(b)); }
   /// The worst case of the whole box at thickness `b`.
   WorstCase Confirm(double b) {
@@ -499,9 +500,7 @@ std::optional<InjuryProbability> EstimateRecommendationInjuryProbability(const U
   if (!result.recommendation) return std::nullopt;
   const CandidateOutcome& c = result.candidates[*result.recommendation].outcome;
   Scene designed = box.nominal();
-  designed.covering.youngs_modulus_Pa = c.material.youngs_modulus_Pa;
-  designed.covering.poisson_ratio = c.material.poisson_ratio;
-  designed.covering.thickness_m = *c.recommended_thickness_m;
+  designed.covering = CoveringOf(c.material, *c.recommended_thickness_m, options.design.covering_law);
   const UncertaintyBox at_design = UncertaintyBox::FromScene(designed, box.inputs());
   sampling.safety_factor = options.design.safety_factor;
   sampling.limits = options.design.limits;

@@ -93,6 +93,10 @@ struct Judged {
   bool crushed = false;
   /// An injury: laceration, contusion or fracture.
   bool injured() const noexcept { return laceration || contusion || fracture; }
+  /// The covering left its law's validity (CoveringLawValidity; a fully compressed Hertz
+  /// covering under the paper's criterion excepted): inadmissible, "law-validity" binds.
+  bool out_of_validity = false;
+  CoveringValidity validity;
   bool admissible = false;
 };
 

@@ -240,7 +240,7 @@ class ProbabilityJudge {
 ProbabilityCandidate ProbabilitySnapMaterial(const ProbabilityJudge& judge, const CandidateMaterial& material,
                                              const DesignOptions& o) {
   const DesignSpace& space = o.space;
-  auto covering = [&](double b) { return CoveringSpec{material.youngs_modulus_Pa, material.poisson_ratio, b}; };
+  auto covering = [&](double b) { return CoveringOf(material, b, o.covering_law); };
   ProbabilityCandidate candidate;
   candidate.material = material;
   const DesignRule rule = o.rule();

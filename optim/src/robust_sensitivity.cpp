@@ -151,7 +151,8 @@ ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions&
                        compressed ? std::log(*table.compression_ratio) : 0.0};
 
   std::optional<PeakSensitivities> analytic;
-  if (covered && !brakes) analytic = ExactPeakSensitivities(model, peaks);
+  // Analytic d/dE_c, d/db_c are the Hertz law's; a foam layer's are central differences.
+  if (covered && !brakes && !model.is_foam()) analytic = ExactPeakSensitivities(model, peaks);
 
   for (const SceneField& field : SceneFields()) {
     const double x = field.value(scene);

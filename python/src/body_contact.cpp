@@ -359,6 +359,8 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
     RefuseHeadKeywords(inputs, RegionText(kwargs));
   }
   request.materials = Candidates(kwargs);
+  request.covering_law = inputs.scene.covering.law;
+  if (!Option(kwargs, "materials")) optim::KeepCandidatesForLaw(request.materials, request.covering_law);
   request.rule = JudgeOptions(inputs, kwargs, Flag(kwargs, "allow_unknown_strength")).rule;
   if (const auto v = Option(kwargs, "max_thickness")) {
     request.max_thickness_m = ReadSceneQuantity(*v, quantity_specs::kCoveringThickness, "max_thickness");

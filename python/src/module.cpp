@@ -505,6 +505,7 @@ py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
   optim::DesignRequest request;
   request.scene = inputs.scene;
   optim::DesignOptions& d = request.options;
+  d.covering_law = inputs.scene.covering.law;  // auto: the foam law where a material has a curve
   d.limits = inputs.limits;
   d.safety_factor = inputs.safety_factor;
   const auto read = [&](const char* keyword, const QuantitySpec& spec, double& into) {
@@ -563,6 +564,7 @@ py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
   d.oracle = ReadOracleKeywords(kwargs, request.scene);
 
   request.materials = Candidates(kwargs);
+  if (!get("materials")) optim::KeepCandidatesForLaw(request.materials, d.covering_law);
 
   optim::DesignResult result;
   {

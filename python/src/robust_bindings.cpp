@@ -205,7 +205,9 @@ py::object RobustOptimize(const SceneInputs& scene, const py::kwargs& kwargs) {
   design.allow_full_compression = Flag(kwargs, "allow_full_compression");
   design.allow_crushing = Flag(kwargs, "allow_crushing");
   design.allow_unknown_strength = Flag(kwargs, "allow_unknown_strength");
-  const std::vector<optim::CandidateMaterial> materials = optim::SelectCandidates(materials::Catalog::BuiltIn());
+  design.covering_law = b.scene.scene.covering.law;  // auto: the foam law where a material has a curve
+  std::vector<optim::CandidateMaterial> materials = optim::SelectCandidates(materials::Catalog::BuiltIn());
+  optim::KeepCandidatesForLaw(materials, design.covering_law);
   std::optional<optim::InjuryProbabilityOptions> sampling = ReadSampling(kwargs);
   if (const auto p = Option(kwargs, "max_injury_probability")) {
     if (!sampling) throw std::invalid_argument("max_injury_probability needs samples=N (the probability is estimated)");
@@ -233,9 +235,8 @@ py::object RobustOptimize(const SceneInputs& scene, const py::kwargs& kwargs) {
     if (sampling && result.recommendation) {
       const optim::RobustCandidate& c = result.candidates[*result.recommendation];
       Scene designed = b.box->nominal();
-      designed.covering.youngs_modulus_Pa = c.outcome.material.youngs_modulus_Pa;
-      designed.covering.poisson_ratio = c.outcome.material.poisson_ratio;
-      designed.covering.thickness_m = *c.outcome.recommended_thickness_m;
+      designed.covering = optim::CoveringOf(c.outcome.material, *c.outcome.recommended_thickness_m,
+                                            design.covering_law);
       const std::vector<optim::UncertainInput> inputs(b.box->inputs().begin(), b.box->inputs().end());
       sampling->limits = design.limits;
       sampling->safety_factor = design.safety_factor;

@@ -30,6 +30,11 @@ CASES = [
      ["--material", "XPS Foamular 250", "--allow-crushing"]),
     ({"materials": "polystyrene foam 27.6", "allow_unknown_strength": True, "safety_factor": 2},
      ["--material", "polystyrene foam 27.6", "--allow-unknown-strength", "--safety-factor", "2"]),
+    ({"materials": ["vinyl-nitrile foam VN600", "elastomer Shore A40"]},
+     ["--material", "vinyl-nitrile foam VN600", "--material", "elastomer Shore A40"]),
+    ({"materials": "vinyl-nitrile foam VN600", "covering_law": "hertz"},
+     ["--material", "vinyl-nitrile foam VN600", "--covering-law", "hertz"]),
+    ({"covering_law": "foam", "max_thickness": "30mm"}, ["--covering-law", "foam", "--max-thickness", "30mm"]),
 ]
 
 
@@ -107,3 +112,19 @@ def test_bad_input_names_the_keyword(kwargs, words):
 def test_the_covering_is_not_an_input(keyword, value):
     with pytest.raises(ValueError, match="the covering is what optimize designs"):
         covopt.optimize(covopt.Scene(**{keyword: value}))
+
+
+def test_a_curve_material_is_designed_with_the_foam_law_and_each_row_names_its_law_and_validity():
+    foam = covopt.optimize(materials=["vinyl-nitrile foam VN600", "elastomer Shore A40"])
+    laws = {c["material"]: c["covering_law"] for c in foam["candidates"]}
+    assert laws == {"vinyl-nitrile foam VN600": "foam", "elastomer Shore A40": "hertz"}
+    for c in foam["candidates"]:
+        assert set(c["validity"]) == {"within", "note"}
+        assert c["has_compressive_curve"] == (c["covering_law"] == "foam")
+    assert foam["continuous_optimum"]["covering_law"] == "hertz"
+    hertz = covopt.optimize(materials="vinyl-nitrile foam VN600", covering_law="hertz")
+    assert hertz["candidates"][0]["covering_law"] == "hertz"
+    vn600 = [c for c in foam["candidates"] if c["material"] == "vinyl-nitrile foam VN600"][0]
+    assert vn600["laceration_ratio"] != hertz["candidates"][0]["laceration_ratio"]
+    with pytest.raises(ValueError, match="material 'elastomer Shore A40' has no compressive_curve"):
+        covopt.optimize(materials="elastomer Shore A40", covering_law="foam")

@@ -49,6 +49,8 @@ ordered_json CandidateJson(const CandidateOutcome& c, const optim::DesignRule& r
                     {"safe", c.safe},
                     {"margin", c.margin}};
   j.update(internal::RatiosJson(c.score, rule));
+  j["has_compressive_curve"] = c.material.compressive_curve != nullptr;
+  j.update(internal::LawAndValidityJson(c.score));
   return j;
 }
 
@@ -95,6 +97,8 @@ std::string DesignJson(const optim::DesignRequest& request, const optim::DesignR
                           {"admissible", continuous.score.admissible(sf, criterion)},
                           {"margin", continuous.score.margin(rule)}};
   optimum.update(internal::RatiosJson(continuous.score, rule));
+  optimum.update(internal::LawAndValidityJson(continuous.score));
+  optimum["note"] = "a Hertz ideal: a modulus and a thickness, no measured curve";
   optimum["every_modulus_fully_compressed"] = continuous.every_modulus_fully_compressed;
   optimum["needed"] = !bare_safe;
   optimum["source"] = continuous.source;

@@ -36,8 +36,8 @@ void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& can
                      bool fixed_thickness, const optim::DesignRule& rule) {
   const int shown = std::min<int>(rows, static_cast<int>(candidates.size()));
   if (shown > 0) {
-    fmt::print(out, "  {:<3} {:<28} {:>9} {:>6} {:>10} {:>7} {:>7} {:>7} {:>8} {:>8}  {}\n", "#", "material",
-               "E [MPa]", "ν", "thickness", "lacer.", "contus.", "compr.", "crush", "margin", "governs");
+    fmt::print(out, "  {:<3} {:<28} {:>9} {:>6} {:>5} {:>10} {:>7} {:>7} {:>7} {:>8} {:>8}  {}\n", "#", "material",
+               "E [MPa]", "ν", "law", "thickness", "lacer.", "contus.", "compr.", "crush", "margin", "governs");
   }
   bool assumed_shown = false;
   for (int i = 0; i < shown; ++i) {
@@ -49,14 +49,16 @@ void PrintCandidates(std::ostream& out, const std::vector<CandidateOutcome>& can
                                       : fmt::format("> {}", Mm(c.score.design.thickness_m));
     const bool unknown_refused =
         c.score.crush_check == optim::CrushCheck::kUnknownStrength && rule.refuses_unknown_strength();
-    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>6} {:>10} {:>7.3f} {:>7.3f} {:>7.3f} {:>8} {:>8}  {}{}\n", i + 1,
+    const CoveringLaw law = c.score.peaks.covering_law;
+    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>6} {:>5} {:>10} {:>7.3f} {:>7.3f} {:>7.3f} {:>8} {:>8}  {}{}{}\n", i + 1,
                c.material.name.substr(0, 28), c.material.youngs_modulus_Pa * 1e-6,
                fmt::format("{:.2f}{}", c.material.poisson_ratio, c.material.poisson_assumed ? "*" : ""),
-               thickness, c.score.laceration_ratio, c.score.contusion_ratio, c.score.compression_ratio,
-               CrushCell(c.score), FormatPercent(c.margin), optim::ToString(c.score.governing(rule).criterion),
-               unknown_refused                 ? "; strength unknown, not recommended"
-               : c.score.peaks.fully_compressed ? "; fully compressed"
-                                                : "");
+               ToString(law), thickness, c.score.laceration_ratio, c.score.contusion_ratio, c.score.compression_ratio,
+               CrushCell(c.score), FormatPercent(c.margin), optim::ToString(c.score.governing(rule).criterion, law),
+               unknown_refused                  ? "; strength unknown, not recommended"
+               : c.score.peaks.fully_compressed ? (law == CoveringLaw::kFoam ? "; used up" : "; fully compressed")
+                                                : "",
+               c.score.validity.within ? "" : "; out of its law's validity");
     assumed_shown = assumed_shown || c.material.poisson_assumed;
   }
   if (static_cast<int>(candidates.size()) > shown) {
@@ -80,6 +82,10 @@ std::string_view GradientWords(optim::GradientSource source) {
 /// covering's own 0.8 b_c beyond the scalp's (ImpactPeaks::covering_compression_ratio).
 std::string CompressionWords(const DesignScore& s) {
   if (s.bare()) return "";
+  if (s.peaks.covering_law == CoveringLaw::kFoam) {
+    if (s.peaks.fully_compressed) return "its measured curve used up at the peak (a rigid stop)";
+    return fmt::format("{:.0f} % of its measured curve's strain used at the peak", 100.0 * s.compression_ratio);
+  }
   if (s.peaks.fully_compressed) return "fully compressed at the peak";
   if (s.compression_ratio > 0.9995) return "at the edge of full compression at the peak";
   return fmt::format("{:.0f} % of the covering's travel used at the peak", 100.0 * s.compression_ratio);
@@ -164,20 +170,23 @@ namespace {
 /// The candidate table of the robust design, each at its worst case over the box.
 void PrintRobustCandidates(std::ostream& out, const DesignText& r, const optim::RobustThinnestCovering& result,
                            const optim::DesignRule& rule) {
-  fmt::print(out, "\nCandidates (each at its worst case over the box):\n  {:<3} {:<28} {:>9} {:>10} {:>7} {:>7} {:>7} {:>8} {:>8}  {:<16} {:>6}\n",
-             "#", "material", "E [MPa]", "thickness", "lacer.", "contus.", "compr.", "crush", "margin", "governs",
+  fmt::print(out,
+             "\nCandidates (each at its worst case over the box):\n  {:<3} {:<28} {:>9} {:>5} {:>10} {:>7} {:>7} {:>7} "
+             "{:>8} {:>8}  {:<16} {:>6}\n",
+             "#", "material", "E [MPa]", "law", "thickness", "lacer.", "contus.", "compr.", "crush", "margin", "governs",
              "rounds");
   const int shown = std::min<int>(r.runners_up, static_cast<int>(result.candidates.size()));
   for (int i = 0; i < shown; ++i) {
     const optim::RobustCandidate& c = result.candidates[static_cast<std::size_t>(i)];
-    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>10} {:>7.3f} {:>7.3f} {:>7.3f} {:>8} {:>8}  {:<16} {:>6}{}\n", i + 1,
-               c.outcome.material.name.substr(0, 28), c.outcome.material.youngs_modulus_Pa * 1e-6,
+    const CoveringLaw law = c.outcome.score.peaks.covering_law;
+    fmt::print(out, "  {:<3} {:<28} {:>9.4g} {:>5} {:>10} {:>7.3f} {:>7.3f} {:>7.3f} {:>8} {:>8}  {:<16} {:>6}{}{}\n",
+               i + 1, c.outcome.material.name.substr(0, 28), c.outcome.material.youngs_modulus_Pa * 1e-6, ToString(law),
                c.outcome.recommended_thickness_m ? Mm(*c.outcome.recommended_thickness_m)
                                                  : fmt::format("> {}", Mm(c.outcome.score.design.thickness_m)),
                c.worst_case.laceration_ratio, c.worst_case.contusion_ratio, c.worst_case.compression_ratio,
                CrushCell(c.outcome.score), FormatPercent(c.outcome.margin),
-               optim::ToString(c.outcome.score.governing(rule).criterion), c.scenario_rounds,
-               c.unconfirmed ? "  unconfirmed" : "");
+               optim::ToString(c.outcome.score.governing(rule).criterion, law), c.scenario_rounds,
+               c.unconfirmed ? "  unconfirmed" : "", c.outcome.score.validity.within ? "" : "  out of its law's validity");
   }
   if (static_cast<int>(result.candidates.size()) > shown) {
     fmt::print(out, "  ... {} more (--top N, or --json for all)\n", result.candidates.size() - static_cast<std::size_t>(shown));
@@ -243,8 +252,13 @@ void PrintRecommendation(std::ostream& out, const DesignText& r, const optim::De
              c.material.poisson_assumed ? " (ν unknown, 0.25 assumed)" : "");
   fmt::print(out, "  laceration ratio {:.3f}, contusion ratio {:.3f}, compression ratio {:.3f}; {}\n",
              c.score.laceration_ratio, c.score.contusion_ratio, c.score.compression_ratio, CrushWords(c.score, c));
-  fmt::print(out, "  governed by {} (ratio {:.3f}): margin {} of the {}; {}\n", optim::ToString(governing.criterion),
-             governing.ratio, FormatPercent(c.margin), sf > 1 ? "derated limit" : "limit", CompressionWords(c.score));
+  fmt::print(out, "  governed by {} (ratio {:.3f}): margin {} of the {}; {}\n",
+             optim::ToString(governing.criterion, c.score.peaks.covering_law), governing.ratio, FormatPercent(c.margin),
+             sf > 1 ? "derated limit" : "limit", CompressionWords(c.score));
+  fmt::print(out, "  covering law {}{}; validity: {}\n", ToString(c.score.peaks.covering_law),
+             c.score.peaks.covering_law == CoveringLaw::kFoam ? " (its measured compressive curve; design rule within-curve)"
+                                                              : " (design rule full-compression)",
+             c.score.validity.within ? c.score.validity.note : "OUT: " + c.score.validity.note);
   if (c.min_safe_thickness_m && !r.request.thickness_m) {
     if (c.stock_thickness_beyond_max_m) {
       fmt::print(out,
@@ -274,7 +288,8 @@ void PrintBareAndContinuous(std::ostream& out, const DesignText& r, const optim:
     return;
   }
   const DesignScore& best = continuous.score;
-  fmt::print(out, "Continuous {}  E_c* = {}, b_c* = {} (ν {:.2f}): laceration {:.3f}, contusion {:.3f}, {}{}\n",
+  fmt::print(out, "Continuous {}  E_c* = {}, b_c* = {} (ν {:.2f}): laceration {:.3f}, contusion {:.3f}, {}{}; a Hertz "
+                  "ideal (no measured curve)\n",
              r.request.thickness_m ? "best   " : "optimum", MPa(best.design.youngs_modulus_Pa), Mm(best.design.thickness_m),
              best.poisson_ratio, best.laceration_ratio, best.contusion_ratio, CompressionWords(best),
              best.admissible(sf, result.criterion) ? "" : " (not admissible)");
@@ -346,9 +361,9 @@ void PrintDesign(std::ostream& out, const DesignText& r, const optim::DesignResu
                                      : "admissible first, by stock thickness then margin; then the rest by margin at "
                                        "the maximum thickness");
   PrintCandidates(out, candidates, r.runners_up, r.request.thickness_m.has_value(), rule);
-  fmt::print(out, "  ratios: laceration, contusion, compression (the covering's own travel used, 0.8 b_c beyond the "
-                  "scalp's 0.8 b_s), crush (peak compressive stress / compressive strength); margin = 1 - SF x the "
-                  "governing one\n");
+  fmt::print(out, "  ratios: laceration, contusion, compression (law hertz: the covering's own travel used, 0.8 b_c "
+                  "beyond the scalp's 0.8 b_s; law foam: the share of its measured curve's strain used), crush (peak "
+                  "compressive stress / compressive strength); margin = 1 - SF x the governing one\n");
   PrintSolverAndWarnings(out, r, result);
 }
 

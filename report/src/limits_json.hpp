@@ -44,8 +44,15 @@ inline nlohmann::ordered_json RatiosJson(const optim::DesignScore& s, const opti
           {"max_compressive_stress_Pa", s.peaks.max_compressive_stress_Pa},
           {"required_compressive_strength_Pa", s.required_strength_Pa(rule.safety_factor)},
           {"fully_compressed", s.peaks.fully_compressed},
-          {"governing_criterion", optim::ToString(g.criterion)},
+          {"governing_criterion", optim::ToString(g.criterion, s.peaks.covering_law)},
           {"governing_ratio", g.ratio}};
+}
+
+/// A covered design's law and validity (D6): "covering_law" ("foam" | "hertz", "" bare) and
+/// "validity" {"within", "note"}.
+inline nlohmann::ordered_json LawAndValidityJson(const optim::DesignScore& s) {
+  return {{"covering_law", s.bare() ? std::string() : std::string(ToString(s.peaks.covering_law))},
+          {"validity", {{"within", s.validity.within}, {"note", s.validity.note}}}};
 }
 
 /// Adds "criterion", "safety_factor" and "limits" {laceration_Pa, contusion_J_per_m2 and their

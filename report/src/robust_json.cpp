@@ -216,9 +216,10 @@ std::string RobustDesignJson(const optim::UncertaintyBox& box, const optim::Robu
     rec["crush_ratio"] = c.outcome.score.crush_check == optim::CrushCheck::kChecked
                              ? ordered_json(c.worst_case.crush_ratio)
                              : ordered_json(nullptr);
-    rec["governing_criterion"] = optim::ToString(c.worst_case.binding);
+    rec["governing_criterion"] = optim::ToString(c.worst_case.binding, c.outcome.score.peaks.covering_law);
     rec["governing_ratio"] = c.worst_case.governing_ratio;
     rec["margin"] = c.outcome.margin;
+    rec.update(internal::LawAndValidityJson(c.outcome.score));
     rec["worst_case"] = WorstJson(box, c.worst_case);
     rec["worst_case_at_thinnest"] =
         c.worst_case_at_thinnest ? WorstJson(box, *c.worst_case_at_thinnest) : ordered_json(nullptr);
@@ -256,11 +257,12 @@ std::string RobustDesignJson(const optim::UncertaintyBox& box, const optim::Robu
     row["thickness_m"] = Number(c.outcome.recommended_thickness_m);
     row["evaluated_thickness_m"] = c.outcome.score.design.thickness_m;
     row["safe"] = c.outcome.safe;
-    row["governing_criterion"] = optim::ToString(c.worst_case.binding);
+    row["governing_criterion"] = optim::ToString(c.worst_case.binding, c.outcome.score.peaks.covering_law);
     row["governing_ratio"] = c.worst_case.governing_ratio;
     row["margin"] = c.outcome.margin;
     row["scenario_rounds"] = c.scenario_rounds;
     row["unconfirmed"] = c.unconfirmed;
+    row.update(internal::LawAndValidityJson(c.outcome.score));
     row["worst_case"] = WorstJson(box, c.worst_case);
     candidates.push_back(row);
   }

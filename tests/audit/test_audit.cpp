@@ -407,7 +407,8 @@ TEST_CASE("the streamed rows are the kept rows, and without them the result does
   CHECK(longer.safe_speed_scale == lean.safe_speed_scale);
 }
 
-TEST_CASE("the per-link design is safe at full speed when audited again, and one step thinner is not",
+TEST_CASE("the per-link design is safe at full speed when audited again, curve materials with their curves, and one step "
+          "thinner is not",
           "[audit][design]") {
   ca::AuditSetup setup = Fr3Setup(SomeRegions());
   ca::AuditOptions options;
@@ -417,7 +418,7 @@ TEST_CASE("the per-link design is safe at full speed when audited again, and one
   REQUIRE(result.link_designs.size() == result.links.size());
   CHECK(result.link_designs[0].message.find("never moves") != std::string::npos);
   CHECK_FALSE(result.link_designs[0].material);
-  int designed = 0, thinner_checked = 0;
+  int designed = 0, thinner_checked = 0, foam_designed = 0;
   for (std::size_t l = 1; l < result.links.size(); ++l) {
     const ca::AuditLinkDesign& d = result.link_designs[l];
     INFO(result.links[l] << ": " << d.message);
@@ -425,10 +426,14 @@ TEST_CASE("the per-link design is safe at full speed when audited again, and one
     ++designed;
     REQUIRE(d.thickness_m);
     CHECK(d.governing_ratio * setup.rule.safety_factor <= 1.0);
-    // Checked independently: the link at that covering, audited on its own.
+    // Checked independently: the link at that covering (the catalog's own, curve included:
+    // the foam law under auto for a material with a curve), audited on its own.
+    const covopt::materials::Material* entry = covopt::materials::Catalog::BuiltIn().Find(d.material->name);
+    REQUIRE(entry != nullptr);
+    if (entry->compressive_curve) ++foam_designed;
+    CHECK(d.material->compressive_curve == entry->compressive_curve);
     ca::AuditSetup again = setup;
-    again.link_coverings[result.links[l]] = {
-        covopt::CoveringSpec{d.material->youngs_modulus_Pa, d.material->poisson_ratio, *d.thickness_m}, d.material};
+    again.link_coverings[result.links[l]] = {covopt::materials::CoveringOf(*entry, *d.thickness_m), d.material};
     const ca::AuditResult at = ca::Audit(again, TheFr3().pick);
     double worst = 0.0;
     for (std::size_t r = 0; r < at.regions.size(); ++r) worst = std::max(worst, at.cell(l, r).governing_ratio);
@@ -450,6 +455,7 @@ TEST_CASE("the per-link design is safe at full speed when audited again, and one
   }
   CHECK(designed >= 5);
   CHECK(thinner_checked >= 3);
+  CHECK(foam_designed >= 1);  // a curve material is designed with its curve (the foam law)
   // A material of unknown strength is refused by the default rule, and says why.
   co::CandidateMaterial unknown = options.design.materials.front();
   unknown.name = "mystery foam";

@@ -99,10 +99,10 @@ TEST_CASE("simulate --covering-law foam --material with a measured curve names t
                                     .out);
   CHECK(hand.at("regions").at(0).at("covering_law") == "foam");
   CHECK(hand.at("regions").at(0).at("validity").at("within") == true);
-  // optimize does not design with the foam law yet: said, exit 2.
-  const CliRun optimize = Run({"optimize", "--covering-law", "foam"});
+  // optimize designs with the foam law; a material named without a curve is refused (exit 2).
+  const CliRun optimize = Run({"optimize", "--covering-law", "foam", "--material", "elastomer Shore A40"});
   CHECK(optimize.exit_code == 2);
-  CHECK_THAT(optimize.err, Contains("optimize designs with the Hertz law today"));
+  CHECK_THAT(optimize.err, Contains("material 'elastomer Shore A40' has no compressive_curve"));
   // Without a curve, the foam law is refused (exit 2, naming the field).
   const CliRun no_curve = Run({"simulate", "--covering-thickness", "10mm", "--covering-law", "foam"});
   CHECK(no_curve.exit_code == 2);

@@ -16,6 +16,7 @@
 
 #include <covopt/materials/catalog.hpp>
 #include <covopt/optim/covering_design.hpp>
+#include <covopt/optim/design.hpp>
 
 #include "cli_test_support.hpp"
 #include "plot.hpp"
@@ -334,4 +335,66 @@ TEST_CASE("optimize --plot draws the design map with the recommendation, and is 
   for (const char* limit : {"laceration limit (ratio 1)", "contusion limit (ratio 1)", "full-compression limit (ratio 1)"}) {
     CHECK(text.find(limit) != std::string::npos);
   }
+}
+
+TEST_CASE("optimize designs a curve material with the foam law, names the law and validity per candidate, and "
+          "--covering-law hertz reproduces the curve-less design", "[optimize][foam]") {
+  const std::vector<std::string> vn600 = {"optimize", "--material", "vinyl-nitrile foam VN600", "--material",
+                                          "elastomer Shore A40", "--json"};
+  const auto run = Run(vn600);
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const json j = json::parse(run.out);
+  for (const json& c : j["candidates"]) {
+    INFO(c["material"]);
+    const bool foam = c["material"] == "vinyl-nitrile foam VN600";
+    CHECK(c["covering_law"] == (foam ? "foam" : "hertz"));
+    CHECK(c["has_compressive_curve"] == foam);
+    CHECK(c["validity"].contains("within"));
+    CHECK(c["validity"]["note"].get<std::string>().find(foam ? "foam law" : "hertz law") != std::string::npos);
+  }
+  CHECK(j["continuous_optimum"]["covering_law"] == "hertz");
+  // The library's answer for the same request.
+  covopt::optim::DesignRequest request;
+  request.materials = covopt::optim::SelectCandidates(covopt::materials::Catalog::BuiltIn(),
+                                                      std::vector<std::string>{"vinyl-nitrile foam VN600"});
+  const covopt::optim::DesignResult library = covopt::optim::Design(request);
+  for (const json& c : j["candidates"]) {
+    if (c["material"] != "vinyl-nitrile foam VN600") continue;
+    CHECK(c["laceration_ratio"].get<double>() == Approx(library.candidates.front().score.laceration_ratio).epsilon(1e-12));
+    CHECK(c["min_safe_thickness_m"] == (library.candidates.front().min_safe_thickness_m
+                                            ? json(*library.candidates.front().min_safe_thickness_m)
+                                            : json(nullptr)));
+  }
+  // Text: the law column and the within-curve rule.
+  const auto text = Run({"optimize", "--material", "vinyl-nitrile foam VN600"});
+  REQUIRE(text.exit_code == 0);
+  CHECK_THAT(text.out, Catch::Contains(" law ") && Catch::Contains(" foam ") && Catch::Contains("a Hertz ideal"));
+
+  // --covering-law hertz: every candidate under the Hertz law, as the library designs the
+  // materials without their curves.
+  std::vector<std::string> hertz = vn600;
+  hertz.insert(hertz.end(), {"--covering-law", "hertz"});
+  const json h = json::parse(Run(hertz).out);
+  covopt::optim::DesignRequest before;
+  before.materials = covopt::optim::SelectCandidates(
+      covopt::materials::Catalog::BuiltIn(), std::vector<std::string>{"vinyl-nitrile foam VN600", "elastomer Shore A40"});
+  for (auto& m : before.materials) m.compressive_curve = nullptr;
+  const covopt::optim::DesignResult curve_less = covopt::optim::Design(before);
+  REQUIRE(h["candidates"].size() == curve_less.candidates.size());
+  for (std::size_t i = 0; i < curve_less.candidates.size(); ++i) {
+    const json& c = h["candidates"][i];
+    CHECK(c["covering_law"] == "hertz");
+    CHECK(c["material"] == curve_less.candidates[i].material.name);
+    CHECK(c["laceration_ratio"].get<double>() == curve_less.candidates[i].score.laceration_ratio);
+    CHECK(c["compression_ratio"].get<double>() == curve_less.candidates[i].score.compression_ratio);
+    CHECK(c["evaluated_thickness_m"].get<double>() == curve_less.candidates[i].score.design.thickness_m);
+  }
+  // --covering-law foam: the catalog's curve materials only.
+  const auto foam = Run({"optimize", "--covering-law", "foam", "--json"});
+  INFO(foam.err);
+  REQUIRE(foam.exit_code == 0);
+  const json f = json::parse(foam.out);
+  REQUIRE(f["candidates"].size() >= 12);
+  for (const json& c : f["candidates"]) CHECK(c["covering_law"] == "foam");
 }

@@ -247,6 +247,9 @@ TEST_CASE("at the limit the binding ratio is 1/safety factor and none is above",
       case LimitingCriterion::kFracture:
         CHECK(r.fracture_ratio * s == Approx(1.0).epsilon(1e-9));
         break;
+      case LimitingCriterion::kLawValidity:  // these scenes stay within their law's validity
+        FAIL("the law's validity does not limit these scenes");
+        break;
       case LimitingCriterion::kNone:
         FAIL("a limited answer names its criterion");
     }

@@ -52,8 +52,9 @@ enum class BodyLimitKind {
   kPressure,         ///< p_max against p_lim / SF
   kFullCompression,  ///< the covering's travel against 1 / SF
   kCrush,            ///< p_max against the covering's compressive strength / SF
+  kLawValidity,      ///< the covering's law leaves its validity (core/verdict.hpp's "law-validity")
 };
-/// "none", "force", "pressure", "full-compression", "crush".
+/// "none", "force", "pressure", "full-compression", "crush", "law-validity".
 std::string_view ToString(BodyLimitKind kind) noexcept;
 
 /// How a body-region contact is judged.
@@ -215,6 +216,9 @@ struct BodyRegionDesignRequest {
   std::vector<CandidateMaterial> materials;
   /// Safety factor, criterion, crushing, unknown strengths.
   DesignRule rule;
+  /// The law the materials are designed with (DesignOptions::covering_law): auto (default) the
+  /// foam law for a material with a measured curve, foam, or hertz.
+  CoveringLaw covering_law = CoveringLaw::kAuto;
   /// Thickness range [m] scanned per material, and the resolution of the bisection.
   double min_thickness_m = 0.1e-3;
   double max_thickness_m = 0.05;

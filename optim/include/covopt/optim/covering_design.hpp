@@ -40,12 +40,14 @@
 /// serialised inside the backend).
 
 #include <atomic>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <covopt/core/compressive_curve.hpp>
 #include <covopt/core/impact_result.hpp>
 #include <covopt/core/scene.hpp>
 #include <covopt/materials/material.hpp>
@@ -80,7 +82,29 @@ struct CandidateMaterial {
   /// Compressive strength [Pa] (yield or 10 % strain), > 0; used when crush_behaviour is
   /// kCrushes.
   double compressive_strength_Pa = 0.0;
+  /// The material's measured compressive curve (covopt/core/compressive_curve.hpp), shared and
+  /// immutable; null: none, and the Hertz law describes the material. Under the covering law
+  /// auto (the default) a material with a curve is designed with the foam law (docs/model.md §16).
+  std::shared_ptr<const CompressiveCurve> compressive_curve{};
+  /// With a curve: true for a flexible foam that recovers, false for a crushable liner; empty
+  /// without a curve.
+  std::optional<bool> recovers{};
+  /// The range of the factor the curve's stresses may take at impact rates [-]; empty when the
+  /// catalog states none.
+  std::optional<materials::Bounds> rate_factor{};
+  /// A grade band standing in for a measured curve: its range of σ(25 %) [Pa]; empty otherwise.
+  std::optional<materials::Bounds> stress_at_25_band_Pa{};
 };
+
+/// The law `material` is designed with under `law`: kFoam where it has a curve and the law is
+/// auto or foam, kHertz otherwise (auto without a curve, or hertz).
+CoveringLaw DesignLawOf(const CandidateMaterial& material, CoveringLaw law) noexcept;
+
+/// The covering a layer of `thickness_m` [m] of `material` makes under `law` (auto, foam or
+/// hertz): E, ν, the thickness, the curve (dropped under hertz) and the law. Every design that
+/// scores a catalog material builds its covering here.
+/// @throws std::invalid_argument for law foam and a material without a curve, naming it.
+CoveringSpec CoveringOf(const CandidateMaterial& material, double thickness_m, CoveringLaw law);
 
 /// Sets score.crush_check and score.crush_ratio (σ_c,max / strength) for `material`
 /// (docs/model.md §12); a failed score keeps an infinite crush ratio.
@@ -112,6 +136,13 @@ struct DesignOptions {
   }
   /// ν_c of the continuous design [-] (docs/model.md §1: 0.25 where none is given).
   double covering_poisson_ratio = 0.25;
+  /// The law the catalog materials are designed with: kAuto (default) the foam law for a
+  /// material with a measured curve (its design rule "within-curve": the strain at the peak
+  /// within the curve, SF as a strain reserve) and Hertz for the others; kFoam the foam law
+  /// (a material without a curve is refused, naming it); kHertz Park's Hertz law for every
+  /// material (the curves ignored). The continuous optimum (E_c, b_c) has no curve: it is
+  /// always a Hertz ideal.
+  CoveringLaw covering_law = CoveringLaw::kAuto;
   /// The laceration [Pa] and contusion [J/m²] limits. Default: 1 MPa and 2.52 J/cm².
   InjuryLimits limits;
   /// Global stage. DIRECT-L by default: deterministic, and on this 2-D box it finds the

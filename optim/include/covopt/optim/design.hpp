@@ -113,6 +113,10 @@ std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalo
                                                 std::span<const std::string> names = {},
                                                 std::span<const std::string> families = {});
 
+/// Under `law` foam, drops the candidates without a compressive curve (the foam law needs one);
+/// under auto and hertz, keeps every candidate.
+void KeepCandidatesForLaw(std::vector<CandidateMaterial>& candidates, CoveringLaw law);
+
 /// Runs the request: problem (a) or (b), the catalog snap, the verdict and the warnings, on
 /// the oracle request.options.oracle chooses (ChooseOracle).
 /// @throws std::invalid_argument naming the field for bad input (scene, options, thickness),

@@ -59,9 +59,16 @@ enum class LimitingCriterion {
   /// F_max against the struck area's lowest published fracture force / safety factor
   /// (docs/model.md §7.1)
   kFracture,
+  /// The covering's law leaves its validity (CoveringValidity::within false; core/verdict.hpp's
+  /// "law-validity"): e.g. a Hertz covering fully compressed without the paper's criterion.
+  kLawValidity,
 };
-/// "none", "laceration", "contusion", "full-compression", "crush", "fracture".
+/// "none", "laceration", "contusion", "full-compression", "crush", "fracture", "law-validity".
 std::string_view ToString(LimitingCriterion criterion) noexcept;
+/// The criterion's name for a covering under `law`: ToString, except the travel rule of a foam
+/// layer, "within-curve" (the strain at the peak within its measured curve, SF as a strain
+/// reserve) where the Hertz law's is "full-compression".
+std::string_view ToString(LimitingCriterion criterion, CoveringLaw law) noexcept;
 
 /// How the crush criterion applies to a design (docs/model.md §12).
 enum class CrushCheck {
@@ -126,6 +133,10 @@ struct DesignScore {
   /// (ImpactPeaks::covering_compression_ratio: (δ_max − t1) / (0.8 b_c)): > 1 means bottomed
   /// out. 0 for the bare robot and while δ_max stays within the scalp's travel.
   double compression_ratio = 0.0;
+  /// Whether the covering's law describes this impact (core's CoveringLawValidity, with a Hertz
+  /// covering's full compression accepted under the paper's criterion: optim::JudgedValidity);
+  /// HeadVerdict(const DesignScore&, ...) counts it as "law-validity". Within for the bare robot.
+  CoveringValidity validity;
   /// Whether and how the crush criterion applies (kNoMaterial unless scored for a material).
   CrushCheck crush_check = CrushCheck::kNoMaterial;
   /// σ_c,max / the material's compressive strength [-] when crush_check is kChecked; else 0.
@@ -152,7 +163,15 @@ struct DesignScore {
   double required_strength_Pa(double safety_factor) const noexcept {
     return safety_factor * peaks.max_compressive_stress_Pa;
   }
-  /// The largest ratio that counts under `rule`, and which criterion it is.
+  /// The covering is out of its law's validity and that counts under `rule`: not within, unless
+  /// the rule is the paper's and the covering is a fully compressed Hertz layer.
+  bool validity_fails(const DesignRule& rule) const noexcept {
+    if (validity.within || bare()) return false;
+    return !(rule.criterion == DesignCriterion::kPaper && peaks.covering_law == CoveringLaw::kHertz &&
+             peaks.fully_compressed);
+  }
+  /// The largest ratio that counts under `rule`, and which criterion it is; kLawValidity with a
+  /// ratio of at least 1/SF (no margin) where validity_fails(rule).
   GoverningRatio governing(const DesignRule& rule) const noexcept;
   /// 1 − SF × the governing ratio: >= 0 when every counted criterion holds, the fraction of
   /// the (derated) limit left over on the one that binds.
@@ -255,8 +274,13 @@ class DesignOracle {
   virtual DesignScore Score(const CoveringDesign& design) const = 0;
   /// Ratios and their gradient (GradientSource of the report).
   virtual DesignScore Score(const CoveringDesign& design, RatioGradient& gradient) const = 0;
-  /// Ratios of a design with another Poisson ratio (a catalog material).
-  virtual DesignScore ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const = 0;
+  /// Ratios of a design with another Poisson ratio (a Hertz material without a curve):
+  /// ScoreCovering of {E, ν, b}.
+  DesignScore ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const;
+  /// Ratios of a whole covering (a catalog material: CoveringOf(material, b, law)), its curve
+  /// and law included: the foam law scores a material with a measured curve. Its validity is
+  /// set. Thickness > 0.
+  virtual DesignScore ScoreCovering(const CoveringSpec& covering) const = 0;
   /// The same scene without covering.
   virtual DesignScore ScoreBare() const = 0;
   /// A relative step for difference quotients of this oracle's gradients (the Ipopt polish's
@@ -306,7 +330,7 @@ class ExactPathOracle final : public DesignOracle {
                   std::string reason = "exact: as asked");
   DesignScore Score(const CoveringDesign& design) const override;
   DesignScore Score(const CoveringDesign& design, RatioGradient& gradient) const override;
-  DesignScore ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const override;
+  DesignScore ScoreCovering(const CoveringSpec& covering) const override;
   DesignScore ScoreBare() const override;
   double DifferenceStep() const noexcept override { return 1e-5; }
 };
@@ -323,12 +347,12 @@ class TimePathOracle final : public DesignOracle {
                  const TimeIntegrationOptions& time_path = {}, std::string reason = "time-path: chosen");
   DesignScore Score(const CoveringDesign& design) const override;
   DesignScore Score(const CoveringDesign& design, RatioGradient& gradient) const override;
-  DesignScore ScoreMaterial(const CoveringDesign& design, double poisson_ratio) const override;
+  DesignScore ScoreCovering(const CoveringSpec& covering) const override;
   DesignScore ScoreBare() const override;
   double DifferenceStep() const noexcept override;
 
  private:
-  DesignScore Simulate(const CoveringDesign& design, double poisson_ratio) const;
+  DesignScore Simulate(const CoveringSpec& covering) const;
   TimeIntegrationOptions time_path_;
 };
 
