@@ -205,15 +205,21 @@ CoveringValidity FoamValidity(const BodyContactModel& model, const BodyContactRe
   // On a curved face the gap under the flat body is read as d - r²/(2 R_c): a contact radius
   // beyond R_c (d > R_c/2) has left the face's cap, where that reading means nothing.
   const bool flat = std::isinf(model.scene().robot_radius_m);
+  // How far along that limit (CoveringValidity::ratio): d/(R_c/2); a flat face has none.
+  const double ratio = flat ? 0.0 : r.covering_deflection_m / (0.5 * model.covering_outer_radius_m());
   if (!flat && r.covering_deflection_m > 0.5 * model.covering_outer_radius_m()) {
-    return {false, "foam law: the contact radius sqrt(2 R_c d) exceeds the face's radius R_c (d > R_c/2): the "
-                   "layer's gap reading does not hold there"};
+    return {false,
+            "foam law: the contact radius sqrt(2 R_c d) exceeds the face's radius R_c (d > R_c/2): the layer's gap "
+            "reading does not hold there",
+            ratio, ratio};
   }
   if (r.fully_compressed) {
-    return {true, "foam law (elastic foundation on the measured curve); used up: past the curve's last point the "
-                  "layer is a rigid stop and the body spring takes the rest"};
+    return {true,
+            "foam law (elastic foundation on the measured curve); used up: past the curve's last point the layer is a "
+            "rigid stop and the body spring takes the rest",
+            ratio, ratio};
   }
-  return {true, "foam law (elastic foundation on the measured curve), within the curve"};
+  return {true, "foam law (elastic foundation on the measured curve), within the curve", ratio, ratio};
 }
 
 }  // namespace internal

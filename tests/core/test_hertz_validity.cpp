@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -245,4 +246,23 @@ TEST_CASE("hertz validity: a fully compressed Hertz covering is not within, head
   CHECK_FALSE(head.validity.within);
   CHECK(head.validity.ratio > 1.0);
   CHECK(head.validity.ratio_full_compression_allowed == 0.0);
+}
+
+TEST_CASE("hertz validity: a foam's ratio on a body region is its contact's share of the face's cap",
+          "[hertz_validity]") {
+  // The foam law's one limit on a curved face is d <= R_c/2 (docs/model.md §15.5); an elastomer's
+  // Poisson ratio plays no part under the foam law.
+  static const std::vector<covopt::StrainStressPoint> kPoints{{0.05, 20e3}, {0.5, 60e3}, {0.8, 2e6}};
+  BodyContactScene s = HandScene(kA60Modulus_Pa, kA60Poisson, 0.040, 0.015, 1.0);
+  s.covering.compressive_curve =
+      std::make_shared<const covopt::CompressiveCurve>(covopt::CompressiveCurve::FromPoints(kPoints));
+  for (const double speed : {0.2, 0.5, 1.0, 2.0, 4.0}) {
+    const BodyContactResult r = HandAt(s, speed);
+    INFO("v = " << speed << ": " << r.validity.note);
+    REQUIRE(r.covering_law == covopt::CoveringLaw::kFoam);
+    CHECK(r.validity.ratio == Approx(r.covering_deflection_m / (0.5 * 0.055)).epsilon(1e-12));
+    CHECK(r.validity.ratio_full_compression_allowed == r.validity.ratio);
+    CHECK(r.validity.within == (r.validity.ratio <= 1.0));
+    CHECK_FALSE(Contains(r.validity.note, "elastomer"));
+  }
 }
