@@ -312,7 +312,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     }
   }
   ApplySceneFlags(options, plan);
-  scene_file::KeepCurveOnlyUnderFoamLaw(plan.scene.covering);
+  plan.keep_travel = options.keep_travel;
   if (!plan.ranges.empty() && !options.accept_ranges) {
     throw InputError(fmt::format("{} '{}': a range (an uncertain input) is taken by simulate, optimize and speed-limit "
                                  "only; this command needs one value",
@@ -361,7 +361,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
 
 void Judge(report::SimulationReport& report, const SimulationPlan& plan) {
   report.verdict = optim::SimulationVerdict(report.scene, report.result.peaks, plan.limits, plan.safety_factor,
-                                            CrushCheckOf(plan));
+                                            CrushCheckOf(plan), false, plan.keep_travel);
 }
 
 optim::CoveringCrushCheck CrushCheckOf(const SimulationPlan& plan) {

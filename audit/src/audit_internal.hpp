@@ -55,6 +55,7 @@ inline BodyLimitKind FromHead(LimitingCriterion criterion) noexcept {
     case LimitingCriterion::kFullCompression: return BodyLimitKind::kFullCompression;
     case LimitingCriterion::kCrush: return BodyLimitKind::kCrush;
     case LimitingCriterion::kFracture: return BodyLimitKind::kForce;  // the bone's fracture force
+    case LimitingCriterion::kLawValidity: return BodyLimitKind::kLawValidity;
     case LimitingCriterion::kNone: break;
   }
   return BodyLimitKind::kNone;
@@ -154,7 +155,8 @@ class RegionLimits {
       scene.braking_m_per_s2 = braking;
       const BodyRegionSpeedLimit limit =
           MaxSafeSpeed(scene, setup_.regions[r],
-                       BodyRegionOptions{rule, covered ? covering.material : std::nullopt, rule.compression_counts()});
+                       BodyRegionOptions{rule, covered ? covering.material : std::nullopt,
+                                         setup_.keep_travel && rule.compression_counts()});
       out.status = limit.status;
       out.max_safe_speed_m_per_s = limit.max_safe_speed_m_per_s;
       out.binding = limit.limited_by;
@@ -193,6 +195,7 @@ class RegionLimits {
     const DesignRule& rule = setup_.rule;
     SpeedLimitOptions options;
     options.allow_full_compression = !rule.compression_counts();
+    options.keep_travel = setup_.keep_travel;
     options.safety_factor = rule.safety_factor;
     options.allow_crushing = rule.crushing_allowed;
     const std::optional<CandidateMaterial>& material = covering.material;

@@ -37,6 +37,7 @@ double CriterionRatio(const DesignScore& score, LimitingCriterion criterion) noe
     case LimitingCriterion::kFullCompression: return score.compression_ratio;
     case LimitingCriterion::kCrush: return score.crush_ratio;
     case LimitingCriterion::kFracture: return score.fracture_ratio;
+    case LimitingCriterion::kLawValidity:
     case LimitingCriterion::kNone: break;
   }
   return 0.0;

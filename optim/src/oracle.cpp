@@ -154,6 +154,7 @@ std::string_view ToString(LimitingCriterion criterion) noexcept {
     case LimitingCriterion::kFullCompression: return "full-compression";
     case LimitingCriterion::kCrush: return "crush";
     case LimitingCriterion::kFracture: return "fracture";
+    case LimitingCriterion::kLawValidity: return "law-validity";
   }
   return "unknown";
 }

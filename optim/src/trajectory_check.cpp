@@ -3,6 +3,7 @@
 #include "covopt/optim/trajectory_check.hpp"
 #include "covopt/optim/verdicts.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -119,7 +120,8 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
       verdict.contusion_ratio = judgement.ratios.contusion_ratio;
       verdict.fracture_ratio = judgement.ratios.fracture_ratio;
       verdict.compression_ratio = judgement.ratios.compression_ratio;
-      verdict.verdict = HeadVerdict(at, judgement.peaks, options.limit);
+      verdict.validity = judgement.validity;
+      verdict.verdict = HeadVerdict(at, judgement.peaks, options.limit, &judgement.validity);
       verdict.safe = verdict.verdict.safe();
       verdict.speed_scale = verdict.speed_limit.max_safe_speed_m_per_s / sample.speed_m_per_s;
       if (!verdict.safe) ++check.unsafe_sample_count;
@@ -135,6 +137,16 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
     check.samples.push_back(verdict);
   }
 
+  if (scene.covering.thickness_m > 0.0) {
+    check.covering_law = std::string(covopt::ToString(ImpactModel::FromScene(scene).covering_law()));
+    const auto out = std::find_if(check.samples.begin(), check.samples.end(),
+                                  [](const SampleVerdict& s) { return s.moving && !s.validity.within; });
+    if (out != check.samples.end()) {
+      check.validity = out->validity;
+    } else if (check.worst_sample) {
+      check.validity = check.samples[*check.worst_sample].validity;
+    }
+  }
   if (check.failed_sample_count > 0) {
     check.status = TrajectoryCheckStatus::kEvaluationFailed;
     check.safe_speed_scale = 0.0;

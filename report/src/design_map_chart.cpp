@@ -32,6 +32,7 @@ Style StyleOf(optim::LimitingCriterion c) {
     case optim::LimitingCriterion::kFullCompression: return {"#8e44ad", 4};
     case optim::LimitingCriterion::kCrush: return {"#d35400", 5};
     case optim::LimitingCriterion::kFracture: return {"#c0392b", 3};
+    case optim::LimitingCriterion::kLawValidity:
     case optim::LimitingCriterion::kNone: break;
   }
   return {"#555555", 1};

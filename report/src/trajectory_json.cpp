@@ -82,6 +82,9 @@ std::string TrajectoryCheckJson(const optim::TrajectoryCheck& check, const robot
   } else {
     j["worst_sample"] = nullptr;
   }
+  // The covering's law and its validity over the samples (decision D6).
+  j["covering_law"] = check.covering_law;
+  j["validity"] = {{"within", check.validity.within}, {"note", check.validity.note}};
   j["sample_count"] = check.samples.size();
   j["unsafe_sample_count"] = check.unsafe_sample_count;
   j["failed_sample_count"] = check.failed_sample_count;
@@ -94,7 +97,11 @@ std::string TrajectoryCheckJson(const optim::TrajectoryCheck& check, const robot
   j["scene"] = shown;
   j["joint_names"] = motion.joint_names;
   ordered_json samples = ordered_json::array();
-  for (const optim::SampleVerdict& v : check.samples) samples.push_back(SampleJson(v));
+  for (const optim::SampleVerdict& v : check.samples) {
+    ordered_json sample = SampleJson(v);
+    sample["within_law"] = v.validity.within;
+    samples.push_back(std::move(sample));
+  }
   j["samples"] = samples;
   std::vector<std::string> warnings(input_warnings.begin(), input_warnings.end());
   warnings.insert(warnings.end(), motion.warnings.begin(), motion.warnings.end());

@@ -86,7 +86,8 @@ std::string ScaledTrajectory(const TempDir& dir, double factor) {
 }  // namespace
 
 TEST_CASE("robot --trajectory --json is the library's check of the same trajectory, to the bit", "[trajectory]") {
-  const json j = JsonOf(Run(Fr3(kPick, {"--json"})));
+  // --keep-travel: the library's default options (the travel rule kept).
+  const json j = JsonOf(Run(Fr3(kPick, {"--keep-travel", "--json"})));
   const auto chain = covopt::robot::KinematicChain::FromUrdfFile(kFr3, {"", "fr3_link8"});
   const auto motion = covopt::robot::ContactMotion(chain, covopt::robot::ReadJointTrajectory(kPick, 7),
                                                    Eigen::Vector3d::Zero());

@@ -59,8 +59,11 @@ enum class LimitingCriterion {
   /// F_max against the struck area's lowest published fracture force / safety factor
   /// (docs/model.md §7.1)
   kFracture,
+  /// The covering's law leaves its validity (CoveringValidity::within false; core/verdict.hpp's
+  /// "law-validity"): e.g. a Hertz covering fully compressed without the paper's criterion.
+  kLawValidity,
 };
-/// "none", "laceration", "contusion", "full-compression", "crush", "fracture".
+/// "none", "laceration", "contusion", "full-compression", "crush", "fracture", "law-validity".
 std::string_view ToString(LimitingCriterion criterion) noexcept;
 
 /// How the crush criterion applies to a design (docs/model.md §12).
@@ -126,6 +129,10 @@ struct DesignScore {
   /// (ImpactPeaks::covering_compression_ratio: (δ_max − t1) / (0.8 b_c)): > 1 means bottomed
   /// out. 0 for the bare robot and while δ_max stays within the scalp's travel.
   double compression_ratio = 0.0;
+  /// Whether the covering's law describes this impact (core's CoveringLawValidity, with a Hertz
+  /// covering's full compression accepted under the paper's criterion: optim::JudgedValidity);
+  /// HeadVerdict(const DesignScore&, ...) counts it as "law-validity". Within for the bare robot.
+  CoveringValidity validity;
   /// Whether and how the crush criterion applies (kNoMaterial unless scored for a material).
   CrushCheck crush_check = CrushCheck::kNoMaterial;
   /// σ_c,max / the material's compressive strength [-] when crush_check is kChecked; else 0.
