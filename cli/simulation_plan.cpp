@@ -159,9 +159,9 @@ void AddSceneFieldOptions(CLI::App& command, std::optional<std::string>& scene_f
       ->group("Scene");
   command
       .add_option("--covering-law", choices.covering_law,
-                  "the covering's law: auto (default; today the Hertz law in every command), foam (the --material's "
-                  "measured compressive curve; simulate and speed-limit, not optimize yet), or hertz "
-                  "(docs/model.md §15, §16)")
+                  "the covering's law: auto (default: the foam law where the --material has a measured compressive "
+                  "curve, else Hertz), foam (the --material's measured curve; needs one), or hertz (the Hertz law, "
+                  "the curve ignored) (docs/model.md §15, §16)")
       ->check(CLI::IsMember({"auto", "foam", "hertz"}))
       ->type_name("LAW")
       ->group("Scene");

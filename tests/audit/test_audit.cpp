@@ -155,7 +155,7 @@ double DirectMaxSafeSpeed(const ca::AuditSetup& setup, const ca::AuditCovering& 
     scene.contact_area_m2 = setup.contact_area_m2;
     return co::MaxSafeSpeed(scene, setup.regions[r],
                             co::BodyRegionOptions{setup.rule, covered ? covering.material : std::nullopt,
-                                                  setup.rule.compression_counts()})
+                                                  setup.keep_travel && setup.rule.compression_counts()})
         .max_safe_speed_m_per_s;
   }
   covopt::Scene scene = *setup.head;
@@ -165,6 +165,7 @@ double DirectMaxSafeSpeed(const ca::AuditSetup& setup, const ca::AuditCovering& 
   co::SpeedLimitOptions options;
   options.safety_factor = setup.rule.safety_factor;
   options.allow_full_compression = !setup.rule.compression_counts();
+  options.keep_travel = setup.keep_travel;
   options.allow_crushing = setup.rule.crushing_allowed;
   if (covered && covering.material && covering.material->crush_behaviour == covopt::materials::CrushBehaviour::kCrushes) {
     options.covering_compressive_strength_Pa = covering.material->compressive_strength_Pa;
@@ -183,6 +184,7 @@ TEST_CASE("the E* shortcut equals the direct speed limit and verdict at random F
     for (const bool covered : {true, false}) {
       ca::AuditSetup setup = Fr3Setup(AllTransient());
       setup.rule.safety_factor = sf;
+      setup.keep_travel = sf > 1.0;  // the travel rule kept (--keep-travel) on half the cases, judged on injury on the rest
       setup.contact_area_m2 = 1e-4;
       if (!covered) setup.covering = ca::AuditCovering{covopt::CoveringSpec{1e6, 0.3, 0.0}, std::nullopt};
       int checked = 0;
@@ -220,7 +222,7 @@ TEST_CASE("the E* shortcut equals the direct speed limit and verdict at random F
             scene.covering = one.covering.covering;
             scene.contact_area_m2 = one.contact_area_m2;
             const co::BodyRegionOptions options{one.rule, covered ? one.covering.material : std::nullopt,
-                                                one.rule.compression_counts()};
+                                                one.keep_travel && one.rule.compression_counts()};
             scene.speed_m_per_s = c.max_safe_speed_m_per_s * (1.0 - 1e-9);
             CHECK(co::JudgeBodyContact(scene, one.regions[r], options).admissible);
             scene.speed_m_per_s = c.max_safe_speed_m_per_s;
@@ -624,7 +626,8 @@ TEST_CASE("a braking robot's audit is the brute-force braked maximum, found by b
             scene.reaction_delay_s = setup.reaction_delay_s;
             scene.braking_m_per_s2 = setup.braking_m_per_s2;
             const co::BodyRegionSpeedLimit limit =
-                co::MaxSafeSpeed(scene, setup.regions[r], co::BodyRegionOptions{setup.rule, material, setup.rule.compression_counts()});
+                co::MaxSafeSpeed(scene, setup.regions[r], co::BodyRegionOptions{setup.rule, material,
+                                                                       setup.keep_travel && setup.rule.compression_counts()});
             REQUIRE(limit.status != co::SpeedLimitStatus::kEvaluationFailed);
             v_max = limit.max_safe_speed_m_per_s;
           } else {
