@@ -638,6 +638,7 @@ TEST_CASE("a braking robot's audit is the brute-force braked maximum, found by b
             scene.robot.braking_m_per_s2 = setup.braking_m_per_s2;
             scene.covering = setup.covering.covering;
             co::SpeedLimitOptions options;
+            options.keep_travel = setup.keep_travel;
             if (material.crush_behaviour == covopt::materials::CrushBehaviour::kCrushes) {
               options.covering_compressive_strength_Pa = material.compressive_strength_Pa;
             }
@@ -656,7 +657,8 @@ TEST_CASE("a braking robot's audit is the brute-force braked maximum, found by b
   for (std::size_t k = 0; k < braked.cells.size(); ++k) {
     const ca::AuditCell &b = braked.cells[k], &u = unbraked.cells[k];
     INFO(braked.links[b.link] << ", " << braked.regions[b.region]);
-    CHECK(b.governing_ratio == Approx(brute[k]).epsilon(1e-12));
+    // The braked limits are bracketed on the time path to 1e-10 relative (speed_limit.hpp).
+    CHECK(b.governing_ratio == Approx(brute[k]).epsilon(1e-10));
     CHECK(b.governing_ratio <= u.governing_ratio * (1 + 1e-9));
     if (b.sample) {
       CHECK(b.speed_scale == Approx(1.0 / b.governing_ratio).epsilon(1e-12));
