@@ -243,21 +243,6 @@ std::string UsedUpText(const BodyRegionSpeedLimit& limit, std::string what) {
   return what;
 }
 
-/// The largest speed up to `speed` [m/s] at which `region_scene`'s covering stays within its
-/// law's validity (BodyContactResult::validity, lost once as the compression grows): `speed`
-/// itself when within there, else by bisection from the model's lowest speed.
-double WithinLawSpeed(const BodyContactScene& region_scene, double speed) {
-  const auto within = [&](double v) { return Solve(BodyContactModel::FromScene(AtSpeed(region_scene, v))).validity.within; };
-  if (!(speed >= kMinSpeed_m_per_s) || within(speed)) return speed;
-  double lo = kMinSpeed_m_per_s, hi = speed;
-  if (!within(lo)) return 0.0;
-  for (int iteration = 0; iteration < 200 && hi - lo > 1e-14 * hi; ++iteration) {
-    const double mid = 0.5 * (lo + hi);
-    (within(mid) ? lo : hi) = mid;
-  }
-  return lo;
-}
-
 /// A covering of unknown compressive strength that the rule refuses: no speed is safe.
 bool RefusedForUnknownStrength(const BodyContactScene& scene, const BodyRegionOptions& options) {
   return scene.has_covering() && options.material &&
@@ -314,7 +299,7 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
     speed = std::sqrt(2.0 * limit.energy_J / model.reduced_mass_kg());
   }
   if (covered) {  // the law's validity counts always ("law-validity")
-    const double within = WithinLawSpeed(region_scene, std::min(speed, kMaxSpeed_m_per_s));
+    const double within = internal::WithinLawSpeed(region_scene, std::min(speed, kMaxSpeed_m_per_s), kMinSpeed_m_per_s);
     if (within < std::min(speed, kMaxSpeed_m_per_s)) {
       speed = within;
       by = BodyLimitKind::kLawValidity;
@@ -791,12 +776,6 @@ std::string BodyRegionCriterion(const DesignRule& rule, bool head) {
   if (rule.compression_counts()) text += ", the covering not fully compressed";
   if (!rule.crushing_allowed) text += ", the covering not crushed where its strength is known";
   return text + "; safety factor " + sf + " on each";
-}
-
-DesignRule JudgedRule(const BodyRegionOptions& options) noexcept {
-  DesignRule rule = options.rule;
-  rule.criterion = options.keep_travel ? DesignCriterion::kNoFullCompression : DesignCriterion::kPaper;
-  return rule;
 }
 
 BodyRegionOptions BodyRegionOptionsOf(double safety_factor, bool allow_full_compression, bool allow_crushing,

@@ -17,10 +17,10 @@ namespace {
 
 using nlohmann::ordered_json;
 
-constexpr std::array<std::string_view, 12> kSampleColumns = {
+constexpr std::array<std::string_view, 13> kSampleColumns = {
     "time_s",      "speed_m_per_s", "reflected_mass_kg", "moving",         "max_safe_speed_m_per_s",
     "speed_scale", "limited_by",    "laceration_ratio",  "contusion_ratio", "fracture_ratio",
-    "compression_ratio", "safe"};
+    "compression_ratio", "safe",    "within_law"};
 
 ordered_json MassValue(double kg) { return std::isinf(kg) ? ordered_json("fixed") : internal::Number(kg); }
 
@@ -44,6 +44,7 @@ ordered_json SampleJson(const optim::SampleVerdict& v) {
   j["fracture_ratio"] = ratio(v.fracture_ratio);
   j["compression_ratio"] = ratio(v.compression_ratio);
   j["safe"] = failed ? ordered_json(nullptr) : ordered_json(v.safe);
+  j["within_law"] = v.validity.within;  // the covering's law at this impact (decision D6)
   return j;
 }
 
@@ -97,11 +98,7 @@ std::string TrajectoryCheckJson(const optim::TrajectoryCheck& check, const robot
   j["scene"] = shown;
   j["joint_names"] = motion.joint_names;
   ordered_json samples = ordered_json::array();
-  for (const optim::SampleVerdict& v : check.samples) {
-    ordered_json sample = SampleJson(v);
-    sample["within_law"] = v.validity.within;
-    samples.push_back(std::move(sample));
-  }
+  for (const optim::SampleVerdict& v : check.samples) samples.push_back(SampleJson(v));
   j["samples"] = samples;
   std::vector<std::string> warnings(input_warnings.begin(), input_warnings.end());
   warnings.insert(warnings.end(), motion.warnings.begin(), motion.warnings.end());

@@ -152,7 +152,7 @@ TEST_CASE("robot --trajectory: --json, --csv and the table agree", "[trajectory]
   REQUIRE(lines.size() == 102);
   CHECK(lines[0] ==
         "time_s,speed_m_per_s,reflected_mass_kg,moving,max_safe_speed_m_per_s,speed_scale,limited_by,"
-        "laceration_ratio,contusion_ratio,fracture_ratio,compression_ratio,safe");
+        "laceration_ratio,contusion_ratio,fracture_ratio,compression_ratio,safe,within_law");
   const auto columns = covopt::report::TrajectorySampleColumns();
   for (std::size_t i = 0; i < 101; ++i) {
     std::vector<std::string> cells;
