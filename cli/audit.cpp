@@ -217,6 +217,7 @@ AuditRun Resolve(const AuditCommandOptions& o) {
   in.scene_warnings = InputWarnings(plan);
   optim::AppendNewWarnings(in.scene_warnings, CrushCheckOf(plan).notes);  // the default covering is in both
   AuditRun run(audit::AssembleAudit(in));
+  run.assembled.setup.keep_travel = o.scene.keep_travel;
   run.plot_format = plot_format;
   if (o.design) {  // optimize's ranges, named by the flags (the library names its own fields)
     const audit::AuditDesignOptions& design = run.assembled.options.design;
@@ -254,7 +255,9 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
   }
   fmt::print(out, "Regions    {} ISO/TS 15066 region{} (transient){}\n", setup.regions.size(),
              setup.regions.size() == 1 ? "" : "s", setup.head ? fmt::format(" and the head ({})", HeadCriteriaName()) : "");
-  fmt::print(out, "Criterion  {}\n", BodyCriterion(setup.rule, setup.head.has_value()));
+  optim::DesignRule judged = setup.rule;  // the travel rule counts only with --keep-travel
+  if (!setup.keep_travel) judged.criterion = optim::DesignCriterion::kPaper;
+  fmt::print(out, "Criterion  {}\n", BodyCriterion(judged, setup.head.has_value()));
   if (setup.braking_m_per_s2 > 0.0) {
     fmt::print(out, "Braking    reaction delay {}, braking {}\n",
                FormatQuantity(setup.reaction_delay_s, QuantityKind::kTime),
@@ -363,7 +366,8 @@ void SetupAudit(CLI::App* sub, AuditCommandOptions& options) {
   for (const char* flag : {"--robot-mass", "--speed", "--robot-radius"}) sub->get_option(flag)->group("");
   AddRuleOptions(*sub, {.safety_factor = &options.scene.safety_factor,
                         .allow_full_compression = &options.allow_full_compression,
-                        .allow_crushing = &options.allow_crushing});
+                        .allow_crushing = &options.allow_crushing,
+                        .keep_travel = &options.scene.keep_travel});
   constexpr const char* kDesign = "Design (--design)";
   sub->add_flag("--design", options.design,
                 "per link, the thinnest catalog covering that makes the program safe at full speed")

@@ -131,7 +131,7 @@ optim::BodyRegionOptions BodyRegionOptionsOf(const SimulationPlan& plan, bool al
   // without it (the crush check's notes say so), as speed-limit does for the head.
   return optim::BodyRegionOptionsOf(plan.safety_factor, allow_full_compression, allow_crushing,
                                     !CrushCheckOf(plan).notes.empty(),
-                                    plan.covering_material ? &*plan.covering_material : nullptr);
+                                    plan.covering_material ? &*plan.covering_material : nullptr, plan.keep_travel);
 }
 
 std::optional<std::string> ContactAreaNote(const BodyRegionPlan& regions, const Scene& scene, bool bare_robot_judged) {

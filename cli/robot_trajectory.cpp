@@ -95,6 +95,7 @@ TrajectoryRun Resolve(const RobotModelOptions& model, const RobotTrajectoryOptio
   run.limit.limits = run.scene.limits;
   run.limit.safety_factor = run.scene.safety_factor;
   run.limit.allow_full_compression = options.allow_full_compression;
+  run.limit.keep_travel = run.scene.keep_travel;
   run.limit.covering_compressive_strength_Pa = CrushCheckOf(run.scene).compressive_strength_Pa;
   if (options.csv_file && options.csv_file->empty()) throw InputError("--csv: empty file name");
   if (json && options.csv_file && *options.csv_file == "-") {
@@ -172,7 +173,7 @@ int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptio
     head = report::HeadTrajectorySummary{std::string(optim::ToString(run.check.status)), run.check.safe_speed_scale,
                                          run.check.message};
   }
-  const std::string criterion = BodyCriterion(body_options.rule, regions.has_head());
+  const std::string criterion = BodyCriterion(optim::JudgedRule(body_options), regions.has_head());
   std::vector<std::string> warnings = run.input_warnings;
   warnings.insert(warnings.end(), run.motion.warnings.begin(), run.motion.warnings.end());
   warnings.insert(warnings.end(), regions.notes.begin(), regions.notes.end());
@@ -245,7 +246,8 @@ void AddRobotTrajectoryOptions(CLI::App& sub, RobotTrajectoryOptions& options) {
   sub.get_option("--robot-mass")->group("");
   sub.get_option("--speed")->group("");
   AddRuleOptions(sub, {.safety_factor = &options.scene.safety_factor,
-                       .allow_full_compression = &options.allow_full_compression});
+                       .allow_full_compression = &options.allow_full_compression,
+                       .keep_travel = &options.scene.keep_travel});
   AddOutputFileOption(sub, "--csv", options.csv_file, "write the trajectory's samples as CSV ('-': to stdout instead of the table)", "FILE.csv|-");
   AddOutputFileOption(sub, "--plot", options.plot_file, "chart with gnuplot: speed and max safe speed over time, and the speed scaled by the safe "
                  "speed scale", "FILE.png|FILE.svg");

@@ -40,6 +40,15 @@ void AddRuleOptions(CLI::App& command, const RuleFlagTargets& targets, std::stri
                   "may not, the robot must never reach bone through it)")
         ->group(group);
   }
+  if (targets.keep_travel) {
+    command
+        .add_flag("--keep-travel", *targets.keep_travel,
+                  "the covering's travel rule as a limit: it stays within its travel (Hertz: not fully compressed; "
+                  "foam: within its measured curve), the safety factor as a reserve (default: the travel is "
+                  "reported, not a limit: a foam used up is within its law, its stop modelled, and is reported at "
+                  "its own speed; the law's validity counts always)")
+        ->group(group);
+  }
   if (targets.allow_crushing) {
     command
         .add_flag("--allow-crushing", *targets.allow_crushing,

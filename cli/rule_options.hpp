@@ -2,7 +2,7 @@
 /// @file rule_options.hpp
 /// The rule group every judging command shares ("Limits" in its --help): the injury limits
 /// (--laceration-limit, --contusion-limit), --safety-factor and the design rule's criteria
-/// (--allow-full-compression, --allow-crushing, --allow-unknown-strength), registered here once
+/// (--allow-full-compression, --allow-crushing, --allow-unknown-strength, --keep-travel), registered here once
 /// for all of them. Each command stores them in its own options and offers those it takes.
 
 #include <optional>
@@ -23,6 +23,7 @@ struct RuleFlagTargets {
   bool* allow_full_compression = nullptr;                  ///< --allow-full-compression
   bool* allow_crushing = nullptr;                          ///< --allow-crushing
   bool* allow_unknown_strength = nullptr;                  ///< --allow-unknown-strength
+  bool* keep_travel = nullptr;                             ///< --keep-travel
 };
 
 /// Adds the rule's flags `targets` names to `command`, in its "Limits" group (or `group`).

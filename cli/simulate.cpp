@@ -50,7 +50,7 @@ written (e.g. gnuplot missing); 2 bad input.)";
 void SetupSimulate(CLI::App* sub, SimulateOptions& options) {
   sub->footer(std::string(kFooter));
   AddSceneOptions(*sub, options);
-  AddRuleOptions(*sub, {.safety_factor = &options.safety_factor});
+  AddRuleOptions(*sub, {.safety_factor = &options.safety_factor, .keep_travel = &options.keep_travel});
 
   sub->add_option("--method", options.method,
                   "auto (default: the exact energy balance where the scene admits it, else "

@@ -159,9 +159,9 @@ void AddSceneFieldOptions(CLI::App& command, std::optional<std::string>& scene_f
       ->group("Scene");
   command
       .add_option("--covering-law", choices.covering_law,
-                  "the covering's law: auto (default; today the Hertz law in every command), foam (the --material's "
-                  "measured compressive curve; simulate and speed-limit, not optimize yet), or hertz "
-                  "(docs/model.md §15, §16)")
+                  "the covering's law: auto (default: the foam law where the --material has a measured compressive "
+                  "curve, else Hertz), foam (the --material's measured curve; needs one), or hertz (the Hertz law, "
+                  "the curve ignored) (docs/model.md §15, §16)")
       ->check(CLI::IsMember({"auto", "foam", "hertz"}))
       ->type_name("LAW")
       ->group("Scene");
@@ -312,7 +312,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     }
   }
   ApplySceneFlags(options, plan);
-  scene_file::KeepCurveOnlyUnderFoamLaw(plan.scene.covering);
+  plan.keep_travel = options.keep_travel;
   if (!plan.ranges.empty() && !options.accept_ranges) {
     throw InputError(fmt::format("{} '{}': a range (an uncertain input) is taken by simulate, optimize and speed-limit "
                                  "only; this command needs one value",
@@ -361,7 +361,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
 
 void Judge(report::SimulationReport& report, const SimulationPlan& plan) {
   report.verdict = optim::SimulationVerdict(report.scene, report.result.peaks, plan.limits, plan.safety_factor,
-                                            CrushCheckOf(plan));
+                                            CrushCheckOf(plan), false, plan.keep_travel);
 }
 
 optim::CoveringCrushCheck CrushCheckOf(const SimulationPlan& plan) {

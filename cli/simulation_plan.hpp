@@ -67,6 +67,9 @@ struct SimulateOptions {
   /// --safety-factor (simulate only), in [1, 100]: each verdict is judged against its limit
   /// divided by it. Default: the scene file's limits.safety_factor, else 1.
   std::optional<std::string> safety_factor;
+  /// --keep-travel (simulate, speed-limit, robot, audit, sweep): the covering's travel rule
+  /// ("full-compression" / "within-curve") as a limit. Default: reported only (decision D2).
+  bool keep_travel = false;
   /// --method auto|exact|cvode|<integrator> (cvode-adams, arkode-erk54, ...: see
   /// TimeIntegrationMethods()). Default auto: exact where the scene has an energy integral
   /// (conservative or damped), else the library's default integrator
@@ -125,6 +128,8 @@ struct SimulationPlan {
   /// then --safety-factor). Ratios stay value/limit; a verdict is safe when
   /// safety_factor * ratio <= 1.
   double safety_factor = 1.0;
+  /// --keep-travel: the covering's travel rule counts as a limit (SpeedLimitOptions::keep_travel).
+  bool keep_travel = false;
   /// How the impact is computed (--method, --rtol, ...; --history and --plot record a history).
   SolveOptions solve;
   /// The time path runs (ChoosePath(scene, solve)); false for the exact path.

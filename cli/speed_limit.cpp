@@ -125,7 +125,8 @@ void SetupSpeedLimit(CLI::App* sub, SpeedLimitCommandOptions& options) {
       ->group("Scene");
   AddRuleOptions(*sub, {.safety_factor = &options.scene.safety_factor,
                         .allow_full_compression = &options.allow_full_compression,
-                        .allow_crushing = &options.allow_crushing});
+                        .allow_crushing = &options.allow_crushing,
+                        .keep_travel = &options.scene.keep_travel});
   sub->add_option("--solve-for", options.solve_for,
                   "speed (default): the max safe speed per --robot-mass; mass: the max safe reflected mass per "
                   "--speed")
@@ -206,6 +207,7 @@ SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
   plan.options.limits = first.limits;
   plan.options.safety_factor = first.safety_factor;
   plan.options.allow_full_compression = options.allow_full_compression;
+  plan.options.keep_travel = first.keep_travel;
   plan.options.allow_crushing = options.allow_crushing;
   // The coverings differ only in their covering: the first scene decides what the oracle may be.
   plan.options.oracle = ResolveOracleFlags(options.oracle, first.scene, "search", plan.warnings);

@@ -124,7 +124,7 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
                                                                  options.allow_crushing),
                                              plan.options, plan.options.oracle.time_path};
       request.head_options.covering_compressive_strength_Pa = CrushCheckOf(covering).compressive_strength_Pa;
-      rule = request.region_options.rule;
+      rule = optim::JudgedRule(request.region_options);
       // A limit the time path could not answer (a braking robot) is no answer at all: exit 1.
       const optim::TargetSpeedLimits table = optim::TargetSpeedLimitTable(request, regions);
       if (!table.failure.empty()) return errors.Failed(table.failure);

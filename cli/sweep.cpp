@@ -33,6 +33,7 @@
 #include "covopt/report/sweep_charts.hpp"
 #include "plot.hpp"
 #include "progress.hpp"
+#include "rule_options.hpp"
 #include "covopt/report/sweep_csv.hpp"
 #include "quantity.hpp"
 #include "output_options.hpp"
@@ -137,6 +138,7 @@ void SetupSweep(CLI::App* sub, SweepCommandOptions& options) {
 
   AddSceneOptions(*sub, options.scene);
   AddBodyRegionOptions(*sub, options.scene.body);
+  AddRuleOptions(*sub, {.keep_travel = &options.scene.keep_travel});
 
   AddOutputFileOption(*sub, "--csv", options.csv_file, "write one row per point (SI units); '-' prints it on stdout instead of the "
                   "summary", "FILE.csv|-");
@@ -205,6 +207,10 @@ SweepRun ResolveSweep(const SweepCommandOptions& options) {
     run.threads = static_cast<unsigned>(*options.threads);
   }
   if (options.csv_file && options.csv_file->empty()) throw InputError("--csv: empty file name");
+  if (options.scene.keep_travel) {
+    throw InputError("--keep-travel applies with --body-region: the head's sweep reports the covering's travel in its "
+                     "own columns (fully compressed, admissible); drop it");
+  }
   if (options.plot_quantity) {
     run.quantity = FindResultColumn(*options.plot_quantity);
     if (run.quantity == nullptr) {

@@ -155,7 +155,8 @@ class RegionLimits {
       scene.braking_m_per_s2 = braking;
       const BodyRegionSpeedLimit limit =
           MaxSafeSpeed(scene, setup_.regions[r],
-                       BodyRegionOptions{rule, covered ? covering.material : std::nullopt, rule.compression_counts()});
+                       BodyRegionOptions{rule, covered ? covering.material : std::nullopt,
+                                         setup_.keep_travel && rule.compression_counts()});
       out.status = limit.status;
       out.max_safe_speed_m_per_s = limit.max_safe_speed_m_per_s;
       out.binding = limit.limited_by;
@@ -194,6 +195,7 @@ class RegionLimits {
     const DesignRule& rule = setup_.rule;
     SpeedLimitOptions options;
     options.allow_full_compression = !rule.compression_counts();
+    options.keep_travel = setup_.keep_travel;
     options.safety_factor = rule.safety_factor;
     options.allow_crushing = rule.crushing_allowed;
     const std::optional<CandidateMaterial>& material = covering.material;

@@ -46,6 +46,15 @@ Criterion& Verdict::Add(std::string_view name, CriterionPart part, std::string_v
   return criteria.back();
 }
 
+Criterion& AddLawValidity(Verdict& verdict, bool within) {
+  Criterion& c = verdict.Add(kLawValidityRule, CriterionPart::kDesignRule, "1", within ? 0.0 : 1.0, 1.0,
+                             "the covering law's validity", true, !within);
+  c.derated_limit = 1.0;  // the model's range: not derated by the safety factor
+  c.passed = within;
+  if (!within) c.note = "out of the covering law's validity (see the validity note)";
+  return c;
+}
+
 const Criterion* Verdict::Find(std::string_view name) const noexcept {
   for (const Criterion& c : criteria) {
     if (c.name == name) return &c;

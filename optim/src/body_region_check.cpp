@@ -72,7 +72,7 @@ void ValidateOptions(const BodyRegionOptions& options) {
 /// `options` as the body-region code reads them: the travel criterion counts exactly when
 /// keep_travel is set (BodyRegionOptions::keep_travel decides, not the rule's criterion).
 BodyRegionOptions Effective(BodyRegionOptions options) {
-  options.rule.criterion = options.keep_travel ? DesignCriterion::kNoFullCompression : DesignCriterion::kPaper;
+  options.rule = JudgedRule(options);
   return options;
 }
 
@@ -97,6 +97,7 @@ std::string ScopeOf(const ScopeText& text, const DesignRule& rule, bool covered,
   scope += text.description;
   scope += "; criteria: force";
   if (pressure_evaluated) scope += ", pressure";
+  if (covered) scope += ", the covering within its law's validity";
   if (covered && rule.compression_counts()) scope += ", the covering not fully compressed";
   if (covered) {
     switch (crush) {
@@ -179,6 +180,12 @@ BodyRegionJudgement Judge(const BodyContactModel& model, const materials::BodyLi
   const bool compression_counts = covered && rule.compression_counts();
   if (compression_counts) consider(j.compression_ratio, BodyLimitKind::kFullCompression);
   if (j.crush_check == CrushCheck::kChecked && !rule.crushing_allowed) consider(j.crush_ratio, BodyLimitKind::kCrush);
+  // Out of the law's validity (the verdict's "law-validity", ratio 1): it governs where nothing
+  // else exceeds its limit.
+  if (covered && !c.validity.within && j.governing_ratio <= 1.0) {
+    j.governing = BodyLimitKind::kLawValidity;
+    j.governing_ratio = 1.0;
+  }
 
   const double strength = options.material ? options.material->compressive_strength_Pa : 0.0;
   j.verdict = BodyRegionVerdict(c, limits, covered, rule, {j.crush_check, strength});
@@ -290,6 +297,13 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
     const internal::LimitEnergy limit = internal::FoamLimitEnergy(model, limits, options);
     by = limit.by;
     speed = std::sqrt(2.0 * limit.energy_J / model.reduced_mass_kg());
+  }
+  if (covered) {  // the law's validity counts always ("law-validity")
+    const double within = internal::WithinLawSpeed(region_scene, std::min(speed, kMaxSpeed_m_per_s), kMinSpeed_m_per_s);
+    if (within < std::min(speed, kMaxSpeed_m_per_s)) {
+      speed = within;
+      by = BodyLimitKind::kLawValidity;
+    }
   }
   out.covering_used_up_m_per_s = internal::UsedUpSpeed(model, kMaxSpeed_m_per_s);
   if (!refused && speed > kMaxSpeed_m_per_s) {
@@ -757,19 +771,21 @@ std::string BodyRegionCriterion(const DesignRule& rule, bool head) {
   std::snprintf(sf, sizeof sf, "%g", rule.safety_factor);  // as fmt's {:g}
   std::string text = "each region's force and pressure (ISO/TS 15066:2016 Table A.2)";
   if (head) text += ", the head's laceration and contusion (Park et al. 2011) and bone fracture (docs/model.md §7.1)";
+  text += ", the covering within its law's validity";
   if (rule.compression_counts()) text += ", the covering not fully compressed";
   if (!rule.crushing_allowed) text += ", the covering not crushed where its strength is known";
   return text + "; safety factor " + sf + " on each";
 }
 
 BodyRegionOptions BodyRegionOptionsOf(double safety_factor, bool allow_full_compression, bool allow_crushing,
-                                      bool unknown_strength_allowed, const materials::Material* material) {
+                                      bool unknown_strength_allowed, const materials::Material* material,
+                                      bool keep_travel) {
   BodyRegionOptions options;
   options.rule = DesignRule{safety_factor,
                             allow_full_compression ? DesignCriterion::kPaper : DesignCriterion::kNoFullCompression,
                             allow_crushing, unknown_strength_allowed};
   if (material) options.material = CandidateOf(*material);
-  options.keep_travel = !allow_full_compression;
+  options.keep_travel = keep_travel && !allow_full_compression;
   return options;
 }
 

@@ -48,4 +48,30 @@ std::optional<double> UsedUpSpeed(const BodyContactModel& model, double max_spee
   return speed;
 }
 
+double WithinLawSpeed(const BodyContactScene& region_scene, double speed, double lowest_m_per_s) {
+  const auto within = [&](double v) {
+    BodyContactScene at = region_scene;
+    at.speed_m_per_s = v;
+    return Solve(BodyContactModel::FromScene(at)).validity.within;
+  };
+  if (!(speed >= lowest_m_per_s) || within(speed)) return speed;
+  double lo = lowest_m_per_s, hi = speed;
+  if (!within(lo)) return 0.0;
+  for (int iteration = 0; iteration < 200 && hi - lo > 1e-14 * hi; ++iteration) {
+    const double mid = 0.5 * (lo + hi);
+    (within(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
 }  // namespace covopt::optim::internal
+
+namespace covopt::optim {
+
+DesignRule JudgedRule(const BodyRegionOptions& options) noexcept {
+  DesignRule rule = options.rule;
+  rule.criterion = options.keep_travel ? DesignCriterion::kNoFullCompression : DesignCriterion::kPaper;
+  return rule;
+}
+
+}  // namespace covopt::optim

@@ -30,4 +30,9 @@ LimitEnergy FoamLimitEnergy(const BodyContactModel& model, const materials::Body
 /// bottom_out_energy_J(); empty bare or above `max_speed_m_per_s`.
 std::optional<double> UsedUpSpeed(const BodyContactModel& model, double max_speed_m_per_s);
 
+/// The largest speed up to `speed` [m/s] at which `region_scene`'s covering stays within its
+/// law's validity (BodyContactResult::validity, lost once as the compression grows): `speed`
+/// itself when within there, else by bisection from `lowest_m_per_s` (0 when not even there).
+double WithinLawSpeed(const BodyContactScene& region_scene, double speed, double lowest_m_per_s);
+
 }  // namespace covopt::optim::internal

@@ -189,6 +189,50 @@ Crossing FoamEnergyDensityCrossing(const ImpactModel& model, double target_J_per
       [&](std::size_t first) { return EnergyDensityCrossing(model, target_J_per_m2, first); });
 }
 
+/// The largest δ up to which a Hertz covering stays within its law's validity (JudgedValidity):
+/// its full compression t2, or (a law that leaves its validity before, e.g. a solid elastomer's
+/// strain limit) the first δ out of it, by bisection on [0, t2] (the validity is lost once, as
+/// the compression grows). Never reached for the bare robot and under the foam law (a used-up
+/// layer is a modelled stop), nor past t2 when full compression is accepted.
+Crossing ValidityCrossing(const ImpactModel& model, bool accept_full_compression) {
+  if (!model.has_covering() || model.is_foam()) return {};
+  const std::size_t last = model.segment_count() - 1;
+  const double full = PeaksAtMaxPenetration(model, last, model.segment(last).start_m).full_compression_penetration_m;
+  const auto within = [&](double d) {
+    return JudgedValidity(model, PeaksAtMaxPenetration(model, model.SegmentIndexAt(d), d), accept_full_compression)
+        .within;
+  };
+  if (within(full)) {
+    if (accept_full_compression) return {};
+    return {full, model.SegmentIndexAt(full)};
+  }
+  double lo = 0.0, hi = full;
+  for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * hi; ++iteration) {
+    const double mid = 0.5 * (lo + hi);
+    (within(mid) ? lo : hi) = mid;
+  }
+  return {lo, model.SegmentIndexAt(lo)};
+}
+
+/// The speed [m/s] at which the covering's travel is used up (the foam's stop, a Hertz
+/// covering's full compression t2), on the energy balance: sqrt(2 U(stop) / μ); empty bare or
+/// above `max_speed_m_per_s`.
+std::optional<double> UsedUpSpeed(const ImpactModel& model, double max_speed_m_per_s) {
+  if (!model.has_covering()) return std::nullopt;
+  const std::size_t last = model.segment_count() - 1;
+  const double stop = PeaksAtMaxPenetration(model, last, model.segment(last).start_m).full_compression_penetration_m;
+  const double energy = model.StateInSegment(model.SegmentIndexAt(stop), stop).potential_energy_J;
+  const double speed = std::sqrt(2.0 * energy / model.effective_mass_kg());
+  if (!(speed <= max_speed_m_per_s)) return std::nullopt;
+  return speed;
+}
+
+/// "foam" or "hertz" for a covered scene, "" bare (the law ImpactModel takes).
+std::string CoveringLawName(const Scene& scene) {
+  if (!(scene.covering.thickness_m > 0.0)) return "";
+  return std::string(covopt::ToString(ImpactModel::FromScene(scene).covering_law()));
+}
+
 /// The smallest δ at which a criterion reaches its limit, which one, and U there [J].
 struct PenetrationLimit {
   double penetration_m = kInfinity;
@@ -228,6 +272,7 @@ PenetrationLimit FindPenetrationLimit(const ImpactModel& model, const SpeedLimit
     const double reserved = s == 1.0 ? full : start + (full - start) / s;
     consider({reserved, model.SegmentIndexAt(reserved)}, LimitingCriterion::kFullCompression);
   }
+  consider(ValidityCrossing(model, options.allow_full_compression), LimitingCriterion::kLawValidity);
   if (options.covering_compressive_strength_Pa > 0.0 && !options.allow_crushing && model.has_covering()) {
     const double strength = options.covering_compressive_strength_Pa / s;
     consider(foam ? FoamStressCrossing(model, strength) : StressCrossing(model, strength), LimitingCriterion::kCrush);
@@ -279,7 +324,8 @@ class Judge {
     }
     e.ratios.max_penetration_m = peaks.max_penetration_m;
     e.peaks = peaks;
-    e.admissible = HeadVerdict(scene, peaks, options_).safe();  // the one head rule (verdicts.hpp)
+    if (model.has_covering()) e.validity = JudgedValidity(model, peaks, options_.allow_full_compression);
+    e.admissible = HeadVerdict(scene, peaks, options_, &e.validity).safe();  // the one head rule (verdicts.hpp)
     return e;
   }
 
@@ -302,6 +348,7 @@ class Judge {
       consider(sf * e.ratios.compression_ratio, LimitingCriterion::kFullCompression);
     }
     if (!options_.allow_crushing) consider(sf * e.ratios.crush_ratio, LimitingCriterion::kCrush);
+    if (by == LimitingCriterion::kNone && !e.validity.within) by = LimitingCriterion::kLawValidity;
     return by;
   }
 
@@ -432,6 +479,7 @@ SpeedLimit MaxSafeSpeedOnOracle(const Scene& base, const SpeedLimitOptions& opti
   result.limited_by = limit.by;
   result.max_safe_speed_m_per_s = limit.value;
   result.at_limit = limit.at.ratios;
+  result.validity = limit.at.validity;
   switch (limit.status) {
     case SpeedLimitStatus::kNoSafeValue:
       result.message = std::string("no safe speed: unsafe even at 1e-06 m/s (") + std::string(ToString(limit.by)) + ")";
@@ -478,6 +526,7 @@ MassLimit MaxSafeMassOnOracle(const Scene& base, const SpeedLimitOptions& option
   result.limited_by = limit.by;
   result.max_safe_mass_kg = limit.value;
   result.at_limit = limit.at.ratios;
+  result.validity = limit.at.validity;
   switch (limit.status) {
     case SpeedLimitStatus::kNoSafeValue:
       result.message = "no safe mass: unsafe even at " + FormatSignificant(kMinMass_kg, 6) + " kg, the model's floor (" +
@@ -507,9 +556,19 @@ SpeedLimit MaxSafeSpeed(const Scene& scene, const SpeedLimitOptions& options) {
   Scene base = scene;
   base.robot.speed_m_per_s = 1.0;  // ignored: the law does not depend on it
   const Judge judge(base, options);
-  if (judge.time_path() || !base.is_conservative_two_mass()) return MaxSafeSpeedOnOracle(base, options, judge);
+  if (judge.time_path() || !base.is_conservative_two_mass()) {
+    SpeedLimit result = MaxSafeSpeedOnOracle(base, options, judge);
+    result.covering_law = CoveringLawName(base);
+    return result;
+  }
   SpeedLimit result = MaxSafeSpeedOnPenetrationAxis(base, options, judge);
   result.oracle = judge.Report();
+  result.covering_law = CoveringLawName(base);
+  const ImpactModel model = ImpactModel::FromScene(base);
+  result.covering_used_up_m_per_s = UsedUpSpeed(model, options.max_speed_m_per_s);
+  if (result.covering_used_up_m_per_s && *result.covering_used_up_m_per_s < result.max_safe_speed_m_per_s) {
+    result.message += "; covering used up at v = " + FormatSignificant(*result.covering_used_up_m_per_s, 6) + " m/s";
+  }
   return result;
 }
 
@@ -518,9 +577,19 @@ MassLimit MaxSafeMass(const Scene& scene, const SpeedLimitOptions& options) {
   Scene base = scene;
   base.robot.mass_kg = 1.0;  // ignored: the law does not depend on it
   const Judge judge(base, options);
-  if (judge.time_path() || !base.is_conservative_two_mass()) return MaxSafeMassOnOracle(base, options, judge);
+  if (judge.time_path() || !base.is_conservative_two_mass()) {
+    MassLimit result = MaxSafeMassOnOracle(base, options, judge);
+    result.covering_law = CoveringLawName(base);
+    return result;
+  }
   MassLimit result = MaxSafeMassOnPenetrationAxis(base, options, judge);
   result.oracle = judge.Report();
+  result.covering_law = CoveringLawName(base);
+  if (!result.covering_law.empty() && result.status != SpeedLimitStatus::kNoSafeValue) {
+    Scene at = base;
+    at.robot.mass_kg = result.max_safe_mass_kg;
+    result.validity = judge(at).validity;
+  }
   return result;
 }
 
@@ -538,7 +607,9 @@ SpeedLimit MaxSafeSpeedOnPenetrationAxis(const Scene& base, const SpeedLimitOpti
     result.status = SpeedLimitStatus::kSafeUpToSearchLimit;
     result.limited_by = LimitingCriterion::kNone;
     result.max_safe_speed_m_per_s = options.max_speed_m_per_s;
-    result.at_limit = NudgeDown(result.max_safe_speed_m_per_s, base, judge, set_speed, kMinSpeed_m_per_s).ratios;
+    const ImpactJudgement top = NudgeDown(result.max_safe_speed_m_per_s, base, judge, set_speed, kMinSpeed_m_per_s);
+    result.at_limit = top.ratios;
+    result.validity = top.validity;
     result.message = "safe up to the search limit of " + FormatSignificant(result.max_safe_speed_m_per_s, 6) +
                      " m/s" + (options.max_speed_m_per_s == 100.0 ? " (the model's ceiling)" : "");
     return result;
@@ -551,13 +622,16 @@ SpeedLimit MaxSafeSpeedOnPenetrationAxis(const Scene& base, const SpeedLimitOpti
     result.max_safe_speed_m_per_s = 0.0;
     Scene floor = base;
     floor.robot.speed_m_per_s = kMinSpeed_m_per_s;
-    result.at_limit = judge(floor).ratios;
+    const ImpactJudgement bottom = judge(floor);
+    result.at_limit = bottom.ratios;
+    result.validity = bottom.validity;
     result.message = std::string("no safe speed: unsafe even at 1e-06 m/s (") + std::string(ToString(limit.by)) + ")";
     return result;
   }
   result.status = SpeedLimitStatus::kLimited;
   result.max_safe_speed_m_per_s = value;
   result.at_limit = at.ratios;
+  result.validity = at.validity;
   result.message = "max safe speed " + FormatSignificant(value, 6) + " m/s, limited by " + std::string(ToString(limit.by));
   return result;
 }

@@ -3,6 +3,7 @@
 #include "covopt/optim/trajectory_check.hpp"
 #include "covopt/optim/verdicts.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -73,6 +74,34 @@ std::string TrajectoryCheck::BriefReport() const {
   return report;
 }
 
+namespace {
+
+/// A moving sample's ratios, validity and verdict from its impact's judgement.
+void SetJudgement(const Scene& at, const ImpactJudgement& judgement, const SpeedLimitOptions& options,
+                  SampleVerdict& verdict) {
+  verdict.laceration_ratio = judgement.ratios.laceration_ratio;
+  verdict.contusion_ratio = judgement.ratios.contusion_ratio;
+  verdict.fracture_ratio = judgement.ratios.fracture_ratio;
+  verdict.compression_ratio = judgement.ratios.compression_ratio;
+  verdict.validity = judgement.validity;
+  verdict.verdict = HeadVerdict(at, judgement.peaks, options, &judgement.validity);
+}
+
+/// The check's covering law and its validity over the samples (TrajectoryCheck::validity).
+void SetCoveringLaw(const Scene& scene, TrajectoryCheck& check) {
+  if (!(scene.covering.thickness_m > 0.0)) return;
+  check.covering_law = std::string(covopt::ToString(ImpactModel::FromScene(scene).covering_law()));
+  const auto out = std::find_if(check.samples.begin(), check.samples.end(),
+                                [](const SampleVerdict& s) { return s.moving && !s.validity.within; });
+  if (out != check.samples.end()) {
+    check.validity = out->validity;
+  } else if (check.worst_sample) {
+    check.validity = check.samples[*check.worst_sample].validity;
+  }
+}
+
+}  // namespace
+
 TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample> samples,
                                 const TrajectoryCheckOptions& options) {
   if (samples.empty()) throw std::invalid_argument("trajectory: no samples");
@@ -115,11 +144,7 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
         check.samples.push_back(verdict);
         continue;
       }
-      verdict.laceration_ratio = judgement.ratios.laceration_ratio;
-      verdict.contusion_ratio = judgement.ratios.contusion_ratio;
-      verdict.fracture_ratio = judgement.ratios.fracture_ratio;
-      verdict.compression_ratio = judgement.ratios.compression_ratio;
-      verdict.verdict = HeadVerdict(at, judgement.peaks, options.limit);
+      SetJudgement(at, judgement, options.limit, verdict);
       verdict.safe = verdict.verdict.safe();
       verdict.speed_scale = verdict.speed_limit.max_safe_speed_m_per_s / sample.speed_m_per_s;
       if (!verdict.safe) ++check.unsafe_sample_count;
@@ -135,6 +160,7 @@ TrajectoryCheck CheckTrajectory(const Scene& scene, std::span<const MotionSample
     check.samples.push_back(verdict);
   }
 
+  SetCoveringLaw(scene, check);
   if (check.failed_sample_count > 0) {
     check.status = TrajectoryCheckStatus::kEvaluationFailed;
     check.safe_speed_scale = 0.0;

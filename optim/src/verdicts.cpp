@@ -53,7 +53,7 @@ namespace {
 
 /// HeadVerdict without its scope (the limit searches judge ~70 impacts per answer).
 Verdict HeadCriteria(const ImpactPeaks& peaks, bool covered, const InjuryLimits& limits, const DesignRule& rule,
-                     const CrushInput& crush, HeadArea area) {
+                     const CrushInput& crush, HeadArea area, const CoveringValidity* validity) {
   Verdict v;
   v.safety_factor = rule.safety_factor;
   const InjuryAssessment assessment = Assess(peaks, limits, area);
@@ -73,23 +73,38 @@ Verdict HeadCriteria(const ImpactPeaks& peaks, bool covered, const InjuryLimits&
         c.source = "the foam's measured curve (strain at the peak over the curve's last strain)";
       }
     }
+    if (validity) AddLawValidity(v, validity->within);
   }
   return v;
 }
 
 }  // namespace
 
+CoveringValidity JudgedValidity(const ImpactModel& model, const ImpactPeaks& peaks, bool accept_full_compression) {
+  CoveringValidity validity = CoveringLawValidity(model, peaks);
+  if (validity.within || !accept_full_compression || model.is_foam() || !peaks.fully_compressed) return validity;
+  // The paper's criterion accepts phase 3 (the robot on the bone through the covering): judged
+  // as if the covering had stopped at its full compression, whatever else holds still counts.
+  ImpactPeaks at_full = peaks;
+  at_full.fully_compressed = false;
+  CoveringValidity accepted = CoveringLawValidity(model, at_full);
+  if (!accepted.within) return accepted;
+  accepted.note = "Hertz law: the covering is fully compressed (phase 3, the robot on the bone through it), accepted "
+                  "under the paper's criterion (allow full compression); " + accepted.note;
+  return accepted;
+}
+
 Verdict HeadVerdict(const ImpactPeaks& peaks, bool covered, const InjuryLimits& limits, const DesignRule& rule,
-                    const CrushInput& crush, HeadArea area) {
-  Verdict v = HeadCriteria(peaks, covered, limits, rule, crush, area);
+                    const CrushInput& crush, HeadArea area, const CoveringValidity* validity) {
+  Verdict v = HeadCriteria(peaks, covered, limits, rule, crush, area, validity);
   v.scope = HeadVerdictScope(rule);
   return v;
 }
 
 Verdict HeadVerdict(const DesignScore& score, const InjuryLimits& limits, const DesignRule& rule,
                     double compressive_strength_Pa, HeadArea area) {
-  Verdict v =
-      HeadVerdict(score.peaks, !score.bare(), limits, rule, {score.crush_check, compressive_strength_Pa}, area);
+  Verdict v = HeadVerdict(score.peaks, !score.bare(), limits, rule, {score.crush_check, compressive_strength_Pa}, area,
+                          &score.validity);
   v.evaluated = !score.failed;
   return v;
 }
@@ -108,6 +123,7 @@ Verdict BodyRegionVerdict(const BodyContactResult& contact, const materials::Bod
   }
   if (covered) {
     AddCoveringRules(v, contact.compression_ratio, contact.fully_compressed, contact.covering_stress_Pa, rule, crush);
+    AddLawValidity(v, contact.validity.within);
   }
   return v;
 }
@@ -117,18 +133,36 @@ CrushInput CrushInputOf(const CoveringCrushCheck& check) noexcept {
   return {check.check, 0.0};
 }
 
-Verdict HeadVerdict(const Scene& scene, const ImpactPeaks& peaks, const SpeedLimitOptions& options) {
+Verdict HeadVerdict(const Scene& scene, const ImpactPeaks& peaks, const SpeedLimitOptions& options,
+                    const CoveringValidity* given) {
   const double strength = options.covering_compressive_strength_Pa;
   const CrushInput crush = strength > 0.0 ? CrushInput{CrushCheck::kChecked, strength} : CrushInput{};
-  return HeadCriteria(peaks, scene.covering.thickness_m > 0.0, options.limits, options.rule(), crush, scene.head.area);
+  const bool covered = scene.covering.thickness_m > 0.0;
+  CoveringValidity validity;
+  if (given) {
+    validity = *given;
+  } else if (covered) {
+    validity = JudgedValidity(ImpactModel::FromScene(scene), peaks, options.allow_full_compression);
+  }
+  return HeadCriteria(peaks, covered, options.limits, options.rule(), crush, scene.head.area, &validity);
 }
 
 Verdict SimulationVerdict(const Scene& scene, const ImpactPeaks& peaks, const InjuryLimits& limits,
-                          double safety_factor, const CoveringCrushCheck& crush, bool allow_full_compression) {
-  const DesignRule rule{safety_factor,
-                        allow_full_compression ? DesignCriterion::kPaper : DesignCriterion::kNoFullCompression,
-                        false, true};
-  return HeadVerdict(peaks, scene.covering.thickness_m > 0.0, limits, rule, CrushInputOf(crush), scene.head.area);
+                          double safety_factor, const CoveringCrushCheck& crush, bool allow_full_compression,
+                          bool keep_travel) {
+  SpeedLimitOptions options;
+  options.safety_factor = safety_factor;
+  options.limits = limits;
+  options.allow_full_compression = allow_full_compression;
+  options.keep_travel = keep_travel;
+  DesignRule rule = options.rule();
+  rule.unknown_strength_allowed = true;  // reported, not refused
+  const bool covered = scene.covering.thickness_m > 0.0;
+  CoveringValidity validity;
+  if (covered) validity = JudgedValidity(ImpactModel::FromScene(scene), peaks, allow_full_compression);
+  Verdict v = HeadCriteria(peaks, covered, limits, rule, CrushInputOf(crush), scene.head.area, &validity);
+  v.scope = HeadVerdictScope(rule);
+  return v;
 }
 
 }  // namespace covopt::optim

@@ -61,7 +61,7 @@ def _given(**options):
 @_takes_objects
 @_provenance.stamped
 def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, history=False,
-             body_region=None, body_area=None, contact=None, contact_area=None):
+             body_region=None, body_area=None, contact=None, contact_area=None, keep_travel=False):
     """One impact: its peaks and the injury verdicts, as ``covopt simulate --json``.
 
     scene: a covopt.Scene (default the paper's scene). A damped scene reports
@@ -91,16 +91,22 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
     path, "time-path" or an integrator also runs the time path (``result.time_path``, its
     peaks; the verdict is the exact path's), history=True too (``result.history``).
 
+    keep_travel: the covering's travel rule as a limit (``--keep-travel``): not fully compressed
+    (Hertz) or within its measured curve (foam), the safety factor as a reserve. Default
+    False: the travel is reported, not a limit (a foam used up is within its law, its stop
+    modelled); the law's validity ("law-validity") counts always.
+
     Returns a Simulation. ``result.safe`` is the CLI's verdict, made by the same library call:
-    the injury criteria (laceration, contusion) and the covering's design rules (not fully
-    compressed; not crushed, for a material of known strength) all hold; ``result.verdict``
+    the injury criteria (laceration, contusion, fracture) and the covering's design rules (within
+    its law's validity; not crushed, for a material of known strength; with keep_travel within
+    its travel) all hold; ``result.verdict``
     holds each criterion (value, limit, derated_limit, ratio, counted, passed), the governing one
     and the margin. Raises ValueError on bad input, ComputationError when the computation fails.
     """
     if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
         return _body_regions.simulate(_scene(scene), **_given(**{k: v for k, v in locals().items() if k != "scene"}))
     return Simulation(_covopt.simulate(_scene(scene), **_given(
-        method=method, rtol=rtol, atol=atol, max_steps=max_steps, history=history)))
+        method=method, rtol=rtol, atol=atol, max_steps=max_steps, history=history, keep_travel=keep_travel)))
 
 
 @_takes_objects
@@ -248,11 +254,12 @@ def body_region_limits(region, area=None, contact="transient"):
 
 @_takes_objects
 @_provenance.stamped
-def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=False, oracle=None,
+def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=False, keep_travel=False, oracle=None,
                    method=None, rtol=None, max_steps=None):
-    """The largest impact speed [m/s] such that every speed up to it is safe: both injury
-    ratios <= 1/safety_factor and, unless allow_full_compression, the covering not fully
-    compressed at the peak, with the travel the factor reserves; a catalog material of known
+    """The largest impact speed [m/s] such that every speed up to it is safe: the injury
+    ratios <= 1/safety_factor and the covering within its law's validity (a Hertz covering not
+    fully compressed, unless allow_full_compression); with keep_travel also within its travel
+    (not fully compressed / within its curve) with the travel the factor reserves; a catalog material of known
     compressive strength also must not crush (safety_factor x peak compressive stress <= its
     strength) unless allow_crushing (optim::MaxSafeSpeed). The result's warnings say when
     crushing is not checked (no covering given, a covering given by its modulus, a material
@@ -262,8 +269,10 @@ def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=F
     time path).
 
     Returns a SpeedLimit: max_safe_speed_m_per_s (None when not even 1e-6 m/s is safe; 100 when
-    safe up to the model's ceiling), limited_by ("laceration", "contusion",
-    "full-compression", "none" at the ceiling), laceration_ratio, contusion_ratio,
+    safe up to the model's ceiling), limited_by ("laceration", "contusion", "fracture",
+    "full-compression", "law-validity", "crush", "none" at the ceiling), covering_law,
+    within_law, validity {within, note}, covering_used_up_m_per_s (the speed at which the
+    covering is used up, None bare or above 100 m/s), laceration_ratio, contusion_ratio,
     compression_ratio (of the impact at the limit), status ("limited",
     "safe-up-to-search-limit", "no-safe-value"), robot_mass_kg, material, message,
     brief_report. Raises ValueError on bad input, ComputationError (status
@@ -271,13 +280,13 @@ def max_safe_speed(scene=None, *, allow_full_compression=False, allow_crushing=F
     search is no limit.
     """
     return SpeedLimit(_covopt.max_safe_speed(_scene(scene), **_given(
-        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing,
+        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing, keep_travel=keep_travel,
         oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
 @_takes_objects
 @_provenance.stamped
-def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=False, oracle=None,
+def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=False, keep_travel=False, oracle=None,
                   method=None, rtol=None, max_steps=None):
     """The largest reflected robot mass [kg] that is safe, with every lighter robot, at the
     scene's speed (optim::MaxSafeMass); as max_safe_speed, the scene without robot_mass.
@@ -287,7 +296,7 @@ def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=Fa
     ComputationError as max_safe_speed.
     """
     return SpeedLimit(_covopt.max_safe_mass(_scene(scene), **_given(
-        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing,
+        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing, keep_travel=keep_travel,
         oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
@@ -296,7 +305,7 @@ def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=Fa
 def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
                 allow_full_compression=False, allow_crushing=False, oracle=None, method=None,
                 rtol=None, max_steps=None, body_region=None, body_area=None, contact=None,
-                contact_area=None):
+                contact_area=None, keep_travel=False):
     """A table of limits, as ``covopt speed-limit --json``: solve_for="speed" gives the max
     safe speed for each robot mass in values [kg] (math.inf or "fixed" for a fixed robot;
     default the scene's), solve_for="mass" the max safe reflected mass for each speed in
@@ -323,7 +332,7 @@ def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
         return _body_regions.speed_limit(_scene(scene), **_given(**{k: v for k, v in locals().items() if k != "scene"}))
     return SpeedLimitTable(_covopt.speed_limit(_scene(scene), **_given(
         solve_for=solve_for, values=values, materials=materials,
-        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing,
+        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing, keep_travel=keep_travel,
         oracle=oracle, method=method, rtol=rtol, max_steps=max_steps)))
 
 
@@ -405,7 +414,7 @@ def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, u
 @_takes_objects
 @_provenance.stamped
 def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, scene=None,
-                     urdf_text=None, allow_full_compression=False, allow_crushing=False,
+                     urdf_text=None, allow_full_compression=False, allow_crushing=False, keep_travel=False,
                      ignore_joint_limits=False, body_region=None, body_area=None, contact=None,
                      contact_area=None, payload_mass=None, payload_com=None, payload_inertia=None):
     """Is a robot motion safe with this covering, and by how much may it be sped up or must
@@ -439,10 +448,11 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
         return _body_regions.check_trajectory(
             urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, payload, _scene(scene), **_given(
                 allow_full_compression=allow_full_compression or None, allow_crushing=allow_crushing or None,
+                keep_travel=keep_travel or None,
                 body_region=body_region, body_area=body_area, contact=contact, contact_area=contact_area))
     return TrajectoryCheck(_covopt.check_trajectory(
         urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, payload, _scene(scene),
-        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing))
+        allow_full_compression=allow_full_compression, allow_crushing=allow_crushing, keep_travel=keep_travel))
 
 
 # Robust design over a population (docs/model.md §11). `ranges` maps scene inputs (keyword

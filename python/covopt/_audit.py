@@ -41,7 +41,8 @@ class Audit(Result):
 _KEYWORDS = ("surface_file", "surface_spacing", "box_edge_radius", "flat_face_radius", "link_coverings",
              "body_region", "body_area", "contact", "contact_area", "allow_full_compression", "allow_crushing",
              "design", "materials", "families", "allow_unknown_strength", "max_thickness", "thickness_step",
-             "payload_mass", "payload_com", "payload_inertia", "ignore_joint_limits", "keep_ratio_over_time")
+             "payload_mass", "payload_com", "payload_inertia", "ignore_joint_limits", "keep_ratio_over_time",
+             "keep_travel")
 
 
 @takes_objects
@@ -51,7 +52,7 @@ def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surfa
           body_region=None, body_area=None, contact=None, contact_area=None, allow_full_compression=False,
           allow_crushing=False, design=False, materials=None, families=None, allow_unknown_strength=False,
           max_thickness=None, thickness_step=None, payload_mass=None, payload_com=None, payload_inertia=None,
-          ignore_joint_limits=False, keep_ratio_over_time=True):
+          ignore_joint_limits=False, keep_ratio_over_time=True, keep_travel=False):
     """Every surface point of every link, at every sample of `trajectory`, against every exposed
     body region (audit::Audit), as ``covopt audit --json``; returns an Audit.
 
@@ -80,7 +81,8 @@ def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surfa
                    allow_unknown_strength=_given_flag(allow_unknown_strength), max_thickness=max_thickness,
                    thickness_step=thickness_step, payload_mass=payload_mass, payload_com=payload_com,
                    payload_inertia=payload_inertia, ignore_joint_limits=_given_flag(ignore_joint_limits),
-                   keep_ratio_over_time=None if keep_ratio_over_time is True else keep_ratio_over_time)
+                   keep_ratio_over_time=None if keep_ratio_over_time is True else keep_ratio_over_time,
+                   keep_travel=_given_flag(keep_travel))
     return Audit(_covopt.audit(urdf, tip, trajectory, base, urdf_text, _scene(scene), **_given(**options)))
 
 

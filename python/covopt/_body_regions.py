@@ -158,17 +158,18 @@ def _refuse(call, options, allowed):
 
 _REGION = ("body_region", "body_area", "contact", "contact_area")
 _RULE = ("allow_full_compression", "allow_crushing")
+_TRAVEL = ("keep_travel",)  # the judging calls' --keep-travel (not optimize's: its rule keeps the travel)
 
 
 def simulate(scene, **options):
     """covopt.simulate with body_region (not "head")."""
-    options = _refuse("simulate", options, _REGION + ("method", "rtol", "atol", "max_steps", "history"))
+    options = _refuse("simulate", options, _REGION + _TRAVEL + ("method", "rtol", "atol", "max_steps", "history"))
     return BodyContact(_covopt.simulate_body_region(scene, **options))
 
 
 def speed_limit(scene, **options):
     """covopt.speed_limit with body_region: the table (values: robot masses [kg])."""
-    options = _refuse("speed_limit", options, _REGION + _RULE + ("values",))
+    options = _refuse("speed_limit", options, _REGION + _RULE + _TRAVEL + ("values",))
     return BodyRegionSpeedLimitTable(_covopt.body_region_speed_limit(scene, **options))
 
 
@@ -182,7 +183,7 @@ def design(scene, **options):
 def check_trajectory(urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, payload, scene,
                      **options):
     """covopt.check_trajectory with body_region; payload: (payload_mass, payload_com, payload_inertia)."""
-    options = _refuse("check_trajectory", options, _REGION + _RULE)
+    options = _refuse("check_trajectory", options, _REGION + _RULE + _TRAVEL)
     return BodyRegionTrajectoryCheck(_covopt.check_trajectory_body_region(
         urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, payload, scene, **options))
 

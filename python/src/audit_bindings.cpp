@@ -193,7 +193,8 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
   SetDesignKeywords(kwargs, in);
   if (const auto keep = Option(kwargs, "keep_ratio_over_time")) in.keep_ratio_over_time = Bool(*keep, "keep_ratio_over_time");
   in.scene_warnings = InputAndCrushWarnings(inputs);
-  const audit::AssembledAudit assembled = audit::AssembleAudit(in);
+  audit::AssembledAudit assembled = audit::AssembleAudit(in);
+  assembled.setup.keep_travel = Flag(kwargs, "keep_travel");
 
   audit::AuditResult result;
   try {

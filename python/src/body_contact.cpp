@@ -171,7 +171,8 @@ optim::BodyRegionOptions JudgeOptions(const SceneInputs& inputs, const py::kwarg
   return optim::BodyRegionOptionsOf(
       inputs.safety_factor, Flag(kwargs, "allow_full_compression"), Flag(kwargs, "allow_crushing"),
       unknown_strength.value_or(!inputs.CrushCheck().notes.empty()),
-      inputs.covering_material ? materials::Catalog::BuiltIn().Find(*inputs.covering_material) : nullptr);
+      inputs.covering_material ? materials::Catalog::BuiltIn().Find(*inputs.covering_material) : nullptr,
+      Flag(kwargs, "keep_travel"));
 }
 
 std::optional<std::string> MaterialName(const SceneInputs& inputs) {
@@ -336,7 +337,7 @@ py::dict SpeedLimitTable(const SceneInputs& inputs, const py::kwargs& kwargs) {
   warnings.insert(warnings.end(), targets.notes.begin(), targets.notes.end());
   if (const auto note = scene_file::BarePressureNote(targets)) warnings.push_back(AsKeywords(*note));
   return JsonToPython(report::BodyRegionSpeedLimitJson(scene, MaterialName(inputs),
-                                                       optim::BodyRegionCriterion(options.rule, targets.has_head()),
+                                                       optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head()),
                                                        options.rule.safety_factor, rows, warnings));
 }
 
@@ -421,7 +422,7 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
   warnings.insert(warnings.end(), targets.notes.begin(), targets.notes.end());
   return JsonToPython(report::BodyRegionTrajectoryJson(check ? *check : optim::BodyRegionTrajectoryCheck{},
                                                        iso, scene,
-                                                       head_summary, optim::BodyRegionCriterion(options.rule, targets.has_head()),
+                                                       head_summary, optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head()),
                                                        warnings));
 }
 

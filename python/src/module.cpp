@@ -250,7 +250,6 @@ SceneInputs ReadScene(const py::kwargs& keywords) {
     throw std::invalid_argument(scene_file::Respell(e.what(), SceneKeywords(), scene_file::ValueStyle::kKeyword));
   }
   inputs.scene = resolved.scene;
-  scene_file::KeepCurveOnlyUnderFoamLaw(inputs.scene.covering);
   inputs.limits = resolved.limits;
   inputs.safety_factor = resolved.safety_factor;
   if (const materials::Material* m = resolved.covering_material) {
@@ -288,8 +287,9 @@ optim::CoveringCrushCheck SceneInputs::CrushCheck() const {
   return optim::CrushCheckFor(scene, material, covering_given);
 }
 
-void SceneInputs::Judge(report::SimulationReport& report) const {
-  report.verdict = optim::SimulationVerdict(report.scene, report.result.peaks, limits, safety_factor, CrushCheck());
+void SceneInputs::Judge(report::SimulationReport& report, bool keep_travel) const {
+  report.verdict =
+      optim::SimulationVerdict(report.scene, report.result.peaks, limits, safety_factor, CrushCheck(), false, keep_travel);
 }
 
 /// The warnings `covopt simulate` adds about its inputs (optim::SceneInputWarnings, as the
@@ -398,7 +398,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
     throw std::invalid_argument(SolveKeywords(e.what()));
   }
   if (!report.result.ok()) RaiseImpactFailure(report.result);
-  inputs.Judge(report);
+  inputs.Judge(report, Flag(kwargs, "keep_travel"));
   report.input_warnings = InputWarnings(inputs);
   py::dict result = JsonToPython(report::SimulationJson(report, -1));
   if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model);

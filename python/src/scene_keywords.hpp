@@ -46,7 +46,8 @@ struct SceneInputs {
   /// Judges a report as the CLI's simulate does: its injury verdicts against `limits` with
   /// report.safety_factor, the crush verdict when the covering is a built-in material of
   /// known strength, and the scope (what the verdict covers).
-  void Judge(report::SimulationReport& report) const;
+  /// `keep_travel`: the covering's travel rule counts as a limit (keep_travel=True).
+  void Judge(report::SimulationReport& report, bool keep_travel = false) const;
 };
 
 /// Reads the scene keywords (the scene itself is checked later, by the library).

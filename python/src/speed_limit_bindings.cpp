@@ -32,6 +32,7 @@ optim::SpeedLimitOptions SpeedLimitOptionsFrom(const SceneInputs& inputs, const 
   options.limits = inputs.limits;
   options.safety_factor = inputs.safety_factor;
   options.allow_full_compression = Flag(kwargs, "allow_full_compression");
+  options.keep_travel = Flag(kwargs, "keep_travel");
   options.allow_crushing = Flag(kwargs, "allow_crushing");
   options.covering_compressive_strength_Pa = inputs.CrushCheck().compressive_strength_Pa;
   options.oracle = ReadOracleKeywords(kwargs, inputs.scene);

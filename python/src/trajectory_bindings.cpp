@@ -38,6 +38,7 @@ optim::TrajectoryCheckOptions TrajectoryCheckOptionsFrom(const SceneInputs& inpu
   options.limit.limits = inputs.limits;
   options.limit.safety_factor = inputs.safety_factor;
   options.limit.allow_full_compression = Flag(kwargs, "allow_full_compression");
+  options.limit.keep_travel = Flag(kwargs, "keep_travel");
   options.limit.allow_crushing = Flag(kwargs, "allow_crushing");
   options.limit.covering_compressive_strength_Pa = inputs.CrushCheck().compressive_strength_Pa;
   return options;

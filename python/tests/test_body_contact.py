@@ -106,7 +106,8 @@ def test_covered_speed_limit_matches_an_independent_computation(modulus, thickne
                                                                  contact):
     scene = Scene(robot_mass=12, covering_modulus=modulus, covering_poisson=0.3, covering_thickness=thickness,
                   robot_radius=radius, safety_factor=safety_factor)
-    table = covopt.speed_limit(scene, body_region="all", contact=contact)
+    # keep_travel: the travel rule as a limit (the independent computation's full-compression limit).
+    table = covopt.speed_limit(scene, body_region="all", contact=contact, keep_travel=True)
     assert len(table) == (27 if contact == "transient" else 29)  # 26 areas and the head; 29 areas
     for row in table:
         if row.region == "head":
@@ -122,7 +123,7 @@ def test_every_limit_kind_binds_somewhere():
              for modulus, thickness in ((5e6, 0.02), (50e6, 0.02), (0.3e6, 0.01))
              for row in covopt.speed_limit(Scene(robot_mass=12, covering_modulus=modulus,
                                                  covering_thickness=thickness, robot_radius=0.05),
-                                           body_region="all", contact="clamped")}
+                                           body_region="all", contact="clamped", keep_travel=True)}
     assert kinds == {"force", "pressure", "full-compression"}
 
 

@@ -118,6 +118,9 @@ ordered_json TableRowObject(const BodyRegionTableRow& row) {
   j["criteria"] = row.criteria;
   j["bare_status"] = row.bare_status;
   j["covered_status"] = row.has_covering ? ordered_json(row.covered_status) : ordered_json(nullptr);
+  j["covering_law"] = row.covering_law;
+  j["covering_used_up_m_per_s"] = Number(row.covering_used_up_m_per_s);
+  j["validity"] = {{"within", row.within_law}, {"note", row.validity_note}};
   return j;
 }
 
@@ -194,6 +197,11 @@ BodyRegionTableRow TableRow(double robot_mass_kg, const optim::BodyRegionSpeedLi
     r.covered_max_speed_m_per_s = SpeedOrNone(row.covered->status, row.covered->max_safe_speed_m_per_s);
     r.covered_limited_by = std::string(optim::ToString(row.covered->limited_by));
     r.covered_status = std::string(optim::ToString(row.covered->status));
+    const BodyContactResult& at = row.covered->at_limit.contact;
+    r.covering_law = at.covering_law ? std::string(ToString(*at.covering_law)) : std::string();
+    r.within_law = at.validity.within;
+    r.validity_note = at.validity.note;
+    r.covering_used_up_m_per_s = row.covered->covering_used_up_m_per_s;
   }
   r.gain = row.gain();
   r.criteria = row.bare.at_limit.scope.empty() ? row.limits.Describe() : row.bare.at_limit.scope;
@@ -222,6 +230,10 @@ BodyRegionTableRow HeadTableRow(double robot_mass_kg, const optim::SpeedLimit& b
     r.covered_max_speed_m_per_s = SpeedOrNone(covered->status, covered->max_safe_speed_m_per_s);
     r.covered_limited_by = std::string(optim::ToString(covered->limited_by));
     r.covered_status = std::string(optim::ToString(covered->status));
+    r.covering_law = covered->covering_law;
+    r.within_law = covered->validity.within;
+    r.validity_note = covered->validity.note;
+    r.covering_used_up_m_per_s = covered->covering_used_up_m_per_s;
     if (r.bare_max_speed_m_per_s && *r.bare_max_speed_m_per_s > 0.0 && r.covered_max_speed_m_per_s) {
       r.gain = *r.covered_max_speed_m_per_s / *r.bare_max_speed_m_per_s;
     }

@@ -226,9 +226,19 @@ void AssessHeadSimulation(Assessment& a, const Json& j, const std::string& prefi
   if (const Json* crush = Find(j, "crush"); crush && crush->is_object()) {
     a.rows.push_back(HeadVerdictRow(prefix + "crush", "material strength (docs/model.md §12)", *crush, {"Pa", "MPa", 1e-6}));
   }
-  VerdictRow full;  // shown, not judged: simulate's verdict is the injuries and crushing (its scope)
+  if (const Json* validity = Find(j, "validity"); validity && validity->is_object() && !StringAt(j, "covering_law").empty()) {
+    VerdictRow law;  // the covering law's validity: counted always, a yes/no (decision D3)
+    law.subject = prefix + "covering law (" + StringAt(j, "covering_law") + ")";
+    law.criterion = "within the law's validity (docs/model.md)";
+    law.value = TrueAt(*validity, "within") ? "within" : "out of its validity";
+    law.ratio = nullptr;
+    law.safe = TrueAt(*validity, "within");
+    law.note = StringAt(*validity, "note");
+    a.rows.push_back(std::move(law));
+  }
+  VerdictRow full;  // shown: the travel rule counts only with --keep-travel (the verdict's scope)
   full.subject = prefix + "full compression";
-  full.criterion = "not part of this verdict (see its scope); docs/model.md §6";
+  full.criterion = "the covering's travel rule, a limit only with --keep-travel; docs/model.md §6";
   full.value = TrueAt(j, "fully_compressed") ? "fully compressed" : "not fully compressed";
   full.ratio = nullptr;
   full.note = "phase at the peak: " + StringAt(j, "phase_at_max_name");

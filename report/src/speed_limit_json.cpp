@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <covopt/core/number_format.hpp>
@@ -19,12 +20,13 @@ namespace {
 
 using nlohmann::ordered_json;
 
-constexpr std::array<std::string_view, 9> kSpeedColumns = {
+constexpr std::array<std::string_view, 12> kSpeedColumns = {
     "material", "robot_mass_kg", "max_safe_speed_m_per_s", "limited_by", "laceration_ratio",
-    "contusion_ratio", "fracture_ratio", "compression_ratio", "status"};
-constexpr std::array<std::string_view, 9> kMassColumns = {
+    "contusion_ratio", "fracture_ratio", "compression_ratio", "status", "covering_law",
+    "within_law", "covering_used_up_m_per_s"};
+constexpr std::array<std::string_view, 11> kMassColumns = {
     "material", "speed_m_per_s", "max_safe_mass_kg", "limited_by", "laceration_ratio",
-    "contusion_ratio", "fracture_ratio", "compression_ratio", "status"};
+    "contusion_ratio", "fracture_ratio", "compression_ratio", "status", "covering_law", "within_law"};
 
 /// The parts every row shares, whichever quantity it solves for.
 struct RowAnswer {
@@ -33,15 +35,16 @@ struct RowAnswer {
   optim::LimitingCriterion limited_by;
   const optim::LimitRatios* ratios;
   const std::string* message;
+  const optim::LimitAnswer* answer;
 };
 
 RowAnswer Answer(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
   if (quantity == SpeedLimitQuantity::kSpeed) {
     const optim::SpeedLimit& l = row.speed_limit;
-    return {l.status, l.max_safe_speed_m_per_s, l.limited_by, &l.at_limit, &l.message};
+    return {l.status, l.max_safe_speed_m_per_s, l.limited_by, &l.at_limit, &l.message, &l};
   }
   const optim::MassLimit& l = row.mass_limit;
-  return {l.status, l.max_safe_mass_kg, l.limited_by, &l.at_limit, &l.message};
+  return {l.status, l.max_safe_mass_kg, l.limited_by, &l.at_limit, &l.message, &l};
 }
 
 ordered_json MassValue(double kg) { return std::isinf(kg) ? ordered_json("fixed") : internal::Number(kg); }
@@ -66,6 +69,14 @@ ordered_json RowJson(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
   j["fracture_ratio"] = internal::Number(a.ratios->fracture_ratio);
   j["compression_ratio"] = internal::Number(a.ratios->compression_ratio);
   j["status"] = optim::ToString(a.status);
+  // The covering's law and whether it is within its validity at the limit (decision D6; the
+  // note is the JSON's "validity" object); "" and within bare.
+  j["covering_law"] = a.answer->covering_law;
+  j["within_law"] = a.answer->validity.within ? "true" : "false";
+  if (quantity == SpeedLimitQuantity::kSpeed) {
+    const std::optional<double>& used_up = row.speed_limit.covering_used_up_m_per_s;
+    j["covering_used_up_m_per_s"] = used_up ? internal::Number(*used_up) : ordered_json(nullptr);
+  }
   return j;
 }
 
@@ -131,7 +142,13 @@ std::string SpeedLimitJson(SpeedLimitQuantity quantity, const Scene& scene, cons
     j["oracle"] = oracle;
   }
   ordered_json list = ordered_json::array();
-  for (const SpeedLimitRow& row : rows) list.push_back(RowJson(quantity, row));
+  for (const SpeedLimitRow& row : rows) {
+    ordered_json r = RowJson(quantity, row);
+    const optim::LimitAnswer& answer = *Answer(quantity, row).answer;
+    r["within_law"] = answer.validity.within;  // a boolean in JSON (a word in the CSV)
+    r["validity"] = {{"within", answer.validity.within}, {"note", answer.validity.note}};
+    list.push_back(std::move(r));
+  }
   j["rows"] = list;
 
   ordered_json shown = ordered_json::parse(SceneJson(scene));

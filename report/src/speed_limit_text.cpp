@@ -1,6 +1,7 @@
 #include "covopt/report/speed_limit_text.hpp"
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -46,6 +47,18 @@ void PrintSpeedLimitRows(std::ostream& out, optim::SpeedLimitQuantity quantity, 
     fmt::print(out, "  {:>12}  {:>16}  {:<16}  {:>10.3f}  {:>9.3f}  {:>11}\n",
                by_speed ? MassText(row.robot_mass_kg) : fmt::format("{:g} m/s", row.speed_m_per_s), limit,
                optim::ToString(by), r.laceration_ratio, r.contusion_ratio, compression);
+    // The covering's law and its validity at the limit, and where it is used up (decisions D2, D6).
+    const optim::LimitAnswer& answer = by_speed ? static_cast<const optim::LimitAnswer&>(row.speed_limit)
+                                                : static_cast<const optim::LimitAnswer&>(row.mass_limit);
+    if (answer.covering_law.empty()) continue;
+    std::string law = fmt::format("    covering law {}, {}: {}", answer.covering_law,
+                                  answer.validity.within ? "within its validity" : "OUT of its validity",
+                                  answer.validity.note);
+    const std::optional<double>& used_up = row.speed_limit.covering_used_up_m_per_s;
+    if (by_speed && used_up && *used_up < row.speed_limit.max_safe_speed_m_per_s) {
+      law += fmt::format("; covering used up at v = {:.4g} m/s", *used_up);
+    }
+    fmt::print(out, "{}\n", law);
   }
 }
 

@@ -17,10 +17,10 @@ namespace {
 
 using nlohmann::ordered_json;
 
-constexpr std::array<std::string_view, 12> kSampleColumns = {
+constexpr std::array<std::string_view, 13> kSampleColumns = {
     "time_s",      "speed_m_per_s", "reflected_mass_kg", "moving",         "max_safe_speed_m_per_s",
     "speed_scale", "limited_by",    "laceration_ratio",  "contusion_ratio", "fracture_ratio",
-    "compression_ratio", "safe"};
+    "compression_ratio", "safe",    "within_law"};
 
 ordered_json MassValue(double kg) { return std::isinf(kg) ? ordered_json("fixed") : internal::Number(kg); }
 
@@ -44,6 +44,7 @@ ordered_json SampleJson(const optim::SampleVerdict& v) {
   j["fracture_ratio"] = ratio(v.fracture_ratio);
   j["compression_ratio"] = ratio(v.compression_ratio);
   j["safe"] = failed ? ordered_json(nullptr) : ordered_json(v.safe);
+  j["within_law"] = v.validity.within;  // the covering's law at this impact (decision D6)
   return j;
 }
 
@@ -82,6 +83,9 @@ std::string TrajectoryCheckJson(const optim::TrajectoryCheck& check, const robot
   } else {
     j["worst_sample"] = nullptr;
   }
+  // The covering's law and its validity over the samples (decision D6).
+  j["covering_law"] = check.covering_law;
+  j["validity"] = {{"within", check.validity.within}, {"note", check.validity.note}};
   j["sample_count"] = check.samples.size();
   j["unsafe_sample_count"] = check.unsafe_sample_count;
   j["failed_sample_count"] = check.failed_sample_count;

@@ -81,6 +81,10 @@ void PrintWorstSample(std::ostream& out, const optim::TrajectoryCheck& check) {
                std::isinf(w.reflected_mass_kg) ? "" : " kg", MaxSafeText(w),
                w.speed_limit.status == optim::SpeedLimitStatus::kNoSafeValue ? "" : " m/s");
   }
+  if (!check.covering_law.empty()) {
+    fmt::print(out, "Law        covering law {}, {}: {}\n", check.covering_law,
+               check.validity.within ? "within its validity" : "OUT of its validity", check.validity.note);
+  }
 }
 
 void PrintBodyRegionSamples(std::ostream& out, const optim::BodyRegionTrajectoryCheck& check,

@@ -62,6 +62,11 @@ std::string RatioText(const Criterion& c, double safety_factor) {
 }
 
 std::string CriterionText(const Criterion& c, double safety_factor) {
+  if (c.name == kLawValidityRule) {  // a yes/no of the model's range: no value to derate
+    return fmt::format("{:<17} {:<7} {}", c.name, StatusWord(c),
+                       c.passed ? "within the covering law's validity"
+                                : "OUT of the covering law's validity (see the validity note)");
+  }
   const Display d = DisplayOf(c);
   std::string text = fmt::format("{:<17} {:<7} {} {}", c.name, StatusWord(c), d.label, Amount(c.value, d));
   if (std::isfinite(c.limit)) {

@@ -53,10 +53,6 @@ void ApplyMaterial(std::span<const SceneInput> inputs, const materials::Catalog&
 
 }  // namespace
 
-void KeepCurveOnlyUnderFoamLaw(CoveringSpec& covering) noexcept {
-  if (covering.law != CoveringLaw::kFoam) covering.compressive_curve = nullptr;
-}
-
 void ApplySceneInputs(std::span<const SceneInput> inputs, const materials::Catalog& catalog, ResolvedScene& resolved,
                       std::string_view quote) {
   ApplyMaterial(inputs, catalog, resolved);

@@ -155,7 +155,7 @@ double DirectMaxSafeSpeed(const ca::AuditSetup& setup, const ca::AuditCovering& 
     scene.contact_area_m2 = setup.contact_area_m2;
     return co::MaxSafeSpeed(scene, setup.regions[r],
                             co::BodyRegionOptions{setup.rule, covered ? covering.material : std::nullopt,
-                                                  setup.rule.compression_counts()})
+                                                  setup.keep_travel && setup.rule.compression_counts()})
         .max_safe_speed_m_per_s;
   }
   covopt::Scene scene = *setup.head;
@@ -165,6 +165,7 @@ double DirectMaxSafeSpeed(const ca::AuditSetup& setup, const ca::AuditCovering& 
   co::SpeedLimitOptions options;
   options.safety_factor = setup.rule.safety_factor;
   options.allow_full_compression = !setup.rule.compression_counts();
+  options.keep_travel = setup.keep_travel;
   options.allow_crushing = setup.rule.crushing_allowed;
   if (covered && covering.material && covering.material->crush_behaviour == covopt::materials::CrushBehaviour::kCrushes) {
     options.covering_compressive_strength_Pa = covering.material->compressive_strength_Pa;
@@ -183,6 +184,7 @@ TEST_CASE("the E* shortcut equals the direct speed limit and verdict at random F
     for (const bool covered : {true, false}) {
       ca::AuditSetup setup = Fr3Setup(AllTransient());
       setup.rule.safety_factor = sf;
+      setup.keep_travel = sf > 1.0;  // the travel rule kept (--keep-travel) on half the cases, judged on injury on the rest
       setup.contact_area_m2 = 1e-4;
       if (!covered) setup.covering = ca::AuditCovering{covopt::CoveringSpec{1e6, 0.3, 0.0}, std::nullopt};
       int checked = 0;
@@ -220,7 +222,7 @@ TEST_CASE("the E* shortcut equals the direct speed limit and verdict at random F
             scene.covering = one.covering.covering;
             scene.contact_area_m2 = one.contact_area_m2;
             const co::BodyRegionOptions options{one.rule, covered ? one.covering.material : std::nullopt,
-                                                one.rule.compression_counts()};
+                                                one.keep_travel && one.rule.compression_counts()};
             scene.speed_m_per_s = c.max_safe_speed_m_per_s * (1.0 - 1e-9);
             CHECK(co::JudgeBodyContact(scene, one.regions[r], options).admissible);
             scene.speed_m_per_s = c.max_safe_speed_m_per_s;
@@ -630,7 +632,8 @@ TEST_CASE("a braking robot's audit is the brute-force braked maximum, found by b
             scene.reaction_delay_s = setup.reaction_delay_s;
             scene.braking_m_per_s2 = setup.braking_m_per_s2;
             const co::BodyRegionSpeedLimit limit =
-                co::MaxSafeSpeed(scene, setup.regions[r], co::BodyRegionOptions{setup.rule, material, setup.rule.compression_counts()});
+                co::MaxSafeSpeed(scene, setup.regions[r], co::BodyRegionOptions{setup.rule, material,
+                                                                       setup.keep_travel && setup.rule.compression_counts()});
             REQUIRE(limit.status != co::SpeedLimitStatus::kEvaluationFailed);
             v_max = limit.max_safe_speed_m_per_s;
           } else {
@@ -641,6 +644,7 @@ TEST_CASE("a braking robot's audit is the brute-force braked maximum, found by b
             scene.robot.braking_m_per_s2 = setup.braking_m_per_s2;
             scene.covering = setup.covering.covering;
             co::SpeedLimitOptions options;
+            options.keep_travel = setup.keep_travel;
             if (material.crush_behaviour == covopt::materials::CrushBehaviour::kCrushes) {
               options.covering_compressive_strength_Pa = material.compressive_strength_Pa;
             }
@@ -659,7 +663,8 @@ TEST_CASE("a braking robot's audit is the brute-force braked maximum, found by b
   for (std::size_t k = 0; k < braked.cells.size(); ++k) {
     const ca::AuditCell &b = braked.cells[k], &u = unbraked.cells[k];
     INFO(braked.links[b.link] << ", " << braked.regions[b.region]);
-    CHECK(b.governing_ratio == Approx(brute[k]).epsilon(1e-12));
+    // The braked limits are bracketed on the time path to 1e-10 relative (speed_limit.hpp).
+    CHECK(b.governing_ratio == Approx(brute[k]).epsilon(1e-10));
     CHECK(b.governing_ratio <= u.governing_ratio * (1 + 1e-9));
     if (b.sample) {
       CHECK(b.speed_scale == Approx(1.0 / b.governing_ratio).epsilon(1e-12));

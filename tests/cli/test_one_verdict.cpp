@@ -73,23 +73,36 @@ TEST_CASE("simulate: a crushed covering is not SAFE, as speed-limit says at that
   CHECK(j["crush"]["ratio"].get<double>() > 10.0);
 }
 
-TEST_CASE("simulate: a bottomed-out covering fails the design rule 'within its working range'", "[verdict][cli]") {
+TEST_CASE("simulate: a bottomed-out Hertz covering fails the design rule 'law-validity'", "[verdict][cli]") {
   const Json j = OneVerdict({"simulate", "--covering-thickness", "3mm", "--covering-modulus", "1MPa"}, 2.0);
   CHECK(j["fully_compressed"] == true);
   CHECK(j["safe"] == false);
   CHECK(j["verdict"]["design_rules_met"] == false);
-  bool found = false;
+  CHECK(j["validity"]["within"] == false);
+  int found = 0;
   for (const Json& c : j["verdict"]["criteria"]) {
-    if (c["name"] != "full-compression") continue;
-    found = true;
-    CHECK(c["part"] == "design-rule");
-    CHECK(c["counted"] == true);
-    CHECK(c["passed"] == false);
+    if (c["name"] == "law-validity") {  // counted always: out of the Hertz law's validity
+      ++found;
+      CHECK(c["part"] == "design-rule");
+      CHECK(c["counted"] == true);
+      CHECK(c["passed"] == false);
+    }
+    if (c["name"] == "full-compression") {  // the travel rule: reported, a limit only with --keep-travel
+      ++found;
+      CHECK(c["counted"] == false);
+      CHECK(c["passed"] == false);
+    }
   }
-  CHECK(found);
+  CHECK(found == 2);
   const CliRun text = Run({"simulate", "--covering-thickness", "3mm", "--covering-modulus", "1MPa"});
   CHECK_THAT(text.out, Contains("design rules UNSAFE"));
-  CHECK_THAT(text.out, Contains("EXCEEDED (limit 1, derated 1 at SF 1: fully compressed)"));
+  CHECK_THAT(text.out, Contains("law-validity      UNSAFE  OUT of the covering law's validity"));
+  CHECK_THAT(text.out, Contains("EXCEEDED (limit 1, derated 1 at SF 1: fully compressed); not counted"));
+  const Json kept = JsonOf({"simulate", "--covering-thickness", "3mm", "--covering-modulus", "1MPa", "--keep-travel",
+                            "--json"});
+  for (const Json& c : kept["verdict"]["criteria"]) {
+    if (c["name"] == "full-compression") CHECK(c["counted"] == true);
+  }
 }
 
 TEST_CASE("simulate: the bare hit of the trial and the default scene give speed-limit's verdict", "[verdict][cli]") {

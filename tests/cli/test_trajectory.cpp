@@ -86,7 +86,8 @@ std::string ScaledTrajectory(const TempDir& dir, double factor) {
 }  // namespace
 
 TEST_CASE("robot --trajectory --json is the library's check of the same trajectory, to the bit", "[trajectory]") {
-  const json j = JsonOf(Run(Fr3(kPick, {"--json"})));
+  // --keep-travel: the library's default options (the travel rule kept).
+  const json j = JsonOf(Run(Fr3(kPick, {"--keep-travel", "--json"})));
   const auto chain = covopt::robot::KinematicChain::FromUrdfFile(kFr3, {"", "fr3_link8"});
   const auto motion = covopt::robot::ContactMotion(chain, covopt::robot::ReadJointTrajectory(kPick, 7),
                                                    Eigen::Vector3d::Zero());
@@ -151,7 +152,7 @@ TEST_CASE("robot --trajectory: --json, --csv and the table agree", "[trajectory]
   REQUIRE(lines.size() == 102);
   CHECK(lines[0] ==
         "time_s,speed_m_per_s,reflected_mass_kg,moving,max_safe_speed_m_per_s,speed_scale,limited_by,"
-        "laceration_ratio,contusion_ratio,fracture_ratio,compression_ratio,safe");
+        "laceration_ratio,contusion_ratio,fracture_ratio,compression_ratio,safe,within_law");
   const auto columns = covopt::report::TrajectorySampleColumns();
   for (std::size_t i = 0; i < 101; ++i) {
     std::vector<std::string> cells;

@@ -73,7 +73,7 @@ double ScaledRatio(const co::BodyRegionJudgement& j, co::BodyLimitKind kind, dou
     case co::BodyLimitKind::kPressure: return sf * j.pressure_ratio.value();
     case co::BodyLimitKind::kFullCompression: return sf * j.compression_ratio;
     case co::BodyLimitKind::kCrush: return sf * j.crush_ratio;
-    case co::BodyLimitKind::kLawValidity:
+    case co::BodyLimitKind::kLawValidity: return j.contact.validity.within ? 0.0 : 1.0;
     case co::BodyLimitKind::kNone: break;
   }
   return std::numeric_limits<double>::quiet_NaN();
@@ -366,8 +366,7 @@ TEST_CASE("body-region verdicts refuse bad input, naming the field", "[body_regi
 /// Whether every region and the head (when judged) is safe with `material` at `thickness_m`.
 bool EveryVerdictAdmissible(const co::BodyRegionDesignRequest& r, const co::CandidateMaterial& material,
                             double thickness_m, std::string* failing = nullptr) {
-  BodyContactScene s = Covered(r.scene, material.youngs_modulus_Pa, thickness_m, material.poisson_ratio);
-  s.covering.compressive_curve = material.compressive_curve;  // a curve material: the foam law (auto)
+  const BodyContactScene s = Covered(r.scene, material.youngs_modulus_Pa, thickness_m, material.poisson_ratio);
   bool ok = true;
   for (const BodyLimits& limits : r.regions) {
     const co::BodyRegionJudgement j = co::JudgeBodyContact(s, limits, co::BodyRegionOptions{r.rule, material, r.rule.compression_counts()});
@@ -380,7 +379,7 @@ bool EveryVerdictAdmissible(const co::BodyRegionDesignRequest& r, const co::Cand
     head.robot.radius_m = r.scene.robot_radius_m;
     head.robot.speed_m_per_s = r.scene.speed_m_per_s;
     const co::ExactPathOracle oracle(head, material.poisson_ratio);
-    co::DesignScore score = oracle.ScoreCovering(s.covering);
+    co::DesignScore score = oracle.ScoreMaterial({material.youngs_modulus_Pa, thickness_m}, material.poisson_ratio);
     co::CheckCrush(material, score);
     if (!score.admissible(r.rule) && failing) *failing += "head; ";
     ok = ok && score.admissible(r.rule);

@@ -177,9 +177,10 @@ TEST_CASE("foam body region: keep_travel reproduces a Hertz covering's full-comp
     CHECK(*injury.covering_used_up_m_per_s == Approx(m.SpeedAtPeakForce(m.bottom_out_force_N())).epsilon(1e-14));
     CHECK(injury.message.find("covering used up at v =") != std::string::npos);
   }
-  // The shells' options keep today's rule until the covering law is wired into them.
-  CHECK(co::BodyRegionOptionsOf(1.0, false, false, false, nullptr).keep_travel);
-  CHECK_FALSE(co::BodyRegionOptionsOf(1.0, true, false, false, nullptr).keep_travel);
+  // The shells' options keep the travel rule only when asked (--keep-travel, keep_travel=True).
+  CHECK_FALSE(co::BodyRegionOptionsOf(1.0, false, false, false, nullptr).keep_travel);
+  CHECK(co::BodyRegionOptionsOf(1.0, false, false, false, nullptr, true).keep_travel);
+  CHECK_FALSE(co::BodyRegionOptionsOf(1.0, true, false, false, nullptr, true).keep_travel);
 }
 
 TEST_CASE("foam body region: on a flat face the covered limit is never below the bare robot's", "[body_region][foam]") {

@@ -15,6 +15,8 @@
 #include <covopt/optim/speed_limit.hpp>
 #include <covopt/optim/verdicts.hpp>
 
+#include "vn600_curve.hpp"
+
 namespace {
 
 using covopt::CompressiveCurve;
@@ -26,12 +28,7 @@ using covopt::optim::SpeedLimit;
 using covopt::optim::SpeedLimitOptions;
 using covopt::optim::SpeedLimitStatus;
 
-std::shared_ptr<const CompressiveCurve> Vn600() {
-  const std::vector<covopt::StrainStressPoint> points{
-      {0.02, 14.3e3}, {0.05, 22.0e3}, {0.10, 30.2e3}, {0.15, 37.4e3}, {0.20, 45.9e3}, {0.25, 57.3e3},
-      {0.30, 72.2e3}, {0.35, 91.6e3}, {0.40, 118.0e3}, {0.45, 153.2e3}, {0.49, 189.5e3}};
-  return std::make_shared<const CompressiveCurve>(CompressiveCurve::FromPoints(points));
-}
+std::shared_ptr<const CompressiveCurve> Vn600() { return covopt::testing::Vn600Curve(); }
 
 Scene FoamScene(double thickness_m, double robot_radius_m = 0.015) {
   Scene scene;

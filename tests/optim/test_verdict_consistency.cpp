@@ -57,6 +57,9 @@ TEST_CASE("The head's verdict agrees across simulate, speed-limit, optimize's sc
       for (const double mass : {2.0, 5.145, 20.0}) {
         for (const double speed : {0.3, 1.0, 2.3}) {
           for (const double sf : {1.0, 1.5}) {
+           // keep: the travel rule as a limit (optimize's design rule, --keep-travel); without it
+           // the judging commands' default (decision D2): injury, the law's validity and crushing.
+           for (const bool keep : {true, false}) {
             Scene scene;
             scene.robot.mass_kg = mass;
             scene.robot.speed_m_per_s = speed;
@@ -64,13 +67,15 @@ TEST_CASE("The head's verdict agrees across simulate, speed-limit, optimize's sc
             const materials::Material* material = thickness > 0.0 ? m : nullptr;
             const CoveringCrushCheck crush = CrushCheckFor(scene, material, true);
             const ImpactPeaks peaks = SolveExact(ImpactModel::FromScene(scene)).peaks;
-            const Verdict simulate = SimulationVerdict(scene, peaks, InjuryLimits{}, sf, crush);
-            INFO(name << ", " << thickness * 1e3 << " mm, " << mass << " kg, " << speed << " m/s, SF " << sf);
+            const Verdict simulate = SimulationVerdict(scene, peaks, InjuryLimits{}, sf, crush, false, keep);
+            INFO(name << ", " << thickness * 1e3 << " mm, " << mass << " kg, " << speed << " m/s, SF " << sf
+                      << (keep ? ", travel kept" : ""));
             ++cases;
             if (!simulate.safe()) ++unsafe;
             if (simulate.injury_safe() && !simulate.design_rules_met()) ++design_rule_only;
 
             SpeedLimitOptions limit;
+            limit.keep_travel = keep;
             limit.safety_factor = sf;
             limit.covering_compressive_strength_Pa = crush.compressive_strength_Pa;
             CHECK(JudgeImpact(scene, limit).admissible == simulate.safe());
@@ -84,6 +89,7 @@ TEST_CASE("The head's verdict agrees across simulate, speed-limit, optimize's sc
             REQUIRE(trajectory.samples.size() == 1);
             CHECK(trajectory.samples[0].safe == simulate.safe());
             CHECK(trajectory.samples[0].verdict.governing_name() == simulate.governing_name());
+            if (!keep) continue;  // optimize's score keeps the travel rule (its design rule)
 
             const DesignRule rule{sf, DesignCriterion::kNoFullCompression, false, false};
             const ExactPathOracle oracle(scene, candidate.poisson_ratio);
@@ -95,6 +101,7 @@ TEST_CASE("The head's verdict agrees across simulate, speed-limit, optimize's sc
             const Verdict scored = HeadVerdict(score, InjuryLimits{}, rule, candidate.compressive_strength_Pa);
             CHECK(scored.safe() == simulate.safe());
             CHECK(scored.margin() == Approx(score.margin(rule)).margin(1e-12));
+           }
           }
         }
       }
@@ -134,8 +141,10 @@ TEST_CASE("A body region's verdict agrees across its judgement, its speed limit 
             CHECK(j.verdict.governing_name() == ToString(j.governing));
             if (!j.admissible) ++unsafe;
             if (j.verdict.injury_safe() && !j.verdict.design_rules_met()) ++design_rule_only;
-            // Every criterion's derated limit is its limit / SF.
-            for (const Criterion& c : j.verdict.criteria) CHECK(c.derated_limit == Approx(c.limit / sf));
+            // Every criterion's derated limit is its limit / SF, but the law's validity (the model's range).
+            for (const Criterion& c : j.verdict.criteria) {
+              if (c.name != covopt::kLawValidityRule) CHECK(c.derated_limit == Approx(c.limit / sf));
+            }
 
             const BodyRegionSpeedLimit v_max = MaxSafeSpeed(scene, limits, options);
             if (ClearOf(speed, v_max.max_safe_speed_m_per_s)) {

@@ -99,6 +99,10 @@ struct AuditSetup {
   std::optional<double> flat_face_radius_m;
   /// Safety factor, criterion, crushing, unknown strengths.
   optim::DesignRule rule;
+  /// The covering's travel rule as a limit (--keep-travel, keep_travel=True; decision D2):
+  /// false (default) judges injury and the law's validity, the travel reported only; true
+  /// counts it unless the rule's criterion is the paper's (full compression allowed).
+  bool keep_travel = false;
   /// The robot's reaction after first contact [s] and its braking deceleration [m/s²]
   /// (both 0: it does not brake), for every region and the head (docs/model.md §10.2).
   double reaction_delay_s = 0.0;

@@ -8,9 +8,10 @@
 /// A verdict has two parts, judged and printed apart:
 ///   - the injury verdict (kInjury): laceration and contusion (Park et al. 2011's head), the
 ///     force and pressure (ISO/TS 15066 Table A.2's body regions), [fracture];
-///   - the covering's design rules (kDesignRule): "within its working range" (the covering not
-///     fully compressed, under the default criterion) and "not crushed" (a material of known
-///     compressive strength).
+///   - the covering's design rules (kDesignRule): "law-validity" (the covering's law describes
+///     the contact: CoveringValidity::within; it counts always), "within its working range"
+///     (the covering not fully compressed, where the travel rule is kept) and "not crushed" (a
+///     material of known compressive strength).
 /// safe() needs both: a bottomed-out or crushed covering is not SAFE even with every injury
 /// ratio below its limit. A criterion that does not count (the paper's criterion; crushing
 /// allowed; a strength that is unknown and allowed to be) is reported and never binds.
@@ -36,7 +37,8 @@ std::string_view ToString(CriterionPart part) noexcept;
 /// One criterion of a verdict: value against limit. Its texts are static (string literals),
 /// so a verdict is cheap to build inside the design scans.
 struct Criterion {
-  /// "laceration", "contusion", "fracture", "force", "pressure", "full-compression", "crush".
+  /// "laceration", "contusion", "fracture", "force", "pressure", "law-validity",
+  /// "full-compression", "within-curve", "crush".
   std::string_view name;
   CriterionPart part = CriterionPart::kInjury;
   /// The value's and the limits' unit in SI: "Pa", "J/m2", "N", "1" (a share of the travel).
@@ -93,6 +95,16 @@ struct Verdict {
   /// The names of the counted criteria, in order ("laceration", "contusion", ...).
   std::vector<std::string> CountedNames() const;
 };
+
+/// The design rule that the covering's law describes the contact (CoveringValidity::within,
+/// core/impact_result.hpp): a result out of its law's validity is never SAFE.
+inline constexpr std::string_view kLawValidityRule = "law-validity";
+
+/// Appends "law-validity" to `verdict`: a design rule that always counts, unit "1", value 0
+/// within the law's validity and 1 out of it, against a limit of 1 (ratio 0 or 1); out of it the
+/// criterion fails whatever the safety factor (the validity's note says why, with its numbers).
+/// The validity limit is the model's, not the standard's: the safety factor does not derate it.
+Criterion& AddLawValidity(Verdict& verdict, bool within);
 
 /// A share as a percentage with one decimal, as every margin is printed: "58.8 %" for 0.588,
 /// "-34.4 %"; "none" when not finite.

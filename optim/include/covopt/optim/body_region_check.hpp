@@ -79,13 +79,20 @@ struct BodyRegionOptions {
 };
 
 /// The options of a body-region verdict as both shells take them: the safety factor; the
-/// paper's criterion when `allow_full_compression`, else no full compression (keep_travel set:
-/// the shells' behaviour until the covering law is wired into them); crushing allowed
+/// paper's criterion when `allow_full_compression`; the covering's travel rule as a limit only
+/// with `keep_travel` (--keep-travel, keep_travel=True; not with allow_full_compression: the
+/// travel rule is then reported, and a covering used up is reported at its speed); crushing allowed
 /// when `allow_crushing`; a covering of unknown strength judged without the crush check when
 /// `unknown_strength_allowed`; and the covering's catalog `material` (its crush behaviour and
 /// strength), if any.
 BodyRegionOptions BodyRegionOptionsOf(double safety_factor, bool allow_full_compression, bool allow_crushing,
-                                      bool unknown_strength_allowed, const materials::Material* material);
+                                      bool unknown_strength_allowed, const materials::Material* material,
+                                      bool keep_travel = false);
+
+/// The rule a body-region verdict applies under `options`: options.rule with its travel
+/// criterion set by keep_travel (no full compression when set, else the paper's: the travel
+/// reported); what BodyRegionCriterion and the scopes describe for the judging commands.
+DesignRule JudgedRule(const BodyRegionOptions& options) noexcept;
 
 /// The bare robot's own verdict needs its pressure: Table A.2 limits the pressure as well as the
 /// force, and a bare robot's pressure is its force over its contact area. True for a scene with

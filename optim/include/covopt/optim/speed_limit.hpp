@@ -49,6 +49,7 @@
 /// monotone; that it is monotone in v0 and m_r for braking and neck scenes is checked by a
 /// dense scan in the tests. About 70 runs per answer (a few ms on the time path).
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -84,9 +85,18 @@ std::string_view ToString(SpeedLimitStatus status) noexcept;
 struct SpeedLimitOptions {
   /// false (default): a covering fully compressed at the peak is not safe (criterion
   /// "no-full-compression", as DesignOptions). true: the paper's criterion, the ratios only.
+  /// With a Hertz covering it also accepts full compression as within the law's validity
+  /// (optim::JudgedValidity); otherwise a fully compressed Hertz covering is out of its law
+  /// ("law-validity", counted always) and limits the speed at full compression.
   bool allow_full_compression = false;
+  /// The covering's travel rule as a limit ("full-compression" under Hertz, "within-curve" under
+  /// the foam law, the safety factor as a reserve of travel): true (the library's default, the
+  /// rule of the design searches) counts it; false (the commands' default, --keep-travel off)
+  /// reports it only: a foam used up below the limit is within its law (the stop is modelled)
+  /// and is reported at its own speed (SpeedLimit::covering_used_up_m_per_s).
+  bool keep_travel = true;
   DesignCriterion criterion() const noexcept {
-    return allow_full_compression ? DesignCriterion::kPaper : DesignCriterion::kNoFullCompression;
+    return keep_travel && !allow_full_compression ? DesignCriterion::kNoFullCompression : DesignCriterion::kPaper;
   }
   /// Every ratio that counts (injury, the covering's travel, crush) must be <= 1/safety_factor,
   /// in [1, 100] [-]. Default: 1.
@@ -159,6 +169,8 @@ struct LimitRatios {
 struct ImpactJudgement {
   LimitRatios ratios;       ///< the exact path's ratios at the scene's own speed and mass
   ImpactPeaks peaks;        ///< the impact's peaks (zero when it failed): HeadVerdict(scene, peaks, options)
+  /// The covering's law and its validity at the peaks (JudgedValidity; within bare).
+  CoveringValidity validity;
   /// Every ratio that counts <= 1/safety_factor and, under the default criterion, not fully
   /// compressed.
   bool admissible = false;
@@ -187,6 +199,10 @@ struct LimitAnswer {
   /// Found by the bracketed bisection on the oracle (a scene beyond the conservative two-mass
   /// model, or the time path asked for), not by the δ-axis solve.
   bool bracketed = false;
+  /// The law that describes the covering ("foam", "hertz"; empty bare) and its validity at the
+  /// limit (JudgedValidity of the impact there; within bare).
+  std::string covering_law;
+  CoveringValidity validity;
 };
 
 /// The answer of MaxSafeSpeed.
@@ -194,6 +210,11 @@ struct SpeedLimit : LimitAnswer {
   /// The largest safe impact speed [m/s] (kLimited); the search ceiling
   /// (kSafeUpToSearchLimit); 0 (kNoSafeValue).
   double max_safe_speed_m_per_s = 0.0;
+  /// The speed [m/s] at which the covering is used up (the foam's curve end, a Hertz covering's
+  /// full compression), when it is below the search ceiling; empty bare and where the limit is
+  /// bracketed on the oracle (no energy balance). Below the limit the message says "covering
+  /// used up at v = ...": not an injury, and without keep_travel not a limit.
+  std::optional<double> covering_used_up_m_per_s;
   /// The message with the ratios at the limit.
   std::string BriefReport() const;
 };

@@ -71,6 +71,8 @@ struct SampleVerdict {
   /// The impact's verdict (HeadVerdict(scene at this speed and mass, peaks, options.limit)):
   /// injury criteria and the covering's design rules; empty at rest or when it failed.
   Verdict verdict;
+  /// The covering's law's validity at this impact (JudgedValidity; within at rest and bare).
+  CoveringValidity validity;
   /// verdict.safe(): ratios within 1/safety factor, not crushed and, under the default
   /// criterion, not fully compressed. True at rest.
   bool safe = true;
@@ -112,6 +114,10 @@ struct TrajectoryCheck {
   std::string message;
   /// What a reader must know (a ceiling-limited scale, samples with no safe speed at all).
   std::vector<std::string> warnings;
+  /// The law that describes the covering ("foam", "hertz"; empty bare) and its validity over
+  /// the samples: the first moving sample out of it, else the worst sample's (within).
+  std::string covering_law;
+  CoveringValidity validity;
   /// The message and the worst sample's numbers.
   std::string BriefReport() const;
 };

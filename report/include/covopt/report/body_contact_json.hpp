@@ -80,6 +80,12 @@ struct BodyRegionTableRow {
   std::string covered_limited_by;  ///< "" without a covering
   std::string covered_status;      ///< "" without a covering
   std::optional<double> gain;      ///< covered / bare [-]
+  /// The covering's law ("foam", "hertz"; "" without a covering), its validity at the covered
+  /// limit, and the speed [m/s] at which it is used up (empty bare, above 100 m/s, or braked).
+  std::string covering_law;
+  bool within_law = true;
+  std::string validity_note;
+  std::optional<double> covering_used_up_m_per_s;
   /// Whose criteria: "ISO/TS 15066:2016 transient, chest (sternum): 280 N, 240 N/cm²" or the
   /// head's ("skin injury, Park et al. 2011 ...").
   std::string criteria;

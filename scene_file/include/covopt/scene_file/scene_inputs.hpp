@@ -51,13 +51,6 @@ struct ResolvedScene {
 void ApplySceneInputs(std::span<const SceneInput> inputs, const materials::Catalog& catalog, ResolvedScene& resolved,
                       std::string_view quote = "");
 
-/// The covering law the commands take today: a catalog material's measured curve rides along
-/// only where the foam law is asked for (covering.law = "foam"); under "auto" and "hertz" the
-/// curve is dropped, so that `auto` reads the Hertz law in every command alike until each
-/// command takes the foam law (issue 35's wiring; docs/model.md §15-§16). The library's own
-/// models read `auto` with a curve as the foam law.
-void KeepCurveOnlyUnderFoamLaw(CoveringSpec& covering) noexcept;
-
 /// Every field ApplySceneInputs reads with its name in a front end, from the field's name
 /// ("robot-mass", "laceration-limit", "material", "thresholds"): kFlag gives the CLI's flags
 /// ("--robot-mass"), kKeyword Python's keywords ("robot_mass").
