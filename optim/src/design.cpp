@@ -11,6 +11,8 @@
 #include <covopt/core/number_format.hpp>
 #include <covopt/materials/material.hpp>
 
+#include "covopt/optim/design_answer.hpp"
+
 namespace covopt::optim {
 namespace {
 
@@ -206,8 +208,17 @@ std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalo
 }
 
 CandidateMaterial CandidateOf(const materials::Material& m) {
-  return {m.name, m.youngs_modulus_Pa, materials::PoissonRatioOrDefault(m), !m.poisson_ratio.has_value(),
-          m.family, m.crush_behaviour, m.compressive_strength_Pa.value_or(0.0)};
+  return {.name = m.name,
+          .youngs_modulus_Pa = m.youngs_modulus_Pa,
+          .poisson_ratio = materials::PoissonRatioOrDefault(m),
+          .poisson_assumed = !m.poisson_ratio.has_value(),
+          .family = m.family,
+          .crush_behaviour = m.crush_behaviour,
+          .compressive_strength_Pa = m.compressive_strength_Pa.value_or(0.0),
+          .compressive_curve = m.compressive_curve,
+          .recovers = m.recovers,
+          .rate_factor = m.rate_factor,
+          .stress_at_25_band_Pa = m.stress_at_25_band_Pa};
 }
 
 DesignResult Design(const DesignRequest& request) {
@@ -243,7 +254,9 @@ DesignResult Design(const DesignRequest& request) {
     r.warnings = {};
     return r;
   }
+  AnswerOverRange(request, r);  // the default answer: admissible over the stated uncertainty (design_answer.hpp)
   r.message = Headline(r, request.options.space.max_thickness_m);
+  if (r.nearest_changes) r.message = "No catalog material works for this scene; " + r.nearest_changes->Describe() + ". " + r.message;
   r.warnings = Warnings(request, r);
   return r;
 }

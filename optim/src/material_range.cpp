@@ -21,10 +21,9 @@ std::string Kilopascals(double pascals) { return FormatSignificant(pascals * 1e-
 std::string Millimetres(double metres) { return FormatFixed(metres * 1e3, 2) + " mm"; }
 std::string Factor(double f) { return FormatSignificant(f, 3); }
 
-CrushInput CrushInputOf(const materials::Material& m) {
-  switch (m.crush_behaviour) {
-    case materials::CrushBehaviour::kCrushes:
-      return {CrushCheck::kChecked, m.compressive_strength_Pa.value_or(0.0)};
+CrushInput CrushInputOf(materials::CrushBehaviour behaviour, double strength_Pa) {
+  switch (behaviour) {
+    case materials::CrushBehaviour::kCrushes: return {CrushCheck::kChecked, strength_Pa};
     case materials::CrushBehaviour::kDoesNotCrush: return {CrushCheck::kDoesNotCrush, 0.0};
     case materials::CrushBehaviour::kUnknown: break;
   }
@@ -122,7 +121,8 @@ NearestChange NearestRadius(const Scene& scene, const RangedMaterial& m, const D
 }  // namespace
 
 std::string CurveScaleRange::Describe() const {
-  if (!stated) return "uncertainty not stated (judged at its curve as given)";
+  if (!curve) return "its modulus as given (Hertz law; uncertainty not stated)";
+  if (!stated) return "its curve as given (uncertainty not stated)";
   std::string text;
   if (stress_at_25_band_Pa) {
     text = "σ(25 %) band " + Kilopascals(stress_at_25_band_Pa->low) + "–" + Kilopascals(stress_at_25_band_Pa->high) +
@@ -139,6 +139,7 @@ CurveScaleRange CurveScaleRangeOf(const CompressiveCurve* curve, const std::opti
                                   const std::optional<materials::Bounds>& rate_factor) {
   CurveScaleRange r;
   if (curve == nullptr) return r;
+  r.curve = true;
   if (band_Pa && curve->last_strain() >= materials::kRatingStrain) {
     r.stress_at_25_Pa = curve->StressAt(materials::kRatingStrain);
     r.stress_at_25_band_Pa = band_Pa;
@@ -160,15 +161,28 @@ CurveScaleRange CurveScaleRangeOf(const materials::Material& m) {
 }
 
 RangedMaterial RangedMaterialOf(const materials::Material& material, CoveringLaw law) {
-  RangedMaterial r{material.name, materials::CoveringOf(material, 0.0), {}, CrushInputOf(material)};
+  RangedMaterial r{material.name, materials::CoveringOf(material, 0.0), {},
+                   CrushInputOf(material.crush_behaviour, material.compressive_strength_Pa.value_or(0.0))};
   r.covering.law = law;
   if (r.foam()) r.range = CurveScaleRangeOf(material);
   return r;
 }
 
-Verdict RangeVerdictAt(const Scene& scene, const RangedMaterial& m, double thickness_m, double scale,
-                       const DesignOptions& options) {
-  if (ChooseOracle(scene, options.oracle.choice).kind != OracleKind::kExact) {
+RangedMaterial RangedMaterialOf(const CandidateMaterial& c, CoveringLaw law) {
+  RangedMaterial r{c.name,
+                   CoveringSpec{.youngs_modulus_Pa = c.youngs_modulus_Pa,
+                                .poisson_ratio = c.poisson_ratio,
+                                .thickness_m = 0.0,
+                                .compressive_curve = c.compressive_curve,
+                                .law = law},
+                   {},
+                   CrushInputOf(c.crush_behaviour, c.compressive_strength_Pa)};
+  if (r.foam()) r.range = CurveScaleRangeOf(c.compressive_curve.get(), c.stress_at_25_band_Pa, c.rate_factor);
+  return r;
+}
+
+ImpactPeaks RangePeaksAt(const Scene& scene, const RangedMaterial& m, double thickness_m, double scale) {
+  if (ChooseOracle(scene, OracleChoice::kAuto).kind != OracleKind::kExact) {
     throw std::invalid_argument(
         "the default answer's range check needs the exact path (a scene without braking or a neck)");
   }
@@ -178,11 +192,17 @@ Verdict RangeVerdictAt(const Scene& scene, const RangedMaterial& m, double thick
   if (m.foam()) {
     s.covering.law = CoveringLaw::kFoam;
     if (scale != 1.0) {
-      s.covering.compressive_curve = std::make_shared<const CompressiveCurve>(m.covering.compressive_curve->Scaled(scale));
+      s.covering.compressive_curve =
+          std::make_shared<const CompressiveCurve>(m.covering.compressive_curve->Scaled(scale));
     }
   }
-  const ImpactPeaks peaks = ExactPeaks(ImpactModel::FromScene(s));
-  return HeadVerdict(peaks, thickness_m > 0.0, options.limits, options.rule(), m.crush, s.head.area);
+  return ExactPeaks(ImpactModel::FromScene(s));
+}
+
+Verdict RangeVerdictAt(const Scene& scene, const RangedMaterial& m, double thickness_m, double scale,
+                       const DesignOptions& options) {
+  const ImpactPeaks peaks = RangePeaksAt(scene, m, thickness_m, scale);
+  return HeadVerdict(peaks, thickness_m > 0.0, options.limits, options.rule(), m.crush, scene.head.area);
 }
 
 std::vector<double> ScalesToJudge(const CurveScaleRange& range, const DesignRule& rule) {

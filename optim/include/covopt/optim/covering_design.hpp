@@ -40,12 +40,14 @@
 /// serialised inside the backend).
 
 #include <atomic>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <covopt/core/compressive_curve.hpp>
 #include <covopt/core/impact_result.hpp>
 #include <covopt/core/scene.hpp>
 #include <covopt/materials/material.hpp>
@@ -80,6 +82,18 @@ struct CandidateMaterial {
   /// Compressive strength [Pa] (yield or 10 % strain), > 0; used when crush_behaviour is
   /// kCrushes.
   double compressive_strength_Pa = 0.0;
+  /// The material's measured compressive curve (covopt/core/compressive_curve.hpp), shared and
+  /// immutable; null: none, and the Hertz law describes the material. Under the covering law
+  /// auto (the default) a material with a curve is designed with the foam law (docs/model.md §16).
+  std::shared_ptr<const CompressiveCurve> compressive_curve{};
+  /// With a curve: true for a flexible foam that recovers, false for a crushable liner; empty
+  /// without a curve.
+  std::optional<bool> recovers{};
+  /// The range of the factor the curve's stresses may take at impact rates [-]; empty when the
+  /// catalog states none.
+  std::optional<materials::Bounds> rate_factor{};
+  /// A grade band standing in for a measured curve: its range of σ(25 %) [Pa]; empty otherwise.
+  std::optional<materials::Bounds> stress_at_25_band_Pa{};
 };
 
 /// Sets score.crush_check and score.crush_ratio (σ_c,max / strength) for `material`

@@ -46,6 +46,8 @@ namespace covopt::optim {
 struct CurveScaleRange {
   double low = 1.0;   ///< the lowest factor [-]
   double high = 1.0;  ///< the highest factor [-]
+  /// The material is judged with its curve (the foam law); false: by its modulus (Hertz).
+  bool curve = false;
   /// The material states a band or a rate factor (else the range is {1, 1}).
   bool stated = false;
   /// The grade's σ(25 %) band [Pa] and the curve's own σ(25 %) [Pa], when a band is given.
@@ -53,7 +55,9 @@ struct CurveScaleRange {
   double stress_at_25_Pa = 0.0;
   /// The rate factor range [-], when given.
   std::optional<materials::Bounds> rate_factor;
-  /// "σ(25 %) band 34.5–62.1 kPa × rate factor 1–3", "rate factor 1–3", "uncertainty not stated".
+  /// "σ(25 %) band 34.5–62.1 kPa × rate factor 1–3 (curve scale 0.6–3.24)", "rate factor 1–4
+  /// (curve scale 1–4)", "its curve as given (uncertainty not stated)", "its modulus as given
+  /// (Hertz law; uncertainty not stated)".
   std::string Describe() const;
 };
 
@@ -77,6 +81,14 @@ CurveScaleRange CurveScaleRangeOf(const CompressiveCurve* curve, const std::opti
 
 /// A catalog material as a RangedMaterial, judged under `law` (the request's covering law).
 RangedMaterial RangedMaterialOf(const materials::Material& material, CoveringLaw law = CoveringLaw::kAuto);
+
+/// A design candidate as a RangedMaterial (its curve, band and rate factor), under `law`.
+RangedMaterial RangedMaterialOf(const CandidateMaterial& material, CoveringLaw law = CoveringLaw::kAuto);
+
+/// The peaks of one impact of `scene` covered by `material` at `thickness_m` with its curve
+/// scaled by `scale` (foam law; the Hertz law without a curve), on the exact path.
+/// @throws std::invalid_argument for a scene the exact path cannot answer (braking, a neck).
+ImpactPeaks RangePeaksAt(const Scene& scene, const RangedMaterial& material, double thickness_m, double scale);
 
 /// The verdict of one impact of `scene` covered by `material` at `thickness_m` with its curve
 /// scaled by `scale`, under `options`' rule and limits (HeadVerdict on the exact path).
