@@ -256,7 +256,7 @@ DesignResult Design(const DesignRequest& request) {
   }
   AnswerOverRange(request, r);  // the default answer: admissible over the stated uncertainty (design_answer.hpp)
   r.message = Headline(r, request.options.space.max_thickness_m);
-  if (r.nearest_changes) r.message = "No catalog material works for this scene; " + r.nearest_changes->Describe() + ". " + r.message;
+  if (r.nearest_changes) r.message += " No catalog material works for this scene; " + r.nearest_changes->Describe() + ".";
   r.warnings = Warnings(request, r);
   return r;
 }

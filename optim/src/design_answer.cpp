@@ -124,7 +124,7 @@ void AnswerOverRange(const DesignRequest& request, DesignResult& r) {
   if (r.verdict == DesignVerdict::kCoveringFound) r.verdict = DesignVerdict::kNoSafeMaterial;  // none holds over its range
   std::vector<RangedMaterial> materials;
   for (const CandidateOutcome& c : r.candidates) materials.push_back(RangedMaterialOf(c.material, law));
-  r.nearest_changes = FindNearestChanges(request.scene, materials, request.options);
+  r.nearest_changes = FindNearestChanges(request.scene, materials, request.options, r.thickness_m);
 }
 
 }  // namespace covopt::optim

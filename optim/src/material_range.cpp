@@ -49,9 +49,9 @@ double WorstRatio(const MaterialRangeCheck& check, double safety_factor) {
   return safety_factor * check.worst().governing_ratio();
 }
 
-NearestChange NearestSpeed(const Scene& scene, const RangedMaterial& m, const DesignOptions& options) {
+NearestChange NearestSpeed(const Scene& scene, const RangedMaterial& m, const DesignOptions& options,
+                           double thickness) {
   const std::vector<double> ends = ScalesToJudge(m.range, options.rule());
-  const double thickness = options.space.max_thickness_m;
   struct Probe {};
   const auto limit = internal::BracketLimit<Probe>(1e-6, scene.robot.speed_m_per_s, [&](double v) {
     Scene s = scene;
@@ -89,7 +89,8 @@ NearestChange NearestThickness(const Scene& scene, const RangedMaterial& m, cons
   return c;
 }
 
-NearestChange NearestRadius(const Scene& scene, const RangedMaterial& m, const DesignOptions& options) {
+NearestChange NearestRadius(const Scene& scene, const RangedMaterial& m, const DesignOptions& options,
+                            double thickness) {
   NearestChange c;
   const double from = scene.robot.radius_m;
   if (!(from < kNearestChangeMaxRadius_m)) {
@@ -106,12 +107,12 @@ NearestChange NearestRadius(const Scene& scene, const RangedMaterial& m, const D
       internal::ThinnestAdmissibleThickness(axis, options.thickness_scan_points, resolution, [&](double radius) {
         Scene s = scene;
         s.robot.radius_m = radius;
-        return AdmissibleAt(s, m, options.space.max_thickness_m, ends, options);
+        return AdmissibleAt(s, m, thickness, ends, options);
       });
   if (r) {
     c.reachable = true;
     c.value = *r;
-    c.note = "at " + Millimetres(options.space.max_thickness_m) + ", over its range";
+    c.note = "at " + Millimetres(thickness) + ", over its range";
   } else {
     c.note = "not reachable: no robot radius up to " + Millimetres(kNearestChangeMaxRadius_m) + " is admissible";
   }
@@ -276,11 +277,12 @@ std::string NearestChanges::Describe() const {
 }
 
 std::optional<NearestChanges> FindNearestChanges(const Scene& scene, std::span<const RangedMaterial> materials,
-                                                 const DesignOptions& options) {
+                                                 const DesignOptions& options, std::optional<double> thickness_m) {
+  const double at = thickness_m.value_or(options.space.max_thickness_m);
   const RangedMaterial* best = nullptr;
   double best_ratio = std::numeric_limits<double>::infinity();
   for (const RangedMaterial& m : materials) {
-    const double ratio = WorstRatio(CheckOverRange(scene, m, options.space.max_thickness_m, options),
+    const double ratio = WorstRatio(CheckOverRange(scene, m, at, options),
                                     options.safety_factor);
     if (ratio < best_ratio) {
       best_ratio = ratio;
@@ -290,12 +292,12 @@ std::optional<NearestChanges> FindNearestChanges(const Scene& scene, std::span<c
   if (best == nullptr) return std::nullopt;
   NearestChanges n;
   n.material = best->name;
-  n.max_thickness_m = options.space.max_thickness_m;
-  n.worst_ratio_at_max = best_ratio;
+  n.at_thickness_m = at;
+  n.worst_ratio_at_thickness = best_ratio;
   n.range = best->range;
-  n.speed = NearestSpeed(scene, *best, options);
+  n.speed = NearestSpeed(scene, *best, options, at);
   n.thickness = NearestThickness(scene, *best, options);
-  n.radius = NearestRadius(scene, *best, options);
+  n.radius = NearestRadius(scene, *best, options, at);
   return n;
 }
 

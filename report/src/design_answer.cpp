@@ -1,5 +1,7 @@
 // The default answer's text and JSON (optim/design_answer.hpp): the range checked, the
 // candidates it changed, and the nearest changes.
+#include <algorithm>
+
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
@@ -38,7 +40,7 @@ ordered_json RangeJson(const optim::CurveScaleRange& r) {
 
 }  // namespace
 
-void PrintDesignAnswer(std::ostream& out, const optim::DesignResult& result) {
+void PrintDesignAnswer(std::ostream& out, const optim::DesignResult& result, int rows) {
   if (result.material_range) {
     const optim::MaterialRangeCheck& c = *result.material_range;
     fmt::print(out, "  {} {} at {}: worst margin {} ({} at curve scale {:.3g}){}\n",
@@ -46,7 +48,9 @@ void PrintDesignAnswer(std::ostream& out, const optim::DesignResult& result) {
                FormatPercent(c.worst_margin()), c.worst().governing_name(), c.worst_scale(),
                c.scales.size() > 2 ? fmt::format(", {} scales judged", c.scales.size()) : std::string());
   }
-  for (std::size_t i = 0; i < result.range_notes.size() && i < result.candidates.size(); ++i) {
+  const std::size_t shown = std::min({result.range_notes.size(), result.candidates.size(),
+                                      static_cast<std::size_t>(std::max(rows, 0))});
+  for (std::size_t i = 0; i < shown; ++i) {
     if (!result.range_notes[i].empty()) {
       fmt::print(out, "  over its range, {}: {}\n", result.candidates[i].material.name, result.range_notes[i]);
     }
@@ -55,7 +59,7 @@ void PrintDesignAnswer(std::ostream& out, const optim::DesignResult& result) {
   const optim::NearestChanges& n = *result.nearest_changes;
   fmt::print(out, "\nNearest changes (for {}, the material nearest to admissible: worst ratio {:.3f} at {} over {}; "
                   "each found by bisection on the same verdict)\n",
-             n.material, n.worst_ratio_at_max, Mm(n.max_thickness_m), n.range.Describe());
+             n.material, n.worst_ratio_at_thickness, Mm(n.at_thickness_m), n.range.Describe());
   fmt::print(out, "  slower     {}\n", ChangeText(n.speed, fmt::format("at most {:.4g} m/s", n.speed.value)));
   fmt::print(out, "  thicker    {}\n", ChangeText(n.thickness, Mm(n.thickness.value)));
   fmt::print(out, "  larger     {}\n", ChangeText(n.radius, "robot radius " + Mm(n.radius.value)));
@@ -80,8 +84,8 @@ void AddDesignAnswerJson(ordered_json& j, const optim::DesignResult& result) {
   if (result.nearest_changes) {
     const optim::NearestChanges& n = *result.nearest_changes;
     j["nearest_changes"] = {{"material", n.material},
-                            {"max_thickness_m", n.max_thickness_m},
-                            {"worst_ratio_at_max_thickness", n.worst_ratio_at_max},
+                            {"at_thickness_m", n.at_thickness_m},
+                            {"worst_ratio_at_thickness", n.worst_ratio_at_thickness},
                             {"range", RangeJson(n.range)},
                             {"speed_m_per_s", ChangeJson(n.speed)},
                             {"thickness_m", ChangeJson(n.thickness)},

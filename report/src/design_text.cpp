@@ -339,7 +339,7 @@ void PrintDesign(std::ostream& out, const DesignText& r, const optim::DesignResu
                  : "");
   fmt::print(out, "\n{}\n", result.message);
   if (result.recommendation) PrintRecommendation(out, r, result);
-  PrintDesignAnswer(out, result);  // the range checked, or the nearest changes
+  PrintDesignAnswer(out, result, r.runners_up);  // the range checked, or the nearest changes
   PrintBareAndContinuous(out, r, result);
   const std::vector<CandidateOutcome>& candidates = result.candidates;
   fmt::print(out, "\nCandidates ({})\n",

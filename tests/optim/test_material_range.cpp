@@ -253,6 +253,6 @@ TEST_CASE("the nearest changes are those of the material nearest to admissible",
     }
   }
   CHECK(changes->material == name);
-  CHECK(changes->worst_ratio_at_max == Approx(best).epsilon(1e-14));
+  CHECK(changes->worst_ratio_at_thickness == Approx(best).epsilon(1e-14));
   CHECK_FALSE(covopt::optim::FindNearestChanges(scene, std::vector<RangedMaterial>{}, options).has_value());
 }

@@ -154,29 +154,35 @@ struct NearestChange {
 
 /// What would make a material work when none does (decision D5).
 struct NearestChanges {
-  /// The best candidate: the one whose worst governing ratio over its range at the maximum
-  /// thickness is least (a material refused for an unknown strength is not a candidate).
+  /// The best candidate: the one whose worst governing ratio over its range at the thickness
+  /// (`at_thickness_m`) is least (a material refused for an unknown strength is not a candidate).
   std::string material;
-  double max_thickness_m = 0.0;  ///< the design's maximum thickness [m]
-  /// The worst governing ratio (SF applied) at the maximum thickness over its range [-].
-  double worst_ratio_at_max = 0.0;
+  /// The thickness the speed and radius changes keep [m]: the design's maximum (problem a) or
+  /// its given thickness (problem b).
+  double at_thickness_m = 0.0;
+  /// The worst governing ratio (SF applied) at that thickness over its range [-].
+  double worst_ratio_at_thickness = 0.0;
   CurveScaleRange range;
-  /// The highest robot speed [m/s] at which it is admissible at the maximum thickness over
-  /// its range (every lower speed too), to 1e-10 relative.
+  /// The highest robot speed [m/s] at which it is admissible at that thickness over its range
+  /// (every lower speed too), to 1e-10 relative.
   NearestChange speed;
   /// The thinnest thickness [m] up to kNearestChangeMaxThickness_m admissible at the scene's
-  /// speed over its range, to options.thickness_resolution_m.
+  /// speed over its range, to options.thickness_resolution_m (rounded up to the stock step
+  /// where that holds).
   NearestChange thickness;
   /// The smallest robot radius [m], from the scene's up to kNearestChangeMaxRadius_m, at which
-  /// it is admissible at the maximum thickness over its range, to 1e-10 relative.
+  /// it is admissible at that thickness over its range, to 1e-10 × 0.5 m.
   NearestChange radius;
-  /// "nearest changes: speed <= 0.61 m/s, or 62.5 mm of X, or a robot radius of 48 mm".
+  /// "nearest changes for X: a robot speed of at most 0.61 m/s, or 62.50 mm of it (at the
+  /// scene's speed), or a robot radius of 48.00 mm".
   std::string Describe() const;
 };
 
-/// The nearest changes for the best of `materials` in `scene` under `options`. Empty when
-/// `materials` has no candidate (every one refused for an unknown strength, or none given).
+/// The nearest changes for the best of `materials` in `scene` under `options`, the speed and
+/// radius at `thickness_m` (default: options.space.max_thickness_m). Empty when `materials`
+/// has no candidate (every one refused for an unknown strength, or none given).
 std::optional<NearestChanges> FindNearestChanges(const Scene& scene, std::span<const RangedMaterial> materials,
-                                                 const DesignOptions& options);
+                                                 const DesignOptions& options,
+                                                 std::optional<double> thickness_m = std::nullopt);
 
 }  // namespace covopt::optim

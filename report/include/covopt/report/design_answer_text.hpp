@@ -10,9 +10,9 @@
 
 namespace covopt::report {
 
-/// Prints the "Uncertainty" line (the range checked, at which thickness, the worst margin and
-/// where), a line per candidate the range changed, and the "Nearest changes" block. Nothing
-/// when the result carries none of them.
-void PrintDesignAnswer(std::ostream& out, const optim::DesignResult& result);
+/// Prints the range line (the range checked, at which thickness, the worst margin and where), a
+/// line per candidate among the first `rows` whose range changed it, and the "Nearest changes"
+/// block. Nothing when the result carries none of them.
+void PrintDesignAnswer(std::ostream& out, const optim::DesignResult& result, int rows);
 
 }  // namespace covopt::report
