@@ -36,15 +36,16 @@ std::string WorstText(const MaterialRangeCheck& check) {
          std::string(v.governing_name()) + ", margin " + FormatPercent(v.margin());
 }
 
-/// One curve candidate checked over its range: kept (admissible as designed), raised to the
-/// thinnest thickness that holds over it, made admissible there (its nominal design was judged
-/// otherwise), or refused; its note says which.
+/// One curve candidate judged over its range (decision D5): at the thinnest thickness that
+/// holds at both ends of it (problem a; its designed thickness need not be that one) or at the
+/// given thickness (problem b), with its row's score at the range's worst end there; refused
+/// when none holds. Its note says what changed.
 void CheckCandidate(const DesignRequest& request, const DesignResult& r, CandidateOutcome& c, std::string& note) {
   const DesignOptions& o = request.options;
   const RangedMaterial m = RangedMaterialOf(c.material, request.scene.covering.law);
   if (!m.foam()) return;
-  const std::optional<double> designed = r.thickness_m ? r.thickness_m : c.recommended_thickness_m;
-  if (c.safe && CheckOverRange(request.scene, m, *designed, o).admissible()) return;  // holds as designed
+  // The thickness it was designed at [m], 0 when it was not admissible as designed.
+  const double designed = c.safe ? r.thickness_m.value_or(c.recommended_thickness_m.value_or(0.0)) : 0.0;
   std::optional<double> holds;
   if (r.thickness_m) {
     if (CheckOverRange(request.scene, m, *r.thickness_m, o).admissible()) holds = r.thickness_m;
@@ -55,15 +56,21 @@ void CheckCandidate(const DesignRequest& request, const DesignResult& r, Candida
   const MaterialRangeCheck check = CheckOverRange(request.scene, m, judged_at, o);
   c.score = ScoreAt(request.scene, m, c.material, judged_at, check.worst_scale(), o.limits);
   c.margin = c.score.margin(r.rule);
-  c.stock_thickness_beyond_max_m.reset();
   if (holds) {
-    note = (c.safe ? "raised from " + Mm(*designed) + " to " : "admissible at ") + Mm(*holds) + " over " +
-           m.range.Describe() + " (" + WorstText(check) + ")";
+    const bool changed = designed != *holds;
+    if (changed) {
+      note = (designed > 0.0 ? Mm(designed) + " as designed, " : std::string("admissible: ")) + Mm(*holds) + " over " +
+             m.range.Describe() + " (" + WorstText(check) + ")";
+    }
     c.safe = true;
-    if (!r.thickness_m) c.min_safe_thickness_m = c.recommended_thickness_m = holds;
+    if (!r.thickness_m) {
+      if (changed) c.stock_thickness_beyond_max_m.reset();
+      c.min_safe_thickness_m = c.recommended_thickness_m = holds;
+    }
     return;
   }
   c.safe = false;
+  c.stock_thickness_beyond_max_m.reset();
   if (!r.thickness_m) c.min_safe_thickness_m = c.recommended_thickness_m = std::nullopt;
   note = "not admissible over " + m.range.Describe() + (r.thickness_m ? " at " : " within ") + Mm(judged_at) +
          " (" + WorstText(check) + ")";

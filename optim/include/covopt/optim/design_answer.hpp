@@ -5,7 +5,8 @@
 /// also be admissible over its stated uncertainty (material_range.hpp: its curve scaled over its
 /// σ(25 %) band and rate factor), at the thinnest thickness that is; a material that is not
 /// within the maximum thickness is not admissible (its row says why) and the next one is
-/// recommended. When no material is, the result carries the nearest changes.
+/// recommended. A curve candidate's row (its score and margin) is then that of its range's worst
+/// end at its thickness. When no material is admissible, the result carries the nearest changes.
 
 #include "covopt/optim/design.hpp"
 
