@@ -11,6 +11,8 @@
 #include <covopt/core/number_format.hpp>
 #include <covopt/materials/material.hpp>
 
+#include "covopt/optim/design_answer.hpp"
+
 namespace covopt::optim {
 namespace {
 
@@ -257,7 +259,9 @@ DesignResult Design(const DesignRequest& request) {
     r.warnings = {};
     return r;
   }
+  AnswerOverRange(request, r);  // the default answer: admissible over the stated uncertainty (design_answer.hpp)
   r.message = Headline(r, request.options.space.max_thickness_m);
+  if (r.nearest_changes) r.message += " No catalog material works for this scene; " + r.nearest_changes->Describe() + ".";
   r.warnings = Warnings(request, r);
   return r;
 }

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "covopt/report/simulation_json.hpp"
+#include "design_answer_json.hpp"
 #include "limits_json.hpp"
 #include "oracle_json.hpp"
 
@@ -111,6 +112,7 @@ std::string DesignJson(const optim::DesignRequest& request, const optim::DesignR
   ordered_json list = ordered_json::array();
   for (const CandidateOutcome& c : candidates) list.push_back(CandidateJson(c, rule));
   j["candidates"] = list;
+  internal::AddDesignAnswerJson(j, result);  // material_range, nearest_changes, range_note
   j["solver"] = {{"termination", optim::ToString(termination)},
                  {"evaluations", evaluations},
                  {"seconds", seconds},

@@ -8,6 +8,7 @@
 #include <fmt/ostream.h>
 
 #include "covopt/core/verdict.hpp"
+#include "covopt/report/design_answer_text.hpp"
 #include "covopt/report/robust_text.hpp"
 #include "covopt/report/scene_headline.hpp"
 
@@ -353,6 +354,7 @@ void PrintDesign(std::ostream& out, const DesignText& r, const optim::DesignResu
                  : "");
   fmt::print(out, "\n{}\n", result.message);
   if (result.recommendation) PrintRecommendation(out, r, result);
+  PrintDesignAnswer(out, result, r.runners_up);  // the range checked, or the nearest changes
   PrintBareAndContinuous(out, r, result);
   const std::vector<CandidateOutcome>& candidates = result.candidates;
   fmt::print(out, "\nCandidates ({})\n",

@@ -23,6 +23,7 @@
 #include <covopt/materials/catalog.hpp>
 
 #include "covopt/optim/covering_design.hpp"
+#include "covopt/optim/material_range.hpp"
 
 namespace covopt::optim {
 
@@ -90,6 +91,14 @@ struct DesignResult {
   /// Which oracle scored the designs (exact or time path), why, with which integrator and
   /// gradient, and how many of its evaluations failed.
   OracleReport oracle;
+  /// The default answer (material_range.hpp, design_answer.hpp): the recommended material's
+  /// verdicts over its stated uncertainty at the recommended thickness; empty without one.
+  std::optional<MaterialRangeCheck> material_range;
+  /// Per candidate (in `candidates`' order): how its stated uncertainty changed it (a thicker
+  /// layer, or not admissible over its range, and why); empty for the others.
+  std::vector<std::string> range_notes;
+  /// No catalog material is admissible over its range: what would make the nearest one work.
+  std::optional<NearestChanges> nearest_changes;
   /// The bare robot is safe: no covering is needed (the continuous optimum is not a design
   /// anyone needs then).
   bool covering_needed() const noexcept { return verdict != DesignVerdict::kBareRobotSafe; }
