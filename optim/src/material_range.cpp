@@ -182,7 +182,10 @@ RangedMaterial RangedMaterialOf(const CandidateMaterial& c, CoveringLaw law) {
   return r;
 }
 
-ImpactPeaks RangePeaksAt(const Scene& scene, const RangedMaterial& m, double thickness_m, double scale) {
+namespace {
+
+/// `scene` covered by `m` at `thickness_m`, its curve scaled by `scale` (foam law).
+Scene RangeScene(const Scene& scene, const RangedMaterial& m, double thickness_m, double scale) {
   if (ChooseOracle(scene, OracleChoice::kAuto).kind != OracleKind::kExact) {
     throw std::invalid_argument(
         "the default answer's range check needs the exact path (a scene without braking or a neck)");
@@ -197,12 +200,20 @@ ImpactPeaks RangePeaksAt(const Scene& scene, const RangedMaterial& m, double thi
           std::make_shared<const CompressiveCurve>(m.covering.compressive_curve->Scaled(scale));
     }
   }
-  return ExactPeaks(ImpactModel::FromScene(s));
+  return s;
+}
+
+}  // namespace
+
+ImpactPeaks RangePeaksAt(const Scene& scene, const RangedMaterial& m, double thickness_m, double scale) {
+  return ExactPeaks(ImpactModel::FromScene(RangeScene(scene, m, thickness_m, scale)));
 }
 
 Verdict RangeVerdictAt(const Scene& scene, const RangedMaterial& m, double thickness_m, double scale,
                        const DesignOptions& options) {
-  const ImpactPeaks peaks = RangePeaksAt(scene, m, thickness_m, scale);
+  const ImpactModel model = ImpactModel::FromScene(RangeScene(scene, m, thickness_m, scale));
+  const ImpactPeaks peaks = ExactPeaks(model);
+  // The one head verdict; the law's validity is counted where HeadVerdict is given it (model, peaks).
   return HeadVerdict(peaks, thickness_m > 0.0, options.limits, options.rule(), m.crush, scene.head.area);
 }
 

@@ -80,3 +80,27 @@ TEST_CASE("under the Hertz law the curve's range is not used", "[design_answer]"
     CHECK(r.material_range->scales.size() == 1);
   }
 }
+
+TEST_CASE("at a given thickness the nearest speed and radius keep that thickness", "[design_answer]") {
+  DesignRequest request = RequestFor({"neoprene sponge D1056 2C3", "vinyl-nitrile foam VN600"}, 1.5);
+  request.thickness_m = 0.01;
+  const DesignResult r = Design(request);
+  REQUIRE(r.ok());
+  CHECK_FALSE(r.recommendation.has_value());
+  REQUIRE(r.nearest_changes.has_value());
+  const auto& n = *r.nearest_changes;
+  CHECK(n.at_thickness_m == 0.01);
+  for (const std::string& note : r.range_notes) CHECK(note.find("not admissible over ") == 0);
+  REQUIRE(n.speed.reachable);
+  CHECK(n.speed.value < 1.5);
+  // The speed found keeps 10 mm: admissible just below it there, not just above.
+  const auto& catalog = covopt::materials::Catalog::BuiltIn();
+  const covopt::optim::RangedMaterial m = covopt::optim::RangedMaterialOf(*catalog.Find(n.material));
+  covopt::Scene below = request.scene, above = request.scene;
+  below.robot.speed_m_per_s = n.speed.value * (1 - 1e-8);
+  above.robot.speed_m_per_s = n.speed.value * (1 + 1e-8);
+  CHECK(covopt::optim::CheckOverRange(below, m, 0.01, request.options).admissible());
+  CHECK_FALSE(covopt::optim::CheckOverRange(above, m, 0.01, request.options).admissible());
+  REQUIRE(n.thickness.reachable);
+  CHECK(n.thickness.value > 0.01);
+}
