@@ -16,11 +16,13 @@ std::string Mm(double metres) { return FormatFixed(metres * 1e3, 2) + " mm"; }
 /// The score of `c` at `thickness_m` with its curve scaled by `scale` (the range's worst end),
 /// as the design's rows show a score.
 DesignScore ScoreAt(const Scene& scene, const RangedMaterial& m, const CandidateMaterial& c, double thickness_m,
-                    double scale, const InjuryLimits& limits) {
+                    double scale, const InjuryLimits& limits, const DesignRule& rule) {
   DesignScore s;
   s.design = {c.youngs_modulus_Pa, thickness_m};
   s.poisson_ratio = c.poisson_ratio;
-  s.peaks = RangePeaksAt(scene, m, thickness_m, scale);
+  RangeImpact impact = RangeImpactAt(scene, m, thickness_m, scale, !rule.compression_counts());
+  s.peaks = impact.peaks;
+  s.validity = std::move(impact.validity);
   s.laceration_ratio = s.peaks.max_tensile_stress_Pa / limits.laceration_tensile_stress_Pa;
   s.contusion_ratio = s.peaks.max_energy_density_J_per_m2 / limits.contusion_energy_density_J_per_m2;
   s.fracture_ratio = s.peaks.peak_force_N / FractureLimit(limits, scene.head.area);
@@ -54,7 +56,7 @@ void CheckCandidate(const DesignRequest& request, const DesignResult& r, Candida
   }
   const double judged_at = holds.value_or(r.thickness_m ? *r.thickness_m : o.space.max_thickness_m);
   const MaterialRangeCheck check = CheckOverRange(request.scene, m, judged_at, o);
-  c.score = ScoreAt(request.scene, m, c.material, judged_at, check.worst_scale(), o.limits);
+  c.score = ScoreAt(request.scene, m, c.material, judged_at, check.worst_scale(), o.limits, r.rule);
   c.margin = c.score.margin(r.rule);
   if (holds) {
     const bool changed = designed != *holds;

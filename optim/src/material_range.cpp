@@ -205,16 +205,21 @@ Scene RangeScene(const Scene& scene, const RangedMaterial& m, double thickness_m
 
 }  // namespace
 
-ImpactPeaks RangePeaksAt(const Scene& scene, const RangedMaterial& m, double thickness_m, double scale) {
-  return ExactPeaks(ImpactModel::FromScene(RangeScene(scene, m, thickness_m, scale)));
+RangeImpact RangeImpactAt(const Scene& scene, const RangedMaterial& m, double thickness_m, double scale,
+                          bool accept_full_compression) {
+  const ImpactModel model = ImpactModel::FromScene(RangeScene(scene, m, thickness_m, scale));
+  RangeImpact impact{.peaks = ExactPeaks(model), .validity = {}};
+  impact.validity = JudgedValidity(model, impact.peaks, accept_full_compression);
+  return impact;
 }
 
 Verdict RangeVerdictAt(const Scene& scene, const RangedMaterial& m, double thickness_m, double scale,
                        const DesignOptions& options) {
-  const ImpactModel model = ImpactModel::FromScene(RangeScene(scene, m, thickness_m, scale));
-  const ImpactPeaks peaks = ExactPeaks(model);
-  // The one head verdict; the law's validity is counted where HeadVerdict is given it (model, peaks).
-  return HeadVerdict(peaks, thickness_m > 0.0, options.limits, options.rule(), m.crush, scene.head.area);
+  const RangeImpact impact =
+      RangeImpactAt(scene, m, thickness_m, scale, /*accept_full_compression=*/!options.rule().compression_counts());
+  // The one head verdict, with the law's validity counted.
+  return HeadVerdict(impact.peaks, thickness_m > 0.0, options.limits, options.rule(), m.crush, scene.head.area,
+                     &impact.validity);
 }
 
 std::vector<double> ScalesToJudge(const CurveScaleRange& range, const DesignRule& rule) {

@@ -85,10 +85,17 @@ RangedMaterial RangedMaterialOf(const materials::Material& material, CoveringLaw
 /// A design candidate as a RangedMaterial (its curve, band and rate factor), under `law`.
 RangedMaterial RangedMaterialOf(const CandidateMaterial& material, CoveringLaw law = CoveringLaw::kAuto);
 
-/// The peaks of one impact of `scene` covered by `material` at `thickness_m` with its curve
-/// scaled by `scale` (foam law; the Hertz law without a curve), on the exact path.
+/// One impact of `scene` covered by `material` at `thickness_m` with its curve scaled by
+/// `scale` (foam law; the Hertz law without a curve), on the exact path: its peaks and the
+/// covering's validity as a verdict counts it (JudgedValidity; Hertz full compression accepted
+/// with `accept_full_compression`, the paper's criterion).
+struct RangeImpact {
+  ImpactPeaks peaks;
+  CoveringValidity validity;
+};
 /// @throws std::invalid_argument for a scene the exact path cannot answer (braking, a neck).
-ImpactPeaks RangePeaksAt(const Scene& scene, const RangedMaterial& material, double thickness_m, double scale);
+RangeImpact RangeImpactAt(const Scene& scene, const RangedMaterial& material, double thickness_m, double scale,
+                          bool accept_full_compression);
 
 /// The verdict of one impact of `scene` covered by `material` at `thickness_m` with its curve
 /// scaled by `scale`, under `options`' rule and limits (HeadVerdict on the exact path).
