@@ -81,9 +81,12 @@ double PositiveLength(const std::string& typed, const QuantitySpec& spec, const 
 
 std::string CoveringText(const audit::AuditCovering& c) {
   if (!(c.covering.thickness_m > 0.0)) return "bare";
-  return fmt::format("{}{} (E {}, ν {:g})", c.material ? c.material->name + " " : std::string(),
+  // The law that describes it (auto: the foam law for a measured curve): each cell counts its validity.
+  const bool foam = c.covering.compressive_curve && c.covering.law != CoveringLaw::kHertz;
+  return fmt::format("{}{} (E {}, ν {:g}; {} law)", c.material ? c.material->name + " " : std::string(),
                      FormatQuantity(c.covering.thickness_m, QuantityKind::kLength),
-                     FormatQuantity(c.covering.youngs_modulus_Pa, QuantityKind::kModulus), c.covering.poisson_ratio);
+                     FormatQuantity(c.covering.youngs_modulus_Pa, QuantityKind::kModulus), c.covering.poisson_ratio,
+                     foam ? "foam" : "hertz");
 }
 
 /// The scene inputs an ISO region reads in an audit (the rest belong to the head's model).

@@ -112,7 +112,7 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
 @_takes_objects
 @_provenance.stamped
 def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=None, contact=None,
-          contact_area=None):
+          contact_area=None, keep_travel=False):
     """A grid of impacts, as ``covopt sweep``: one or two scene quantities over lists of
     values, everything else from the scene. Each point takes the exact path where its scene
     has an energy integral, the time path (ARKODE ERK 5(4), rtol 1e-8) with braking or a neck.
@@ -138,7 +138,9 @@ def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=No
     body_region: one ISO/TS 15066 region, with body_area, contact and contact_area as
     simulate takes them: its verdict per point, as ``covopt sweep --body-region --csv``, over
     robot_mass, speed, robot_radius or the covering; returns a BodyRegionSweep
-    (covopt/_body_regions.py), where an invalid point carries its error.
+    (covopt/_body_regions.py), where an invalid point carries its error. Each point is judged on
+    force, pressure, the law's validity and crushing; keep_travel=True (``--keep-travel``) also
+    counts the covering's travel rule (the head's sweep refuses it: its own columns report the travel).
 
     Raises ValueError on bad input (an unknown quantity, no values, ...), ComputationError
     when no point is a valid scene.
@@ -146,7 +148,10 @@ def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=No
     if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
         return _body_regions.sweep(x, y, _scene(scene), **_given(
             threads=threads, body_region=body_region, body_area=body_area, contact=contact,
-            contact_area=contact_area))
+            contact_area=contact_area, keep_travel=keep_travel or None))
+    if keep_travel:
+        raise ValueError("keep_travel applies with body_region: the head's sweep reports the covering's travel in its "
+                         "own columns (fully_compressed, admissible); drop it")
     return Sweep(_covopt.sweep(x, y, _scene(scene), threads))
 
 

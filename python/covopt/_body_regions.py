@@ -190,7 +190,7 @@ def check_trajectory(urdf, tip, trajectory, base, point, urdf_text, ignore_joint
 
 def sweep(x, y, scene, **options):
     """covopt.sweep with body_region (one ISO region)."""
-    options = _refuse("sweep", options, _REGION)
+    options = _refuse("sweep", options, _REGION + _TRAVEL)
     data = _covopt.sweep_body_region(x, y, scene, **options)
     shape = data["admissible"].shape
     for key in ("governing", "error"):

@@ -57,3 +57,15 @@ def test_a_fully_compressed_hertz_covering_is_limited_by_law_validity():
     assert judged.max_safe_speed_m_per_s == pytest.approx(kept.max_safe_speed_m_per_s, rel=1e-12)
     paper = covopt.max_safe_speed(scene, allow_full_compression=True)
     assert paper.max_safe_speed_m_per_s > judged.max_safe_speed_m_per_s
+
+
+def test_sweep_takes_keep_travel_with_a_body_region_only():
+    scene = covopt.Scene(material=VN600, covering_thickness=0.01, robot_mass=8.0)
+    speeds = ("speed", [0.5, 1.0, 2.0, 4.0])
+    judged = covopt.sweep(speeds, scene=scene, body_region="chest")
+    kept = covopt.sweep(speeds, scene=scene, body_region="chest", keep_travel=True)
+    # The travel rule only removes admissible points (a foam used up is within its law).
+    assert all(k <= j for k, j in zip(kept.to_dict()["admissible"], judged.to_dict()["admissible"]))
+    assert sum(kept.to_dict()["admissible"]) < sum(judged.to_dict()["admissible"])
+    with pytest.raises(ValueError, match="keep_travel applies with body_region"):
+        covopt.sweep(speeds, scene=scene, keep_travel=True)

@@ -115,8 +115,8 @@ std::string SimulationJson(const SimulationReport& report, int indent) {
   j["phase_at_max_name"] = ToString(p.phase_at_max);
   j["scalp_fully_compressed"] = p.scalp_fully_compressed;
   j["fully_compressed"] = p.fully_compressed;
-  // The covering's law and whether the peak is within what it describes.
-  j["covering_law"] = ToString(p.covering_law);
+  // The covering's law ("" bare) and whether the peak is within what it describes.
+  j["covering_law"] = report.scene.covering.thickness_m > 0.0 ? std::string(ToString(p.covering_law)) : std::string();
   j["validity"] = {{"within", r.validity.within}, {"note", r.validity.note}};
   // The limits stay the limits; the derated ones and the factor join each criterion.
   j["laceration"] = CriterionObject(v.Find("laceration"), "_Pa", v.safety_factor);

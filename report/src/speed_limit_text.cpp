@@ -111,6 +111,15 @@ void PrintBodyRegionSpeedLimitRows(std::ostream& out, std::span<const BodyRegion
                row.has_covering ? speed(row.covered_max_speed_m_per_s, row.covered_status) : std::string("-"),
                row.has_covering ? row.covered_limited_by : std::string("-"),
                row.gain ? fmt::format("{:.2f}×", *row.gain) : std::string("-"));
+    // The covering's law where it says something the row does not: out of its validity, or
+    // used up below the limit (decisions D2, D6).
+    const bool used_up = row.covering_used_up_m_per_s && row.covered_max_speed_m_per_s &&
+                         *row.covering_used_up_m_per_s < *row.covered_max_speed_m_per_s;
+    if (row.has_covering && (used_up || !row.within_law)) {
+      fmt::print(out, "  {:<18} covering law {}, {}{}\n", "", row.covering_law,
+                 row.within_law ? "within its validity" : "OUT of its validity: " + row.validity_note,
+                 used_up ? fmt::format("; covering used up at v = {:.4g} m/s", *row.covering_used_up_m_per_s) : "");
+    }
   }
 }
 
