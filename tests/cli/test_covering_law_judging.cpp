@@ -68,7 +68,7 @@ TEST_CASE("speed-limit: auto takes the foam law for a material with a curve, as 
   CHECK(kept["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "full-compression", "crush"}));
 }
 
-TEST_CASE("speed-limit: a fully compressed Hertz covering is limited by law-validity; --keep-travel keeps today's limit",
+TEST_CASE("speed-limit: a fully compressed Hertz covering is limited by law-validity and --keep-travel keeps today's limit",
           "[run][covering_law_judging]") {
   // README's elastomer rows (limited by full compression on main) with a compressible ν.
   const std::vector<std::string> base = {"speed-limit", "--covering-modulus", "5.884MPa", "--covering-poisson", "0.3",
