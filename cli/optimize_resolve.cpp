@@ -85,8 +85,10 @@ void ResolveScene(const OptimizeOptions& o, Resolved& r) {
     r.request.scene.covering.law =
         AsInputError([&] { return scene_file::ParseCoveringLawOrThrow(*o.choices.covering_law, "--covering-law"); });
   }
-  // The law the catalog materials are designed with (auto: the foam law where a material has a curve).
+  // The law the catalog materials are designed with (auto: the foam law where a material has a
+  // curve). It is the design's, not the scene's covering's (which is what is designed).
   r.request.options.covering_law = r.request.scene.covering.law;
+  r.request.scene.covering.law = CoveringLaw::kAuto;
   if (o.robot_model.given()) {  // --urdf ...: robot.mass from the robot model
     RobotModelMass mass = ResolveRobotModelMass(o.robot_model, o.scene_values.count(kRobotMassField) != 0);
     r.request.scene.robot.mass_kg = mass.mass_kg;
@@ -185,6 +187,10 @@ Resolved ResolveOptimize(const OptimizeOptions& o) {
     // Under --covering-law foam the catalog's materials without a curve are no candidates; one
     // named with --material is refused by the design, naming it.
     if (o.materials.empty()) optim::KeepCandidatesForLaw(r.request.materials, r.request.options.covering_law);
+    for (std::string& w : optim::KeepCandidatesTheSceneModels(r.request.materials, r.request.options.covering_law,
+                                                               r.request.scene)) {
+      r.warnings.push_back(std::move(w));
+    }
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
     throw InputError((what.rfind("no family", 0) == 0 ? "--family: " : "--material: ") + what);

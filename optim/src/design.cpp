@@ -226,6 +226,24 @@ void KeepCandidatesForLaw(std::vector<CandidateMaterial>& candidates, CoveringLa
   std::erase_if(candidates, [](const CandidateMaterial& c) { return !c.compressive_curve; });
 }
 
+std::vector<std::string> KeepCandidatesTheSceneModels(std::vector<CandidateMaterial>& candidates, CoveringLaw law,
+                                                      const Scene& scene) {
+  const auto curved = std::find_if(candidates.begin(), candidates.end(),
+                                   [](const CandidateMaterial& c) { return c.compressive_curve != nullptr; });
+  if (law != CoveringLaw::kAuto || curved == candidates.end()) return {};
+  Scene foam = scene;
+  foam.covering = CoveringOf(*curved, std::max(scene.covering.thickness_m, 1e-3), CoveringLaw::kFoam);
+  try {
+    (void)ImpactModel::FromScene(foam);
+    return {};
+  } catch (const std::invalid_argument& e) {
+    const auto dropped = std::erase_if(candidates, [](const CandidateMaterial& c) { return c.compressive_curve; });
+    return {std::to_string(dropped) + " material" + (dropped == 1 ? "" : "s") +
+            " with a measured compressive curve left out: the foam law cannot judge this scene (" + e.what() +
+            "); --covering-law hertz reads them with the Hertz law"};
+  }
+}
+
 DesignResult Design(const DesignRequest& request) {
   DesignResult r;
   r.criterion = request.options.criterion();

@@ -187,13 +187,15 @@ std::string DesignRule::Describe() const {
   std::string text =
       "no laceration and no contusion (Park et al. 2011's skin limits), no fracture (the peak force within the "
       "struck area's lowest published fracture force)";
-  if (compression_counts()) {
-    text += ", the covering not fully compressed (design rule \"full-compression\" under the Hertz law, "
-            "\"within-curve\" under the foam law: within its measured curve, SF as a strain reserve)";
-  }
+  if (compression_counts()) text += ", the covering not fully compressed";
   text += crushing_allowed ? "; crushing allowed (a sacrificial liner)" : ", the covering not crushed";
   if (!crushing_allowed && unknown_strength_allowed) text += " where its strength is known";
-  return text + "; safety factor " + FormatSignificant(safety_factor) + " on each";
+  text += "; safety factor " + FormatSignificant(safety_factor) + " on each";
+  if (compression_counts()) {
+    text += " (design rule \"full-compression\" under the Hertz law; \"within-curve\" under the foam law: the layer "
+            "within its measured curve, SF as a strain reserve)";
+  }
+  return text;
 }
 
 std::vector<std::string> HeadVerdictScope(const DesignRule& rule) {
@@ -297,6 +299,10 @@ DesignOracle::DesignOracle(const Scene& scene, double covering_poisson_ratio, co
                            OracleSelection selection, const TimeIntegrationOptions* time_path)
     : scene_(scene), limits_(limits), selection_(std::move(selection)) {
   scene_.covering.poisson_ratio = covering_poisson_ratio;
+  // The scene's own covering is what is designed: its curve and law are not the designs'
+  // (a material brings its own through ScoreCovering; a design (E_c, b_c) is a Hertz layer).
+  scene_.covering.compressive_curve = nullptr;
+  scene_.covering.law = CoveringLaw::kAuto;
   Scene bare = scene_;
   bare.covering.thickness_m = 0.0;
   (void)ImpactModel::FromScene(bare);  // validates everything but the design

@@ -131,11 +131,11 @@ void JudgePeaks(Judged& j, const ImpactCriterion& c, HeadArea area) {
 
 /// The covering's law validity at j's peaks (as DesignScore::validity_fails): out of it, the
 /// impact is inadmissible and "law-validity" binds with g at least 1.
-void JudgeValidity(Judged& j, const ImpactModel& model, const ImpactCriterion& c) {
+void JudgeValidity(Judged& j, const ImpactModel& model) {
   if (!j.covered) return;
   j.validity = CoveringLawValidity(model, j.peaks);
-  const bool accepted = c.criterion == DesignCriterion::kPaper && j.peaks.covering_law == CoveringLaw::kHertz &&
-                        j.peaks.fully_compressed;
+  // A fully compressed Hertz covering: the full-compression criterion judges it (the paper's accepts it).
+  const bool accepted = j.peaks.covering_law == CoveringLaw::kHertz && j.peaks.fully_compressed;
   if (j.validity.within || accepted) return;
   j.out_of_validity = true;
   j.admissible = false;
@@ -166,7 +166,7 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c, const Screening&
   j.peaks = ExactPeaks(model);
   j.covered = model.has_covering();
   JudgePeaks(j, c, scene.head.area);
-  JudgeValidity(j, model, c);
+  JudgeValidity(j, model);
   if (!brakes) return j;
   // Braking only takes energy out of the impact: the unbraked judgement bounds the braked
   // one (docs/model.md §11). Until the brake starts the two impacts are the same; a brake that
@@ -199,7 +199,7 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c, const Screening&
   }
   j.peaks = result.peaks;
   JudgePeaks(j, c, scene.head.area);
-  JudgeValidity(j, result_model, c);
+  JudgeValidity(j, result_model);
   return j;
 }
 

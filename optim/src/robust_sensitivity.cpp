@@ -151,8 +151,7 @@ ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions&
                        compressed ? std::log(*table.compression_ratio) : 0.0};
 
   std::optional<PeakSensitivities> analytic;
-  // Analytic d/dE_c, d/db_c are the Hertz law's; a foam layer's are central differences.
-  if (covered && !brakes && !model.is_foam()) analytic = ExactPeakSensitivities(model, peaks);
+  if (covered && !brakes && !model.is_foam()) analytic = ExactPeakSensitivities(model, peaks);  // Hertz only
 
   for (const SceneField& field : SceneFields()) {
     const double x = field.value(scene);

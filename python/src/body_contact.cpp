@@ -356,6 +356,7 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
   request.regions = targets.IsoLimits();
   if (targets.has_head()) {
     request.head = inputs.scene;  // the head's own keywords apply to its skin model
+    request.head->covering.law = CoveringLaw::kAuto;  // the design's law (below), not the designed covering's
   } else {
     RefuseHeadKeywords(inputs, RegionText(kwargs));
   }

@@ -506,6 +506,7 @@ py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
   request.scene = inputs.scene;
   optim::DesignOptions& d = request.options;
   d.covering_law = inputs.scene.covering.law;  // auto: the foam law where a material has a curve
+  request.scene.covering.law = CoveringLaw::kAuto;  // the design's law, not the designed covering's
   d.limits = inputs.limits;
   d.safety_factor = inputs.safety_factor;
   const auto read = [&](const char* keyword, const QuantitySpec& spec, double& into) {
@@ -565,6 +566,7 @@ py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
 
   request.materials = Candidates(kwargs);
   if (!get("materials")) optim::KeepCandidatesForLaw(request.materials, d.covering_law);
+  (void)optim::KeepCandidatesTheSceneModels(request.materials, d.covering_law, request.scene);  // as the CLI
 
   optim::DesignResult result;
   {

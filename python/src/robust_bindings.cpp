@@ -198,16 +198,19 @@ py::object RobustOptimize(const SceneInputs& scene, const py::kwargs& kwargs) {
   for (const char* k : {"covering_modulus", "covering_thickness", "covering_poisson", "material"}) {
     if (scene.Gave(k)) throw std::invalid_argument(std::string(k) + ": the covering is what robust_optimize designs");
   }
-  Box b = ReadBox(scene, kwargs);
+  SceneInputs without_law = scene;  // the law is the design's, not the designed covering's
+  without_law.scene.covering.law = CoveringLaw::kAuto;
+  Box b = ReadBox(without_law, kwargs);
   optim::DesignOptions design;
   design.limits = b.scene.limits;
   design.safety_factor = b.scene.safety_factor;
   design.allow_full_compression = Flag(kwargs, "allow_full_compression");
   design.allow_crushing = Flag(kwargs, "allow_crushing");
   design.allow_unknown_strength = Flag(kwargs, "allow_unknown_strength");
-  design.covering_law = b.scene.scene.covering.law;  // auto: the foam law where a material has a curve
+  design.covering_law = scene.scene.covering.law;  // auto: the foam law where a material has a curve
   std::vector<optim::CandidateMaterial> materials = optim::SelectCandidates(materials::Catalog::BuiltIn());
   optim::KeepCandidatesForLaw(materials, design.covering_law);
+  (void)optim::KeepCandidatesTheSceneModels(materials, design.covering_law, b.scene.scene);  // as the CLI
   std::optional<optim::InjuryProbabilityOptions> sampling = ReadSampling(kwargs);
   if (const auto p = Option(kwargs, "max_injury_probability")) {
     if (!sampling) throw std::invalid_argument("max_injury_probability needs samples=N (the probability is estimated)");

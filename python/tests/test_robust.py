@@ -150,7 +150,7 @@ def test_braking_robot_with_ranges_is_the_cli_object(cli_json):
 
 
 def test_robust_optimize_designs_curve_materials_with_the_foam_law_as_the_cli(cli_json):
-    ours = covopt.robust_optimize(ranges={"head_mass": ("3.7kg", "5.8kg")}, covering_law="foam")
+    ours = covopt.robust_optimize(covopt.Scene(covering_law="foam"), ranges={"head_mass": ("3.7kg", "5.8kg")})
     theirs = cli_json("optimize", "--json", "--head-mass", "3.7kg..5.8kg", "--covering-law", "foam")
     assert without_timing(ours.to_dict()["candidates"]) == without_timing(theirs["candidates"])
     assert theirs["candidates"] and all(c["covering_law"] == "foam" for c in theirs["candidates"])

@@ -302,9 +302,14 @@ void PrintBareAndContinuous(std::ostream& out, const DesignText& r, const optim:
   if (result.recommendation && !r.request.thickness_m && continuous.feasible) {
     const CandidateOutcome& c = result.candidates[*result.recommendation];
     const double extra = *c.recommended_thickness_m - best.design.thickness_m;
-    fmt::print(out, "                    the recommendation is {:.2f}x its modulus and {} {}\n",
-               c.material.youngs_modulus_Pa / best.design.youngs_modulus_Pa, Mm(std::abs(extra)),
-               extra >= 0 ? "thicker" : "thinner");
+    if (c.score.peaks.covering_law == CoveringLaw::kFoam) {
+      fmt::print(out, "                    the recommendation is a foam layer (its measured curve, not a modulus), {} {}\n",
+                 Mm(std::abs(extra)), extra >= 0 ? "thicker" : "thinner");
+    } else {
+      fmt::print(out, "                    the recommendation is {:.2f}x its modulus and {} {}\n",
+                 c.material.youngs_modulus_Pa / best.design.youngs_modulus_Pa, Mm(std::abs(extra)),
+                 extra >= 0 ? "thicker" : "thinner");
+    }
   }
 }
 

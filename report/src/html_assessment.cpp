@@ -380,6 +380,11 @@ void AssessOptimize(Assessment& a, const Json& j) {
     if (limits) AddHeadCriteria(a, *limits);
     a.rows_note = "The recommended covering, " + ObjectLabel(*rec) + " at " +
                   Reading(rec->value("thickness_m", 0.0), {"m", "mm", 1e3}) + ".";
+    if (const std::string law = StringAt(*rec, "covering_law"); !law.empty()) {  // D6: its law and validity
+      const Json* validity = Find(*rec, "validity");
+      a.rows_note += " Covering law " + law +
+                     (validity && validity->is_object() ? "; validity: " + StringAt(*validity, "note") : "") + ".";
+    }
     if (const Json* w = Find(*rec, "worst_case"); w && w->is_object()) {
       AddWorstCase(a, *w, a.safety_factor, ObjectLabel(*rec) + ": worst case over the ranges");
     }

@@ -22,14 +22,18 @@ void PrintWorstCase(std::ostream& out, const optim::UncertaintyBox& box, const o
                     std::string_view indent) {
   out << fmt::format("{}worst case: {} (found by {}, {} evaluations)\n", indent, DescribeValues(box, worst.values),
                      worst.found_by, worst.evaluations);
+  const CoveringSpec& covering = worst.scene.covering;
+  const bool foam = covering.compressive_curve && covering.law != CoveringLaw::kHertz;
   out << fmt::format("{}  laceration ratio {:.4f}, contusion ratio {:.4f}, fracture ratio {:.4f}{}{}; governing "
                      "ratio {:.4f} ({} binds): {}\n",
                      indent, worst.laceration_ratio, worst.contusion_ratio, worst.fracture_ratio,
-                     worst.scene.covering.thickness_m > 0.0
-                         ? fmt::format(", compression {:.1f} % of the covering", 100.0 * worst.compression_ratio)
+                     covering.thickness_m > 0.0
+                         ? fmt::format(", compression {:.1f} % of the {}", 100.0 * worst.compression_ratio,
+                                       foam ? "foam's measured curve (foam law)" : "covering")
                          : std::string(),
                      worst.crush_ratio > 0.0 ? fmt::format(", crush ratio {:.4f}", worst.crush_ratio) : std::string(),
-                     worst.governing_ratio, optim::ToString(worst.binding),
+                     worst.governing_ratio,
+                     optim::ToString(worst.binding, foam ? CoveringLaw::kFoam : CoveringLaw::kHertz),
                      worst.admissible ? "admissible for every value in the box" : "NOT admissible for the whole box");
   if (worst.corner_governing_ratio) {
     out << fmt::format("{}  the corners alone give {:.4f}{}\n", indent, *worst.corner_governing_ratio,

@@ -197,7 +197,8 @@ TEST_CASE("a design out of its law's validity is never admissible and the paper'
   CHECK_FALSE(s.admissible(paper));  // not fully compressed: the elastomer's limit counts
   s.peaks.fully_compressed = true;   // fully compressed: Park's phase 3, accepted by the paper's criterion
   CHECK(s.admissible(paper));
-  CHECK_FALSE(s.admissible(rule));
+  CHECK_FALSE(s.admissible(rule));   // the default rule: the full-compression criterion judges it
+  CHECK(s.governing(rule).criterion != co::LimitingCriterion::kLawValidity);
   CHECK(co::ToString(co::LimitingCriterion::kLawValidity) == "law-validity");
 }
 

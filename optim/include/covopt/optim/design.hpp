@@ -126,6 +126,14 @@ std::vector<CandidateMaterial> SelectCandidates(const materials::Catalog& catalo
 /// under auto and hertz, keeps every candidate.
 void KeepCandidatesForLaw(std::vector<CandidateMaterial>& candidates, CoveringLaw law);
 
+/// Under `law` auto, on a scene the foam law does not model (a braking robot, a neck, contact
+/// damping, literal thresholds: docs/model.md §16), drops the candidates with a curve and
+/// returns one warning saying how many and why ("--covering-law hertz reads them with the Hertz
+/// law"); otherwise keeps every candidate and returns nothing. (Under foam such a scene is
+/// refused by the design, naming the field.)
+std::vector<std::string> KeepCandidatesTheSceneModels(std::vector<CandidateMaterial>& candidates, CoveringLaw law,
+                                                      const Scene& scene);
+
 /// Runs the request: problem (a) or (b), the catalog snap, the verdict and the warnings, on
 /// the oracle request.options.oracle chooses (ChooseOracle).
 /// @throws std::invalid_argument naming the field for bad input (scene, options, thickness),

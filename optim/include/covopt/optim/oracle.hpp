@@ -163,12 +163,13 @@ struct DesignScore {
   double required_strength_Pa(double safety_factor) const noexcept {
     return safety_factor * peaks.max_compressive_stress_Pa;
   }
-  /// The covering is out of its law's validity and that counts under `rule`: not within, unless
-  /// the rule is the paper's and the covering is a fully compressed Hertz layer.
-  bool validity_fails(const DesignRule& rule) const noexcept {
+  /// The covering is out of its law's validity for a reason the travel rule does not already
+  /// judge: not within, unless it is a fully compressed Hertz layer (the full-compression
+  /// criterion counts that under the default rule; the paper's criterion accepts it, Park's
+  /// phase 3).
+  bool validity_fails(const DesignRule& /*rule*/) const noexcept {
     if (validity.within || bare()) return false;
-    return !(rule.criterion == DesignCriterion::kPaper && peaks.covering_law == CoveringLaw::kHertz &&
-             peaks.fully_compressed);
+    return !(peaks.covering_law == CoveringLaw::kHertz && peaks.fully_compressed);
   }
   /// The largest ratio that counts under `rule`, and which criterion it is; kLawValidity with a
   /// ratio of at least 1/SF (no margin) where validity_fails(rule).
