@@ -294,7 +294,9 @@ TEST_CASE("optimize with ranges and a braking robot: the time path, screened, ch
   // docs/guide/robust.md's example: the robot brakes at 20 m/s² from 10 ms after first contact.
   const std::vector<std::string> braking = {"--reaction-delay", "10ms", "--braking", "20m/s2"};
   const std::vector<std::string> box = {"--head-mass", "3.7kg..5.8kg", "--scalp-thickness", "2mm..5mm"};
-  std::vector<std::string> args = {"optimize", "--json", "--material", "elastomer Shore A60"};
+  // A compressible Hertz covering (ν 0.25, no curve): the solid elastomers of before leave their
+  // law's strain limit on this scene, and curve materials are left out with a brake.
+  std::vector<std::string> args = {"optimize", "--json", "--material", "Park padding 30", "--allow-unknown-strength"};
   args.insert(args.end(), box.begin(), box.end());
   const Json free = RunJson(args);
   args.insert(args.end(), braking.begin(), braking.end());
@@ -308,7 +310,7 @@ TEST_CASE("optimize with ranges and a braking robot: the time path, screened, ch
   // Braking makes the design no thicker.
   CHECK(rec["min_safe_thickness_m"].get<double>() <= free["recommendation"]["min_safe_thickness_m"].get<double>() + 1e-6);
   // simulate over the same box with the same brake finds the recommendation admissible.
-  std::vector<std::string> check = {"simulate", "--json", "--material", "elastomer Shore A60", "--covering-thickness",
+  std::vector<std::string> check = {"simulate", "--json", "--material", "Park padding 30", "--covering-thickness",
                                     std::to_string(rec["thickness_m"].get<double>() * 1e3) + "mm"};
   check.insert(check.end(), box.begin(), box.end());
   check.insert(check.end(), braking.begin(), braking.end());
