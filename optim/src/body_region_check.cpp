@@ -180,12 +180,8 @@ BodyRegionJudgement Judge(const BodyContactModel& model, const materials::BodyLi
   const bool compression_counts = covered && rule.compression_counts();
   if (compression_counts) consider(j.compression_ratio, BodyLimitKind::kFullCompression);
   if (j.crush_check == CrushCheck::kChecked && !rule.crushing_allowed) consider(j.crush_ratio, BodyLimitKind::kCrush);
-  // Out of the law's validity (the verdict's "law-validity", ratio 1): it governs where nothing
-  // else exceeds its limit.
-  if (covered && !c.validity.within && j.governing_ratio <= 1.0) {
-    j.governing = BodyLimitKind::kLawValidity;
-    j.governing_ratio = 1.0;
-  }
+  // The law's validity (the verdict's "law-validity"): how far along its limits, not derated.
+  if (covered) consider(c.validity.ratio / rule.safety_factor, BodyLimitKind::kLawValidity);
 
   const double strength = options.material ? options.material->compressive_strength_Pa : 0.0;
   j.verdict = BodyRegionVerdict(c, limits, covered, rule, {j.crush_check, strength});

@@ -129,20 +129,20 @@ void JudgePeaks(Judged& j, const ImpactCriterion& c, HeadArea area) {
   j.admissible = j.governing_ratio <= 1.0 && !(compression_counts && j.fully_compressed);
 }
 
-/// The covering's law validity at j's peaks (as DesignScore::validity_fails): out of it, the
-/// impact is inadmissible and "law-validity" binds with g at least 1.
+/// The covering's law validity at j's peaks (as DesignScore::validity_ratio and validity_fails):
+/// it counts as its ratio (not derated, so unscaled in g); out of it, the impact is inadmissible.
 void JudgeValidity(Judged& j, const ImpactModel& model, const ImpactCriterion& c) {
   if (!j.covered) return;
   j.validity = CoveringLawValidity(model, j.peaks);
-  const bool accepted = c.criterion == DesignCriterion::kPaper && j.peaks.covering_law == CoveringLaw::kHertz &&
-                        j.peaks.fully_compressed;
-  if (j.validity.within || accepted) return;
-  j.out_of_validity = true;
-  j.admissible = false;
-  if (j.governing_ratio <= 1.0) {
-    j.governing_ratio = 1.0;
+  const bool accepted = c.criterion == DesignCriterion::kPaper && j.peaks.covering_law == CoveringLaw::kHertz;
+  const double ratio = accepted ? j.validity.ratio_full_compression_allowed : j.validity.ratio;
+  if (ratio > j.governing_ratio) {
+    j.governing_ratio = ratio;
     j.binding = LimitingCriterion::kLawValidity;
   }
+  if (accepted ? !(ratio > 1.0) : j.validity.within) return;
+  j.out_of_validity = true;
+  j.admissible = false;
 }
 
 /// A failed time-path run: every ratio +inf, every event, inadmissible.

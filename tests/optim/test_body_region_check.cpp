@@ -73,7 +73,7 @@ double ScaledRatio(const co::BodyRegionJudgement& j, co::BodyLimitKind kind, dou
     case co::BodyLimitKind::kPressure: return sf * j.pressure_ratio.value();
     case co::BodyLimitKind::kFullCompression: return sf * j.compression_ratio;
     case co::BodyLimitKind::kCrush: return sf * j.crush_ratio;
-    case co::BodyLimitKind::kLawValidity: return j.contact.validity.within ? 0.0 : 1.0;
+    case co::BodyLimitKind::kLawValidity: return j.contact.validity.ratio;  // not derated
     case co::BodyLimitKind::kNone: break;
   }
   return std::numeric_limits<double>::quiet_NaN();

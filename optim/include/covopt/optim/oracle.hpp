@@ -163,15 +163,28 @@ struct DesignScore {
   double required_strength_Pa(double safety_factor) const noexcept {
     return safety_factor * peaks.max_compressive_stress_Pa;
   }
-  /// The covering is out of its law's validity and that counts under `rule`: not within, unless
-  /// the rule is the paper's and the covering is a fully compressed Hertz layer.
-  bool validity_fails(const DesignRule& rule) const noexcept {
-    if (validity.within || bare()) return false;
-    return !(rule.criterion == DesignCriterion::kPaper && peaks.covering_law == CoveringLaw::kHertz &&
-             peaks.fully_compressed);
+  /// Whether the paper's criterion accepts this covering's full compression under `rule`: a
+  /// Hertz covering (its travel is then no validity limit, its other limits still are).
+  bool full_compression_accepted(const DesignRule& rule) const noexcept {
+    return rule.criterion == DesignCriterion::kPaper && peaks.covering_law == CoveringLaw::kHertz;
   }
-  /// The largest ratio that counts under `rule`, and which criterion it is; kLawValidity with a
-  /// ratio of at least 1/SF (no margin) where validity_fails(rule).
+  /// How far along its law's validity limits the covering went under `rule` [-] (0 bare):
+  /// CoveringValidity::ratio, or ratio_full_compression_allowed where the paper's criterion
+  /// accepts full compression (as optim::JudgedValidity).
+  double validity_ratio(const DesignRule& rule) const noexcept {
+    if (bare()) return 0.0;
+    return full_compression_accepted(rule) ? validity.ratio_full_compression_allowed : validity.ratio;
+  }
+  /// The covering is out of its law's validity under `rule`: not within, unless the paper's
+  /// criterion accepts a Hertz covering's full compression and its other limits hold.
+  bool validity_fails(const DesignRule& rule) const noexcept {
+    if (bare()) return false;
+    return full_compression_accepted(rule) ? validity.ratio_full_compression_allowed > 1.0 : !validity.within;
+  }
+  /// The validity as judged under `rule` (within, ratio and note; as optim::JudgedValidity).
+  CoveringValidity judged_validity(const DesignRule& rule) const;
+  /// The largest ratio that counts under `rule`, and which criterion it is; the law's validity
+  /// counts as validity_ratio(rule) / SF (not derated: SF × its ratio is the validity ratio).
   GoverningRatio governing(const DesignRule& rule) const noexcept;
   /// 1 − SF × the governing ratio: >= 0 when every counted criterion holds, the fraction of
   /// the (derated) limit left over on the one that binds.
