@@ -296,7 +296,9 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
   }
   if (covered) {  // the law's validity counts always ("law-validity")
     const double within = internal::WithinLawSpeed(region_scene, std::min(speed, kMaxSpeed_m_per_s), kMinSpeed_m_per_s);
-    if (within < std::min(speed, kMaxSpeed_m_per_s)) {
+    // Below the other limits; where it meets one to rounding (a Hertz covering's travel at SF 1:
+    // full compression) that design rule stays the limit, as in the verdict.
+    if (within < std::min(speed, kMaxSpeed_m_per_s) * (1.0 - 1e-12)) {
       speed = within;
       by = BodyLimitKind::kLawValidity;
     }
@@ -371,7 +373,9 @@ BodyRegionSpeedLimit BrakedSpeedLimit(const BodyContactScene& region_scene, cons
   // and the fully-compressed flag decides: the narrowing is then steered by the approach
   // against the approach at the bottoming out, log(δ_max/δ_b), smooth across it.
   const BodyContactModel unit_model = BodyContactModel::FromScene(AtSpeed(region_scene, 1.0));
-  const bool travel_at_bottom = covered && rule.compression_counts() && rule.safety_factor == 1.0;
+  // (The travel rule counts only as a limit, keep_travel: JudgedRule. Without it a Hertz covering's
+  // law-validity ratio, its travel share then F/F_b, is continuous across the bottoming out.)
+  const bool travel_at_bottom = covered && JudgedRule(options).compression_counts() && rule.safety_factor == 1.0;
   const double bottom_approach_m = travel_at_bottom ? unit_model.ApproachAtForce(unit_model.bottom_out_force_N()) : 0.0;
   const auto evaluate = [&](double speed) {
     internal::LimitProbe<BodyRegionJudgement> e;
