@@ -370,13 +370,15 @@ BodyRegionSpeedLimit BrakedSpeedLimit(const BodyContactScene& region_scene, cons
                  /*peaks_only=*/true);
   };
   // At SF 1 the covering's travel binds where it bottoms out, beyond which its ratio stays 1
-  // and the fully-compressed flag decides: the narrowing is then steered by the approach
-  // against the approach at the bottoming out, log(δ_max/δ_b), smooth across it.
+  // and the fully-compressed flag decides; a Hertz covering's law-validity binds there at any SF
+  // (its travel share, then F/F_b, steep past the stop). The narrowing is then steered by the
+  // approach against the approach at the bottoming out, log(δ_max/δ_b), smooth across it. (The
+  // travel rule counts only as a limit, keep_travel: JudgedRule.)
   const BodyContactModel unit_model = BodyContactModel::FromScene(AtSpeed(region_scene, 1.0));
-  // (The travel rule counts only as a limit, keep_travel: JudgedRule. Without it a Hertz covering's
-  // law-validity ratio, its travel share then F/F_b, is continuous across the bottoming out.)
+  const bool hertz = covered && !unit_model.foam();
   const bool travel_at_bottom = covered && JudgedRule(options).compression_counts() && rule.safety_factor == 1.0;
-  const double bottom_approach_m = travel_at_bottom ? unit_model.ApproachAtForce(unit_model.bottom_out_force_N()) : 0.0;
+  const double bottom_approach_m =
+      travel_at_bottom || hertz ? unit_model.ApproachAtForce(unit_model.bottom_out_force_N()) : 0.0;
   const auto evaluate = [&](double speed) {
     internal::LimitProbe<BodyRegionJudgement> e;
     e.judgement = judge(speed);
@@ -385,7 +387,11 @@ BodyRegionSpeedLimit BrakedSpeedLimit(const BodyContactScene& region_scene, cons
     if (e.failed) return e;
     const BodyRegionJudgement& j = e.judgement;
     const double scaled = rule.safety_factor * j.governing_ratio;
-    if (travel_at_bottom && (j.governing == BodyLimitKind::kFullCompression || j.contact.fully_compressed)) {
+    const CoveringValidity& validity = j.contact.validity;
+    const bool travel_validity = hertz && j.governing == BodyLimitKind::kLawValidity &&
+                                 validity.ratio_full_compression_allowed < validity.ratio;
+    if ((travel_at_bottom && (j.governing == BodyLimitKind::kFullCompression || j.contact.fully_compressed)) ||
+        (hertz && j.contact.fully_compressed) || travel_validity) {
       e.excess = std::log(j.contact.max_approach_m / bottom_approach_m);
     } else if (scaled > 0.0 && (e.admissible || scaled > 1.0)) {
       e.excess = std::log(scaled);
