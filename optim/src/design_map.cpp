@@ -112,7 +112,15 @@ DesignMap ComputeDesignMap(const DesignRequest& request, const DesignResult& res
   for (const double e : map.modulus_Pa) {
     for (const double b : map.thickness_m) map.scores.push_back(score({e, b}));
   }
-  if (map.chosen) map.chosen_score = score(map.chosen->design);
+  // The chosen material as the optimiser scored it: under the design's covering law (a material
+  // with a measured curve: the foam law), which the (E_c, b_c) grid, a Hertz ideal, cannot show.
+  if (map.chosen && map.material) {
+    DesignScore s = oracle->ScoreCovering(CoveringOf(*map.material, map.chosen->design.thickness_m, design.covering_law));
+    CheckCrush(*map.material, s);
+    map.chosen_score = s;
+  } else if (map.chosen) {
+    map.chosen_score = score(map.chosen->design);
+  }
 
   map.criteria = {LimitingCriterion::kLaceration, LimitingCriterion::kContusion, LimitingCriterion::kFracture};
   if (map.rule.compression_counts()) map.criteria.push_back(LimitingCriterion::kFullCompression);

@@ -68,7 +68,8 @@ struct DesignMap {
   /// The design the request chose (the recommendation, else the continuous optimum), scored
   /// here by the same oracle; empty when the bare robot is safe (nothing is chosen).
   std::optional<DesignMapMark> chosen;
-  /// Its score by the map's oracle (equal to the optimiser's for that design).
+  /// Its score by the map's oracle (equal to the optimiser's: a material under the design's
+  /// covering law, so a curve material under the foam law, which the grid of (E_c, b_c) does not show).
   std::optional<DesignScore> chosen_score;
   /// Every catalog candidate at its recommended thickness (or the thickness it was scored at).
   std::vector<DesignMapMark> candidates;
