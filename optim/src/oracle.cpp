@@ -224,8 +224,7 @@ CoveringValidity DesignScore::judged_validity(const DesignRule& rule) const {
   judged.ratio = validity.ratio_full_compression_allowed;
   judged.within = !validity_fails(rule);
   if (peaks.fully_compressed && judged.within) {
-    judged.note = "Hertz law: the covering is fully compressed (phase 3, the robot on the bone through it), accepted "
-                  "under the paper's criterion (allow full compression); " + judged.note;
+    judged.note = std::string(kFullCompressionAcceptedNote) + judged.note;
   }
   return judged;
 }

@@ -94,8 +94,7 @@ CoveringValidity JudgedValidity(const ImpactModel& model, const ImpactPeaks& pea
   CoveringValidity accepted = CoveringLawValidity(model, at_full);
   accepted.ratio = accepted.ratio_full_compression_allowed;
   if (!accepted.within) return accepted;
-  accepted.note = "Hertz law: the covering is fully compressed (phase 3, the robot on the bone through it), accepted "
-                  "under the paper's criterion (allow full compression); " + accepted.note;
+  accepted.note = std::string(kFullCompressionAcceptedNote) + accepted.note;
   return accepted;
 }
 

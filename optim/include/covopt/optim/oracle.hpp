@@ -119,6 +119,12 @@ struct GoverningRatio {
   double ratio = 0.0;  ///< unscaled (the rule's SF multiplies it) [-]
 };
 
+/// The head of a validity note where the paper's criterion accepts a fully compressed Hertz
+/// covering (JudgedValidity, DesignScore::judged_validity); the covering's own note follows.
+inline constexpr std::string_view kFullCompressionAcceptedNote =
+    "Hertz law: the covering is fully compressed (phase 3, the robot on the bone through it), accepted under the "
+    "paper's criterion (allow full compression); ";
+
 /// The injury ratios of one design.
 struct DesignScore {
   CoveringDesign design;  ///< thickness 0: the bare robot
