@@ -113,7 +113,8 @@ void internal::CheckRobotReaction(double reaction_delay_s, double braking_m_per_
 
 namespace {
 
-/// The covering's law (docs/model.md §16): a known value; kFoam needs a curve; the foam law
+/// The covering's law (docs/model.md §16): a known value; kFoam needs a curve where there is a
+/// covering (a bare scene, e.g. optimize's covering to be designed, has none to read); the foam law
 /// has no damped, braking, neck or literal-threshold variant (those are Park's chain's).
 void CheckCoveringLaw(const Scene& s) {
   const CoveringLaw law = s.covering.law;
@@ -121,7 +122,7 @@ void CheckCoveringLaw(const Scene& s) {
     throw std::invalid_argument("covering.law must be auto, foam or hertz (got " +
                                 std::to_string(static_cast<int>(law)) + ")");
   }
-  if (law == CoveringLaw::kFoam && !s.covering.compressive_curve) {
+  if (law == CoveringLaw::kFoam && !s.covering.compressive_curve && s.covering.thickness_m > 0.0) {
     throw std::invalid_argument(
         "covering.law is foam but the covering has no compressive_curve: the foam law needs the "
         "material's measured curve (give one, or covering.law auto or hertz)");

@@ -46,14 +46,17 @@ Criterion& Verdict::Add(std::string_view name, CriterionPart part, std::string_v
   return criteria.back();
 }
 
-Criterion& AddLawValidity(Verdict& verdict, bool within) {
-  Criterion& c = verdict.Add(kLawValidityRule, CriterionPart::kDesignRule, "1", within ? 0.0 : 1.0, 1.0,
+Criterion& AddLawValidity(Verdict& verdict, bool within, double validity_ratio) {
+  Criterion& c = verdict.Add(kLawValidityRule, CriterionPart::kDesignRule, "1", validity_ratio, 1.0,
                              "the covering law's validity", true, !within);
-  c.derated_limit = 1.0;  // the model's range: not derated by the safety factor
+  c.derated_limit = 1.0;                                  // the model's range: not derated by the safety factor
+  c.ratio = validity_ratio / verdict.safety_factor;       // so SF × ratio is the validity ratio
   c.passed = within;
   if (!within) c.note = "out of the covering law's validity (see the validity note)";
   return c;
 }
+
+Criterion& AddLawValidity(Verdict& verdict, bool within) { return AddLawValidity(verdict, within, within ? 0.0 : 1.0); }
 
 const Criterion* Verdict::Find(std::string_view name) const noexcept {
   for (const Criterion& c : criteria) {

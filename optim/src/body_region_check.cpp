@@ -180,12 +180,8 @@ BodyRegionJudgement Judge(const BodyContactModel& model, const materials::BodyLi
   const bool compression_counts = covered && rule.compression_counts();
   if (compression_counts) consider(j.compression_ratio, BodyLimitKind::kFullCompression);
   if (j.crush_check == CrushCheck::kChecked && !rule.crushing_allowed) consider(j.crush_ratio, BodyLimitKind::kCrush);
-  // Out of the law's validity (the verdict's "law-validity", ratio 1): it governs where nothing
-  // else exceeds its limit.
-  if (covered && !c.validity.within && j.governing_ratio <= 1.0) {
-    j.governing = BodyLimitKind::kLawValidity;
-    j.governing_ratio = 1.0;
-  }
+  // The law's validity (the verdict's "law-validity"): how far along its limits, not derated.
+  if (covered) consider(c.validity.ratio / rule.safety_factor, BodyLimitKind::kLawValidity);
 
   const double strength = options.material ? options.material->compressive_strength_Pa : 0.0;
   j.verdict = BodyRegionVerdict(c, limits, covered, rule, {j.crush_check, strength});
@@ -300,7 +296,8 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
   }
   if (covered) {  // the law's validity counts always ("law-validity")
     const double within = internal::WithinLawSpeed(region_scene, std::min(speed, kMaxSpeed_m_per_s), kMinSpeed_m_per_s);
-    if (within < std::min(speed, kMaxSpeed_m_per_s)) {
+    // Below the other limits; tied with one (the travel at SF 1), that one stays the limit.
+    if (within < std::min(speed, kMaxSpeed_m_per_s) * (1.0 - 1e-12)) {
       speed = within;
       by = BodyLimitKind::kLawValidity;
     }
@@ -350,6 +347,15 @@ BodyRegionSpeedLimit RegionSpeedLimit(const BodyContactScene& region_scene, cons
   return out;
 }
 
+/// Whether j's limit is the covering's bottoming out: the travel rule at SF 1 (where its ratio stays
+/// 1 past it), a Hertz covering fully compressed or its law-validity by the travel (steep past it).
+bool BindsAtBottom(const BodyRegionJudgement& j, bool travel_at_bottom, bool hertz) noexcept {
+  const CoveringValidity& v = j.contact.validity;
+  if (travel_at_bottom && (j.governing == BodyLimitKind::kFullCompression || j.contact.fully_compressed)) return true;
+  return hertz && (j.contact.fully_compressed ||
+                   (j.governing == BodyLimitKind::kLawValidity && v.ratio_full_compression_allowed < v.ratio));
+}
+
 /// A braking robot's limit (body_region_check.hpp): bracketed on the time path (limit_bracket.hpp)
 /// from just below the unbraked closed-form limit, which bounds it from below, and narrowed by
 /// regula falsi on log(SF × governing ratio).
@@ -371,12 +377,13 @@ BodyRegionSpeedLimit BrakedSpeedLimit(const BodyContactScene& region_scene, cons
     return Judge(BodyContactModel::FromScene(AtSpeed(region_scene, speed)), limits, options, nullptr, time_path,
                  /*peaks_only=*/true);
   };
-  // At SF 1 the covering's travel binds where it bottoms out, beyond which its ratio stays 1
-  // and the fully-compressed flag decides: the narrowing is then steered by the approach
-  // against the approach at the bottoming out, log(δ_max/δ_b), smooth across it.
+  // Where the covering's bottoming out binds (BindsAtBottom) the narrowing is steered by the
+  // approach against the approach there, log(δ_max/δ_b), smooth across it.
   const BodyContactModel unit_model = BodyContactModel::FromScene(AtSpeed(region_scene, 1.0));
-  const bool travel_at_bottom = covered && rule.compression_counts() && rule.safety_factor == 1.0;
-  const double bottom_approach_m = travel_at_bottom ? unit_model.ApproachAtForce(unit_model.bottom_out_force_N()) : 0.0;
+  const bool hertz = covered && !unit_model.foam();
+  const bool travel_at_bottom = covered && JudgedRule(options).compression_counts() && rule.safety_factor == 1.0;
+  const double bottom_approach_m =
+      travel_at_bottom || hertz ? unit_model.ApproachAtForce(unit_model.bottom_out_force_N()) : 0.0;
   const auto evaluate = [&](double speed) {
     internal::LimitProbe<BodyRegionJudgement> e;
     e.judgement = judge(speed);
@@ -385,7 +392,7 @@ BodyRegionSpeedLimit BrakedSpeedLimit(const BodyContactScene& region_scene, cons
     if (e.failed) return e;
     const BodyRegionJudgement& j = e.judgement;
     const double scaled = rule.safety_factor * j.governing_ratio;
-    if (travel_at_bottom && (j.governing == BodyLimitKind::kFullCompression || j.contact.fully_compressed)) {
+    if (BindsAtBottom(j, travel_at_bottom, hertz)) {
       e.excess = std::log(j.contact.max_approach_m / bottom_approach_m);
     } else if (scaled > 0.0 && (e.admissible || scaled > 1.0)) {
       e.excess = std::log(scaled);

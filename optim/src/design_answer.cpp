@@ -44,7 +44,7 @@ std::string WorstText(const MaterialRangeCheck& check) {
 /// when none holds. Its note says what changed.
 void CheckCandidate(const DesignRequest& request, const DesignResult& r, CandidateOutcome& c, std::string& note) {
   const DesignOptions& o = request.options;
-  const RangedMaterial m = RangedMaterialOf(c.material, request.scene.covering.law);
+  const RangedMaterial m = RangedMaterialOf(c.material, request.options.covering_law);
   if (!m.foam()) return;
   // The thickness it was designed at [m], 0 when it was not admissible as designed.
   const double designed = c.safe ? r.thickness_m.value_or(c.recommended_thickness_m.value_or(0.0)) : 0.0;
@@ -107,7 +107,7 @@ void Rerank(DesignResult& r) {
 
 void AnswerOverRange(const DesignRequest& request, DesignResult& r) {
   if (!r.ok() || !r.covering_needed() || r.candidates.empty()) return;
-  const CoveringLaw law = request.scene.covering.law;
+  const CoveringLaw law = request.options.covering_law;  // the design's law (CoveringOf), as the shells set it
   if (ChooseOracle(request.scene, OracleChoice::kAuto).kind != OracleKind::kExact) {
     const bool curves = std::any_of(r.candidates.begin(), r.candidates.end(), [&](const CandidateOutcome& c) {
       return RangedMaterialOf(c.material, law).foam();

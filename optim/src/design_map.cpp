@@ -30,14 +30,14 @@ std::vector<double> Axis(double low, double high, int count, bool geometric) {
 
 }  // namespace
 
-double CriterionRatio(const DesignScore& score, LimitingCriterion criterion) noexcept {
+double CriterionRatio(const DesignScore& score, LimitingCriterion criterion, const DesignRule& rule) noexcept {
   switch (criterion) {
     case LimitingCriterion::kLaceration: return score.laceration_ratio;
     case LimitingCriterion::kContusion: return score.contusion_ratio;
     case LimitingCriterion::kFullCompression: return score.compression_ratio;
     case LimitingCriterion::kCrush: return score.crush_ratio;
     case LimitingCriterion::kFracture: return score.fracture_ratio;
-    case LimitingCriterion::kLawValidity:
+    case LimitingCriterion::kLawValidity: return score.validity_ratio(rule) / rule.safety_factor;
     case LimitingCriterion::kNone: break;
   }
   return 0.0;
@@ -112,7 +112,15 @@ DesignMap ComputeDesignMap(const DesignRequest& request, const DesignResult& res
   for (const double e : map.modulus_Pa) {
     for (const double b : map.thickness_m) map.scores.push_back(score({e, b}));
   }
-  if (map.chosen) map.chosen_score = score(map.chosen->design);
+  // The chosen material as the optimiser scored it: under the design's covering law (a material
+  // with a measured curve: the foam law), which the (E_c, b_c) grid, a Hertz ideal, cannot show.
+  if (map.chosen && map.material) {
+    DesignScore s = oracle->ScoreCovering(CoveringOf(*map.material, map.chosen->design.thickness_m, design.covering_law));
+    CheckCrush(*map.material, s);
+    map.chosen_score = s;
+  } else if (map.chosen) {
+    map.chosen_score = score(map.chosen->design);
+  }
 
   map.criteria = {LimitingCriterion::kLaceration, LimitingCriterion::kContusion, LimitingCriterion::kFracture};
   if (map.rule.compression_counts()) map.criteria.push_back(LimitingCriterion::kFullCompression);
@@ -120,6 +128,9 @@ DesignMap ComputeDesignMap(const DesignRequest& request, const DesignResult& res
       map.material->crush_behaviour == materials::CrushBehaviour::kCrushes) {
     map.criteria.push_back(LimitingCriterion::kCrush);
   }
+  // A solid elastomer's Hertz limits (strain, contact radius: docs/model.md §12.2) bind inside
+  // the travel; a compressible covering's validity is its travel, the full-compression contour's.
+  if (map.poisson_ratio >= kSolidElastomerMinPoissonRatio) map.criteria.push_back(LimitingCriterion::kLawValidity);
   map.oracle = oracle->Report();
   return map;
 }

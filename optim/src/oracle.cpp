@@ -216,8 +216,19 @@ GoverningRatio DesignScore::governing(const DesignRule& rule) const noexcept {
   consider(fracture_ratio, LimitingCriterion::kFracture);
   if (rule.compression_counts() && !bare()) consider(compression_ratio, LimitingCriterion::kFullCompression);
   if (!rule.crushing_allowed && crush_check == CrushCheck::kChecked) consider(crush_ratio, LimitingCriterion::kCrush);
-  if (validity_fails(rule)) g = {LimitingCriterion::kLawValidity, std::max(g.ratio, 1.0 / rule.safety_factor)};
+  if (!bare()) consider(validity_ratio(rule) / rule.safety_factor, LimitingCriterion::kLawValidity);
   return g;
+}
+
+CoveringValidity DesignScore::judged_validity(const DesignRule& rule) const {
+  CoveringValidity judged = validity;
+  if (bare() || !full_compression_accepted(rule)) return judged;
+  judged.ratio = validity.ratio_full_compression_allowed;
+  judged.within = !validity_fails(rule);
+  if (peaks.fully_compressed && judged.within) {
+    judged.note = std::string(kFullCompressionAcceptedNote) + judged.note;
+  }
+  return judged;
 }
 
 bool DesignScore::admissible(const DesignRule& rule) const noexcept {

@@ -129,20 +129,20 @@ void JudgePeaks(Judged& j, const ImpactCriterion& c, HeadArea area) {
   j.admissible = j.governing_ratio <= 1.0 && !(compression_counts && j.fully_compressed);
 }
 
-/// The covering's law validity at j's peaks (as DesignScore::validity_fails): out of it, the
-/// impact is inadmissible and "law-validity" binds with g at least 1.
-void JudgeValidity(Judged& j, const ImpactModel& model) {
+/// The covering's law validity at j's peaks (as DesignScore::validity_ratio and validity_fails):
+/// it counts as its ratio (not derated, so unscaled in g); out of it, the impact is inadmissible.
+void JudgeValidity(Judged& j, const ImpactModel& model, const ImpactCriterion& c) {
   if (!j.covered) return;
   j.validity = CoveringLawValidity(model, j.peaks);
-  // A fully compressed Hertz covering: the full-compression criterion judges it (the paper's accepts it).
-  const bool accepted = j.peaks.covering_law == CoveringLaw::kHertz && j.peaks.fully_compressed;
-  if (j.validity.within || accepted) return;
-  j.out_of_validity = true;
-  j.admissible = false;
-  if (j.governing_ratio <= 1.0) {
-    j.governing_ratio = 1.0;
+  const bool accepted = c.criterion == DesignCriterion::kPaper && j.peaks.covering_law == CoveringLaw::kHertz;
+  const double ratio = accepted ? j.validity.ratio_full_compression_allowed : j.validity.ratio;
+  if (ratio > j.governing_ratio) {
+    j.governing_ratio = ratio;
     j.binding = LimitingCriterion::kLawValidity;
   }
+  if (accepted ? !(ratio > 1.0) : j.validity.within) return;
+  j.out_of_validity = true;
+  j.admissible = false;
 }
 
 /// A failed time-path run: every ratio +inf, every event, inadmissible.
@@ -166,7 +166,7 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c, const Screening&
   j.peaks = ExactPeaks(model);
   j.covered = model.has_covering();
   JudgePeaks(j, c, scene.head.area);
-  JudgeValidity(j, model);
+  JudgeValidity(j, model, c);
   if (!brakes) return j;
   // Braking only takes energy out of the impact: the unbraked judgement bounds the braked
   // one (docs/model.md §11). Until the brake starts the two impacts are the same; a brake that
@@ -199,7 +199,7 @@ Judged JudgeScene(const Scene& scene, const ImpactCriterion& c, const Screening&
   }
   j.peaks = result.peaks;
   JudgePeaks(j, c, scene.head.area);
-  JudgeValidity(j, result_model);
+  JudgeValidity(j, result_model, c);
   return j;
 }
 

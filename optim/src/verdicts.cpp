@@ -73,7 +73,7 @@ Verdict HeadCriteria(const ImpactPeaks& peaks, bool covered, const InjuryLimits&
         c.source = "the foam's measured curve (strain at the peak over the curve's last strain)";
       }
     }
-    if (validity) AddLawValidity(v, validity->within);
+    if (validity) AddLawValidity(v, validity->within, validity->ratio);
   }
   return v;
 }
@@ -82,15 +82,19 @@ Verdict HeadCriteria(const ImpactPeaks& peaks, bool covered, const InjuryLimits&
 
 CoveringValidity JudgedValidity(const ImpactModel& model, const ImpactPeaks& peaks, bool accept_full_compression) {
   CoveringValidity validity = CoveringLawValidity(model, peaks);
-  if (validity.within || !accept_full_compression || model.is_foam() || !peaks.fully_compressed) return validity;
+  if (!accept_full_compression || model.is_foam()) return validity;
+  // Under the paper's criterion the Hertz covering's travel is no validity limit: how far along
+  // is its other limits' ratio (a solid elastomer's), as DesignScore::validity_ratio.
+  validity.ratio = validity.ratio_full_compression_allowed;
+  if (validity.within || !peaks.fully_compressed) return validity;
   // The paper's criterion accepts phase 3 (the robot on the bone through the covering): judged
   // as if the covering had stopped at its full compression, whatever else holds still counts.
   ImpactPeaks at_full = peaks;
   at_full.fully_compressed = false;
   CoveringValidity accepted = CoveringLawValidity(model, at_full);
+  accepted.ratio = accepted.ratio_full_compression_allowed;
   if (!accepted.within) return accepted;
-  accepted.note = "Hertz law: the covering is fully compressed (phase 3, the robot on the bone through it), accepted "
-                  "under the paper's criterion (allow full compression); " + accepted.note;
+  accepted.note = std::string(kFullCompressionAcceptedNote) + accepted.note;
   return accepted;
 }
 
@@ -103,8 +107,9 @@ Verdict HeadVerdict(const ImpactPeaks& peaks, bool covered, const InjuryLimits& 
 
 Verdict HeadVerdict(const DesignScore& score, const InjuryLimits& limits, const DesignRule& rule,
                     double compressive_strength_Pa, HeadArea area) {
+  const CoveringValidity validity = score.judged_validity(rule);
   Verdict v = HeadVerdict(score.peaks, !score.bare(), limits, rule, {score.crush_check, compressive_strength_Pa}, area,
-                          &score.validity);
+                          &validity);
   v.evaluated = !score.failed;
   return v;
 }
@@ -123,7 +128,7 @@ Verdict BodyRegionVerdict(const BodyContactResult& contact, const materials::Bod
   }
   if (covered) {
     AddCoveringRules(v, contact.compression_ratio, contact.fully_compressed, contact.covering_stress_Pa, rule, crush);
-    AddLawValidity(v, contact.validity.within);
+    AddLawValidity(v, contact.validity.within, contact.validity.ratio);
   }
   return v;
 }

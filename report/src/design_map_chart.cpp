@@ -49,8 +49,8 @@ std::optional<std::pair<double, double>> Crossing(const optim::DesignMap& map, o
     const std::size_t i = k % 2 == 0 ? start + k / 2 : start - (k + 1) / 2;  // wraps past 0: skipped
     if (i >= columns) continue;
     for (std::size_t j = rows - 1; j > 0; --j) {
-      const double a = optim::CriterionRatio(map.at(i, j), c) - level;
-      const double b = optim::CriterionRatio(map.at(i, j - 1), c) - level;
+      const double a = optim::CriterionRatio(map.at(i, j), c, map.rule) - level;
+      const double b = optim::CriterionRatio(map.at(i, j - 1), c, map.rule) - level;
       if (!std::isfinite(a) || !std::isfinite(b) || (a > 0.0) == (b > 0.0)) continue;
       const double f = a / (a - b);
       const double y = Y(map.modulus_Pa[j]) + f * (Y(map.modulus_Pa[j - 1]) - Y(map.modulus_Pa[j]));
@@ -71,7 +71,7 @@ std::string MapData(const optim::DesignMap& map, double level) {
                        score.failed ? std::string("NaN") : Value(score.governing(map.rule).ratio));
       for (const optim::LimitingCriterion c : map.criteria) {
         s += ' ';
-        s += score.failed ? std::string("NaN") : Value(optim::CriterionRatio(score, c));
+        s += score.failed ? std::string("NaN") : Value(optim::CriterionRatio(score, c, map.rule));
       }
       s += '\n';
     }

@@ -416,7 +416,22 @@ TEST_CASE("the per-link design is safe at full speed when audited again, curve m
   ca::AuditOptions options;
   options.design.materials = {Material("PU foam PORON 4701-30 320"), Material("neoprene sponge D1056 2C2"),
                               Material("polystyrene foam 27.6")};
+  // By default the audit judges injury (decision D2): a used-up foam is a modelled rigid stop, and
+  // the thinnest stock of PORON (0.5 mm) does on every link at the FR3's speeds, no thicker than
+  // with the travel rule. With the travel rule as a limit (--keep-travel) the design must keep
+  // each foam within its curve: thicker, and one step thinner fails.
+  const ca::AuditResult injury_only = ca::Audit(setup, TheFr3().pick, options);
+  setup.keep_travel = true;
   const ca::AuditResult result = ca::Audit(setup, TheFr3().pick, options);
+  REQUIRE(injury_only.link_designs.size() == result.link_designs.size());
+  for (std::size_t l = 1; l < result.links.size(); ++l) {
+    const ca::AuditLinkDesign &loose = injury_only.link_designs[l], &kept = result.link_designs[l];
+    INFO(result.links[l] << ": " << loose.message << " / " << kept.message);
+    if (!kept.thickness_m) continue;
+    REQUIRE(loose.thickness_m);
+    CHECK(*loose.thickness_m <= *kept.thickness_m);
+    CHECK(loose.governing_ratio * setup.rule.safety_factor <= 1.0);
+  }
   REQUIRE(result.link_designs.size() == result.links.size());
   CHECK(result.link_designs[0].message.find("never moves") != std::string::npos);
   CHECK_FALSE(result.link_designs[0].material);

@@ -73,7 +73,7 @@ double ScaledRatio(const co::BodyRegionJudgement& j, co::BodyLimitKind kind, dou
     case co::BodyLimitKind::kPressure: return sf * j.pressure_ratio.value();
     case co::BodyLimitKind::kFullCompression: return sf * j.compression_ratio;
     case co::BodyLimitKind::kCrush: return sf * j.crush_ratio;
-    case co::BodyLimitKind::kLawValidity: return j.contact.validity.within ? 0.0 : 1.0;
+    case co::BodyLimitKind::kLawValidity: return j.contact.validity.ratio;  // not derated
     case co::BodyLimitKind::kNone: break;
   }
   return std::numeric_limits<double>::quiet_NaN();
@@ -363,10 +363,12 @@ TEST_CASE("body-region verdicts refuse bad input, naming the field", "[body_regi
   CHECK_THROWS_WITH(co::DesignForBodyRegions(request), Catch::Contains("min_thickness_m"));
 }
 
-/// Whether every region and the head (when judged) is safe with `material` at `thickness_m`.
+/// Whether every region and the head (when judged) is safe with `material` at `thickness_m`,
+/// under the request's covering law (a material with a measured curve: the foam law under auto).
 bool EveryVerdictAdmissible(const co::BodyRegionDesignRequest& r, const co::CandidateMaterial& material,
                             double thickness_m, std::string* failing = nullptr) {
-  const BodyContactScene s = Covered(r.scene, material.youngs_modulus_Pa, thickness_m, material.poisson_ratio);
+  BodyContactScene s = r.scene;
+  s.covering = co::CoveringOf(material, thickness_m, r.covering_law);
   bool ok = true;
   for (const BodyLimits& limits : r.regions) {
     const co::BodyRegionJudgement j = co::JudgeBodyContact(s, limits, co::BodyRegionOptions{r.rule, material, r.rule.compression_counts()});
@@ -379,7 +381,7 @@ bool EveryVerdictAdmissible(const co::BodyRegionDesignRequest& r, const co::Cand
     head.robot.radius_m = r.scene.robot_radius_m;
     head.robot.speed_m_per_s = r.scene.speed_m_per_s;
     const co::ExactPathOracle oracle(head, material.poisson_ratio);
-    co::DesignScore score = oracle.ScoreMaterial({material.youngs_modulus_Pa, thickness_m}, material.poisson_ratio);
+    co::DesignScore score = oracle.ScoreCovering(co::CoveringOf(material, thickness_m, r.covering_law));
     co::CheckCrush(material, score);
     if (!score.admissible(r.rule) && failing) *failing += "head; ";
     ok = ok && score.admissible(r.rule);

@@ -179,7 +179,7 @@ TEST_CASE("covering law foam refuses a material without a curve, naming it, and 
   CHECK(band.recovers.has_value());
 }
 
-TEST_CASE("a design out of its law's validity is never admissible and the paper's criterion accepts Hertz full "
+TEST_CASE("a design out of its law's validity is never admissible; the paper's criterion accepts Hertz full "
           "compression", "[design][validity]") {
   co::DesignScore s;
   s.design = {1e6, 0.01};
@@ -188,17 +188,35 @@ TEST_CASE("a design out of its law's validity is never admissible and the paper'
   s.peaks.covering_law = CoveringLaw::kHertz;
   const co::DesignRule rule;
   REQUIRE(s.admissible(rule));
-  s.validity = {false, "solid elastomer under the Hertz law: peak strain 0.43 > 0.20"};
+  // Within, the law's validity counts as how far along its limits (not derated by the SF).
+  s.validity = {true, "solid elastomer under the Hertz law: within its limits", 0.7, 0.7};
+  const co::DesignRule sf2{2.0};
+  CHECK(s.governing(sf2).criterion == co::LimitingCriterion::kLaceration);  // 2 x 0.5 > 0.7
+  s.validity.ratio = s.validity.ratio_full_compression_allowed = 0.9;
+  CHECK(s.admissible(rule));
+  CHECK(s.governing(rule).criterion == co::LimitingCriterion::kLawValidity);
+  CHECK(s.margin(rule) == Approx(0.1));
+  s.validity = {false, "solid elastomer under the Hertz law: peak strain 0.43 > 0.20", 2.15, 2.15};
   CHECK_FALSE(s.admissible(rule));
   CHECK(s.governing(rule).criterion == co::LimitingCriterion::kLawValidity);
-  CHECK(s.margin(rule) <= 0.0);
+  CHECK(s.margin(rule) == Approx(1.0 - 2.15));
+  CHECK(s.margin(sf2) == Approx(1.0 - 2.15));  // the model's range: not derated
   co::DesignRule paper = rule;
   paper.criterion = co::DesignCriterion::kPaper;
   CHECK_FALSE(s.admissible(paper));  // not fully compressed: the elastomer's limit counts
-  s.peaks.fully_compressed = true;   // fully compressed: Park's phase 3, accepted by the paper's criterion
+  // Fully compressed (travel ratio 1.3) within the elastomer's limits: Park's phase 3, accepted by
+  // the paper's criterion, not by the default one.
+  s.peaks.fully_compressed = true;
+  s.validity = {false, "Hertz law: fully compressed", 1.3, 0.3};
   CHECK(s.admissible(paper));
-  CHECK_FALSE(s.admissible(rule));   // the default rule: the full-compression criterion judges it
-  CHECK(s.governing(rule).criterion != co::LimitingCriterion::kLawValidity);
+  CHECK(s.margin(paper) == Approx(0.5));  // the injuries govern: the travel is no limit there
+  CHECK(s.judged_validity(paper).within);
+  CHECK_FALSE(s.admissible(rule));   // the default rule: the travel and the law's validity both refuse it
+  CHECK(s.governing(rule).ratio == Approx(1.3));
+  s.validity.ratio_full_compression_allowed = 1.2;  // and beyond the elastomer's limits: refused by both
+  CHECK_FALSE(s.admissible(paper));
+  CHECK_FALSE(s.judged_validity(paper).within);
+  CHECK(s.governing(paper).criterion == co::LimitingCriterion::kLawValidity);
   CHECK(co::ToString(co::LimitingCriterion::kLawValidity) == "law-validity");
 }
 

@@ -97,6 +97,23 @@ TEST_CASE("law-validity: a design rule that counts always and is not derated", "
   CHECK_FALSE(out.design_rules_met());
   CHECK_FALSE(out.safe());
   CHECK(out.governing_name() == covopt::kLawValidityRule);
+  // How far along its limits: the validity ratio is the value against 1, not derated, so at SF 2
+  // a validity ratio of 0.8 governs over a laceration ratio of 0.3 (derated: 0.6) and leaves a
+  // margin of 0.2; the same ratio as an injury's would be 1.6, unsafe.
+  covopt::Verdict along;
+  along.safety_factor = 2.0;
+  along.Add("laceration", covopt::CriterionPart::kInjury, "Pa", 0.3e6, 1e6, "Park et al. 2011");
+  const covopt::Criterion& c = covopt::AddLawValidity(along, true, 0.8);
+  CHECK(c.value == 0.8);
+  CHECK(c.limit == 1.0);
+  CHECK(c.derated_limit == 1.0);
+  CHECK(c.ratio == Approx(0.4));
+  CHECK(along.safe());
+  CHECK(along.governing_name() == covopt::kLawValidityRule);
+  CHECK(along.margin() == Approx(0.2));
+  covopt::AddLawValidity(along, false, 1.25);  // out of it: fails, margin -0.25
+  CHECK_FALSE(along.safe());
+  CHECK(along.margin() == Approx(-0.25));
 }
 
 TEST_CASE("judging a foam head without the travel rule: injury limits, the used-up speed reported",

@@ -54,8 +54,10 @@ Ratios Judge(const Scene& scene) {
   return out;
 }
 
-std::vector<CandidateMaterial> Elastomers() {
-  std::vector<CandidateMaterial> m = {{"soft", 3.4e6, 0.49}, {"stiff", 5.9e6, 0.49}};
+/// Two compressible Hertz coverings (ν 0.3: no solid elastomer's strain limit, so the law's
+/// validity is the covering not fully compressed, which Judge checks).
+std::vector<CandidateMaterial> HertzCoverings() {
+  std::vector<CandidateMaterial> m = {{"soft", 3.4e6, 0.3}, {"stiff", 5.9e6, 0.3}};
   for (CandidateMaterial& c : m) c.crush_behaviour = covopt::materials::CrushBehaviour::kDoesNotCrush;
   return m;
 }
@@ -132,8 +134,8 @@ TEST_CASE("a robust design with a braking robot holds for every scene of the box
   options.design.thickness_resolution_m = 1e-5;
   const UncertaintyBox braked_box = UncertaintyBox::FromScene(Braking(100.0, 0.002), kHeads);
   const UncertaintyBox free_box = UncertaintyBox::FromScene(Braking(0.0, 0.0), kHeads);
-  const RobustThinnestCovering braked = FindRobustThinnestCovering(braked_box, Elastomers(), options);
-  const RobustThinnestCovering free = FindRobustThinnestCovering(free_box, Elastomers(), options);
+  const RobustThinnestCovering braked = FindRobustThinnestCovering(braked_box, HertzCoverings(), options);
+  const RobustThinnestCovering free = FindRobustThinnestCovering(free_box, HertzCoverings(), options);
   REQUIRE(braked.recommendation);
   REQUIRE(free.recommendation);
   CHECK(braked.time_path.runs > 0);
@@ -181,16 +183,16 @@ TEST_CASE("a brake that starts after the peak, or none, gives the unbraked robus
   options.design.thickness_scan_points = 60;
   options.design.thickness_resolution_m = 1e-5;
   const RobustThinnestCovering free =
-      FindRobustThinnestCovering(UncertaintyBox::FromScene(Braking(0.0, 0.0), kHeads), Elastomers(), options);
+      FindRobustThinnestCovering(UncertaintyBox::FromScene(Braking(0.0, 0.0), kHeads), HertzCoverings(), options);
   // A reaction delay far beyond any contact: every impact is the exact path's (brake after the
   // peak), and the answer is the unbraked one exactly, whatever the search order.
   const UncertaintyBox late = UncertaintyBox::FromScene(Braking(100.0, 1.0), kHeads);
-  const RobustThinnestCovering delayed = FindRobustThinnestCovering(late, Elastomers(), options);
+  const RobustThinnestCovering delayed = FindRobustThinnestCovering(late, HertzCoverings(), options);
   CHECK(delayed.time_path.runs == 0);
   CHECK(delayed.time_path.brake_after_peak > 0);
   // A vanishing deceleration: the time path runs, and the answer tends to the unbraked one.
   const RobustThinnestCovering weak =
-      FindRobustThinnestCovering(UncertaintyBox::FromScene(Braking(1e-6, 0.0), kHeads), Elastomers(), options);
+      FindRobustThinnestCovering(UncertaintyBox::FromScene(Braking(1e-6, 0.0), kHeads), HertzCoverings(), options);
   REQUIRE(free.candidates.size() == delayed.candidates.size());
   for (std::size_t i = 0; i < free.candidates.size(); ++i) {
     const CandidateOutcome& f = free.candidates[i].outcome;
@@ -244,7 +246,7 @@ TEST_CASE("a failed time-path run in a robust search is reported and never read 
   design.continuous = false;
   design.design.thickness_scan_points = 20;
   design.design.oracle.time_path.max_steps = 10;
-  const RobustThinnestCovering robust = FindRobustThinnestCovering(box, Elastomers(), design);
+  const RobustThinnestCovering robust = FindRobustThinnestCovering(box, HertzCoverings(), design);
   CHECK_FALSE(robust.recommendation);
   CHECK(robust.time_path.failed > 0);
   for (const RobustCandidate& c : robust.candidates) CHECK_FALSE(c.outcome.safe);

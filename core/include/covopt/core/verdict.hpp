@@ -100,10 +100,14 @@ struct Verdict {
 /// core/impact_result.hpp): a result out of its law's validity is never SAFE.
 inline constexpr std::string_view kLawValidityRule = "law-validity";
 
-/// Appends "law-validity" to `verdict`: a design rule that always counts, unit "1", value 0
-/// within the law's validity and 1 out of it, against a limit of 1 (ratio 0 or 1); out of it the
-/// criterion fails whatever the safety factor (the validity's note says why, with its numbers).
-/// The validity limit is the model's, not the standard's: the safety factor does not derate it.
+/// Appends "law-validity" to `verdict`: a design rule that always counts, unit "1", value how far
+/// the covering went along its law's validity limits (CoveringValidity::ratio, 1 at the edge)
+/// against a limit of 1. The validity limit is the model's, not the standard's: the safety factor
+/// does not derate it, so its derated limit is 1 and its ratio value / (SF × limit) (SF × ratio =
+/// the validity ratio, comparable with the derated criteria). Out of the validity (`within`
+/// false) the criterion fails whatever the safety factor (the validity's note says why).
+Criterion& AddLawValidity(Verdict& verdict, bool within, double validity_ratio);
+/// AddLawValidity(verdict, within, within ? 0 : 1): a yes/no where no ratio is known.
 Criterion& AddLawValidity(Verdict& verdict, bool within);
 
 /// A share as a percentage with one decimal, as every margin is printed: "58.8 %" for 0.588,

@@ -63,12 +63,14 @@ struct DesignMap {
   std::vector<DesignScore> scores;
   /// The criteria that count under the rule at these points, in the order laceration,
   /// contusion, fracture (docs/model.md §7.1), full compression (criterion no-full-compression), crush (a material of known
-  /// strength, crushing not allowed): one limit contour each, at ratio 1 / safety factor.
+  /// strength, crushing not allowed), the law's validity (a solid elastomer, ν >= 0.45: its Hertz
+  /// strain and contact-radius limits): one limit contour each, at ratio 1 / safety factor.
   std::vector<LimitingCriterion> criteria;
   /// The design the request chose (the recommendation, else the continuous optimum), scored
   /// here by the same oracle; empty when the bare robot is safe (nothing is chosen).
   std::optional<DesignMapMark> chosen;
-  /// Its score by the map's oracle (equal to the optimiser's for that design).
+  /// Its score by the map's oracle (equal to the optimiser's: a material under the design's
+  /// covering law, so a curve material under the foam law, which the grid of (E_c, b_c) does not show).
   std::optional<DesignScore> chosen_score;
   /// Every catalog candidate at its recommended thickness (or the thickness it was scored at).
   std::vector<DesignMapMark> candidates;
@@ -83,9 +85,11 @@ struct DesignMap {
   }
 };
 
-/// The ratio of one criterion in a score [-] (unscaled: the limit is 1 / safety factor):
-/// laceration_ratio, contusion_ratio, compression_ratio or crush_ratio; 0 for kNone.
-double CriterionRatio(const DesignScore& score, LimitingCriterion criterion) noexcept;
+/// The ratio of one criterion in a score under `rule` [-] (unscaled: the limit is 1 / safety
+/// factor): laceration_ratio, contusion_ratio, compression_ratio, crush_ratio, fracture_ratio;
+/// for kLawValidity, which the safety factor does not derate, DesignScore::validity_ratio(rule) /
+/// SF (as DesignScore::governing); 0 for kNone.
+double CriterionRatio(const DesignScore& score, LimitingCriterion criterion, const DesignRule& rule) noexcept;
 
 /// The design map of `request` and its answer `result`. The grid spans, around the chosen
 /// design (b*, E*): thickness from the search's minimum to min(max thickness, 2.5 b*),

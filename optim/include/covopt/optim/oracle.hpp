@@ -119,6 +119,12 @@ struct GoverningRatio {
   double ratio = 0.0;  ///< unscaled (the rule's SF multiplies it) [-]
 };
 
+/// The head of a validity note where the paper's criterion accepts a fully compressed Hertz
+/// covering (JudgedValidity, DesignScore::judged_validity); the covering's own note follows.
+inline constexpr std::string_view kFullCompressionAcceptedNote =
+    "Hertz law: the covering is fully compressed (phase 3, the robot on the bone through it), accepted under the "
+    "paper's criterion (allow full compression); ";
+
 /// The injury ratios of one design.
 struct DesignScore {
   CoveringDesign design;  ///< thickness 0: the bare robot
@@ -163,16 +169,28 @@ struct DesignScore {
   double required_strength_Pa(double safety_factor) const noexcept {
     return safety_factor * peaks.max_compressive_stress_Pa;
   }
-  /// The covering is out of its law's validity for a reason the travel rule does not already
-  /// judge: not within, unless it is a fully compressed Hertz layer (the full-compression
-  /// criterion counts that under the default rule; the paper's criterion accepts it, Park's
-  /// phase 3).
-  bool validity_fails(const DesignRule& /*rule*/) const noexcept {
-    if (validity.within || bare()) return false;
-    return !(peaks.covering_law == CoveringLaw::kHertz && peaks.fully_compressed);
+  /// Whether the paper's criterion accepts this covering's full compression under `rule`: a
+  /// Hertz covering (its travel is then no validity limit, its other limits still are).
+  bool full_compression_accepted(const DesignRule& rule) const noexcept {
+    return rule.criterion == DesignCriterion::kPaper && peaks.covering_law == CoveringLaw::kHertz;
   }
-  /// The largest ratio that counts under `rule`, and which criterion it is; kLawValidity with a
-  /// ratio of at least 1/SF (no margin) where validity_fails(rule).
+  /// How far along its law's validity limits the covering went under `rule` [-] (0 bare):
+  /// CoveringValidity::ratio, or ratio_full_compression_allowed where the paper's criterion
+  /// accepts full compression (as optim::JudgedValidity).
+  double validity_ratio(const DesignRule& rule) const noexcept {
+    if (bare()) return 0.0;
+    return full_compression_accepted(rule) ? validity.ratio_full_compression_allowed : validity.ratio;
+  }
+  /// The covering is out of its law's validity under `rule`: not within, unless the paper's
+  /// criterion accepts a Hertz covering's full compression and its other limits hold.
+  bool validity_fails(const DesignRule& rule) const noexcept {
+    if (bare()) return false;
+    return full_compression_accepted(rule) ? validity.ratio_full_compression_allowed > 1.0 : !validity.within;
+  }
+  /// The validity as judged under `rule` (within, ratio and note; as optim::JudgedValidity).
+  CoveringValidity judged_validity(const DesignRule& rule) const;
+  /// The largest ratio that counts under `rule`, and which criterion it is; the law's validity
+  /// counts as validity_ratio(rule) / SF (not derated: SF × its ratio is the validity ratio).
   GoverningRatio governing(const DesignRule& rule) const noexcept;
   /// 1 − SF × the governing ratio: >= 0 when every counted criterion holds, the fraction of
   /// the (derated) limit left over on the one that binds.
