@@ -68,7 +68,7 @@ struct SimulateOptions {
   /// divided by it. Default: the scene file's limits.safety_factor, else 1.
   std::optional<std::string> safety_factor;
   /// --keep-travel (simulate, speed-limit, robot, audit, sweep): the covering's travel rule
-  /// ("full-compression" / "within-curve") as a limit. Default: reported only (decision D2).
+  /// ("full-compression" / "within-curve") as a limit. Default: reported only.
   bool keep_travel = false;
   /// --method auto|exact|cvode|<integrator> (cvode-adams, arkode-erk54, ...: see
   /// TimeIntegrationMethods()). Default auto: exact where the scene has an energy integral

@@ -38,7 +38,7 @@ std::string WorstText(const MaterialRangeCheck& check) {
          std::string(v.governing_name()) + ", margin " + FormatPercent(v.margin());
 }
 
-/// One curve candidate judged over its range (decision D5): at the thinnest thickness that
+/// One curve candidate judged over its range: at the thinnest thickness that
 /// holds at both ends of it (problem a; its designed thickness need not be that one) or at the
 /// given thickness (problem b), with its row's score at the range's worst end there; refused
 /// when none holds. Its note says what changed.

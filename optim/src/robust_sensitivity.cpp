@@ -115,20 +115,30 @@ std::string_view ToString(DerivativeMethod method) noexcept {
   return "unknown";
 }
 
-ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions& options) {
+namespace {
+
+/// The options' and the scene's checks of ComputeElasticities.
+/// @throws std::invalid_argument naming the field.
+void RequireElasticityInputs(const Scene& scene, const ElasticityOptions& options) {
   Require(std::isfinite(options.log_step) && options.log_step >= 1e-6 && options.log_step <= 0.1,
           "log step must be in [1e-6, 0.1] (got " + internal::Number(options.log_step) + ")");
   Require(options.tolerance > 0.0 && options.tolerance < 1.0,
           "tolerance must be in (0, 1) (got " + internal::Number(options.tolerance) + ")");
   internal::ValidateCriterion({DesignCriterion::kNoFullCompression, 1.0, options.limits});
-  const ImpactModel model = ImpactModel::FromScene(scene);
   if (scene.is_damped() || scene.head.has_neck()) {
     throw std::invalid_argument(
         "elasticities cover the two-mass impact, conservative (the exact path) or with a braking robot (the time "
         "path): the scene has contact damping or a neck (docs/model.md §10)");
   }
+  if (scene.robot_brakes()) ValidateTimeIntegrationOptions(options.time_path, "time_path.");
+}
+
+}  // namespace
+
+ElasticityTable ComputeElasticities(const Scene& scene, const ElasticityOptions& options) {
+  RequireElasticityInputs(scene, options);
+  const ImpactModel model = ImpactModel::FromScene(scene);
   const bool brakes = scene.robot_brakes();
-  if (brakes) ValidateTimeIntegrationOptions(options.time_path, "time_path.");
   std::string failure;
   const std::optional<ImpactPeaks> found = PeaksOf(model, options.time_path, &failure);
   if (!found) throw std::runtime_error("elasticities at the scene: " + failure);

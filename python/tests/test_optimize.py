@@ -54,7 +54,8 @@ def test_the_criterion_names_every_part_and_each_design_its_governing_ratio():
     for c in answer.candidates:
         # The covering's travel rule is named for its law: within-curve for a foam layer.
         travel = "within-curve" if c.covering_law == "foam" else "full-compression"
-        ratios = {"laceration": c.laceration_ratio, "contusion": c.contusion_ratio, travel: c.compression_ratio}
+        ratios = {"laceration": c.laceration_ratio, "contusion": c.contusion_ratio, travel: c.compression_ratio,
+                  "law-validity": c.validity["ratio"]}  # how far along its law's validity limits
         if c.crush_ratio is not None:
             ratios["crush"] = c.crush_ratio
         # The governing ratio is the largest that counts; the margin is 1 minus it (SF 1).

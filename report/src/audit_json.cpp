@@ -72,7 +72,7 @@ ordered_json CoveringJson(const std::string& link, const audit::AuditCovering& c
   j["modulus_Pa"] = internal::Number(covering.covering.youngs_modulus_Pa);
   j["poisson_ratio"] = internal::Number(covering.covering.poisson_ratio);
   j["thickness_m"] = internal::Number(covering.covering.thickness_m);
-  // The law that describes it (decision D1: a measured curve takes the foam law unless Hertz is
+  // The law that describes it (a measured curve takes the foam law unless Hertz is
   // asked for); "" bare. Each cell's limit counts the law's validity ("law-validity").
   const CoveringSpec& spec = covering.covering;
   j["covering_law"] = !(spec.thickness_m > 0.0) ? "" : spec.compressive_curve && spec.law != CoveringLaw::kHertz ? "foam" : "hertz";

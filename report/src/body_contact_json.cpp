@@ -69,7 +69,7 @@ ordered_json JudgementObject(const optim::BodyRegionJudgement& v, double safety_
   j["fully_compressed"] = c.fully_compressed;
   // The covering's law (null bare) and whether the peak is within what it describes.
   j["covering_law"] = c.covering_law ? ordered_json(ToString(*c.covering_law)) : ordered_json(nullptr);
-  j["validity"] = {{"within", c.validity.within}, {"note", c.validity.note}};
+  j["validity"] = {{"within", c.validity.within}, {"ratio", c.validity.ratio}, {"note", c.validity.note}};
   j["force"] = {{"value_N", Number(c.peak_force_N)},
                 {"limit_N", Number(v.limits.force_N)},
                 {"ratio", Number(v.force_ratio)}};

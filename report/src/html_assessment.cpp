@@ -227,7 +227,7 @@ void AssessHeadSimulation(Assessment& a, const Json& j, const std::string& prefi
     a.rows.push_back(HeadVerdictRow(prefix + "crush", "material strength (docs/model.md §12)", *crush, {"Pa", "MPa", 1e-6}));
   }
   if (const Json* validity = Find(j, "validity"); validity && validity->is_object() && !StringAt(j, "covering_law").empty()) {
-    VerdictRow law;  // the covering law's validity: counted always, a yes/no (decision D3)
+    VerdictRow law;  // the covering law's validity: counted always, a yes/no
     law.subject = prefix + "covering law (" + StringAt(j, "covering_law") + ")";
     law.criterion = "within the law's validity (docs/model.md)";
     law.value = TrueAt(*validity, "within") ? "within" : "out of its validity";
@@ -380,7 +380,7 @@ void AssessOptimize(Assessment& a, const Json& j) {
     if (limits) AddHeadCriteria(a, *limits);
     a.rows_note = "The recommended covering, " + ObjectLabel(*rec) + " at " +
                   Reading(rec->value("thickness_m", 0.0), {"m", "mm", 1e3}) + ".";
-    if (const std::string law = StringAt(*rec, "covering_law"); !law.empty()) {  // D6: its law and validity
+    if (const std::string law = StringAt(*rec, "covering_law"); !law.empty()) {  // its law and validity
       const Json* validity = Find(*rec, "validity");
       a.rows_note += " Covering law " + law +
                      (validity && validity->is_object() ? "; validity: " + StringAt(*validity, "note") : "") + ".";

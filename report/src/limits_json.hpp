@@ -48,11 +48,11 @@ inline nlohmann::ordered_json RatiosJson(const optim::DesignScore& s, const opti
           {"governing_ratio", g.ratio}};
 }
 
-/// A covered design's law and validity (D6): "covering_law" ("foam" | "hertz", "" bare) and
-/// "validity" {"within", "note"}.
+/// A covered design's law and validity: "covering_law" ("foam" | "hertz", "" bare) and
+/// "validity" {"within", "ratio" (how far along its validity limits), "note"}.
 inline nlohmann::ordered_json LawAndValidityJson(const optim::DesignScore& s) {
   return {{"covering_law", s.bare() ? std::string() : std::string(ToString(s.peaks.covering_law))},
-          {"validity", {{"within", s.validity.within}, {"note", s.validity.note}}}};
+          {"validity", {{"within", s.validity.within}, {"ratio", s.validity.ratio}, {"note", s.validity.note}}}};
 }
 
 /// Adds "criterion", "safety_factor" and "limits" {laceration_Pa, contusion_J_per_m2 and their

@@ -69,7 +69,7 @@ ordered_json RowJson(SpeedLimitQuantity quantity, const SpeedLimitRow& row) {
   j["fracture_ratio"] = internal::Number(a.ratios->fracture_ratio);
   j["compression_ratio"] = internal::Number(a.ratios->compression_ratio);
   j["status"] = optim::ToString(a.status);
-  // The covering's law and whether it is within its validity at the limit (decision D6; the
+  // The covering's law and whether it is within its validity at the limit (the
   // note is the JSON's "validity" object); "" and within bare.
   j["covering_law"] = a.answer->covering_law;
   j["within_law"] = a.answer->validity.within ? "true" : "false";

@@ -47,7 +47,7 @@ void PrintSpeedLimitRows(std::ostream& out, optim::SpeedLimitQuantity quantity, 
     fmt::print(out, "  {:>12}  {:>16}  {:<16}  {:>10.3f}  {:>9.3f}  {:>11}\n",
                by_speed ? MassText(row.robot_mass_kg) : fmt::format("{:g} m/s", row.speed_m_per_s), limit,
                optim::ToString(by), r.laceration_ratio, r.contusion_ratio, compression);
-    // The covering's law and its validity at the limit, and where it is used up (decisions D2, D6).
+    // The covering's law and its validity at the limit, and where it is used up.
     const optim::LimitAnswer& answer = by_speed ? static_cast<const optim::LimitAnswer&>(row.speed_limit)
                                                 : static_cast<const optim::LimitAnswer&>(row.mass_limit);
     if (answer.covering_law.empty()) continue;
@@ -112,7 +112,7 @@ void PrintBodyRegionSpeedLimitRows(std::ostream& out, std::span<const BodyRegion
                row.has_covering ? row.covered_limited_by : std::string("-"),
                row.gain ? fmt::format("{:.2f}×", *row.gain) : std::string("-"));
     // The covering's law where it says something the row does not: out of its validity, or
-    // used up below the limit (decisions D2, D6).
+    // used up below the limit.
     const bool used_up = row.covering_used_up_m_per_s && row.covered_max_speed_m_per_s &&
                          *row.covering_used_up_m_per_s < *row.covered_max_speed_m_per_s;
     if (row.has_covering && (used_up || !row.within_law)) {

@@ -44,7 +44,7 @@ ordered_json SampleJson(const optim::SampleVerdict& v) {
   j["fracture_ratio"] = ratio(v.fracture_ratio);
   j["compression_ratio"] = ratio(v.compression_ratio);
   j["safe"] = failed ? ordered_json(nullptr) : ordered_json(v.safe);
-  j["within_law"] = v.validity.within;  // the covering's law at this impact (decision D6)
+  j["within_law"] = v.validity.within;  // the covering's law at this impact
   return j;
 }
 
@@ -83,7 +83,7 @@ std::string TrajectoryCheckJson(const optim::TrajectoryCheck& check, const robot
   } else {
     j["worst_sample"] = nullptr;
   }
-  // The covering's law and its validity over the samples (decision D6).
+  // The covering's law and its validity over the samples.
   j["covering_law"] = check.covering_law;
   j["validity"] = {{"within", check.validity.within}, {"note", check.validity.note}};
   j["sample_count"] = check.samples.size();

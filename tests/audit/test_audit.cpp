@@ -416,7 +416,7 @@ TEST_CASE("the per-link design is safe at full speed when audited again, curve m
   ca::AuditOptions options;
   options.design.materials = {Material("PU foam PORON 4701-30 320"), Material("neoprene sponge D1056 2C2"),
                               Material("polystyrene foam 27.6")};
-  // By default the audit judges injury (decision D2): a used-up foam is a modelled rigid stop, and
+  // By default the audit judges injury: a used-up foam is a modelled rigid stop, and
   // the thinnest stock of PORON (0.5 mm) does on every link at the FR3's speeds, no thicker than
   // with the travel rule. With the travel rule as a limit (--keep-travel) the design must keep
   // each foam within its curve: thicker, and one step thinner fails.

@@ -1,4 +1,4 @@
-// The judging commands and the covering's law (issue 35, decisions D1-D3, D6), run in-process:
+// The judging commands and the covering's law (issue 35), run in-process:
 // under `auto` a catalog material with a measured curve takes the foam law (the same answer as
 // --covering-law foam, to the bit); the travel rule limits only with --keep-travel, which gives
 // the library's answer with the travel kept; a foam used up is reported at its own speed, the

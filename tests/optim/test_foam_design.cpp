@@ -1,5 +1,5 @@
 // The design commands take the foam law for catalog materials with a measured curve (issue 35,
-// decisions D1, D4): the design's score is an independent exact-path impact of the material's
+// issue 35): the design's score is an independent exact-path impact of the material's
 // covering under the foam law; a thicker layer is never less safe; the Hertz law, when asked
 // for, is the curve-less design of before exactly; foam without a curve is refused naming the
 // material; a design out of its law's validity is not admissible; robust design and the

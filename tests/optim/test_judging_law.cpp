@@ -1,4 +1,4 @@
-// How the judging commands count the covering's law (decisions D2, D3 of issue 35): the travel
+// How the judging commands count the covering's law (issue 35): the travel
 // rule ("full-compression" / "within-curve") is a limit only with keep_travel; the law's validity
 // ("law-validity") counts always, so a fully compressed Hertz covering limits the speed at its
 // full compression unless the paper's criterion accepts it; a foam used up is within its law and

@@ -58,7 +58,7 @@ TEST_CASE("The head's verdict agrees across simulate, speed-limit, optimize's sc
         for (const double speed : {0.3, 1.0, 2.3}) {
           for (const double sf : {1.0, 1.5}) {
            // keep: the travel rule as a limit (optimize's design rule, --keep-travel); without it
-           // the judging commands' default (decision D2): injury, the law's validity and crushing.
+           // the judging commands' default: injury, the law's validity and crushing.
            for (const bool keep : {true, false}) {
             Scene scene;
             scene.robot.mass_kg = mass;

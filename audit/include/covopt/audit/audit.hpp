@@ -99,7 +99,7 @@ struct AuditSetup {
   std::optional<double> flat_face_radius_m;
   /// Safety factor, criterion, crushing, unknown strengths.
   optim::DesignRule rule;
-  /// The covering's travel rule as a limit (--keep-travel, keep_travel=True; decision D2):
+  /// The covering's travel rule as a limit (--keep-travel, keep_travel=True):
   /// false (default) judges injury and the law's validity, the travel reported only; true
   /// counts it unless the rule's criterion is the paper's (full compression allowed).
   bool keep_travel = false;

@@ -159,7 +159,7 @@ struct NearestChange {
   std::string note;
 };
 
-/// What would make a material work when none does (decision D5).
+/// What would make a material work when none does.
 struct NearestChanges {
   /// The best candidate: the one whose worst governing ratio over its range at the thickness
   /// (`at_thickness_m`) is least (a material refused for an unknown strength is not a candidate).
