@@ -180,6 +180,7 @@ std::vector<std::string> DesignRule::Parts() const {
                                     std::string(ToString(LimitingCriterion::kFracture))};
   if (compression_counts()) parts.emplace_back(ToString(LimitingCriterion::kFullCompression));
   if (!crushing_allowed) parts.emplace_back(ToString(LimitingCriterion::kCrush));
+  parts.emplace_back(ToString(LimitingCriterion::kLawValidity));  // counted always
   return parts;
 }
 
@@ -190,6 +191,7 @@ std::string DesignRule::Describe() const {
   if (compression_counts()) text += ", the covering not fully compressed";
   text += crushing_allowed ? "; crushing allowed (a sacrificial liner)" : ", the covering not crushed";
   if (!crushing_allowed && unknown_strength_allowed) text += " where its strength is known";
+  text += ", the covering within its law's validity (\"law-validity\", without the safety factor)";
   text += "; safety factor " + FormatSignificant(safety_factor) + " on each";
   if (compression_counts()) {
     text += " (design rule \"full-compression\" under the Hertz law; \"within-curve\" under the foam law: the layer "

@@ -49,13 +49,14 @@ def test_optimize_returns_the_cli_json_object(cli_json, kwargs, flags):
 
 def test_the_criterion_names_every_part_and_each_design_its_governing_ratio():
     answer = covopt.optimize()
-    assert answer.criterion.parts == ["laceration", "contusion", "fracture", "full-compression", "crush"]
+    assert answer.criterion.parts == ["laceration", "contusion", "fracture", "full-compression", "crush",
+                                      "law-validity"]
     assert "A.3.2" in answer.scope[1]
     for c in answer.candidates:
         # The covering's travel rule is named for its law: within-curve for a foam layer.
         travel = "within-curve" if c.covering_law == "foam" else "full-compression"
         ratios = {"laceration": c.laceration_ratio, "contusion": c.contusion_ratio, travel: c.compression_ratio,
-                  "law-validity": c.validity["ratio"]}  # how far along its law's validity limits
+                  "law-validity": c.validity.ratio}  # how far along its law's validity limits
         if c.crush_ratio is not None:
             ratios["crush"] = c.crush_ratio
         # The governing ratio is the largest that counts; the margin is 1 minus it (SF 1).
@@ -121,7 +122,7 @@ def test_a_curve_material_is_designed_with_the_foam_law_and_each_row_names_its_l
     laws = {c["material"]: c["covering_law"] for c in foam["candidates"]}
     assert laws == {"vinyl-nitrile foam VN600": "foam", "elastomer Shore A40": "hertz"}
     for c in foam["candidates"]:
-        assert set(c["validity"]) == {"within", "note"}
+        assert set(c["validity"]) == {"within", "ratio", "note"}
         assert c["has_compressive_curve"] == (c["covering_law"] == "foam")
     assert foam["continuous_optimum"]["covering_law"] == "hertz"
     hertz = call(covopt.optimize, materials="vinyl-nitrile foam VN600", covering_law="hertz")

@@ -158,4 +158,4 @@ def test_robust_optimize_designs_curve_materials_with_the_foam_law_as_the_cli(cl
     theirs = cli_json("optimize", "--json", "--head-mass", "3.7kg..5.8kg", "--covering-law", "foam")
     assert without_timing(ours.to_dict()["candidates"]) == without_timing(theirs["candidates"])
     assert theirs["candidates"] and all(c["covering_law"] == "foam" for c in theirs["candidates"])
-    assert all(set(c["validity"]) == {"within", "note"} for c in theirs["candidates"])
+    assert all(set(c["validity"]) == {"within", "ratio", "note"} for c in theirs["candidates"])

@@ -52,7 +52,7 @@ TEST_CASE("speed-limit: auto takes the foam law for a material with a curve, as 
   REQUIRE(row["covering_used_up_m_per_s"].is_number());
   CHECK(row["covering_used_up_m_per_s"].get<double>() < row["max_safe_speed_m_per_s"].get<double>());
   CHECK(automatic["criterion"]["parts"] ==
-        json::array({"laceration", "contusion", "fracture", "crush"}));  // the travel rule reported, not a limit
+        json::array({"laceration", "contusion", "fracture", "crush", "law-validity"}));  // the travel rule reported, not a limit
   const CliRun text = Run({"speed-limit", "--material", kVn600, "--covering-thickness", "10mm", "--robot-mass", "10kg"});
   REQUIRE(text.exit_code == 0);
   CHECK_THAT(text.out, Catch::Contains("covering law foam, within its validity") &&
@@ -65,7 +65,7 @@ TEST_CASE("speed-limit: auto takes the foam law for a material with a curve, as 
   CHECK(kept["rows"][0]["limited_by"] == "full-compression");
   CHECK(kept["rows"][0]["max_safe_speed_m_per_s"].get<double>() <=
         row["covering_used_up_m_per_s"].get<double>() * (1.0 + 1e-12));
-  CHECK(kept["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "full-compression", "crush"}));
+  CHECK(kept["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "full-compression", "crush", "law-validity"}));
 }
 
 TEST_CASE("speed-limit: a fully compressed Hertz covering is limited by law-validity and --keep-travel keeps today's limit",

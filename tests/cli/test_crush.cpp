@@ -55,7 +55,7 @@ TEST_CASE("optimize's default recommendation does not crush, and every candidate
     CHECK(rec["crush_ratio"].is_null());
   }
   CHECK(rec["margin"].get<double>() == Approx(1.0 - rec["governing_ratio"].get<double>()).margin(1e-15));
-  CHECK(j["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "full-compression", "crush"}));
+  CHECK(j["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "full-compression", "crush", "law-validity"}));
   REQUIRE(j["scope"].size() == 2);
   CHECK_THAT(j["scope"][1].get<std::string>(), Catch::Contains("A.3.2") && Catch::Contains("130 N"));
   // The old answer, XPS Foamular 250, crushes at every thickness: 25 psi against MPa stresses.

@@ -160,7 +160,7 @@ json OptimizeJson(std::vector<std::string> args) {
 
 TEST_CASE("optimize never recommends a covering that bottoms out unless asked to (2 kg robot)", "[optimize]") {
   const json strict = OptimizeJson({"--robot-mass", "2kg"});
-  CHECK(strict["criterion"]["name"] == "laceration+contusion+fracture+full-compression+crush");
+  CHECK(strict["criterion"]["name"] == "laceration+contusion+fracture+full-compression+crush+law-validity");
   CHECK(strict["bare_robot"]["safe"] == false);
   REQUIRE(strict["recommendation"].is_object());
   CHECK(strict["recommendation"]["fully_compressed"] == false);
@@ -171,7 +171,7 @@ TEST_CASE("optimize never recommends a covering that bottoms out unless asked to
   }
   // The paper's criterion takes the 0.5 mm sliver of sponge rubber that is fully compressed.
   const json paper = OptimizeJson({"--robot-mass", "2kg", "--allow-full-compression"});
-  CHECK(paper["criterion"]["name"] == "laceration+contusion+fracture+crush");
+  CHECK(paper["criterion"]["name"] == "laceration+contusion+fracture+crush+law-validity");
   CHECK(paper["recommendation"]["thickness_m"].get<double>() <= 0.5e-3);
   CHECK(paper["recommendation"]["fully_compressed"] == true);
   CHECK(paper["continuous_optimum"]["fully_compressed"] == true);
@@ -334,7 +334,9 @@ TEST_CASE("optimize --plot draws the design map with the recommendation, and is 
   CHECK(text.find("<svg") != std::string::npos);
   CHECK(text.find("covering thickness [mm]") != std::string::npos);
   CHECK(text.find("chosen: " + material) != std::string::npos);
-  for (const char* limit : {"laceration limit (ratio 1)", "contusion limit (ratio 1)", "full-compression limit (ratio 1)"}) {
+  // The grid is around the chosen foam's modulus (0.17 MPa): laceration stays far below its limit
+  // there (ratio < 0.2), so its contour is not on this map; contusion and the travel are.
+  for (const char* limit : {"contusion limit (ratio 1)", "full-compression limit (ratio 1)"}) {
     CHECK(text.find(limit) != std::string::npos);
   }
 }

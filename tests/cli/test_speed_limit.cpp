@@ -74,7 +74,7 @@ TEST_CASE("speed-limit --json: one row per mass of a range, each the library's a
   const json j = JsonOf(Run({"speed-limit", "--robot-mass", "0.5kg..50kg:log:5,fixed", "--covering-thickness",
                              "20mm", "--covering-modulus", "16MPa", "--keep-travel", "--json"}));
   CHECK(j["solve_for"] == "speed");
-  CHECK(j["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "full-compression", "crush"}));
+  CHECK(j["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "full-compression", "crush", "law-validity"}));
   CHECK(j["search_limit"]["max_speed_m_per_s"] == 100.0);
   CHECK(j["scene"]["robot"].count("speed_m_per_s") == 0);
   CHECK(j["scene"]["robot"].count("mass_kg") == 0);  // the rows vary it
@@ -216,7 +216,7 @@ TEST_CASE("speed-limit reads the scene file, limits and the criterion as the oth
   const json paper = JsonOf(Run({"speed-limit", "--covering-thickness", "10mm", "--covering-modulus", "2MPa",
                                  "--allow-full-compression", "--json"}));
   CHECK(strict["rows"][0]["limited_by"] == "law-validity");  // a Hertz covering's full compression
-  CHECK(paper["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "crush"}));
+  CHECK(paper["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "crush", "law-validity"}));
   CHECK(paper["rows"][0]["max_safe_speed_m_per_s"].get<double>() >
         strict["rows"][0]["max_safe_speed_m_per_s"].get<double>());
   const json derated = JsonOf(Run({"speed-limit", "--safety-factor", "2", "--json"}));

@@ -104,7 +104,7 @@ TEST_CASE("robot --trajectory --json is the library's check of the same trajecto
   REQUIRE(check.worst_sample.has_value());
   CHECK(j["worst_sample"]["index"] == *check.worst_sample);
   CHECK(j["status"] == "safe");
-  CHECK(j["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "full-compression", "crush"}));
+  CHECK(j["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "full-compression", "crush", "law-validity"}));
   CHECK(j["joint_names"].size() == 7);
   CHECK(j["joint_names"][0] == "fr3_joint1");
   CHECK(j["scene"]["robot"].count("mass_kg") == 0);
@@ -219,7 +219,7 @@ TEST_CASE("robot --trajectory: the covering, material, safety factor and criteri
   CHECK(derated["safe_speed_scale"].get<double>() < covered);
   CHECK(derated["warnings"].size() == 2);  // the safety factor's input warning, the assumed covering
   const json paper = JsonOf(Run(Fr3(kPick, {"--allow-full-compression", "--json"})));
-  CHECK(paper["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "crush"}));
+  CHECK(paper["criterion"]["parts"] == json::array({"laceration", "contusion", "fracture", "crush", "law-validity"}));
 
   const json material = JsonOf(Run(Fr3(kPick, {"--material", "XPS Foamular 250", "--json"})));
   CHECK(material["scene"]["covering"]["material"] == "XPS Foamular 250");

@@ -174,7 +174,7 @@ TEST_CASE("Unknown strength is refused unless allowed, then warned", "[design][c
   CHECK(allowed.scope[1].find("A.3.2") != std::string::npos);
   CHECK(allowed.scope[1].find("130 N") != std::string::npos);
   CHECK(allowed.rule.Parts() ==
-        std::vector<std::string>{"laceration", "contusion", "fracture", "full-compression", "crush"});
+        std::vector<std::string>{"laceration", "contusion", "fracture", "full-compression", "crush", "law-validity"});
 }
 
 TEST_CASE("A crushing material's candidate of bad strength is bad input", "[design][crush]") {

@@ -179,7 +179,7 @@ TEST_CASE("covering law foam refuses a material without a curve, naming it, and 
   CHECK(band.recovers.has_value());
 }
 
-TEST_CASE("a design out of its law's validity is never admissible; the paper's criterion accepts Hertz full "
+TEST_CASE("a design out of its law's validity is never admissible and the paper's criterion accepts Hertz full "
           "compression", "[design][validity]") {
   co::DesignScore s;
   s.design = {1e6, 0.01};

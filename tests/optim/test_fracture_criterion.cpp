@@ -55,7 +55,7 @@ TEST_CASE("fracture criterion: a score's fracture ratio governs and makes it ina
   score.fracture_ratio = 0.7;
   CHECK(score.admissible(rule));
   CHECK(ToString(LimitingCriterion::kFracture) == "fracture");
-  CHECK(rule.Parts() == std::vector<std::string>{"laceration", "contusion", "fracture", "full-compression", "crush"});
+  CHECK(rule.Parts() == std::vector<std::string>{"laceration", "contusion", "fracture", "full-compression", "crush", "law-validity"});
 }
 
 TEST_CASE("fracture criterion: the speed limit of a nose is set by its fracture force", "[fracture]") {
