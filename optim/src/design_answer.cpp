@@ -23,9 +23,10 @@ DesignScore ScoreAt(const Scene& scene, const RangedMaterial& m, const Candidate
   RangeImpact impact = RangeImpactAt(scene, m, thickness_m, scale, !rule.compression_counts());
   s.peaks = impact.peaks;
   s.validity = std::move(impact.validity);
-  s.laceration_ratio = s.peaks.max_tensile_stress_Pa / limits.laceration_tensile_stress_Pa;
-  s.contusion_ratio = s.peaks.max_energy_density_J_per_m2 / limits.contusion_energy_density_J_per_m2;
-  s.fracture_ratio = s.peaks.peak_force_N / FractureLimit(limits, scene.head.area);
+  const InjuryAssessment injury = Assess(s.peaks, limits, scene.head.area);  // as the oracle judges a score
+  s.laceration_ratio = injury.laceration.ratio;
+  s.contusion_ratio = injury.contusion.ratio;
+  s.fracture_ratio = injury.fracture.ratio;
   s.compression_ratio = s.peaks.covering_compression_ratio();
   CheckCrush(c, s);
   return s;
