@@ -58,7 +58,7 @@ void WriteReport(const std::string& file, report::ReportKind kind, const std::st
   try {
     std::vector<report::SvgChart> drawn;
     if (!charts.empty()) drawn = report::DrawSvgCharts(charts, SignalSafeScratch());
-    html = report::HtmlReport({kind, result_json, std::move(drawn)});
+    html = report::HtmlReport({kind, result_json, std::move(drawn), {}});
   } catch (const std::exception& e) {  // gnuplot missing or failed; a result HtmlReport refuses
     throw OutputError(fmt::format("--report '{}': no report written: {}", file, e.what()));
   }

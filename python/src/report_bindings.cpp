@@ -46,7 +46,7 @@ std::string HtmlReport(const std::string& kind, const std::string& result_json, 
         const std::vector<report::GnuplotChart> gnuplot = maker->make();
         drawn = report::DrawSvgCharts(gnuplot);
       }
-      return report::HtmlReport({k, result_json, std::move(drawn)});
+      return report::HtmlReport({k, result_json, std::move(drawn), {}});
     }
   }
   throw std::invalid_argument("html_report: no report of kind '" + kind + "'");

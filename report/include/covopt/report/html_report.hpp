@@ -55,6 +55,8 @@
 #include <string_view>
 #include <vector>
 
+#include "covopt/report/report_info.hpp"
+
 namespace covopt::report {
 
 /// The command a report is for.
@@ -79,6 +81,8 @@ struct ReportContent {
   std::string result_json;
   /// The charts, in the order they appear.
   std::vector<SvgChart> charts;
+  /// The sign-off fields, the margin threshold and the appendix (report_info.hpp).
+  ReportInfo info;
 };
 
 /// The report as one HTML document (UTF-8).
