@@ -15,6 +15,7 @@
 
 #include "covopt/core/body_contact.hpp"
 #include "covopt/optim/body_region_check.hpp"
+#include "covopt/optim/body_region_table.hpp"
 #include "covopt/optim/body_region_trajectory.hpp"
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/optim/target_speed_limits.hpp"
@@ -61,44 +62,10 @@ std::string BodyContactSimulationJson(const BodyContactScene& scene, const std::
                                       const std::optional<std::string>& head_json,
                                       std::span<const std::string> warnings);
 
-/// One row of the all-regions speed-limit table, whatever judged it (an ISO region's
-/// optim::BodyRegionSpeedLimitRow, or the head's pair of optim::SpeedLimit).
-struct BodyRegionTableRow {
-  std::string material;        ///< the covering's catalog material; "" if none
-  double robot_mass_kg = 0.0;  ///< [kg]; +inf: fixed
-  std::string region;          ///< "chest", or "head"
-  std::string area;            ///< "sternum"; "" for the head
-  std::string contact;         ///< "transient" or "clamped"
-  std::optional<double> force_limit_N;      ///< F_lim [N]; empty for the head
-  std::optional<double> pressure_limit_Pa;  ///< p_lim [Pa]; empty for the head
-  /// The max safe speed [m/s]; empty when no speed is safe. `bare_*` without the covering.
-  std::optional<double> bare_max_speed_m_per_s;
-  std::string bare_limited_by;  ///< "force", "pressure", ...; "laceration", ... for the head
-  std::string bare_status;      ///< optim::ToString(SpeedLimitStatus)
-  bool has_covering = false;
-  std::optional<double> covered_max_speed_m_per_s;
-  std::string covered_limited_by;  ///< "" without a covering
-  std::string covered_status;      ///< "" without a covering
-  std::optional<double> gain;      ///< covered / bare [-]
-  /// The covering's law ("foam", "hertz"; "" without a covering), its validity at the covered
-  /// limit, and the speed [m/s] at which it is used up (empty bare, above 100 m/s, or braked).
-  std::string covering_law;
-  bool within_law = true;
-  std::string validity_note;
-  std::optional<double> covering_used_up_m_per_s;
-  /// Whose criteria: "ISO/TS 15066:2016 transient, chest (sternum): 280 N, 240 N/cm²" or the
-  /// head's ("skin injury, Park et al. 2011 ...").
-  std::string criteria;
-};
-
-/// An ISO region's row at `robot_mass_kg`.
-BodyRegionTableRow TableRow(double robot_mass_kg, const optim::BodyRegionSpeedLimitRow& row);
-/// The head's row at `robot_mass_kg`: Park et al.'s criteria, `criteria` naming them.
-BodyRegionTableRow HeadTableRow(double robot_mass_kg, const optim::SpeedLimit& bare,
-                                const std::optional<optim::SpeedLimit>& covered, std::string criteria);
-/// A row of optim::TargetSpeedLimitTable (the head's named by optim::HeadCriteriaName), with
-/// the covering's `material` ("" if none).
-BodyRegionTableRow TableRow(const optim::TargetSpeedLimit& row, const std::string& material);
+/// One row of the all-regions speed-limit table (optim/body_region_table.hpp, where it is made).
+using optim::BodyRegionTableRow;
+using optim::HeadTableRow;
+using optim::TableRow;
 
 /// The columns, as the JSON rows' keys and the CSV header: material, robot_mass_kg, region, area,
 /// contact, force_limit_N, pressure_limit_Pa, bare_max_speed_m_per_s, bare_limited_by,
