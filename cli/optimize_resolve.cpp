@@ -94,6 +94,7 @@ void ResolveScene(const OptimizeOptions& o, Resolved& r) {
     r.request.scene.robot.mass_kg = mass.mass_kg;
     std::erase_if(r.ranges, [](const SceneRange& range) { return range.field == kRobotMassField; });
     r.warnings.insert(r.warnings.begin(), mass.notes.begin(), mass.notes.end());
+    r.robot_model = std::move(mass.inputs);
   }
 }
 

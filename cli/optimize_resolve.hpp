@@ -3,10 +3,12 @@
 /// `covopt optimize`'s flags read into the library's request (part of the optimize command;
 /// optimize.cpp prints what the library answers).
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "covopt/optim/design.hpp"
+#include "covopt/report/robot_model_json.hpp"
 #include "covopt/scene_file/range.hpp"
 #include "optimize.hpp"
 
@@ -19,6 +21,8 @@ struct Resolved {
   std::vector<SceneRange> ranges;
   std::vector<std::string> warnings;  ///< about the input (the library adds its own)
   int runners_up = 8;
+  /// With --urdf or --robot-moving-mass: the robot model, the result's "robot_model" input.
+  std::optional<report::RobotModelInputs> robot_model;
 };
 
 /// Reads the scene (file, flags, ranges, --urdf), the design flags (criterion, space, limits,

@@ -190,6 +190,8 @@ RobotModelMass IsoRobotMass(const RobotModelOptions& options, bool robot_mass_fl
       "(--robot-moving-mass, --payload-mass), not a reflected mass: it ignores the pose and the direction of "
       "the impact; --urdf FILE gives the reflected mass of the robot model",
       mass.mass_kg, moving_kg, payload_kg));
+  mass.inputs = {.source = "iso-estimate", .moving_mass_kg = moving_kg, .payload_mass_kg = payload_kg,
+                 .reflected_mass_kg = mass.mass_kg};
   return mass;
 }
 
@@ -358,7 +360,23 @@ RobotModelMass ResolveRobotModelMass(const RobotModelOptions& options, bool robo
       input.chain.tip_link(), FormatVector(mass.result.contact_point_m, 4),
       FormatVector(*mass.result.direction, 4), *options.urdf, *options.joints));
   mass.notes.insert(mass.notes.end(), mass.result.warnings.begin(), mass.result.warnings.end());
+  const auto as_list = [](const Eigen::Vector3d& v) { return std::vector<double>{v.x(), v.y(), v.z()}; };
+  mass.inputs = {.source = "urdf",
+                 .urdf_file = *options.urdf,
+                 .base_link = input.chain.base_link(),
+                 .tip_link = input.chain.tip_link(),
+                 .joint_names = mass.result.joint_names,
+                 .joint_positions = {input.joint_positions.data(),
+                                     input.joint_positions.data() + input.joint_positions.size()},
+                 .contact_point_m = as_list(mass.result.contact_point_m),
+                 .direction = as_list(*mass.result.direction),
+                 .payload_mass_kg = input.chain.payload().mass_kg,
+                 .reflected_mass_kg = mass.mass_kg};
   return mass;
+}
+
+std::string WithRobotModel(const std::string& json_object, const std::optional<report::RobotModelInputs>& model) {
+  return model ? report::WithRobotModel(json_object, *model) : json_object;
 }
 
 }  // namespace covopt::cli

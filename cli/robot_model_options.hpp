@@ -28,6 +28,7 @@
 #include <Eigen/Core>
 
 #include "covopt/robot/kinematic_chain.hpp"
+#include "covopt/report/robot_model_json.hpp"
 #include "covopt/robot/reflected_mass.hpp"
 
 namespace CLI {
@@ -121,6 +122,8 @@ struct RobotModelMass {
   /// not a reflected mass ...".
   std::vector<std::string> notes;
   robot::ReflectedMassResult result;
+  /// The model as the result's "robot_model" input and its summary's robot (report::WithRobotModel).
+  report::RobotModelInputs inputs;
 };
 
 /// Resolves the group (with --direction required) to the scene's robot mass: the reflected
@@ -131,6 +134,10 @@ struct RobotModelMass {
 ///         ISO fallback, when M is missing (--payload-mass alone), not a mass in (0, 1e6] kg,
 ///         or comes with --payload-com/--payload-inertia or a URDF flag (--tip, --joints, ...).
 RobotModelMass ResolveRobotModelMass(const RobotModelOptions& options, bool robot_mass_flag_given);
+
+/// `json_object` with the robot model that gave its robot mass (report::WithRobotModel), or as
+/// it is without one.
+std::string WithRobotModel(const std::string& json_object, const std::optional<report::RobotModelInputs>& model);
 
 /// The scene-field key of the robot mass ("robot.mass"), whose flag --urdf replaces.
 inline constexpr const char* kRobotMassField = "robot.mass";

@@ -325,6 +325,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     std::erase_if(plan.ranges, [](const SceneRange& r) { return r.field == kRobotMassField; });
     plan.sources[kRobotMassField] = mass.source;
     plan.robot_model_notes = std::move(mass.notes);
+    plan.robot_model = std::move(mass.inputs);
   }
   // Only SetupSimulate fills scene_values, with known names; a caller building the options
   // by hand gets told.

@@ -144,6 +144,8 @@ struct SimulationPlan {
   /// With --urdf: where robot.mass came from and the robot model's warnings, shown with
   /// the input warnings.
   std::vector<std::string> robot_model_notes;
+  /// With --urdf or --robot-moving-mass: the robot model, the result's "robot_model" input.
+  std::optional<report::RobotModelInputs> robot_model;
 };
 
 /// The scene group ("Scene" in --help), registered here once: --scene FILE, every scene field's
