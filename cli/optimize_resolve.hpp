@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "covopt/optim/design.hpp"
-#include "covopt/report/robot_model_json.hpp"
 #include "covopt/scene_file/range.hpp"
 #include "optimize.hpp"
+#include "report_option.hpp"
 
 namespace covopt::cli {
 
@@ -20,9 +20,8 @@ struct Resolved {
   /// Scene inputs given as ranges LO..HI: the robust design (docs/model.md §11).
   std::vector<SceneRange> ranges;
   std::vector<std::string> warnings;  ///< about the input (the library adds its own)
+  ResultInputs inputs;                ///< what the inputs add to the report: the scene file's [report]
   int runners_up = 8;
-  /// With --urdf or --robot-moving-mass: the robot model, the result's "robot_model" input.
-  std::optional<report::RobotModelInputs> robot_model;
 };
 
 /// Reads the scene (file, flags, ranges, --urdf), the design flags (criterion, space, limits,

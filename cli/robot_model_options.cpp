@@ -375,8 +375,4 @@ RobotModelMass ResolveRobotModelMass(const RobotModelOptions& options, bool robo
   return mass;
 }
 
-std::string WithRobotModel(const std::string& json_object, const std::optional<report::RobotModelInputs>& model) {
-  return model ? report::WithRobotModel(json_object, *model) : json_object;
-}
-
 }  // namespace covopt::cli

@@ -135,10 +135,6 @@ struct RobotModelMass {
 ///         or comes with --payload-com/--payload-inertia or a URDF flag (--tip, --joints, ...).
 RobotModelMass ResolveRobotModelMass(const RobotModelOptions& options, bool robot_mass_flag_given);
 
-/// `json_object` with the robot model that gave its robot mass (report::WithRobotModel), or as
-/// it is without one.
-std::string WithRobotModel(const std::string& json_object, const std::optional<report::RobotModelInputs>& model);
-
 /// The scene-field key of the robot mass ("robot.mass"), whose flag --urdf replaces.
 inline constexpr const char* kRobotMassField = "robot.mass";
 

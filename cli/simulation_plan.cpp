@@ -291,6 +291,8 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
       plan.sources[std::move(name)] = *options.scene_file;
     }
     plan.ranges = extras.ranges;
+    plan.inputs.file_report = extras.report;
+    (void)ReportInfoOf({}, plan.inputs);  // a bad [report] value is refused before anything runs
   }
   if (options.material || extras.covering_material) {
     ApplyMaterial(options, extras, plan);
@@ -325,7 +327,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     std::erase_if(plan.ranges, [](const SceneRange& r) { return r.field == kRobotMassField; });
     plan.sources[kRobotMassField] = mass.source;
     plan.robot_model_notes = std::move(mass.notes);
-    plan.robot_model = std::move(mass.inputs);
+    plan.inputs.robot_model = std::move(mass.inputs);
   }
   // Only SetupSimulate fills scene_values, with known names; a caller building the options
   // by hand gets told.
