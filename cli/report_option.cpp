@@ -132,7 +132,7 @@ void WriteReport(const std::string& file, report::ReportKind kind, const std::st
 void PrintAndReport(std::ostream& out, bool print_json, const std::string& json_object,
                     const std::optional<RunContext>& run, const ReportFlags& report, const ResultInputs& inputs,
                     report::ReportKind kind, const std::function<std::vector<report::GnuplotChart>()>& charts) {
-  const std::string stamped = WithRunProvenance(json_object, run);
+  const std::string stamped = WithRunProvenance(run ? report::WithInputSources(json_object, inputs.origins) : json_object, run);
   if (report.file) {
     WriteReport(*report.file, kind, stamped, charts ? charts() : std::vector<report::GnuplotChart>{},
                 ReportInfoOf(report, inputs));
