@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -50,7 +52,9 @@ void ResolveScene(const OptimizeOptions& o, Resolved& r) {
   DesignOptions& d = r.request.options;
   if (o.scene_file) {
     SceneFileExtras extras;
+    r.inputs.origins.scene_file = std::filesystem::path(*o.scene_file).filename().string();
     for (const std::string& name : ApplySceneFile(*o.scene_file, r.request.scene, &extras)) {
+      r.inputs.origins.from_scene_file.push_back(name);
       if (name.rfind("covering.", 0) == 0) {
         r.warnings.push_back(fmt::format("{} in {} is ignored: the covering is what optimize designs",
                                          name, *o.scene_file));
@@ -69,6 +73,7 @@ void ResolveScene(const OptimizeOptions& o, Resolved& r) {
   for (const SceneField& field : SceneFields()) {
     const auto typed = o.scene_values.find(field.dotted_name());
     if (typed != o.scene_values.end()) {
+      r.inputs.origins.given[typed->first] = fmt::format("flag {}", field.flag);
       std::erase_if(r.ranges, [&](const SceneRange& range) { return range.field == field.dotted_name(); });
       if (IsRangeText(typed->second)) {
         r.ranges.push_back(AsInputError([&] { return scene_file::ParseSceneRange(typed->second, field, field.flag); }));
@@ -81,6 +86,11 @@ void ResolveScene(const OptimizeOptions& o, Resolved& r) {
   ApplySceneFlagInputs(inputs, resolved);
   r.request.scene = resolved.scene;
   SetNominalValues(r.request.scene, r.ranges);
+  for (const auto& [given, field, flag] : {std::tuple{o.choices.thresholds.has_value(), "model.thresholds", "--thresholds"},
+                                           std::tuple{o.choices.head_area.has_value(), "head.area", "--head-area"},
+                                           std::tuple{o.robot_model.given(), kRobotMassField, "--urdf"}}) {
+    if (given) r.inputs.origins.given[field] = fmt::format("flag {}", flag);
+  }
   if (o.choices.thresholds) r.request.scene.model.thresholds = ParseThresholds(*o.choices.thresholds, "--thresholds");
   if (o.choices.head_area) r.request.scene.head.area = ParseHeadArea(*o.choices.head_area, "--head-area");
   if (o.choices.covering_law) {
@@ -114,6 +124,11 @@ void ResolveDesignFlags(const OptimizeOptions& o, Resolved& r) {
   d.safety_factor = Parse(o.safety_factor, specs::kSafetyFactor, "--safety-factor", d.safety_factor);
   d.covering_poisson_ratio = Parse(o.covering_poisson, specs::kPoissonRatio, "--covering-poisson", d.covering_poisson_ratio);
   d.thickness_step_m = Parse(o.thickness_step, specs::kThicknessStep, "--thickness-step", d.thickness_step_m);
+  for (const auto& [typed, field, flag] : {std::tuple{&o.safety_factor, "limits.safety_factor", "--safety-factor"},
+                                           std::tuple{&o.laceration_limit, "limits.laceration", "--laceration-limit"},
+                                           std::tuple{&o.contusion_limit, "limits.contusion", "--contusion-limit"}}) {
+    if (typed->has_value()) r.inputs.origins.given[field] = fmt::format("flag {}", flag);
+  }
   d.limits.laceration_tensile_stress_Pa =
       Parse(o.laceration_limit, specs::kLacerationLimit, "--laceration-limit", d.limits.laceration_tensile_stress_Pa);
   d.limits.contusion_energy_density_J_per_m2 =

@@ -132,8 +132,12 @@ void WriteReport(const std::string& file, report::ReportKind kind, const std::st
 void PrintAndReport(std::ostream& out, bool print_json, const std::string& json_object,
                     const std::optional<RunContext>& run, const ReportFlags& report, const ResultInputs& inputs,
                     report::ReportKind kind, const std::function<std::vector<report::GnuplotChart>()>& charts) {
-  const std::string stamped = WithRunProvenance(
-      inputs.robot_model ? report::WithRobotModel(json_object, *inputs.robot_model) : json_object, run);
+  std::string object = json_object;
+  if (run) {  // a top-level result (a nested one, inside another's object, has neither)
+    if (inputs.robot_model) object = report::WithRobotModel(object, *inputs.robot_model);
+    object = report::WithInputSources(object, inputs.origins);
+  }
+  const std::string stamped = WithRunProvenance(object, run);
   if (report.file) {
     WriteReport(*report.file, kind, stamped, charts ? charts() : std::vector<report::GnuplotChart>{},
                 ReportInfoOf(report, inputs));

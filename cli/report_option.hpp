@@ -17,6 +17,7 @@
 #include "covopt/report/charts.hpp"
 #include "covopt/report/html_report.hpp"
 #include "covopt/report/robot_model_json.hpp"
+#include "covopt/report/input_sources.hpp"
 #include "covopt/scene_file/scene_file.hpp"
 #include "run_context.hpp"
 
@@ -43,13 +44,15 @@ struct ReportFlags {
   std::vector<scene_file::ReportSetting> Settings() const;
 };
 
-/// What a command's inputs add to its report: the scene file's [report] table (already
-/// checked), applied before the flags.
+/// What a command's inputs add to its result and report: the scene file's [report] table
+/// (already checked), applied before the flags, and where each input came from (the result's
+/// "input_sources", report/input_sources.hpp).
 struct ResultInputs {
   std::vector<scene_file::ReportSetting> file_report;
   /// With --urdf or --robot-moving-mass: the robot model behind the robot mass, the result's
   /// "robot_model" input and its summary's robot (report::WithRobotModel).
   std::optional<report::RobotModelInputs> robot_model;
+  report::InputOrigins origins;
 };
 
 /// Adds --report FILE.html|FILE.htm|FILE.pdf (group "Output") and the sign-off flags (group
@@ -73,8 +76,9 @@ report::ReportInfo ReportInfoOf(const ReportFlags& flags, const ResultInputs& in
 void WriteReport(const std::string& file, report::ReportKind kind, const std::string& result_json,
                  std::span<const report::GnuplotChart> charts, const report::ReportInfo& info = {});
 
-/// The one way a result object leaves a command: `json_object` (the --json object) gets the
-/// run's provenance (WithRunProvenance); the report of `kind` is written to `report.file` when
+/// The one way a result object leaves a command: `json_object` (the --json object) gets where
+/// its inputs came from (report::WithInputSources of inputs.origins) and the run's provenance
+/// (WithRunProvenance), both only for a run of its own (`run`; not a nested object); the report of `kind` is written to `report.file` when
 /// given (`charts` is called only then; its settings ReportInfoOf(report, inputs)), and then the object is printed to `out` (one
 /// line break after it) when `print_json`. Call it only after the run succeeded.
 /// @throws OutputError when the report cannot be written (nothing is printed then).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
@@ -83,6 +84,8 @@ void ApplyMaterial(const SimulateOptions& options, const SceneFileExtras& extras
                               extras.covering_material_where);
   plan.sources["covering.modulus"] = plan.covering_material_source;
   plan.sources["covering.poisson"] = plan.covering_material_source;
+  plan.inputs.origins.from_catalog = {"covering.modulus", "covering.poisson"};
+  if (from_flag) plan.inputs.origins.given["covering.material"] = "flag --material";
   plan.covering_material = *material;
 }
 
@@ -105,6 +108,7 @@ void ApplySceneFlags(const SimulateOptions& options, SimulationPlan& plan) {
   std::vector<scene_file::SceneInput> inputs;
   const auto add = [&](std::string field, std::string_view flag, const std::string& typed) {
     plan.sources[field] = fmt::format("{} '{}'", flag, typed);
+    plan.inputs.origins.given[field] = fmt::format("flag {}", flag);
     inputs.push_back({std::move(field), typed, ""});
   };
   for (const LimitField& field : LimitFields()) {
@@ -287,7 +291,9 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
   // The scene: defaults, then the file, then the flags.
   SceneFileExtras extras;
   if (options.scene_file) {
+    plan.inputs.origins.scene_file = std::filesystem::path(*options.scene_file).filename().string();
     for (std::string& name : ApplySceneFile(*options.scene_file, plan.scene, &extras)) {
+      plan.inputs.origins.from_scene_file.push_back(name);
       plan.sources[std::move(name)] = *options.scene_file;
     }
     plan.ranges = extras.ranges;
@@ -310,6 +316,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
       if (IsRangeText(typed->second)) {
         plan.ranges.push_back(AsInputError([&] { return scene_file::ParseSceneRange(typed->second, field, field.flag); }));
         plan.sources[field.dotted_name()] = fmt::format("{} '{}'", field.flag, typed->second);
+        plan.inputs.origins.given[field.dotted_name()] = fmt::format("flag {}", field.flag);
       }
     }
   }
@@ -326,6 +333,7 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
     plan.scene.robot.mass_kg = mass.mass_kg;
     std::erase_if(plan.ranges, [](const SceneRange& r) { return r.field == kRobotMassField; });
     plan.sources[kRobotMassField] = mass.source;
+    plan.inputs.origins.given[kRobotMassField] = "flag --urdf";
     plan.robot_model_notes = std::move(mass.notes);
     plan.inputs.robot_model = std::move(mass.inputs);
   }

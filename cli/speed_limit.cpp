@@ -197,7 +197,10 @@ SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
   if (varied_text) {
     plan.values = ParseValues(*varied_text, by_speed ? "robot-mass" : "speed", varied_flag);
     plan.values_source = fmt::format("{} '{}'", varied_flag, *varied_text);
-    for (SimulationPlan& covering : plan.coverings) covering.sources[varied_key] = plan.values_source;
+    for (SimulationPlan& covering : plan.coverings) {
+      covering.sources[varied_key] = plan.values_source;
+      covering.inputs.origins.given[varied_key] = fmt::format("flag {}", varied_flag);
+    }
   } else {
     const Scene& scene = plan.coverings.front().scene;
     plan.values = {by_speed ? scene.robot.mass_kg : scene.robot.speed_m_per_s};

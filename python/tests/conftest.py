@@ -38,9 +38,10 @@ def cli():
 
 
 def without_provenance(result):
-    """A result's dict (or a Result) without its "provenance" block."""
+    """A result's dict (or a Result) without its "provenance" block and its "input_sources"
+    (the CLI's say "flag --speed" where Python's say "keyword speed")."""
     data = result.to_dict() if hasattr(result, "to_dict") else result
-    return {key: value for key, value in data.items() if key != "provenance"}
+    return {key: value for key, value in data.items() if key not in ("provenance", "input_sources")}
 
 
 def same_provenance(a, b):

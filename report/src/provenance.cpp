@@ -18,6 +18,7 @@
 #include <openssl/evp.h>
 #include <openssl/opensslv.h>
 
+#include "append_key.hpp"
 #include "covopt_build_info.hpp"  // COVOPT_VERSION_TEXT, COVOPT_GIT_COMMIT: written at build time
 
 namespace covopt::report {
@@ -187,10 +188,15 @@ Provenance MakeProvenance(std::string command, std::span<const InputFile> input_
 std::string ProvenanceJson(const Provenance& provenance, int indent) { return ToJson(provenance).dump(indent); }
 
 std::string WithProvenance(const std::string& json_object, const Provenance& provenance) {
+  return internal::AppendKey(json_object, "provenance", ToJson(provenance), "WithProvenance");
+}
+
+std::string internal::AppendKey(const std::string& json_object, std::string_view key, const nlohmann::ordered_json& value,
+                                std::string_view caller) {
   const std::size_t first = json_object.find_first_not_of(" \t\r\n");
   const std::size_t last = json_object.find_last_not_of(" \t\r\n");
   if (first == std::string::npos || json_object[first] != '{' || json_object[last] != '}') {
-    throw std::invalid_argument("WithProvenance: the text is not a JSON object");
+    throw std::invalid_argument(fmt::format("{}: the text is not a JSON object", caller));
   }
   // The indent of the object's keys: the spaces after its first line break (none: one line).
   const std::size_t line_break = json_object.find('\n', first);
@@ -200,13 +206,13 @@ std::string WithProvenance(const std::string& json_object, const Provenance& pro
     while (line_break + 1 + indent < json_object.size() && json_object[line_break + 1 + indent] == ' ') ++indent;
   }
   const bool empty = json_object.find_first_not_of(" \t\r\n", first + 1) == last;
-  std::string block = ToJson(provenance).dump(one_line ? -1 : static_cast<int>(indent));
+  std::string block = value.dump(one_line ? -1 : static_cast<int>(indent));
   std::string out = json_object.substr(0, last);
   while (!out.empty() && (out.back() == ' ' || out.back() == '\n' || out.back() == '\r' || out.back() == '\t')) {
     out.pop_back();
   }
   if (one_line) {
-    out += fmt::format("{}\"provenance\":{}}}", empty ? "" : ",", block);
+    out += fmt::format("{}\"{}\":{}}}", empty ? "" : ",", key, block);
   } else {
     // Re-indent the block's inner lines by the object's indent.
     const std::string pad(indent, ' ');
@@ -215,7 +221,7 @@ std::string WithProvenance(const std::string& json_object, const Provenance& pro
       indented += c;
       if (c == '\n') indented += pad;
     }
-    out += fmt::format("{}\n{}\"provenance\": {}\n}}", empty ? "" : ",", pad, indented);
+    out += fmt::format("{}\n{}\"{}\": {}\n}}", empty ? "" : ",", pad, key, indented);
   }
   return out + json_object.substr(last + 1);
 }

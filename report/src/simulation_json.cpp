@@ -1,9 +1,12 @@
 #include "covopt/report/simulation_json.hpp"
 
 #include <cmath>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "covopt/core/impact_model.hpp"
@@ -155,6 +158,42 @@ std::string SimulationJson(const SimulationReport& report, int indent) {
 }
 
 std::string SceneJson(const Scene& scene, int indent) { return SceneObject(scene).dump(indent); }
+
+std::optional<std::string> SceneJsonPath(std::string_view dotted_name) {
+  // A scene-file key and the key SceneObject writes it under (the unit follows the key, not the table).
+  static constexpr std::pair<std::string_view, std::string_view> kKeys[] = {
+      {"mass", "mass_kg"},
+      {"speed", "speed_m_per_s"},
+      {"radius", "radius_m"},
+      {"modulus", "youngs_modulus_Pa"},
+      {"poisson", "poisson_ratio"},
+      {"thickness", "thickness_m"},
+      {"damping", "damping_s_per_m"},
+      {"reaction_delay", "reaction_delay_s"},
+      {"braking", "braking_m_per_s2"},
+      {"torso_mass", "torso_mass_kg"},
+      {"neck_stiffness", "neck_stiffness_N_per_m"},
+      {"neck_damping", "neck_damping_N_s_per_m"},
+      {"law", "law"},
+      {"material", "material"},
+      {"area", "area"},
+      {"thresholds", "thresholds"},
+  };
+  const std::size_t dot = dotted_name.find('.');
+  if (dot == std::string_view::npos) return std::nullopt;
+  const std::string_view table = dotted_name.substr(0, dot);
+  const std::string_view key = dotted_name.substr(dot + 1);
+  const Json shown = SceneObject(Scene{});
+  for (const auto& [name, json_key] : kKeys) {
+    if (name != key) continue;
+    const std::string table_name(table);
+    // covering.material is written beside the scene's own keys (SimulationJson).
+    if (shown.contains(table_name) && (shown[table_name].contains(std::string(json_key)) || dotted_name == "covering.material")) {
+      return fmt::format("scene.{}.{}", table, json_key);
+    }
+  }
+  return std::nullopt;
+}
 
 std::string SolverStatisticsJson(const SolverStatistics& statistics, int indent) {
   return StatisticsObject(statistics).dump(indent);

@@ -194,3 +194,49 @@ TEST_CASE("The scene file's [report] table: checked before any computation, the 
   CHECK(run.exit_code == 0);
   CHECK(std::filesystem::exists(file));
 }
+
+TEST_CASE("Every reportable result's JSON says where its inputs came from", "[report]") {
+  const TempDir dir;
+  const std::string scene = (dir / "cell4.toml").string();
+  std::ofstream(scene) << "[robot]\nmass = \"12kg\"\n[head]\nmass = \"4kg\"\n[limits]\nsafety_factor = 1.2\n";
+  const auto sources = [](const std::vector<std::string>& args) {
+    const CliRun run = Run(args);
+    INFO(run.err);
+    REQUIRE(run.exit_code == 0);
+    const nlohmann::ordered_json j = nlohmann::ordered_json::parse(run.out);
+    std::vector<std::string> keys;
+    for (const auto& item : j.items()) keys.push_back(item.key());
+    REQUIRE(keys.size() >= 2);
+    CHECK(keys[keys.size() - 2] == "input_sources");  // then the provenance
+    return j["input_sources"];
+  };
+  const auto simulate = sources({"simulate", "--scene", scene, "--speed", "1m/s", "--material",
+                                 "PU foam PORON 4701-30 320", "--safety-factor", "1.5", "--json"});
+  CHECK(simulate["scene.robot.mass_kg"] == "scene file cell4.toml");
+  CHECK(simulate["scene.head.mass_kg"] == "scene file cell4.toml");
+  CHECK(simulate["scene.robot.speed_m_per_s"] == "flag --speed");
+  CHECK(simulate["scene.covering.material"] == "flag --material");
+  CHECK(simulate["scene.covering.youngs_modulus_Pa"] == "catalog");
+  CHECK(simulate["scene.covering.poisson_ratio"] == "catalog");
+  CHECK(simulate["scene.covering.thickness_m"] == "default");
+  CHECK(simulate["laceration.safety_factor"] == "flag --safety-factor");  // the flag wins over the file
+  CHECK(simulate["laceration.limit_Pa"] == "default");
+  const auto optimize = sources({"optimize", "--scene", scene, "--laceration-limit", "0.9MPa", "--json"});
+  CHECK(optimize["scene.robot.mass_kg"] == "scene file cell4.toml");
+  CHECK(optimize["safety_factor"] == "scene file cell4.toml");
+  CHECK(optimize["limits.laceration_Pa"] == "flag --laceration-limit");
+  CHECK(optimize["limits.contusion_J_per_m2"] == "default");
+  CHECK_FALSE(optimize.contains("scene.covering.thickness_m"));  // what optimize designs is no input
+  const auto speed_limit = sources({"speed-limit", "--robot-mass", "5kg", "--json"});
+  CHECK(speed_limit["scene.robot.mass_kg"] == "flag --robot-mass");
+  CHECK(speed_limit["safety_factor"] == "default");
+  const auto robot = sources({"robot", "--urdf", kFr3, "--tip", "fr3_link8", "--trajectory", kPick, "--json"});
+  CHECK_FALSE(robot.contains("scene.robot.mass_kg"));  // each sample's own
+  CHECK(robot["scene.head.mass_kg"] == "default");
+  const auto audit = sources({"audit", "--urdf", kFr3, "--tip", "fr3_link8", "--trajectory", kPick,
+                              "--covering-thickness", "20mm", "--covering-modulus", "0.5MPa", "--covering-poisson",
+                              "0.45", "--contact-area", "1cm2", "--flat-face-radius", "20mm", "--body-region", "chest",
+                              "--safety-factor", "1.5", "--json"});
+  CHECK(audit["safety_factor"] == "flag --safety-factor");
+  CHECK(audit["reaction_delay_s"] == "default");
+}

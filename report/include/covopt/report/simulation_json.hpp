@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "covopt/core/impact_result.hpp"
@@ -50,6 +51,13 @@ std::string SimulationJson(const SimulationReport& report, int indent = 2);
 /// Every scene input in SI as a JSON object {robot, covering, head, scalp, skull, model};
 /// an infinite mass is "fixed", an infinite robot radius "flat".
 std::string SceneJson(const Scene& scene, int indent = 2);
+
+/// Where a scene input is in a result's JSON: the dotted JSON path of a Scene field
+/// (covopt/core/scene_fields.hpp, by its dotted name "robot.mass": "scene.robot.mass_kg"), of
+/// the scene's choices ("covering.law", "head.area", "model.thresholds") and of the covering's
+/// catalog material ("covering.material": "scene.covering.material"), as SceneJson and
+/// SimulationJson write them; nullopt for any other name.
+std::optional<std::string> SceneJsonPath(std::string_view dotted_name);
 
 /// The integrator's counters as a JSON object: steps, rhs_evaluations, root_evaluations,
 /// jacobian_evaluations, nonlinear_iterations, error_test_failures, convergence_failures,
