@@ -438,10 +438,10 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
     if (stream_file) stream_file->Commit();
     if (o.csv_file && *o.csv_file != "-") WriteFileAtomically(*o.csv_file, CellsCsv(result));
     // The heat map, made once for --plot and --report.
-    std::optional<report::GnuplotChart> heat_map_chart;
-    const auto heat_map = [&]() -> const report::GnuplotChart& {
+    std::optional<chart::GnuplotChart> heat_map_chart;
+    const auto heat_map = [&]() -> const chart::GnuplotChart& {
       if (!heat_map_chart) {
-        heat_map_chart = report::AuditHeatMap(result, run.assembled.setup.rule.safety_factor,
+        heat_map_chart = chart::AuditHeatMap(result, run.assembled.setup.rule.safety_factor,
                                               std::filesystem::path(*o.trajectory).filename().string());
       }
       return *heat_map_chart;

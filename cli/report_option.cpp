@@ -53,11 +53,11 @@ void AddReportOption(CLI::App& command, std::optional<std::string>& file) {
 }
 
 void WriteReport(const std::string& file, report::ReportKind kind, const std::string& result_json,
-                 std::span<const report::GnuplotChart> charts) {
+                 std::span<const chart::GnuplotChart> charts) {
   std::string html;
   try {
     std::vector<report::SvgChart> drawn;
-    if (!charts.empty()) drawn = report::DrawSvgCharts(charts, SignalSafeScratch());
+    if (!charts.empty()) drawn = chart::DrawSvgCharts(charts, SignalSafeScratch());
     html = report::HtmlReport({kind, result_json, std::move(drawn), {}});
   } catch (const std::exception& e) {  // gnuplot missing or failed; a result HtmlReport refuses
     throw OutputError(fmt::format("--report '{}': no report written: {}", file, e.what()));
@@ -71,9 +71,9 @@ void WriteReport(const std::string& file, report::ReportKind kind, const std::st
 
 void PrintAndReport(std::ostream& out, bool print_json, const std::string& json_object,
                     const std::optional<RunContext>& run, const std::optional<std::string>& report_file,
-                    report::ReportKind kind, const std::function<std::vector<report::GnuplotChart>()>& charts) {
+                    report::ReportKind kind, const std::function<std::vector<chart::GnuplotChart>()>& charts) {
   const std::string stamped = WithRunProvenance(json_object, run);
-  if (report_file) WriteReport(*report_file, kind, stamped, charts ? charts() : std::vector<report::GnuplotChart>{});
+  if (report_file) WriteReport(*report_file, kind, stamped, charts ? charts() : std::vector<chart::GnuplotChart>{});
   if (print_json) out << stamped << '\n';
 }
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 #include "covopt/report/html_report.hpp"
 #include "run_context.hpp"
 
@@ -28,13 +28,13 @@ void AddReportOption(CLI::App& command, std::optional<std::string>& file);
 
 /// Writes the report of `result_json` (a command's --json object with its provenance block)
 /// to `file`: HTML through the CLI's file writer (WriteFileAtomically), PDF through
-/// WriteReportPdf. The charts are drawn by one gnuplot run (report::DrawSvgCharts, its scratch
+/// WriteReportPdf. The charts are drawn by one gnuplot run (chart::DrawSvgCharts, its scratch
 /// files removed on Ctrl-C too).
 /// @throws OutputError (exit 1) naming the file when it cannot be written, when gnuplot is
 ///         missing or fails, or when result_json holds no reportable result (report::HtmlReport
 ///         refuses a failed run): no file is written then.
 void WriteReport(const std::string& file, report::ReportKind kind, const std::string& result_json,
-                 std::span<const report::GnuplotChart> charts);
+                 std::span<const chart::GnuplotChart> charts);
 
 /// The one way a result object leaves a command: `json_object` (the --json object) gets the
 /// run's provenance (WithRunProvenance); the report of `kind` is written to `report_file`
@@ -43,6 +43,6 @@ void WriteReport(const std::string& file, report::ReportKind kind, const std::st
 /// @throws OutputError when the report cannot be written (nothing is printed then).
 void PrintAndReport(std::ostream& out, bool print_json, const std::string& json_object,
                     const std::optional<RunContext>& run, const std::optional<std::string>& report_file,
-                    report::ReportKind kind, const std::function<std::vector<report::GnuplotChart>()>& charts);
+                    report::ReportKind kind, const std::function<std::vector<chart::GnuplotChart>()>& charts);
 
 }  // namespace covopt::cli

@@ -306,7 +306,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
   if (plan.json || options.report_file) {
     try {  // the object covopt.simulate() returns
       PrintAndReport(out, plan.json, report::SimulationJson(report), options.run, options.report_file,
-                     report::ReportKind::kSimulate, [&] { return std::vector{report::HistoryChart(report)}; });
+                     report::ReportKind::kSimulate, [&] { return std::vector{chart::HistoryChart(report)}; });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

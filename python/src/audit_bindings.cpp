@@ -207,7 +207,7 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
   if (result.ratio_over_time.empty()) return d;  // the heat map needs keep_ratio_over_time=True
   return WithReportCharts(std::move(d), [result, sf = assembled.setup.rule.safety_factor,
                                          name = TrajectoryName(trajectory)] {
-    return std::vector{report::AuditHeatMap(result, sf, name)};
+    return std::vector{chart::AuditHeatMap(result, sf, name)};
   });
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 /// @file body_region_sweep_output.hpp
 /// The outputs of `covopt sweep --body-region R` (optim::SweepBodyRegion over one ISO region):
-/// the CSV, the numbers of the summary and the gnuplot script of the governing ratio (a line
-/// over one axis, a map with its contour at 1/SF over two).
+/// the CSV, the numbers of the summary and the data of its chart
+/// (covopt/chart/body_region_sweep_chart.hpp).
 
 #include <cstddef>
 #include <span>
@@ -12,7 +12,6 @@
 
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/optim/body_region_sweep.hpp"
-#include "covopt/report/charts.hpp"
 #include "covopt/report/sweep_axis.hpp"
 
 namespace covopt::report {
@@ -38,12 +37,6 @@ struct BodyRegionSweepTable {
 /// Lays out `grid` (optim::SweepBodyRegion's points over `x` and, if given, `y`, in its order).
 BodyRegionSweepTable LayOutBodyRegionSweep(std::span<const optim::BodyRegionSweepPoint> grid,
                                            const SweepAxisArgument& x, const SweepAxisArgument* y);
-
-/// The gnuplot script of the governing ratio over the grid (`table.chart_data`): a line with the
-/// limit 1/`safety_factor` dashed (one axis), or a map with its contour at 1/`safety_factor`.
-std::string BodyRegionSweepChart(const BodyRegionSweepTable& table, const SweepAxisArgument& x,
-                                 const SweepAxisArgument* y, const materials::BodyLimits& limits,
-                                 double safety_factor, ChartFormat format, const std::string& output_path);
 
 /// One column of the grid as values per point (Python's covopt.sweep with body_region):
 /// a number, NaN where the point is invalid or the quantity not evaluated; or a flag (`flag`),

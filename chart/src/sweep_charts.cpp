@@ -1,4 +1,4 @@
-#include "covopt/report/sweep_charts.hpp"
+#include "covopt/chart/sweep_charts.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +10,11 @@
 
 #include "covopt/core/quantity.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
+
+using report::kMaxFamilies;
+using report::SweepAxisArgument;
+using report::ResultColumn;
 namespace {
 
 using covopt::SweepRow;
@@ -383,4 +387,4 @@ std::string SweepFamiliesScript(const PlotInput& in, const std::string& output) 
 }
 
 
-}  // namespace covopt::report
+}  // namespace covopt::chart
