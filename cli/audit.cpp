@@ -19,6 +19,7 @@
 #include "body_region_options.hpp"
 #include "covopt/audit/assemble.hpp"
 #include "covopt/audit/audit.hpp"
+#include "covopt/chart/region_charts.hpp"
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/report/audit_json.hpp"
 #include "covopt/report/csv.hpp"
@@ -449,7 +450,9 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
     if (o.plot_file) RunGnuplot(*o.plot_file, heat_map());
     if (o.json || o.report_file) {
       PrintAndReport(out, o.json, report::AuditJson(run.assembled.setup, result, run.assembled.input_warnings), o.run, o.report_file,
-                     report::ReportKind::kAudit, [&] { return std::vector{heat_map()}; });
+                     report::ReportKind::kAudit, [&] {
+                       return std::vector{chart::AuditRegionMap(result, run.assembled.setup.rule.safety_factor), heat_map()};
+                     });
     }
     if (!o.json && o.csv_file && *o.csv_file == "-") {
       out << CellsCsv(result);
