@@ -68,7 +68,7 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
     if (options.plot_file) {
       const PlotFormat format = *PlotFormatFor(*options.plot_file);
       RunGnuplot(*options.plot_file, [&](const std::string& output) {
-        return chart::BodyRegionSweepChart(table, x, y ? &*y : nullptr, limits, plan.safety_factor, format, output);
+        return chart::BodyRegionSweepChart(grid, x, y ? &*y : nullptr, limits, plan.safety_factor, format, output);
       });
     }
   } catch (const OutputError& e) {

@@ -176,8 +176,10 @@ std::string MapDataBlocks(const PlotInput& in, const std::vector<std::size_t>& x
 
 std::string AxisLabel(const SweepAxisArgument& axis) {
   const DisplayUnit unit = DisplayFor(axis.field->spec.kind);
-  return unit.unit.empty() ? axis.name : fmt::format("{} [{}]", axis.name, unit.unit);
+  return fmt::format("{} [{}]", axis.name, unit.unit.empty() ? "-" : unit.unit);
 }
+
+double DisplayScale(const SweepAxisArgument& axis) { return DisplayFor(axis.field->spec.kind).scale; }
 
 std::string Display(const SweepAxisArgument& axis, double si) {
   return FormatQuantity(si, axis.field->spec.kind);

@@ -17,8 +17,11 @@
 
 namespace covopt::chart {
 
-/// An axis's label: "covering-thickness [mm]".
+/// An axis's label: "covering-thickness [mm]" ("[-]" for a pure number).
 std::string AxisLabel(const report::SweepAxisArgument& axis);
+
+/// The axis's display unit as a scale: a value shown on a chart is SI / scale (1e-3 for mm).
+double DisplayScale(const report::SweepAxisArgument& axis);
 
 /// A value of the axis for people: "15 mm", "fixed".
 std::string Display(const report::SweepAxisArgument& axis, double si);

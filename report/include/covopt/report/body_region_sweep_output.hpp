@@ -18,7 +18,7 @@ namespace covopt::report {
 
 /// The grid laid out: its CSV and what the summary and the chart need.
 struct BodyRegionSweepTable {
-  /// The CSV: the axes' names (x, then y), then peak_force_N, peak_pressure_Pa,
+  /// The CSV: the axes' names with their SI units ("speed [m/s]", x then y), then peak_force_N, peak_pressure_Pa,
   /// covering_deflection_m, fully_compressed, force_ratio, pressure_ratio, compression_ratio,
   /// crush_ratio, governing, governing_ratio, admissible, error; one row per point, x slowest
   /// within each y block (an infinite mass "fixed", an infinite radius "flat").
@@ -26,12 +26,10 @@ struct BodyRegionSweepTable {
   std::size_t points = 0;      ///< grid points
   std::size_t admissible = 0;  ///< points within every limit
   std::size_t invalid = 0;     ///< points outside the model's range (the CSV's error column)
-  /// The largest governing ratio and where: "robot-mass = 10, speed = 1.5, force"; -1 and ""
+  /// The largest governing ratio and where: "robot-mass = 10 kg, speed = 1.5 m/s, force"; -1 and ""
   /// when no point has a verdict.
   double worst = -1.0;
   std::string worst_at;
-  /// gnuplot's data: "x [y] governing-ratio" per finite point, a blank line after each y block.
-  std::string chart_data;
 };
 
 /// Lays out `grid` (optim::SweepBodyRegion's points over `x` and, if given, `y`, in its order).
