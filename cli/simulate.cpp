@@ -216,7 +216,9 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
                      report::UncertainSimulationJson(report, box ? &*box : nullptr, box ? &worst : nullptr,
                                                      probability ? &*probability : nullptr,
                                                      elasticities ? &*elasticities : nullptr),
-                     options.run, options.report_file, report::ReportKind::kSimulate, nullptr);
+                     options.run, options.report_file, report::ReportKind::kSimulate,
+                     // The history of the scene reported: the worst case over the box (its title names it).
+                     [&] { return std::vector{chart::HistoryChart(report)}; });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

@@ -57,6 +57,7 @@ TEST_CASE("Every kind and mode of --report holds its charts", "[report][chart]")
   };
   const std::vector<Mode> modes = {
       {"simulate", {"simulate"}, 1, {}},
+      {"simulate, ranges", {"simulate", "--head-mass", "3.7kg..5.8kg"}, 1, {"force [N]"}},
       {"simulate, one region", with({"simulate", "--body-region", "chest"}, body), 1, {"force (limit 280 N)"}},
       {"simulate, all regions", with({"simulate", "--body-region", "all"}, body), 1, {"chest (sternum)", "hands-fingers"}},
       {"optimize", {"optimize", "--material", "PU foam PORON 4701-30 320"}, 1, {}},
