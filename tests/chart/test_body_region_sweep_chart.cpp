@@ -9,31 +9,14 @@
 #include <covopt/materials.hpp>
 #include <covopt/optim.hpp>
 
+#include "chart_test_support.hpp"
 #include "covopt/chart/body_region_sweep_chart.hpp"
 #include "covopt/scene_file/sweep_axis.hpp"
 
 using namespace covopt;
 using Catch::Matchers::Contains;
-
-namespace {
-
-std::size_t Count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
-  return n;
-}
-
-BodyContactScene CoveredScene() {
-  BodyContactScene scene;
-  scene.robot_mass_kg = 10.0;
-  scene.speed_m_per_s = 0.5;
-  scene.robot_radius_m = 0.05;
-  scene.contact_area_m2 = 1e-4;
-  scene.covering = {2e6, 0.3, 0.01};
-  return scene;
-}
-
-}  // namespace
+using covopt::chart::testing::Count;
+using covopt::chart::testing::CoveredScene;
 
 TEST_CASE("body-region sweep chart: a 3-value axis gives 3 lines, units on every axis", "[chart][regions][sweep]") {
   const materials::BodyLimits chest = materials::BodyRegionTable::BuiltIn().Limits("chest", "", ContactType::kTransient);

@@ -1,4 +1,4 @@
-// The body-region charts (chart/region_charts.hpp, chart/body_region_sweep_chart.hpp): each
+// The body-region charts (chart/region_charts.hpp): each
 // script names its axes with their units and draws every bar, line or cell it is given.
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -13,30 +13,17 @@
 #include <covopt/materials.hpp>
 #include <covopt/optim.hpp>
 
+#include "chart_test_support.hpp"
 #include "covopt/chart/region_charts.hpp"
 
 using namespace covopt;
 using Catch::Matchers::Contains;
+using covopt::chart::testing::Count;
+using covopt::chart::testing::CoveredScene;
 
 namespace {
 
 std::string Svg(const chart::GnuplotChart& c) { return c.script(chart::ChartFormat::kSvg, "out.svg"); }
-
-std::size_t Count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
-  return n;
-}
-
-BodyContactScene CoveredScene() {
-  BodyContactScene scene;
-  scene.robot_mass_kg = 10.0;
-  scene.speed_m_per_s = 0.5;
-  scene.robot_radius_m = 0.05;
-  scene.contact_area_m2 = 1e-4;
-  scene.covering = {2e6, 0.3, 0.01};
-  return scene;
-}
 
 }  // namespace
 
