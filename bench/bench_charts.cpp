@@ -13,7 +13,7 @@
 #include <covopt/optim.hpp>
 #include <covopt/audit/audit.hpp>
 
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 
 namespace {
 
@@ -28,13 +28,13 @@ report::SimulationReport History() {
   return r;
 }
 
-report::TrajectoryChartInput Trajectory() {
+chart::TrajectoryChartInput Trajectory() {
   std::vector<optim::MotionSample> samples;
   for (int k = 0; k <= 200; ++k) {  // a 2 s move, 100 Hz, a sine speed profile, 8..12 kg
     const double t = 0.01 * k;
     samples.push_back({t, 1.5 * std::sin(M_PI * t / 2.0), 10.0 + 2.0 * std::cos(M_PI * t)});
   }
-  report::TrajectoryChartInput input;
+  chart::TrajectoryChartInput input;
   input.check = optim::CheckTrajectory(input.scene, samples);
   input.trajectory_name = "bench.csv";
   input.tip_link = "fr3_link8";
@@ -60,16 +60,16 @@ bool HaveGnuplot(benchmark::State& state) {
   return false;
 }
 
-void Draw(benchmark::State& state, const report::GnuplotChart& chart) {
-  for (auto _ : state) benchmark::DoNotOptimize(report::DrawSvgCharts({&chart, 1}));
+void Draw(benchmark::State& state, const chart::GnuplotChart& chart) {
+  for (auto _ : state) benchmark::DoNotOptimize(chart::DrawSvgCharts({&chart, 1}));
 }
 
 void BM_HistoryChart(benchmark::State& state) {
   if (!HaveGnuplot(state)) return;
   const report::SimulationReport r = History();
   for (auto _ : state) {
-    const report::GnuplotChart chart = report::HistoryChart(r);
-    benchmark::DoNotOptimize(report::DrawSvgCharts({&chart, 1}));
+    const chart::GnuplotChart chart = chart::HistoryChart(r);
+    benchmark::DoNotOptimize(chart::DrawSvgCharts({&chart, 1}));
   }
 }
 BENCHMARK(BM_HistoryChart)->Unit(benchmark::kMillisecond);
@@ -81,8 +81,8 @@ void BM_DesignMapChart(benchmark::State& state) {
   request.materials = optim::SelectCandidates(materials::Catalog::BuiltIn());
   const optim::DesignResult result = optim::Design(request);
   for (auto _ : state) {
-    const report::GnuplotChart chart = report::DesignMapChart(optim::ComputeDesignMap(request, result));
-    benchmark::DoNotOptimize(report::DrawSvgCharts({&chart, 1}));
+    const chart::GnuplotChart chart = chart::DesignMapChart(optim::ComputeDesignMap(request, result));
+    benchmark::DoNotOptimize(chart::DrawSvgCharts({&chart, 1}));
   }
 }
 BENCHMARK(BM_DesignMapChart)->Unit(benchmark::kMillisecond);
@@ -99,25 +99,25 @@ BENCHMARK(BM_DesignMapGridOnly)->Unit(benchmark::kMillisecond);
 /// masses each).
 void BM_SpeedLimitChart(benchmark::State& state) {
   if (!HaveGnuplot(state)) return;
-  report::SpeedLimitChartInput input;
+  chart::SpeedLimitChartInput input;
   input.coverings = {{Scene{}, std::nullopt}, {Scene{}, std::string("soft")}};
   input.coverings[1].scene.covering = {2e6, 0.25, 0.01};
   for (auto _ : state) {
-    const report::GnuplotChart chart = report::SpeedLimitChart(input);
-    benchmark::DoNotOptimize(report::DrawSvgCharts({&chart, 1}));
+    const chart::GnuplotChart chart = chart::SpeedLimitChart(input);
+    benchmark::DoNotOptimize(chart::DrawSvgCharts({&chart, 1}));
   }
 }
 BENCHMARK(BM_SpeedLimitChart)->Unit(benchmark::kMillisecond);
 
 void BM_TrajectoryChart(benchmark::State& state) {
   if (!HaveGnuplot(state)) return;
-  Draw(state, report::TrajectoryChart(Trajectory()));
+  Draw(state, chart::TrajectoryChart(Trajectory()));
 }
 BENCHMARK(BM_TrajectoryChart)->Unit(benchmark::kMillisecond);
 
 void BM_AuditHeatMap(benchmark::State& state) {
   if (!HaveGnuplot(state)) return;
-  Draw(state, report::AuditHeatMap(Audit(), 1.0, "bench.csv"));
+  Draw(state, chart::AuditHeatMap(Audit(), 1.0, "bench.csv"));
 }
 BENCHMARK(BM_AuditHeatMap)->Unit(benchmark::kMillisecond);
 
@@ -127,13 +127,13 @@ void BM_AllChartsOneRun(benchmark::State& state) {
   optim::DesignRequest request;
   request.materials = optim::SelectCandidates(materials::Catalog::BuiltIn());
   const optim::DesignResult result = optim::Design(request);
-  report::SpeedLimitChartInput speed;
+  chart::SpeedLimitChartInput speed;
   speed.coverings = {{Scene{}, std::nullopt}};
-  const std::vector<report::GnuplotChart> charts = {
-      report::HistoryChart(History()), report::DesignMapChart(optim::ComputeDesignMap(request, result)),
-      report::SpeedLimitChart(speed), report::TrajectoryChart(Trajectory()),
-      report::AuditHeatMap(Audit(), 1.0, "bench.csv")};
-  for (auto _ : state) benchmark::DoNotOptimize(report::DrawSvgCharts(charts));
+  const std::vector<chart::GnuplotChart> charts = {
+      chart::HistoryChart(History()), chart::DesignMapChart(optim::ComputeDesignMap(request, result)),
+      chart::SpeedLimitChart(speed), chart::TrajectoryChart(Trajectory()),
+      chart::AuditHeatMap(Audit(), 1.0, "bench.csv")};
+  for (auto _ : state) benchmark::DoNotOptimize(chart::DrawSvgCharts(charts));
 }
 BENCHMARK(BM_AllChartsOneRun)->Unit(benchmark::kMillisecond);
 

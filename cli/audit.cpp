@@ -19,6 +19,7 @@
 #include "body_region_options.hpp"
 #include "covopt/audit/assemble.hpp"
 #include "covopt/audit/audit.hpp"
+#include "covopt/chart/region_charts.hpp"
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/report/audit_json.hpp"
 #include "covopt/report/csv.hpp"
@@ -440,10 +441,10 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
     if (stream_file) stream_file->Commit();
     if (o.csv_file && *o.csv_file != "-") WriteFileAtomically(*o.csv_file, CellsCsv(result));
     // The heat map, made once for --plot and --report.
-    std::optional<report::GnuplotChart> heat_map_chart;
-    const auto heat_map = [&]() -> const report::GnuplotChart& {
+    std::optional<chart::GnuplotChart> heat_map_chart;
+    const auto heat_map = [&]() -> const chart::GnuplotChart& {
       if (!heat_map_chart) {
-        heat_map_chart = report::AuditHeatMap(result, run.assembled.setup.rule.safety_factor,
+        heat_map_chart = chart::AuditHeatMap(result, run.assembled.setup.rule.safety_factor,
                                               std::filesystem::path(*o.trajectory).filename().string());
       }
       return *heat_map_chart;
@@ -451,7 +452,9 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
     if (o.plot_file) RunGnuplot(*o.plot_file, heat_map());
     if (o.json || o.report.file) {
       PrintAndReport(out, o.json, report::AuditJson(run.assembled.setup, result, run.assembled.input_warnings), o.run, o.report, run.inputs,
-                     report::ReportKind::kAudit, [&] { return std::vector{heat_map()}; });
+                     report::ReportKind::kAudit, [&] {
+                       return std::vector{chart::AuditRegionMap(result, run.assembled.setup.rule.safety_factor), heat_map()};
+                     });
     }
     if (!o.json && o.csv_file && *o.csv_file == "-") {
       out << CellsCsv(result);

@@ -17,7 +17,7 @@
 #include <fmt/ranges.h>
 
 #include "covopt/materials/material.hpp"
-#include "covopt/report/curve_chart.hpp"
+#include "covopt/chart/curve_chart.hpp"
 #include "covopt/report/materials_json.hpp"
 #include "covopt/report/materials_text.hpp"
 #include "covopt/scene_file/range.hpp"
@@ -335,7 +335,7 @@ int RunMaterials(const MaterialsOptions& options, std::ostream& out, std::ostrea
       if (options.plot_file) {
         if (auto problem = PlotProblem(*m, *options.plot_file)) return errors.BadInput(*problem);
         try {
-          RunGnuplot(*options.plot_file, report::CompressiveCurveChart(*m));
+          RunGnuplot(*options.plot_file, chart::CompressiveCurveChart(*m));
         } catch (const OutputError& e) {
           return errors.Failed(e);
         }

@@ -18,7 +18,7 @@
 /// materials whose compressive curve's stress at 25 % strain is in range, --has-curve those with
 /// a curve; the closing line says how many were left out for want of a curve. `show` prints the
 /// curve (its points, W at the last point, σ(25 %), source, rate, recovers, rate factor) and
-/// --plot draws it with gnuplot (report::CompressiveCurveChart). A bare range end is SI
+/// --plot draws it with gnuplot (chart::CompressiveCurveChart). A bare range end is SI
 /// and must be plausible for its quantity, as elsewhere ("--modulus 10..100" is refused:
 /// 10 Pa is no covering's modulus).
 ///

@@ -285,9 +285,9 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
   if (!result.ok()) return errors.Failed(result.message);
   if ((options.plot_file || options.report.file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
   // The design map, computed once for --plot and --report.
-  std::optional<report::GnuplotChart> design_map;
-  const auto design_map_chart = [&]() -> const report::GnuplotChart& {
-    if (!design_map) design_map = report::DesignMapChart(optim::ComputeDesignMap(r.request, result));
+  std::optional<chart::GnuplotChart> design_map;
+  const auto design_map_chart = [&]() -> const chart::GnuplotChart& {
+    if (!design_map) design_map = chart::DesignMapChart(optim::ComputeDesignMap(r.request, result));
     return *design_map;
   };
   if (options.csv || options.plot_file) {

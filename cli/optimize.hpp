@@ -81,7 +81,7 @@ struct OptimizeOptions {
   BodyRegionFlags body;
   /// --csv FILE: the candidate table as CSV (every candidate, SI units in the header).
   std::optional<std::string> csv;
-  /// --plot FILE.png|FILE.svg: the design map (optim::DesignMap, report::DesignMapChart); the
+  /// --plot FILE.png|FILE.svg: the design map (optim::DesignMap, chart::DesignMapChart); the
   /// head's design only (not with --body-region or scene ranges).
   std::optional<std::string> plot_file;
 };

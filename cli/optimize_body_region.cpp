@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "covopt/chart/region_charts.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/verdict.hpp"
 #include "covopt/optim/verdicts.hpp"
@@ -96,7 +97,11 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
       PrintAndReport(out, options.json,
                      report::BodyRegionDesignJson(request, result, BodyCriterion(request.rule, regions.has_head()),
                                                   input_warnings),
-                     options.run, options.report, inputs, report::ReportKind::kOptimize, nullptr);
+                     options.run, options.report, inputs, report::ReportKind::kOptimize,
+                     [&] {
+                       if (request.regions.empty()) return std::vector<chart::GnuplotChart>{};  // the head alone
+                       return std::vector{chart::BodyRegionDesignChart(request, result)};
+                     });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

@@ -113,11 +113,11 @@ void AddReportOption(CLI::App& command, ReportFlags& flags) {
 }
 
 void WriteReport(const std::string& file, report::ReportKind kind, const std::string& result_json,
-                 std::span<const report::GnuplotChart> charts, const report::ReportInfo& info) {
+                 std::span<const chart::GnuplotChart> charts, const report::ReportInfo& info) {
   std::string html;
   try {
     std::vector<report::SvgChart> drawn;
-    if (!charts.empty()) drawn = report::DrawSvgCharts(charts, SignalSafeScratch());
+    if (!charts.empty()) drawn = chart::DrawSvgCharts(charts, SignalSafeScratch());
     html = report::HtmlReport({kind, result_json, std::move(drawn), info});
   } catch (const std::exception& e) {  // gnuplot missing or failed; a result HtmlReport refuses
     throw OutputError(fmt::format("--report '{}': no report written: {}", file, e.what()));
@@ -131,7 +131,7 @@ void WriteReport(const std::string& file, report::ReportKind kind, const std::st
 
 void PrintAndReport(std::ostream& out, bool print_json, const std::string& json_object,
                     const std::optional<RunContext>& run, const ReportFlags& report, const ResultInputs& inputs,
-                    report::ReportKind kind, const std::function<std::vector<report::GnuplotChart>()>& charts) {
+                    report::ReportKind kind, const std::function<std::vector<chart::GnuplotChart>()>& charts) {
   std::string object = json_object;
   if (run) {  // a top-level result (a nested one, inside another's object, has neither)
     if (inputs.robot_model) object = report::WithRobotModel(object, *inputs.robot_model);
@@ -139,7 +139,7 @@ void PrintAndReport(std::ostream& out, bool print_json, const std::string& json_
   }
   const std::string stamped = WithRunProvenance(object, run);
   if (report.file) {
-    WriteReport(*report.file, kind, stamped, charts ? charts() : std::vector<report::GnuplotChart>{},
+    WriteReport(*report.file, kind, stamped, charts ? charts() : std::vector<chart::GnuplotChart>{},
                 ReportInfoOf(report, inputs));
   }
   if (print_json) out << stamped << '\n';

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 #include "covopt/report/html_report.hpp"
 #include "covopt/report/robot_model_json.hpp"
 #include "covopt/report/input_sources.hpp"
@@ -68,13 +68,13 @@ report::ReportInfo ReportInfoOf(const ReportFlags& flags, const ResultInputs& in
 
 /// Writes the report of `result_json` (a command's --json object with its provenance block)
 /// to `file`: HTML through the CLI's file writer (WriteFileAtomically), PDF through
-/// WriteReportPdf. The charts are drawn by one gnuplot run (report::DrawSvgCharts, its scratch
+/// WriteReportPdf. The charts are drawn by one gnuplot run (chart::DrawSvgCharts, its scratch
 /// files removed on Ctrl-C too).
 /// @throws OutputError (exit 1) naming the file when it cannot be written, when gnuplot is
 ///         missing or fails, or when result_json holds no reportable result (report::HtmlReport
 ///         refuses a failed run): no file is written then.
 void WriteReport(const std::string& file, report::ReportKind kind, const std::string& result_json,
-                 std::span<const report::GnuplotChart> charts, const report::ReportInfo& info = {});
+                 std::span<const chart::GnuplotChart> charts, const report::ReportInfo& info = {});
 
 /// The one way a result object leaves a command: `json_object` (the --json object) gets where
 /// its inputs came from (report::WithInputSources of inputs.origins) and the run's provenance
@@ -84,6 +84,6 @@ void WriteReport(const std::string& file, report::ReportKind kind, const std::st
 /// @throws OutputError when the report cannot be written (nothing is printed then).
 void PrintAndReport(std::ostream& out, bool print_json, const std::string& json_object,
                     const std::optional<RunContext>& run, const ReportFlags& report, const ResultInputs& inputs,
-                    report::ReportKind kind, const std::function<std::vector<report::GnuplotChart>()>& charts);
+                    report::ReportKind kind, const std::function<std::vector<chart::GnuplotChart>()>& charts);
 
 }  // namespace covopt::cli

@@ -276,7 +276,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
     if (options.csv_file && *options.csv_file != "-") WriteFileAtomically(*options.csv_file, CsvText(check));
     if (options.plot_file) {
       RunGnuplot(*options.plot_file,
-                 report::TrajectoryChart({check, run.scene.scene, run.limit, *options.file, run.tip_link}));
+                 chart::TrajectoryChart({check, run.scene.scene, run.limit, *options.file, run.tip_link}));
     }
   } catch (const OutputError& e) {
     return errors.Failed(e);
@@ -291,7 +291,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
                                                      : std::nullopt,
                                                  run.limit, run.input_warnings),
                      context, options.report, run.scene.inputs, report::ReportKind::kTrajectory, [&] {
-                       return std::vector{report::TrajectoryChart({check, run.scene.scene, run.limit, *options.file, run.tip_link})};
+                       return std::vector{chart::TrajectoryChart({check, run.scene.scene, run.limit, *options.file, run.tip_link})};
                      });
     } catch (const OutputError& e) {
       return errors.Failed(e);

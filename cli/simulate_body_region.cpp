@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "covopt/chart/region_charts.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/report/body_contact_json.hpp"
 #include "covopt/report/csv.hpp"
@@ -127,18 +128,27 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
     }
   }
 
-  std::optional<std::string> head_text;
+  std::optional<std::string> head_text;  // as printed: the JSON object with --json, else the text
+  std::optional<std::string> head_json;  // the report's (and --json's) object
   if (regions.has_head()) {
-    std::ostringstream head_out;
-    const int code = RunHead(options, head_out, err, plan.json);
-    if (code != 0) return code;
-    head_text = head_out.str();
+    for (const bool json : {plan.json, true}) {
+      if (json && !plan.json && !options.report.file) break;  // the text alone is wanted
+      std::ostringstream head_out;
+      const int code = RunHead(options, head_out, err, json);
+      if (code != 0) return code;
+      (json ? head_json : head_text) = head_out.str();
+      if (plan.json) break;
+    }
   }
   if (plan.json || options.report.file) {
     try {
       PrintAndReport(out, plan.json,
-                     report::BodyContactSimulationJson(scene, MaterialName(plan), judgements, sf, head_text, warnings),
-                     options.run, options.report, plan.inputs, report::ReportKind::kSimulate, nullptr);
+                     report::BodyContactSimulationJson(scene, MaterialName(plan), judgements, sf, head_json, warnings),
+                     options.run, options.report, plan.inputs, report::ReportKind::kSimulate, [&] {
+                       // The head alone (no ISO region judged) has its own text and no bars.
+                       if (judgements.empty()) return std::vector<chart::GnuplotChart>{};
+                       return std::vector{chart::BodyRegionRatioChart(scene, judgements, rule)};
+                     });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

@@ -102,13 +102,13 @@ std::string CsvText(const SpeedLimitPlan& plan, const std::vector<SpeedLimitRow>
 
 }  // namespace
 
-report::GnuplotChart SpeedLimitChartOf(const SpeedLimitPlan& plan) {
-  report::SpeedLimitChartInput input{{}, plan.values, plan.options};
+chart::GnuplotChart SpeedLimitChartOf(const SpeedLimitPlan& plan) {
+  chart::SpeedLimitChartInput input{{}, plan.values, plan.options};
   for (const SimulationPlan& covering : plan.coverings) {
     input.coverings.push_back(
         {covering.scene, covering.covering_material ? std::optional(covering.covering_material->name) : std::nullopt});
   }
-  return report::SpeedLimitChart(input);
+  return chart::SpeedLimitChart(input);
 }
 
 void SetupSpeedLimit(CLI::App* sub, SpeedLimitCommandOptions& options) {

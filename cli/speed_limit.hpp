@@ -88,8 +88,8 @@ void SetupSpeedLimit(CLI::App* sub, SpeedLimitCommandOptions& options);
 /// @throws InputError naming the flag, the value and what is allowed.
 SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options);
 
-/// The Safety-Map chart of the plan (report::SpeedLimitChart; computes its curves).
-report::GnuplotChart SpeedLimitChartOf(const SpeedLimitPlan& plan);
+/// The Safety-Map chart of the plan (chart::SpeedLimitChart; computes its curves).
+chart::GnuplotChart SpeedLimitChartOf(const SpeedLimitPlan& plan);
 
 /// `speed-limit --body-region ...` (speed_limit_body_region.cpp): one row per target, bare and
 /// with the covering, one block per covering (--material) and robot mass. Returns the exit code.

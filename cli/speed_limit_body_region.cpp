@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "covopt/chart/region_charts.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/optim/target_speed_limits.hpp"
 #include "covopt/report/body_contact_json.hpp"
@@ -157,7 +158,8 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
                                                       plan.coverings.size() == 1 ? MaterialName(first) : std::nullopt,
                                                       BodyCriterion(rule, regions.has_head()), rule.safety_factor,
                                                       rows, warnings),
-                     options.run, options.report, first.inputs, report::ReportKind::kSpeedLimit, nullptr);
+                     options.run, options.report, first.inputs, report::ReportKind::kSpeedLimit,
+                     [&] { return std::vector{chart::BodyRegionSpeedChart(rows)}; });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

@@ -30,7 +30,7 @@
 #include "sweep_axis_option.hpp"
 #include "catalog_options.hpp"
 #include "output.hpp"
-#include "covopt/report/sweep_charts.hpp"
+#include "covopt/chart/sweep_charts.hpp"
 #include "plot.hpp"
 #include "progress.hpp"
 #include "rule_options.hpp"
@@ -41,15 +41,15 @@
 namespace covopt::cli {
 namespace {
 
-using report::ChartPoint;
-using report::ChartPointOf;
-using report::Display;
+using chart::ChartPoint;
+using chart::ChartPointOf;
+using chart::Display;
 using report::FindResultColumn;
-using report::PlotInput;
+using chart::PlotInput;
 using report::ResultColumn;
 using report::SweepCsvWriter;
-using report::SweepFamiliesScript;
-using report::SweepMapScript;
+using chart::SweepFamiliesScript;
+using chart::SweepMapScript;
 using report::SweepResultColumns;
 
 constexpr int kMaxThreads = 4096;

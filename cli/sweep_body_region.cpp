@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include "covopt/chart/body_region_sweep_chart.hpp"
 #include "covopt/optim/body_region_sweep.hpp"
 #include "covopt/report/body_region_sweep_output.hpp"
 #include "errors.hpp"
@@ -67,7 +68,7 @@ int RunBodyRegionSweep(const SweepCommandOptions& options, const BodyRegionPlan&
     if (options.plot_file) {
       const PlotFormat format = *PlotFormatFor(*options.plot_file);
       RunGnuplot(*options.plot_file, [&](const std::string& output) {
-        return report::BodyRegionSweepChart(table, x, y ? &*y : nullptr, limits, plan.safety_factor, format, output);
+        return chart::BodyRegionSweepChart(grid, x, y ? &*y : nullptr, limits, plan.safety_factor, format, output);
       });
     }
   } catch (const OutputError& e) {

@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 
 #include "covopt/core/scene_fields.hpp"
-#include "covopt/report/tornado_chart.hpp"
+#include "covopt/chart/tornado_chart.hpp"
 #include "errors.hpp"
 #include "plot.hpp"
 #include "quantity.hpp"
@@ -201,7 +201,7 @@ void SetNominalValues(Scene& scene, std::span<const SceneRange> ranges) {
 
 void PlotTornado(const std::string& path, const optim::ElasticityTable& table, bool svg) {
   RunGnuplot(path, [&](const std::string& output) {
-    return report::TornadoChart(table, svg ? PlotFormat::kSvg : PlotFormat::kPng, output);
+    return chart::TornadoChart(table, svg ? PlotFormat::kSvg : PlotFormat::kPng, output);
   });
 }
 

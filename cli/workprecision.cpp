@@ -12,6 +12,7 @@
 #include <fmt/ostream.h>
 #include <fmt/ranges.h>
 
+#include "covopt/chart/work_precision_chart.hpp"
 #include "covopt/core/work_precision.hpp"
 #include "covopt/optim/design_work_precision.hpp"
 #include "covopt/report/work_precision_report.hpp"
@@ -82,12 +83,12 @@ int RunDesignStudy(const WorkPrecisionOptions& options, std::ostream& out, std::
     if (options.csv_file) WriteFileAtomically(*options.csv_file, report::DesignWorkPrecisionCsv(study));
     if (options.plot_file) {
       RunGnuplot(*options.plot_file, [&](const std::string& path) {
-        return report::DesignWorkPrecisionChart(study, true, *PlotFormatFor(*options.plot_file), path, title);
+        return chart::DesignWorkPrecisionChart(study, true, *PlotFormatFor(*options.plot_file), path, title);
       });
     }
     if (options.tolerance_plot_file) {
       RunGnuplot(*options.tolerance_plot_file, [&](const std::string& path) {
-        return report::DesignWorkPrecisionChart(study, false, *PlotFormatFor(*options.tolerance_plot_file), path, title);
+        return chart::DesignWorkPrecisionChart(study, false, *PlotFormatFor(*options.tolerance_plot_file), path, title);
       });
     }
   } catch (const OutputError& e) {
@@ -272,12 +273,12 @@ int RunWorkPrecision(const WorkPrecisionOptions& options, std::ostream& out, std
     if (options.csv_file) WriteFileAtomically(*options.csv_file, report::WorkPrecisionCsv(points));
     if (options.plot_file) {
       RunGnuplot(*options.plot_file, [&](const std::string& path) {
-        return report::WorkPrecisionChart(study, *PlotFormatFor(*options.plot_file), path, title);
+        return chart::WorkPrecisionChart(study, *PlotFormatFor(*options.plot_file), path, title);
       });
     }
     if (options.tolerance_plot_file) {
       RunGnuplot(*options.tolerance_plot_file, [&](const std::string& path) {
-        return report::WorkPrecisionToleranceChart(study, *PlotFormatFor(*options.tolerance_plot_file), path, title);
+        return chart::WorkPrecisionToleranceChart(study, *PlotFormatFor(*options.tolerance_plot_file), path, title);
       });
     }
   } catch (const OutputError& e) {

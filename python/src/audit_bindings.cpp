@@ -26,6 +26,7 @@
 #include "covopt/robot/payload.hpp"
 #include "covopt/robot/surface.hpp"
 #include "covopt/scene_file/link_coverings.hpp"
+#include "covopt/chart/region_charts.hpp"
 #include "report_charts.hpp"
 #include "robot_inputs.hpp"
 #include "scene_keywords.hpp"
@@ -204,10 +205,12 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
     throw std::invalid_argument(inputs.Attributed(e.what()));
   }
   py::dict d = JsonToPython(report::AuditJson(assembled.setup, result, assembled.input_warnings, -1));
-  if (result.ratio_over_time.empty()) return d;  // the heat map needs keep_ratio_over_time=True
+  // The link x region map always; the map over time needs keep_ratio_over_time=True.
   return WithReportCharts(std::move(d), [result, sf = assembled.setup.rule.safety_factor,
                                          name = TrajectoryName(trajectory)] {
-    return std::vector{report::AuditHeatMap(result, sf, name)};
+    std::vector charts{chart::AuditRegionMap(result, sf)};
+    if (!result.ratio_over_time.empty()) charts.push_back(chart::AuditHeatMap(result, sf, name));
+    return charts;
   });
 }
 

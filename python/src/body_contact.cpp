@@ -30,6 +30,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "covopt/chart/region_charts.hpp"
 #include "covopt/core/body_contact.hpp"
 #include "covopt/core/physical_floors.hpp"
 #include "covopt/core/impact_result.hpp"
@@ -52,6 +53,7 @@
 #include "covopt/scene_file/spelling.hpp"
 #include "covopt/scene_file/targets.hpp"
 #include "body_region_inputs.hpp"
+#include "report_charts.hpp"
 #include "robot_inputs.hpp"
 #include "scene_keywords.hpp"
 
@@ -296,7 +298,9 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
     }
     d["history"] = columns;
   }
-  return d;
+  return WithReportCharts(std::move(d), [scene, judgements, judge] {
+    return std::vector{chart::BodyRegionRatioChart(scene, judgements, judge)};
+  });
 }
 
 /// covopt.speed_limit(scene, body_region=..., values=None): `covopt speed-limit --body-region
@@ -336,9 +340,11 @@ py::dict SpeedLimitTable(const SceneInputs& inputs, const py::kwargs& kwargs) {
   std::vector<std::string> warnings = InputWarnings(inputs);
   warnings.insert(warnings.end(), targets.notes.begin(), targets.notes.end());
   if (const auto note = scene_file::BarePressureNote(targets)) warnings.push_back(AsKeywords(*note));
-  return JsonToPython(report::BodyRegionSpeedLimitJson(scene, MaterialName(inputs),
-                                                       optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head()),
-                                                       options.rule.safety_factor, rows, warnings));
+  return WithReportCharts(
+      JsonToPython(report::BodyRegionSpeedLimitJson(scene, MaterialName(inputs),
+                                                    optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head()),
+                                                    options.rule.safety_factor, rows, warnings)),
+      [rows] { return std::vector{chart::BodyRegionSpeedChart(rows)}; });
 }
 
 /// covopt.optimize(scene, body_region=[...]): the covering for every region at the scene's
@@ -377,9 +383,11 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
   }
-  return JsonToPython(report::BodyRegionDesignJson(request, result,
-                                                   optim::BodyRegionCriterion(request.rule, targets.has_head()),
-                                                   DesignWarnings(inputs, targets)));
+  py::dict d = JsonToPython(report::BodyRegionDesignJson(request, result,
+                                                        optim::BodyRegionCriterion(request.rule, targets.has_head()),
+                                                        DesignWarnings(inputs, targets)));
+  if (request.regions.empty()) return d;  // the head alone: no region's bars
+  return WithReportCharts(std::move(d), [request, result] { return std::vector{chart::BodyRegionDesignChart(request, result)}; });
 }
 
 /// covopt.check_trajectory(..., body_region=...): every sample against the ISO regions named

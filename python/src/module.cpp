@@ -402,7 +402,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   report.input_warnings = InputWarnings(inputs);
   py::dict result = JsonToPython(report::SimulationJson(report, -1));
   if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model);
-  return WithReportCharts(std::move(result), [report] { return std::vector{report::HistoryChart(report)}; });
+  return WithReportCharts(std::move(result), [report] { return std::vector{chart::HistoryChart(report)}; });
 }
 
 /// A list of strings from a str or a sequence of them.
@@ -575,7 +575,7 @@ py::dict Optimize(const SceneInputs& inputs, const py::kwargs& kwargs) {
   }
   if (!result.ok()) RaiseComputationError(result.message, std::string(optim::ToString(result.status)));
   return WithReportCharts(JsonToPython(report::DesignJson(request, result, {}, -1)), [request, result] {
-    return std::vector{report::DesignMapChart(optim::ComputeDesignMap(request, result))};
+    return std::vector{chart::DesignMapChart(optim::ComputeDesignMap(request, result))};
   });
 }
 

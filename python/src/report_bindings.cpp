@@ -13,7 +13,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 #include "covopt/report/html_report.hpp"
 #include "covopt/report/provenance.hpp"
 #include "report_charts.hpp"
@@ -43,8 +43,8 @@ std::string HtmlReport(const std::string& kind, const std::string& result_json, 
       py::gil_scoped_release release;
       std::vector<report::SvgChart> drawn;
       if (maker != nullptr && maker->make) {
-        const std::vector<report::GnuplotChart> gnuplot = maker->make();
-        drawn = report::DrawSvgCharts(gnuplot);
+        const std::vector<chart::GnuplotChart> gnuplot = maker->make();
+        drawn = chart::DrawSvgCharts(gnuplot);
       }
       return report::HtmlReport({k, result_json, std::move(drawn), {}});
     }

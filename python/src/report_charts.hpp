@@ -3,7 +3,7 @@
 /// The charts of a Python result's report (result.to_html): the bindings that make a reportable
 /// result put a ReportCharts under the dict's private key "_report_charts"; covopt/_results.py
 /// takes it off the dict (it never reaches to_dict()) and hands it to html_report. It holds the
-/// typed result and draws nothing until to_html asks (report/charts.hpp, as the CLI's --report).
+/// typed result and draws nothing until to_html asks (covopt/chart/charts.hpp, as the CLI's --report).
 
 #include <filesystem>
 #include <functional>
@@ -13,13 +13,13 @@
 
 #include <pybind11/pybind11.h>
 
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 
 namespace covopt::python {
 
 /// The report's charts, made on demand from what the binding captured.
 struct ReportCharts {
-  std::function<std::vector<report::GnuplotChart>()> make;
+  std::function<std::vector<chart::GnuplotChart>()> make;
 };
 
 /// A trajectory argument's name for a chart title: a path's file name, "<arrays>" for data.
@@ -31,7 +31,7 @@ inline std::string TrajectoryName(const pybind11::object& trajectory) {
 }
 
 /// `dict` with `make` under "_report_charts".
-inline pybind11::dict WithReportCharts(pybind11::dict dict, std::function<std::vector<report::GnuplotChart>()> make) {
+inline pybind11::dict WithReportCharts(pybind11::dict dict, std::function<std::vector<chart::GnuplotChart>()> make) {
   dict["_report_charts"] = pybind11::cast(ReportCharts{std::move(make)});
   return dict;
 }

@@ -23,6 +23,7 @@
 #include "covopt/optim/design.hpp"
 #include "covopt/optim/robust_design.hpp"
 #include "covopt/report/robust_json.hpp"
+#include "report_charts.hpp"
 #include "scene_keywords.hpp"
 
 namespace py = pybind11;
@@ -171,8 +172,10 @@ py::object UncertainSimulation(const SceneInputs& scene, const py::kwargs& kwarg
   impact.covering_material = b.scene.covering_material;
   impact.covering_poisson_assumed = b.scene.covering_poisson_assumed;
   b.scene.Judge(impact);
-  return JsonToPython(report::UncertainSimulationJson(impact, &*b.box, &worst, probability ? &*probability : nullptr,
-                                                      nullptr, -1));
+  // The report's chart: the worst case's history (as the CLI's simulate with ranges).
+  return WithReportCharts(JsonToPython(report::UncertainSimulationJson(impact, &*b.box, &worst,
+                                                                       probability ? &*probability : nullptr, nullptr, -1)),
+                          [impact] { return std::vector{chart::HistoryChart(impact)}; });
 }
 
 py::object WorstCase(const SceneInputs& scene, const py::kwargs& kwargs) {

@@ -159,9 +159,9 @@ py::dict SpeedLimitTable(const SceneInputs& scene, const py::kwargs& kwargs) {
   options.covering_compressive_strength_Pa = 0.0;
   py::dict table = JsonToPython(report::SpeedLimitJson(quantity, coverings.front().scene, options, rows, notes, -1));
   if (!by_speed) return table;  // the chart draws the max safe speed over the mass, as the CLI's --plot
-  report::SpeedLimitChartInput chart{{}, values, options};
-  for (const optim::SpeedLimitCovering& c : coverings) chart.coverings.push_back({c.scene, c.material});
-  return WithReportCharts(std::move(table), [chart = std::move(chart)] { return std::vector{report::SpeedLimitChart(chart)}; });
+  chart::SpeedLimitChartInput input{{}, values, options};
+  for (const optim::SpeedLimitCovering& c : coverings) input.coverings.push_back({c.scene, c.material});
+  return WithReportCharts(std::move(table), [input = std::move(input)] { return std::vector{chart::SpeedLimitChart(input)}; });
 }
 
 }  // namespace

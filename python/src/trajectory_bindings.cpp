@@ -77,11 +77,11 @@ py::object CheckTrajectory(const py::object& urdf, const std::string& tip, const
   if (check.status == optim::TrajectoryCheckStatus::kEvaluationFailed) {
     RaiseComputationError(check.message, std::string(optim::ToString(check.status)));  // as the CLI's exit 1
   }
-  report::TrajectoryChartInput chart{check, inputs.scene, options.limit, TrajectoryName(trajectory), tip};
+  chart::TrajectoryChartInput input{check, inputs.scene, options.limit, TrajectoryName(trajectory), tip};
   return WithReportCharts(
       JsonToPython(report::TrajectoryCheckJson(check, motion, inputs.scene, inputs.covering_material, options.limit,
                                                InputAndCrushWarnings(inputs), -1)),
-      [chart = std::move(chart)] { return std::vector{report::TrajectoryChart(chart)}; });
+      [input = std::move(input)] { return std::vector{chart::TrajectoryChart(input)}; });
 }
 
 }  // namespace

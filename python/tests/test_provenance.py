@@ -138,7 +138,11 @@ def _figures(html):
      ["audit", "--urdf", str(FR3), "--tip", "fr3_link8", "--trajectory", str(PICK), "--covering-thickness", "20mm",
       "--covering-modulus", "0.5MPa", "--covering-poisson", "0.45", "--contact-area", "1cm2",
       "--flat-face-radius", "20mm"]),
-], ids=["simulate", "optimize", "speed-limit", "trajectory", "audit"])
+    (lambda: covopt.simulate(covopt.Scene(robot_mass=10, speed=0.5), body_region="chest", contact_area="1cm2"),
+     ["simulate", "--robot-mass", "10kg", "--speed", "0.5m/s", "--body-region", "chest", "--contact-area", "1cm2"]),
+    (lambda: covopt.speed_limit(covopt.Scene(robot_mass=10), body_region="all", contact_area="1cm2"),
+     ["speed-limit", "--robot-mass", "10kg", "--body-region", "all", "--contact-area", "1cm2"]),
+], ids=["simulate", "optimize", "speed-limit", "trajectory", "audit", "simulate-region", "speed-limit-regions"])
 def test_to_html_draws_the_cli_reports_charts(tmp_path, cli, python_call, cli_args):
     """result.to_html() has the charts of the CLI's --report for the same inputs, the same SVG
     (one library function draws both), and the chart maker never shows in to_dict()."""
@@ -150,5 +154,7 @@ def test_to_html_draws_the_cli_reports_charts(tmp_path, cli, python_call, cli_ar
     assert code == 0, err
     cli_figures = _figures(cli_file.read_text(encoding="utf-8"))
     python_figures = _figures(python_html)
-    assert len(cli_figures) == 1 and "<svg" in cli_figures[0]
+    # One chart each; the audit's two: the link x region map and the ratio over time.
+    assert len(cli_figures) == (2 if cli_args[0] == "audit" else 1)
+    assert all("<svg" in figure for figure in cli_figures)
     assert python_figures == cli_figures

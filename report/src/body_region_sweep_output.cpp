@@ -19,6 +19,19 @@ std::string AxisText(const SweepAxisArgument& axis, double value) {
   return fmt::format("{}", value);
 }
 
+/// The axis's CSV header: its name and SI unit, "speed [m/s]" ("[-]" for a pure number).
+std::string AxisHeader(const SweepAxisArgument& axis) {
+  const std::string_view unit = SiUnit(axis.field->spec.kind);
+  return fmt::format("{} [{}]", axis.name, unit.empty() ? "-" : unit);
+}
+
+/// A value of the axis with its SI unit for the summary: "10 kg", "fixed".
+std::string AxisValue(const SweepAxisArgument& axis, double value) {
+  const std::string text = AxisText(axis, value);
+  const std::string_view unit = SiUnit(axis.field->spec.kind);
+  return std::isfinite(value) && !unit.empty() ? fmt::format("{} {}", text, unit) : text;
+}
+
 std::string Number(double value) { return std::isfinite(value) ? fmt::format("{}", value) : std::string(); }
 
 constexpr std::string_view kColumns[] = {"peak_force_N",      "peak_pressure_Pa", "covering_deflection_m",
@@ -48,8 +61,8 @@ std::vector<std::string> VerdictCells(const optim::BodyRegionJudgement& v) {
 BodyRegionSweepTable LayOutBodyRegionSweep(std::span<const optim::BodyRegionSweepPoint> grid,
                                            const SweepAxisArgument& x, const SweepAxisArgument* y) {
   BodyRegionSweepTable t;
-  std::vector<std::string> header{x.name};
-  if (y) header.push_back(y->name);
+  std::vector<std::string> header{AxisHeader(x)};
+  if (y) header.push_back(AxisHeader(*y));
   header.insert(header.end(), std::begin(kColumns), std::end(kColumns));
   AppendCsvRecord(t.csv, header);
   const std::vector<double> y_values = y ? y->values : std::vector<double>{0.0};
@@ -65,13 +78,10 @@ BodyRegionSweepTable LayOutBodyRegionSweep(std::span<const optim::BodyRegionSwee
         const optim::BodyRegionJudgement& v = *point.judgement;
         for (std::string& cell : VerdictCells(v)) row.push_back(std::move(cell));
         if (v.admissible) ++t.admissible;
-        if (std::isfinite(xv) && std::isfinite(yv)) {
-          t.chart_data += y ? fmt::format("{} {} {}\n", xv, yv, v.governing_ratio) : fmt::format("{} {}\n", xv, v.governing_ratio);
-        }
         if (v.governing_ratio > t.worst) {
           t.worst = v.governing_ratio;
-          t.worst_at = fmt::format("{} = {}{}, {}", x.name, AxisText(x, xv),
-                                   y ? fmt::format(", {} = {}", y->name, AxisText(*y, yv)) : std::string(),
+          t.worst_at = fmt::format("{} = {}{}, {}", x.name, AxisValue(x, xv),
+                                   y ? fmt::format(", {} = {}", y->name, AxisValue(*y, yv)) : std::string(),
                                    optim::ToString(v.governing));
         }
       } else {  // a point outside the model's range
@@ -81,34 +91,8 @@ BodyRegionSweepTable LayOutBodyRegionSweep(std::span<const optim::BodyRegionSwee
       }
       AppendCsvRecord(t.csv, row);
     }
-    t.chart_data += "\n";
   }
   return t;
-}
-
-std::string BodyRegionSweepChart(const BodyRegionSweepTable& table, const SweepAxisArgument& x,
-                                 const SweepAxisArgument* y, const materials::BodyLimits& limits,
-                                 double safety_factor, ChartFormat format, const std::string& output_path) {
-  const double bound = 1.0 / safety_factor;
-  std::string s = "set encoding utf8\n" + GnuplotTerminal(format, 1000, 700);
-  s += fmt::format("set output {}\n$data << EOD\n{}EOD\n", GnuplotQuoted(output_path), table.chart_data);
-  s += fmt::format("set title {}\n",
-                   GnuplotQuoted(fmt::format("governing ratio (line: {:g}); {}", 1.0 / safety_factor, limits.Describe())));
-  s += fmt::format("set xlabel {}\n", GnuplotQuoted(x.name + " [" + std::string(SiUnit(x.field->spec.kind)) + "]"));
-  if (x.log) s += "set logscale x\n";
-  if (y) {
-    s += fmt::format("set ylabel {}\n", GnuplotQuoted(y->name + " [" + std::string(SiUnit(y->field->spec.kind)) + "]"));
-    if (y->log) s += "set logscale y\n";
-    s += "set view map\nset contour base\nunset surface\nset pm3d at b\nunset key\n";
-    s += fmt::format("set cntrparam levels discrete {}\nset cblabel 'governing ratio'\n", bound);
-    s += fmt::format("splot $data using 1:2:3 with pm3d notitle, $data using 1:2:3 with lines linewidth 2 "
-                     "linecolor rgb '#000000' title 'ratio = {:g}'\n", bound);
-  } else {
-    s += "set ylabel 'governing ratio'\nset grid\n";
-    s += fmt::format("plot $data using 1:2 with lines linewidth 2 title 'governing ratio', {:g} with lines "
-                     "dashtype 2 linecolor rgb '#c0392b' title 'limit (1/SF)'\n", bound);
-  }
-  return s + "unset output\n";
 }
 
 BodyRegionSweepColumns BodyRegionSweepColumnsOf(std::span<const optim::BodyRegionSweepPoint> grid,

@@ -38,7 +38,7 @@ extern "C" void RemoveTemporariesAndDie(int signal_number) {
   for (TemporarySlot& slot : g_temporaries) {
     if (slot.state.load() == 2) ::unlink(slot.path);
   }
-  // Then the registered directories, empty now (gnuplot's scratch directory, report/charts.hpp).
+  // Then the registered directories, empty now (gnuplot's scratch directory, covopt/chart/charts.hpp).
   for (TemporarySlot& slot : g_temporaries) {
     if (slot.state.load() == 2) ::rmdir(slot.path);
   }

@@ -20,7 +20,7 @@
 #include <fmt/format.h>
 
 #include "covopt/internal/text.hpp"
-#include "covopt/report/charts.hpp"
+#include "covopt/report/find_on_path.hpp"
 
 // After the project headers: <csignal> (and <sys/wait.h>, which includes it) defines macros
 // (si_value) that clash with their parameter names.

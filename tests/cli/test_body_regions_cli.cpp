@@ -296,7 +296,7 @@ TEST_CASE("sweep --body-region: one CSV row per point, each the body contact sim
   REQUIRE(run.exit_code == 0);
   const auto lines = SplitLines(run.out);
   REQUIRE(lines.size() == 1 + 12);
-  CHECK(lines[0].rfind("speed,covering-thickness,peak_force_N,peak_pressure_Pa", 0) == 0);
+  CHECK(lines[0].rfind("speed [m/s],covering-thickness [m],peak_force_N,peak_pressure_Pa", 0) == 0);
   // The bare rows (thickness 0) are Annex A's force v sqrt(mu k); a covered row is simulate's.
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const std::string& line = lines[i];

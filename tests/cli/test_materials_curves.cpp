@@ -16,7 +16,7 @@
 
 #include "cli_test_support.hpp"
 #include "covopt/materials.hpp"
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 
 using covopt::cli::testing::CliRun;
 using covopt::cli::testing::Run;

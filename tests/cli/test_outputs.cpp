@@ -169,7 +169,7 @@ TEST_CASE("the gnuplot script labels both axes and carries the whole history", "
   report.verdict = covopt::optim::HeadVerdict(report.result.peaks, true, {}, covopt::optim::DesignRule{});
   report.time_options = options;
   const std::string script =
-      covopt::report::HistoryChart(report).script(covopt::report::ChartFormat::kPng, "/tmp/it's.png");
+      covopt::chart::HistoryChart(report).script(covopt::chart::ChartFormat::kPng, "/tmp/it's.png");
   CHECK_THAT(script, Contains("set terminal pngcairo") && Contains("set output '/tmp/it''s.png'") &&
                          Contains("set xlabel 'time [ms]'") && Contains("'force [N]'") &&
                          Contains("tensile stress σ_t [MPa]") && Contains("axes x1y2") &&
@@ -205,7 +205,7 @@ TEST_CASE("the force/stress chart marks both limits, and the derated ones with a
   limits.laceration_tensile_stress_Pa = 2e6;
   limits.contusion_energy_density_J_per_m2 = 3e4;
   report.verdict = covopt::optim::HeadVerdict(report.result.peaks, true, limits, covopt::optim::DesignRule{});
-  std::string script = covopt::report::HistoryChart(report).script(covopt::report::ChartFormat::kSvg, "c.svg");
+  std::string script = covopt::chart::HistoryChart(report).script(covopt::chart::ChartFormat::kSvg, "c.svg");
   // The laceration limit on the tensile axis (MPa), the contusion limit on the energy
   // density panel (J/cm²): the verdict's limits, not the defaults.
   CHECK_THAT(script, Contains("     2 axes x1y2 with lines") &&
@@ -215,7 +215,7 @@ TEST_CASE("the force/stress chart marks both limits, and the derated ones with a
   CHECK_THAT(script, !Contains("derated"));
 
   report.verdict = covopt::optim::HeadVerdict(report.result.peaks, true, limits, covopt::optim::DesignRule{2.0});
-  script = covopt::report::HistoryChart(report).script(covopt::report::ChartFormat::kSvg, "c.svg");
+  script = covopt::chart::HistoryChart(report).script(covopt::chart::ChartFormat::kSvg, "c.svg");
   CHECK_THAT(script, Contains("1 axes x1y2 with lines") &&
                          Contains("'derated limit 1 MPa (limit / safety factor 2)'") &&
                          Contains("'derated limit 1.5 J/cm² (limit / safety factor 2)'"));

@@ -1,8 +1,8 @@
 #pragma once
 /// @file body_region_sweep_output.hpp
 /// The outputs of `covopt sweep --body-region R` (optim::SweepBodyRegion over one ISO region):
-/// the CSV, the numbers of the summary and the gnuplot script of the governing ratio (a line
-/// over one axis, a map with its contour at 1/SF over two).
+/// the CSV, the numbers of the summary and the data of its chart
+/// (covopt/chart/body_region_sweep_chart.hpp).
 
 #include <cstddef>
 #include <span>
@@ -12,14 +12,13 @@
 
 #include "covopt/materials/body_regions.hpp"
 #include "covopt/optim/body_region_sweep.hpp"
-#include "covopt/report/charts.hpp"
 #include "covopt/report/sweep_axis.hpp"
 
 namespace covopt::report {
 
 /// The grid laid out: its CSV and what the summary and the chart need.
 struct BodyRegionSweepTable {
-  /// The CSV: the axes' names (x, then y), then peak_force_N, peak_pressure_Pa,
+  /// The CSV: the axes' names with their SI units ("speed [m/s]", x then y), then peak_force_N, peak_pressure_Pa,
   /// covering_deflection_m, fully_compressed, force_ratio, pressure_ratio, compression_ratio,
   /// crush_ratio, governing, governing_ratio, admissible, error; one row per point, x slowest
   /// within each y block (an infinite mass "fixed", an infinite radius "flat").
@@ -27,23 +26,15 @@ struct BodyRegionSweepTable {
   std::size_t points = 0;      ///< grid points
   std::size_t admissible = 0;  ///< points within every limit
   std::size_t invalid = 0;     ///< points outside the model's range (the CSV's error column)
-  /// The largest governing ratio and where: "robot-mass = 10, speed = 1.5, force"; -1 and ""
+  /// The largest governing ratio and where: "robot-mass = 10 kg, speed = 1.5 m/s, force"; -1 and ""
   /// when no point has a verdict.
   double worst = -1.0;
   std::string worst_at;
-  /// gnuplot's data: "x [y] governing-ratio" per finite point, a blank line after each y block.
-  std::string chart_data;
 };
 
 /// Lays out `grid` (optim::SweepBodyRegion's points over `x` and, if given, `y`, in its order).
 BodyRegionSweepTable LayOutBodyRegionSweep(std::span<const optim::BodyRegionSweepPoint> grid,
                                            const SweepAxisArgument& x, const SweepAxisArgument* y);
-
-/// The gnuplot script of the governing ratio over the grid (`table.chart_data`): a line with the
-/// limit 1/`safety_factor` dashed (one axis), or a map with its contour at 1/`safety_factor`.
-std::string BodyRegionSweepChart(const BodyRegionSweepTable& table, const SweepAxisArgument& x,
-                                 const SweepAxisArgument* y, const materials::BodyLimits& limits,
-                                 double safety_factor, ChartFormat format, const std::string& output_path);
 
 /// One column of the grid as values per point (Python's covopt.sweep with body_region):
 /// a number, NaN where the point is invalid or the quantity not evaluated; or a flag (`flag`),

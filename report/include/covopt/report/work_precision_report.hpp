@@ -1,9 +1,8 @@
 #pragma once
 /// @file work_precision_report.hpp
 /// The outputs of `covopt workprecision` (covopt::MeasureWorkPrecision, and with --design
-/// optim::MeasureDesignWorkPrecision): the JSON object, the CSV and the gnuplot scripts of its
-/// two charts (worst error against CPU time per impact; worst error against the requested
-/// tolerance). The CLI prints the table and writes these files.
+/// optim::MeasureDesignWorkPrecision): the JSON object and the CSV (its charts are
+/// covopt/chart/work_precision_chart.hpp). The CLI prints the table and writes these files.
 
 #include <string>
 #include <vector>
@@ -11,7 +10,6 @@
 #include "covopt/core/scene.hpp"
 #include "covopt/core/work_precision.hpp"
 #include "covopt/optim/design_work_precision.hpp"
-#include "covopt/report/charts.hpp"
 
 namespace covopt::report {
 
@@ -35,20 +33,5 @@ std::string WorkPrecisionCsv(const std::vector<WorkPrecisionPoint>& points);
 
 /// The CSV of `covopt workprecision --design --csv`: a header, then one row per search.
 std::string DesignWorkPrecisionCsv(const optim::DesignWorkPrecisionResult& study);
-
-/// The gnuplot script of the work-precision chart: worst error against CPU time per impact
-/// (log-log), one line per series, the exact path as one point.
-std::string WorkPrecisionChart(const WorkPrecisionResult& study, ChartFormat format, const std::string& output_path,
-                               const std::string& title);
-
-/// The gnuplot script of the tolerance chart: worst error against the requested tolerance,
-/// with the lines error = rtol and error = 100 rtol.
-std::string WorkPrecisionToleranceChart(const WorkPrecisionResult& study, ChartFormat format,
-                                        const std::string& output_path, const std::string& title);
-
-/// One chart of the design study: for each method, the error of b_c* (solid) and of E_c*
-/// (dashed) against the search's CPU time (`cost`) or against the requested rtol.
-std::string DesignWorkPrecisionChart(const optim::DesignWorkPrecisionResult& study, bool cost, ChartFormat format,
-                                     const std::string& output_path, const std::string& title);
 
 }  // namespace covopt::report

@@ -4,9 +4,9 @@
 /// drawn by gnuplot like every chart of covopt (charts.hpp).
 
 #include "covopt/materials/material.hpp"
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
 
 /// `materials show --plot`: the curve's stress σ [kPa] over strain [%] (its points marked,
 /// piecewise linear from the origin), W(ε) = ∫σ dε [kJ/m³] on the right axis, the rigid stop
@@ -15,4 +15,4 @@ namespace covopt::report {
 /// @throws std::invalid_argument when the material has no compressive curve.
 GnuplotChart CompressiveCurveChart(const materials::Material& material);
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

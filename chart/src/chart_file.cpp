@@ -1,4 +1,4 @@
-#include "covopt/report/chart_file.hpp"
+#include "covopt/chart/chart_file.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -8,7 +8,14 @@
 
 #include "covopt/report/output_file.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
+
+using report::FindOnPath;
+using report::OutputError;
+using report::OutputFile;
+using report::RegisterTemporaryFile;
+using report::UnregisterTemporaryFile;
+using report::SimulationReport;
 
 std::optional<ChartFormat> ChartFormatFor(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
@@ -55,4 +62,4 @@ void PlotHistory(const std::filesystem::path& path, const SimulationReport& repo
   RunGnuplot(path, HistoryChart(report));
 }
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

@@ -6,11 +6,11 @@
 #include <string>
 
 #include "covopt/optim/robust_sensitivity.hpp"
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
 
 /// The gnuplot script of the tornado chart: one row per input, a laceration and a contusion bar.
 std::string TornadoChart(const optim::ElasticityTable& table, ChartFormat format, const std::string& output_path);
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

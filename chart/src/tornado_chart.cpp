@@ -1,8 +1,8 @@
-#include "covopt/report/tornado_chart.hpp"
+#include "covopt/chart/tornado_chart.hpp"
 
 #include <fmt/format.h>
 
-namespace covopt::report {
+namespace covopt::chart {
 
 std::string TornadoChart(const optim::ElasticityTable& table, ChartFormat format, const std::string& output_path) {
   const std::size_t n = table.rows.size();
@@ -30,4 +30,4 @@ std::string TornadoChart(const optim::ElasticityTable& table, ChartFormat format
   return script;
 }
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

@@ -1,4 +1,4 @@
-#include "covopt/report/sweep_charts.hpp"
+#include "covopt/chart/sweep_charts.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +10,11 @@
 
 #include "covopt/core/quantity.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
+
+using report::kMaxFamilies;
+using report::SweepAxisArgument;
+using report::ResultColumn;
 namespace {
 
 using covopt::SweepRow;
@@ -172,8 +176,10 @@ std::string MapDataBlocks(const PlotInput& in, const std::vector<std::size_t>& x
 
 std::string AxisLabel(const SweepAxisArgument& axis) {
   const DisplayUnit unit = DisplayFor(axis.field->spec.kind);
-  return unit.unit.empty() ? axis.name : fmt::format("{} [{}]", axis.name, unit.unit);
+  return fmt::format("{} [{}]", axis.name, unit.unit.empty() ? "-" : unit.unit);
 }
+
+double DisplayScale(const SweepAxisArgument& axis) { return DisplayFor(axis.field->spec.kind).scale; }
 
 std::string Display(const SweepAxisArgument& axis, double si) {
   return FormatQuantity(si, axis.field->spec.kind);
@@ -383,4 +389,4 @@ std::string SweepFamiliesScript(const PlotInput& in, const std::string& output) 
 }
 
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

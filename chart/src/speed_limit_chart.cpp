@@ -8,12 +8,14 @@
 
 #include <fmt/format.h>
 
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 #include "covopt/report/scene_headline.hpp"
 
 #include "chart_script.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
+
+using report::SceneHeadline;
 
 GnuplotChart SpeedLimitChart(const SpeedLimitChartInput& input) {
   if (input.coverings.empty()) throw std::invalid_argument("the speed-limit chart needs at least one covering");
@@ -100,4 +102,4 @@ GnuplotChart SpeedLimitChart(const SpeedLimitChartInput& input) {
       1000, 700, std::move(s));
 }
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

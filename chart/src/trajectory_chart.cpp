@@ -8,12 +8,14 @@
 
 #include <fmt/format.h>
 
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 #include "covopt/report/scene_headline.hpp"
 
 #include "chart_script.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
+
+using report::SceneHeadline;
 
 GnuplotChart TrajectoryChart(const TrajectoryChartInput& input) {
   const optim::TrajectoryCheck& check = input.check;
@@ -79,4 +81,4 @@ GnuplotChart TrajectoryChart(const TrajectoryChartInput& input) {
       1000, 600, std::move(s));
 }
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

@@ -1,6 +1,6 @@
 // gnuplot as a child process: every chart of a call in one run, in a private temporary
 // directory that is removed on every path out.
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 
 #include <cerrno>
 #include <cstdlib>
@@ -22,7 +22,9 @@
 
 extern char** environ;  // NOLINT: POSIX, for posix_spawnp
 
-namespace covopt::report {
+namespace covopt::chart {
+
+using report::SvgChart;
 namespace {
 
 /// A private directory (mkdtemp, 0700) and the files made in it, all removed (files first)
@@ -121,26 +123,6 @@ int RunGnuplot(const std::string& script, const std::string& log) {
 
 }  // namespace
 
-std::optional<std::filesystem::path> FindOnPath(std::string_view name) {
-  const char* const path_variable = std::getenv("PATH");
-  if (path_variable == nullptr) return std::nullopt;
-  std::string_view directories = path_variable;
-  while (true) {
-    const std::size_t colon = directories.find(':');
-    const std::string_view directory = directories.substr(0, colon);
-    // An empty entry means the current directory (POSIX).
-    const std::filesystem::path candidate =
-        std::filesystem::path(directory.empty() ? "." : std::string(directory)) / name;
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(candidate, ec) && ::access(candidate.c_str(), X_OK) == 0) {
-      return candidate;
-    }
-    if (colon == std::string_view::npos) break;
-    directories.remove_prefix(colon + 1);
-  }
-  return std::nullopt;
-}
-
 std::string GnuplotQuoted(std::string_view text) {
   std::string quoted = "'";
   for (const char c : text) {
@@ -161,7 +143,7 @@ std::string GnuplotTerminal(ChartFormat format, int width_px, int height_px) {
 std::vector<std::string> DrawCharts(std::span<const GnuplotChart> charts, ChartFormat format,
                                     const ScratchObserver& observer) {
   if (charts.empty()) return {};
-  if (!FindOnPath("gnuplot")) throw std::runtime_error(std::string(kGnuplotMissing));
+  if (!report::FindOnPath("gnuplot")) throw std::runtime_error(std::string(kGnuplotMissing));
   const std::string_view extension = format == ChartFormat::kPng ? "png" : "svg";
   ScratchDirectory scratch(observer);
   std::vector<std::string> outputs;
@@ -236,4 +218,4 @@ std::string GnuplotDoubleQuoted(std::string_view text) {
 }
 
 }  // namespace internal
-}  // namespace covopt::report
+}  // namespace covopt::chart

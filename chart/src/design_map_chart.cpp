@@ -8,12 +8,15 @@
 
 #include <fmt/format.h>
 
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 #include "covopt/report/scene_headline.hpp"
 
 #include "chart_script.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
+
+using report::SceneHeadline;
+using report::SceneDetailsBeyondHeadline;
 namespace {
 
 /// The y coordinate of a modulus: log10 of it in MPa.
@@ -227,4 +230,4 @@ GnuplotChart DesignMapChart(const optim::DesignMap& map) {
       1100, 800, std::move(s));
 }
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

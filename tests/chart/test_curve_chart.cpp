@@ -10,7 +10,7 @@
 
 #include <covopt/materials.hpp>
 
-#include "covopt/report/curve_chart.hpp"
+#include "covopt/chart/curve_chart.hpp"
 
 using Catch::Matchers::Contains;
 
@@ -29,7 +29,7 @@ TEST_CASE("the curve chart's script holds the points, W, the rigid stop and the 
   const auto* m = covopt::materials::Catalog::BuiltIn().Find("neoprene sponge D1056 2C2");
   REQUIRE(m != nullptr);
   const std::string script =
-      covopt::report::CompressiveCurveChart(*m).script(covopt::report::ChartFormat::kSvg, "out.svg");
+      covopt::chart::CompressiveCurveChart(*m).script(covopt::chart::ChartFormat::kSvg, "out.svg");
   CHECK_THAT(script, Contains("$curve << EOD\n0 0 0\n"));
   for (const auto& p : m->compressive_curve->points()) {
     CHECK_THAT(script, Contains(G(100.0 * p.strain) + " " + G(p.stress_Pa / 1e3) + " " +
@@ -45,5 +45,5 @@ TEST_CASE("the curve chart's script holds the points, W, the rigid stop and the 
 TEST_CASE("a material without a curve has no curve chart", "[charts][curve]") {
   const auto* m = covopt::materials::Catalog::BuiltIn().Find("polystyrene foam 27.6");
   REQUIRE(m != nullptr);
-  CHECK_THROWS_AS(covopt::report::CompressiveCurveChart(*m), std::invalid_argument);
+  CHECK_THROWS_AS(covopt::chart::CompressiveCurveChart(*m), std::invalid_argument);
 }

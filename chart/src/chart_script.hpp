@@ -4,9 +4,9 @@
 #include <string>
 #include <string_view>
 
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 
-namespace covopt::report::internal {
+namespace covopt::chart::internal {
 
 /// A chart whose script is "set encoding utf8", the terminal (width x height pixels), `set
 /// output` to the file, then `body` (the data and the plot commands).
@@ -15,4 +15,4 @@ GnuplotChart MakeChart(std::string title, std::string caption, int width_px, int
 /// A gnuplot double-quoted string, in which a line break becomes \n.
 std::string GnuplotDoubleQuoted(std::string_view text);
 
-}  // namespace covopt::report::internal
+}  // namespace covopt::chart::internal

@@ -5,11 +5,11 @@
 
 #include <fmt/format.h>
 
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 
 #include "chart_script.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
 
 GnuplotChart AuditHeatMap(const audit::AuditResult& result, double safety_factor,
                           const std::string& trajectory_name) {
@@ -67,4 +67,4 @@ GnuplotChart AuditHeatMap(const audit::AuditResult& result, double safety_factor
       1100, 250 + 45 * static_cast<int>(std::max<std::size_t>(links, 3)), std::move(s));
 }
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

@@ -1,4 +1,4 @@
-// The charts (report/charts.hpp): several charts in one gnuplot run, each a whole SVG with its
+// The charts (chart/charts.hpp): several charts in one gnuplot run, each a whole SVG with its
 // title and caption; the private scratch directory reported to the observer and removed; a
 // missing gnuplot named with its package; a failing chart named; the design map's script has
 // one contour per criterion at 1/safety factor and marks the chosen design. The drawing tests
@@ -16,7 +16,7 @@
 #include <covopt/materials.hpp>
 #include <covopt/optim.hpp>
 
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 
 using namespace covopt;
 using Catch::Matchers::Contains;
@@ -60,8 +60,8 @@ TEST_CASE("the design map's script draws one contour per criterion at 1/safety f
           "[charts]") {
   const optim::DesignMap map = Map(2.0);
   REQUIRE(map.chosen);
-  const report::GnuplotChart chart = report::DesignMapChart(map);
-  const std::string script = chart.script(report::ChartFormat::kSvg, "it's.svg");
+  const chart::GnuplotChart chart = chart::DesignMapChart(map);
+  const std::string script = chart.script(chart::ChartFormat::kSvg, "it's.svg");
   CHECK_THAT(script, Contains("set terminal svg") && Contains("set output 'it''s.svg'") &&
                          Contains("set cntrparam levels discrete 0.5") && Contains("with image"));
   for (std::size_t k = 0; k < map.criteria.size(); ++k) {
@@ -70,18 +70,18 @@ TEST_CASE("the design map's script draws one contour per criterion at 1/safety f
   }
   CHECK_THAT(script, Contains("chosen: " + map.chosen->label));
   CHECK_THAT(chart.caption, Contains(map.chosen->label) && Contains("1/safety factor = 0.5"));
-  CHECK_THAT(chart.script(report::ChartFormat::kPng, "m.png"), Contains("set terminal pngcairo"));
+  CHECK_THAT(chart.script(chart::ChartFormat::kPng, "m.png"), Contains("set terminal pngcairo"));
 }
 
 TEST_CASE("no charts need no gnuplot, and a missing gnuplot names its package", "[charts]") {
-  CHECK(report::DrawCharts({}, report::ChartFormat::kSvg).empty());
+  CHECK(chart::DrawCharts({}, chart::ChartFormat::kSvg).empty());
   const std::filesystem::path empty = std::filesystem::temp_directory_path() / "covopt-test-no-gnuplot";
   std::filesystem::create_directories(empty);
   const ScopedPath path(empty.string());
-  const report::GnuplotChart chart = report::HistoryChart(HistoryReport());
+  const chart::GnuplotChart chart = chart::HistoryChart(HistoryReport());
   int made = 0;
-  const report::ScratchObserver observer{[&](const std::string&) { return ++made; }, {}};
-  CHECK_THROWS_WITH(report::DrawCharts({&chart, 1}, report::ChartFormat::kSvg, observer),
+  const chart::ScratchObserver observer{[&](const std::string&) { return ++made; }, {}};
+  CHECK_THROWS_WITH(chart::DrawCharts({&chart, 1}, chart::ChartFormat::kSvg, observer),
                     "gnuplot not found on PATH; install gnuplot-nox (Debian) to draw charts and reports");
   CHECK(made == 0);
   std::filesystem::remove(empty);
@@ -92,18 +92,18 @@ TEST_CASE("several charts are drawn in one gnuplot run into a private directory 
     WARN("gnuplot is not on PATH; skipping the drawing test");
     return;
   }
-  const std::vector<report::GnuplotChart> charts = {report::HistoryChart(HistoryReport()),
-                                                    report::DesignMapChart(Map(1.0))};
+  const std::vector<chart::GnuplotChart> charts = {chart::HistoryChart(HistoryReport()),
+                                                    chart::DesignMapChart(Map(1.0))};
   std::map<int, std::string> live;
   std::vector<std::string> seen;
   int next = 0;
-  const report::ScratchObserver observer{[&](const std::string& p) {
+  const chart::ScratchObserver observer{[&](const std::string& p) {
                                            live[next] = p;
                                            seen.push_back(p);
                                            return next++;
                                          },
                                          [&](int token) { live.erase(token); }};
-  const std::vector<report::SvgChart> svg = report::DrawSvgCharts(charts, observer);
+  const std::vector<report::SvgChart> svg = chart::DrawSvgCharts(charts, observer);
   REQUIRE(svg.size() == 2);
   for (std::size_t i = 0; i < svg.size(); ++i) {
     CHECK(svg[i].title == charts[i].title);
@@ -119,15 +119,15 @@ TEST_CASE("several charts are drawn in one gnuplot run into a private directory 
   for (const std::string& p : seen) CHECK_FALSE(std::filesystem::exists(p));
 
   // A chart gnuplot cannot draw: named, and the scratch directory removed all the same.
-  report::GnuplotChart broken = charts[0];
+  chart::GnuplotChart broken = charts[0];
   broken.title = "the broken chart";
-  broken.script = [](report::ChartFormat format, const std::string& output) {
-    return report::GnuplotTerminal(format, 200, 100) + "set output " + report::GnuplotQuoted(output) +
+  broken.script = [](chart::ChartFormat format, const std::string& output) {
+    return chart::GnuplotTerminal(format, 200, 100) + "set output " + chart::GnuplotQuoted(output) +
            "\nplot no_such_function(x)\n";
   };
-  const std::vector<report::GnuplotChart> with_broken = {charts[0], broken};
+  const std::vector<chart::GnuplotChart> with_broken = {charts[0], broken};
   seen.clear();
-  CHECK_THROWS_WITH(report::DrawCharts(with_broken, report::ChartFormat::kPng, observer),
+  CHECK_THROWS_WITH(chart::DrawCharts(with_broken, chart::ChartFormat::kPng, observer),
                     Contains("gnuplot failed to draw 'the broken chart'") && Contains("no_such_function"));
   CHECK(live.empty());
   for (const std::string& p : seen) CHECK_FALSE(std::filesystem::exists(p));

@@ -1,5 +1,5 @@
 // The compressive-curve chart of `covopt materials show NAME --plot`.
-#include "covopt/report/curve_chart.hpp"
+#include "covopt/chart/curve_chart.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -9,7 +9,7 @@
 
 #include "chart_script.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
 
 GnuplotChart CompressiveCurveChart(const materials::Material& material) {
   const CompressiveCurve* curve = material.compressive_curve.get();
@@ -65,4 +65,4 @@ GnuplotChart CompressiveCurveChart(const materials::Material& material) {
       1000, 650, std::move(s));
 }
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

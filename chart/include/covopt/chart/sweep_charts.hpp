@@ -11,20 +11,23 @@
 
 #include "covopt/core/scene.hpp"
 #include "covopt/core/sweep.hpp"
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 #include "covopt/report/sweep_axis.hpp"
 #include "covopt/report/sweep_csv.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
 
-/// An axis's label: "covering-thickness [mm]".
-std::string AxisLabel(const SweepAxisArgument& axis);
+/// An axis's label: "covering-thickness [mm]" ("[-]" for a pure number).
+std::string AxisLabel(const report::SweepAxisArgument& axis);
+
+/// The axis's display unit as a scale: a value shown on a chart is SI / scale (1e-3 for mm).
+double DisplayScale(const report::SweepAxisArgument& axis);
 
 /// A value of the axis for people: "15 mm", "fixed".
-std::string Display(const SweepAxisArgument& axis, double si);
+std::string Display(const report::SweepAxisArgument& axis, double si);
 
 /// A result column's label: "peak_force_N [N]".
-std::string ColumnLabel(const ResultColumn& column);
+std::string ColumnLabel(const report::ResultColumn& column);
 
 /// What a chart needs of one grid point: the rest of its row is not kept.
 struct ChartPoint {
@@ -38,13 +41,13 @@ struct ChartPoint {
 };
 
 /// The numbers of `row` a chart draws (`quantity`: the --plot-quantity column, or null).
-ChartPoint ChartPointOf(const covopt::SweepRow& row, const ResultColumn* quantity);
+ChartPoint ChartPointOf(const covopt::SweepRow& row, const report::ResultColumn* quantity);
 
 /// What the sweep's charts draw.
 struct PlotInput {
-  const ResultColumn* quantity = nullptr;  ///< --plot-quantity; null: the injury ratios
-  const SweepAxisArgument* x = nullptr;
-  const SweepAxisArgument* y = nullptr;
+  const report::ResultColumn* quantity = nullptr;  ///< --plot-quantity; null: the injury ratios
+  const report::SweepAxisArgument* x = nullptr;
+  const report::SweepAxisArgument* y = nullptr;
   std::span<const ChartPoint> points;  ///< every grid point, in grid order
   InjuryLimits limits;                 ///< the limits the ratios are taken against
   std::string scene_line;         ///< the quantities not swept, one line
@@ -61,4 +64,4 @@ std::string SweepMapScript(const PlotInput& in, const std::string& output);
 /// `output` (gnuplot script).
 std::string SweepFamiliesScript(const PlotInput& in, const std::string& output);
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

@@ -9,12 +9,16 @@
 
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/solve.hpp"
-#include "covopt/report/charts.hpp"
+#include "covopt/chart/charts.hpp"
 #include "covopt/report/scene_headline.hpp"
 
 #include "chart_script.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
+
+using report::SceneHeadline;
+using report::SceneDetailsBeyondHeadline;
+using report::SimulationReport;
 
 namespace {
 
@@ -183,4 +187,4 @@ GnuplotChart HistoryChart(const SimulationReport& report) {
                            ToString(report.result.method), ToString(charted.result.method), relative));
 }
 
-}  // namespace covopt::report
+}  // namespace covopt::chart

@@ -17,10 +17,11 @@
 #include "covopt/optim/design_map.hpp"
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/optim/trajectory_check.hpp"
+#include "covopt/report/find_on_path.hpp"
 #include "covopt/report/html_report.hpp"
 #include "covopt/report/simulation_json.hpp"
 
-namespace covopt::report {
+namespace covopt::chart {
 
 /// The file format a chart is drawn in.
 enum class ChartFormat { kPng, kSvg };
@@ -60,12 +61,8 @@ std::vector<std::string> DrawCharts(std::span<const GnuplotChart> charts, ChartF
 
 /// The charts as SVG for a report (DrawCharts in SVG, with each chart's title and caption).
 /// @throws as DrawCharts.
-std::vector<SvgChart> DrawSvgCharts(std::span<const GnuplotChart> charts,
+std::vector<report::SvgChart> DrawSvgCharts(std::span<const GnuplotChart> charts,
                                     const ScratchObserver& observer = {});
-
-/// The first executable file called `name` in the directories of $PATH (an empty entry is
-/// the current directory).
-std::optional<std::filesystem::path> FindOnPath(std::string_view name);
 
 /// The `set terminal` line: pngcairo or svg (white background), width x height pixels, sans 11.
 std::string GnuplotTerminal(ChartFormat format, int width_px, int height_px);
@@ -87,7 +84,7 @@ std::string GnuplotQuoted(std::string_view text);
 /// peak force from the reported one.
 /// @throws std::invalid_argument for a scene the model rejects; std::runtime_error when that
 ///         time-path run fails.
-GnuplotChart HistoryChart(const SimulationReport& report);
+GnuplotChart HistoryChart(const report::SimulationReport& report);
 
 /// What the speed-limit chart draws: the largest safe impact speed over the reflected mass,
 /// one curve per covering and one for the bare robot.
@@ -140,4 +137,4 @@ GnuplotChart AuditHeatMap(const audit::AuditResult& result, double safety_factor
 /// chosen design marked and labelled, the catalog candidates marked. 1100 x 800.
 GnuplotChart DesignMapChart(const optim::DesignMap& map);
 
-}  // namespace covopt::report
+}  // namespace covopt::chart
