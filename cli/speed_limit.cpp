@@ -279,7 +279,7 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
   }
   if (plan.json || options.report_file) {
     try {
-      PrintAndReport(out, plan.json, report::RobustSpeedLimitTableJson(plan.quantity, *first_box, rows), options.run,
+      PrintAndReport(out, plan.json, report::RobustSpeedLimitTableJson(plan.quantity, *first_box, plan.options, rows), options.run,
                      options.report_file, report::ReportKind::kSpeedLimit, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e);

@@ -6,6 +6,7 @@
 #include <covopt/core/number_format.hpp>
 
 #include "covopt/optim/oracle.hpp"
+#include "covopt/optim/summaries.hpp"
 #include "covopt/optim/verdicts.hpp"
 
 namespace covopt::optim {
@@ -90,6 +91,22 @@ ResultSummary SummarizeProbabilityDesign(const ProbabilityDesignOptions& options
   } else {
     s.governing_case = "the bare robot";
   }
+  return s;
+}
+
+ResultSummary SummarizeRobustSpeedLimits(SpeedLimitQuantity quantity, const UncertaintyBox& box,
+                                         const SpeedLimitOptions& options, std::span<const RobustSpeedLimitRow> rows) {
+  std::vector<SpeedLimitRow> at_worst;
+  for (const RobustSpeedLimitRow& r : rows) {
+    at_worst.push_back(SpeedLimitRow{.material = r.material,
+                                     .robot_mass_kg = r.robot_mass_kg,
+                                     .speed_m_per_s = r.speed_m_per_s,
+                                     .speed_limit = r.speed_limit.limit,
+                                     .mass_limit = r.mass_limit.limit});
+  }
+  ResultSummary s = SummarizeSpeedLimits(quantity, box.nominal(), options, at_worst);
+  s.command = "speed-limit (robust)";
+  for (LimitRow& limit : s.limits) limit.note += (limit.note.empty() ? "" : "; ") + std::string("at the worst case over the box");
   return s;
 }
 

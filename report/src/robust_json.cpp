@@ -348,6 +348,7 @@ std::string RobustSpeedLimitJson(const optim::UncertaintyBox& box, const optim::
 }
 
 std::string RobustSpeedLimitTableJson(optim::SpeedLimitQuantity quantity, const optim::UncertaintyBox& box,
+                                      const optim::SpeedLimitOptions& options,
                                       std::span<const optim::RobustSpeedLimitRow> rows, int indent) {
   const bool by_speed = quantity == optim::SpeedLimitQuantity::kSpeed;
   ordered_json list = ordered_json::array();
@@ -366,6 +367,7 @@ std::string RobustSpeedLimitTableJson(optim::SpeedLimitQuantity quantity, const 
   j["solve_for"] = optim::ToString(quantity);
   j["uncertain_inputs"] = InputsJson(box);
   j["rows"] = list;
+  j["summary"] = internal::SummaryObject(optim::SummarizeRobustSpeedLimits(quantity, box, options, rows));
   return Dump(j, indent);
 }
 

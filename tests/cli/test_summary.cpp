@@ -197,3 +197,14 @@ TEST_CASE("optimize with ranges: the summary is the recommendation's worst case 
   CHECK(s["governing"]["criterion"] == j["recommendation"]["governing_criterion"]);
   CHECK(s["covering"]["material"] == j["recommendation"]["material"]);
 }
+
+TEST_CASE("speed-limit with ranges: each limit row is the row's limit over the box", "[summary]") {
+  const json j = JsonOf(Run({"speed-limit", "--json", "--head-mass", "3.7kg..5.8kg", "--robot-mass", "5kg,20kg"}));
+  const json s = SummaryOf(j);
+  CHECK(s["kind"] == "limits");
+  REQUIRE(s["limits"].size() == j["rows"].size());
+  for (std::size_t i = 0; i < j["rows"].size(); ++i) {
+    CHECK(s["limits"][i]["value"] == j["rows"][i]["speed_limit_m_per_s"]);
+    CHECK(s["limits"][i]["binding_criterion"] == j["rows"][i]["limited_by"]);
+  }
+}

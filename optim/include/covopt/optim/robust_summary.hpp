@@ -7,6 +7,8 @@
 
 #include "covopt/optim/robust_design.hpp"
 #include "covopt/optim/robust_probability.hpp"
+#include "covopt/optim/robust_search.hpp"
+#include "covopt/optim/speed_limit_table.hpp"
 
 namespace covopt::optim {
 
@@ -20,5 +22,10 @@ ResultSummary SummarizeRobustDesign(const RobustDesignOptions& options, const Ro
 /// robot's) upper 95 % bound of P(inadmissible) against P (margin 1 − bound / P).
 ResultSummary SummarizeProbabilityDesign(const ProbabilityDesignOptions& options, const ProbabilityDesign& result,
                                          HeadArea area);
+
+/// `speed-limit` with ranges: SummarizeSpeedLimits of each row's limit at its worst case over
+/// the box (the nominal scene of `box` names the head), each limit row noting so.
+ResultSummary SummarizeRobustSpeedLimits(SpeedLimitQuantity quantity, const UncertaintyBox& box,
+                                         const SpeedLimitOptions& options, std::span<const RobustSpeedLimitRow> rows);
 
 }  // namespace covopt::optim

@@ -75,12 +75,14 @@ std::string RobustSpeedLimitJson(const optim::UncertaintyBox& box, const optim::
                                  int indent = 2);
 
 /// What `covopt speed-limit` prints with ranges: {solve_for ("speed" or "mass"),
-/// uncertain_inputs (UncertainInputsJson of `box`), rows}. Each row: material (only when
+/// uncertain_inputs (UncertainInputsJson of `box`), rows, summary (optim::SummarizeRobustSpeedLimits)}. Each row: material (only when
 /// from the catalog), then solving for the speed robot_mass_kg (null: fixed) and
 /// RobustSpeedLimitJson's keys; solving for the mass speed_m_per_s, max_safe_mass_kg (null:
 /// fixed), status, limited_by, message, worst_case {inputs, units}, found_by, evaluations,
 /// seconds. `box`: the box of the rows (they share its inputs; its field names and units).
+/// `options`: the criterion, limits and search ceiling the rows were found with (the summary's).
 std::string RobustSpeedLimitTableJson(optim::SpeedLimitQuantity quantity, const optim::UncertaintyBox& box,
+                                      const optim::SpeedLimitOptions& options,
                                       std::span<const optim::RobustSpeedLimitRow> rows, int indent = 2);
 
 }  // namespace covopt::report
