@@ -357,7 +357,7 @@ void AssessOptimize(Assessment& a, const Json& j) {
     const Json* bare = Find(j, "bare_robot");
     a.safe = verdict == "bare-robot-safe" || (bare && verdict.empty() && TrueAt(*bare, "safe"));
     a.headline = a.safe ? "no covering is needed: the bare robot is safe"
-                        : "NO COVERING FOUND: " + StringAt(j, "summary", StringAt(j, "message"));
+                        : "NO COVERING FOUND: " + StringAt(j, "message");
     if (bare && bare->is_object()) {
       if (Find(*bare, "regions")) {
         for (const Json& r : (*bare)["regions"]) AddRegionRows(a, r, "bare robot, ");
@@ -404,7 +404,7 @@ void AssessOptimize(Assessment& a, const Json& j) {
         a.safe_means = "SAFE means the recommended covering is admissible for every value in the box of uncertain inputs.";
       }
     }
-    a.headline = StringAt(j, "summary");
+    a.headline = StringAt(j, "message");
   }
   a.input_keys = {"scene", "speed_m_per_s", "thickness_m", "safety_factor", "limits", "design_space",
                   "uncertain_inputs", "max_probability", "samples", "seed"};

@@ -45,7 +45,7 @@ std::string UncertainSimulationJson(const SimulationReport& impact, const optim:
                                     const optim::ElasticityTable* sensitivities, int indent = 2);
 
 /// What `covopt optimize` prints with ranges: {problem "robust-thinnest", criterion, verdict,
-/// summary, uncertain_inputs, recommendation (null when none: material, family, thickness_m,
+/// message, uncertain_inputs, recommendation (null when none: material, family, thickness_m,
 /// min_safe_thickness_m, youngs_modulus_Pa, poisson_ratio, laceration_ratio, contusion_ratio,
 /// margin, worst_case (at the recommended thickness), worst_case_at_thinnest),
 /// worst_case (the recommendation's worst case at its thinnest admissible thickness: what sets
@@ -60,7 +60,7 @@ std::string RobustDesignJson(const optim::UncertaintyBox& box, const optim::Robu
                              std::span<const std::string> warnings = {}, int indent = 2);
 
 /// What `covopt optimize --max-injury-probability P` prints: {problem "probability",
-/// criterion, verdict, summary, max_probability, samples, seed, uncertain_inputs,
+/// criterion, verdict, message, max_probability, samples, seed, uncertain_inputs,
 /// recommendation (null when none: material, family, thickness_m, min_thickness_m,
 /// youngs_modulus_Pa, poisson_ratio, injury_probability, sampling_error (half the width of
 /// the inadmissible CI)), continuous_optimum, bare_robot (injury_probability), candidates,
@@ -75,12 +75,14 @@ std::string RobustSpeedLimitJson(const optim::UncertaintyBox& box, const optim::
                                  int indent = 2);
 
 /// What `covopt speed-limit` prints with ranges: {solve_for ("speed" or "mass"),
-/// uncertain_inputs (UncertainInputsJson of `box`), rows}. Each row: material (only when
+/// uncertain_inputs (UncertainInputsJson of `box`), rows, summary (optim::SummarizeRobustSpeedLimits)}. Each row: material (only when
 /// from the catalog), then solving for the speed robot_mass_kg (null: fixed) and
 /// RobustSpeedLimitJson's keys; solving for the mass speed_m_per_s, max_safe_mass_kg (null:
 /// fixed), status, limited_by, message, worst_case {inputs, units}, found_by, evaluations,
 /// seconds. `box`: the box of the rows (they share its inputs; its field names and units).
+/// `options`: the criterion, limits and search ceiling the rows were found with (the summary's).
 std::string RobustSpeedLimitTableJson(optim::SpeedLimitQuantity quantity, const optim::UncertaintyBox& box,
+                                      const optim::SpeedLimitOptions& options,
                                       std::span<const optim::RobustSpeedLimitRow> rows, int indent = 2);
 
 }  // namespace covopt::report
