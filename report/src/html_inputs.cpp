@@ -18,7 +18,7 @@ namespace {
 /// The top-level keys of each kind's result that hold its inputs.
 std::vector<std::string_view> InputKeys(ReportKind kind) {
   switch (kind) {
-    case ReportKind::kSimulate: return {"scene", "uncertain_inputs", "safety_factor"};
+    case ReportKind::kSimulate: return {"scene", "uncertain_inputs", "safety_factor", "limits"};
     case ReportKind::kOptimize:
       return {"scene", "speed_m_per_s", "thickness_m", "safety_factor", "limits", "design_space",
               "uncertain_inputs", "max_probability", "samples", "seed"};
@@ -90,9 +90,9 @@ std::size_t GroupOf(const Leaf& leaf) {
     return std::any_of(words.begin(), words.end(), [&](std::string_view w) { return text.find(w) != std::string::npos; });
   };
   if (any({"limits", "safety_factor", "max_probability", "criterion"})) return 3;
+  if (any({"solve_for", "search_limit", "samples", "seed", "solver", "model.", "tolerance"})) return 4;
   if (any({"covering", "design_space", "material", "thickness_m"}) && !any({"scalp"})) return 1;
   if (any({"head", "scalp", "skull", "neck", "torso", "region", "body", "contact_area", "human"})) return 2;
-  if (any({"solve_for", "search_limit", "samples", "seed", "solver", "model.", "tolerance"})) return 4;
   if (any({"robot", "joint", "speed", "payload", "surface", "sample_count", "reaction_delay", "braking", "tool"})) {
     return 0;
   }

@@ -65,6 +65,10 @@ ResultSummary ReadSummary(ReportKind kind, const std::string& result_json) {
     throw std::invalid_argument("report: the " + std::string(ToString(kind)) +
                                 " result has no summary to report (" + e.what() + ")");
   }
+  if (!s.command.empty() && s.command.rfind(ToString(kind), 0) != 0) {
+    throw std::invalid_argument("report: the result is of covopt " + s.command + ", not of covopt " +
+                                std::string(ToString(kind)));
+  }
   if (!s.evaluated || s.state == VerdictState::kNotEvaluated) {
     throw std::invalid_argument("report: no report for a " + std::string(ToString(kind)) +
                                 " run without a verdict: the result could not be computed");
