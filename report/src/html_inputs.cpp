@@ -134,20 +134,22 @@ void WriteInputs(std::string& out, const Json& j, ReportKind kind) {
          "value came from (a flag, a scene file, the catalog, a default); — where the result does not say. A mass "
          "or radius of \"fixed\" or \"flat\" is infinite.</p>\n";
   if (leaves.empty()) out += "<p>The result records no inputs.</p>\n";
+  out += "<div class=\"input-groups\">\n";
   for (std::size_t g = 0; g < kGroups.size(); ++g) {
     std::vector<const Leaf*> rows;
     for (const Leaf& leaf : leaves) {
       if (GroupOf(leaf) == g) rows.push_back(&leaf);
     }
     if (rows.empty()) continue;
-    out += "<h3>";
+    out += "<div><h3>";
     Escape(out, kGroupTitles[g]);
     out += "</h3>\n";
-    OpenTable(out, {{"quantity", 42}, {"value", 18}, {"unit", 10}, {"source", 30}},
+    OpenTable(out, {{"quantity", 40}, {"value", 18}, {"unit", 12}, {"source", 30}},
               "inputs\" data-group=\"" + std::string(kGroups[g]));
     for (const Leaf* leaf : rows) WriteLeaf(out, *leaf, sources);
-    out += "</tbody></table>\n";
+    out += "</tbody></table></div>\n";
   }
+  out += "</div>\n";
 }
 
 }  // namespace covopt::report::internal::html

@@ -197,7 +197,7 @@ std::string HtmlReport(const ReportContent& content) {
   WriteModels(out, summary, j);
   out += "<h2>Provenance</h2>\n";
   WriteProvenance(out, j.at("provenance"));
-  WriteAppendixSection(out, content.info.appendix, summary, j);
+  WriteAppendixSection(out, content.info.appendix, summary, j, kMainRows);
   out += "<details id=\"result-json\"><summary>The result's JSON (--json), in full</summary>\n<pre><code>";
   Escape(out, j.dump(1));
   out += "</code></pre>\n</details>\n</body>\n</html>\n";

@@ -158,7 +158,9 @@ figure.chart { margin: 2mm 0; break-inside: avoid; page-break-inside: avoid; tex
 figure.chart svg { width: 100%; max-width: 165mm; height: auto; max-height: 105mm; }
 figure.chart figcaption { text-align: left; font-size: 8.5pt; }
 .warnings li { color: #6b3d00; }
-section#appendix { break-before: page; page-break-before: always; }
+section#appendix[data-appendix="full"] { break-before: page; page-break-before: always; }
+.input-groups { columns: 2; column-gap: 4mm; }
+.input-groups h3 { margin-top: 1.5mm; }
 @media screen { body { box-shadow: 0 0 4mm #bbb; margin-top: 4mm; margin-bottom: 4mm; } }
 @media print { body { padding: 0; max-width: none; } details#result-json { display: none; } }
 )css";
