@@ -497,10 +497,10 @@ TEST_CASE("The appendix holds nothing, the summary or every value; the full JSON
   CHECK(none.find("<section id=\"appendix\" data-appendix=\"none\">\n</section>") != std::string::npos);
   CHECK(summary.find("<section id=\"appendix\" data-appendix=\"summary\">") != std::string::npos);
   CHECK(full.find("<section id=\"appendix\" data-appendix=\"full\">") != std::string::npos);
-  // The summary appendix: every row and the result's scalar values; the full one: every value.
+  // The summary appendix: the result's scalar values (not the rows the body shows); the full one: every value.
   const std::string summary_part = Section(summary, "appendix");
-  CHECK(summary_part.find("head (frontal)") != std::string::npos);
-  CHECK(summary_part.find("safe") != std::string::npos);
+  CHECK(summary_part.find("<td class=\"key\">status</td><td>safe</td>") != std::string::npos);
+  CHECK(summary_part.find("head (frontal)") == std::string::npos);
   CHECK(summary_part.find("0.0421") == std::string::npos);
   CHECK(Section(full, "appendix").find("0.0421") != std::string::npos);
   for (const std::string* html : {&none, &summary, &full}) {
@@ -510,6 +510,28 @@ TEST_CASE("The appendix holds nothing, the summary or every value; the full JSON
     CHECK(html->find("&quot;deep_value_m&quot;: 0.0421", details) != std::string::npos);
   }
   CHECK(none.find("details#result-json { display: none; }") != std::string::npos);  // not printed
+}
+
+TEST_CASE("Many rows: the body shows the governing, the failed and the largest, the summary appendix all", "[report][html]") {
+  ResultSummary s = HeadSummary(0.5);
+  s.rows.clear();
+  for (int i = 0; i < 30; ++i) s.rows.push_back(Row("region " + std::to_string(i), "force", "N", 10.0 * i, 1000.0));
+  s.rows[3].value = 1100.0;  // the one failed row
+  s.rows[3].ratio = 1.1;
+  s.rows[3].passed = false;
+  s.Finish();
+  const std::string html = Render(ReportKind::kSimulate, ResultJson(s));
+  const std::string body = html.substr(0, html.find("<section id=\"appendix\""));
+  const std::string appendix = Section(html, "appendix");
+  CHECK(body.find("24 of 30 rows") != std::string::npos);
+  CHECK(body.find("<tr class=\"binding\"><td>region 3</td>") != std::string::npos);
+  for (int i = 0; i < 30; ++i) {
+    const std::string cell = "<td>region " + std::to_string(i) + "</td>";
+    INFO(cell);
+    CHECK(appendix.find(cell) != std::string::npos);
+    // The smallest ratios (regions 0 to 5 but the failed 3) are left to the appendix.
+    CHECK((body.find(cell) == std::string::npos) == (i < 7 && i != 3));
+  }
 }
 
 TEST_CASE("No renderer reads prose: the safety factor and verdict are the summary's, whatever the text says",
