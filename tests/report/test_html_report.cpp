@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include <covopt/core/result_summary.hpp>
+#include <covopt/core/verdict.hpp>
 #include <covopt/report/html_report.hpp>
 #include <covopt/report/provenance.hpp>
 #include <covopt/report/summary_json.hpp>
@@ -94,35 +95,21 @@ void Leaves(const Json& value, const std::string& path, std::vector<std::pair<st
   }
 }
 
-/// A summary row of `target`'s `criterion`: value against limit with safety factor `sf`.
-covopt::SummaryRow Row(const std::string& target, const std::string& criterion, const std::string& unit, double value,
-                       double limit, double sf = 1.0) {
-  covopt::SummaryRow row;
-  row.target = target;
-  row.criterion = criterion;
-  row.unit = unit;
-  row.value = value;
-  row.limit = limit;
-  row.derated_limit = limit / sf;
-  row.ratio = value / limit;
-  row.margin = 1.0 - sf * row.ratio;
-  row.passed = sf * row.ratio <= 1.0;
-  row.law = "hertz";
-  row.validity = "within";
-  row.source = "Park et al. 2011";
-  return row;
+/// A verdict of one criterion: value against limit with safety factor `sf`.
+covopt::Verdict OneCriterion(const char* name, const char* unit, double value, double limit, double sf = 1.0) {
+  covopt::Verdict v;
+  v.safety_factor = sf;
+  v.Add(name, covopt::CriterionPart::kInjury, unit, value, limit, "Park et al. 2011");
+  return v;
 }
 
 /// A head verdict whose contusion ratio is `contusion_ratio` (laceration 0.3), finished.
 ResultSummary HeadSummary(double contusion_ratio, double sf = 1.0) {
+  covopt::Verdict v = OneCriterion("laceration", "Pa", 0.3e6, 1e6, sf);
+  v.Add("contusion", covopt::CriterionPart::kInjury, "J/m2", contusion_ratio * 25200.0, 25200.0, "Park et al. 2011");
   ResultSummary s;
   s.command = "simulate";
-  s.safety_factor = sf;
-  s.rows = {Row("head (frontal)", "laceration", "Pa", 0.3e6, 1e6, sf),
-            Row("head (frontal)", "contusion", "J/m2", contusion_ratio * 25200.0, 25200.0, sf)};
-  s.targets = {"head (frontal)"};
-  s.criteria = {"laceration", "contusion"};
-  s.standards = {"Park et al. 2011"};
+  s.AddVerdict("head (frontal)", v, "hertz", "within");
   s.scope = {"Criteria: no laceration and no contusion (Park et al. 2011's skin limits)."};
   s.governing_case = "the impact at 2 m/s";
   s.covering = {.present = true, .material = "elastomer Shore A60", .thickness_m = 0.02, .law = "hertz",
@@ -513,12 +500,12 @@ TEST_CASE("The appendix holds nothing, the summary or every value; the full JSON
 }
 
 TEST_CASE("Many rows: the body shows the governing, the failed and the largest, the summary appendix all", "[report][html]") {
-  ResultSummary s = HeadSummary(0.5);
-  s.rows.clear();
-  for (int i = 0; i < 30; ++i) s.rows.push_back(Row("region " + std::to_string(i), "force", "N", 10.0 * i, 1000.0));
-  s.rows[3].value = 1100.0;  // the one failed row
-  s.rows[3].ratio = 1.1;
-  s.rows[3].passed = false;
+  ResultSummary s;
+  s.command = "simulate";
+  for (int i = 0; i < 30; ++i) {  // region 3 the one failed row
+    s.AddVerdict("region " + std::to_string(i), OneCriterion("force", "N", i == 3 ? 1100.0 : 10.0 * i, 1000.0), "hertz",
+                 "within");
+  }
   s.Finish();
   const std::string html = Render(ReportKind::kSimulate, ResultJson(s));
   const std::string body = html.substr(0, html.find("<section id=\"appendix\""));
