@@ -129,8 +129,13 @@ void WriteHead(std::string& out, const std::string& kind, std::string_view word)
 
 /// What the verdict covers, in the summary's words.
 void WriteScope(std::string& out, const ResultSummary& s) {
-  out += "<p><b>Margin</b>, here and below, is 1 − SF × ratio, the share of the derated limit (limit / SF) left "
+  if (s.kind == ResultSummary::Kind::kLimits) {
+    out += "<p>The robot is safe at or below each row's value; the binding criterion is the one that reaches its "
+           "derated limit there.</p>\n";
+  } else {
+    out += "<p><b>Margin</b>, here and below, is 1 − SF × ratio, the share of the derated limit (limit / SF) left "
          "over; a ratio is value / limit. Negative margins exceed the limit.</p>\n";
+  }
   if (s.scope.empty()) return;
   out += "<ul class=\"compact\">\n";
   for (const std::string& sentence : s.scope) {
@@ -182,7 +187,7 @@ std::string HtmlReport(const ReportContent& content) {
   out.reserve(content.result_json.size() * 3 + 32768);
   WriteHead(out, std::string(ToString(content.kind)), StateWord(page.state));
   WritePageOne(out, page);
-  out += "<h2>Verdict rows</h2>\n";
+  out += summary.kind == ResultSummary::Kind::kLimits ? "<h2>Limits, one row per case</h2>\n" : "<h2>Verdict rows</h2>\n";
   WriteScope(out, summary);
   WriteRows(out, summary, kMainRows);
   out += "<h2>Charts</h2>\n";
