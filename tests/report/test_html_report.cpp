@@ -666,3 +666,82 @@ TEST_CASE("Results without a summary, of another kind, not evaluated, not object
   content.charts = {{"t", "c", "PNG\x89 not an svg"}};
   CHECK_THROWS_WITH(covopt::report::HtmlReport(content), Catch::Contains("chart 1: no <svg>"));
 }
+
+namespace {
+
+/// A real result of each kind and mode (make-fixtures.sh) and its input objects.
+struct Fixture {
+  const char* file;
+  ReportKind kind;
+  std::vector<const char*> inputs;
+};
+
+std::vector<Fixture> Fixtures() {
+  const ReportKind sim = ReportKind::kSimulate, opt = ReportKind::kOptimize, lim = ReportKind::kSpeedLimit,
+                   traj = ReportKind::kTrajectory, audit = ReportKind::kAudit;
+  return {
+      {"simulate_safe.json", sim, {"scene"}},
+      {"simulate_unsafe.json", sim, {"scene"}},
+      {"simulate_ranges_unsafe.json", sim, {"scene", "uncertain_inputs"}},
+      {"simulate_body_safe.json", sim, {"scene", "safety_factor"}},
+      {"simulate_body_unsafe.json", sim, {"scene", "safety_factor"}},
+      {"optimize_safe.json", opt, {"scene", "limits", "design_space"}},
+      {"optimize_unsafe.json", opt, {"scene", "limits", "design_space"}},
+      {"optimize_robust_safe.json", opt, {"uncertain_inputs", "limits"}},
+      {"optimize_probability_safe.json", opt, {"uncertain_inputs", "max_probability", "samples", "seed"}},
+      {"optimize_body_safe.json", opt, {"scene", "speed_m_per_s", "safety_factor"}},
+      {"optimize_body_unsafe.json", opt, {"scene", "speed_m_per_s", "safety_factor"}},
+      {"speed_limit_safe.json", lim, {"scene", "limits", "search_limit", "solve_for"}},
+      {"speed_limit_body_safe.json", lim, {"scene", "solve_for"}},
+      {"trajectory_safe.json", traj, {"scene", "limits", "joint_names"}},
+      {"trajectory_unsafe.json", traj, {"scene", "limits", "joint_names"}},
+      {"trajectory_body_safe.json", traj, {"scene", "regions"}},
+      {"trajectory_body_unsafe.json", traj, {"scene", "regions"}},
+      {"audit_safe.json", audit, {"robot", "coverings", "contact_area_m2", "surface"}},
+      {"audit_unsafe.json", audit, {"robot", "coverings", "contact_area_m2", "surface"}},
+  };
+}
+
+}  // namespace
+
+TEST_CASE("Every real result renders its summary's verdict, governing ratio and every input leaf", "[report][html]") {
+  for (const Fixture& f : Fixtures()) {
+    INFO(f.file);
+    const std::string json = ReadFile(f.file);
+    const Json j = Json::parse(json);
+    const Json& summary = j.at("summary");
+    const std::string html = Render(f.kind, json, TwoGnuplotCharts());
+    const Banner b = BannerOf(html);
+    CHECK(b.state == summary.at("state").get<std::string>());  // the default threshold is the JSON's
+    CHECK(b.safe == summary.at("safe").dump());
+    CHECK(b.ratio == summary.at("governing").at("ratio").dump());
+    CHECK(b.margin == (summary.at("kind") == "limits" ? "null" : summary.at("margin").dump()));
+    // The result's own verdict says the same.
+    if (j.contains("safe") && j["safe"].is_boolean()) CHECK(j["safe"] == summary["safe"]);
+    if (j.contains("status") && j["status"] != "at-rest") CHECK((j["status"] == "safe") == summary["safe"].get<bool>());
+    // Every input leaf, with its exact JSON text, once, in an inputs table with a unit.
+    const std::vector<InputRow> rows = InputRows(html);
+    std::vector<std::pair<std::string, std::string>> leaves;
+    for (const char* input : f.inputs) {
+      REQUIRE(j.contains(input));
+      Leaves(j[input], input, leaves);
+    }
+    for (const auto& [path, text] : leaves) {
+      INFO(path << " = " << text);
+      const auto n = std::count_if(rows.begin(), rows.end(), [&](const InputRow& r) { return r.key == path; });
+      REQUIRE(n == 1);
+      const InputRow& r = *std::find_if(rows.begin(), rows.end(), [&](const InputRow& r) { return r.key == path; });
+      CHECK(r.data_value == text);
+      CHECK_FALSE(r.unit.empty());
+      CHECK_FALSE(r.source.empty());
+    }
+    // No script, no external reference, the page-one sections once each.
+    CHECK(html.find("<script") == std::string::npos);
+    for (const char* id : {"page-one", "verdict", "governing-case", "judged", "covering", "robot", "sign-off", "appendix"}) {
+      INFO(id);
+      const std::string tag = std::string("<section id=\"") + id + "\"";
+      CHECK(html.find(tag) != std::string::npos);
+      CHECK(html.find(tag, html.find(tag) + 1) == std::string::npos);
+    }
+  }
+}
