@@ -22,6 +22,13 @@ std::string JoinList(const std::vector<std::string>& items, std::string_view emp
   return text;
 }
 
+/// At most `shown` items, then how many more: page 1 stays one page.
+std::string ShortList(const std::vector<std::string>& items, std::size_t shown) {
+  if (items.size() <= shown) return JoinList(items);
+  const std::vector<std::string> head(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(shown));
+  return JoinList(head) + " and " + std::to_string(items.size() - shown) + " more (all in the result's JSON)";
+}
+
 /// "head (frontal) contusion".
 std::string RowName(const SummaryRow& row) { return row.target + " " + row.criterion; }
 
@@ -100,7 +107,7 @@ void WriteFacts(std::string& out, const PageOne& p) {
   Term(out, "ratio", p.ratio_text == "null" ? "" : Significant(s.governing_ratio) + " (value / limit)");
   Term(out, "where", s.governing_case);
   out += "</dl></section>\n<section id=\"judged\"><h3>What was judged</h3><dl>\n";
-  Term(out, "targets", JoinList(s.targets));
+  Term(out, "targets", ShortList(s.targets, 6));
   Term(out, "criteria", JoinList(s.criteria));
   Term(out, "standards", JoinList(s.standards));
   Term(out, "safety factor", Significant(s.safety_factor) + " (each limit derated to limit / SF)");
