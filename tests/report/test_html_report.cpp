@@ -511,6 +511,8 @@ TEST_CASE("Many rows: the body shows the governing, the failed and the largest, 
   const std::string body = html.substr(0, html.find("<section id=\"appendix\""));
   const std::string appendix = Section(html, "appendix");
   CHECK(body.find("24 of 30 rows") != std::string::npos);
+  // Page one names six targets and how many more, so it stays one page.
+  CHECK(Section(html, "judged").find("region 5 and 24 more (all in the result&#39;s JSON)") != std::string::npos);
   CHECK(body.find("<tr class=\"binding\"><td>region 3</td>") != std::string::npos);
   for (int i = 0; i < 30; ++i) {
     const std::string cell = "<td>region " + std::to_string(i) + "</td>";
