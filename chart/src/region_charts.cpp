@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "covopt/chart/curve_chart.hpp"
+
 #include "chart_script.hpp"
 
 namespace covopt::chart {
@@ -153,11 +155,19 @@ GnuplotChart BodyRegionRatioChart(const BodyContactScene& scene, std::span<const
   return BodyRegionRatioChart(judged, bare, sf, note);
 }
 
-GnuplotChart BodyRegionDesignChart(const optim::BodyRegionDesignRequest& request,
-                                   const optim::BodyRegionDesignResult& result) {
-  if (request.regions.empty() || result.bare_robot.size() != request.regions.size()) {
-    throw std::invalid_argument("the body-region design chart needs the bare robot's judgement of every region");
-  }
+std::vector<GnuplotChart> BodyRegionSimulationCharts(const BodyContactScene& scene,
+                                                     std::span<const optim::BodyRegionJudgement> judged,
+                                                     const optim::BodyRegionOptions& options,
+                                                     const std::optional<std::string>& material) {
+  if (judged.empty()) return {};
+  std::vector<GnuplotChart> charts{BodyRegionRatioChart(scene, judged, options)};
+  if (auto foam = FoamWorkingPointChartOf(scene, judged, material)) charts.push_back(std::move(*foam));
+  return charts;
+}
+
+std::vector<GnuplotChart> BodyRegionDesignCharts(const optim::BodyRegionDesignRequest& request,
+                                                 const optim::BodyRegionDesignResult& result) {
+  if (request.regions.empty() || result.bare_robot.size() != request.regions.size()) return {};  // the head alone
   const std::vector<std::optional<optim::BodyRegionJudgement>> bare(result.bare_robot.begin(), result.bare_robot.end());
   const optim::BodyRegionDesignCandidate* shown =
       result.recommendation ? &result.candidates[*result.recommendation]
@@ -176,7 +186,7 @@ GnuplotChart BodyRegionDesignChart(const optim::BodyRegionDesignRequest& request
   if (optim::BareRobotLacksContactArea(bare_scene)) {
     note += " Without a contact area the bare robot's pressure is not evaluated: its bars are the force's.";
   }
-  return BodyRegionRatioChart(covered, bare, request.rule.safety_factor, note);
+  return {BodyRegionRatioChart(covered, bare, request.rule.safety_factor, note)};
 }
 
 GnuplotChart BodyRegionSpeedChart(std::span<const report::BodyRegionTableRow> rows) {

@@ -298,8 +298,8 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
     }
     d["history"] = columns;
   }
-  return WithReportCharts(std::move(d), [scene, judgements, judge] {
-    return std::vector{chart::BodyRegionRatioChart(scene, judgements, judge)};
+  return WithReportCharts(std::move(d), [scene, judgements, judge, material = MaterialName(inputs)] {
+    return chart::BodyRegionSimulationCharts(scene, judgements, judge, material);
   });
 }
 
@@ -386,8 +386,7 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
   py::dict d = JsonToPython(report::BodyRegionDesignJson(request, result,
                                                         optim::BodyRegionCriterion(request.rule, targets.has_head()),
                                                         DesignWarnings(inputs, targets)));
-  if (request.regions.empty()) return d;  // the head alone: no region's bars
-  return WithReportCharts(std::move(d), [request, result] { return std::vector{chart::BodyRegionDesignChart(request, result)}; });
+  return WithReportCharts(std::move(d), [request, result] { return chart::BodyRegionDesignCharts(request, result); });
 }
 
 /// covopt.check_trajectory(..., body_region=...): every sample against the ISO regions named

@@ -58,6 +58,13 @@ TEST_CASE("Every kind and mode of --report holds its charts", "[report][chart]")
   const std::vector<Mode> modes = {
       {"simulate", {"simulate"}, 1, {}},
       {"simulate, ranges", {"simulate", "--head-mass", "3.7kg..5.8kg"}, 1, {"force [N]"}},
+      {"simulate, foam covering", {"simulate", "--material", "neoprene sponge D1056 2C2", "--covering-thickness", "10mm"},
+       2, {"nominal strain of the covering [%]"}},
+      {"simulate, one region, foam covering",
+       with({"simulate", "--body-region", "chest", "--material", "neoprene sponge D1056 2C2", "--covering-thickness",
+             "10mm"},
+            body),
+       2, {"force (limit 280 N)", "working point"}},
       {"simulate, one region", with({"simulate", "--body-region", "chest"}, body), 1, {"force (limit 280 N)"}},
       {"simulate, all regions", with({"simulate", "--body-region", "all"}, body), 1, {"chest (sternum)", "hands-fingers"}},
       {"optimize", {"optimize", "--material", "PU foam PORON 4701-30 320"}, 1, {}},
