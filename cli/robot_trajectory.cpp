@@ -16,6 +16,7 @@
 #include <fmt/ostream.h>
 
 #include "body_region_options.hpp"
+#include "covopt/chart/region_charts.hpp"
 #include "covopt/optim/body_region_trajectory.hpp"
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/optim/trajectory_check.hpp"
@@ -184,7 +185,9 @@ int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptio
                      report::BodyRegionTrajectoryJson(check ? *check : empty, iso,
                                                       BodyContactSceneOf(run.scene.scene, regions), head, criterion,
                                                       warnings),
-                     context, options.report_file, report::ReportKind::kTrajectory, nullptr);
+                     context, options.report_file, report::ReportKind::kTrajectory, [&] {
+                       return chart::BodyRegionTrajectoryCharts(check ? *check : empty, iso, body_options.rule.safety_factor);
+                     });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

@@ -428,10 +428,12 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
   std::vector<std::string> warnings = InputAndCrushWarnings(inputs);
   warnings.insert(warnings.end(), motion.warnings.begin(), motion.warnings.end());
   warnings.insert(warnings.end(), targets.notes.begin(), targets.notes.end());
-  return JsonToPython(report::BodyRegionTrajectoryJson(check ? *check : optim::BodyRegionTrajectoryCheck{},
-                                                       iso, scene,
-                                                       head_summary, optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head()),
-                                                       warnings));
+  const optim::BodyRegionTrajectoryCheck checked = check ? *check : optim::BodyRegionTrajectoryCheck{};
+  return WithReportCharts(
+      JsonToPython(report::BodyRegionTrajectoryJson(checked, iso, scene, head_summary,
+                                                    optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head()),
+                                                    warnings)),
+      [checked, iso, sf = options.rule.safety_factor] { return chart::BodyRegionTrajectoryCharts(checked, iso, sf); });
 }
 
 /// covopt.sweep(x, y, scene=..., body_region=...): one region's verdict over the grid

@@ -13,6 +13,7 @@
 #include "covopt/chart/charts.hpp"
 #include "covopt/core/body_contact.hpp"
 #include "covopt/optim/body_region_check.hpp"
+#include "covopt/optim/body_region_trajectory.hpp"
 #include "covopt/report/body_contact_json.hpp"
 
 namespace covopt::chart {
@@ -70,6 +71,13 @@ GnuplotChart BodyRegionRatioChart(const BodyContactScene& scene, std::span<const
 /// candidate at the thickest scanned), the caption naming the covering. None for the head alone.
 std::vector<GnuplotChart> BodyRegionDesignCharts(const optim::BodyRegionDesignRequest& request,
                                                  const optim::BodyRegionDesignResult& result);
+
+/// `robot --trajectory --body-region`'s report chart: the largest governing ratio over
+/// `regions` [-] at each sample over time [s] (0 at rest), the limit 1/`safety_factor` dashed,
+/// the sample that sets the safe speed scale marked. None without samples (the head alone).
+std::vector<GnuplotChart> BodyRegionTrajectoryCharts(const optim::BodyRegionTrajectoryCheck& check,
+                                                     std::span<const materials::BodyLimits> regions,
+                                                     double safety_factor);
 
 /// `speed-limit --body-region`: the largest safe speed [m/s] per row of the table (region and
 /// area, and the mass where the table has several), bare robot against covered.
