@@ -97,11 +97,7 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
       PrintAndReport(out, options.json,
                      report::BodyRegionDesignJson(request, result, BodyCriterion(request.rule, regions.has_head()),
                                                   input_warnings),
-                     options.run, options.report, inputs, report::ReportKind::kOptimize,
-                     [&] {
-                       if (request.regions.empty()) return std::vector<chart::GnuplotChart>{};  // the head alone
-                       return std::vector{chart::BodyRegionDesignChart(request, result)};
-                     });
+                     options.run, options.report, inputs, report::ReportKind::kOptimize, [&] { return chart::BodyRegionDesignCharts(request, result); });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

@@ -19,6 +19,7 @@
 #include "body_region_output.hpp"
 #include "covopt/optim/summaries.hpp"
 #include "covopt/report/summary_json.hpp"
+#include "covopt/chart/region_charts.hpp"
 #include "covopt/optim/body_region_trajectory.hpp"
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/optim/trajectory_check.hpp"
@@ -187,7 +188,9 @@ int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptio
                      report::BodyRegionTrajectoryJson(check ? *check : empty, iso,
                                                       BodyContactSceneOf(run.scene.scene, regions), head, criterion,
                                                       optim::JudgedRule(body_options).safety_factor, warnings),
-                     context, options.report, run.scene.inputs, report::ReportKind::kTrajectory, nullptr);
+                     context, options.report, run.scene.inputs, report::ReportKind::kTrajectory, [&] {
+                       return chart::BodyRegionTrajectoryCharts(check ? *check : empty, iso, body_options.rule.safety_factor);
+                     });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

@@ -216,9 +216,7 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
                      report::UncertainSimulationJson(report, box ? &*box : nullptr, box ? &worst : nullptr,
                                                      probability ? &*probability : nullptr,
                                                      elasticities ? &*elasticities : nullptr),
-                     options.run, options.report, plan.inputs, report::ReportKind::kSimulate,
-                     // The history of the scene reported: the worst case over the box (its title names it).
-                     [&] { return std::vector{chart::HistoryChart(report)}; });
+                     options.run, options.report, plan.inputs, report::ReportKind::kSimulate, [&] { return chart::SimulationCharts(report); });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }
@@ -308,7 +306,7 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
   if (plan.json || options.report.file) {
     try {  // the object covopt.simulate() returns
       PrintAndReport(out, plan.json, report::SimulationJson(report), options.run, options.report, plan.inputs,
-                     report::ReportKind::kSimulate, [&] { return std::vector{chart::HistoryChart(report)}; });
+                     report::ReportKind::kSimulate, [&] { return chart::SimulationCharts(report); });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

@@ -34,6 +34,20 @@ int RunHead(const SimulateOptions& options, std::ostream& out, std::ostream& err
   return RunSimulate(head, out, err);
 }
 
+/// The head's outputs: `text` as printed (its JSON object with --json, else its text) and
+/// `object`, its JSON object for the regions' --json and report (made only when one is asked for).
+int RunHeadOutputs(const SimulateOptions& options, bool json, std::ostream& err, std::optional<std::string>& text,
+                   std::optional<std::string>& object) {
+  for (const bool as_json : {json, true}) {
+    if (as_json && !json && !options.report.file) break;  // the text alone is wanted
+    std::ostringstream out;
+    if (const int code = RunHead(options, out, err, as_json); code != 0) return code;
+    (as_json ? object : text) = out.str();
+    if (json) break;
+  }
+  return 0;
+}
+
 /// One ISO region's block of the table: the region, the peaks, the time path's self-check
 /// (`time_path`, if computed) and the verdicts.
 void PrintRegionBlock(std::ostream& out, const BodyTarget& target, const BodyRegionJudgement& v,
@@ -131,24 +145,14 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
   std::optional<std::string> head_text;  // as printed: the JSON object with --json, else the text
   std::optional<std::string> head_json;  // the report's (and --json's) object
   if (regions.has_head()) {
-    for (const bool json : {plan.json, true}) {
-      if (json && !plan.json && !options.report.file) break;  // the text alone is wanted
-      std::ostringstream head_out;
-      const int code = RunHead(options, head_out, err, json);
-      if (code != 0) return code;
-      (json ? head_json : head_text) = head_out.str();
-      if (plan.json) break;
-    }
+    if (const int code = RunHeadOutputs(options, plan.json, err, head_text, head_json); code != 0) return code;
   }
   if (plan.json || options.report.file) {
     try {
       PrintAndReport(out, plan.json,
                      report::BodyContactSimulationJson(scene, MaterialName(plan), judgements, sf, head_json, warnings),
-                     options.run, options.report, plan.inputs, report::ReportKind::kSimulate, [&] {
-                       // The head alone (no ISO region judged) has its own text and no bars.
-                       if (judgements.empty()) return std::vector<chart::GnuplotChart>{};
-                       return std::vector{chart::BodyRegionRatioChart(scene, judgements, rule)};
-                     });
+                     options.run, options.report, plan.inputs, report::ReportKind::kSimulate,
+                     [&] { return chart::BodyRegionSimulationCharts(scene, judgements, rule, MaterialName(plan)); });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

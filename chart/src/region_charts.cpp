@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "covopt/chart/curve_chart.hpp"
+
 #include "chart_script.hpp"
 
 namespace covopt::chart {
@@ -153,11 +155,19 @@ GnuplotChart BodyRegionRatioChart(const BodyContactScene& scene, std::span<const
   return BodyRegionRatioChart(judged, bare, sf, note);
 }
 
-GnuplotChart BodyRegionDesignChart(const optim::BodyRegionDesignRequest& request,
-                                   const optim::BodyRegionDesignResult& result) {
-  if (request.regions.empty() || result.bare_robot.size() != request.regions.size()) {
-    throw std::invalid_argument("the body-region design chart needs the bare robot's judgement of every region");
-  }
+std::vector<GnuplotChart> BodyRegionSimulationCharts(const BodyContactScene& scene,
+                                                     std::span<const optim::BodyRegionJudgement> judged,
+                                                     const optim::BodyRegionOptions& options,
+                                                     const std::optional<std::string>& material) {
+  if (judged.empty()) return {};
+  std::vector<GnuplotChart> charts{BodyRegionRatioChart(scene, judged, options)};
+  if (auto foam = FoamWorkingPointChartOf(scene, judged, material)) charts.push_back(std::move(*foam));
+  return charts;
+}
+
+std::vector<GnuplotChart> BodyRegionDesignCharts(const optim::BodyRegionDesignRequest& request,
+                                                 const optim::BodyRegionDesignResult& result) {
+  if (request.regions.empty() || result.bare_robot.size() != request.regions.size()) return {};  // the head alone
   const std::vector<std::optional<optim::BodyRegionJudgement>> bare(result.bare_robot.begin(), result.bare_robot.end());
   const optim::BodyRegionDesignCandidate* shown =
       result.recommendation ? &result.candidates[*result.recommendation]
@@ -176,7 +186,7 @@ GnuplotChart BodyRegionDesignChart(const optim::BodyRegionDesignRequest& request
   if (optim::BareRobotLacksContactArea(bare_scene)) {
     note += " Without a contact area the bare robot's pressure is not evaluated: its bars are the force's.";
   }
-  return BodyRegionRatioChart(covered, bare, request.rule.safety_factor, note);
+  return {BodyRegionRatioChart(covered, bare, request.rule.safety_factor, note)};
 }
 
 GnuplotChart BodyRegionSpeedChart(std::span<const report::BodyRegionTableRow> rows) {
@@ -207,6 +217,42 @@ GnuplotChart BodyRegionSpeedChart(std::span<const report::BodyRegionTableRow> ro
                   "no bar. Each is limited by its region's ISO/TS 15066 force and pressure limits with the "
                   "safety factor.",
                   any_covering ? ", covered (blue) and bare robot (grey)" : ", bare robot"));
+}
+
+std::vector<GnuplotChart> BodyRegionTrajectoryCharts(const optim::BodyRegionTrajectoryCheck& check,
+                                                     std::span<const materials::BodyLimits> regions,
+                                                     double safety_factor) {
+  if (check.samples.empty() || regions.empty()) return {};
+  const double bound = 1.0 / safety_factor;
+  std::string s = fmt::format("set title {}\n", GnuplotQuoted(fmt::format(
+                                                     "the largest governing ratio over the {} regions at each sample "
+                                                     "(safe: ratio <= 1/SF = {:.3g})",
+                                                     regions.size(), bound)));
+  s += "$ratio << EOD\n";
+  for (const optim::BodyRegionSampleVerdict& v : check.samples) {
+    s += fmt::format("{} {}\n", v.time_s, v.moving && std::isfinite(v.worst_ratio) ? fmt::format("{}", v.worst_ratio) : "0");
+  }
+  s += "EOD\nset xlabel 'time [s]'\nset ylabel 'governing ratio [-]'\nset grid\nset key below horizontal\n";
+  s += "set yrange [0:*]\n";
+  std::string plot = fmt::format(
+      "plot $ratio using 1:2 with lines linewidth 2 linecolor rgb '{}' title 'largest ratio over the regions', "
+      "{:g} with lines dashtype 2 linewidth 2 linecolor rgb '{}' title 'limit 1/SF = {:.3g}'",
+      kCoveredColour, bound, kLimitColour, bound);
+  if (check.worst_sample && *check.worst_sample < check.samples.size()) {
+    const optim::BodyRegionSampleVerdict& w = check.samples[*check.worst_sample];
+    const std::string where = w.worst_region < regions.size() ? RegionLabel(regions[w.worst_region]) : std::string();
+    plot += fmt::format(", '-' using 1:2 with points pointtype 6 pointsize 2 linewidth 2 linecolor rgb '#000000' "
+                        "title {}\n{} {}\ne",
+                        GnuplotQuoted(fmt::format("sets the scale: t = {:.4g} s, {}", w.time_s, where)), w.time_s,
+                        w.worst_ratio);
+  }
+  s += plot + "\nunset output\n";
+  return {internal::MakeChart(
+      "Ratio over the motion",
+      fmt::format("The largest governing ratio [-] over the {} body regions judged at each sample of the motion, "
+                  "over time [s] (0 at rest); safe where safety factor x ratio <= 1 (dashed at 1/SF = {:.3g}).",
+                  regions.size(), bound),
+      1000, 600, std::move(s))};
 }
 
 GnuplotChart AuditRegionMap(const audit::AuditResult& result, double safety_factor) {

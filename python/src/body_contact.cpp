@@ -298,8 +298,8 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
     }
     d["history"] = columns;
   }
-  return WithReportCharts(std::move(d), [scene, judgements, judge] {
-    return std::vector{chart::BodyRegionRatioChart(scene, judgements, judge)};
+  return WithReportCharts(std::move(d), [scene, judgements, judge, material = MaterialName(inputs)] {
+    return chart::BodyRegionSimulationCharts(scene, judgements, judge, material);
   });
 }
 
@@ -386,8 +386,7 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
   py::dict d = JsonToPython(report::BodyRegionDesignJson(request, result,
                                                         optim::BodyRegionCriterion(request.rule, targets.has_head()),
                                                         DesignWarnings(inputs, targets)));
-  if (request.regions.empty()) return d;  // the head alone: no region's bars
-  return WithReportCharts(std::move(d), [request, result] { return std::vector{chart::BodyRegionDesignChart(request, result)}; });
+  return WithReportCharts(std::move(d), [request, result] { return chart::BodyRegionDesignCharts(request, result); });
 }
 
 /// covopt.check_trajectory(..., body_region=...): every sample against the ISO regions named
@@ -429,10 +428,12 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
   std::vector<std::string> warnings = InputAndCrushWarnings(inputs);
   warnings.insert(warnings.end(), motion.warnings.begin(), motion.warnings.end());
   warnings.insert(warnings.end(), targets.notes.begin(), targets.notes.end());
-  return JsonToPython(report::BodyRegionTrajectoryJson(check ? *check : optim::BodyRegionTrajectoryCheck{},
-                                                       iso, scene,
-                                                       head_summary, optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head()),
-                                                       optim::JudgedRule(options).safety_factor, warnings));
+  const optim::BodyRegionTrajectoryCheck checked = check ? *check : optim::BodyRegionTrajectoryCheck{};
+  return WithReportCharts(
+      JsonToPython(report::BodyRegionTrajectoryJson(checked, iso, scene, head_summary,
+                                                    optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head()),
+                                                    optim::JudgedRule(options).safety_factor, warnings)),
+      [checked, iso, sf = options.rule.safety_factor] { return chart::BodyRegionTrajectoryCharts(checked, iso, sf); });
 }
 
 /// covopt.sweep(x, y, scene=..., body_region=...): one region's verdict over the grid

@@ -402,7 +402,7 @@ py::dict Simulate(const SceneInputs& inputs, const py::kwargs& kwargs) {
   report.input_warnings = InputWarnings(inputs);
   py::dict result = JsonToPython(report::SimulationJson(report, -1));
   if (options.record_history) result["history"] = HistoryColumns(report.result.history, *model);
-  return WithReportCharts(std::move(result), [report] { return std::vector{chart::HistoryChart(report)}; });
+  return WithReportCharts(std::move(result), [report] { return chart::SimulationCharts(report); });
 }
 
 /// A list of strings from a str or a sequence of them.

@@ -175,7 +175,7 @@ py::object UncertainSimulation(const SceneInputs& scene, const py::kwargs& kwarg
   // The report's chart: the worst case's history (as the CLI's simulate with ranges).
   return WithReportCharts(JsonToPython(report::UncertainSimulationJson(impact, &*b.box, &worst,
                                                                        probability ? &*probability : nullptr, nullptr, -1)),
-                          [impact] { return std::vector{chart::HistoryChart(impact)}; });
+                          [impact] { return chart::SimulationCharts(impact); });
 }
 
 py::object WorstCase(const SceneInputs& scene, const py::kwargs& kwargs) {

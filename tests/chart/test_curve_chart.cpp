@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
+#include <covopt/core.hpp>
 #include <covopt/materials.hpp>
 
 #include "covopt/chart/curve_chart.hpp"
@@ -46,4 +48,44 @@ TEST_CASE("a material without a curve has no curve chart", "[charts][curve]") {
   const auto* m = covopt::materials::Catalog::BuiltIn().Find("polystyrene foam 27.6");
   REQUIRE(m != nullptr);
   CHECK_THROWS_AS(covopt::chart::CompressiveCurveChart(*m), std::invalid_argument);
+}
+
+TEST_CASE("the working-point chart marks the result's strain and the curve's stress there", "[charts][curve]") {
+  const auto* m = covopt::materials::Catalog::BuiltIn().Find("neoprene sponge D1056 2C2");
+  REQUIRE(m != nullptr);
+  const covopt::CompressiveCurve& curve = *m->compressive_curve;
+  const double strain = 0.5 * curve.last_strain();
+  const covopt::chart::WorkingPoint point{"", strain};
+  const covopt::chart::GnuplotChart chart = covopt::chart::FoamWorkingPointChart(curve, m->name, {&point, 1});
+  const std::string script = chart.script(covopt::chart::ChartFormat::kSvg, "out.svg");
+  CHECK_THAT(script, Contains("$points << EOD\n" + G(100.0 * strain) + " " + G(curve.StressAt(strain) / 1e3)));
+  CHECK_THAT(script, Contains("set xlabel 'nominal strain of the covering [%]'"));
+  CHECK_THAT(script, Contains("set ylabel 'nominal stress σ [kPa]'"));
+  CHECK_THAT(chart.caption, Contains("[kPa]") && Contains("[%]"));
+  CHECK_THROWS_AS(covopt::chart::FoamWorkingPointChart(curve, m->name, {}), std::invalid_argument);
+}
+
+TEST_CASE("a simulation's report charts: the history, and the working point for a foam covering", "[charts][curve]") {
+  const auto* foam = covopt::materials::Catalog::BuiltIn().Find("neoprene sponge D1056 2C2");
+  const auto* hertz = covopt::materials::Catalog::BuiltIn().Find("polystyrene foam 27.6");
+  REQUIRE((foam != nullptr && hertz != nullptr));
+  for (const auto* m : {foam, hertz}) {
+    covopt::report::SimulationReport report;
+    report.scene.robot.speed_m_per_s = 0.5;
+    report.scene.covering = covopt::materials::CoveringOf(*m, 0.01);
+    covopt::TimeIntegrationOptions options;
+    options.record_history = true;
+    report.result = covopt::SimulateImpact(covopt::ImpactModel::FromScene(report.scene), options);
+    report.covering_material = m->name;
+    REQUIRE(report.result.ok());
+    const std::vector<covopt::chart::GnuplotChart> charts = covopt::chart::SimulationCharts(report);
+    CAPTURE(m->name);
+    REQUIRE(charts.size() == (m == foam ? 2u : 1u));
+    if (m == foam) {
+      const double strain = report.result.peaks.covering_strain_at_peak;
+      CHECK(strain > 0.0);
+      CHECK_THAT(charts[1].script(covopt::chart::ChartFormat::kSvg, "o.svg"),
+                 Contains("$points << EOD\n" + G(100.0 * strain)));
+    }
+  }
 }

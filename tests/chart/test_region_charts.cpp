@@ -126,3 +126,25 @@ TEST_CASE("audit region map writes every link x region ratio in its cell", "[cha
   CHECK_THAT(s, Contains("set cbrange [0:1]"));  // the limit 1/SF = 0.5 in the middle
   CHECK_THAT(s, Contains("governing ratio [-]"));
 }
+
+TEST_CASE("trajectory region chart draws the worst ratio at every sample and marks the worst", "[chart][regions]") {
+  const materials::BodyLimits chest = materials::BodyRegionTable::BuiltIn().Limits("chest", "", ContactType::kTransient);
+  optim::BodyRegionTrajectoryCheck check;
+  for (int i = 0; i < 5; ++i) {
+    optim::BodyRegionSampleVerdict v;
+    v.time_s = 0.25 * i;
+    v.moving = i > 0;
+    v.worst_ratio = 0.1 * i;
+    check.samples.push_back(v);
+  }
+  check.worst_sample = 4;
+  const std::vector<chart::GnuplotChart> charts = chart::BodyRegionTrajectoryCharts(check, {&chest, 1}, 2.0);
+  REQUIRE(charts.size() == 1);
+  const std::string s = Svg(charts.front());
+  CHECK_THAT(s, Contains("$ratio << EOD\n0 0\n0.25 0.1\n0.5 0.2\n0.75 0.30000000000000004\n1 0.4\nEOD"));
+  CHECK_THAT(s, Contains("set xlabel 'time [s]'"));
+  CHECK_THAT(s, Contains("set ylabel 'governing ratio [-]'"));
+  CHECK_THAT(s, Contains("limit 1/SF = 0.5"));
+  CHECK_THAT(s, Contains("sets the scale: t = 1 s, chest (sternum)"));
+  CHECK(chart::BodyRegionTrajectoryCharts({}, {&chest, 1}, 1.0).empty());
+}

@@ -86,6 +86,12 @@ std::string GnuplotQuoted(std::string_view text);
 ///         time-path run fails.
 GnuplotChart HistoryChart(const report::SimulationReport& report);
 
+/// The charts of a head simulation's report (`simulate`, with ranges too): HistoryChart, then
+/// the working point on the covering's compressive curve when the foam law judged it
+/// (FoamWorkingPointChartOf, curve_chart.hpp).
+/// @throws as HistoryChart.
+std::vector<GnuplotChart> SimulationCharts(const report::SimulationReport& report);
+
 /// What the speed-limit chart draws: the largest safe impact speed over the reflected mass,
 /// one curve per covering and one for the bare robot.
 struct SpeedLimitChartInput {

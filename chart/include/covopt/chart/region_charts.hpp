@@ -13,6 +13,7 @@
 #include "covopt/chart/charts.hpp"
 #include "covopt/core/body_contact.hpp"
 #include "covopt/optim/body_region_check.hpp"
+#include "covopt/optim/body_region_trajectory.hpp"
 #include "covopt/report/body_contact_json.hpp"
 
 namespace covopt::chart {
@@ -39,6 +40,14 @@ struct BareCoveredBars {
 /// @throws std::invalid_argument without bars.
 GnuplotChart BareCoveredBarChart(const BareCoveredBars& bars, std::string title, std::string caption);
 
+/// The charts of `simulate --body-region`'s report: BodyRegionRatioChart, then the working points
+/// on a foam covering's curve (FoamWorkingPointChartOf; `material` names it). None without
+/// judgements (the head alone).
+std::vector<GnuplotChart> BodyRegionSimulationCharts(const BodyContactScene& scene,
+                                                     std::span<const optim::BodyRegionJudgement> judged,
+                                                     const optim::BodyRegionOptions& options,
+                                                     const std::optional<std::string>& material);
+
 /// The body-region ratio chart from its judgements: the governing ratio [-] per region (several
 /// regions), or the force and pressure ratios [-] of the one region, `covered` (empty: no
 /// covering, the bare robot alone) beside `bare` (one per region, in the same order; an empty
@@ -57,12 +66,18 @@ GnuplotChart BodyRegionRatioChart(std::span<const optim::BodyRegionJudgement> co
 GnuplotChart BodyRegionRatioChart(const BodyContactScene& scene, std::span<const optim::BodyRegionJudgement> judged,
                                   const optim::BodyRegionOptions& options);
 
-/// `optimize --body-region`: BodyRegionRatioChart of every region for the bare robot
-/// (result.bare_robot) and with the recommended covering (or, none admissible, the best
-/// candidate at the thickest scanned), the caption naming the covering.
-/// @throws std::invalid_argument without regions.
-GnuplotChart BodyRegionDesignChart(const optim::BodyRegionDesignRequest& request,
-                                   const optim::BodyRegionDesignResult& result);
+/// `optimize --body-region`'s report chart: BodyRegionRatioChart of every region for the bare
+/// robot (result.bare_robot) and with the recommended covering (or, none admissible, the best
+/// candidate at the thickest scanned), the caption naming the covering. None for the head alone.
+std::vector<GnuplotChart> BodyRegionDesignCharts(const optim::BodyRegionDesignRequest& request,
+                                                 const optim::BodyRegionDesignResult& result);
+
+/// `robot --trajectory --body-region`'s report chart: the largest governing ratio over
+/// `regions` [-] at each sample over time [s] (0 at rest), the limit 1/`safety_factor` dashed,
+/// the sample that sets the safe speed scale marked. None without samples (the head alone).
+std::vector<GnuplotChart> BodyRegionTrajectoryCharts(const optim::BodyRegionTrajectoryCheck& check,
+                                                     std::span<const materials::BodyLimits> regions,
+                                                     double safety_factor);
 
 /// `speed-limit --body-region`: the largest safe speed [m/s] per row of the table (region and
 /// area, and the mass where the table has several), bare robot against covered.
