@@ -45,7 +45,7 @@ constexpr SignOffFlag kSignOffFlags[] = {
     {"note", "--note", &ReportFlags::note, "TEXT", "a note printed with the sign-off fields"},
     {"margin_threshold", "--margin-threshold", &ReportFlags::margin_threshold, "SHARE",
      "a SAFE verdict whose margin is below this reads MARGINAL: a share, 10% or 0.1 (default 10%)"},
-    {"appendix", "--report-appendix", &ReportFlags::appendix, "none|summary|full",
+    {"appendix", "--report-appendix", &ReportFlags::appendix, "{none,summary,full}",
      "what the report's appendix holds: none, summary (every summary row and input; the default) or full "
      "(every value of the JSON)"},
 };

@@ -3,10 +3,16 @@ it, the date and the SHA-256 of every input file, made by the C++ library
 (covopt/report/provenance.hpp) as for the CLI's ``--json``; ``result.provenance`` is the last
 key of ``to_dict()``. The command is the Python call, ``covopt.optimize(materials=['PORON XRD
 15 pcf'])``: the function's name and every argument given, by name, as its repr (a repr longer
-than 200 characters, a trajectory given as arrays say, is shown as ``<dict>``)."""
+than 200 characters, a trajectory given as arrays say, is shown as ``<dict>``).
+
+A result that has a report also carries ``input_sources`` (before ``provenance``), as the CLI's
+``--json`` does: where each input came from, "keyword robot_mass" for a keyword given (to the
+call or to its covopt.Scene), "catalog" for the covering's modulus and Poisson ratio of a
+``material``, else "default"; made by the library (covopt/report/input_sources.hpp)."""
 
 import functools
 import inspect
+import json
 import os
 
 from . import _covopt
@@ -44,6 +50,18 @@ def provenance(name, arguments):
     return _covopt.provenance(command, inputs)
 
 
+def input_sources(data, arguments):
+    """The "input_sources" of a result's data made by a call with `arguments`: the keywords given
+    to the call and to its covopt.Scene (its ranges' too)."""
+    keywords = list(arguments)
+    scene = arguments.get("scene")
+    if isinstance(scene, _covopt.Scene):
+        given = scene.__getstate__()
+        keywords += [key for key in given if key != "ranges"] + list(given.get("ranges") or {})
+    text = json.dumps({key: value for key, value in data.items() if key != "history"}, default=lambda _: None)
+    return _covopt.input_sources(text, keywords)
+
+
 def stamped(function):
     """The public function `function`, its result carrying the provenance of the call."""
     signature = inspect.signature(function)
@@ -57,6 +75,8 @@ def stamped(function):
                 arguments.update(value)
             else:
                 arguments[key] = value
+        if getattr(result, "_report_kind", None) is not None:
+            result._data["input_sources"] = input_sources(result._data, arguments)
         result._data["provenance"] = provenance(function.__name__, arguments)
         return result
 

@@ -45,7 +45,7 @@ class Result:
         """The result as the CLI's ``--json`` object (a deep copy: dicts, lists, numbers)."""
         return copy.deepcopy(self._data)
 
-    def to_html(self, path):
+    def to_html(self, path, report_info=None):
         """Writes the report for the risk-assessment file to `path` (UTF-8) and returns `path`:
         one self-contained HTML document (inline CSS and SVG, no script, nothing fetched when
         viewed) with the verdicts, criteria and sources, inputs, assumptions, warnings and the
@@ -53,23 +53,41 @@ class Result:
         CLI's ``--report`` makes it from its ``--json``. Results of simulate, worst_case,
         injury_probability, optimize, robust_optimize, speed_limit, check_trajectory and audit
         have one; others raise TypeError. `path` must end in .html or .htm (any case), else
-        ValueError: there is no to_pdf (a PDF is printed by a browser, which the CLI's
-        ``--report FILE.pdf`` runs; docs/guide/python.md shows how)."""
+        ValueError; for a PDF, use to_pdf.
+
+        report_info: None, or a dict of the sign-off fields printed on the report's first page,
+        as the CLI's flags give them: project, cell, assessor, note (texts of at most 2000
+        characters; line breaks only in the note), margin_threshold (a SAFE verdict with a smaller
+        margin reads MARGINAL: a share in [0, 1), 0.1 or "10%"; default 0.1) and appendix ("none",
+        "summary" (the default) or "full": how much of the result the PDF's appendix holds).
+        Another key, or a value out of range, raises ValueError naming it."""
+        return self._write_report(path, (".html", ".htm"), "to_html", report_info)
+
+    def to_pdf(self, path, report_info=None):
+        """Writes the report as PDF to `path` and returns `path`: the HTML of to_html (same
+        `report_info`) printed by a headless Chromium, as the CLI's ``--report FILE.pdf`` does
+        (the library finds the browser: $COVOPT_CHROMIUM, else chromium on $PATH; its time limit
+        $COVOPT_CHROMIUM_TIMEOUT). `path` must end in .pdf (any case), else ValueError; no browser,
+        or one that fails, raises RuntimeError, and no file is written then."""
+        return self._write_report(path, (".pdf",), "to_pdf", report_info)
+
+    def _write_report(self, path, suffixes, name, report_info):
         try:
             suffix = pathlib.PurePath(path).suffix.lower()
         except TypeError:  # not a str or os.PathLike
             suffix = None
-        if suffix not in (".html", ".htm"):
-            raise ValueError(f"to_html: path must be a file name ending in .html or .htm (got {path!r}); "
-                             "for a PDF, print the HTML with a browser or run the CLI with --report FILE.pdf "
-                             "(docs/guide/python.md)")
+        if suffix not in suffixes:
+            raise ValueError(f"{name}: path must be a file name ending in {' or '.join(suffixes)} (got {path!r})")
         if self._report_kind is None:
             raise TypeError(f"{self._name} has no report (simulate, optimize, speed_limit, check_trajectory "
                             "and audit results have one)")
         from . import _covopt  # the extension, imported by the package before this runs
-        data = {key: value for key, value in self._data.items() if key != "history"}
-        html = _covopt.html_report(self._report_kind, json.dumps(data, allow_nan=False), self._charts)
-        pathlib.Path(path).write_text(html, encoding="utf-8")
+        data = json.dumps({key: value for key, value in self._data.items() if key != "history"}, allow_nan=False)
+        if name == "to_pdf":
+            _covopt.pdf_report(self._report_kind, data, self._charts, report_info, str(pathlib.Path(path)))
+        else:
+            html = _covopt.html_report(self._report_kind, data, self._charts, report_info)
+            pathlib.Path(path).write_text(html, encoding="utf-8")
         return path
 
     def __repr__(self):

@@ -113,7 +113,8 @@ TEST_CASE("audit --json is the library's audit of the same input, to the bit, in
   REQUIRE(j["warnings"].size() == library["warnings"].size() + 1);
   CHECK(j["warnings"][0].get<std::string>().find("crushing is not checked") != std::string::npos);
   CHECK(json(std::vector<json>(j["warnings"].begin() + 1, j["warnings"].end())) == library["warnings"]);
-  CHECK(j.size() == library.size() + 1);  // and the run's provenance, last
+  CHECK(j.size() == library.size() + 2);  // and where its inputs came from and the run's provenance, last
+  CHECK(j.contains("input_sources"));
   CHECK(j.contains("provenance"));
 
   for (const char* key : {"status", "message", "safe_speed_scale", "limiting", "criterion", "safety_factor",

@@ -69,6 +69,9 @@ std::vector<SingleValueOption> SingleValueOptions(const std::string& command) {
     } else if (type.rfind("FILE.html", 0) == 0) {  // --report checks its extension first
       option.first = "1.html";
       option.second = "2.html";
+    } else if (type == "SHARE") {  // --margin-threshold: a bare 1 is refused as a likely percentage
+      option.first = "1%";
+      option.second = "2%";
     }
     options.push_back(option);
   }
