@@ -1,10 +1,12 @@
-// The HTML report's appendix (every value of the result) and provenance (html_sections.hpp).
+// The HTML report's appendix (none; the summary; every value of the result) and provenance
+// (html_sections.hpp).
 #include <algorithm>
 #include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "covopt/report/report_info.hpp"
 #include "html_sections.hpp"
 
 namespace covopt::report::internal::html {
@@ -137,6 +139,29 @@ void WriteAppendix(std::string& out, const Json& v, const std::string& path) {
   for (const auto& [key, child] : entries) {
     if (!IsInline(*child)) WriteAppendix(out, *child, path.empty() ? key : path + "." + key);
   }
+}
+
+void WriteAppendixSection(std::string& out, ReportAppendix appendix, const ResultSummary& summary, const Json& j) {
+  out += "<section id=\"appendix\" data-appendix=\"";
+  out += ToString(appendix);
+  out += "\">\n";
+  if (appendix == ReportAppendix::kFull) {
+    out += "<h2>Appendix: every value of the result</h2>\n"
+           "<p>The JSON object the command printed with --json, in full (SI units, as in its keys).</p>\n";
+    WriteAppendix(out, j, "");
+  } else if (appendix == ReportAppendix::kSummary) {
+    out += "<h2>Appendix: the summary</h2>\n<p>Every verdict row of the result";
+    out += summary.kind == ResultSummary::Kind::kLimits ? " (one per case)" : "";
+    out += ", and its values that are neither inputs nor rows. Every other value is in the result's JSON "
+           "(<code>--json</code>; in the HTML report, under its last heading).</p>\n";
+    WriteRows(out, summary, summary.rows.size());
+    Json values = Json::object();
+    for (const auto& [key, value] : j.items()) {
+      if (value.is_primitive() && key != "safety_factor") values[key] = value;
+    }
+    if (!values.empty()) WriteAppendix(out, values, "the result's scalar values");
+  }
+  out += "</section>\n";
 }
 
 void WriteProvenance(std::string& out, const Json& p) {

@@ -1,17 +1,17 @@
 // The report for the risk-assessment file (html_report.hpp): one self-contained HTML5 document
-// rendered from a command's --json object and its charts' SVG. What it says is read by
-// html_assessment.cpp; its sections are written by html_sections.cpp and html_appendix.cpp.
+// rendered from a command's --json object and its charts' SVG. What it says is the result's
+// summary (summary_json.hpp); its sections are laid out by html_page_one.cpp,
+// html_sections.cpp, html_inputs.cpp and html_appendix.cpp.
 #include "covopt/report/html_report.hpp"
 
-#include <algorithm>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "html_assessment.hpp"
+#include "covopt/report/summary_json.hpp"
+
 #include "html_sections.hpp"
 #include "html_svg.hpp"
 #include "html_text.hpp"
@@ -33,6 +33,9 @@ namespace {
 
 using namespace internal::html;
 
+/// The verdict rows the body shows; the appendix holds the rest.
+constexpr std::size_t kMainRows = 24;
+
 /// The command's --json object, with its provenance.
 Json ParseResult(const std::string& result_json) {
   Json j;
@@ -53,25 +56,47 @@ Json ParseResult(const std::string& result_json) {
   return j;
 }
 
-/// What the result says, by the kind of command that printed it.
-Assessment Assess(ReportKind kind, const Json& j) {
-  Assessment a;
+/// The result's summary (summary_json.hpp), refused when it has none or holds no verdict.
+ResultSummary ReadSummary(ReportKind kind, const std::string& result_json) {
+  ResultSummary s;
   try {
-    switch (kind) {
-      case ReportKind::kSimulate: AssessSimulate(a, j); break;
-      case ReportKind::kOptimize: AssessOptimize(a, j); break;
-      case ReportKind::kSpeedLimit: AssessSpeedLimit(a, j); break;
-      case ReportKind::kTrajectory: AssessTrajectory(a, j); break;
-      case ReportKind::kAudit: AssessAudit(a, j); break;
-    }
-  } catch (const nlohmann::json::exception& e) {
-    throw std::invalid_argument("report: result_json is not a " + std::string(ToString(kind)) +
-                                " result (" + e.what() + ")");
+    s = SummaryFromJson(result_json);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument("report: no report for a " + std::string(ToString(kind)) +
-                                " run without a verdict: " + e.what());
+    throw std::invalid_argument("report: the " + std::string(ToString(kind)) +
+                                " result has no summary to report (" + e.what() + ")");
   }
-  return a;
+  if (!s.evaluated || s.state == VerdictState::kNotEvaluated) {
+    throw std::invalid_argument("report: no report for a " + std::string(ToString(kind)) +
+                                " run without a verdict: the result could not be computed");
+  }
+  return s;
+}
+
+/// The JSON text of the summary's `key` (of `sub` when given), "null" when absent.
+std::string SummaryNumberText(const Json& j, std::string_view sub, std::string_view key) {
+  const Json* holder = Find(j, "summary");
+  if (holder && !sub.empty()) holder = Find(*holder, sub);
+  const Json* v = holder ? Find(*holder, key) : nullptr;
+  return v && v->is_number() ? v->dump() : "null";
+}
+
+/// The first page's facts: the state with the report's threshold, the numbers' JSON texts.
+PageOne MakePageOne(const ResultSummary& s, const ReportContent& content, const Json& j) {
+  PageOne p;
+  p.summary = &s;
+  p.info = &content.info;
+  p.provenance = &j.at("provenance");
+  p.threshold = content.info.margin_threshold;
+  p.safe = s.safe;
+  if (s.kind == ResultSummary::Kind::kLimits) {
+    p.state = s.safe ? VerdictState::kLimits : VerdictState::kUnsafe;
+  } else {
+    p.state = VerdictStateOf(s.evaluated, s.safe, s.margin, p.threshold);
+  }
+  p.margin_text = s.kind == ResultSummary::Kind::kLimits ? "null" : SummaryNumberText(j, "", "margin");
+  p.ratio_text = SummaryNumberText(j, "governing", "ratio");
+  p.threshold_text = Json(p.threshold).dump();
+  return p;
 }
 
 /// Each chart's SVG made fit to inline, its ids prefixed with its number.
@@ -87,86 +112,29 @@ std::vector<std::string> InlineCharts(const std::vector<SvgChart>& charts) {
   return svgs;
 }
 
-/// The document's head and the report's header: what ran, when, and the command line.
-void WriteHeader(std::string& out, const std::string& kind, const std::string& word, const Json& provenance) {
+/// The document's head: title, security policy and style sheet.
+void WriteHead(std::string& out, const std::string& kind, std::string_view word) {
   out += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; style-src 'unsafe-inline'; img-src data:\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>";
-  Escape(out, "covopt " + kind + " report: " + word);
+  Escape(out, "covopt " + kind + " report: " + std::string(word));
   out += "</title>\n<style>";
   out += kCss;
-  out += "</style>\n</head>\n<body>\n<header>\n<h1>";
-  Escape(out, "Collision safety report: covopt " + kind);
-  out += "</h1>\n<p class=\"meta\">";
-  Escape(out, StringAt(provenance, "software", "covopt") + " " + StringAt(provenance, "version") + ", commit " +
-                  StringAt(provenance, "commit") + ", " + StringAt(provenance, "date_utc"));
-  out += "<br><code>";
-  Escape(out, StringAt(provenance, "command"));
-  out += "</code></p>\n</header>\n";
+  out += "</style>\n</head>\n<body>\n";
 }
 
-/// The verdict: SAFE and UNSAFE in the same element, size and place; only the colours differ.
-void WriteVerdictBox(std::string& out, const Assessment& a, const std::string& word) {
-  out += "<section id=\"verdict\" class=\"verdict ";
-  out += a.safe ? "safe" : "unsafe";
-  out += "\" data-safe=\"";
-  out += a.safe ? "true" : "false";
-  out += "\">\n<div class=\"word\">" + word + "</div>\n<div class=\"headline\">";
-  Escape(out, a.headline);
-  out += "</div>\n<div class=\"governing\">Governing: ";
-  Escape(out, a.governing.criterion.empty() ? "—" : a.governing.criterion);
-  out += ", ratio <span id=\"governing-ratio\" data-value=\"";
-  Escape(out, ScalarText(a.governing.ratio));
-  out += "\">";
-  Escape(out, a.governing.ratio.is_number() ? Significant(a.governing.ratio.get<double>()) : "none (see below)");
-  out += "</span>";
-  if (a.governing.ratio.is_number()) {
-    out += ", margin ";
-    Escape(out, Percent(1.0 - a.safety_factor * a.governing.ratio.get<double>()));
-  }
-  out += " (safety factor ";
-  Escape(out, Significant(a.safety_factor));
-  out += ")</div>\n</section>\n";
-  out += "<p><b>Margin</b>, here and below, is 1 − SF × ratio, the share of the derated limit (limit / SF) left over; "
-         "a ratio is value / limit. Negative margins exceed the limit.";
-  if (!a.safe_means.empty()) {
-    out += " ";
-    Escape(out, a.safe_means);
-  }
-  out += "</p>\n";
-}
-
-/// What the verdict covers: the result's scope, and each criterion it names that the scope does not say.
-void WriteScope(std::string& out, const Json& j) {
-  std::vector<std::string> scope = TextList(Find(j, "scope"));
-  for (const std::string& s : TextList(Find(j, "criterion"))) {
-    const bool said = std::any_of(scope.begin(), scope.end(), [&](const std::string& t) { return t.find(s) != std::string::npos; });
-    if (!said) scope.push_back("Criterion: " + s);
-  }
-  if (scope.empty()) scope.push_back("The criteria listed under Criteria and limits.");
-  for (const std::string& s : scope) {
+/// What the verdict covers, in the summary's words.
+void WriteScope(std::string& out, const ResultSummary& s) {
+  out += "<p><b>Margin</b>, here and below, is 1 − SF × ratio, the share of the derated limit (limit / SF) left "
+         "over; a ratio is value / limit. Negative margins exceed the limit.</p>\n";
+  if (s.scope.empty()) return;
+  out += "<ul class=\"compact\">\n";
+  for (const std::string& sentence : s.scope) {
     out += "<li>";
-    Escape(out, s);
+    Escape(out, sentence);
     out += "</li>\n";
   }
   out += "</ul>\n";
-}
-
-/// The criteria and their limits, each once, with the safety factor.
-void WriteCriteria(std::string& out, const Assessment& a) {
-  OpenTable(out, {{"criterion", 30}, {"limit", 20}, {"source", 50}});
-  std::set<std::string> seen;
-  for (const Criterion& c : a.criteria) {
-    if (!seen.insert(c.name + c.limit).second) continue;
-    out += "<tr>";
-    Cell(out, c.name);
-    Cell(out, c.limit);
-    Cell(out, c.source);
-    out += "</tr>\n";
-  }
-  out += "</tbody></table>\n<p>Safety factor SF = ";
-  Escape(out, Significant(a.safety_factor));
-  out += ": each ratio must stay at or below 1/SF (the derated limit is limit / SF).</p>\n";
 }
 
 void WriteWarnings(std::string& out, const Json& j) {
@@ -200,38 +168,35 @@ void WriteCharts(std::string& out, const std::vector<SvgChart>& charts, const st
 }  // namespace
 
 std::string HtmlReport(const ReportContent& content) {
+  CheckReportInfo(content.info);
   const Json j = ParseResult(content.result_json);
-  const Json& provenance = j.at("provenance");
-  const Assessment a = Assess(content.kind, j);
+  const ResultSummary summary = ReadSummary(content.kind, content.result_json);
+  const PageOne page = MakePageOne(summary, content, j);
   const std::vector<std::string> svgs = InlineCharts(content.charts);
 
-  const std::string word = a.safe ? "SAFE" : "UNSAFE";
   std::string out;
   out.reserve(content.result_json.size() * 3 + 32768);
-  WriteHeader(out, std::string(ToString(content.kind)), word, provenance);
-  WriteVerdictBox(out, a, word);
-  out += "<h2>What the verdict covers</h2>\n<ul>\n";
-  WriteScope(out, j);
-  out += "<h2>Inputs</h2>\n";
-  WriteInputs(out, j, a.input_keys);
-  out += "<h2>Criteria and limits</h2>\n";
-  WriteCriteria(out, a);
-  out += "<h2>Verdicts</h2>\n";
-  WriteVerdicts(out, a);
-  out += "<h2>Materials</h2>\n";
-  WriteMaterials(out, j);
-  out += "<h2>Assumptions and validity limits</h2>\n<p>From docs/model.md, for the models this result rests on.</p>\n";
-  WriteModels(out, a);
-  out += "<h2>Warnings</h2>\n";
-  WriteWarnings(out, j);
+  WriteHead(out, std::string(ToString(content.kind)), StateWord(page.state));
+  WritePageOne(out, page);
+  out += "<h2>Verdict rows</h2>\n";
+  WriteScope(out, summary);
+  WriteRows(out, summary, kMainRows);
   out += "<h2>Charts</h2>\n";
   WriteCharts(out, content.charts, svgs);
+  out += "<h2>Inputs</h2>\n";
+  WriteInputs(out, j, content.kind);
+  out += "<h2>Warnings</h2>\n";
+  WriteWarnings(out, j);
+  out += "<h2>Material</h2>\n";
+  WriteMaterial(out, summary);
+  out += "<h2>Assumptions and validity limits</h2>\n<p>From docs/model.md, for the models this result rests on.</p>\n";
+  WriteModels(out, summary, j);
   out += "<h2>Provenance</h2>\n";
-  WriteProvenance(out, provenance);
-  out += "<section class=\"appendix-section\">\n<h2>Appendix: every value of the result</h2>\n"
-         "<p>The JSON object the command printed with --json, in full (SI units, as in its keys).</p>\n";
-  WriteAppendix(out, j, "");
-  out += "\n</section>\n</body>\n</html>\n";
+  WriteProvenance(out, j.at("provenance"));
+  WriteAppendixSection(out, content.info.appendix, summary, j);
+  out += "<details id=\"result-json\"><summary>The result's JSON (--json), in full</summary>\n<pre><code>";
+  Escape(out, j.dump(1));
+  out += "</code></pre>\n</details>\n</body>\n</html>\n";
   return out;
 }
 

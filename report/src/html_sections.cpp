@@ -1,10 +1,11 @@
-// The HTML report's sections (html_sections.hpp): style sheet, tables, inputs, verdicts,
-// materials and the models' assumptions.
+// The HTML report's sections (html_sections.hpp): style sheet, tables, the verdict rows, the
+// covering's material and the models' assumptions.
 #include "html_sections.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 
 #include <covopt/materials/catalog.hpp>
 
@@ -14,6 +15,8 @@ namespace {
 
 // ---------------------------------------------------------------------------------------------
 // Models: their assumptions and validity limits, from docs/model.md.
+
+enum class Model { kHead, kBody, kFoam, kSpeedLimit, kTrajectory, kAudit, kRobust };
 
 struct ModelText {
   Model model;
@@ -57,6 +60,13 @@ const std::vector<ModelText>& ModelTexts() {
         "held stop are not modelled (§13.8, §13.10).",
         "The covering's Hertz law assumes a half-space and small strains; a contact radius larger than the "
         "covering's thickness or a foam on its plateau is outside it (§13.8, §12.2)."}},
+      {Model::kFoam,
+       "The foam covering: an elastic foundation on the measured curve",
+       {"A covering with a measured compressive curve is a foam layer: each column under the contact is compressed "
+        "by the local gap and pushes back with the curve's stress at its own strain (docs/model.md §15.2).",
+        "The curve is the loading branch, piecewise linear through the measured points; beyond its last point the "
+        "law has no data, and a covering compressed that far is out of the law's validity (§15.1, §15.5).",
+        "Young's modulus and the Poisson ratio of the material are not read by the foam law (§15.2)."}},
       {Model::kSpeedLimit,
        "Speed limits",
        {"The max safe speed (or mass) is the largest value at which every counted criterion holds, every lower value "
@@ -95,42 +105,57 @@ const std::vector<ModelText>& ModelTexts() {
 // HTML pieces
 
 const std::string_view kCss = R"css(
-@page { size: A4; margin: 15mm 13mm 16mm 13mm; }
+@page { size: A4; margin: 13mm 12mm 14mm 12mm; }
 * { box-sizing: border-box; }
 html { -webkit-print-color-adjust: exact; print-color-adjust: exact; }
-body { font-family: "DejaVu Sans", "Liberation Sans", Arial, sans-serif; font-size: 10pt; line-height: 1.35;
+body { font-family: "DejaVu Sans", "Liberation Sans", Arial, sans-serif; font-size: 9pt; line-height: 1.3;
        color: #111; background: #fff; margin: 0 auto; padding: 8mm; max-width: 210mm; }
-h1 { font-size: 16pt; margin: 0 0 2mm 0; }
-h2 { font-size: 13pt; margin: 7mm 0 2mm 0; border-bottom: 1px solid #888; break-after: avoid; page-break-after: avoid; }
-h3 { font-size: 11pt; margin: 4mm 0 1mm 0; break-after: avoid; page-break-after: avoid; }
-p, li { margin: 1mm 0; }
-code { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; overflow-wrap: anywhere; }
-.meta { color: #444; font-size: 9pt; }
-.verdict { border: 4px solid; border-radius: 3mm; padding: 4mm 6mm; margin: 4mm 0; text-align: center;
+h1 { font-size: 15pt; margin: 0 0 1mm 0; }
+h2 { font-size: 12pt; margin: 5mm 0 1.5mm 0; border-bottom: 1px solid #888; break-after: avoid; page-break-after: avoid; }
+h3 { font-size: 10pt; margin: 2.5mm 0 1mm 0; break-after: avoid; page-break-after: avoid; }
+p, li { margin: 0.7mm 0; }
+ul.compact { margin: 0; padding-left: 5mm; }
+code { font-family: "DejaVu Sans Mono", monospace; font-size: 8pt; overflow-wrap: anywhere; }
+.meta { color: #444; font-size: 9pt; margin: 0; }
+#page-one { break-after: page; page-break-after: always; }
+.verdict { border: 4px solid; border-radius: 3mm; padding: 2.5mm 5mm; margin: 3mm 0; text-align: center;
            break-inside: avoid; page-break-inside: avoid; }
-.verdict .word { font-size: 34pt; font-weight: 800; letter-spacing: 0.08em; line-height: 1.1; }
-.verdict .headline { font-size: 12pt; font-weight: 600; margin-top: 2mm; }
-.verdict .governing { font-size: 11pt; margin-top: 1mm; }
+.verdict .word { font-size: 30pt; font-weight: 800; letter-spacing: 0.08em; line-height: 1.1; }
+.verdict .sentence { font-size: 11pt; font-weight: 600; margin-top: 1mm; }
+.verdict .governing { font-size: 9.5pt; margin-top: 1mm; }
 .verdict.safe { color: #0b5a23; background: #e3f4e8; border-color: #137333; }
+.verdict.marginal { color: #6b4200; background: #fff2d6; border-color: #c77c02; }
 .verdict.unsafe { color: #8c1410; background: #fde7e5; border-color: #b3261e; }
-table { border-collapse: collapse; width: 100%; table-layout: fixed; font-size: 8.5pt; margin: 1mm 0 2mm 0; }
+.verdict.limits { color: #0d3c78; background: #e3edfb; border-color: #1a5fb4; }
+.facts { display: grid; grid-template-columns: 1fr 1fr; column-gap: 5mm; }
+.facts section, #sign-off { break-inside: avoid; page-break-inside: avoid; }
+dl { display: grid; grid-template-columns: 26mm 1fr; column-gap: 2mm; row-gap: 0.4mm; margin: 0; }
+#sign-off dl { grid-template-columns: 30mm 1fr; }
+dt { font-weight: 700; color: #333; }
+dd { margin: 0; overflow-wrap: anywhere; }
+dd.blank { border-bottom: 1px solid #555; min-height: 4.5mm; }
+.signature-line { display: grid; grid-template-columns: 22mm 1fr 1fr 0.6fr; column-gap: 4mm; margin-top: 7mm; }
+.signature-line .role { font-weight: 700; }
+.signature-line .line { border-top: 1px solid #111; padding-top: 0.5mm; font-size: 7.5pt; color: #444; }
+table { border-collapse: collapse; width: 100%; table-layout: fixed; font-size: 8pt; margin: 1mm 0 2mm 0; }
 thead { display: table-header-group; }
 tr { break-inside: avoid; page-break-inside: avoid; }
 th, td { border: 1px solid #aaa; padding: 1px 3px; vertical-align: top; text-align: left; overflow-wrap: anywhere; }
 th { background: #eee; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; }
-td.ok { color: #0b5a23; font-weight: 700; white-space: nowrap; }
-td.bad { color: #8c1410; font-weight: 700; white-space: nowrap; }
+td.ok { color: #0b5a23; font-weight: 700; }
+td.bad { color: #8c1410; font-weight: 700; }
+tr.binding td { font-weight: 700; background: #f6f6f6; }
 table.appendix { font-size: 7pt; margin: 0 0 1mm 0; }
 h4.key { margin: 2mm 0 0.5mm 0; font-weight: 700; break-after: avoid; page-break-after: avoid; }
 .key { font-family: "DejaVu Sans Mono", monospace; font-size: 7.5pt; }
-figure.chart { margin: 3mm 0; break-inside: avoid; page-break-inside: avoid; text-align: center; }
-figure.chart svg { width: 100%; max-width: 170mm; height: auto; max-height: 125mm; }
-figure.chart figcaption { text-align: left; font-size: 9pt; }
+figure.chart { margin: 2mm 0; break-inside: avoid; page-break-inside: avoid; text-align: center; }
+figure.chart svg { width: 100%; max-width: 165mm; height: auto; max-height: 105mm; }
+figure.chart figcaption { text-align: left; font-size: 8.5pt; }
 .warnings li { color: #6b3d00; }
-section.appendix-section { break-before: page; page-break-before: always; }
+section#appendix { break-before: page; page-break-before: always; }
 @media screen { body { box-shadow: 0 0 4mm #bbb; margin-top: 4mm; margin-bottom: 4mm; } }
-@media print { body { padding: 0; max-width: none; } }
+@media print { body { padding: 0; max-width: none; } details#result-json { display: none; } }
 )css";
 
 void OpenTable(std::string& out, std::initializer_list<std::pair<std::string_view, int>> columns, std::string_view cls) {
@@ -155,195 +180,150 @@ void Cell(std::string& out, std::string_view text, std::string_view cls) {
 
 namespace {
 
-/// A leaf of the inputs: its dotted path and value, with the unit its key (or its range) names.
-struct Leaf {
-  std::string path;
-  const Json* value;
-  Unit unit;
-};
-
-void Flatten(const Json& value, const std::string& path, const Unit& inherited, std::vector<Leaf>& out) {
-  if (value.is_object() && !value.empty()) {
-    const Json* unit_name = Find(value, "unit");
-    for (const auto& [key, child] : value.items()) {
-      Unit unit = UnitOfKey(key);
-      if (unit.si.empty() && unit_name && unit_name->is_string() &&
-          (key == "low" || key == "high" || key == "mean" || key == "standard_deviation")) {
-        unit = UnitOfName(unit_name->get<std::string>());
-      }
-      if (unit.si.empty() && (child.is_array() || child.is_object())) unit = inherited;
-      Flatten(child, path + "." + key, unit, out);
-    }
-  } else if (value.is_array() && !value.empty()) {
-    for (std::size_t i = 0; i < value.size(); ++i) Flatten(value[i], path + "." + std::to_string(i), inherited, out);
-  } else {
-    out.push_back({path, &value, inherited});
-  }
+/// The unit a row is read in: the CLI's (MPa, J/cm², N/cm² for a pressure), "-" for a share.
+Unit RowUnit(const std::string& si, const std::string& criterion) {
+  if (si == "Pa" && criterion == "pressure") return {"Pa", "N/cm²", 1e-4};
+  if (si == "J/m2") return {"J/m²", "J/cm²", 1e-4};
+  return UnitOfName(si);
 }
 
-}  // namespace
-
-void WriteInputs(std::string& out, const Json& j, const std::vector<std::string>& keys) {
-  std::vector<Leaf> leaves;
-  for (const std::string& key : keys) {
-    if (const Json* v = Find(j, key)) Flatten(*v, key, UnitOfKey(key), leaves);
-  }
-  out += "<p>Every input the result records, by its path in the JSON. Values are SI, exactly as the JSON gives them; "
-         "the last column reads them in the unit the command line uses (mm, MPa, J/cm², N/cm², cm²) where it uses "
-         "one. A mass or radius of \"fixed\" or \"flat\" is infinite.</p>\n";
-  OpenTable(out, {{"input (JSON path)", 38}, {"value (SI, as in the JSON)", 24}, {"SI unit", 10}, {"reading", 28}});
-  for (const Leaf& leaf : leaves) {
-    out += "<tr><td class=\"key\">";
-    Escape(out, leaf.path);
-    out += "</td><td class=\"num\" data-key=\"";
-    Escape(out, leaf.path);
-    out += "\" data-value=\"";
-    const std::string text = ScalarText(*leaf.value);
-    Escape(out, text);
-    out += "\">";
-    Escape(out, leaf.value->is_string() || leaf.value->is_number() || leaf.value->is_boolean() ? text
-                : leaf.value->is_null()                                                        ? "null"
-                                                                                               : leaf.value->dump());
-    out += "</td>";
-    Cell(out, leaf.value->is_number() ? leaf.unit.si : "");
-    Cell(out, leaf.value->is_number() && !leaf.unit.display.empty() ? Reading(leaf.value->get<double>(), leaf.unit) : "",
-         "num");
-    out += "</tr>\n";
-  }
-  if (leaves.empty()) out += "<tr><td colspan=\"4\">(the result records no inputs)</td></tr>\n";
-  out += "</tbody></table>\n";
+std::string UnitText(const Unit& unit) {
+  if (!unit.display.empty()) return unit.display;
+  return unit.si.empty() ? "-" : unit.si;
 }
 
-namespace {
-
-/// The margin 1 − SF × ratio, as a percentage of the derated limit.
-std::string MarginText(const VerdictRow& row) {
-  if (!row.ratio.is_number()) return "";
-  return Percent(1.0 - row.safety_factor * row.ratio.get<double>());
+std::string Scaled(double value, const Unit& unit) {
+  if (std::isnan(value)) return "unknown";
+  return Significant(value * unit.factor);
 }
 
-}  // namespace
+/// The rows to show: all when they fit, else the binding, the failed and the largest ratios.
+std::vector<const SummaryRow*> Shown(const std::vector<SummaryRow>& rows, std::size_t max_rows) {
+  std::vector<const SummaryRow*> shown;
+  for (const SummaryRow& row : rows) shown.push_back(&row);
+  if (rows.size() <= max_rows) return shown;
+  const auto rank = [](const SummaryRow* r) {
+    return r->binding ? 3.0 : (r->counted && !r->passed ? 2.0 : 0.0) + std::clamp(r->ratio, 0.0, 1.0) / 2.0;
+  };
+  std::stable_sort(shown.begin(), shown.end(), [&](const SummaryRow* a, const SummaryRow* b) { return rank(a) > rank(b); });
+  shown.resize(max_rows);
+  std::sort(shown.begin(), shown.end());  // back to the summary's order
+  return shown;
+}
 
-void WriteVerdicts(std::string& out, const Assessment& a) {
-  if (!a.rows_note.empty()) {
-    out += "<p>";
-    Escape(out, a.rows_note);
-    out += "</p>\n";
-  }
-  OpenTable(out, {{"verdict", 16}, {"criterion", 17}, {"value", 12}, {"limit", 10}, {"derated limit", 9},
-                  {"ratio", 7}, {"margin", 8}, {"verdict", 9}, {"note", 12}});
-  for (const VerdictRow& row : a.rows) {
+void WriteLimitRows(std::string& out, const ResultSummary& s) {
+  OpenTable(out, {{"case", 28}, {"quantity", 14}, {"value", 10}, {"unit", 6}, {"binding criterion", 14},
+                  {"law", 7}, {"validity", 9}, {"note", 12}});
+  for (const LimitRow& row : s.limits) {
     out += "<tr>";
-    Cell(out, row.subject);
-    Cell(out, row.criterion);
-    Cell(out, row.value, "num");
-    Cell(out, row.limit, "num");
-    Cell(out, row.derated, "num");
-    out += "<td class=\"num\" data-ratio=\"";
-    Escape(out, ScalarText(row.ratio));
-    out += "\">";
-    Escape(out, row.ratio.is_number() ? Significant(row.ratio.get<double>()) : "—");
-    out += "</td>";
-    Cell(out, MarginText(row), "num");
-    if (row.safe) Cell(out, *row.safe ? "SAFE" : "UNSAFE", *row.safe ? "ok" : "bad");
-    else Cell(out, "");
+    Cell(out, row.target);
+    Cell(out, row.quantity);
+    Cell(out, row.value == 0.0 ? "0 (no safe value)" : std::isinf(row.value) ? "not limited" : Significant(row.value),
+         row.value == 0.0 ? "num bad" : "num");
+    Cell(out, row.unit, "unit");
+    Cell(out, row.binding_criterion);
+    Cell(out, row.law);
+    Cell(out, row.validity);
     Cell(out, row.note);
     out += "</tr>\n";
   }
   out += "</tbody></table>\n";
 }
 
-namespace {
-
-/// A material the result uses (not every candidate of a design), with the modulus the run used
-/// when the JSON gives it beside the name [Pa].
-struct UsedMaterial {
-  std::string name;
-  std::optional<double> youngs_modulus_Pa;
-};
-
-std::vector<UsedMaterial> MaterialsUsed(const Json& j) {
-  std::vector<UsedMaterial> used;
-  const auto add = [&](const Json* holder, std::optional<double> modulus) {
-    const Json* v = holder ? Find(*holder, "material") : nullptr;
-    if (!v || !v->is_string()) return;
-    const std::string name = v->get<std::string>();
-    if (std::none_of(used.begin(), used.end(), [&](const UsedMaterial& m) { return m.name == name; })) {
-      used.push_back({name, modulus});
-    }
-  };
-  const auto modulus_of = [](const Json* holder) {
-    if (!holder) return std::optional<double>();
-    if (auto e = NumberAt(*holder, "youngs_modulus_Pa")) return e;
-    return NumberAt(*holder, "modulus_Pa");
-  };
-  const Json* covering = FindPath(j, {"scene", "covering"});
-  add(covering, modulus_of(covering));
-  if (const Json* rec = Find(j, "recommendation"); rec && rec->is_object()) add(rec, modulus_of(rec));
-  for (const char* list : {"rows", "coverings", "link_designs"}) {
-    if (const Json* rows = Find(j, list); rows && rows->is_array()) {
-      for (const Json& row : *rows) add(&row, modulus_of(&row));
-    }
-  }
-  return used;
-}
-
 }  // namespace
 
-void WriteMaterials(std::string& out, const Json& j) {
-  const std::vector<UsedMaterial> used = MaterialsUsed(j);
-  if (used.empty()) {
-    out += "<p>No catalog material: the covering is given by its modulus (or there is none), so there is no datasheet "
-           "to cite.</p>\n";
+void WriteRows(std::string& out, const ResultSummary& s, std::size_t max_rows) {
+  if (s.kind == ResultSummary::Kind::kLimits) {
+    WriteLimitRows(out, s);
     return;
   }
-  out += "<p>The datasheet values come from covopt's built-in catalog entry of each name (materials/data; "
-         "<code>covopt materials show NAME</code>). If the run read a catalog of its own (<code>--catalog</code>, listed "
-         "with its SHA-256 under Provenance), that file's entry is the one used.</p>\n";
-  const materials::Catalog& catalog = materials::Catalog::BuiltIn();
-  for (const UsedMaterial& u : used) {
-    out += "<h3>";
-    Escape(out, u.name);
-    out += "</h3>\n";
-    const materials::Material* m = catalog.Find(u.name);
-    if (!m) {
-      out += "<p>Not in the built-in catalog: its datasheet is the catalog file the run read.</p>\n";
-      continue;
-    }
-    if (u.youngs_modulus_Pa && std::fabs(*u.youngs_modulus_Pa - m->youngs_modulus_Pa) > 1e-9 * m->youngs_modulus_Pa) {
-      out += "<p><b>The run used E = ";
-      Escape(out, Reading(*u.youngs_modulus_Pa, {"Pa", "MPa", 1e-6}));
-      out += ", not the built-in entry's: its datasheet is the catalog file the run read (Provenance); the built-in "
-             "entry of the same name follows for reference.</b></p>\n";
-    }
-    OpenTable(out, {{"field", 25}, {"value", 75}});
-    const auto row = [&](std::string_view field, const std::string& value) {
-      out += "<tr>";
-      Cell(out, field);
-      Cell(out, value.empty() ? "not given by the source" : value);
-      out += "</tr>\n";
-    };
-    row("family", m->family);
-    row("Young's modulus E", Reading(m->youngs_modulus_Pa, {"Pa", "MPa", 1e-6}) + " (" +
-                                 std::string(materials::ToString(m->modulus_basis)) + ")");
-    row("Poisson ratio ν", m->poisson_ratio ? Significant(*m->poisson_ratio) : "");
-    row("density", m->density_kg_per_m3 ? Significant(*m->density_kg_per_m3) + " kg/m³" : "");
-    row("source (datasheet)", m->source);
-    row("note on E", m->note);
-    row("crush behaviour", std::string(materials::ToString(m->crush_behaviour)));
-    row("compressive strength", m->compressive_strength_Pa ? Reading(*m->compressive_strength_Pa, {"Pa", "MPa", 1e-6}) : "");
-    row("strength method", m->strength_method);
-    row("strength source", m->strength_source);
-    out += "</tbody></table>\n";
+  const std::vector<const SummaryRow*> shown = Shown(s.rows, max_rows);
+  OpenTable(out, {{"target", 17}, {"criterion", 12}, {"value", 9}, {"limit", 9}, {"derated limit", 9},
+                  {"unit", 6}, {"ratio", 7}, {"margin", 8}, {"result", 9}, {"law, validity", 14}},
+            "rows");
+  for (const SummaryRow* row : shown) {
+    const Unit unit = RowUnit(row->unit, row->criterion);
+    out += row->binding ? "<tr class=\"binding\">" : "<tr>";
+    Cell(out, row->target);
+    Cell(out, row->criterion + (row->part == CriterionPart::kDesignRule ? " (design rule)" : ""));
+    Cell(out, Scaled(row->value, unit), "num");
+    Cell(out, Scaled(row->limit, unit), "num");
+    Cell(out, Scaled(row->derated_limit, unit), "num");
+    Cell(out, UnitText(unit), "unit");
+    Cell(out, std::isfinite(row->ratio) ? Significant(row->ratio) : "—", "num");
+    Cell(out, FormatPercent(row->margin), "num");
+    if (!row->counted) Cell(out, row->passed ? "reported (passes)" : "reported (fails)");
+    else Cell(out, std::string(SafeWord(row->passed)) + (row->binding ? ", governs" : ""), row->passed ? "ok" : "bad");
+    std::string law = row->law.empty() ? "bare" : row->law;
+    if (!row->validity.empty()) law += ", " + row->validity;
+    if (!row->note.empty()) law += "; " + row->note;
+    Cell(out, law);
+    out += "</tr>\n";
+  }
+  out += "</tbody></table>\n";
+  if (shown.size() < s.rows.size()) {
+    out += "<p>" + std::to_string(shown.size()) + " of " + std::to_string(s.rows.size()) +
+           " rows: the governing one, every failed one and the largest ratios; every row is in the appendix and the "
+           "result's JSON.</p>\n";
   }
 }
 
-void WriteModels(std::string& out, const Assessment& a) {
+void WriteMaterial(std::string& out, const ResultSummary& summary) {
+  const std::string& name = summary.covering.material;
+  const materials::Material* m = summary.covering.present && !name.empty() ? materials::Catalog::BuiltIn().Find(name)
+                                                                            : nullptr;
+  if (!m) {
+    out += summary.covering.present && !name.empty()
+               ? "<p>Not in the built-in catalog: its datasheet is the catalog file the run read (Provenance).</p>\n"
+               : "<p>No catalog material: the covering is given by its modulus (or there is none), so there is no "
+                 "datasheet to cite.</p>\n";
+    return;
+  }
+  out += "<p>The built-in catalog's entry for <b>";
+  Escape(out, name);
+  out += "</b> (<code>covopt materials show NAME</code>); a run with <code>--catalog</code> used that file's entry "
+         "(its SHA-256 under Provenance).</p>\n";
+  OpenTable(out, {{"field", 25}, {"value", 75}});
+  const auto row = [&](std::string_view field, const std::string& value) {
+    out += "<tr>";
+    Cell(out, field);
+    Cell(out, value.empty() ? "not given by the source" : value);
+    out += "</tr>\n";
+  };
+  row("family", m->family);
+  row("Young's modulus E", Reading(m->youngs_modulus_Pa, {"Pa", "MPa", 1e-6}) + " (" +
+                               std::string(materials::ToString(m->modulus_basis)) + ")");
+  row("Poisson ratio ν", m->poisson_ratio ? Significant(*m->poisson_ratio) : "");
+  row("density", m->density_kg_per_m3 ? Significant(*m->density_kg_per_m3) + " kg/m³" : "");
+  row("source (datasheet)", m->source);
+  row("crush behaviour", std::string(materials::ToString(m->crush_behaviour)));
+  row("compressive strength", m->compressive_strength_Pa ? Reading(*m->compressive_strength_Pa, {"Pa", "MPa", 1e-6}) : "");
+  row("strength source", m->strength_source);
+  out += "</tbody></table>\n";
+}
+
+void WriteModels(std::string& out, const ResultSummary& s, const Json& j) {
+  const auto has = [&](std::initializer_list<std::string_view> names) {
+    for (const SummaryRow& row : s.rows) {
+      for (const std::string_view n : names) {
+        if (row.criterion == n) return true;
+      }
+    }
+    return false;
+  };
+  std::set<Model> models;
+  if (has({"laceration", "contusion", "fracture"})) models.insert(Model::kHead);
+  if (has({"force", "pressure"})) models.insert(Model::kBody);
+  if (s.covering.law == "foam") models.insert(Model::kFoam);
+  if (s.kind == ResultSummary::Kind::kLimits) models.insert(Model::kSpeedLimit);
+  if (s.command == "robot --trajectory" || s.command == "audit") models.insert(Model::kTrajectory);
+  if (s.command == "audit") models.insert(Model::kAudit);
+  if (Find(j, "uncertain_inputs")) models.insert(Model::kRobust);
   for (const ModelText& m : ModelTexts()) {
-    if (!a.models.count(m.model)) continue;
+    if (!models.count(m.model)) continue;
     out += "<h3>";
     Escape(out, m.title);
-    out += "</h3>\n<ul>\n";
+    out += "</h3>\n<ul class=\"compact\">\n";
     for (const std::string_view point : m.points) {
       out += "<li>";
       Escape(out, point);
@@ -360,11 +340,6 @@ std::vector<std::string> TextList(const Json* v) {
   if (v->is_array()) {
     for (const Json& e : *v) {
       if (e.is_string()) out.push_back(e.get<std::string>());
-    }
-  }
-  if (v->is_object()) {
-    for (const char* key : {"description"}) {
-      if (const Json* d = Find(*v, key); d && d->is_string()) out.push_back(d->get<std::string>());
     }
   }
   return out;

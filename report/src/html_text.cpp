@@ -53,12 +53,6 @@ std::string Significant(double value, int significant) {
   return buffer;
 }
 
-std::string Percent(double fraction) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.1f %%", 100.0 * fraction);
-  return buffer;
-}
-
 bool EndsWith(std::string_view text, std::string_view tail) {
   return text.size() >= tail.size() && text.substr(text.size() - tail.size()) == tail;
 }
@@ -66,11 +60,15 @@ bool EndsWith(std::string_view text, std::string_view tail) {
 // ---------------------------------------------------------------------------------------------
 // Units: the SI unit in a JSON key's suffix, and the display unit the CLI uses for it.
 
-Unit UnitOfKey(std::string_view key) {
-  struct Suffix {
-    std::string_view tail;
-    Unit unit;
-  };
+namespace {
+
+struct Suffix {
+  std::string_view tail;
+  Unit unit;
+};
+
+/// The unit suffix `key` ends with, or nullptr.
+const Suffix* SuffixOf(std::string_view key) {
   static const Suffix kSuffixes[] = {
       {"_N_s_per_m", {"N·s/m", "", 1.0}},
       {"_N_per_m", {"N/m", "", 1.0}},
@@ -88,14 +86,24 @@ Unit UnitOfKey(std::string_view key) {
       {"_J", {"J", "", 1.0}},
   };
   for (const Suffix& s : kSuffixes) {
-    if (EndsWith(key, s.tail)) {
-      Unit unit = s.unit;
-      // ISO/TS 15066's pressures read in N/cm², as the standard and the CLI give them.
-      if (unit.si == "Pa" && key.find("pressure") != std::string_view::npos) unit = {"Pa", "N/cm²", 1e-4};
-      return unit;
-    }
+    if (EndsWith(key, s.tail)) return &s;
   }
-  return {};
+  return nullptr;
+}
+
+}  // namespace
+
+Unit UnitOfKey(std::string_view key) {
+  const Suffix* s = SuffixOf(key);
+  if (!s) return {};
+  // ISO/TS 15066's pressures read in N/cm², as the standard and the CLI give them.
+  if (s->unit.si == "Pa" && key.find("pressure") != std::string_view::npos) return {"Pa", "N/cm²", 1e-4};
+  return s->unit;
+}
+
+std::string_view WithoutUnit(std::string_view key) {
+  const Suffix* s = SuffixOf(key);
+  return s ? key.substr(0, key.size() - s->tail.size()) : key;
 }
 
 /// The unit of a value named by the CLI's quantity ("kg", "m", "Pa", ...), as in uncertain_inputs.

@@ -25,8 +25,6 @@ std::string ScalarText(const Json& value);
 /// plain decimals from 1e-3 to 1e7 (trailing zeros dropped), an exponent beyond.
 std::string Significant(double value, int significant = 4);
 
-std::string Percent(double fraction);
-
 bool EndsWith(std::string_view text, std::string_view tail);
 
 // Units: the SI unit in a JSON key's suffix, and the display unit the CLI uses for it.
@@ -38,6 +36,8 @@ struct Unit {
 };
 
 Unit UnitOfKey(std::string_view key);
+/// `key` without its unit suffix: "mass" for "mass_kg", "thickness" for "thickness_m".
+std::string_view WithoutUnit(std::string_view key);
 
 /// The unit of a value named by the CLI's quantity ("kg", "m", "Pa", ...), as in uncertain_inputs.
 Unit UnitOfName(std::string_view si);

@@ -6,35 +6,17 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "criterion_display.hpp"
 #include "json_number.hpp"
 #include "verdict_object.hpp"
 
 namespace covopt::report {
 namespace {
 
-/// How a criterion's numbers are shown: what the value is, its display unit and scale.
-struct Display {
-  std::string_view label;
-  std::string_view unit;
-  double per_si = 1.0;  ///< display value = SI value × per_si
-};
+using internal::Amount;
+using internal::Display;
 
-Display DisplayOf(const Criterion& c) {
-  if (c.name == "laceration") return {"tensile stress", "MPa", 1e-6};
-  if (c.name == "contusion") return {"energy density", "J/cm²", 1e-4};
-  if (c.name == "crush") return {"compressive stress", "MPa", 1e-6};
-  if (c.name == "pressure") return {"pressure", "N/cm²", 1e-4};
-  if (c.name == "full-compression") return {"travel used", "", 1.0};
-  if (c.name == "within-curve") return {"curve used (peak strain / last strain)", "", 1.0};
-  if (c.name == "fracture") return {"peak force", "N", 1.0};
-  if (c.unit == "N") return {"force", "N", 1.0};
-  return {"value", c.unit, 1.0};
-}
-
-std::string Amount(double si, const Display& d) {
-  if (!std::isfinite(si)) return "unknown";
-  return d.unit.empty() ? fmt::format("{:.4g}", si * d.per_si) : fmt::format("{:.4g} {}", si * d.per_si, d.unit);
-}
+Display DisplayOf(const Criterion& c) { return internal::DisplayOf(c.name, c.unit); }
 
 bool Exceeded(const Criterion& c, double safety_factor) { return !c.passed || !(safety_factor * c.ratio <= 1.0); }
 

@@ -17,6 +17,12 @@
 ///              "validity", "source", "note"}],
 ///    "limits": [{"target", "quantity", "unit", "value", "binding_criterion", "law", "validity",
 ///                "note"}]}
+///
+/// A null reads back as the one non-finite value that key can hold: "margin" as −inf (a verdict
+/// not evaluated; NaN for a table of limits), "governing"."ratio" as +inf, a row's "ratio" as
+/// +inf (NaN when its "limit" is null: unknown), a row's "margin" as −inf (NaN when its ratio is
+/// NaN), a limit row's "value" as +inf (not limited below the search limit), and every other
+/// number as NaN (unknown, or not one value).
 
 #include <string>
 
