@@ -755,7 +755,7 @@ def check_pdf(pdf, expected, max_pages=PDF_MAX_PAGES):
     count = pdf_pages(pdf)
     if not PDF_MIN_PAGES <= count <= max_pages:
         failures.append("the PDF has %d pages (want %d..%d)" % (count, PDF_MIN_PAGES, max_pages))
-    code, text, err = run(["pdftotext", "-layout", pdf, "-"], 60)
+    code, text, err = run(["pdftotext", pdf, "-"], 60)
     if code != 0:
         return failures + ["pdftotext failed on %s (exit %d): %s" % (pdf, code, err.strip())], count
     page_one = text.split("\f")[0]
