@@ -1126,6 +1126,9 @@ def self_test(browser, scratch):
         ("svg-not-xml", self_test_page(j, "safe", svg=SELF_TEST_SVG.replace("time [ms]", "time&nbsp;[ms]")),
          j, "is not XML"),
     ]
+    for name in PAGE_ONE_SECTIONS + ("margin", "margin-threshold", "governing-ratio", "appendix"):
+        breaks.append(("no-" + name, safe.replace('id="%s"' % name, 'id="%s-renamed"' % name), j,
+                       '0 elements with id="%s"' % name))
     for name, page, page_json, want in breaks:
         attempt(name, page, page_json, want)
     attempt("good-markup-appendix-none", self_test_page(j, "safe", appendix="none"), j, appendix="none")
