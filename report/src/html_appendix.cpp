@@ -141,7 +141,8 @@ void WriteAppendix(std::string& out, const Json& v, const std::string& path) {
   }
 }
 
-void WriteAppendixSection(std::string& out, ReportAppendix appendix, const ResultSummary& summary, const Json& j) {
+void WriteAppendixSection(std::string& out, ReportAppendix appendix, const ResultSummary& summary, const Json& j,
+                          std::size_t body_rows) {
   out += "<section id=\"appendix\" data-appendix=\"";
   out += ToString(appendix);
   out += "\">\n";
@@ -150,11 +151,11 @@ void WriteAppendixSection(std::string& out, ReportAppendix appendix, const Resul
            "<p>The JSON object the command printed with --json, in full (SI units, as in its keys).</p>\n";
     WriteAppendix(out, j, "");
   } else if (appendix == ReportAppendix::kSummary) {
-    out += "<h2>Appendix: the summary</h2>\n<p>Every verdict row of the result";
-    out += summary.kind == ResultSummary::Kind::kLimits ? " (one per case)" : "";
-    out += ", and its values that are neither inputs nor rows. Every other value is in the result's JSON "
-           "(<code>--json</code>; in the HTML report, under its last heading).</p>\n";
-    WriteRows(out, summary, summary.rows.size());
+    out += "<h2>Appendix: the summary</h2>\n<p>The result's values that are neither inputs nor rows";
+    out += summary.rows.size() > body_rows ? ", and every verdict row" : "";
+    out += ". Every other value is in the result's JSON (<code>--json</code>; in the HTML report, under its last "
+           "heading).</p>\n";
+    if (summary.rows.size() > body_rows) WriteRows(out, summary, summary.rows.size());
     Json values = Json::object();
     for (const auto& [key, value] : j.items()) {
       if (value.is_primitive() && key != "safety_factor") values[key] = value;

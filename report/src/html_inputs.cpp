@@ -18,7 +18,7 @@ namespace {
 /// The top-level keys of each kind's result that hold its inputs.
 std::vector<std::string_view> InputKeys(ReportKind kind) {
   switch (kind) {
-    case ReportKind::kSimulate: return {"scene", "uncertain_inputs", "safety_factor"};
+    case ReportKind::kSimulate: return {"scene", "uncertain_inputs", "safety_factor", "limits"};
     case ReportKind::kOptimize:
       return {"scene", "speed_m_per_s", "thickness_m", "safety_factor", "limits", "design_space",
               "uncertain_inputs", "max_probability", "samples", "seed"};
@@ -90,9 +90,9 @@ std::size_t GroupOf(const Leaf& leaf) {
     return std::any_of(words.begin(), words.end(), [&](std::string_view w) { return text.find(w) != std::string::npos; });
   };
   if (any({"limits", "safety_factor", "max_probability", "criterion"})) return 3;
+  if (any({"solve_for", "search_limit", "samples", "seed", "solver", "model.", "tolerance"})) return 4;
   if (any({"covering", "design_space", "material", "thickness_m"}) && !any({"scalp"})) return 1;
   if (any({"head", "scalp", "skull", "neck", "torso", "region", "body", "contact_area", "human"})) return 2;
-  if (any({"solve_for", "search_limit", "samples", "seed", "solver", "model.", "tolerance"})) return 4;
   if (any({"robot", "joint", "speed", "payload", "surface", "sample_count", "reaction_delay", "braking", "tool"})) {
     return 0;
   }
@@ -134,20 +134,22 @@ void WriteInputs(std::string& out, const Json& j, ReportKind kind) {
          "value came from (a flag, a scene file, the catalog, a default); — where the result does not say. A mass "
          "or radius of \"fixed\" or \"flat\" is infinite.</p>\n";
   if (leaves.empty()) out += "<p>The result records no inputs.</p>\n";
+  out += "<div class=\"input-groups\">\n";
   for (std::size_t g = 0; g < kGroups.size(); ++g) {
     std::vector<const Leaf*> rows;
     for (const Leaf& leaf : leaves) {
       if (GroupOf(leaf) == g) rows.push_back(&leaf);
     }
     if (rows.empty()) continue;
-    out += "<h3>";
+    out += "<div><h3>";
     Escape(out, kGroupTitles[g]);
     out += "</h3>\n";
-    OpenTable(out, {{"quantity", 42}, {"value", 18}, {"unit", 10}, {"source", 30}},
+    OpenTable(out, {{"quantity", 40}, {"value", 18}, {"unit", 12}, {"source", 30}},
               "inputs\" data-group=\"" + std::string(kGroups[g]));
     for (const Leaf* leaf : rows) WriteLeaf(out, *leaf, sources);
-    out += "</tbody></table>\n";
+    out += "</tbody></table></div>\n";
   }
+  out += "</div>\n";
 }
 
 }  // namespace covopt::report::internal::html

@@ -43,7 +43,7 @@ std::string StateSentence(const PageOne& p) {
   std::vector<std::string> failed;
   if (s.kind == ResultSummary::Kind::kLimits) {
     for (const LimitRow& row : s.limits) {
-      if (row.value == 0.0) failed.push_back(row.target);
+      if (!(row.value > 0.0)) failed.push_back(row.target);
     }
     return "UNSAFE: no safe value for " + JoinList(failed) + ".";
   }

@@ -65,6 +65,10 @@ ResultSummary ReadSummary(ReportKind kind, const std::string& result_json) {
     throw std::invalid_argument("report: the " + std::string(ToString(kind)) +
                                 " result has no summary to report (" + e.what() + ")");
   }
+  if (!s.command.empty() && s.command.rfind(ToString(kind), 0) != 0) {
+    throw std::invalid_argument("report: the result is of covopt " + s.command + ", not of covopt " +
+                                std::string(ToString(kind)));
+  }
   if (!s.evaluated || s.state == VerdictState::kNotEvaluated) {
     throw std::invalid_argument("report: no report for a " + std::string(ToString(kind)) +
                                 " run without a verdict: the result could not be computed");
@@ -125,8 +129,13 @@ void WriteHead(std::string& out, const std::string& kind, std::string_view word)
 
 /// What the verdict covers, in the summary's words.
 void WriteScope(std::string& out, const ResultSummary& s) {
-  out += "<p><b>Margin</b>, here and below, is 1 − SF × ratio, the share of the derated limit (limit / SF) left "
+  if (s.kind == ResultSummary::Kind::kLimits) {
+    out += "<p>The robot is safe at or below each row's value; the binding criterion is the one that reaches its "
+           "derated limit there.</p>\n";
+  } else {
+    out += "<p><b>Margin</b>, here and below, is 1 − SF × ratio, the share of the derated limit (limit / SF) left "
          "over; a ratio is value / limit. Negative margins exceed the limit.</p>\n";
+  }
   if (s.scope.empty()) return;
   out += "<ul class=\"compact\">\n";
   for (const std::string& sentence : s.scope) {
@@ -178,7 +187,7 @@ std::string HtmlReport(const ReportContent& content) {
   out.reserve(content.result_json.size() * 3 + 32768);
   WriteHead(out, std::string(ToString(content.kind)), StateWord(page.state));
   WritePageOne(out, page);
-  out += "<h2>Verdict rows</h2>\n";
+  out += summary.kind == ResultSummary::Kind::kLimits ? "<h2>Limits, one row per case</h2>\n" : "<h2>Verdict rows</h2>\n";
   WriteScope(out, summary);
   WriteRows(out, summary, kMainRows);
   out += "<h2>Charts</h2>\n";
@@ -193,7 +202,7 @@ std::string HtmlReport(const ReportContent& content) {
   WriteModels(out, summary, j);
   out += "<h2>Provenance</h2>\n";
   WriteProvenance(out, j.at("provenance"));
-  WriteAppendixSection(out, content.info.appendix, summary, j);
+  WriteAppendixSection(out, content.info.appendix, summary, j, kMainRows);
   out += "<details id=\"result-json\"><summary>The result's JSON (--json), in full</summary>\n<pre><code>";
   Escape(out, j.dump(1));
   out += "</code></pre>\n</details>\n</body>\n</html>\n";

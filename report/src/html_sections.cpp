@@ -9,7 +9,12 @@
 
 #include <covopt/materials/catalog.hpp>
 
+#include "criterion_display.hpp"
+
 namespace covopt::report::internal::html {
+
+using covopt::report::internal::Display;
+using covopt::report::internal::DisplayOf;
 
 namespace {
 
@@ -153,7 +158,9 @@ figure.chart { margin: 2mm 0; break-inside: avoid; page-break-inside: avoid; tex
 figure.chart svg { width: 100%; max-width: 165mm; height: auto; max-height: 105mm; }
 figure.chart figcaption { text-align: left; font-size: 8.5pt; }
 .warnings li { color: #6b3d00; }
-section#appendix { break-before: page; page-break-before: always; }
+section#appendix[data-appendix="full"] { break-before: page; page-break-before: always; }
+.input-groups { columns: 2; column-gap: 4mm; }
+.input-groups h3 { margin-top: 1.5mm; }
 @media screen { body { box-shadow: 0 0 4mm #bbb; margin-top: 4mm; margin-bottom: 4mm; } }
 @media print { body { padding: 0; max-width: none; } details#result-json { display: none; } }
 )css";
@@ -180,21 +187,8 @@ void Cell(std::string& out, std::string_view text, std::string_view cls) {
 
 namespace {
 
-/// The unit a row is read in: the CLI's (MPa, J/cm², N/cm² for a pressure), "-" for a share.
-Unit RowUnit(const std::string& si, const std::string& criterion) {
-  if (si == "Pa" && criterion == "pressure") return {"Pa", "N/cm²", 1e-4};
-  if (si == "J/m2") return {"J/m²", "J/cm²", 1e-4};
-  return UnitOfName(si);
-}
-
-std::string UnitText(const Unit& unit) {
-  if (!unit.display.empty()) return unit.display;
-  return unit.si.empty() ? "-" : unit.si;
-}
-
-std::string Scaled(double value, const Unit& unit) {
-  if (std::isnan(value)) return "unknown";
-  return Significant(value * unit.factor);
+std::string Scaled(double si, const Display& d) {
+  return std::isnan(si) ? "unknown" : Significant(si * d.per_si);
 }
 
 /// The rows to show: all when they fit, else the binding, the failed and the largest ratios.
@@ -218,8 +212,9 @@ void WriteLimitRows(std::string& out, const ResultSummary& s) {
     out += "<tr>";
     Cell(out, row.target);
     Cell(out, row.quantity);
-    Cell(out, row.value == 0.0 ? "0 (no safe value)" : std::isinf(row.value) ? "not limited" : Significant(row.value),
-         row.value == 0.0 ? "num bad" : "num");
+    const bool none = !(row.value > 0.0);
+    Cell(out, none ? "none (no safe value)" : std::isinf(row.value) ? "not limited" : Significant(row.value),
+         none ? "num bad" : "num");
     Cell(out, row.unit, "unit");
     Cell(out, row.binding_criterion);
     Cell(out, row.law);
@@ -242,14 +237,14 @@ void WriteRows(std::string& out, const ResultSummary& s, std::size_t max_rows) {
                   {"unit", 6}, {"ratio", 7}, {"margin", 8}, {"result", 9}, {"law, validity", 14}},
             "rows");
   for (const SummaryRow* row : shown) {
-    const Unit unit = RowUnit(row->unit, row->criterion);
+    const Display unit = DisplayOf(row->criterion, row->unit);
     out += row->binding ? "<tr class=\"binding\">" : "<tr>";
     Cell(out, row->target);
     Cell(out, row->criterion + (row->part == CriterionPart::kDesignRule ? " (design rule)" : ""));
     Cell(out, Scaled(row->value, unit), "num");
     Cell(out, Scaled(row->limit, unit), "num");
     Cell(out, Scaled(row->derated_limit, unit), "num");
-    Cell(out, UnitText(unit), "unit");
+    Cell(out, unit.unit.empty() || unit.unit == "1" ? "-" : std::string(unit.unit), "unit");
     Cell(out, std::isfinite(row->ratio) ? Significant(row->ratio) : "—", "num");
     Cell(out, FormatPercent(row->margin), "num");
     if (!row->counted) Cell(out, row->passed ? "reported (passes)" : "reported (fails)");

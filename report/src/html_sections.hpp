@@ -54,9 +54,11 @@ void WriteMaterial(std::string& out, const ResultSummary& summary);
 /// The assumptions and validity limits (docs/model.md) of the models the summary rests on.
 void WriteModels(std::string& out, const ResultSummary& summary, const Json& j);
 
-/// The appendix section `appendix` asks for: nothing; every summary row and the result's scalar
-/// values; every value of the result `j` (html_appendix.cpp).
-void WriteAppendixSection(std::string& out, ReportAppendix appendix, const ResultSummary& summary, const Json& j);
+/// The appendix section `appendix` asks for: nothing; the result's scalar values and, when the
+/// body showed fewer than all (`body_rows`), every summary row; every value of the result `j`
+/// (html_appendix.cpp).
+void WriteAppendixSection(std::string& out, ReportAppendix appendix, const ResultSummary& summary, const Json& j,
+                          std::size_t body_rows);
 /// Every value of `v` as tables (html_appendix.cpp).
 void WriteAppendix(std::string& out, const Json& v, const std::string& path);
 /// The provenance object: its fields and the input files' SHA-256 (html_appendix.cpp).

@@ -1,15 +1,18 @@
-// The report for the risk-assessment file (covopt/report/html_report.hpp), rendered from real
-// results: the --json objects of a SAFE and an UNSAFE run of every report kind and mode, saved
-// from the CLI under tests/report/data (make-fixtures.sh), and a simulation made here by the
-// library. Checked: the banner's verdict is the JSON's; the governing ratio is the largest
-// ratio of the JSON, with its exact number text; every scene/input leaf is in the document
-// with its exact JSON text; SAFE and UNSAFE banners differ only in colour; every text is
-// escaped; two gnuplot charts' ids are prefixed apart and every <svg> is well-formed XML; no
-// script and no external reference; runs without a verdict, non-objects and results without
-// provenance are refused.
+// The report for the risk-assessment file (covopt/report/html_report.hpp), laid out from the
+// result's summary (covopt/core/result_summary.hpp, its JSON report/summary_json.hpp). Checked:
+// the first page's state word, sentence and colour for each state (SAFE, MARGINAL below the
+// report's threshold, UNSAFE, LIMITS); the margin, threshold and governing ratio with their JSON
+// texts; the governing case, what was judged, the covering, the robot; the sign-off fields,
+// escaped, and two signature lines; the inputs as tables by group with units and sources, the
+// SI value kept exactly; the appendix modes and the collapsed JSON; nothing read from prose;
+// charts inlined as well-formed SVG with ids prefixed apart; no script and no external
+// reference; results without a summary, of another kind, not evaluated or without provenance
+// are refused. The fixtures under tests/report/data (make-fixtures.sh) are real results of
+// every kind and mode.
 #include <algorithm>
+#include <cmath>
 #include <fstream>
-#include <functional>
+#include <limits>
 #include <map>
 #include <regex>
 #include <set>
@@ -21,17 +24,18 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include <covopt/core/impact_model.hpp>
-#include <covopt/core/exact.hpp>
-#include <covopt/materials/catalog.hpp>
+#include <covopt/core/result_summary.hpp>
+#include <covopt/core/verdict.hpp>
 #include <covopt/report/html_report.hpp>
 #include <covopt/report/provenance.hpp>
-#include <covopt/optim/verdicts.hpp>
-#include <covopt/report/simulation_json.hpp>
+#include <covopt/report/summary_json.hpp>
 
 namespace {
 
+using covopt::ResultSummary;
+using covopt::report::ReportAppendix;
 using covopt::report::ReportContent;
+using covopt::report::ReportInfo;
 using covopt::report::ReportKind;
 using Json = nlohmann::ordered_json;
 
@@ -49,11 +53,13 @@ std::string WithProvenance(const std::string& json) {
   return covopt::report::WithProvenance(json, covopt::report::MakeProvenance("covopt test --json", {}));
 }
 
-std::string Render(ReportKind kind, const std::string& json, std::vector<covopt::report::SvgChart> charts = {}) {
+std::string Render(ReportKind kind, const std::string& json, std::vector<covopt::report::SvgChart> charts = {},
+                   const ReportInfo& info = {}) {
   ReportContent content;
   content.kind = kind;
   content.result_json = WithProvenance(json);
   content.charts = std::move(charts);
+  content.info = info;
   return covopt::report::HtmlReport(content);
 }
 
@@ -66,26 +72,6 @@ std::string Unescape(std::string text) {
     }
   }
   return text;
-}
-
-/// The banner: data-safe and the visible word.
-struct Banner {
-  std::string data_safe;
-  std::string word;
-  std::string css_class;
-  std::string governing_value;
-};
-
-Banner BannerOf(const std::string& html) {
-  std::smatch m;
-  Banner b;
-  REQUIRE(std::regex_search(html, m, std::regex(R"re(<section id="verdict" class="([^"]*)" data-safe="([^"]*)">\s*<div class="word">([^<]*)</div>)re")));
-  b.css_class = m[1];
-  b.data_safe = m[2];
-  b.word = m[3];
-  REQUIRE(std::regex_search(html, m, std::regex(R"re(<span id="governing-ratio" data-value="([^"]*)">)re")));
-  b.governing_value = Unescape(m[1]);
-  return b;
 }
 
 /// Every data-key with its data-value.
@@ -109,85 +95,87 @@ void Leaves(const Json& value, const std::string& path, std::vector<std::pair<st
   }
 }
 
-/// The largest number under a key named "ratio", "*_ratio" (not a Poisson ratio) or
-/// "worst_ratio" in `value`, with its JSON text.
-void MaxRatio(const Json& value, const std::string& key, double& best, std::string& text) {
-  if (value.is_object()) {
-    for (auto it = value.begin(); it != value.end(); ++it) MaxRatio(it.value(), it.key(), best, text);
-  } else if (value.is_array()) {
-    for (const Json& e : value) MaxRatio(e, key, best, text);
-  } else if (value.is_number()) {
-    const bool ratio = (key == "ratio" || (key.size() > 6 && key.compare(key.size() - 6, 6, "_ratio") == 0)) &&
-                       key.find("poisson") == std::string::npos && key != "corner_governing_ratio";
-    if (ratio && value.get<double>() > best) {
-      best = value.get<double>();
-      text = value.dump();
-    }
-  }
+/// A verdict of one criterion: value against limit with safety factor `sf`.
+covopt::Verdict OneCriterion(const char* name, const char* unit, double value, double limit, double sf = 1.0) {
+  covopt::Verdict v;
+  v.safety_factor = sf;
+  v.Add(name, covopt::CriterionPart::kInjury, unit, value, limit, "Park et al. 2011");
+  return v;
 }
 
-std::string MaxRatioText(std::initializer_list<const Json*> parts) {
-  double best = -1.0;
-  std::string text = "null";
-  for (const Json* p : parts) {
-    if (p) MaxRatio(*p, "", best, text);
-  }
-  return text;
+/// A head verdict whose contusion ratio is `contusion_ratio` (laceration 0.3), finished.
+ResultSummary HeadSummary(double contusion_ratio, double sf = 1.0) {
+  covopt::Verdict v = OneCriterion("laceration", "Pa", 0.3e6, 1e6, sf);
+  v.Add("contusion", covopt::CriterionPart::kInjury, "J/m2", contusion_ratio * 25200.0, 25200.0, "Park et al. 2011");
+  ResultSummary s;
+  s.command = "simulate";
+  s.AddVerdict("head (frontal)", v, "hertz", "within");
+  s.scope = {"Criteria: no laceration and no contusion (Park et al. 2011's skin limits)."};
+  s.governing_case = "the impact at 2 m/s";
+  s.covering = {.present = true, .material = "elastomer Shore A60", .thickness_m = 0.02, .law = "hertz",
+                .validity = "within", .validity_ratio = 0.4};
+  s.robot = {.model_file = "", .motion = "", .joints = {}, .reflected_mass_kg = 10.0, .payload_kg = 0.0,
+             .speed_m_per_s = 2.0};
+  s.Finish();
+  return s;
 }
 
-struct Case {
-  const char* file;
-  ReportKind kind;
-  bool safe;
-  /// The parts of the JSON the governing ratio is the largest ratio of.
-  std::function<std::string(const Json&)> governing;
-  /// The JSON's top-level input objects.
-  std::vector<const char*> inputs;
+/// A result JSON holding `summary` and `extra` keys, with its provenance.
+std::string ResultJson(const ResultSummary& summary, Json extra = Json::object()) {
+  Json j = Json::object();
+  j["summary"] = Json::parse(covopt::report::SummaryJson(summary));
+  for (const auto& [key, value] : extra.items()) j[key] = value;
+  return WithProvenance(j.dump());
+}
+
+/// The first page's verdict: state, data-safe, word, sentence, margin and threshold texts.
+struct Banner {
+  std::string state, safe, word, sentence, margin, threshold, ratio;
 };
 
-const Json* Ptr(const Json& j, const char* key) { return j.contains(key) ? &j[key] : nullptr; }
+Banner BannerOf(const std::string& html) {
+  std::smatch m;
+  Banner b;
+  REQUIRE(std::regex_search(html, m, std::regex(R"re(<section id="verdict" class="verdict ([a-z]+)" data-state="([a-z]+)" data-safe="([a-z]+)">\s*<div class="word">([^<]*)</div>\s*<div class="sentence">([^<]*)</div>)re")));
+  CHECK(m[1] == m[2]);
+  b.state = m[2];
+  b.safe = m[3];
+  b.word = m[4];
+  b.sentence = Unescape(m[5]);
+  REQUIRE(std::regex_search(html, m, std::regex(R"re(<span id="margin" data-value="([^"]*)">)re")));
+  b.margin = m[1];
+  REQUIRE(std::regex_search(html, m, std::regex(R"re(<span id="margin-threshold" data-value="([^"]*)">)re")));
+  b.threshold = m[1];
+  REQUIRE(std::regex_search(html, m, std::regex(R"re(<span id="governing-ratio" data-value="([^"]*)">)re")));
+  b.ratio = m[1];
+  return b;
+}
 
-std::vector<Case> Cases() {
-  const auto head_sim = [](const Json& j) {
-    return MaxRatioText({Ptr(j, "laceration"), Ptr(j, "contusion"), Ptr(j, "crush"), Ptr(j, "worst_case")});
-  };
-  const auto regions = [](const Json& j) {
-    return MaxRatioText({Ptr(j, "regions"), j["head"].is_null() ? nullptr : &j["head"]["laceration"],
-                         j["head"].is_null() ? nullptr : &j["head"]["contusion"]});
-  };
-  const auto recommendation = [](const Json& j) { return j["recommendation"]["governing_ratio"].dump(); };
-  const auto bare = [](const Json& j) { return MaxRatioText({Ptr(j, "bare_robot")}); };
-  const auto rows = [](const Json& j) { return MaxRatioText({Ptr(j, "rows")}); };
-  const auto samples = [](const Json& j) { return MaxRatioText({Ptr(j, "samples")}); };
-  const auto cells = [](const Json& j) { return MaxRatioText({Ptr(j, "cells")}); };
-  const auto probability = [](const Json& j) {
-    return Json(j["recommendation"]["injury_probability"]["inadmissible"].get<double>() /
-                j["max_probability"].get<double>())
-        .dump();
-  };
-  return {
-      {"simulate_safe.json", ReportKind::kSimulate, true, head_sim, {"scene"}},
-      {"simulate_unsafe.json", ReportKind::kSimulate, false, head_sim, {"scene"}},
-      {"simulate_ranges_unsafe.json", ReportKind::kSimulate, false, head_sim, {"scene", "uncertain_inputs"}},
-      {"simulate_body_safe.json", ReportKind::kSimulate, true, regions, {"scene", "safety_factor"}},
-      {"simulate_body_unsafe.json", ReportKind::kSimulate, false, regions, {"scene", "safety_factor"}},
-      {"optimize_safe.json", ReportKind::kOptimize, true, recommendation, {"scene", "limits", "design_space"}},
-      {"optimize_unsafe.json", ReportKind::kOptimize, false, bare, {"scene", "limits", "design_space"}},
-      {"optimize_robust_safe.json", ReportKind::kOptimize, true, recommendation, {"uncertain_inputs", "limits"}},
-      {"optimize_probability_safe.json", ReportKind::kOptimize, true, probability,
-       {"uncertain_inputs", "max_probability", "samples", "seed"}},
-      {"optimize_body_safe.json", ReportKind::kOptimize, true, recommendation, {"scene", "speed_m_per_s", "safety_factor"}},
-      {"optimize_body_unsafe.json", ReportKind::kOptimize, false, bare, {"scene", "speed_m_per_s", "safety_factor"}},
-      {"speed_limit_safe.json", ReportKind::kSpeedLimit, true, rows, {"scene", "limits", "search_limit", "solve_for"}},
-      {"speed_limit_body_safe.json", ReportKind::kSpeedLimit, true, rows, {"scene", "solve_for"}},
-      {"speed_limit_robust_safe.json", ReportKind::kSpeedLimit, true, rows, {"uncertain_inputs", "solve_for"}},
-      {"trajectory_safe.json", ReportKind::kTrajectory, true, samples, {"scene", "limits", "joint_names"}},
-      {"trajectory_unsafe.json", ReportKind::kTrajectory, false, samples, {"scene", "limits", "joint_names"}},
-      {"trajectory_body_safe.json", ReportKind::kTrajectory, true, samples, {"scene", "regions"}},
-      {"trajectory_body_unsafe.json", ReportKind::kTrajectory, false, samples, {"scene", "regions"}},
-      {"audit_safe.json", ReportKind::kAudit, true, cells, {"robot", "coverings", "contact_area_m2", "surface"}},
-      {"audit_unsafe.json", ReportKind::kAudit, false, cells, {"robot", "coverings", "contact_area_m2", "surface"}},
-  };
+/// The text of the element with id `id` up to its section's end.
+std::string Section(const std::string& html, const std::string& id) {
+  const std::size_t at = html.find("<section id=\"" + id + "\"");
+  REQUIRE(at != std::string::npos);
+  return html.substr(at, html.find("</section>", at) - at);
+}
+
+/// Every inputs table's rows: group, quantity, value text, data-key, data-value, unit, source.
+struct InputRow {
+  std::string group, quantity, value, key, data_value, unit, source;
+};
+
+std::vector<InputRow> InputRows(const std::string& html) {
+  std::vector<InputRow> rows;
+  static const std::regex kTable(R"re(<table class="inputs" data-group="([a-z]+)">([\s\S]*?)</table>)re");
+  static const std::regex kRow(
+      R"re(<tr><td>([^<]*)</td><td class="num" data-key="([^"]*)" data-value="([^"]*)">([^<]*)</td><td class="unit">([^<]*)</td><td class="source">([^<]*)</td></tr>)re");
+  for (auto t = std::sregex_iterator(html.begin(), html.end(), kTable); t != std::sregex_iterator(); ++t) {
+    const std::string body = (*t)[2];
+    for (auto r = std::sregex_iterator(body.begin(), body.end(), kRow); r != std::sregex_iterator(); ++r) {
+      rows.push_back({(*t)[1], Unescape((*r)[1]), Unescape((*r)[4]), Unescape((*r)[2]), Unescape((*r)[3]),
+                      Unescape((*r)[5]), Unescape((*r)[6])});
+    }
+  }
+  return rows;
 }
 
 /// A small XML well-formedness check of one element's text: tags nest and close, attributes
@@ -306,113 +294,257 @@ std::vector<covopt::report::SvgChart> TwoGnuplotCharts() {
 
 }  // namespace
 
-TEST_CASE("The report's banner is the JSON's verdict and the governing ratio its largest ratio, for every kind and mode",
+TEST_CASE("SAFE reads SAFE with its margin and the threshold asked, in words and colour", "[report][html]") {
+  const ResultSummary s = HeadSummary(0.58);
+  const std::string html = Render(ReportKind::kSimulate, ResultJson(s));
+  const Banner b = BannerOf(html);
+  CHECK(b.state == "safe");
+  CHECK(b.safe == "true");
+  CHECK(b.word == "SAFE");
+  CHECK(b.sentence == "SAFE with a margin of 42.0 % (at least 10 % asked).");
+  CHECK(b.margin == Json(s.margin).dump());
+  CHECK(b.threshold == "0.1");
+  CHECK(b.ratio == Json(0.58 * 25200.0 / 25200.0).dump());
+  CHECK(html.find(".verdict.safe { color: #0b5a23") != std::string::npos);
+  CHECK(html.find("<title>covopt simulate report: SAFE</title>") != std::string::npos);
+}
+
+TEST_CASE("A safe verdict with a margin below the threshold reads MARGINAL, the threshold the report's", "[report][html]") {
+  const ResultSummary s = HeadSummary(0.998);
+  REQUIRE(s.safe);
+  const Banner b = BannerOf(Render(ReportKind::kSimulate, ResultJson(s)));
+  CHECK(b.state == "marginal");
+  CHECK(b.safe == "true");
+  CHECK(b.word == "MARGINAL");
+  CHECK(b.sentence == "MARGINAL: safe, but the margin 0.2 % is below the 10 % asked.");
+  // The user's threshold restates it: 0.1 % asked makes 0.2 % SAFE, 50 % makes 42 % MARGINAL.
+  ReportInfo low;
+  low.margin_threshold = 0.001;
+  const Banner safe = BannerOf(Render(ReportKind::kSimulate, ResultJson(s), {}, low));
+  CHECK(safe.word == "SAFE");
+  CHECK(safe.sentence == "SAFE with a margin of 0.2 % (at least 0.1 % asked).");
+  CHECK(safe.threshold == "0.001");
+  ReportInfo high;
+  high.margin_threshold = 0.5;
+  const Banner marginal = BannerOf(Render(ReportKind::kSimulate, ResultJson(HeadSummary(0.58)), {}, high));
+  CHECK(marginal.word == "MARGINAL");
+  CHECK(marginal.sentence == "MARGINAL: safe, but the margin 42.0 % is below the 50 % asked.");
+}
+
+TEST_CASE("UNSAFE names what fails; LIMITS and a case without a safe value read as such", "[report][html]") {
+  const Banner unsafe = BannerOf(Render(ReportKind::kSimulate, ResultJson(HeadSummary(1.344))));
+  CHECK(unsafe.state == "unsafe");
+  CHECK(unsafe.safe == "false");
+  CHECK(unsafe.word == "UNSAFE");
+  CHECK(unsafe.sentence == "UNSAFE: fails head (frontal) contusion (margin -34.4 %).");
+
+  ResultSummary limits;
+  limits.kind = ResultSummary::Kind::kLimits;
+  limits.command = "speed-limit";
+  for (const double mass : {1.0, 5.0}) {
+    limits.limits.push_back({.target = "head (frontal), robot mass " + std::to_string(static_cast<int>(mass)) + " kg",
+                             .quantity = "max safe speed", .unit = "m/s", .value = 2.0 / mass,
+                             .binding_criterion = "contusion", .law = "hertz", .validity = "within", .note = ""});
+  }
+  limits.Finish();
+  const std::string html = Render(ReportKind::kSpeedLimit, ResultJson(limits));
+  const Banner b = BannerOf(html);
+  CHECK(b.state == "limits");
+  CHECK(b.word == "LIMITS");
+  CHECK(b.safe == "true");
+  CHECK(b.margin == "null");
+  CHECK(b.sentence == "LIMITS: a table of the largest safe values, one per case (2); the robot is safe at or below "
+                      "each row's value.");
+  CHECK(html.find(".verdict.limits { color: #0d3c78") != std::string::npos);
+  CHECK(html.find("<td class=\"num\">0.4</td><td class=\"unit\">m/s</td><td>contusion</td>") != std::string::npos);
+  limits.limits[1].value = 0.0;
+  limits.Finish();
+  const Banner none = BannerOf(Render(ReportKind::kSpeedLimit, ResultJson(limits)));
+  CHECK(none.word == "UNSAFE");
+  CHECK(none.sentence == "UNSAFE: no safe value for head (frontal), robot mass 5 kg.");
+}
+
+TEST_CASE("Page one holds, in order, the header, verdict, governing case, what was judged, covering, robot and sign-off",
           "[report][html]") {
-  for (const Case& c : Cases()) {
-    INFO(c.file);
-    const std::string json = ReadFile(c.file);
-    const Json j = Json::parse(json);
-    const std::string html = Render(c.kind, json);
-    const Banner banner = BannerOf(html);
-    CHECK(banner.data_safe == (c.safe ? "true" : "false"));
-    CHECK(banner.word == (c.safe ? "SAFE" : "UNSAFE"));
-    CHECK(banner.css_class == (c.safe ? "verdict safe" : "verdict unsafe"));
-    CHECK(banner.governing_value == c.governing(j));
-    // The fixture says the same as its own verdict field, where it has one.
-    if (j.contains("safe") && j["safe"].is_boolean()) CHECK(j["safe"].get<bool>() == c.safe);
-    if (j.contains("status")) CHECK((j["status"] == "safe") == c.safe);
+  const std::string html = Render(ReportKind::kSimulate, ResultJson(HeadSummary(0.58)));
+  const std::size_t page = html.find("<section id=\"page-one\">");
+  REQUIRE(page != std::string::npos);
+  std::size_t last = page;
+  for (const char* part : {"<header>", "<section id=\"verdict\"", "<section id=\"governing-case\">",
+                           "<section id=\"judged\">", "<section id=\"covering\">", "<section id=\"robot\">",
+                           "<section id=\"sign-off\">"}) {
+    INFO(part);
+    const std::size_t at = html.find(part);
+    CHECK(at > last);
+    CHECK(at != std::string::npos);
+    last = at;
   }
+  CHECK(html.find("<h2>", page) > last);  // the rest of the report follows the first page
+  CHECK(Section(html, "governing-case").find("<dd>head (frontal)</dd>") != std::string::npos);
+  CHECK(Section(html, "governing-case").find("<dd>contusion</dd>") != std::string::npos);
+  CHECK(Section(html, "governing-case").find("<dd>the impact at 2 m/s</dd>") != std::string::npos);
+  CHECK(Section(html, "judged").find("<dd>Park et al. 2011</dd>") != std::string::npos);
+  CHECK(Section(html, "covering").find("<dd>elastomer Shore A60</dd>") != std::string::npos);
+  CHECK(Section(html, "covering").find("<dd>20 mm</dd>") != std::string::npos);
+  CHECK(Section(html, "robot").find("<dd>10 kg</dd>") != std::string::npos);
+  CHECK(html.find("#page-one { break-after: page;") != std::string::npos);
 }
 
-TEST_CASE("Every input leaf of the JSON is in the report with its dotted path and exact JSON text", "[report][html]") {
-  for (const Case& c : Cases()) {
-    INFO(c.file);
-    const std::string json = ReadFile(c.file);
-    const Json j = Json::parse(json);
-    const std::multimap<std::string, std::string> keys = DataKeys(Render(c.kind, json));
-    std::vector<std::pair<std::string, std::string>> leaves;
-    for (const char* input : c.inputs) {
-      REQUIRE(j.contains(input));
-      Leaves(j[input], input, leaves);
-    }
-    REQUIRE(leaves.size() >= c.inputs.size());
-    for (const auto& [path, text] : leaves) {
-      INFO(path << " = " << text);
-      const auto range = keys.equal_range(path);
-      REQUIRE(std::distance(range.first, range.second) == 1);
-      CHECK(range.first->second == text);
-    }
-  }
+TEST_CASE("The sign-off block prints the fields escaped, the provenance's date, version and digests, and two lines",
+          "[report][html]") {
+  ReportInfo info;
+  info.project = "Cell <7> & \"line\"";
+  info.cell = "press 'B'";
+  info.assessor = "A. Assessor";
+  info.note = "first\nsecond";
+  const std::string csv = std::string(COVOPT_REPORT_TEST_DATA) + "/fr3_pick21.csv";
+  const std::vector<covopt::report::InputFile> files = {{"trajectory", csv}};
+  const covopt::report::Provenance p = covopt::report::MakeProvenance("covopt test", files);
+  const std::string json = covopt::report::WithProvenance(ResultJson(HeadSummary(0.5)), p);
+  const std::string html = Render(ReportKind::kSimulate, json, {}, info);
+  const std::string block = Section(html, "sign-off");
+  CHECK(block.find("<dd data-field=\"project\">Cell &lt;7&gt; &amp; &quot;line&quot;</dd>") != std::string::npos);
+  CHECK(block.find("<dd data-field=\"cell\">press &#39;B&#39;</dd>") != std::string::npos);
+  CHECK(block.find("<dd data-field=\"assessor\">A. Assessor</dd>") != std::string::npos);
+  CHECK(block.find("<dd data-field=\"note\">first\nsecond</dd>") != std::string::npos);
+  CHECK(block.find("<dd data-field=\"date\">" + p.date_utc + "</dd>") != std::string::npos);
+  CHECK(block.find(p.commit) != std::string::npos);
+  CHECK(block.find(p.inputs.at(0).sha256) != std::string::npos);
+  CHECK(block.find("<div class=\"signature-line\" data-role=\"assessor\">") != std::string::npos);
+  CHECK(block.find("<div class=\"signature-line\" data-role=\"approver\">") != std::string::npos);
+  CHECK(html.find("Cell <7>") == std::string::npos);
+  // Fields not given are blank lines to fill in, never left out.
+  const std::string blank = Section(Render(ReportKind::kSimulate, ResultJson(HeadSummary(0.5))), "sign-off");
+  CHECK(blank.find("<dd data-field=\"assessor\" class=\"blank\"></dd>") != std::string::npos);
+  // A field beyond what ReportInfo allows is refused.
+  ReportInfo bad;
+  bad.margin_threshold = 1.5;
+  CHECK_THROWS_AS(Render(ReportKind::kSimulate, ResultJson(HeadSummary(0.5)), {}, bad), std::invalid_argument);
 }
 
-TEST_CASE("A simulation made by the library renders with its own numbers", "[report][html]") {
-  covopt::Scene scene;  // the paper's scene with 15 mm of 27.6 MPa foam: contusion 1.15
-  scene.covering = {27.6e6, 0.25, 0.015};
-  covopt::report::SimulationReport report;
-  report.scene = scene;
-  report.result = covopt::SolveExact(covopt::ImpactModel::FromScene(scene));
-  for (const double sf : {1.0, 0.5}) {
-    report.verdict = covopt::optim::HeadVerdict(report.result.peaks, true, covopt::InjuryLimits{},
-                                                covopt::optim::DesignRule{sf, covopt::optim::DesignCriterion::kPaper});
-    report.verdict.scope = {"Criteria: no laceration and no contusion (Park et al. 2011's skin limits)."};
-    const std::string json = covopt::report::SimulationJson(report);
-    const Json j = Json::parse(json);
-    const std::string html = Render(ReportKind::kSimulate, json);
-    const Banner banner = BannerOf(html);
-    const double contusion = j["contusion"]["ratio"].get<double>();
-    CHECK(contusion > 1.0);
-    // SF 0.5 doubles every derated limit: 1.15 × 0.5 <= 1 is safe.
-    CHECK(banner.data_safe == (sf * contusion <= 1.0 ? "true" : "false"));
-    CHECK(banner.governing_value == j["contusion"]["ratio"].dump());
-    // The margin of the governing criterion, 1 − SF × ratio, in percent with one decimal.
-    char margin[32];
-    std::snprintf(margin, sizeof margin, "margin %.1f %%", 100.0 * (1.0 - sf * contusion));
-    CHECK(html.find(margin) != std::string::npos);
-    CHECK(DataKeys(html).find("scene.head.mass_kg")->second == j["scene"]["head"]["mass_kg"].dump());
-  }
-}
-
-TEST_CASE("SAFE and UNSAFE are equally prominent: the same element and place, only colours differ", "[report][html]") {
-  const std::string safe = Render(ReportKind::kSimulate, ReadFile("simulate_safe.json"));
-  const std::string unsafe = Render(ReportKind::kSimulate, ReadFile("simulate_unsafe.json"));
-  // The banner is the first element of the body after the header, in both.
-  const auto banner_position = [](const std::string& html) {
-    return html.find("<section id=\"verdict\"") - html.find("</header>");
+TEST_CASE("The inputs are tables by group with the CLI's units, sources and the exact SI value", "[report][html]") {
+  const Json extra = {
+      {"scene",
+       {{"robot", {{"mass_kg", 5.0}, {"speed_m_per_s", 1.5}}},
+        {"covering", {{"material", "elastomer Shore A60"}, {"thickness_m", 0.02}, {"youngs_modulus_Pa", 2.5e6}}},
+        {"head", {{"radius_m", 0.08}}},
+        {"model", {{"exponent_covering_bone", 1.8}}}}},
+      {"limits", {{"contusion_J_per_m2", 25200.0}}},
+      {"input_sources", {{"scene.robot.mass_kg", "flag --robot-mass"}, {"scene.covering.thickness_m", "scene file s.toml"},
+                         {"scene.covering.material", "catalog"}}}};
+  const std::vector<InputRow> rows = InputRows(Render(ReportKind::kSimulate, ResultJson(HeadSummary(0.5), extra)));
+  const auto find = [&](const std::string& key) {
+    const auto it = std::find_if(rows.begin(), rows.end(), [&](const InputRow& r) { return r.key == key; });
+    REQUIRE(it != rows.end());
+    return *it;
   };
-  CHECK(banner_position(safe) == banner_position(unsafe));
-  // The rules of .verdict.safe and .verdict.unsafe set colours only; size and weight are .verdict's.
-  for (const char* selector : {".verdict.safe {", ".verdict.unsafe {"}) {
-    INFO(selector);
-    const std::size_t at = safe.find(selector);
-    REQUIRE(at != std::string::npos);
-    const std::string rule = safe.substr(at, safe.find('}', at) - at);
-    std::vector<std::string> properties;
-    static const std::regex kProperty(R"re(([a-z-]+)\s*:)re");
-    for (auto it = std::sregex_iterator(rule.begin(), rule.end(), kProperty); it != std::sregex_iterator(); ++it) {
-      properties.push_back((*it)[1]);
-    }
-    CHECK(properties == std::vector<std::string>{"color", "background", "border-color"});
-  }
-  CHECK(safe.find("<div class=\"word\">SAFE</div>") != std::string::npos);
-  CHECK(unsafe.find("<div class=\"word\">UNSAFE</div>") != std::string::npos);
+  const InputRow mass = find("scene.robot.mass_kg");
+  CHECK(mass.group == "robot");
+  CHECK(mass.quantity == "robot mass");
+  CHECK(mass.value == "5");
+  CHECK(mass.unit == "kg");
+  CHECK(mass.source == "flag --robot-mass");
+  const InputRow thickness = find("scene.covering.thickness_m");
+  CHECK(thickness.group == "covering");
+  CHECK(thickness.value == "20");
+  CHECK(thickness.unit == "mm");
+  CHECK(thickness.data_value == "0.02");
+  CHECK(thickness.source == "scene file s.toml");
+  const InputRow material = find("scene.covering.material");
+  CHECK(material.unit == "text");
+  CHECK(material.source == "catalog");
+  const InputRow modulus = find("scene.covering.youngs_modulus_Pa");
+  CHECK(modulus.value == "2.5");
+  CHECK(modulus.unit == "MPa");
+  CHECK(modulus.source == "—");
+  CHECK(find("scene.head.radius_m").group == "human");
+  CHECK(find("scene.model.exponent_covering_bone").group == "solver");
+  CHECK(find("scene.model.exponent_covering_bone").unit == "-");
+  CHECK(find("limits.contusion_J_per_m2").group == "criteria");
+  CHECK(find("limits.contusion_J_per_m2").unit == "J/cm²");
+  CHECK(find("limits.contusion_J_per_m2").value == "2.52");
+  CHECK(rows.size() == 8);
+  for (const InputRow& r : rows) CHECK_FALSE(r.unit.empty());
 }
 
-TEST_CASE("Every text from the JSON and the charts is escaped: a material named <script> is inert", "[report][html]") {
-  Json j = Json::parse(ReadFile("simulate_safe.json"));
-  j["scene"]["covering"]["material"] = "<script>alert('x')</script> & \"co\"";
-  j["warnings"].push_back("<img src=x onerror=alert(1)>");
-  j["unknown_extra"] = {{"<b>key</b>", "</td></tr></table><script>"}};
-  std::vector<covopt::report::SvgChart> charts = {{"<script>t</script>", "<i>caption</i>", ReadFile("gnuplot_lines.svg")}};
-  const std::string html = Render(ReportKind::kSimulate, j.dump(2), charts);
-  CHECK(html.find("<script") == std::string::npos);
-  CHECK(html.find("<img") == std::string::npos);
-  CHECK(html.find("<b>key</b>") == std::string::npos);
-  CHECK(html.find("&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; &amp; &quot;co&quot;") != std::string::npos);
-  CHECK(html.find("&lt;i&gt;caption&lt;/i&gt;") != std::string::npos);
-  // The unknown key lands in the appendix, escaped.
-  CHECK(html.find("&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;&lt;script&gt;") != std::string::npos);
-  // The input's data-value gives the string back exactly.
-  CHECK(DataKeys(html).find("scene.covering.material")->second == j["scene"]["covering"]["material"].get<std::string>());
+TEST_CASE("The appendix holds nothing, the summary or every value; the full JSON is always there, collapsed",
+          "[report][html]") {
+  const Json extra = {{"scene", {{"robot", {{"mass_kg", 5.0}}}}},
+                      {"status", "safe"},
+                      {"samples", Json::array({{{"t_s", 0.125}, {"nested", {{"deep_value_m", 0.0421}}}}})}};
+  const std::string json = ResultJson(HeadSummary(0.5), extra);
+  const auto render = [&](ReportAppendix appendix) {
+    ReportInfo info;
+    info.appendix = appendix;
+    return Render(ReportKind::kSimulate, json, {}, info);
+  };
+  const std::string none = render(ReportAppendix::kNone);
+  const std::string summary = render(ReportAppendix::kSummary);
+  const std::string full = render(ReportAppendix::kFull);
+  CHECK(none.find("<section id=\"appendix\" data-appendix=\"none\">\n</section>") != std::string::npos);
+  CHECK(summary.find("<section id=\"appendix\" data-appendix=\"summary\">") != std::string::npos);
+  CHECK(full.find("<section id=\"appendix\" data-appendix=\"full\">") != std::string::npos);
+  // The summary appendix: the result's scalar values (not the rows the body shows); the full one: every value.
+  const std::string summary_part = Section(summary, "appendix");
+  CHECK(summary_part.find("<td class=\"key\">status</td><td>safe</td>") != std::string::npos);
+  CHECK(summary_part.find("head (frontal)") == std::string::npos);
+  CHECK(summary_part.find("0.0421") == std::string::npos);
+  CHECK(Section(full, "appendix").find("0.0421") != std::string::npos);
+  for (const std::string* html : {&none, &summary, &full}) {
+    const std::size_t details = html->find("<details id=\"result-json\">");
+    REQUIRE(details != std::string::npos);
+    CHECK(html->find("open", details) > html->find(">", details));  // collapsed
+    CHECK(html->find("&quot;deep_value_m&quot;: 0.0421", details) != std::string::npos);
+  }
+  CHECK(none.find("details#result-json { display: none; }") != std::string::npos);  // not printed
+}
+
+TEST_CASE("Many rows: the body shows the governing, the failed and the largest, the summary appendix all", "[report][html]") {
+  ResultSummary s;
+  s.command = "simulate";
+  for (int i = 0; i < 30; ++i) {  // region 3 the one failed row
+    s.AddVerdict("region " + std::to_string(i), OneCriterion("force", "N", i == 3 ? 1100.0 : 10.0 * i, 1000.0), "hertz",
+                 "within");
+  }
+  s.Finish();
+  const std::string html = Render(ReportKind::kSimulate, ResultJson(s));
+  const std::string body = html.substr(0, html.find("<section id=\"appendix\""));
+  const std::string appendix = Section(html, "appendix");
+  CHECK(body.find("24 of 30 rows") != std::string::npos);
+  CHECK(body.find("<tr class=\"binding\"><td>region 3</td>") != std::string::npos);
+  for (int i = 0; i < 30; ++i) {
+    const std::string cell = "<td>region " + std::to_string(i) + "</td>";
+    INFO(cell);
+    CHECK(appendix.find(cell) != std::string::npos);
+    // The smallest ratios (regions 0 to 5 but the failed 3) are left to the appendix.
+    CHECK((body.find(cell) == std::string::npos) == (i < 7 && i != 3));
+  }
+}
+
+TEST_CASE("No renderer reads prose: the safety factor and verdict are the summary's, whatever the text says",
+          "[report][html]") {
+  // The summary's safety factor 2 doubles every ratio's weight: contusion 0.4 leaves 20 % margin. The
+  // result's texts say otherwise; the report prints the summary's.
+  const Json extra = {{"criterion", {{"description", "safety factor 1 on each"}}},
+                      {"message", "SAFE with a margin of 60 %"},
+                      {"safe", false}};
+  const std::string html = Render(ReportKind::kSimulate, ResultJson(HeadSummary(0.4, 2.0), extra));
+  const Banner b = BannerOf(html);
+  CHECK(b.word == "SAFE");
+  CHECK(b.sentence == "SAFE with a margin of 20.0 % (at least 10 % asked).");
+  CHECK(Section(html, "verdict").find("safety factor 2") != std::string::npos);
+  CHECK(Section(html, "judged").find("<dd>2 (each limit derated to limit / SF)</dd>") != std::string::npos);
+}
+
+TEST_CASE("The verdict rows carry units, ratios, margins and the governing mark", "[report][html]") {
+  const std::string html = Render(ReportKind::kSimulate, ResultJson(HeadSummary(1.344)));
+  // contusion 1.344 × 2.52 J/cm² = 3.387 J/cm², limit 2.52, margin -34.4 %, failing and governing.
+  CHECK(html.find("<tr class=\"binding\"><td>head (frontal)</td><td>contusion</td><td class=\"num\">3.387</td>"
+                  "<td class=\"num\">2.52</td><td class=\"num\">2.52</td><td class=\"unit\">J/cm²</td>"
+                  "<td class=\"num\">1.344</td><td class=\"num\">-34.4 %</td><td class=\"bad\">UNSAFE, governs</td>") !=
+        std::string::npos);
+  CHECK(html.find("<td>laceration</td><td class=\"num\">0.3</td><td class=\"num\">1</td><td class=\"num\">1</td>"
+                  "<td class=\"unit\">MPa</td>") != std::string::npos);
 }
 
 TEST_CASE("Two gnuplot charts inline as well-formed SVG with ids prefixed apart and references kept", "[report][html]") {
@@ -423,7 +555,7 @@ TEST_CASE("Two gnuplot charts inline as well-formed SVG with ids prefixed apart 
   REQUIRE(std::find(second.begin(), second.end(), "gnuplot_canvas") != second.end());
   REQUIRE(std::find(first.begin(), first.end(), "gnuplot_canvas") != first.end());
 
-  const std::string html = Render(ReportKind::kSimulate, ReadFile("simulate_unsafe.json"), charts);
+  const std::string html = Render(ReportKind::kSimulate, ResultJson(HeadSummary(1.2)), charts);
   CHECK(html.find("<?xml") == std::string::npos);
   CHECK(html.find("<!DOCTYPE svg") == std::string::npos);
   const std::vector<std::string> svgs = SvgBlocks(html);
@@ -460,10 +592,28 @@ TEST_CASE("Two gnuplot charts inline as well-formed SVG with ids prefixed apart 
   CHECK(html.find("the peak &amp; the limit &lt;F&gt;") != std::string::npos);
 }
 
+TEST_CASE("Every text from the summary, the JSON and the charts is escaped", "[report][html]") {
+  ResultSummary s = HeadSummary(0.5);
+  s.covering.material = "<script>alert('x')</script> & \"co\"";
+  s.rows[0].note = "<img src=x onerror=alert(1)>";
+  const Json extra = {{"warnings", {"<img src=y>"}}, {"unknown_extra", {{"<b>key</b>", "</td></tr></table><script>"}}},
+                      {"scene", {{"covering", {{"material", "<script>m</script>"}}}}}};
+  ReportInfo info;
+  info.appendix = ReportAppendix::kFull;
+  const std::vector<covopt::report::SvgChart> charts = {{"<script>t</script>", "<i>caption</i>", ReadFile("gnuplot_lines.svg")}};
+  const std::string html = Render(ReportKind::kSimulate, ResultJson(s, extra), charts, info);
+  CHECK(html.find("<script") == std::string::npos);
+  CHECK(html.find("<img") == std::string::npos);
+  CHECK(html.find("<b>key</b>") == std::string::npos);
+  CHECK(html.find("&lt;script&gt;alert(&#39;x&#39;)&lt;/script&gt; &amp; &quot;co&quot;") != std::string::npos);
+  CHECK(html.find("&lt;i&gt;caption&lt;/i&gt;") != std::string::npos);
+  CHECK(html.find("&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;&lt;script&gt;") != std::string::npos);
+  CHECK(DataKeys(html).find("scene.covering.material")->second == "<script>m</script>");
+}
+
 TEST_CASE("The report fetches nothing and runs nothing", "[report][html]") {
-  for (const Case& c : Cases()) {
-    INFO(c.file);
-    const std::string html = Render(c.kind, ReadFile(c.file), TwoGnuplotCharts());
+  {
+    const std::string html = Render(ReportKind::kSimulate, ResultJson(HeadSummary(0.5)), TwoGnuplotCharts());
     CHECK(html.find("<script") == std::string::npos);
     CHECK(html.find("<link") == std::string::npos);
     CHECK(html.find("<img") == std::string::npos);
@@ -478,87 +628,17 @@ TEST_CASE("The report fetches nothing and runs nothing", "[report][html]") {
   // A chart that refers outside itself, or runs a script, is refused or stripped.
   std::string external = ReadFile("gnuplot_lines.svg");
   external.insert(external.find("<g "), "<image href=\"https://example.com/x.png\"/>");
-  CHECK_THROWS_WITH(Render(ReportKind::kSimulate, ReadFile("simulate_safe.json"), {{"t", "c", external}}),
+  CHECK_THROWS_WITH(Render(ReportKind::kSimulate, ResultJson(HeadSummary(0.5)), {{"t", "c", external}}),
                     Catch::Contains("chart 1") && Catch::Contains("external"));
   std::string scripted = ReadFile("gnuplot_lines.svg");
   scripted.insert(scripted.find("<g "), "<script type=\"text/javascript\">alert(1)</script><g onload=\"alert(2)\"></g>");
-  const std::string html = Render(ReportKind::kSimulate, ReadFile("simulate_safe.json"), {{"t", "c", scripted}});
+  const std::string html = Render(ReportKind::kSimulate, ResultJson(HeadSummary(0.5)), {{"t", "c", scripted}});
   CHECK(html.find("alert") == std::string::npos);
   CheckWellFormedXml(SvgBlocks(html).at(0));
 }
 
-TEST_CASE("The report states its sources, margin definition, model assumptions, materials and provenance",
+TEST_CASE("Results without a summary, of another kind, not evaluated, not objects or without provenance are refused",
           "[report][html]") {
-  const std::string body = Render(ReportKind::kSimulate, ReadFile("simulate_body_unsafe.json"));
-  CHECK(body.find("ISO/TS 15066:2016 Annex A, Table A.2, region chest, area sternum (body area no. ") !=
-        std::string::npos);
-  CHECK(body.find("docs/model.md §13.1") != std::string::npos);
-  CHECK(body.find("(§13.8)") != std::string::npos);
-  CHECK(body.find("1 − SF × ratio") != std::string::npos);
-  CHECK(body.find("Park et al., Designing Optimally Safe Robot Surface Properties") != std::string::npos);
-  // The neoprene sponge's datasheet source, from the catalog.
-  CHECK(body.find("<h3>neoprene sponge D1056 2C4</h3>") != std::string::npos);
-  CHECK(body.find("source (datasheet)") != std::string::npos);
-  CHECK(body.find(covopt::materials::Catalog::BuiltIn().Find("neoprene sponge D1056 2C4")->source) != std::string::npos);
-  CHECK(body.find("The run used E = ") == std::string::npos);
-  // A material of that name with another modulus came from the run's own catalog: said so.
-  Json own = Json::parse(ReadFile("simulate_safe.json"));
-  own["scene"]["covering"]["youngs_modulus_Pa"] = 1.5e6;
-  CHECK(Render(ReportKind::kSimulate, own.dump()).find("The run used E = 1.5 MPa, not the built-in entry") !=
-        std::string::npos);
-  const std::string audit = Render(ReportKind::kAudit, ReadFile("audit_unsafe.json"));
-  CHECK(audit.find("docs/model.md §14.6") != std::string::npos);
-  CHECK(audit.find("No catalog material: the covering is given by its modulus") != std::string::npos);
-  // Provenance: the version, commit, command and each input file with its SHA-256.
-  ReportContent content;
-  content.kind = ReportKind::kTrajectory;
-  const std::string csv = std::string(COVOPT_REPORT_TEST_DATA) + "/fr3_pick21.csv";
-  const std::vector<covopt::report::InputFile> files = {{"trajectory", csv}};
-  const covopt::report::Provenance p = covopt::report::MakeProvenance("covopt robot --trajectory 'a b.csv'", files);
-  content.result_json = covopt::report::WithProvenance(ReadFile("trajectory_safe.json"), p);
-  const std::string html = covopt::report::HtmlReport(content);
-  CHECK(html.find(p.inputs.at(0).sha256) != std::string::npos);
-  CHECK(p.inputs.at(0).sha256 == covopt::report::Sha256OfFile(csv));
-  CHECK(html.find("covopt robot --trajectory &#39;a b.csv&#39;") != std::string::npos);
-  CHECK(html.find(p.commit) != std::string::npos);
-  CHECK(html.find(p.date_utc) != std::string::npos);
-  // The appendix holds every value: each sample's time is there.
-  const Json j = Json::parse(ReadFile("trajectory_safe.json"));
-  const std::string appendix = html.substr(html.find("Appendix: every value"));
-  for (const Json& sample : j["samples"]) {
-    CHECK(appendix.find("<td>" + sample["reflected_mass_kg"].dump() + "</td>") != std::string::npos);
-  }
-}
-
-TEST_CASE("The margin is 1 - SF x ratio with the result's own safety factor", "[report][html]") {
-  // A body-region trajectory records its factor in the criterion's words only.
-  Json j = Json::parse(ReadFile("trajectory_body_unsafe.json"));
-  const std::string criterion = j["criterion"].get<std::string>();
-  const std::size_t at = criterion.rfind("safety factor 1 on each");
-  REQUIRE(at != std::string::npos);
-  double ratio = 0.0;
-  for (const Json& sample : j["samples"]) ratio = std::max(ratio, sample["worst_ratio"].get<double>());
-  for (const double sf : {1.0, 2.0}) {
-    j["criterion"] = sf == 1.0 ? criterion : criterion.substr(0, at) + "safety factor 2 on each";
-    char margin[64];
-    std::snprintf(margin, sizeof margin, "margin %.1f %% (safety factor %g)", 100.0 * (1.0 - sf * ratio), sf);
-    INFO(margin);
-    CHECK(Render(ReportKind::kTrajectory, j.dump()).find(margin) != std::string::npos);
-  }
-}
-
-TEST_CASE("A speed-limit table with a row that has no safe speed is UNSAFE", "[report][html]") {
-  // The JSON of a run whose lightest robot were unsafe at every speed searched: its row as
-  // speed_limit_json writes one (status no-safe-value, the limit null).
-  Json j = Json::parse(ReadFile("speed_limit_safe.json"));
-  j["rows"][1]["status"] = "no-safe-value";
-  j["rows"][1]["max_safe_speed_m_per_s"] = nullptr;
-  const Banner banner = BannerOf(Render(ReportKind::kSpeedLimit, j.dump(2)));
-  CHECK(banner.data_safe == "false");
-  CHECK(banner.word == "UNSAFE");
-}
-
-TEST_CASE("Runs without a verdict, non-objects and results without provenance are refused", "[report][html]") {
   const auto refuse = [](ReportKind kind, const std::string& json, const char* says) {
     ReportContent content;
     content.kind = kind;
@@ -569,31 +649,20 @@ TEST_CASE("Runs without a verdict, non-objects and results without provenance ar
   };
   refuse(ReportKind::kSimulate, "[1, 2]", "must be the JSON object");
   refuse(ReportKind::kSimulate, "not json", "not JSON");
-  refuse(ReportKind::kSimulate, ReadFile("simulate_safe.json"), "no \"provenance\"");
-  // Each kind refuses a result of the wrong kind, or one whose run failed.
-  refuse(ReportKind::kOptimize, WithProvenance(ReadFile("simulate_safe.json")), "without a verdict");
-  refuse(ReportKind::kSpeedLimit, WithProvenance(ReadFile("simulate_safe.json")), "without a verdict");
-  refuse(ReportKind::kAudit, WithProvenance(ReadFile("simulate_safe.json")), "without a verdict");
-  refuse(ReportKind::kSimulate, WithProvenance(ReadFile("speed_limit_safe.json")), "without a verdict");
-  Json failed_simulation = Json::parse(ReadFile("simulate_safe.json"));
-  failed_simulation["solver"]["status"] = "too-much-work";
-  refuse(ReportKind::kSimulate, WithProvenance(failed_simulation.dump()), "solver status 'too-much-work'");
-  Json failed = Json::parse(ReadFile("trajectory_safe.json"));
-  failed["status"] = "evaluation-failed";
-  refuse(ReportKind::kTrajectory, WithProvenance(failed.dump()), "evaluation-failed");
-  Json failed_row = Json::parse(ReadFile("speed_limit_safe.json"));
-  failed_row["rows"][0]["status"] = "evaluation-failed";
-  refuse(ReportKind::kSpeedLimit, WithProvenance(failed_row.dump()), "evaluation failed");
-  Json audit = Json::parse(ReadFile("audit_safe.json"));
-  audit["status"] = "evaluation-failed";
-  refuse(ReportKind::kAudit, WithProvenance(audit.dump()), "evaluation-failed");
-  Json provenance_not_object = Json::parse(ReadFile("simulate_safe.json"));
-  provenance_not_object["provenance"] = "covopt";
-  refuse(ReportKind::kSimulate, provenance_not_object.dump(), "no \"provenance\"");
-  // A chart that is not SVG.
+  Json no_provenance = Json::parse(ResultJson(HeadSummary(0.5)));
+  no_provenance.erase("provenance");
+  refuse(ReportKind::kSimulate, no_provenance.dump(), "no \"provenance\"");
+  no_provenance["provenance"] = "covopt";
+  refuse(ReportKind::kSimulate, no_provenance.dump(), "no \"provenance\"");
+  refuse(ReportKind::kSimulate, WithProvenance(R"({"safe": true})"), "has no summary");
+  refuse(ReportKind::kOptimize, ResultJson(HeadSummary(0.5)), "the result is of covopt simulate, not of covopt optimize");
+  ResultSummary failed = HeadSummary(0.5);
+  failed.evaluated = false;
+  failed.Finish();
+  refuse(ReportKind::kSimulate, ResultJson(failed), "without a verdict");
   ReportContent content;
   content.kind = ReportKind::kSimulate;
-  content.result_json = WithProvenance(ReadFile("simulate_safe.json"));
+  content.result_json = ResultJson(HeadSummary(0.5));
   content.charts = {{"t", "c", "PNG\x89 not an svg"}};
   CHECK_THROWS_WITH(covopt::report::HtmlReport(content), Catch::Contains("chart 1: no <svg>"));
 }

@@ -5,51 +5,62 @@
 ///
 /// The report is rendered from the very JSON object the command prints with --json (provenance
 /// block included), so the report and the JSON cannot disagree, and the CLI's --report and
-/// Python's result.to_html() are one function. It contains: the verdict (SAFE or UNSAFE, equally
-/// prominent) with the governing criterion and ratio; every input with its unit; the criteria and
-/// limits with their sources (Park et al. 2011, ISO/TS 15066:2016 Table A.2 with the row, the
-/// material's datasheet); every verdict with ratio and margin; the assumptions and validity
-/// limits of the model (docs/model.md); the warnings; the charts; the provenance; an appendix
-/// with every value of the JSON as nested tables (keys the report does not know land there too).
+/// Python's result.to_html() are one function. What it says is the result's "summary" object
+/// (summary_json.hpp), made by the library from the result: the report lays it out and judges
+/// nothing; it reads no prose.
+///
+/// The document, in order:
+/// - page 1 (`<section id="page-one">`, a page break after it in print): the header (title,
+///   project, cell); the verdict in one of four states with its word and a sentence, so the state
+///   is in words and not colour alone: SAFE (green; margin >= the report's margin threshold),
+///   MARGINAL (amber; safe, margin below it), UNSAFE (red), LIMITS (blue; a table of limits); the
+///   margin, the threshold and the governing ratio; the governing case; what was judged (targets,
+///   criteria, standards with editions, safety factor); the covering; the robot; the sign-off
+///   block (ReportInfo's project, cell, assessor, note; the provenance's date, version, commit
+///   and input digests; empty signature lines for the assessor and the approver);
+/// - the verdict rows (or the limit rows) with units, ratios and margins (at most 24; the
+///   governing, the failed and the largest ratios first; all in the summary appendix);
+/// - the charts; the inputs as tables by group; the warnings; the covering material's datasheet;
+///   the assumptions and validity limits of the models (docs/model.md) the summary's criteria,
+///   law and command rest on; the provenance;
+/// - the appendix ReportInfo::appendix asks for: none; summary (every row and the result's
+///   scalar values); full (every value of the JSON as nested tables);
+/// - the whole JSON in a collapsed `<details id="result-json">`, not printed.
 ///
 /// The document: HTML5, UTF-8, inline CSS for screen and print (A4, table rows and figures not
 /// split across pages), a Content-Security-Policy that forbids every fetch and every script, no
-/// script, no link, no font or image from outside. Every text of the JSON is HTML-escaped. A
-/// chart's SVG loses its XML prolog and DOCTYPE, and each chart's element ids (and the
-/// `href="#..."`/`url(#...)` references to them) get the prefix "chart<N>-" (N = 1, 2, ... in
-/// order), so ids stay unique across charts; an SVG that refers to anything outside itself is
-/// refused.
+/// script, no link, no font or image from outside. Every text of the JSON and of ReportInfo is
+/// HTML-escaped. A chart's SVG loses its XML prolog and DOCTYPE, and each chart's element ids
+/// (and the `href="#..."`/`url(#...)` references to them) get the prefix "chart<N>-" (N = 1, 2,
+/// ... in order), so ids stay unique across charts; an SVG that refers to anything outside
+/// itself is refused.
 ///
 /// Margin, everywhere in the report: 1 − SF × ratio (ratio = value / limit, SF the safety
 /// factor), the share of the derated limit left over; negative beyond the limit.
 ///
 /// Machine-checkable markup (for tests and tools):
-/// - `<section id="verdict" data-safe="true|false">`, its visible word "SAFE" or "UNSAFE" in a
-///   `<div class="word">`; both verdicts use the same element, size, weight and place, only the
-///   colours differ (classes "verdict safe" / "verdict unsafe").
-/// - `<span id="governing-ratio" data-value="...">`: the governing ratio, data-value the JSON's
-///   number text exactly as --json printed it ("null" where the kind has none: a speed-limit
-///   table of body regions or over ranges, whose rows carry limits, not ratios). Per kind it is
-///   the largest ratio of: simulate, the verdicts (laceration, contusion, crush; with ranges also
-///   worst_case.governing_ratio; with --body-region every region's force, pressure, compression
-///   and crush ratio and the head's); optimize, recommendation.governing_ratio (with
-///   --max-injury-probability, P(inadmissible) / max_probability; no recommendation: the bare
-///   robot's largest ratio); speed-limit, the rows' ratios at the limit (1 at the binding
-///   criterion by construction); robot --trajectory, every sample's ratios (laceration_ratio,
-///   contusion_ratio, compression_ratio; worst_ratio with --body-region); audit, every cell's
-///   governing_ratio.
-/// - Every input value (the leaves of the JSON's scene and other input objects of the kind:
-///   safety_factor, limits, design_space, search_limit, uncertain_inputs, robot, coverings, ...)
-///   in an element with `data-key="<dotted JSON path>"` (array elements by index:
-///   "uncertain_inputs.0.low", "scene.robot.mass_kg") and `data-value="<the JSON value's text
-///   exactly>"` (a number as --json printed it, a string's characters, true/false/null).
+/// - `<section id="verdict" class="verdict S" data-state="S" data-safe="true|false">`, S one of
+///   safe, marginal, unsafe, limits; its visible word in a `<div class="word">` and the sentence
+///   in a `<div class="sentence">`; every state uses the same element, size, weight and place,
+///   only the colours differ. data-safe is the summary's verdict (true for SAFE and MARGINAL).
+/// - `<span id="margin" data-value="...">`, `<span id="margin-threshold" data-value="...">` and
+///   `<span id="governing-ratio" data-value="...">`: the summary's margin and governing ratio as
+///   the JSON's number text exactly ("null" where there is none: a table of limits), the
+///   threshold's shortest text ("0.1").
+/// - `<section id="governing-case">`, `id="judged"`, `id="covering"`, `id="robot"`,
+///   `id="sign-off"` (with `<dd data-field="project|cell|assessor|note|date|version|digests">`,
+///   class "blank" when empty, and `<div class="signature-line" data-role="assessor|approver">`).
+/// - `<table class="inputs" data-group="robot|covering|human|criteria|solver|other">` with the
+///   columns quantity, value, unit, source: each input leaf of the result (the leaves of its
+///   scene and other input objects: safety_factor, limits, design_space, search_limit,
+///   uncertain_inputs, robot, coverings, ...) with its value cell
+///   `data-key="<dotted JSON path>"` (array elements by index: "uncertain_inputs.0.low") and
+///   `data-value="<the JSON value's text exactly>"`, its value in the unit the command line uses
+///   (mm, MPa, J/cm², N/cm², cm²), its unit cell `class="unit"` ("-" for a pure number, "text"
+///   for a word), its source cell `class="source"` (the JSON's "input_sources" entry of that
+///   path: "flag --robot-mass", "scene file s.toml", "catalog", "default"; "—" where it has none).
 /// - Each chart in `<figure class="chart" id="chart-<N>">` holding one inline `<svg>`.
-///
-/// What SAFE means per kind: simulate, the JSON's "safe" (with ranges, and the worst case over
-/// them admissible); optimize, a recommendation that is admissible (none found: UNSAFE; none
-/// needed because the bare robot is safe: SAFE); speed-limit, every row has a safe limit above
-/// zero (the robot is safe at or below its row's limit; a row with no safe value: UNSAFE);
-/// robot --trajectory and audit, status "safe" (or "at-rest").
+/// - `<section id="appendix" data-appendix="none|summary|full">`; `<details id="result-json">`.
 
 #include <string>
 #include <string_view>
@@ -87,9 +98,9 @@ struct ReportContent {
 
 /// The report as one HTML document (UTF-8).
 /// @throws std::invalid_argument when result_json is not a JSON object, has no "provenance"
-///         block, or holds no verdict of that kind (a failed run is never reported: a trajectory
-///         or audit status other than safe/unsafe/at-rest, a speed-limit row whose evaluation
-///         failed), or a chart's SVG is not an inline-able SVG document.
+///         block or no "summary", is another command's result, was not evaluated (a failed run
+///         is never reported), when content.info fails CheckReportInfo, or when a chart's SVG is
+///         not an inline-able SVG document.
 std::string HtmlReport(const ReportContent& content);
 
 }  // namespace covopt::report
