@@ -69,6 +69,7 @@ struct AuditRun {
   explicit AuditRun(audit::AssembledAudit a) : assembled(std::move(a)) {}
   audit::AssembledAudit assembled;
   std::optional<PlotFormat> plot_format;
+  ResultInputs inputs;  ///< the scene file's [report] table
 };
 
 double PositiveLength(const std::string& typed, const QuantitySpec& spec, const char* flag) {
@@ -222,6 +223,7 @@ AuditRun Resolve(const AuditCommandOptions& o) {
   AuditRun run(audit::AssembleAudit(in));
   run.assembled.setup.keep_travel = o.scene.keep_travel;
   run.plot_format = plot_format;
+  run.inputs = plan.inputs;
   if (o.design) {  // optimize's ranges, named by the flags (the library names its own fields)
     const audit::AuditDesignOptions& design = run.assembled.options.design;
     RequireMaxThickness(design.max_thickness_m, design.min_thickness_m, o.max_thickness);
@@ -393,7 +395,7 @@ void SetupAudit(CLI::App* sub, AuditCommandOptions& options) {
   AddOutputFileOption(*sub, "--samples-csv", options.samples_csv, "stream one row per sample: per link its largest ratio and region ('-': to stdout; memory does not "
                   "grow with the trajectory)", "FILE.csv|-");
   AddOutputFileOption(*sub, "--plot", options.plot_file, "heat map of the governing ratio over time and links (gnuplot)", "FILE.png|FILE.svg");
-  AddReportOption(*sub, options.report_file);
+  AddReportOption(*sub, options.report);
 }
 
 int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err) {
@@ -406,7 +408,7 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
   }
   AuditRun& run = *resolved;
   try {
-    if ((o.plot_file || o.report_file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+    if ((o.plot_file || o.report.file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     // The per-sample stream: written as the audit runs (a file through OutputFile).
     std::optional<OutputFile> stream_file;
     std::vector<std::string> link_names;
@@ -421,7 +423,7 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
       } else {
         out << header;
       }
-      run.assembled.options.keep_ratio_over_time = o.plot_file || o.report_file;  // the heat map's data
+      run.assembled.options.keep_ratio_over_time = o.plot_file || o.report.file;  // the heat map's data
       run.assembled.options.on_sample = [&](const audit::AuditSampleRow& row) {
         std::string line;
         report::AppendCsvRecord(line, report::AuditSampleCsvCells(row, region_names));
@@ -447,8 +449,8 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
       return *heat_map_chart;
     };
     if (o.plot_file) RunGnuplot(*o.plot_file, heat_map());
-    if (o.json || o.report_file) {
-      PrintAndReport(out, o.json, report::AuditJson(run.assembled.setup, result, run.assembled.input_warnings), o.run, o.report_file,
+    if (o.json || o.report.file) {
+      PrintAndReport(out, o.json, report::AuditJson(run.assembled.setup, result, run.assembled.input_warnings), o.run, o.report, run.inputs,
                      report::ReportKind::kAudit, [&] { return std::vector{heat_map()}; });
     }
     if (!o.json && o.csv_file && *o.csv_file == "-") {

@@ -58,7 +58,7 @@ struct AuditCommandOptions {
   std::optional<std::string> csv_file;         ///< --csv FILE|-: one row per link × region
   std::optional<std::string> samples_csv;      ///< --samples-csv FILE|-: one row per sample, streamed
   std::optional<std::string> plot_file;        ///< --plot FILE.png|FILE.svg: the heat map
-  std::optional<std::string> report_file;      ///< --report FILE.html|FILE.pdf (report_option.hpp)
+  ReportFlags report;  ///< --report FILE.html|FILE.pdf and the sign-off flags (report_option.hpp)
   /// Not typed: the command line and input files for the JSON's provenance, set by RunCli.
   std::optional<RunContext> run;
 };

@@ -124,10 +124,10 @@ int RunProbabilityDesign(const OptimizeOptions& o, const Resolved& r, const Robu
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
-  if (o.json || o.report_file) {
+  if (o.json || o.report.file) {
     try {
       PrintAndReport(out, o.json, report::ProbabilityDesignJson(inputs.box, options, result, r.warnings), o.run,
-                     o.report_file, report::ReportKind::kOptimize, nullptr);
+                     o.report, r.inputs, report::ReportKind::kOptimize, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }
@@ -166,12 +166,12 @@ int RunRobustOptimize(const OptimizeOptions& o, const Resolved& r, std::ostream&
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
-  if (o.json || o.report_file) {
+  if (o.json || o.report.file) {
     try {
       PrintAndReport(out, o.json,
                      report::RobustDesignJson(inputs->box, options, result, probability ? &*probability : nullptr,
                                               r.warnings),
-                     o.run, o.report_file, report::ReportKind::kOptimize, nullptr);
+                     o.run, o.report, r.inputs, report::ReportKind::kOptimize, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }
@@ -230,7 +230,7 @@ void SetupOptimize(CLI::App* sub, OptimizeOptions& options) {
   sub->add_option("--top", options.runners_up, "rows of the candidate table (default 8)")->type_name("N")->group("Output");
   AddBodyRegionOptions(*sub, options.body);
   AddJsonFlag(*sub, options.json, "print one JSON object (SI units) instead of the report");
-  AddReportOption(*sub, options.report_file);
+  AddReportOption(*sub, options.report);
   AddOutputFileOption(*sub, "--csv", options.csv, "write every candidate to FILE as CSV (SI units in the header)", "FILE");
   AddOutputFileOption(*sub, "--plot", options.plot_file, "chart with gnuplot: the design map, the governing ratio over thickness x modulus with each "
                   "criterion's limit and the chosen design (the head's design only)", "FILE.png|FILE.svg");
@@ -265,7 +265,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
                                          r.ranges.front().source, r.ranges.front().text));
     }
     return RunWithBodyRegions(options.body, errors, [&](const BodyRegionPlan& regions) {
-      return RunBodyRegionOptimize(options, r.request, r.warnings, regions, out, err);
+      return RunBodyRegionOptimize(options, r.request, r.inputs, r.warnings, regions, out, err);
     });
   }
   if (!r.ranges.empty()) return RunRobustOptimize(options, r, out, err);
@@ -283,7 +283,7 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
     return errors.BadInput(e.what());
   }
   if (!result.ok()) return errors.Failed(result.message);
-  if ((options.plot_file || options.report_file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+  if ((options.plot_file || options.report.file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
   // The design map, computed once for --plot and --report.
   std::optional<report::GnuplotChart> design_map;
   const auto design_map_chart = [&]() -> const report::GnuplotChart& {
@@ -300,10 +300,10 @@ int RunOptimize(const OptimizeOptions& options, std::ostream& out, std::ostream&
       return errors.BadInput(e.what());
     }
   }
-  if (options.json || options.report_file) {
+  if (options.json || options.report.file) {
     try {  // input's warnings, then the answer's
       PrintAndReport(out, options.json, report::DesignJson(r.request, result, r.warnings), options.run,
-                     options.report_file, report::ReportKind::kOptimize, [&] { return std::vector{design_map_chart()}; });
+                     options.report, r.inputs, report::ReportKind::kOptimize, [&] { return std::vector{design_map_chart()}; });
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

@@ -71,8 +71,9 @@ struct OptimizeOptions {
   /// probability of failing the criterion is <= P (FindProbabilityDesign).
   std::optional<std::string> max_injury_probability;
   bool json = false;
-  /// --report FILE.html|FILE.pdf (report_option.hpp): the report, written after a run that succeeded.
-  std::optional<std::string> report_file;
+  /// --report FILE.html|FILE.pdf and the sign-off flags (report_option.hpp): the report,
+  /// written after a run that succeeded.
+  ReportFlags report;
   /// Not typed: the command line and input files for the JSON's provenance, set by RunCli.
   std::optional<RunContext> run;
   /// --body-region, --body-area, --contact, --contact-area: design for ISO/TS 15066 body
@@ -91,8 +92,9 @@ void SetupOptimize(CLI::App* sub, OptimizeOptions& options);
 
 /// `optimize --body-region ... --speed V` (optimize_body_region.cpp): the covering that lets
 /// the robot reach V for every target. `head` is optimize's resolved request (the robot, the
-/// head, the candidates, the rule's flags), `warnings` its input warnings. Returns the exit code.
-int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignRequest& head,
+/// head, the candidates, the rule's flags), `inputs` what the scene file adds to the report,
+/// `warnings` its input warnings. Returns the exit code.
+int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignRequest& head, const ResultInputs& inputs,
                           const std::vector<std::string>& warnings, const BodyRegionPlan& regions, std::ostream& out,
                           std::ostream& err);
 

@@ -62,7 +62,7 @@ void CheckRegionDesignFlags(const OptimizeOptions& options, const optim::DesignR
 
 }  // namespace
 
-int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignRequest& head,
+int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignRequest& head, const ResultInputs& inputs,
                           const std::vector<std::string>& scene_warnings, const BodyRegionPlan& regions,
                           std::ostream& out, std::ostream& err) {
   const CommandErrors errors(err, "optimize");
@@ -91,12 +91,12 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
-  if (options.json || options.report_file) {
+  if (options.json || options.report.file) {
     try {
       PrintAndReport(out, options.json,
                      report::BodyRegionDesignJson(request, result, BodyCriterion(request.rule, regions.has_head()),
                                                   input_warnings),
-                     options.run, options.report_file, report::ReportKind::kOptimize, nullptr);
+                     options.run, options.report, inputs, report::ReportKind::kOptimize, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

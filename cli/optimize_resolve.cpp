@@ -62,6 +62,8 @@ void ResolveScene(const OptimizeOptions& o, Resolved& r) {
     if (extras.laceration_limit_Pa) d.limits.laceration_tensile_stress_Pa = *extras.laceration_limit_Pa;
     if (extras.contusion_limit_J_per_m2) d.limits.contusion_energy_density_J_per_m2 = *extras.contusion_limit_J_per_m2;
     if (extras.safety_factor) d.safety_factor = *extras.safety_factor;
+    r.inputs.file_report = extras.report;
+    (void)ReportInfoOf({}, r.inputs);  // a bad [report] value is refused before anything runs
   }
   std::vector<scene_file::SceneInput> inputs;  // the values, for the library's one resolution
   for (const SceneField& field : SceneFields()) {

@@ -9,6 +9,7 @@
 #include "covopt/optim/design.hpp"
 #include "covopt/scene_file/range.hpp"
 #include "optimize.hpp"
+#include "report_option.hpp"
 
 namespace covopt::cli {
 
@@ -18,6 +19,7 @@ struct Resolved {
   /// Scene inputs given as ranges LO..HI: the robust design (docs/model.md §11).
   std::vector<SceneRange> ranges;
   std::vector<std::string> warnings;  ///< about the input (the library adds its own)
+  ResultInputs inputs;                ///< what the inputs add to the report: the scene file's [report]
   int runners_up = 8;
 };
 

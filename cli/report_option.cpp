@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "covopt/report/report_settings.hpp"
 #include "errors.hpp"
 #include "output.hpp"
 #include "plot.hpp"
@@ -28,10 +29,51 @@ std::optional<ReportFormat> ReportFormatFor(const std::string& file) {
   return std::nullopt;
 }
 
+/// The sign-off flags: each one's key (scene_file::ReportKeys()), member and help.
+struct SignOffFlag {
+  std::string_view key;
+  std::string_view flag;
+  std::optional<std::string> ReportFlags::*member;
+  std::string_view type_name;
+  std::string_view help;
+};
+
+constexpr SignOffFlag kSignOffFlags[] = {
+    {"project", "--project", &ReportFlags::project, "TEXT", "the project the report is for, printed on its first page"},
+    {"cell", "--cell", &ReportFlags::cell, "TEXT", "the robot cell (or station) the report is for"},
+    {"assessor", "--assessor", &ReportFlags::assessor, "TEXT", "who made the assessment"},
+    {"note", "--note", &ReportFlags::note, "TEXT", "a note printed with the sign-off fields"},
+    {"margin_threshold", "--margin-threshold", &ReportFlags::margin_threshold, "SHARE",
+     "a SAFE verdict whose margin is below this reads MARGINAL: a share, 10% or 0.1 (default 10%)"},
+    {"appendix", "--report-appendix", &ReportFlags::appendix, "none|summary|full",
+     "what the report's appendix holds: none, summary (every summary row and input; the default) or full "
+     "(every value of the JSON)"},
+};
+
 }  // namespace
 
-void AddReportOption(CLI::App& command, std::optional<std::string>& file) {
-  command
+std::vector<scene_file::ReportSetting> ReportFlags::Settings() const {
+  std::vector<scene_file::ReportSetting> settings;
+  for (const SignOffFlag& f : kSignOffFlags) {
+    if (const std::optional<std::string>& typed = this->*f.member) {
+      settings.push_back({std::string(f.key), *typed, std::string(f.flag)});
+    }
+  }
+  return settings;
+}
+
+report::ReportInfo ReportInfoOf(const ReportFlags& flags, const ResultInputs& inputs) {
+  report::ReportInfo info;
+  AsInputError([&] {
+    report::ApplyReportSettings(inputs.file_report, info);
+    report::ApplyReportSettings(flags.Settings(), info);
+  });
+  return info;
+}
+
+void AddReportOption(CLI::App& command, ReportFlags& flags) {
+  std::optional<std::string>& file = flags.file;
+  CLI::Option* report = command
       .add_option("--report", file,
                   "also write the report for the risk-assessment file: self-contained HTML, or PDF "
                   "(printed by a headless Chromium)")
@@ -50,15 +92,33 @@ void AddReportOption(CLI::App& command, std::optional<std::string>& file) {
           },
           "FILE.html|FILE.pdf", "report file"))
       ->group("Output");
+  for (const SignOffFlag& f : kSignOffFlags) {
+    command.add_option(std::string(f.flag), flags.*f.member, std::string(f.help))
+        ->type_name(std::string(f.type_name))
+        ->check(CLI::Validator(
+            [key = f.key](std::string& value) -> std::string {
+              report::ReportInfo scratch;
+              const scene_file::ReportSetting setting{std::string(key), value, ""};
+              try {  // the report's own reading: the same message as the scene file's value gets
+                report::ApplyReportSettings({&setting, 1}, scratch);
+              } catch (const std::invalid_argument& e) {
+                return e.what();
+              }
+              return {};
+            },
+            "", std::string(f.key)))
+        ->needs(report)
+        ->group("Report");
+  }
 }
 
 void WriteReport(const std::string& file, report::ReportKind kind, const std::string& result_json,
-                 std::span<const report::GnuplotChart> charts) {
+                 std::span<const report::GnuplotChart> charts, const report::ReportInfo& info) {
   std::string html;
   try {
     std::vector<report::SvgChart> drawn;
     if (!charts.empty()) drawn = report::DrawSvgCharts(charts, SignalSafeScratch());
-    html = report::HtmlReport({kind, result_json, std::move(drawn), {}});
+    html = report::HtmlReport({kind, result_json, std::move(drawn), info});
   } catch (const std::exception& e) {  // gnuplot missing or failed; a result HtmlReport refuses
     throw OutputError(fmt::format("--report '{}': no report written: {}", file, e.what()));
   }
@@ -70,10 +130,13 @@ void WriteReport(const std::string& file, report::ReportKind kind, const std::st
 }
 
 void PrintAndReport(std::ostream& out, bool print_json, const std::string& json_object,
-                    const std::optional<RunContext>& run, const std::optional<std::string>& report_file,
+                    const std::optional<RunContext>& run, const ReportFlags& report, const ResultInputs& inputs,
                     report::ReportKind kind, const std::function<std::vector<report::GnuplotChart>()>& charts) {
   const std::string stamped = WithRunProvenance(json_object, run);
-  if (report_file) WriteReport(*report_file, kind, stamped, charts ? charts() : std::vector<report::GnuplotChart>{});
+  if (report.file) {
+    WriteReport(*report.file, kind, stamped, charts ? charts() : std::vector<report::GnuplotChart>{},
+                ReportInfoOf(report, inputs));
+  }
   if (print_json) out << stamped << '\n';
 }
 

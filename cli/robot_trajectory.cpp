@@ -177,14 +177,14 @@ int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptio
   std::vector<std::string> warnings = run.input_warnings;
   warnings.insert(warnings.end(), run.motion.warnings.begin(), run.motion.warnings.end());
   warnings.insert(warnings.end(), regions.notes.begin(), regions.notes.end());
-  if (json || options.report_file) {
+  if (json || options.report.file) {
     const optim::BodyRegionTrajectoryCheck empty;
     try {
       PrintAndReport(out, json,
                      report::BodyRegionTrajectoryJson(check ? *check : empty, iso,
                                                       BodyContactSceneOf(run.scene.scene, regions), head, criterion,
                                                       warnings),
-                     context, options.report_file, report::ReportKind::kTrajectory, nullptr);
+                     context, options.report, run.scene.inputs, report::ReportKind::kTrajectory, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }
@@ -229,7 +229,7 @@ std::optional<std::string> RobotTrajectoryOptions::FirstCheckFlag() const {
   if (scene.safety_factor) return "--safety-factor";
   if (allow_full_compression) return "--allow-full-compression";
   if (csv_file) return "--csv";
-  if (report_file) return "--report";
+  if (report.file) return "--report";
   if (plot_file) return "--plot";
   return std::nullopt;
 }
@@ -251,7 +251,7 @@ void AddRobotTrajectoryOptions(CLI::App& sub, RobotTrajectoryOptions& options) {
   AddOutputFileOption(sub, "--csv", options.csv_file, "write the trajectory's samples as CSV ('-': to stdout instead of the table)", "FILE.csv|-");
   AddOutputFileOption(sub, "--plot", options.plot_file, "chart with gnuplot: speed and max safe speed over time, and the speed scaled by the safe "
                  "speed scale", "FILE.png|FILE.svg");
-  AddReportOption(sub, options.report_file);
+  AddReportOption(sub, options.report);
 }
 
 int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOptions& options, bool json,
@@ -272,7 +272,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
   // A failed evaluation leaves the trajectory without a verdict: no table, file or chart.
   if (check.status == optim::TrajectoryCheckStatus::kEvaluationFailed) return errors.Failed(check.message);
   try {
-    if ((options.plot_file || options.report_file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+    if ((options.plot_file || options.report.file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (options.csv_file && *options.csv_file != "-") WriteFileAtomically(*options.csv_file, CsvText(check));
     if (options.plot_file) {
       RunGnuplot(*options.plot_file,
@@ -282,7 +282,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
     return errors.Failed(e);
   }
 
-  if (json || options.report_file) {
+  if (json || options.report.file) {
     try {
       PrintAndReport(out, json,
                      report::TrajectoryCheckJson(check, run.motion, run.scene.scene,
@@ -290,7 +290,7 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
                                                      ? std::optional<std::string>(run.scene.covering_material->name)
                                                      : std::nullopt,
                                                  run.limit, run.input_warnings),
-                     context, options.report_file, report::ReportKind::kTrajectory, [&] {
+                     context, options.report, run.scene.inputs, report::ReportKind::kTrajectory, [&] {
                        return std::vector{report::TrajectoryChart({check, run.scene.scene, run.limit, *options.file, run.tip_link})};
                      });
     } catch (const OutputError& e) {

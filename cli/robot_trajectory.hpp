@@ -42,7 +42,7 @@ struct RobotTrajectoryOptions {
   bool allow_full_compression = false;
   std::optional<std::string> csv_file;   ///< --csv FILE ("-": stdout instead of the table)
   std::optional<std::string> plot_file;  ///< --plot FILE.png|FILE.svg
-  std::optional<std::string> report_file;  ///< --report FILE.html|FILE.pdf (report_option.hpp)
+  ReportFlags report;  ///< --report FILE.html|FILE.pdf and the sign-off flags (report_option.hpp)
   /// The first flag of the check typed ("--covering-thickness", "--csv", ...), if any: they
   /// apply with --trajectory only.
   std::optional<std::string> FirstCheckFlag() const;

@@ -92,7 +92,7 @@ void SetupSimulate(CLI::App* sub, SimulateOptions& options) {
   AddJsonFlag(*sub, options.json);
   AddOutputFileOption(*sub, "--history", options.history_file, "write the time history as CSV (uses the time path)", "FILE.csv");
   AddOutputFileOption(*sub, "--plot", options.plot_file, "draw force and stress against time with gnuplot (uses the time path)", "FILE.png|FILE.svg");
-  AddReportOption(*sub, options.report_file);
+  AddReportOption(*sub, options.report);
 }
 
 namespace {
@@ -210,13 +210,13 @@ int RunUncertainSimulate(const SimulateOptions& options, const SimulationPlan& p
     return errors.Failed(e);
   }
 
-  if (plan.json || options.report_file) {
+  if (plan.json || options.report.file) {
     try {
       PrintAndReport(out, plan.json,
                      report::UncertainSimulationJson(report, box ? &*box : nullptr, box ? &worst : nullptr,
                                                      probability ? &*probability : nullptr,
                                                      elasticities ? &*elasticities : nullptr),
-                     options.run, options.report_file, report::ReportKind::kSimulate, nullptr);
+                     options.run, options.report, plan.inputs, report::ReportKind::kSimulate, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }
@@ -296,16 +296,16 @@ int RunSimulate(const SimulateOptions& options, std::ostream& out, std::ostream&
 
   try {
     // Check for gnuplot before writing anything, so that a missing tool leaves no files.
-    if ((plan.plot_file || options.report_file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+    if ((plan.plot_file || options.report.file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (plan.history_file) WriteFileAtomically(*plan.history_file, HistoryCsv(*model, result.history));
     if (plan.plot_file) PlotHistory(*plan.plot_file, report);
   } catch (const OutputError& e) {
     return errors.Failed(e);
   }
 
-  if (plan.json || options.report_file) {
+  if (plan.json || options.report.file) {
     try {  // the object covopt.simulate() returns
-      PrintAndReport(out, plan.json, report::SimulationJson(report), options.run, options.report_file,
+      PrintAndReport(out, plan.json, report::SimulationJson(report), options.run, options.report, plan.inputs,
                      report::ReportKind::kSimulate, [&] { return std::vector{report::HistoryChart(report)}; });
     } catch (const OutputError& e) {
       return errors.Failed(e);

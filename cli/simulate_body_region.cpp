@@ -29,7 +29,7 @@ int RunHead(const SimulateOptions& options, std::ostream& out, std::ostream& err
   head.body = {};
   head.json = json;
   head.run.reset();          // its object is nested in the regions' one, which carries the provenance
-  head.report_file.reset();  // and the report is the regions' one
+  head.report.file.reset();  // and the report is the regions' one
   return RunSimulate(head, out, err);
 }
 
@@ -134,11 +134,11 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
     if (code != 0) return code;
     head_text = head_out.str();
   }
-  if (plan.json || options.report_file) {
+  if (plan.json || options.report.file) {
     try {
       PrintAndReport(out, plan.json,
                      report::BodyContactSimulationJson(scene, MaterialName(plan), judgements, sf, head_text, warnings),
-                     options.run, options.report_file, report::ReportKind::kSimulate, nullptr);
+                     options.run, options.report, plan.inputs, report::ReportKind::kSimulate, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

@@ -291,6 +291,8 @@ SimulationPlan ResolveSimulation(const SimulateOptions& options) {
       plan.sources[std::move(name)] = *options.scene_file;
     }
     plan.ranges = extras.ranges;
+    plan.inputs.file_report = extras.report;
+    (void)ReportInfoOf({}, plan.inputs);  // a bad [report] value is refused before anything runs
   }
   if (options.material || extras.covering_material) {
     ApplyMaterial(options, extras, plan);

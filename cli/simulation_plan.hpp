@@ -22,6 +22,7 @@
 #include "body_region_options.hpp"
 #include "catalog_options.hpp"
 #include "plot.hpp"
+#include "report_option.hpp"
 #include "robot_model_options.hpp"
 #include "run_context.hpp"
 #include "scene_file.hpp"
@@ -85,8 +86,9 @@ struct SimulateOptions {
   std::optional<long> max_steps;
   /// --json: print one JSON object instead of the table.
   bool json = false;
-  /// --report FILE.html|FILE.pdf (report_option.hpp): the report, written after a run that succeeded.
-  std::optional<std::string> report_file;
+  /// --report FILE.html|FILE.pdf and the sign-off flags (report_option.hpp): the report,
+  /// written after a run that succeeded.
+  ReportFlags report;
   /// Not typed: the command line and input files for the JSON's provenance, set by RunCli;
   /// none for the head's run inside `--body-region head` (its object is nested).
   std::optional<RunContext> run;
@@ -144,6 +146,8 @@ struct SimulationPlan {
   /// With --urdf: where robot.mass came from and the robot model's warnings, shown with
   /// the input warnings.
   std::vector<std::string> robot_model_notes;
+  /// What the inputs add to the report: the scene file's [report] table.
+  ResultInputs inputs;
 };
 
 /// The scene group ("Scene" in --help), registered here once: --scene FILE, every scene field's

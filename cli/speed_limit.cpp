@@ -137,7 +137,7 @@ void SetupSpeedLimit(CLI::App* sub, SpeedLimitCommandOptions& options) {
   AddOutputFileOption(*sub, "--csv", options.csv_file, "write the rows as CSV ('-': to stdout instead of the table)", "FILE.csv|-");
   AddOutputFileOption(*sub, "--plot", options.plot_file, "chart with gnuplot: max safe speed over reflected mass, one curve per --material and the "
                   "bare robot", "FILE.png|FILE.svg");
-  AddReportOption(*sub, options.report_file);
+  AddReportOption(*sub, options.report);
 }
 
 SpeedLimitPlan ResolveSpeedLimit(const SpeedLimitCommandOptions& options) {
@@ -275,10 +275,10 @@ int RunRobustSpeedLimit(const SpeedLimitPlan& plan, const SpeedLimitCommandOptio
   } catch (const std::invalid_argument& e) {
     return errors.BadInput(e.what());
   }
-  if (plan.json || options.report_file) {
+  if (plan.json || options.report.file) {
     try {
       PrintAndReport(out, plan.json, report::RobustSpeedLimitTableJson(plan.quantity, *first_box, rows), options.run,
-                     options.report_file, report::ReportKind::kSpeedLimit, nullptr);
+                     options.report, plan.coverings.front().inputs, report::ReportKind::kSpeedLimit, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }
@@ -331,7 +331,7 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
   for (const std::string& w : plan.warnings) input_warnings.push_back(w);
   const Scene& scene = plan.coverings.front().scene;
   try {
-    if ((plan.plot_file || options.report_file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
+    if ((plan.plot_file || options.report.file) && !FindOnPath("gnuplot")) return errors.Failed(kGnuplotMissing);
     if (plan.csv_file && *plan.csv_file != "-") WriteFileAtomically(*plan.csv_file, CsvText(plan, rows));
     if (plan.plot_file) {
       RunGnuplot(*plan.plot_file, SpeedLimitChartOf(plan));
@@ -340,10 +340,10 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
     return errors.Failed(e);
   }
 
-  if (plan.json || options.report_file) {
+  if (plan.json || options.report.file) {
     try {
       PrintAndReport(out, plan.json, report::SpeedLimitJson(plan.quantity, scene, plan.options, rows, input_warnings),
-                     options.run, options.report_file, report::ReportKind::kSpeedLimit,
+                     options.run, options.report, plan.coverings.front().inputs, report::ReportKind::kSpeedLimit,
                      [&] { return std::vector{SpeedLimitChartOf(plan)}; });
     } catch (const OutputError& e) {
       return errors.Failed(e);

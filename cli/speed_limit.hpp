@@ -56,7 +56,7 @@ struct SpeedLimitCommandOptions {
   bool json = false;                      ///< --json
   std::optional<std::string> csv_file;    ///< --csv FILE ("-": stdout instead of the table)
   std::optional<std::string> plot_file;   ///< --plot FILE.png|FILE.svg (solve-for speed)
-  std::optional<std::string> report_file; ///< --report FILE.html|FILE.pdf (report_option.hpp)
+  ReportFlags report;  ///< --report FILE.html|FILE.pdf and the sign-off flags (report_option.hpp)
   /// Not typed: the command line and input files for the JSON's provenance, set by RunCli.
   std::optional<RunContext> run;
 };

@@ -150,14 +150,14 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
   }
   const SimulationPlan& first = plan.coverings.front();
   const BodyContactScene first_scene = BodyContactSceneOf(first.scene, regions);
-  if (plan.json || options.report_file) {
+  if (plan.json || options.report.file) {
     try {
       PrintAndReport(out, plan.json,
                      report::BodyRegionSpeedLimitJson(first_scene,
                                                       plan.coverings.size() == 1 ? MaterialName(first) : std::nullopt,
                                                       BodyCriterion(rule, regions.has_head()), rule.safety_factor,
                                                       rows, warnings),
-                     options.run, options.report_file, report::ReportKind::kSpeedLimit, nullptr);
+                     options.run, options.report, first.inputs, report::ReportKind::kSpeedLimit, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e);
     }

@@ -22,12 +22,16 @@ const std::array kLimitFields{
              "the limits are divided by this factor, 1-100"},
 };
 
-constexpr std::array<std::string_view, 7> kTables{"robot", "covering", "head", "scalp",
-                                                  "skull", "model",    "limits"};
+constexpr std::array<std::string_view, 8> kTables{"robot", "covering", "head", "scalp",
+                                                  "skull", "model",    "limits", "report"};
+
+constexpr std::array<std::string_view, 6> kReportKeys{"project", "cell", "assessor", "note", "margin_threshold", "appendix"};
 
 }  // namespace
 
 std::span<const std::string_view> SceneTables() noexcept { return kTables; }
+
+std::span<const std::string_view> ReportKeys() noexcept { return kReportKeys; }
 
 std::string LimitField::dotted_name() const { return fmt::format("limits.{}", key); }
 

@@ -55,6 +55,9 @@ std::vector<std::string_view> KeysOf(std::string_view table) {
   if (table == "limits") {
     for (const LimitField& field : LimitFields()) keys.push_back(field.key);
   }
+  if (table == "report") {
+    for (const std::string_view key : ReportKeys()) keys.push_back(key);
+  }
   return keys;
 }
 
@@ -140,10 +143,39 @@ void ApplyLimits(const toml::table& table, std::string_view source, bool extras_
   }
 }
 
+/// The [report] table: known keys, each a string (margin_threshold also a number); the values
+/// are read by the report's settings reader (covopt/report/report_settings.hpp).
+void ApplyReport(const toml::table& table, std::string_view source, bool extras_wanted, Reading& reading) {
+  const auto keys = ReportKeys();
+  for (const auto& [key, node] : table) {
+    const std::string_view key_name = key.str();
+    if (std::find(keys.begin(), keys.end(), key_name) == keys.end()) UnknownKey(source, key, "report");
+    const std::string name = fmt::format("report.{}", key_name);
+    const std::string where = Where(source, node.source());
+    if (!extras_wanted) RefuseExtra(where, name);
+    const bool threshold = key_name == "margin_threshold";
+    ReportSetting setting{std::string(key_name), 0.0, fmt::format("{}: {}", where, name)};
+    if (node.is_string()) {
+      setting.value = **node.as_string();
+    } else if (threshold && (node.is_integer() || node.is_floating_point())) {
+      setting.value = *node.value<double>();
+    } else {
+      throw std::invalid_argument(fmt::format("{}: expected {}, got {}", setting.name,
+                                              threshold ? "a share, 0.1 or \"10%\"" : "a string", TypeName(node)));
+    }
+    reading.extras.report.push_back(std::move(setting));
+    reading.set_fields.push_back(name);
+  }
+}
+
 void ApplyTable(std::string_view table_name, const toml::table& table, std::string_view source,
                 bool extras_wanted, Reading& reading) {
   if (table_name == "limits") {
     ApplyLimits(table, source, extras_wanted, reading);
+    return;
+  }
+  if (table_name == "report") {
+    ApplyReport(table, source, extras_wanted, reading);
     return;
   }
   const auto fields = SceneFields();

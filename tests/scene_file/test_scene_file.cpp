@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -335,4 +336,40 @@ TEST_CASE("the [limits] fields are checked with one message for every front end"
   CHECK(covopt::scene_file::ParseThresholds("literal", "model.thresholds") ==
         covopt::ThresholdReading::kLiteral);
   CHECK(covopt::scene_file::ThresholdsName(covopt::ThresholdReading::kCumulative) == "cumulative");
+}
+
+TEST_CASE("[report] reaches the extras as settings named by where they are written", "[scene_file]") {
+  Scene scene;
+  SceneFileExtras extras;
+  const auto set = ApplySceneToml(
+      "[report]\nproject = \"Line 4\"\nmargin_threshold = 0.2\nappendix = \"full\"\nnote = \"\"\"a\nb\"\"\"\n",
+      "scene.toml", scene, &extras);
+  CHECK(SameScene(scene, Scene{}));
+  // toml++ keeps a table's keys sorted.
+  CHECK(set == std::vector<std::string>{"report.appendix", "report.margin_threshold", "report.note", "report.project"});
+  REQUIRE(extras.report.size() == 4);
+  CHECK(extras.report[0].key == "appendix");
+  CHECK(std::get<std::string>(extras.report[0].value) == "full");
+  CHECK(extras.report[0].name == "scene.toml:4:12: report.appendix");
+  CHECK(std::get<double>(extras.report[1].value) == 0.2);
+  CHECK(std::get<std::string>(extras.report[2].value) == "a\nb");
+  CHECK(std::get<std::string>(extras.report[3].value) == "Line 4");
+  // A threshold may be a string ("10%") or an integer; the values are read by the report.
+  ApplySceneToml("[report]\nmargin_threshold = \"10%\"\n", "s.toml", scene, &extras);
+  CHECK(std::get<std::string>(extras.report.back().value) == "10%");
+  ApplySceneToml("[report]\nmargin_threshold = 0\n", "s.toml", scene, &extras);
+  CHECK(std::get<double>(extras.report.back().value) == 0.0);
+}
+
+TEST_CASE("bad [report] keys and types are named with their location", "[scene_file]") {
+  CHECK(ErrorFor("[report]\nprojet = \"x\"\n") == "scene.toml:2:1: unknown key 'report.projet'; did you mean 'report.project'?");
+  CHECK_THAT(ErrorFor("[report]\ncolour = \"x\"\n"),
+             Contains("[report] takes project, cell, assessor, note, margin_threshold, appendix"));
+  CHECK(ErrorFor("[report]\nassessor = 3\n") == "scene.toml:2:12: report.assessor: expected a string, got an integer");
+  CHECK_THAT(ErrorFor("[report]\nmargin_threshold = true\n"),
+             Contains("report.margin_threshold: expected a share, 0.1 or \"10%\"") && Contains("a boolean"));
+  CHECK_THAT(ErrorFor("report = 3\n"), Contains("'report' must be a table"));
+  Scene scene;
+  CHECK_THROWS_WITH(ApplySceneToml("[report]\nproject = \"x\"\n", "scene.toml", scene, nullptr),
+                    "scene.toml:2:11: report.project is not read by this command; remove it");
 }

@@ -14,8 +14,13 @@
 
 namespace covopt::scene_file {
 
-/// The scene-file tables, in order: robot, covering, head, scalp, skull, model, limits.
+/// The scene-file tables, in order: robot, covering, head, scalp, skull, model, limits, report.
 std::span<const std::string_view> SceneTables() noexcept;
+
+/// The keys of a report's sign-off settings, the scene file's [report] table and Python's
+/// report_info: project, cell, assessor, note, margin_threshold, appendix
+/// (covopt/report/report_settings.hpp reads them).
+std::span<const std::string_view> ReportKeys() noexcept;
 
 /// One injury limit, or the safety factor: a key of the scene file's [limits] table.
 struct LimitField {

@@ -10,6 +10,7 @@
 ///     [skull]    modulus poisson
 ///     [model]    thresholds = "cumulative" | "literal", damping
 ///     [limits]   laceration contusion safety_factor
+///     [report]   project cell assessor note margin_threshold appendix
 ///
 /// A value is a TOML number (SI) or a string with a unit ("15mm", "2 m/s", "fixed", "flat"),
 /// read by covopt::ParseQuantity. A bare TOML number must be plausible for its quantity, as
@@ -27,6 +28,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "covopt/core/scene.hpp"
@@ -35,7 +37,20 @@
 
 namespace covopt::scene_file {
 
-/// What a scene file sets besides the Scene: the [limits] table, covering.material, ranges.
+/// One sign-off setting of a report, as a front end was given it: a key of the scene file's
+/// [report] table, a command-line flag (--project) or a key of Python's report_info. Read and
+/// checked by covopt/report/report_settings.hpp.
+struct ReportSetting {
+  /// One of ReportKeys(): "project", "cell", "assessor", "note", "margin_threshold", "appendix".
+  std::string key;
+  /// A text as given, or a number (a margin threshold written as a TOML or Python number) [-].
+  std::variant<double, std::string> value;
+  /// How messages name it: "scene.toml:3:11: report.project", "--project", "report_info['project']".
+  std::string name;
+};
+
+/// What a scene file sets besides the Scene: the [limits] table, covering.material, ranges,
+/// the [report] table.
 struct SceneFileExtras {
   /// limits.laceration: the laceration limit, tensile stress [Pa], > 0.
   std::optional<double> laceration_limit_Pa;
@@ -50,6 +65,9 @@ struct SceneFileExtras {
   /// Fields written as a range, "3.7kg..5.8kg" (an uncertain input, docs/model.md §11); the
   /// scene keeps its value there.
   std::vector<SceneRange> ranges;
+  /// The [report] table, in the file's order: each key's value is checked only for its TOML
+  /// type here (a string; margin_threshold also a number), its value when it is read.
+  std::vector<ReportSetting> report;
 };
 
 /// The largest scene file read [bytes], 1 MiB (the examples are under 2 kB). A larger file,
@@ -59,11 +77,11 @@ inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{1} << 20;
 
 /// Reads the scene file at `path` into `scene` (and `extras`): the values it sets replace
 /// theirs.
-/// @param extras receives [limits], covering.material and ranges; when null, a file that
+/// @param extras receives [limits], covering.material, ranges and [report]; when null, a file that
 ///        sets them is refused (the caller does not use them, and they must not be dropped
 ///        silently).
 /// @return the fields the file set, by name ("robot.mass", "model.thresholds",
-///         "limits.laceration", "covering.material").
+///         "limits.laceration", "covering.material", "report.project").
 /// @throws std::invalid_argument if the file cannot be read or is not a valid scene file;
 ///         `scene` and `extras` are then unchanged.
 std::vector<std::string> ApplySceneFile(const std::filesystem::path& path, Scene& scene,
