@@ -776,8 +776,13 @@ def check_pdf(pdf, expected, max_pages=PDF_MAX_PAGES):
     for what, needle in needles:
         if needle and not holds(page_one, needle):
             failures.append("page 1 of the PDF lacks the %s %r" % (what, needle))
+    # The provenance in the layout's text: the reading order joins a line ending in a hyphen to
+    # the next one without it ("--robot" broken after "-" reads "-robot").
+    code, layout, err = run(["pdftotext", "-layout", pdf, "-"], 60)
+    if code != 0:
+        return failures + ["pdftotext -layout failed on %s (exit %d): %s" % (pdf, code, err.strip())], count
     for what, needle in (("commit", expected["commit"]), ("command", expected["command"])):
-        if not needle or not holds(text, needle):
+        if not needle or not holds(layout, needle):
             failures.append("the PDF's text lacks the %s %r" % (what, needle))
     return failures, count
 
