@@ -119,7 +119,7 @@ h1 { font-size: 15pt; margin: 0 0 1mm 0; }
 h2 { font-size: 12pt; margin: 5mm 0 1.5mm 0; border-bottom: 1px solid #888; break-after: avoid; page-break-after: avoid; }
 h3 { font-size: 10pt; margin: 2.5mm 0 1mm 0; break-after: avoid; page-break-after: avoid; }
 p, li { margin: 0.7mm 0; }
-ul.compact { margin: 0; padding-left: 5mm; }
+ul.compact { margin: 0; padding-left: 5mm; font-size: 8.5pt; }
 code { font-family: "DejaVu Sans Mono", monospace; font-size: 8pt; overflow-wrap: anywhere; }
 .meta { color: #444; font-size: 9pt; margin: 0; }
 #page-one { break-after: page; page-break-after: always; }
@@ -155,7 +155,7 @@ table.appendix { font-size: 7pt; margin: 0 0 1mm 0; }
 h4.key { margin: 2mm 0 0.5mm 0; font-weight: 700; break-after: avoid; page-break-after: avoid; }
 .key { font-family: "DejaVu Sans Mono", monospace; font-size: 7.5pt; }
 figure.chart { margin: 2mm 0; break-inside: avoid; page-break-inside: avoid; text-align: center; }
-figure.chart svg { width: 100%; max-width: 165mm; height: auto; max-height: 105mm; }
+figure.chart svg { width: 100%; max-width: 160mm; height: auto; max-height: 95mm; }
 figure.chart figcaption { text-align: left; font-size: 8.5pt; }
 .warnings li { color: #6b3d00; }
 section#appendix[data-appendix="full"] { break-before: page; page-break-before: always; }
