@@ -19,9 +19,11 @@
 #include "body_region_options.hpp"
 #include "covopt/audit/assemble.hpp"
 #include "covopt/audit/audit.hpp"
+#include "covopt/audit/summary.hpp"
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/report/audit_json.hpp"
 #include "covopt/report/csv.hpp"
+#include "covopt/report/summary_json.hpp"
 #include "covopt/robot/surface.hpp"
 #include "design_flag_ranges.hpp"
 #include "errors.hpp"
@@ -268,7 +270,7 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
                FormatQuantity(setup.reaction_delay_s, QuantityKind::kTime),
                FormatQuantity(setup.braking_m_per_s2, QuantityKind::kAcceleration));
   }
-  fmt::print(out, "Verdict    {}\n", r.message);
+  fmt::print(out, "Verdict    {}\n{}", r.message, report::SummaryText(audit::SummarizeAudit(setup, r), 11));
   if (r.limiting_cell) {
     const audit::AuditCell& c = r.cells[*r.limiting_cell];
     fmt::print(out, "Limit      safe speed scale {}: {} against {} ({}) at t = {:.4g} s, point {} m (base frame)\n",

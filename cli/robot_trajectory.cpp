@@ -16,6 +16,9 @@
 #include <fmt/ostream.h>
 
 #include "body_region_options.hpp"
+#include "body_region_output.hpp"
+#include "covopt/optim/summaries.hpp"
+#include "covopt/report/summary_json.hpp"
 #include "covopt/optim/body_region_trajectory.hpp"
 #include "covopt/optim/input_warnings.hpp"
 #include "covopt/optim/trajectory_check.hpp"
@@ -183,7 +186,7 @@ int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptio
       PrintAndReport(out, json,
                      report::BodyRegionTrajectoryJson(check ? *check : empty, iso,
                                                       BodyContactSceneOf(run.scene.scene, regions), head, criterion,
-                                                      warnings),
+                                                      optim::JudgedRule(body_options).safety_factor, warnings),
                      context, options.report, run.scene.inputs, report::ReportKind::kTrajectory, nullptr);
     } catch (const OutputError& e) {
       return errors.Failed(e);
@@ -315,7 +318,8 @@ int RunRobotTrajectory(const RobotModelOptions& model, const RobotTrajectoryOpti
       fmt::print(out, "Material   {}\n", run.scene.covering_material->name);
     }
     PrintLimitsAndCriterion(out, run.limit, run.scene);
-    fmt::print(out, "Verdict    {}\n", check.message);
+    fmt::print(out, "Verdict    {}\n{}", check.message,
+               report::SummaryText(optim::SummarizeTrajectory(check, scene, body_text::MaterialName(run.scene).value_or("")), 11));
     report::PrintWorstSample(out, check);
     fmt::print(out, "\n");
     report::PrintTrajectorySamples(out, check);

@@ -21,7 +21,9 @@
 #include "covopt/optim/speed_limit_table.hpp"
 #include "covopt/report/csv.hpp"
 #include "covopt/report/robust_json.hpp"
+#include "covopt/optim/summaries.hpp"
 #include "covopt/report/speed_limit_json.hpp"
+#include "covopt/report/summary_json.hpp"
 #include "covopt/report/speed_limit_text.hpp"
 #include "output_options.hpp"
 #include "rule_options.hpp"
@@ -376,6 +378,8 @@ int RunSpeedLimit(const SpeedLimitCommandOptions& options, std::ostream& out, st
                    oracle.reason);
       }
     }
+    fmt::print(out, "Verdict    {}\n\n",
+               report::SummaryHeadline(optim::SummarizeSpeedLimits(plan.quantity, scene, plan.options, rows)));
     report::PrintSpeedLimitRows(out, plan.quantity, plan.coverings.size() > 1, rows);
     PrintHeadScope(out, plan.options, plan.coverings.front());
     for (const std::string& w : input_warnings) fmt::print(out, "Warning: {}\n", w);

@@ -1,5 +1,7 @@
 #include "covopt/core/result_summary.hpp"
 
+#include "covopt/core/number_format.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -50,6 +52,18 @@ void FinishLimits(ResultSummary& s) {
                                            [](const LimitRow& row) { return row.value > 0.0; });
   s.safe = s.evaluated && every_case_safe;
   s.margin = std::numeric_limits<double>::quiet_NaN();  // a table of limits has no one margin
+  // The case with the lowest value governs (the first on a tie); its sentence names the value.
+  const LimitRow* lowest = nullptr;
+  for (const LimitRow& row : s.limits) {
+    if (!std::isnan(row.value) && (lowest == nullptr || row.value < lowest->value)) lowest = &row;
+  }
+  if (lowest != nullptr) {
+    s.governing_target = lowest->target;
+    s.governing_criterion = lowest->binding_criterion;
+    s.governing_case = "the lowest " + lowest->quantity + ": " +
+                       (std::isinf(lowest->value) ? std::string("not limited")
+                                                  : FormatSignificant(lowest->value, 4) + " " + lowest->unit);
+  }
   if (!s.evaluated) {
     s.state = VerdictState::kNotEvaluated;
   } else {

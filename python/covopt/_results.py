@@ -73,6 +73,12 @@ class Result:
         return path
 
     def __repr__(self):
+        summary = self._data.get("summary") if isinstance(self._data, dict) else None
+        if isinstance(summary, dict):
+            # The library's one line (report::SummaryHeadline), then the rest of the fields briefly.
+            from . import _covopt  # the extension, imported by the package before this runs
+            head = _covopt.summary_headline(json.dumps({"summary": summary}, allow_nan=False))
+            return f"{self._name}({head})"
         def brief(value):
             if isinstance(value, dict):
                 return "{...}" if value else "{}"

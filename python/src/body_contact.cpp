@@ -424,7 +424,7 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
   return JsonToPython(report::BodyRegionTrajectoryJson(check ? *check : optim::BodyRegionTrajectoryCheck{},
                                                        iso, scene,
                                                        head_summary, optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head()),
-                                                       warnings));
+                                                       optim::JudgedRule(options).safety_factor, warnings));
 }
 
 /// covopt.sweep(x, y, scene=..., body_region=...): one region's verdict over the grid

@@ -16,6 +16,7 @@
 #include "covopt/report/charts.hpp"
 #include "covopt/report/html_report.hpp"
 #include "covopt/report/provenance.hpp"
+#include "covopt/report/summary_json.hpp"
 #include "report_charts.hpp"
 #include "scene_keywords.hpp"
 
@@ -58,6 +59,14 @@ void BindReport(py::module_& m) {
   m.def("provenance", &Provenance, py::arg("command"), py::arg("inputs"));
   py::class_<ReportCharts>(m, "_ReportCharts", "The charts of a result's report, drawn when to_html asks.");
   m.def("html_report", &HtmlReport, py::arg("kind"), py::arg("result_json"), py::arg("charts") = py::none());
+  // The result summary of a result's JSON text, as the CLI prints it (report::SummaryText), and
+  // its first line (Python's repr); ValueError when the result has no "summary".
+  m.def("summary_text", [](const std::string& result_json) {
+    return report::SummaryText(report::SummaryFromJson(result_json));
+  }, py::arg("result_json"));
+  m.def("summary_headline", [](const std::string& result_json) {
+    return report::SummaryHeadline(report::SummaryFromJson(result_json));
+  }, py::arg("result_json"));
 }
 
 }  // namespace covopt::python

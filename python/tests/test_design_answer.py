@@ -27,7 +27,7 @@ def test_no_material_works_and_the_nearest_changes_are_named():
     r = call(covopt.optimize, materials=[BAND, VN600], speed=3.0)
     assert r["recommendation"] is None
     assert r["material_range"] is None
-    assert "No catalog material works for this scene; nearest changes for" in r["summary"]
+    assert "No catalog material works for this scene; nearest changes for" in r["message"]
     n = r["nearest_changes"]
     assert n["material"] in (BAND, VN600)
     assert n["at_thickness_m"] == r["design_space"]["max_thickness_m"]

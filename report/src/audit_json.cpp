@@ -9,7 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "covopt/optim/body_region_check.hpp"
+#include "covopt/audit/summary.hpp"
 #include "json_number.hpp"
+#include "summary_object.hpp"
 
 namespace covopt::report {
 namespace {
@@ -150,6 +152,7 @@ std::string AuditJson(const audit::AuditSetup& setup, const audit::AuditResult& 
   ordered_json j;
   j["status"] = optim::ToString(result.status);
   j["message"] = result.message;
+  j["summary"] = internal::SummaryObject(audit::SummarizeAudit(setup, result));
   j["safe_speed_scale"] = internal::Number(result.safe_speed_scale);
   if (result.limiting_cell && *result.limiting_cell < result.cells.size()) {
     const audit::AuditCell& cell = result.cells[*result.limiting_cell];

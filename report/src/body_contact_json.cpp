@@ -2,14 +2,19 @@
 // and optimize with --body-region).
 #include "covopt/report/body_contact_json.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include <covopt/core/number_format.hpp>
 #include <nlohmann/json.hpp>
 
+#include "covopt/optim/summaries.hpp"
+#include "covopt/report/summary_json.hpp"
 #include "json_number.hpp"
+#include "summary_object.hpp"
 #include "verdict_object.hpp"
 
 namespace covopt::report {
@@ -133,6 +138,56 @@ std::optional<double> SpeedOrNone(optim::SpeedLimitStatus status, double speed) 
 
 std::string Cell(const std::optional<double>& value) { return value ? FormatShortest(*value) : std::string(); }
 
+std::string RegionName(const BodyRegionTableRow& row) {
+  return row.area.empty() ? row.region : row.region + " (" + row.area + ")";
+}
+
+/// One table row's limit: the covered one when there is a covering, else the bare one (the
+/// row's own answer, mapped; nothing is judged here).
+LimitRow TableLimit(const BodyRegionTableRow& row) {
+  const bool covered = row.has_covering;
+  const std::string& status = covered ? row.covered_status : row.bare_status;
+  const std::optional<double>& speed = covered ? row.covered_max_speed_m_per_s : row.bare_max_speed_m_per_s;
+  LimitRow limit{.target = RegionName(row) + (row.material.empty() ? "" : ", " + row.material) + ", robot mass " +
+                           (std::isinf(row.robot_mass_kg) ? std::string("fixed") : FormatSignificant(row.robot_mass_kg, 4) + " kg"),
+                 .quantity = "max safe speed",
+                 .unit = "m/s",
+                 .value = speed.value_or(0.0),
+                 .binding_criterion = covered ? row.covered_limited_by : row.bare_limited_by,
+                 .law = covered ? row.covering_law : std::string("bare"),
+                 .validity = covered ? (row.within_law ? std::string("within") : row.validity_note) : std::string(),
+                 .note = ""};
+  if (status == optim::ToString(optim::SpeedLimitStatus::kSafeUpToSearchLimit)) {
+    limit.value = std::numeric_limits<double>::infinity();
+    limit.binding_criterion.clear();
+    limit.note = "not limited below the search limit";
+  } else if (status == optim::ToString(optim::SpeedLimitStatus::kNoSafeValue)) {
+    limit.note = "no safe value";
+  } else if (status == optim::ToString(optim::SpeedLimitStatus::kEvaluationFailed)) {
+    limit.value = std::numeric_limits<double>::quiet_NaN();
+    limit.note = "not evaluated";
+  }
+  return limit;
+}
+
+/// The limits summary of the all-regions table: one limit row per table row; the lowest governs.
+ResultSummary TableSummary(std::span<const BodyRegionTableRow> rows, double safety_factor) {
+  ResultSummary s;
+  s.kind = ResultSummary::Kind::kLimits;
+  s.command = "speed-limit --body-region";
+  s.safety_factor = safety_factor;
+  for (const BodyRegionTableRow& row : rows) {
+    s.limits.push_back(TableLimit(row));
+    s.evaluated = s.evaluated && !std::isnan(s.limits.back().value);
+    if (std::find(s.targets.begin(), s.targets.end(), RegionName(row)) == s.targets.end()) s.targets.push_back(RegionName(row));
+    if (std::find(s.scope.begin(), s.scope.end(), row.criteria) == s.scope.end()) s.scope.push_back(row.criteria);
+  }
+  s.Finish();
+  s.robot.speed_m_per_s = std::numeric_limits<double>::quiet_NaN();
+  s.robot.reflected_mass_kg = std::numeric_limits<double>::quiet_NaN();
+  return s;
+}
+
 }  // namespace
 
 std::vector<std::string> TimePathWarnings(const optim::BodyRegionJudgement& judgement,
@@ -177,6 +232,9 @@ std::string BodyContactSimulationJson(const BodyContactScene& scene, const std::
     j["head"] = nullptr;
   }
   j["safe"] = safe;
+  const std::optional<ResultSummary> head = head_json ? std::optional(SummaryFromJson(*head_json)) : std::nullopt;
+  j["summary"] = internal::SummaryObject(
+      optim::SummarizeBodyContact(scene, material.value_or(std::string()), regions, head ? &*head : nullptr));
   j["warnings"] = Strings(warnings);
   return j.dump(2);
 }
@@ -271,6 +329,14 @@ std::string BodyRegionSpeedLimitJson(const BodyContactScene& scene, const std::o
   j["safety_factor"] = Number(safety_factor);
   j["rows"] = ordered_json::array();
   for (const BodyRegionTableRow& row : rows) j["rows"].push_back(TableRowObject(row));
+  ResultSummary summary = TableSummary(rows, safety_factor);
+  summary.covering = CoveringSummary{.present = scene.has_covering(),
+                                     .material = material.value_or(std::string()),
+                                     .thickness_m = scene.covering.thickness_m,
+                                     .law = rows.empty() ? std::string() : rows.front().covering_law,
+                                     .validity = "",
+                                     .validity_ratio = std::numeric_limits<double>::quiet_NaN()};
+  j["summary"] = internal::SummaryObject(summary);
   j["warnings"] = Strings(warnings);
   return j.dump(2);
 }
@@ -296,6 +362,7 @@ std::string BodyRegionDesignJson(const optim::BodyRegionDesignRequest& request,
   };
   ordered_json j;
   j["message"] = result.message;
+  j["summary"] = internal::SummaryObject(optim::SummarizeBodyRegionDesign(request, result));
   j["speed_m_per_s"] = Number(request.scene.speed_m_per_s);
   j["scene"] = SceneObject(request.scene, std::nullopt, false);
   j["safety_factor"] = Number(sf);
@@ -320,10 +387,11 @@ std::string BodyRegionDesignJson(const optim::BodyRegionDesignRequest& request,
 std::string BodyRegionTrajectoryJson(const optim::BodyRegionTrajectoryCheck& check,
                                      std::span<const materials::BodyLimits> regions, const BodyContactScene& scene,
                                      const std::optional<HeadTrajectorySummary>& head, std::string_view criterion,
-                                     std::span<const std::string> warnings) {
+                                     double safety_factor, std::span<const std::string> warnings) {
   ordered_json j;
   j["status"] = optim::ToString(check.status);
   j["message"] = check.message;
+  j["summary"] = internal::SummaryObject(optim::SummarizeBodyRegionTrajectory(check, regions, scene, safety_factor));
   j["safe_speed_scale"] = Number(check.safe_speed_scale);
   j["worst_sample"] = check.worst_sample ? ordered_json(*check.worst_sample) : ordered_json(nullptr);
   j["unsafe_sample_count"] = check.unsafe_sample_count;

@@ -6,10 +6,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "covopt/optim/summaries.hpp"
 #include "covopt/report/simulation_json.hpp"
 #include "design_answer_json.hpp"
 #include "limits_json.hpp"
 #include "oracle_json.hpp"
+#include "summary_object.hpp"
 
 namespace covopt::report {
 namespace {
@@ -84,7 +86,8 @@ std::string DesignJson(const optim::DesignRequest& request, const optim::DesignR
   j["problem"] = optim::ToString(result.problem);
   j["criterion"] = internal::CriterionJson(rule);
   j["verdict"] = optim::ToString(verdict);
-  j["summary"] = headline;
+  j["message"] = headline;
+  j["summary"] = internal::SummaryObject(optim::SummarizeDesign(request, result));
   j["scope"] = result.scope;
   if (recommended) {
     j["recommendation"] = CandidateJson(*recommended, rule);

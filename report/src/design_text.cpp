@@ -8,9 +8,11 @@
 #include <fmt/ostream.h>
 
 #include "covopt/core/verdict.hpp"
+#include "covopt/optim/summaries.hpp"
 #include "covopt/report/design_answer_text.hpp"
 #include "covopt/report/robust_text.hpp"
 #include "covopt/report/scene_headline.hpp"
+#include "covopt/report/summary_json.hpp"
 
 namespace covopt::report {
 namespace {
@@ -358,6 +360,7 @@ void PrintDesign(std::ostream& out, const DesignText& r, const optim::DesignResu
                  ? " (--allow-full-compression for the paper's criterion, --allow-crushing for a sacrificial liner)"
                  : "");
   fmt::print(out, "\n{}\n", result.message);
+  fmt::print(out, "\nVerdict\n{}\n", SummaryText(optim::SummarizeDesign(r.request, result), 2));
   if (result.recommendation) PrintRecommendation(out, r, result);
   PrintDesignAnswer(out, result, r.runners_up);  // the range checked, or the nearest changes
   PrintBareAndContinuous(out, r, result);

@@ -8,8 +8,10 @@
 #include <nlohmann/json.hpp>
 
 #include "covopt/core/quantity.hpp"
+#include "covopt/optim/robust_summary.hpp"
 #include "json_number.hpp"
 #include "limits_json.hpp"
+#include "summary_object.hpp"
 
 namespace covopt::report {
 namespace {
@@ -234,7 +236,8 @@ std::string RobustDesignJson(const optim::UncertaintyBox& box, const optim::Robu
   } else {
     summary = "no catalog material is admissible for every value in the box within the maximum thickness";
   }
-  j["summary"] = summary;
+  j["message"] = summary;
+  j["summary"] = internal::SummaryObject(optim::SummarizeRobustDesign(options, result, box.nominal().head.area));
   j["uncertain_inputs"] = InputsJson(box);
   j["recommendation"] = rec;
   j["worst_case"] = setting;
@@ -290,6 +293,7 @@ std::string ProbabilityDesignJson(const optim::UncertaintyBox& box, const optim:
   j["criterion"] = internal::CriterionJson(options.design.rule());
   j["scope"] = optim::HeadVerdictScope(options.design.rule());
   j["verdict"] = optim::ToString(result.verdict);
+  j["summary"] = internal::SummaryObject(optim::SummarizeProbabilityDesign(options, result, box.nominal().head.area));
   ordered_json rec = nullptr;
   if (result.recommendation) {
     const optim::ProbabilityCandidate& c = result.candidates[*result.recommendation];
@@ -298,9 +302,9 @@ std::string ProbabilityDesignJson(const optim::UncertaintyBox& box, const optim:
     rec["min_thickness_m"] = Number(c.min_thickness_m);
     rec["injury_probability"] = ProbabilityJson(c.at_design);
     rec["sampling_error"] = half_width(c.at_design);
-    j["summary"] = "covering with P(inadmissible) <= max_probability: " + c.material.name;
+    j["message"] = "covering with P(inadmissible) <= max_probability: " + c.material.name;
   } else {
-    j["summary"] = result.verdict == optim::DesignVerdict::kBareRobotSafe
+    j["message"] = result.verdict == optim::DesignVerdict::kBareRobotSafe
                        ? "no covering needed: the bare robot meets the probability target"
                        : "no catalog material meets the probability target within the maximum thickness";
   }

@@ -7,7 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "covopt/core/impact_model.hpp"
+#include "covopt/core/result_summary.hpp"
 #include "json_number.hpp"
+#include "summary_object.hpp"
 #include "verdict_object.hpp"
 
 namespace covopt::report {
@@ -125,6 +127,8 @@ std::string SimulationJson(const SimulationReport& report, int indent) {
   j["crush"] = CriterionObject(v.Find("crush"), "_Pa", v.safety_factor);
   j["safe"] = report.safe();
   j["verdict"] = internal::VerdictObject(v);
+  j["summary"] = internal::SummaryObject(
+      SummarizeImpact(report.scene, r, v, report.covering_material.value_or(std::string())));
   j["scope"] = v.scope;
   j["method"] = ToString(r.method);
 

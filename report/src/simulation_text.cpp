@@ -12,6 +12,8 @@
 #include "covopt/core/impact_model.hpp"
 #include "covopt/core/quantity.hpp"
 #include "covopt/core/time_integration.hpp"
+#include "covopt/core/result_summary.hpp"
+#include "covopt/report/summary_json.hpp"
 #include "covopt/report/verdict_text.hpp"
 
 namespace covopt::report {
@@ -148,8 +150,14 @@ void PrintMethod(std::ostream& out, const SimulationReport& report) {
 void PrintTable(std::ostream& out, const SimulationReport& report) {
   PrintScene(out, report);
   PrintPeaks(out, report);
-  fmt::print(out, "\nVerdicts\n");
-  for (const std::string& line : VerdictLines(report.verdict)) fmt::print(out, "{}\n", line);
+  const ResultSummary summary = SummarizeImpact(report.scene, report.result, report.verdict,
+                                                report.covering_material.value_or(std::string()));
+  // The summary, then each criterion in detail (VerdictLines without its overall line, which
+  // the summary's first line replaces).
+  fmt::print(out, "\nVerdict\n{}", SummaryText(summary, 2, false));
+  std::vector<std::string> lines = VerdictLines(report.verdict);
+  lines.pop_back();
+  for (const std::string& line : lines) fmt::print(out, "{}\n", line);
   PrintMethod(out, report);
   const ImpactResult& r = report.result;
   if (!report.verdict.scope.empty()) {

@@ -10,9 +10,11 @@
 #include <covopt/core/number_format.hpp>
 #include <nlohmann/json.hpp>
 
+#include "covopt/optim/summaries.hpp"
 #include "covopt/report/simulation_json.hpp"
 #include "json_number.hpp"
 #include "limits_json.hpp"
+#include "summary_object.hpp"
 #include "oracle_json.hpp"
 
 namespace covopt::report {
@@ -150,6 +152,7 @@ std::string SpeedLimitJson(SpeedLimitQuantity quantity, const Scene& scene, cons
     list.push_back(std::move(r));
   }
   j["rows"] = list;
+  j["summary"] = internal::SummaryObject(optim::SummarizeSpeedLimits(quantity, scene, options, rows));
 
   ordered_json shown = ordered_json::parse(SceneJson(scene));
   const bool by_speed = quantity == SpeedLimitQuantity::kSpeed;

@@ -1,5 +1,6 @@
 #include "covopt/report/summary_json.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 #include "covopt/core/number_format.hpp"
 #include "criterion_display.hpp"
 #include "json_number.hpp"
+#include "summary_object.hpp"
 
 namespace covopt::report {
 namespace {
@@ -173,7 +175,7 @@ RobotSummary RobotFrom(const Json& o) {
 }
 
 /// The "summary" object of a result, or the object itself when it is a summary.
-const Json& SummaryObject(const Json& root) {
+const Json& FindSummary(const Json& root) {
   if (root.is_object()) {
     const auto it = root.find("summary");
     if (it != root.end() && it->is_object()) return *it;
@@ -246,6 +248,8 @@ std::string RowLine(const SummaryRow& r, double safety_factor) {
   return line;
 }
 
+std::string SummaryLines(const ResultSummary& s, bool rows);
+
 std::string LimitLine(const LimitRow& r) {
   std::string value = std::isinf(r.value) ? std::string("not limited")
                       : r.value > 0.0     ? fmt::format("{:.4g} {}", r.value, r.unit)
@@ -260,12 +264,14 @@ std::string LimitLine(const LimitRow& r) {
 
 }  // namespace
 
-std::string SummaryJson(const ResultSummary& s) {
+namespace internal {
+
+Json SummaryObject(const ResultSummary& s) {
   Json rows = Json::array();
   for (const SummaryRow& r : s.rows) rows.push_back(RowObject(r));
   Json limits = Json::array();
   for (const LimitRow& r : s.limits) limits.push_back(LimitObject(r));
-  const Json object = {
+  return {
       {"kind", s.kind == ResultSummary::Kind::kVerdict ? "verdict" : "limits"},
       {"command", s.command},
       {"evaluated", s.evaluated},
@@ -284,13 +290,16 @@ std::string SummaryJson(const ResultSummary& s) {
       {"robot", RobotObject(s.robot)},
       {"rows", std::move(rows)},
       {"limits", std::move(limits)}};
-  return object.dump();
 }
+
+}  // namespace internal
+
+std::string SummaryJson(const ResultSummary& summary) { return internal::SummaryObject(summary).dump(); }
 
 ResultSummary SummaryFromJson(const std::string& result_json) {
   const Json root = Json::parse(result_json, nullptr, false);
   if (root.is_discarded()) throw std::invalid_argument("result summary: the result is not JSON");
-  const Json& o = SummaryObject(root);
+  const Json& o = FindSummary(root);
   constexpr std::string_view w = "the summary";
   ResultSummary s;
   const std::string kind = Text(o, "kind", w);
@@ -321,19 +330,44 @@ ResultSummary SummaryFromJson(const std::string& result_json) {
   return s;
 }
 
-std::string SummaryText(const ResultSummary& s) {
+std::string SummaryText(const ResultSummary& s, int indent, bool rows) {
+  const std::string pad(static_cast<std::size_t>(std::max(indent, 0)), ' ');
+  std::string indented;
+  std::size_t start = 0;
+  const std::string text = SummaryLines(s, rows);
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    indented += pad + text.substr(start, end - start + 1);
+    start = end + 1;
+  }
+  return indented;
+}
+
+std::string SummaryHeadline(const ResultSummary& summary) { return HeadLine(summary); }
+
+namespace {
+
+std::string SummaryLines(const ResultSummary& s, bool rows) {
   std::string text = HeadLine(s) + "\n";
   if (s.kind == ResultSummary::Kind::kVerdict && !s.governing_case.empty()) {
     text += "governing case: " + s.governing_case + "\n";
   }
   text += CoveringLine(s.covering) + "\n";
   text += RobotLine(s.robot) + "\n";
+  if (!s.standards.empty()) {
+    std::string joined;
+    for (const std::string& standard : s.standards) joined += (joined.empty() ? "" : "; ") + standard;
+    text += "judged against: " + joined + "\n";
+  }
   if (s.kind == ResultSummary::Kind::kVerdict && s.safety_factor != 1.0) {
     text += fmt::format("safety factor {:g}\n", s.safety_factor);
   }
+  if (!rows) return text;
   for (const SummaryRow& r : s.rows) text += RowLine(r, s.safety_factor) + "\n";
   for (const LimitRow& r : s.limits) text += LimitLine(r) + "\n";
   return text;
 }
+
+}  // namespace
 
 }  // namespace covopt::report

@@ -8,9 +8,11 @@
 #include <covopt/core/number_format.hpp>
 #include <nlohmann/json.hpp>
 
+#include "covopt/optim/summaries.hpp"
 #include "covopt/report/simulation_json.hpp"
 #include "json_number.hpp"
 #include "limits_json.hpp"
+#include "summary_object.hpp"
 
 namespace covopt::report {
 namespace {
@@ -71,6 +73,9 @@ std::string TrajectoryCheckJson(const optim::TrajectoryCheck& check, const robot
   ordered_json j;
   j["status"] = optim::ToString(check.status);
   j["message"] = check.message;
+  ResultSummary summary = optim::SummarizeTrajectory(check, scene, covering_material.value_or(std::string()));
+  summary.robot.joints = motion.joint_names;
+  j["summary"] = internal::SummaryObject(summary);
   j["safe_speed_scale"] = check.status == optim::TrajectoryCheckStatus::kEvaluationFailed
                               ? ordered_json(nullptr)  // no verdict
                               : internal::Number(check.safe_speed_scale);  // +inf (at rest): null

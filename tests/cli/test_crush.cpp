@@ -88,7 +88,7 @@ TEST_CASE("optimize's default recommendation does not crush, and every candidate
   // Unknown strengths: refused, then admitted with a warning.
   const json unknown = JsonRun({"optimize", "--json", "--material", "polystyrene foam 27.6"});
   CHECK(unknown["recommendation"].is_null());
-  CHECK_THAT(unknown["summary"].get<std::string>(), Catch::Contains("--allow-unknown-strength"));
+  CHECK_THAT(unknown["message"].get<std::string>(), Catch::Contains("--allow-unknown-strength"));
   const json allowed =
       JsonRun({"optimize", "--json", "--material", "polystyrene foam 27.6", "--allow-unknown-strength"});
   REQUIRE(allowed["recommendation"].is_object());

@@ -46,7 +46,7 @@ TEST_CASE("optimize says plainly when no material works, with the nearest change
   const json j = json::parse(run.out);
   CHECK(j["recommendation"].is_null());
   CHECK(j["material_range"].is_null());
-  CHECK(j["summary"].get<std::string>().find(" No catalog material works for this scene; nearest changes for ") !=
+  CHECK(j["message"].get<std::string>().find(" No catalog material works for this scene; nearest changes for ") !=
         std::string::npos);
   const json& n = j["nearest_changes"];
   REQUIRE(n.is_object());

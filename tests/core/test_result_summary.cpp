@@ -119,3 +119,17 @@ TEST_CASE("ResultSummary: a table of limits is LIMITS, UNSAFE when a case has no
   CHECK_FALSE(s.safe);
   CHECK(s.state == VerdictState::kUnsafe);
 }
+
+TEST_CASE("ResultSummary: the case with the lowest limit governs a table", "[summary]") {
+  ResultSummary s;
+  s.kind = ResultSummary::Kind::kLimits;
+  s.limits.push_back({.target = "5 kg", .quantity = "max safe speed", .unit = "m/s", .value = 0.8,
+                      .binding_criterion = "contusion", .law = "foam", .validity = "within", .note = ""});
+  s.limits.push_back({.target = "20 kg", .quantity = "max safe speed", .unit = "m/s", .value = 0.4,
+                      .binding_criterion = "laceration", .law = "foam", .validity = "within", .note = ""});
+  s.Finish();
+  CHECK(s.governing_target == "20 kg");
+  CHECK(s.governing_criterion == "laceration");
+  CHECK(s.governing_case == "the lowest max safe speed: 0.4 m/s");
+  CHECK(std::isnan(s.margin));
+}

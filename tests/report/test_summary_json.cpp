@@ -226,4 +226,13 @@ TEST_CASE("SummaryText: the state word with margin and threshold, then the gover
   CHECK(text.back() == '\n');
   s.covering = {};
   CHECK(covopt::report::SummaryText(s).find("covering: none (bare robot)") != std::string::npos);
+  // The first line alone; every line indented; the rows left out on request.
+  CHECK(covopt::report::SummaryHeadline(s) == "MARGINAL, margin 0.2 % < 10.0 %: head (frontal) contusion ratio 0.998");
+  const std::string indented = covopt::report::SummaryText(s, 2);
+  CHECK(indented.rfind("  MARGINAL, margin", 0) == 0);
+  CHECK(indented.find("\n  judged against: Park et al. 2011\n") != std::string::npos);
+  CHECK(indented.find("\n    head (frontal) contusion: ") != std::string::npos);
+  const std::string without_rows = covopt::report::SummaryText(s, 0, false);
+  CHECK(without_rows.find("contusion: ") == std::string::npos);
+  CHECK(without_rows.rfind("MARGINAL, margin", 0) == 0);
 }

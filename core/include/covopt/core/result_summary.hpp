@@ -17,6 +17,8 @@
 #include <string_view>
 #include <vector>
 
+#include "covopt/core/compressive_curve.hpp"
+#include "covopt/core/head_area.hpp"
 #include "covopt/core/verdict.hpp"
 
 namespace covopt {
@@ -128,10 +130,33 @@ struct ResultSummary {
                   std::string_view validity);
   /// Marks the binding row (the counted row with the largest ratio; the first on a tie), sets
   /// governing_*, margin, safe (evaluated and every counted row passed) and state from the rows
-  /// (kVerdict), or safe and state from the limit rows (kLimits: unsafe when a row's value is 0).
+  /// (kVerdict), or safe and state from the limit rows (kLimits: unsafe when a row's value is 0;
+  /// the case with the lowest value governs: governing_target, _criterion and _case).
   /// Call once after the rows are in (a builder may then narrow `safe`, e.g. optimize without a
   /// recommendation, and must then set `state` again with VerdictStateOf).
   void Finish();
 };
+
+// ---- The pieces every builder shares, and the impact's (simulate's) summary -----------------
+// The builders of the other results live beside them: optim/summaries.hpp, audit/summary.hpp.
+
+struct Scene;
+struct ImpactResult;
+struct CoveringValidity;
+
+/// The head as a target: "head (frontal)".
+std::string HeadTarget(HeadArea area);
+/// The law's word in a row: "bare" without a covering, else ToString(law) ("foam", "hertz").
+std::string LawWord(bool covered, CoveringLaw law);
+/// The validity's words in a row: "" without a covering, "within", else the validity's note.
+std::string ValidityWords(bool covered, const CoveringValidity& validity);
+/// The covering of a verdict: absent when `thickness_m` is 0; `material` "" when given by its modulus.
+CoveringSummary SummarizeCovering(double thickness_m, std::string_view material, CoveringLaw law,
+                                  const CoveringValidity& validity);
+
+/// The summary of one head impact (`simulate`): the head's rows at the scene's robot mass and
+/// speed, with the covering of the scene (its catalog `material`, "" if none).
+ResultSummary SummarizeImpact(const Scene& scene, const ImpactResult& result, const Verdict& verdict,
+                              std::string_view material);
 
 }  // namespace covopt

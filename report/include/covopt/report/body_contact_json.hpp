@@ -55,7 +55,7 @@ std::vector<HistoryColumn> BodyContactHistoryColumns(std::span<const BodyContact
 
 /// `simulate --body-region`: {scene (BodyContactSceneJson), safety_factor, regions
 /// [BodyRegionJudgementJson...], head (the head's simulation object, `head_json`, or null),
-/// safe (every verdict), warnings}.
+/// safe (every verdict), summary (every region's rows, then the head's), warnings}.
 std::string BodyContactSimulationJson(const BodyContactScene& scene, const std::optional<std::string>& material,
                                       std::span<const optim::BodyRegionJudgement> regions, double safety_factor,
                                       const std::optional<std::string>& head_json,
@@ -107,7 +107,7 @@ std::span<const std::string_view> BodyRegionTableColumns() noexcept;
 /// One row's cells (shortest round-trip numbers, "fixed", "" for null).
 std::vector<std::string> BodyRegionTableCsvCells(const BodyRegionTableRow& row);
 
-/// `speed-limit --body-region`: {solve_for "speed", scene (without the robot's mass and speed), criterion (in words),
+/// `speed-limit --body-region`: {solve_for "speed", summary (one limit row per row), scene (without the robot's mass and speed), criterion (in words),
 /// safety_factor, rows [BodyRegionTableColumns keys, plus bare_status, covered_status],
 /// warnings}.
 std::string BodyRegionSpeedLimitJson(const BodyContactScene& scene, const std::optional<std::string>& material,
@@ -115,7 +115,7 @@ std::string BodyRegionSpeedLimitJson(const BodyContactScene& scene, const std::o
                                      std::span<const BodyRegionTableRow> rows,
                                      std::span<const std::string> warnings);
 
-/// `optimize --body-region --speed V`: {message, speed_m_per_s, recommendation (the
+/// `optimize --body-region --speed V`: {message, summary, speed_m_per_s, recommendation (the
 /// candidate, or null), bare_robot {safe, regions [...], head}, candidates [{material,
 /// youngs_modulus_Pa, thickness_m (null: none in range), admissible, governing_ratio,
 /// governing_where, regions [...], head}], scope, warnings}. A head score is {laceration_ratio,
@@ -124,7 +124,7 @@ std::string BodyRegionDesignJson(const optim::BodyRegionDesignRequest& request,
                                  const optim::BodyRegionDesignResult& result, std::string_view criterion,
                                  std::span<const std::string> warnings);
 
-/// `robot --trajectory --body-region`: {status, message, safe_speed_scale (null at rest),
+/// `robot --trajectory --body-region`: {status, message, summary (the regions'), safe_speed_scale (null at rest),
 /// worst_sample (index or null), unsafe_sample_count, criterion, scene (without the robot's mass
 /// and speed), regions [{region, area, contact, scope}], head ({status, safe_speed_scale,
 /// message} of the head's own check, or null), samples [{time_s, speed_m_per_s,
@@ -135,9 +135,10 @@ struct HeadTrajectorySummary {
   double safe_speed_scale = 0.0;
   std::string message;
 };
+/// `safety_factor`: the rule's (the samples' ratios are unscaled).
 std::string BodyRegionTrajectoryJson(const optim::BodyRegionTrajectoryCheck& check,
                                      std::span<const materials::BodyLimits> regions, const BodyContactScene& scene,
                                      const std::optional<HeadTrajectorySummary>& head, std::string_view criterion,
-                                     std::span<const std::string> warnings);
+                                     double safety_factor, std::span<const std::string> warnings);
 
 }  // namespace covopt::report

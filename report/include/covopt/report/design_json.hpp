@@ -11,7 +11,8 @@
 
 namespace covopt::report {
 
-/// The request's answer as one JSON object: problem, criterion, verdict, summary,
+/// The request's answer as one JSON object: problem, criterion, verdict, message (one sentence),
+/// summary (the result summary, summary_json.hpp),
 /// recommendation (null when none), continuous_optimum, bare_robot, candidates, solver
 /// (termination, evaluations, seconds, global / bracket / local stage reports),
 /// safety_factor, limits (and the derated ones), design_space, thickness_m (problem b),

@@ -45,7 +45,7 @@ std::string UncertainSimulationJson(const SimulationReport& impact, const optim:
                                     const optim::ElasticityTable* sensitivities, int indent = 2);
 
 /// What `covopt optimize` prints with ranges: {problem "robust-thinnest", criterion, verdict,
-/// summary, uncertain_inputs, recommendation (null when none: material, family, thickness_m,
+/// message, uncertain_inputs, recommendation (null when none: material, family, thickness_m,
 /// min_safe_thickness_m, youngs_modulus_Pa, poisson_ratio, laceration_ratio, contusion_ratio,
 /// margin, worst_case (at the recommended thickness), worst_case_at_thinnest),
 /// worst_case (the recommendation's worst case at its thinnest admissible thickness: what sets
@@ -60,7 +60,7 @@ std::string RobustDesignJson(const optim::UncertaintyBox& box, const optim::Robu
                              std::span<const std::string> warnings = {}, int indent = 2);
 
 /// What `covopt optimize --max-injury-probability P` prints: {problem "probability",
-/// criterion, verdict, summary, max_probability, samples, seed, uncertain_inputs,
+/// criterion, verdict, message, max_probability, samples, seed, uncertain_inputs,
 /// recommendation (null when none: material, family, thickness_m, min_thickness_m,
 /// youngs_modulus_Pa, poisson_ratio, injury_probability, sampling_error (half the width of
 /// the inadmissible CI)), continuous_optimum, bare_robot (injury_probability), candidates,

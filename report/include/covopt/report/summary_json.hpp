@@ -41,7 +41,13 @@ ResultSummary SummaryFromJson(const std::string& result_json);
 /// The summary as the CLI's text prints it: the state word with the margin and the threshold,
 /// the governing case, the covering, then one line per row (target, criterion, value, limit,
 /// derated limit, ratio, margin, binding mark) in the units the CLI uses (MPa, J/cm², N, mm).
-/// Ends with a line break.
-std::string SummaryText(const ResultSummary& summary);
+/// Ends with a line break. `indent` spaces start every line; without `rows` the row and limit
+/// lines are left out (for a text that prints each criterion in its own detail after it).
+std::string SummaryText(const ResultSummary& summary, int indent = 0, bool rows = true);
+
+/// The first line of SummaryText, without its line break: the state word with the margin and
+/// the threshold and the governing row, e.g. "MARGINAL, margin 0.2 % < 10.0 %: head (frontal)
+/// contusion ratio 0.998" (Python's repr of a result; the speed-limit table's verdict line).
+std::string SummaryHeadline(const ResultSummary& summary);
 
 }  // namespace covopt::report
