@@ -89,7 +89,7 @@ std::size_t GroupOf(const Leaf& leaf) {
   const auto any = [&](std::initializer_list<std::string_view> words) {
     return std::any_of(words.begin(), words.end(), [&](std::string_view w) { return text.find(w) != std::string::npos; });
   };
-  if (any({"limits", "safety_factor", "max_probability", "criterion"})) return 3;
+  if (any({"limits", "limit_", "safety_factor", "max_probability", "criterion"})) return 3;
   if (any({"solve_for", "search_limit", "samples", "seed", "solver", "model.", "tolerance"})) return 4;
   if (any({"covering", "design_space", "material", "thickness_m"}) && !any({"scalp"})) return 1;
   if (any({"head", "scalp", "skull", "neck", "torso", "region", "body", "contact_area", "human"})) return 2;
@@ -130,6 +130,26 @@ void WriteInputs(std::string& out, const Json& j, ReportKind kind) {
     if (const Json* v = Find(j, key)) Flatten(*v, std::string(key), key == "scene" ? "" : Words(key), UnitOfKey(key), leaves);
   }
   const Json* sources = Find(j, "input_sources");
+  // An input the result records a source for is an input, wherever its value sits (simulate's
+  // safety factor and limits live in its verdict objects: laceration.limit_Pa).
+  if (sources && sources->is_object()) {
+    for (const auto& [path, source] : sources->items()) {
+      const bool listed = std::any_of(leaves.begin(), leaves.end(), [&](const Leaf& l) { return l.path == path; });
+      const std::size_t dot = path.rfind('.');
+      const std::string key = dot == std::string::npos ? path : path.substr(dot + 1);
+      const Json* value = &j;
+      for (std::size_t from = 0; value && from <= path.size();) {
+        const std::size_t to = std::min(path.find('.', from), path.size());
+        value = Find(*value, path.substr(from, to - from));
+        from = to + 1;
+      }
+      if (!listed && value && !value->is_structured()) {
+        std::string quantity = path.substr(0, dot == std::string::npos ? 0 : dot) + " " + Words(key);
+        std::replace(quantity.begin(), quantity.end(), '.', ' ');
+        leaves.push_back({path, quantity, value, UnitOfKey(key)});
+      }
+    }
+  }
   out += "<p>Values in the units the command line uses; each cell keeps the SI value of the JSON. Source: where the "
          "value came from (a flag, a scene file, the catalog, a default); — where the result does not say. A mass "
          "or radius of \"fixed\" or \"flat\" is infinite.</p>\n";

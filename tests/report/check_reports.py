@@ -478,7 +478,17 @@ def check_page_one(failures, by_id, page_one, elements, expected):
                 failures.append("#governing-case lacks the governing %s %r" % (key, governing[key]))
     if "judged" in text:
         for what in ("targets", "standards"):
-            for item in summary[what] or []:
+            items = list(summary[what] or [])
+            # A long list of targets (an audit's 29 regions) is cut on page 1: the first ones,
+            # then "and N more"; the N left out must be the rest of the summary's list.
+            more = re.search(r"and (\d+) more", text["judged"]) if what == "targets" else None
+            if more:
+                left_out = int(more.group(1))
+                if not 0 < left_out < len(items):
+                    failures.append("#judged says %d more of %d targets" % (left_out, len(items)))
+                    left_out = 0
+                items = items[:len(items) - left_out]
+            for item in items:
                 if not holds(text["judged"], item):
                     failures.append("#judged lacks the %s %r" % (what[:-1], item))
     covering = summary["covering"]
@@ -1284,8 +1294,9 @@ def check_without_browser(covopt, scratch, arguments):
     bin_dir = os.path.join(scratch, "bin-without-browser")
     os.makedirs(bin_dir, exist_ok=True)
     gnuplot = shutil.which("gnuplot")
-    if gnuplot:  # the charts still need gnuplot
-        os.symlink(gnuplot, os.path.join(bin_dir, "gnuplot"))
+    link = os.path.join(bin_dir, "gnuplot")
+    if gnuplot and not os.path.lexists(link):  # the charts still need gnuplot (--keep reuses the folder)
+        os.symlink(gnuplot, link)
     env = {k: v for k, v in os.environ.items() if k != "COVOPT_CHROMIUM"}
     env["PATH"] = bin_dir
     pdf = os.path.join(scratch, "no-browser.pdf")
