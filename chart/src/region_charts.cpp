@@ -263,10 +263,12 @@ GnuplotChart AuditRegionMap(const audit::AuditResult& result, double safety_fact
                                                     "governing ratio per link and region, worst over the motion "
                                                     "(safe: ratio <= 1/SF = {:.3g})",
                                                     at_limit)));
-  std::string map = "$map << EOD\n";
+  std::string map = "$region_map << EOD\n";
   // The values written in the cells: white on the dark ends of the scale, black between.
-  std::string dark = "$dark << EOD\n";
-  std::string light = "$light << EOD\n";
+  std::string dark = "$region_dark << EOD\n";
+  std::string light = "$region_light << EOD\n";
+  std::size_t dark_count = 0;
+  std::size_t light_count = 0;
   for (std::size_t l = 0; l < links; ++l) {
     for (std::size_t r = 0; r < regions; ++r) {
       const double ratio = result.cell(l, r).governing_ratio;
@@ -276,10 +278,11 @@ GnuplotChart AuditRegionMap(const audit::AuditResult& result, double safety_fact
       const bool on_dark = shown >= 1.4 * at_limit || shown <= 0.3 * at_limit;
       (on_dark ? dark : light) +=
           fmt::format("{} {} \"{}\"\n", r, l, std::isfinite(ratio) ? fmt::format("{:.2f}", ratio) : "inf");
+      ++(on_dark ? dark_count : light_count);
     }
     map += "\n";
   }
-  s += map + "EOD\n" + dark + "NaN NaN \"\"\nEOD\n" + light + "NaN NaN \"\"\nEOD\n";
+  s += map + "EOD\n" + dark + "EOD\n" + light + "EOD\n";
   s += fmt::format("set cbrange [0:{}]\n", 2.0 * at_limit);
   s += "set palette defined (0 '#1a7f3c', 0.5 '#8fd18b', 0.98 '#f4f1bb', 1.02 '#fdd49e', 1.5 '#f0793d', 2 '#a50f15')\n";
   s += "set cblabel 'governing ratio [-] (limit 1/SF at the middle)'\n";
@@ -291,8 +294,13 @@ GnuplotChart AuditRegionMap(const audit::AuditResult& result, double safety_fact
   s += ")\nset ytics (";
   for (std::size_t l = 0; l < links; ++l) s += fmt::format("{}{} {}", l ? ", " : "", GnuplotQuoted(result.links[l]), l);
   s += ")\nunset key\nset bmargin 12\n";
-  s += "plot $map using 1:2:3 with image pixels notitle, $dark using 1:2:3 with labels font 'sans,10' textcolor rgb "
-       "'#ffffff' notitle, $light using 1:2:3 with labels font 'sans,10' textcolor rgb '#000000' notitle\nunset output\n";
+  // Each cell a filled box (an image one cell wide, one region or one link, has no pixel size),
+  // and a block of labels only when it has one: gnuplot 5.4 crashes (signal 11) on labels from a
+  // block without a valid point.
+  s += "plot $region_map using 1:2:(0.5):(0.5):3 with boxxyerror fillstyle solid 1.0 noborder lc palette notitle";
+  if (dark_count > 0) s += ", $region_dark using 1:2:3 with labels font 'sans,10' textcolor rgb '#ffffff' notitle";
+  if (light_count > 0) s += ", $region_light using 1:2:3 with labels font 'sans,10' textcolor rgb '#000000' notitle";
+  s += "\nunset output\n";
   return internal::MakeChart(
       "Governing ratio per link and region",
       fmt::format("The governing ratio [-] of each link (rows) against each of the {} regions judged (columns), the "

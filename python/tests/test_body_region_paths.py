@@ -180,7 +180,7 @@ def test_sweep_is_the_cli_csv(cli):
     rows = list(csv.DictReader(io.StringIO(out)))
     assert len(rows) == 12
     for row in rows:
-        i, j = xs.index(float(row["speed"])), ys.index(float(row["covering-modulus"]))
+        i, j = xs.index(float(row["speed [m/s]"])), ys.index(float(row["covering-modulus [Pa]"]))
         assert r.error[i, j] == row["error"] and r.valid[i, j] == (row["error"] == "")
         assert r.governing[i, j] == row["governing"]
         for key in ("peak_force_N", "peak_pressure_Pa", "covering_deflection_m", "force_ratio", "pressure_ratio",

@@ -125,6 +125,12 @@ def test_iso_robot_mass_is_half_the_moving_mass_plus_the_payload(cli_json):
     expected = cli_json("simulate", "--json", "--robot-moving-mass", "30", "--payload-mass", "2.5")
     assert expected["warnings"][0].startswith("robot mass 17.5 kg: ISO/TS 15066")
     expected["warnings"].pop(0)
+    # The CLI's result also names the robot model behind its mass; the library's was given a mass.
+    model = expected.pop("robot_model")
+    assert (model["source"], model["moving_mass_kg"], model["payload_mass_kg"]) == ("iso-estimate", 30.0, 2.5)
+    assert "M/2 + m_L, M = 30 kg" in expected["summary"]["robot"]["motion"]
+    assert expected["summary"]["robot"]["reflected_mass_kg"] == 17.5
+    expected["summary"]["robot"] = got["summary"]["robot"]
     assert got == expected
     for bad, word in [((0.0, 1.0), "moving_mass"), ((-5.0, 1.0), "moving_mass"), ((2e6, 0.0), "moving_mass"),
                       ((30.0, -1.0), "payload_mass"), ((30.0, math.nan), "payload_mass"), (("30kg", 1.0), "moving_mass")]:

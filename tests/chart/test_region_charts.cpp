@@ -14,6 +14,7 @@
 #include <covopt/optim.hpp>
 
 #include "chart_test_support.hpp"
+#include "covopt/chart/charts.hpp"
 #include "covopt/chart/region_charts.hpp"
 
 using namespace covopt;
@@ -125,6 +126,31 @@ TEST_CASE("audit region map writes every link x region ratio in its cell", "[cha
   for (const char* cell : {"0 0 \"0.10\"", "2 0 \"0.30\"", "1 1 \"0.50\"", "2 1 \"inf\""}) CHECK_THAT(s, Contains(cell));
   CHECK_THAT(s, Contains("set cbrange [0:1]"));  // the limit 1/SF = 0.5 in the middle
   CHECK_THAT(s, Contains("governing ratio [-]"));
+}
+
+TEST_CASE("audit region map of one region, every value on the dark end: drawn by gnuplot, no empty label block",
+          "[chart][regions][audit]") {
+  // gnuplot 5.4 crashed (signal 11) on a block of labels without a valid point: an audit of the
+  // chest alone whose ratios all sit on the dark ends of the scale left the light block empty.
+  audit::AuditResult result;
+  result.links = {"link0", "link1", "link2"};
+  result.regions = {"chest (sternum)"};
+  for (std::size_t l = 0; l < 3; ++l) {
+    audit::AuditCell cell;
+    cell.link = l;
+    cell.region = 0;
+    cell.governing_ratio = l == 0 ? 0.0 : 5.0 * static_cast<double>(l);  // 0, 5, 10: all dark
+    result.cells.push_back(cell);
+  }
+  const chart::GnuplotChart c = chart::AuditRegionMap(result, 1.0);
+  const std::string s = Svg(c);
+  CHECK_THAT(s, Contains("$region_dark using"));
+  CHECK_THAT(s, !Contains("$region_light using"));
+  CHECK_THAT(s, !Contains("NaN"));
+  const std::vector<report::SvgChart> drawn = chart::DrawSvgCharts({&c, 1});
+  REQUIRE(drawn.size() == 1);
+  CHECK_THAT(drawn.front().svg, Contains("<svg"));
+  CHECK_THAT(drawn.front().svg, Contains("10.00"));
 }
 
 TEST_CASE("trajectory region chart draws the worst ratio at every sample and marks the worst", "[chart][regions]") {

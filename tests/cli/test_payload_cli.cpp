@@ -230,6 +230,16 @@ TEST_CASE("the ISO fallback answers as --robot-mass M/2 + m_L does, but for the 
     json typed = JsonOf(Run(With(command, {"--robot-mass", "17.5"})));
     REQUIRE(iso["warnings"].size() == typed["warnings"].size() + 1);
     iso["warnings"].erase(0);
+    // The robot model behind the mass: an input of its own, and the summary's robot.
+    REQUIRE(iso.contains("robot_model"));
+    CHECK(iso["robot_model"]["source"] == "iso-estimate");
+    CHECK(iso["robot_model"]["moving_mass_kg"] == 30.0);
+    CHECK(iso["robot_model"]["reflected_mass_kg"] == 17.5);
+    CHECK_THAT(iso["summary"]["robot"]["motion"].get<std::string>(), Catch::Contains("M = 30 kg"));
+    CHECK_FALSE(typed.contains("robot_model"));
+    iso.erase("robot_model");
+    iso["summary"]["robot"] = typed["summary"]["robot"];
+    if (iso.contains("input_sources")) iso["input_sources"] = typed["input_sources"];  // --robot-moving-mass, not --robot-mass
     CHECK(iso == typed);
   }
 }

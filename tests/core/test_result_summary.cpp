@@ -73,7 +73,7 @@ TEST_CASE("ResultSummary: one row per criterion, the counted row with the larges
   CHECK(s.scope == std::vector<std::string>{"head criteria of Park et al. 2011"});
 }
 
-TEST_CASE("ResultSummary: margin is 1 - SF x ratio; a thin margin is MARGINAL, an exceeded one UNSAFE",
+TEST_CASE("ResultSummary: margin is 1 - SF x ratio, a thin margin is MARGINAL, an exceeded one UNSAFE",
           "[summary]") {
   ResultSummary marginal;
   marginal.AddVerdict("head (frontal)", Head(0.998), "foam", "within");

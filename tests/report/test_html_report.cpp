@@ -331,7 +331,7 @@ TEST_CASE("A safe verdict with a margin below the threshold reads MARGINAL, the 
   CHECK(marginal.sentence == "MARGINAL: safe, but the margin 42.0 % is below the 50 % asked.");
 }
 
-TEST_CASE("UNSAFE names what fails; LIMITS and a case without a safe value read as such", "[report][html]") {
+TEST_CASE("UNSAFE names what fails, LIMITS and a case without a safe value read as such", "[report][html]") {
   const Banner unsafe = BannerOf(Render(ReportKind::kSimulate, ResultJson(HeadSummary(1.344))));
   CHECK(unsafe.state == "unsafe");
   CHECK(unsafe.safe == "false");
@@ -467,7 +467,7 @@ TEST_CASE("The inputs are tables by group with the CLI's units, sources and the 
   for (const InputRow& r : rows) CHECK_FALSE(r.unit.empty());
 }
 
-TEST_CASE("The appendix holds nothing, the summary or every value; the full JSON is always there, collapsed",
+TEST_CASE("The appendix holds nothing, the summary or every value, the full JSON is always there, collapsed",
           "[report][html]") {
   const Json extra = {{"scene", {{"robot", {{"mass_kg", 5.0}}}}},
                       {"status", "safe"},

@@ -80,7 +80,7 @@ TEST_CASE("CheckReportInfo: no control characters, but line breaks in the note",
   CHECK_THAT(CheckMessage(WithProject("cut \xC3")), Contains("not UTF-8"));
 }
 
-TEST_CASE("CheckReportInfo: the margin threshold is a finite share in [0, 1)", "[report_info]") {
+TEST_CASE("CheckReportInfo: the margin threshold is a finite share from 0 up to but not including 1", "[report_info]") {
   for (const double good : {0.0, 0.1, 0.999}) {
     ReportInfo info;
     info.margin_threshold = good;
