@@ -117,7 +117,9 @@ void WriteFacts(std::string& out, const PageOne& p) {
     Term(out, "material", c.material.empty() ? "given by its modulus (no catalog material)" : c.material);
     Term(out, "thickness", Significant(c.thickness_m * 1e3) + " mm");
     Term(out, "law", c.law);
-    Term(out, "validity", c.validity + " (validity ratio " + Significant(c.validity_ratio) + ", 1 at the law's edge)");
+    Term(out, "validity", std::isfinite(c.validity_ratio)
+                              ? c.validity + " (validity ratio " + Significant(c.validity_ratio) + ", 1 at the law's edge)"
+                              : c.validity);
   } else {
     Term(out, "material", "none: the bare robot");
   }
