@@ -134,8 +134,8 @@ void PrintAndReport(std::ostream& out, bool print_json, const std::string& json_
                     report::ReportKind kind, const std::function<std::vector<chart::GnuplotChart>()>& charts) {
   std::string object = json_object;
   if (run) {  // a top-level result (a nested one, inside another's object, has neither)
-    if (inputs.robot_model) object = report::WithRobotModel(object, *inputs.robot_model);
     object = report::WithInputSources(object, inputs.origins);
+    if (inputs.robot_model) object = report::WithRobotModel(object, *inputs.robot_model);
   }
   const std::string stamped = WithRunProvenance(object, run);
   if (report.file) {

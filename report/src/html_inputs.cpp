@@ -18,12 +18,12 @@ namespace {
 /// The top-level keys of each kind's result that hold its inputs.
 std::vector<std::string_view> InputKeys(ReportKind kind) {
   switch (kind) {
-    case ReportKind::kSimulate: return {"scene", "uncertain_inputs", "safety_factor", "limits"};
+    case ReportKind::kSimulate: return {"scene", "robot_model", "uncertain_inputs", "safety_factor", "limits"};
     case ReportKind::kOptimize:
-      return {"scene", "speed_m_per_s", "thickness_m", "safety_factor", "limits", "design_space",
+      return {"scene", "robot_model", "speed_m_per_s", "thickness_m", "safety_factor", "limits", "design_space",
               "uncertain_inputs", "max_probability", "samples", "seed"};
     case ReportKind::kSpeedLimit:
-      return {"solve_for", "scene", "safety_factor", "limits", "search_limit", "uncertain_inputs"};
+      return {"solve_for", "scene", "robot_model", "safety_factor", "limits", "search_limit", "uncertain_inputs"};
     case ReportKind::kTrajectory:
       return {"scene", "safety_factor", "limits", "search_limit", "regions", "joint_names", "sample_count"};
     case ReportKind::kAudit:

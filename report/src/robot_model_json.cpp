@@ -53,6 +53,34 @@ std::string WithRobotModel(const std::string& json_object, const RobotModelInput
                       {"moving_mass_kg", urdf ? Json(nullptr) : Number(model.moving_mass_kg)},
                       {"payload_mass_kg", Number(model.payload_mass_kg)},
                       {"reflected_mass_kg", MassOrFixed(model.reflected_mass_kg)}};
+  // Where each of its values came from, when the result says where its inputs did: the flags of
+  // the robot model. The object goes before "input_sources" (which stays the last key but the
+  // provenance's).
+  if (auto sources = j.find("input_sources"); sources != j.end() && sources->is_object()) {
+    // The typed configuration by its own flags; what the model gives (masses, the contact point
+    // in the base frame, the joints' names) by --urdf.
+    const auto flag_of = [&](const std::string& key) -> std::string {
+      if (!urdf) return "flag --robot-moving-mass";
+      if (key == "joint_positions") return "flag --joints";
+      if (key == "direction") return "flag --direction";
+      if (key == "tip_link") return "flag --tip";
+      return "flag --urdf";
+    };
+    for (const auto& [key, value] : j["robot_model"].items()) {
+      if (value.is_primitive() && !value.is_null()) (*sources)["robot_model." + key] = flag_of(key);
+      for (std::size_t i = 0; value.is_array() && i < value.size(); ++i) {
+        (*sources)["robot_model." + key + "." + std::to_string(i)] = flag_of(key);
+      }
+    }
+    (*sources)["robot_model.payload_mass_kg"] = model.payload_mass_kg > 0.0 ? "flag --payload-mass" : "default";
+    Json reordered = Json::object();
+    for (auto& [key, value] : j.items()) {
+      if (key == "robot_model") continue;
+      if (key == "input_sources") reordered["robot_model"] = std::move(j["robot_model"]);
+      reordered[key] = std::move(value);
+    }
+    j = std::move(reordered);
+  }
   if (auto summary = j.find("summary"); summary != j.end() && summary->is_object()) {
     Json& robot = (*summary)["robot"];
     robot["model_file"] = urdf ? model.urdf_file : std::string();

@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -82,4 +83,27 @@ TEST_CASE("WithRobotModel: ISO/TS 15066's estimate names M, a fixed robot reads 
 
   CHECK_THROWS_AS(WithRobotModel("[1, 2]", Fr3()), std::invalid_argument);
   CHECK_THROWS_AS(WithRobotModel("not json", Fr3()), std::invalid_argument);
+}
+
+TEST_CASE("WithRobotModel: the robot model's values get their sources, the object right before input_sources",
+          "[report][robot_model]") {
+  const std::string result = R"({"solve_for": "speed", "input_sources": {"scene.head.mass_kg": "default"},
+                                 "provenance": {"software": "covopt"}})";
+  const nlohmann::ordered_json j = nlohmann::ordered_json::parse(WithRobotModel(result, Fr3()));
+  std::vector<std::string> keys;
+  for (const auto& item : j.items()) keys.push_back(item.key());
+  CHECK(keys == std::vector<std::string>{"solve_for", "robot_model", "input_sources", "provenance"});
+  const auto& sources = j.at("input_sources");
+  CHECK(sources.at("scene.head.mass_kg") == "default");  // the others kept
+  CHECK(sources.at("robot_model.urdf_file") == "flag --urdf");
+  CHECK(sources.at("robot_model.joint_positions.1") == "flag --joints");
+  CHECK(sources.at("robot_model.direction.0") == "flag --direction");
+  CHECK(sources.at("robot_model.joint_names.1") == "flag --urdf");
+  CHECK(sources.at("robot_model.reflected_mass_kg") == "flag --urdf");
+  CHECK(sources.at("robot_model.payload_mass_kg") == "flag --payload-mass");
+  CHECK_FALSE(sources.contains("robot_model.moving_mass_kg"));  // null for a URDF: no value, no source
+  RobotModelInputs iso{.source = "iso-estimate", .moving_mass_kg = 30.0, .reflected_mass_kg = 15.0};
+  const nlohmann::json k = nlohmann::json::parse(WithRobotModel(result, iso));
+  CHECK(k.at("input_sources").at("robot_model.moving_mass_kg") == "flag --robot-moving-mass");
+  CHECK(k.at("input_sources").at("robot_model.payload_mass_kg") == "default");
 }

@@ -33,7 +33,10 @@ struct RobotModelInputs {
 /// a URDF), payload_mass_kg, reflected_mass_kg ("fixed" when infinite)} added, and, when it has
 /// a "summary", the summary's robot set from it (model_file, joints, motion "configuration
 /// fr3_joint1 = 0 rad, ...", or "ISO/TS 15066 estimate M/2 + m_L, M = ... kg", reflected mass,
-/// payload).
+/// payload). When the object has "input_sources" (report/input_sources.hpp), "robot_model" goes
+/// right before it and each of its values gets its source there ("flag --joints", "flag
+/// --direction", "flag --tip", "flag --urdf" for what the model gives, "flag
+/// --robot-moving-mass", "flag --payload-mass" or "default" for no payload).
 /// @throws std::invalid_argument when json_object is not a JSON object.
 std::string WithRobotModel(const std::string& json_object, const RobotModelInputs& model);
 
