@@ -56,6 +56,23 @@ struct AuditCovering {
   std::optional<optim::CandidateMaterial> material;
 };
 
+/// A zone of the cell and the body regions a person can present there (the risk assessment's
+/// answer, `--exposure FILE.toml`): an axis-aligned box in the robot's base frame. A point-sample
+/// is judged against a region only when the point lies in a zone that exposes that region; with
+/// no zones (the default) every region is exposed everywhere. Cells that no zone exposes are
+/// not judged, and the result says so.
+struct ExposureZone {
+  std::string name;                                  ///< "above the table"
+  Eigen::Vector3d min_m = Eigen::Vector3d::Zero();   ///< the box's lower corner, base frame [m]
+  Eigen::Vector3d max_m = Eigen::Vector3d::Zero();   ///< its upper corner [m], >= min_m
+  /// The regions exposed there, as AuditRegionNames spells them ("chest (sternum)", "head (Park
+  /// et al. 2011)"), or a region's name without its area ("lower-legs": all its areas), or
+  /// "head" (Park et al.'s head), or "all". A name the audit does not judge is refused.
+  std::vector<std::string> regions;
+  /// Where it was read ("exposure.toml:12:1"), for messages.
+  std::string origin;
+};
+
 /// What an audit judges. The chain, its surface and the exposed regions.
 struct AuditSetup {
   /// The chain and its surface; the rest is set field by field (as in the example above).
@@ -109,6 +126,8 @@ struct AuditSetup {
   double braking_m_per_s2 = 0.0;
   /// Rest speed, joint-limit checks, the singular tolerance.
   robot::ContactMotionOptions motion;
+  /// The exposure zones (ExposureZone); empty: every region is exposed everywhere.
+  std::vector<ExposureZone> exposure_zones;
 };
 
 /// The per-link design: the catalog materials to try (SelectCandidates order), and the

@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <istream>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,13 @@ JointTrajectory ReadJointTrajectory(std::istream& in, std::size_t joint_count,
 /// As above, from the file at `path`.
 /// @throws std::invalid_argument also when the file is missing or unreadable.
 JointTrajectory ReadJointTrajectory(const std::filesystem::path& path, std::size_t joint_count);
+
+/// Writes `trajectory` as a trajectory CSV that ReadJointTrajectory reads back: a header line
+/// "time_s,<joint>,...,<joint>_velocity,..." from `joint_names` (the chain's joint order), then one
+/// line per sample, every number in its shortest round-trip form (FormatShortest).
+/// @throws std::invalid_argument when the samples' sizes do not match the joint names.
+void WriteJointTrajectory(std::ostream& out, const JointTrajectory& trajectory,
+                          const std::vector<std::string>& joint_names);
 
 /// The contact point's motion at one sample.
 struct ContactMotionSample {
