@@ -20,6 +20,7 @@
 #include "optimize.hpp"
 #include "parse_errors.hpp"
 #include "simulate.hpp"
+#include "retime.hpp"
 #include "robot.hpp"
 #include "run_context.hpp"
 #include "speed_limit.hpp"
@@ -92,6 +93,11 @@ constexpr std::array kCommands{
             "speed scale, which link and region set it, and per link the covering that makes the "
             "program safe",
             Register<AuditCommandOptions, SetupAudit, RunAudit>},
+    Command{"retime",
+            "The fastest program that is safe everywhere: the program's path re-timed under the audit's "
+            "per-sample safe speed and the joints' limits, re-audited; its cycle time against the uniform "
+            "slow-down, and against the covering's thickness",
+            Register<RetimeCommandOptions, SetupRetime, RunRetime>},
 };
 
 /// The word of the command line that can name a subcommand: the first that is no flag (the top

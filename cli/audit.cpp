@@ -69,10 +69,10 @@ constexpr QuantitySpec kFlatRadius{QuantityKind::kLength, false, false, 1e-3, 1.
 
 /// Everything the outputs need: the assembled audit (covopt::audit::AssembleAudit).
 struct AuditRun {
-  explicit AuditRun(audit::AssembledAudit a) : assembled(std::move(a)) {}
+  explicit AuditRun(ResolvedAuditInputs r) : assembled(std::move(r.assembled)), inputs(std::move(r.inputs)) {}
   audit::AssembledAudit assembled;
-  std::optional<PlotFormat> plot_format;
   ResultInputs inputs;  ///< the scene file's [report] table
+  std::optional<PlotFormat> plot_format;
 };
 
 double PositiveLength(const std::string& typed, const QuantitySpec& spec, const char* flag) {
@@ -83,7 +83,9 @@ double PositiveLength(const std::string& typed, const QuantitySpec& spec, const 
   return value;
 }
 
-std::string CoveringText(const audit::AuditCovering& c) {
+}  // namespace
+
+std::string AuditCoveringText(const audit::AuditCovering& c) {
   if (!(c.covering.thickness_m > 0.0)) return "bare";
   // The law that describes it (auto: the foam law for a measured curve): each cell counts its validity.
   const bool foam = c.covering.compressive_curve && c.covering.law != CoveringLaw::kHertz;
@@ -92,6 +94,8 @@ std::string CoveringText(const audit::AuditCovering& c) {
                      FormatQuantity(c.covering.youngs_modulus_Pa, QuantityKind::kModulus), c.covering.poisson_ratio,
                      foam ? "foam" : "hertz");
 }
+
+namespace {
 
 /// The scene inputs an ISO region reads in an audit (the rest belong to the head's model).
 bool ReadByRegions(std::string_view field) {
@@ -119,18 +123,22 @@ audit::AuditFieldNames FlagNames() {
   return n;
 }
 
-/// The checks of the flags no library input stands for: the robot model's flags audit does not
-/// take, the outputs' files.
-std::optional<PlotFormat> CheckFlags(const AuditCommandOptions& o) {
+/// The checks of the input flags no library input stands for: the robot model's flags the
+/// audit does not take.
+void CheckInputFlags(const AuditInputOptions& o) {
   const RobotModelOptions& model = o.model;
-  if (!o.trajectory) throw InputError("--trajectory FILE.csv is required (the motion to audit)");
-  if (!model.urdf) throw InputError("--urdf FILE is required (the robot to audit)");
+  if (!o.trajectory) throw InputError("--trajectory FILE.csv is required (the motion)");
+  if (!model.urdf) throw InputError("--urdf FILE is required (the robot)");
   for (const auto& [typed, flag, why] :
        {std::tuple{model.joints, "--joints", "the trajectory gives each sample's joint positions"},
         std::tuple{model.point, "--point", "every point of the robot's surface is audited"},
         std::tuple{model.direction, "--direction", "each impact is along the point's motion"}}) {
     if (typed) throw InputError(fmt::format("{} '{}': not used by audit ({}); drop {}", flag, *typed, why, flag));
   }
+}
+
+/// The checks of the audit's output flags.
+std::optional<PlotFormat> CheckOutputFlags(const AuditCommandOptions& o) {
   if (o.csv_file && o.csv_file->empty()) throw InputError("--csv: empty file name");
   if (o.samples_csv && o.samples_csv->empty()) throw InputError("--samples-csv: empty file name");
   const int to_stdout = (o.json ? 1 : 0) + (o.csv_file && *o.csv_file == "-" ? 1 : 0) +
@@ -148,7 +156,7 @@ std::optional<PlotFormat> CheckFlags(const AuditCommandOptions& o) {
 }
 
 /// The surface's flags.
-robot::SurfaceOptions SurfaceOptionsOf(const AuditCommandOptions& o) {
+robot::SurfaceOptions SurfaceOptionsOf(const AuditInputOptions& o) {
   robot::SurfaceOptions surface;
   if (o.surface_spacing) surface.spacing_m = PositiveLength(*o.surface_spacing, kSpacing, "--surface-spacing");
   if (o.box_edge_radius) surface.box_edge_radius_m = PositiveLength(*o.box_edge_radius, kEdgeRadius, "--box-edge-radius");
@@ -160,7 +168,7 @@ robot::SurfaceOptions SurfaceOptionsOf(const AuditCommandOptions& o) {
 }
 
 /// The design's flags.
-void SetDesignFlags(const AuditCommandOptions& o, audit::AuditInputs& in) {
+void SetDesignFlags(const AuditInputOptions& o, audit::AuditInputs& in) {
   in.design = o.design;
   in.design_materials = o.design_materials;
   in.families = o.families;
@@ -173,10 +181,12 @@ void SetDesignFlags(const AuditCommandOptions& o, audit::AuditInputs& in) {
   }
 }
 
-/// The flags resolved by the groups every command shares (robot model, scene, body regions),
-/// the audit assembled by the library from them and the audit's own flags.
-AuditRun Resolve(const AuditCommandOptions& o) {
-  const std::optional<PlotFormat> plot_format = CheckFlags(o);
+}  // namespace
+
+// The flags resolved by the groups every command shares (robot model, scene, body regions),
+// the audit assembled by the library from them and the audit's own flags.
+ResolvedAuditInputs ResolveAuditInputs(const AuditInputOptions& o) {
+  CheckInputFlags(o);
   // The regions: the body-region group, default every transient region and the head.
   BodyRegionFlags body = o.scene.body;
   if (body.regions.empty()) body.regions.push_back(audit::kDefaultBodyRegions);
@@ -223,9 +233,8 @@ AuditRun Resolve(const AuditCommandOptions& o) {
   }
   in.scene_warnings = InputWarnings(plan);
   optim::AppendNewWarnings(in.scene_warnings, CrushCheckOf(plan).notes);  // the default covering is in both
-  AuditRun run(audit::AssembleAudit(in));
+  ResolvedAuditInputs run(audit::AssembleAudit(in));
   run.assembled.setup.keep_travel = o.scene.keep_travel;
-  run.plot_format = plot_format;
   run.inputs = plan.inputs;
   if (o.design) {  // optimize's ranges, named by the flags (the library names its own fields)
     const audit::AuditDesignOptions& design = run.assembled.options.design;
@@ -235,6 +244,8 @@ AuditRun Resolve(const AuditCommandOptions& o) {
   return run;
 }
 
+namespace {
+
 std::string Point(const Eigen::Vector3d& p) { return fmt::format("({:.3f}, {:.3f}, {:.3f})", p[0], p[1], p[2]); }
 
 std::string RatioText(double ratio) { return std::isfinite(ratio) ? fmt::format("{:.3f}", ratio) : "no safe speed"; }
@@ -242,8 +253,11 @@ std::string RatioText(double ratio) { return std::isfinite(ratio) ? fmt::format(
 std::string ScaleText(double scale) { return std::isfinite(scale) ? fmt::format("{:.4g}", scale) : "-"; }
 
 
-void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& run, const audit::AuditResult& r) {
-  const audit::AuditSetup& setup = run.assembled.setup;
+}  // namespace
+
+void PrintAuditInputs(std::ostream& out, const AuditInputOptions& o, const audit::AssembledAudit& assembled,
+                      std::size_t sample_count) {
+  const audit::AuditSetup& setup = assembled.setup;
   const robot::KinematicChain& chain = setup.chain;
   std::string robot_line = fmt::format("{}: {} -> {}, {} movable joint{}", chain.robot_name(), chain.base_link(),
                                        chain.tip_link(), chain.joint_count(), chain.joint_count() == 1 ? "" : "s");
@@ -251,15 +265,15 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
     robot_line += fmt::format("; payload {:.4g} kg at {} m (tip frame)", payload.mass_kg, Point(payload.center_of_mass_m));
   }
   fmt::print(out, "Robot      {}\n", robot_line);
-  const auto& times = run.assembled.trajectory.time_s;
-  fmt::print(out, "Trajectory {}: {} samples, t = {:g} .. {:g} s\n", *o.trajectory, r.sample_count,
+  const auto& times = assembled.trajectory.time_s;
+  fmt::print(out, "Trajectory {}: {} samples, t = {:g} .. {:g} s\n", *o.trajectory, sample_count,
              times.empty() ? 0.0 : times.front(), times.empty() ? 0.0 : times.back());
   fmt::print(out, "Surface    {} links, {} points (spacing {}){}\n", setup.surface.links.size(),
              setup.surface.point_count(), FormatQuantity(setup.surface.spacing_m, QuantityKind::kLength),
              o.surface_file ? fmt::format(", surface file {}", *o.surface_file) : std::string());
-  fmt::print(out, "Covering   all links: {}\n", CoveringText(setup.covering));
+  fmt::print(out, "Covering   all links: {}\n", AuditCoveringText(setup.covering));
   for (const auto& [link, covering] : setup.link_coverings) {
-    fmt::print(out, "           {}: {} (--link-coverings)\n", link, CoveringText(covering));
+    fmt::print(out, "           {}: {} (--link-coverings)\n", link, AuditCoveringText(covering));
   }
   fmt::print(out, "Regions    {} ISO/TS 15066 region{} (transient){}\n", setup.regions.size(),
              setup.regions.size() == 1 ? "" : "s", setup.head ? fmt::format(" and the head ({})", HeadCriteriaName()) : "");
@@ -271,6 +285,13 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
                FormatQuantity(setup.reaction_delay_s, QuantityKind::kTime),
                FormatQuantity(setup.braking_m_per_s2, QuantityKind::kAcceleration));
   }
+}
+
+namespace {
+
+void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& run, const audit::AuditResult& r) {
+  const audit::AuditSetup& setup = run.assembled.setup;
+  PrintAuditInputs(out, o, run.assembled, r.sample_count);
   fmt::print(out, "Verdict    {}\n{}", r.message, report::SummaryText(audit::SummarizeAudit(setup, r), 11));
   if (r.limiting_cell) {
     const audit::AuditCell& c = r.cells[*r.limiting_cell];
@@ -335,8 +356,8 @@ std::string CellsCsv(const audit::AuditResult& r) {
 
 }  // namespace
 
-void SetupAudit(CLI::App* sub, AuditCommandOptions& options) {
-  sub->footer(std::string(kFooter));
+void AddAuditInputOptions(CLI::App& command, AuditInputOptions& options, const char* design_help) {
+  CLI::App* sub = &command;
   AddRobotModelOptions(*sub, options.model, false, "Robot model");
   // Each surface point brings its own point and direction; the trajectory its joints.
   for (const char* flag : {"--joints", "--point", "--direction"}) sub->get_option(flag)->group("");
@@ -377,8 +398,7 @@ void SetupAudit(CLI::App* sub, AuditCommandOptions& options) {
                         .allow_crushing = &options.allow_crushing,
                         .keep_travel = &options.scene.keep_travel});
   constexpr const char* kDesign = "Design (--design)";
-  sub->add_flag("--design", options.design,
-                "per link, the thinnest catalog covering that makes the program safe at full speed")
+  sub->add_flag("--design", options.design, design_help)
       ->group(kDesign);
   AddRuleOptions(*sub, {.allow_unknown_strength = &options.allow_unknown_strength}, kDesign);
   sub->add_option("--family", options.families, "only materials of this family (repeatable)")
@@ -393,6 +413,11 @@ void SetupAudit(CLI::App* sub, AuditCommandOptions& options) {
   sub->add_option("--thickness-step", options.thickness_step, "the recommendation is rounded up to it (default 0.5mm)")
       ->type_name("LENGTH")
       ->group(kDesign);
+}
+
+void SetupAudit(CLI::App* sub, AuditCommandOptions& options) {
+  sub->footer(std::string(kFooter));
+  AddAuditInputOptions(*sub, options, "per link, the thinnest catalog covering that makes the program safe at full speed");
   AddJsonFlag(*sub, options.json);
   AddOutputFileOption(*sub, "--csv", options.csv_file, "write one row per link x region ('-': to stdout)", "FILE.csv|-");
   AddOutputFileOption(*sub, "--samples-csv", options.samples_csv, "stream one row per sample: per link its largest ratio and region ('-': to stdout; memory does not "
@@ -405,7 +430,9 @@ int RunAudit(const AuditCommandOptions& o, std::ostream& out, std::ostream& err)
   const CommandErrors errors(err, "audit");
   std::optional<AuditRun> resolved;
   try {
-    resolved.emplace(Resolve(o));
+    const std::optional<PlotFormat> plot_format = CheckOutputFlags(o);
+    resolved.emplace(ResolveAuditInputs(o));
+    resolved->plot_format = plot_format;
   } catch (const std::invalid_argument& e) {  // InputError and the library's own checks
     return errors.BadInput(e.what());
   }

@@ -19,11 +19,15 @@
 /// Exit codes: 0 an answer (safe, unsafe or at rest), 1 an output could not be written,
 /// 2 bad input.
 
+#include <cstddef>
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "covopt/audit/assemble.hpp"
+#include "report_option.hpp"
 #include "robot_model_options.hpp"
 #include "run_context.hpp"
 #include "simulation_plan.hpp"
@@ -34,8 +38,10 @@ class App;
 
 namespace covopt::cli {
 
-/// The options of `covopt audit`, as typed.
-struct AuditCommandOptions {
+/// The audit's inputs as typed: the robot model, the trajectory, the surface, the coverings,
+/// the scene, the body regions, the rule and the per-link design. Shared by `covopt audit` and
+/// `covopt retime` (AddAuditInputOptions, ResolveAuditInputs).
+struct AuditInputOptions {
   RobotModelOptions model;                     ///< --urdf, --base, --tip, --payload-*, ...
   std::optional<std::string> trajectory;       ///< --trajectory FILE.csv
   std::optional<std::string> surface_file;     ///< --surface-file FILE.toml
@@ -54,6 +60,10 @@ struct AuditCommandOptions {
   bool allow_unknown_strength = false;         ///< --allow-unknown-strength, with --design
   std::optional<std::string> max_thickness;    ///< --max-thickness (default 50 mm), with --design
   std::optional<std::string> thickness_step;   ///< --thickness-step (default 0.5 mm), with --design
+};
+
+/// The options of `covopt audit`, as typed: the audit's inputs and its outputs.
+struct AuditCommandOptions : AuditInputOptions {
   bool json = false;                           ///< --json: report::AuditJson
   std::optional<std::string> csv_file;         ///< --csv FILE|-: one row per link × region
   std::optional<std::string> samples_csv;      ///< --samples-csv FILE|-: one row per sample, streamed
@@ -62,6 +72,32 @@ struct AuditCommandOptions {
   /// Not typed: the command line and input files for the JSON's provenance, set by RunCli.
   std::optional<RunContext> run;
 };
+
+/// Registers the audit's input flags on `sub` (groups "Robot model", "Audit", "Scene", the
+/// body regions', the rule's, "Design (--design)"); `options` must outlive the parse.
+/// `design_help` is --design's help text (what the design does in that command).
+void AddAuditInputOptions(CLI::App& sub, AuditInputOptions& options, const char* design_help);
+
+/// The audit assembled from its input flags (covopt::audit::AssembleAudit), and what the
+/// scene file's [report] table and the inputs' sources add to the result.
+struct ResolvedAuditInputs {
+  explicit ResolvedAuditInputs(audit::AssembledAudit a) : assembled(std::move(a)) {}
+  audit::AssembledAudit assembled;
+  ResultInputs inputs;
+};
+
+/// Resolves the input flags: the robot model, the scene, the body regions (default: every
+/// transient region and the head), the audit's own flags; assembles the audit.
+/// @throws InputError (or the library's std::invalid_argument) naming the flag and the value.
+ResolvedAuditInputs ResolveAuditInputs(const AuditInputOptions& options);
+
+/// The covering's one-line description: "PORON 10 mm (E 2.1 MPa, ν 0.3; foam law)" or "bare".
+std::string AuditCoveringText(const audit::AuditCovering& covering);
+
+/// The lines the text output opens with: the robot, the trajectory, the surface, the
+/// coverings, the regions, the criterion and the braking.
+void PrintAuditInputs(std::ostream& out, const AuditInputOptions& options, const audit::AssembledAudit& assembled,
+                      std::size_t sample_count);
 
 /// Registers the options of the `audit` subcommand `sub` (made by RunCli with its name and
 /// summary); `options` must outlive the parse.

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <covopt/core/impact_result.hpp>
 #include <covopt/core/number_format.hpp>
@@ -113,6 +114,83 @@ ResultSummary SummarizeAudit(const AuditSetup& setup, const AuditResult& result)
   s.covering.validity = s.covering.present ? "see the warnings" : "";
   s.covering.validity_ratio = kNaN;
   return s;
+}
+
+namespace {
+
+/// "cycle time 1.734 s (original 1.5 s; uniform slow-down 3.316 s, scale 0.4523)".
+std::string CycleTimes(const RetimeResult& r) {
+  return "cycle time " + Number(r.cycle_time_s) + " s (original " + Number(r.original_cycle_time_s) +
+         " s; uniform slow-down " + Number(r.uniform_cycle_time_s) + " s, scale " + Number(r.uniform_speed_scale) + ")";
+}
+
+}  // namespace
+
+ResultSummary SummarizeRetime(const AuditSetup& setup, const RetimeResult& result, double tolerance) {
+  const bool answer = result.status == RetimeStatus::kSafe || result.status == RetimeStatus::kAtRest;
+  ResultSummary s = SummarizeAudit(setup, answer ? result.after : result.before);
+  s.command = "retime";
+  if (answer) {
+    // The re-audit accepts a sample within its tolerance: a time-optimal program sits on its limit.
+    for (SummaryRow& row : s.rows) {
+      if (!row.passed && setup.rule.safety_factor * row.ratio <= 1.0 + tolerance) {
+        row.passed = true;
+        row.note += "; within the re-audit's tolerance " + Number(tolerance);
+      }
+      row.binding = false;
+    }
+    const std::string governing = s.governing_case;
+    s.Finish();
+    s.governing_case = "re-timed program, " + CycleTimes(result) + (governing.empty() ? "" : ": " + governing);
+    s.robot.motion = std::to_string(result.trajectory.time_s.size()) + " samples re-timed, " + CycleTimes(result);
+  } else {
+    s.safe = false;
+    s.evaluated = result.status != RetimeStatus::kEvaluationFailed;
+    s.state = s.evaluated ? VerdictState::kUnsafe : VerdictState::kNotEvaluated;
+    s.governing_case = "no safe timing (" + std::string(ToString(result.status)) + "): " + result.message;
+  }
+  s.scope.insert(s.scope.begin(),
+                 "Re-timed: the program's path kept sample by sample, its timing the fastest safe at every sample "
+                 "within the joints' speed and acceleration limits (TOPP-RA, Pham and Pham 2018); " +
+                     (answer ? CycleTimes(result) : std::string("no answer")) + ".");
+  return s;
+}
+
+std::vector<RetimeSlowdown> RetimeSlowdowns(const RetimeResult& result) {
+  std::vector<RetimeSlowdown> slowdowns;
+  const std::size_t n = result.path_speed.size();
+  if (n == 0 || result.original_time_s.size() != n) return slowdowns;
+  constexpr double kSlow = 1.0 - 1e-9;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(result.path_speed[i] < kSlow)) continue;
+    if (slowdowns.empty() || slowdowns.back().last_sample + 1 != i) {
+      slowdowns.push_back(RetimeSlowdown{.first_sample = i, .last_sample = i, .start_time_s = result.original_time_s[i],
+                                         .end_time_s = result.original_time_s[i], .min_path_speed = result.path_speed[i],
+                                         .slowest_sample = i, .bound = "", .link = "", .region = ""});
+    }
+    RetimeSlowdown& d = slowdowns.back();
+    d.last_sample = i;
+    d.end_time_s = result.original_time_s[i];
+    if (result.path_speed[i] <= d.min_path_speed) {
+      d.min_path_speed = result.path_speed[i];
+      d.slowest_sample = i;
+    }
+  }
+  for (RetimeSlowdown& d : slowdowns) {
+    const std::size_t i = d.slowest_sample;
+    const optim::PathSpeedBound bound = i < result.bound.size() ? result.bound[i] : optim::PathSpeedBound::kPathSpeed;
+    d.bound = optim::ToString(bound);
+    const bool safety = bound == optim::PathSpeedBound::kPathSpeed && i < result.safe_path_speed.size() &&
+                        result.safe_path_speed[i] <= result.path_speed[i] * (1.0 + 1e-6);
+    if (!safety) continue;
+    if (i < result.limiting_link.size() && result.limiting_link[i] < result.before.links.size()) {
+      d.link = result.before.links[result.limiting_link[i]];
+    }
+    if (i < result.limiting_region.size() && result.limiting_region[i] < result.before.regions.size()) {
+      d.region = result.before.regions[result.limiting_region[i]];
+    }
+  }
+  return slowdowns;
 }
 
 }  // namespace covopt::audit

@@ -26,6 +26,10 @@ std::vector<std::string_view> InputKeys(ReportKind kind) {
       return {"solve_for", "scene", "robot_model", "safety_factor", "limits", "search_limit", "uncertain_inputs"};
     case ReportKind::kTrajectory:
       return {"scene", "safety_factor", "limits", "search_limit", "regions", "joint_names", "sample_count"};
+    case ReportKind::kRetime:
+      return {"robot", "coverings", "contact_area_m2", "reaction_delay_s", "braking_m_per_s2", "safety_factor",
+              "sample_count", "surface", "regions", "joint_names", "joint_speed_limits", "joint_acceleration_limits",
+              "max_speed_scale", "tolerance"};
     case ReportKind::kAudit:
       return {"robot", "coverings", "contact_area_m2", "reaction_delay_s", "braking_m_per_s2", "safety_factor",
               "sample_count", "surface", "regions"};

@@ -21,7 +21,7 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Models: their assumptions and validity limits, from docs/model.md.
 
-enum class Model { kHead, kBody, kFoam, kSpeedLimit, kTrajectory, kAudit, kRobust };
+enum class Model { kHead, kBody, kFoam, kSpeedLimit, kTrajectory, kAudit, kRetime, kRobust };
 
 struct ModelText {
   Model model;
@@ -94,6 +94,17 @@ const std::vector<ModelText>& ModelTexts() {
         "One covering per link, on the surface's radius (§14.6).",
         "The contact direction is the velocity: conservative for the speed, not necessarily for the mass (§14.6).",
         "Everything the body-region model and §7 leave out applies here too (§14.6)."}},
+      {Model::kRetime,
+       "Re-timing: the fastest safe timing of the same path",
+       {"The path (the joint positions, sample by sample) is kept; only its timing changes. Each sample's largest "
+        "safe path speed is the audit's safe speed scale of that sample alone (docs/model.md, Re-timing).",
+        "The timing is time-optimal among profiles whose path acceleration is constant between samples, under the "
+        "safety limit, the programmed-speed cap and the joints' speed and acceleration limits (TOPP-RA: H. Pham and "
+        "Q.-C. Pham, IEEE Trans. Robotics 34(3), 2018).",
+        "The re-timed program is audited again at its own samples; between samples the safety limit is not "
+        "checked, as in every audit.",
+        "Motor torques, jerk and the controller's tracking error are not modelled: the robot must be able to follow "
+        "the re-timed program as written."}},
       {Model::kRobust,
        "Ranges of inputs",
        {"With ranges, the worst case is searched over the whole box (its corners, then a global search) (docs/model.md "
@@ -311,8 +322,11 @@ void WriteModels(std::string& out, const ResultSummary& s, const Json& j) {
   if (has({"force", "pressure"})) models.insert(Model::kBody);
   if (s.covering.law == "foam") models.insert(Model::kFoam);
   if (s.kind == ResultSummary::Kind::kLimits) models.insert(Model::kSpeedLimit);
-  if (s.command == "robot --trajectory" || s.command == "audit") models.insert(Model::kTrajectory);
-  if (s.command == "audit") models.insert(Model::kAudit);
+  if (s.command == "robot --trajectory" || s.command == "audit" || s.command == "retime") {
+    models.insert(Model::kTrajectory);
+  }
+  if (s.command == "audit" || s.command == "retime") models.insert(Model::kAudit);
+  if (s.command == "retime") models.insert(Model::kRetime);
   if (Find(j, "uncertain_inputs")) models.insert(Model::kRobust);
   for (const ModelText& m : ModelTexts()) {
     if (!models.count(m.model)) continue;
