@@ -191,6 +191,58 @@ JointTrajectory ReadJointTrajectory(const std::filesystem::path& path, std::size
                               path.string());
 }
 
+namespace {
+
+/// `value` in its shortest form that reads back exactly (as covopt::FormatShortest, which robot
+/// does not link); a non-finite value is refused, the reader would not take it.
+void AppendShortest(std::string& text, double value, std::size_t sample, const char* what) {
+  if (!std::isfinite(value)) {
+    throw std::invalid_argument("trajectory sample " + std::to_string(sample + 1) + ": " + what +
+                                " is not a finite number; the trajectory CSV holds finite decimals only");
+  }
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  text.append(buffer, result.ptr);
+}
+
+}  // namespace
+
+void WriteJointTrajectory(std::ostream& out, const JointTrajectory& trajectory,
+                          const std::vector<std::string>& joint_names) {
+  const std::size_t n = joint_names.size();
+  if (trajectory.positions.size() != trajectory.size() || trajectory.velocities.size() != trajectory.size()) {
+    throw std::invalid_argument("trajectory: time_s (" + std::to_string(trajectory.size()) + "), positions (" +
+                                std::to_string(trajectory.positions.size()) + ") and velocities (" +
+                                std::to_string(trajectory.velocities.size()) + ") differ in length");
+  }
+  for (std::size_t i = 0; i < trajectory.size(); ++i) {
+    if (static_cast<std::size_t>(trajectory.positions[i].size()) != n ||
+        static_cast<std::size_t>(trajectory.velocities[i].size()) != n) {
+      throw std::invalid_argument("trajectory sample " + std::to_string(i + 1) + ": " +
+                                  std::to_string(trajectory.positions[i].size()) + " positions and " +
+                                  std::to_string(trajectory.velocities[i].size()) + " velocities; the joint names give " +
+                                  std::to_string(n) + " joints");
+    }
+  }
+  std::string text = "time_s";
+  for (const std::string& name : joint_names) text += "," + name;
+  for (const std::string& name : joint_names) text += "," + name + "_velocity";
+  text += "\n";
+  for (std::size_t i = 0; i < trajectory.size(); ++i) {
+    AppendShortest(text, trajectory.time_s[i], i, "time");
+    for (Eigen::Index j = 0; j < static_cast<Eigen::Index>(n); ++j) {
+      text += ',';
+      AppendShortest(text, trajectory.positions[i][j], i, "a position");
+    }
+    for (Eigen::Index j = 0; j < static_cast<Eigen::Index>(n); ++j) {
+      text += ',';
+      AppendShortest(text, trajectory.velocities[i][j], i, "a velocity");
+    }
+    text += "\n";
+  }
+  out << text;
+}
+
 ContactMotionResult ContactMotion(const KinematicChain& chain, const JointTrajectory& trajectory,
                                   const Eigen::Vector3d& point_in_tip_m,
                                   const ContactMotionOptions& options) {
