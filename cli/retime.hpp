@@ -20,7 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "audit.hpp"
+#include "audit_inputs.hpp"
+#include "report_option.hpp"
+#include "run_context.hpp"
 
 namespace CLI {
 class App;

@@ -128,7 +128,8 @@ std::string CycleTimes(const RetimeResult& r) {
 
 ResultSummary SummarizeRetime(const AuditSetup& setup, const RetimeResult& result, double tolerance) {
   const bool answer = result.status == RetimeStatus::kSafe || result.status == RetimeStatus::kAtRest;
-  ResultSummary s = SummarizeAudit(setup, answer ? result.after : result.before);
+  // At rest nothing was re-timed: the original program's audit is the answer.
+  ResultSummary s = SummarizeAudit(setup, result.status == RetimeStatus::kSafe ? result.after : result.before);
   s.command = "retime";
   if (answer) {
     // The re-audit accepts a sample within its tolerance: a time-optimal program sits on its limit.
@@ -149,10 +150,7 @@ ResultSummary SummarizeRetime(const AuditSetup& setup, const RetimeResult& resul
     s.state = s.evaluated ? VerdictState::kUnsafe : VerdictState::kNotEvaluated;
     s.governing_case = "no safe timing (" + std::string(ToString(result.status)) + "): " + result.message;
   }
-  s.scope.insert(s.scope.begin(),
-                 "Re-timed: the program's path kept sample by sample, its timing the fastest safe at every sample "
-                 "within the joints' speed and acceleration limits (TOPP-RA, Pham and Pham 2018); " +
-                     (answer ? CycleTimes(result) : std::string("no answer")) + ".");
+  s.scope = result.scope;  // the audit's, and what the re-timing kept and bounded
   return s;
 }
 

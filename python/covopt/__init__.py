@@ -22,7 +22,7 @@ release the GIL.
 from . import _body_regions, _covopt, _provenance
 from ._body_regions import (BodyContact, BodyRegionDesign, BodyRegionSpeedLimitTable, BodyRegionSweep,
                             BodyRegionTrajectoryCheck)
-from ._audit import Audit, AuditFailure, AuditManyError, audit, audit_many
+from ._audit import Audit, AuditFailure, AuditManyError, Retime, audit, audit_many, retime
 from ._catalog import Catalog
 from ._errors import ComputationError
 from ._inputs import Regions, Rule, takes_objects as _takes_objects
@@ -39,7 +39,7 @@ __all__ = ["Scene", "Rule", "Regions", "Result", "simulate", "sweep", "optimize"
            "contact_motion", "check_trajectory", "worst_case", "injury_probability",
            "sensitivities", "robust_optimize", "load_scene", "BodyContact", "BodyRegionSpeedLimitTable",
            "BodyRegionDesign", "BodyRegionTrajectoryCheck", "BodyRegionSweep", "Audit", "AuditFailure", "AuditManyError",
-           "audit", "audit_many"]
+           "audit", "audit_many", "Retime", "retime"]
 
 
 def _scene(scene, ranged=False):

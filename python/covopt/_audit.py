@@ -1,6 +1,7 @@
-"""covopt.audit: the whole robot along its motion (``covopt audit --json``), and
-covopt.audit_many: a plant's programs audited in parallel through dask.distributed
-(docs/guide/audit.md)."""
+"""covopt.audit: the whole robot along its motion (``covopt audit --json``); covopt.retime:
+the fastest safe timing of the program (``covopt retime --json``); and covopt.audit_many: a
+plant's programs audited (or re-timed) in parallel through dask.distributed
+(docs/guide/audit.md, docs/guide/retime.md)."""
 
 import os
 
@@ -8,7 +9,7 @@ from ._inputs import takes_objects
 from . import _covopt, _provenance
 from ._results import Result
 
-__all__ = ["Audit", "AuditFailure", "AuditManyError", "audit", "audit_many"]
+__all__ = ["Audit", "AuditFailure", "AuditManyError", "Retime", "audit", "audit_many", "retime"]
 
 
 class Audit(Result):
@@ -86,16 +87,72 @@ def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surfa
     return Audit(_covopt.audit(urdf, tip, trajectory, base, urdf_text, _scene(scene), **_given(**options)))
 
 
+class Retime(Result):
+    """covopt.retime's result: the object of ``covopt retime --json`` (``to_dict()`` is it);
+    ``ok`` is True (audit_many's AuditFailure has False).
+
+    status ("safe", "at-rest", "infeasible", "not-safe", "evaluation-failed"), message,
+    summary, cycle_time_s (None without a safe timing), original_cycle_time_s,
+    uniform_cycle_time_s, uniform_speed_scale, max_speed_scale, tolerance, joint_names,
+    joint_speed_limits (None: none), joint_acceleration_limits, profile (status, message),
+    slowdowns (start_time_s, end_time_s, first_sample, last_sample, min_path_speed, bound,
+    link, region), samples (original_time_s, time_s, safe_path_speed, path_speed, bound,
+    limiting_link, limiting_region), before (the original program's audit: status, message,
+    safe_speed_scale, limiting), after (the re-timed program's audit, as covopt.audit's dict),
+    thickness_sweep (designs, thicknesses_m, points: design, thickness_m, status,
+    cycle_time_s, uniform_cycle_time_s, safe_speed_scale, message), the audit's inputs
+    (criterion, safety_factor, robot, surface, regions, coverings, ...), scope, notes, warnings.
+    """
+    _report_kind = "retime"
+    ok = True
+
+
+@takes_objects
+@_provenance.stamped
+def retime(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, joint_accel_limit=None,
+           joint_speed_limit=None, max_speed_scale=None, output=None, thickness=None, materials=None,
+           design=False, design_materials=None, **options):
+    """The fastest timing of `trajectory`'s path that is safe at every sample and keeps the
+    joints' limits (audit::Retime), re-audited, as ``covopt retime --json``; returns a Retime.
+
+    The robot, trajectory, scene and the audit's keywords as audit() takes them (surface_file,
+    surface_spacing, box_edge_radius, flat_face_radius, link_coverings, body_region, contact_area,
+    payload_*, ...). joint_accel_limit (required: rad/s², one number for every joint or one per
+    joint), joint_speed_limit (rad/s, same; math.inf: none; default the URDF's), max_speed_scale
+    (default 1: never faster than programmed), output (a path: the re-timed trajectory CSV,
+    written when there is a safe timing). thickness ("0..40mm:9", or a list of lengths): the
+    cycle time against the covering's thickness, one line per material of materials (catalog
+    names; default the scene's covering), and with design=True the per-link design's point
+    (its candidates design_materials=, families=, as audit's materials= and families=).
+    ValueError on bad input.
+    """
+    from . import _given, _scene  # the package's helpers (covopt/__init__.py)
+    keywords = dict(joint_accel_limit=joint_accel_limit, joint_speed_limit=joint_speed_limit,
+                    max_speed_scale=max_speed_scale, output=None if output is None else os.fspath(output),
+                    thickness=thickness, materials=materials, design=_given_flag(design),
+                    design_materials=design_materials)
+    unknown = sorted(set(options) - set(_KEYWORDS) - {"keep_ratio_over_time"})
+    if unknown:
+        raise TypeError(f"retime() got an unexpected keyword argument {unknown[0]!r}")
+    for flag in ("allow_full_compression", "allow_crushing", "allow_unknown_strength", "ignore_joint_limits",
+                 "keep_travel"):
+        if flag in options:
+            options[flag] = _given_flag(options[flag])
+    options.pop("keep_ratio_over_time", None)
+    return Retime(_covopt.retime(urdf, tip, trajectory, base, urdf_text, _scene(scene), **_given(**keywords, **options)))
+
+
 def _given_flag(value):
     """A flag as the extension takes it: None for its default False (not an input given), else
     the value itself, which must be a bool (design="yes" or design=0 is a ValueError there)."""
     return None if value is False else value
 
 
-def _audit_one(trajectory, urdf, tip, base, urdf_text, scene, options):
-    """One audit on a worker; the result travels as its dict (the scene pickles as its
-    keywords)."""
-    return audit(urdf, tip, trajectory, base, scene=scene, urdf_text=urdf_text, **options).to_dict()
+def _audit_one(trajectory, urdf, tip, base, urdf_text, scene, options, retime_it=False):
+    """One audit (or re-timing) on a worker; the result travels as its dict (the scene pickles
+    as its keywords)."""
+    call = retime if retime_it else audit
+    return call(urdf, tip, trajectory, base, scene=scene, urdf_text=urdf_text, **options).to_dict()
 
 
 class AuditFailure:
@@ -134,7 +191,7 @@ class AuditManyError(Exception):
 
 def audit_many(trajectories, urdf, tip, base=None, *, scene=None, urdf_text=None, client=None,
                scheduler_address=None, n_workers=2, threads_per_worker=1, processes=False, errors="collect",
-               **options):
+               retime=False, **options):
     """Audits many trajectories (a plant's programs) in parallel through dask.distributed;
     returns one result per program, in the order given: an Audit equal to audit(trajectory, ...)
     run serially (the same library call on the same input: the results are identical), or an
@@ -142,7 +199,9 @@ def audit_many(trajectories, urdf, tip, base=None, *, scene=None, urdf_text=None
     program's audit raised. One bad program never loses the others.
 
     trajectories: CSV paths (str or os.PathLike; a directory: its *.csv files, sorted) or
-    trajectory dicts. The other arguments as audit() takes them. errors="collect" (default):
+    trajectory dicts. The other arguments as audit() takes them. retime=True: each program is
+    re-timed instead (covopt.retime, its keywords among the options: joint_accel_limit=, ...),
+    and the results are Retimes. errors="collect" (default):
     failures are in the list; errors="raise": AuditManyError naming every failed program once
     all have run (its ``results`` holds them all). Where it runs:
     - client: a dask.distributed Client you made (used as it is, not closed);
@@ -166,6 +225,9 @@ def audit_many(trajectories, urdf, tip, base=None, *, scene=None, urdf_text=None
         raise ValueError(f"errors: expected \"collect\" or \"raise\" (got {errors!r})")
     if not isinstance(processes, bool):
         raise ValueError(f"processes: expected True or False (got {processes!r})")
+    if not isinstance(retime, bool):
+        raise ValueError(f"retime: expected True or False (got {retime!r})")
+    result_type = Retime if retime else Audit
     items = _expand(trajectories)
     urdf = os.fspath(urdf) if urdf is not None else None
     if client is None and scheduler_address is None and processes:
@@ -182,12 +244,12 @@ def audit_many(trajectories, urdf, tip, base=None, *, scene=None, urdf_text=None
                 client = Client(cluster)
             owned.insert(0, client)
         futures = client.map(_audit_one, items, urdf=urdf, tip=tip, base=base, urdf_text=urdf_text,
-                             scene=scene, options=options, pure=False)
+                             scene=scene, options=options, retime_it=retime, pure=False)
         wait(futures)
         results = []
         for index, (item, future) in enumerate(zip(items, futures)):
             try:
-                results.append(Audit(future.result()))
+                results.append(result_type(future.result()))
             except Exception as e:  # the program's error (or its worker's), kept with the program
                 program = item if isinstance(item, str) else f"trajectories[{index}]"
                 results.append(AuditFailure(index, program, e))

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <map>
+#include <sstream>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -23,6 +24,12 @@
 #include "covopt/audit/assemble.hpp"
 #include "covopt/audit/audit.hpp"
 #include "covopt/report/audit_json.hpp"
+#include "covopt/report/output_file.hpp"
+#include "covopt/report/retime_json.hpp"
+#include "covopt/audit/retime.hpp"
+#include "covopt/audit/retime_inputs.hpp"
+#include "covopt/chart/retime_charts.hpp"
+#include "covopt/robot/trajectory.hpp"
 #include "covopt/robot/payload.hpp"
 #include "covopt/robot/surface.hpp"
 #include "covopt/scene_file/link_coverings.hpp"
@@ -159,9 +166,12 @@ void SetDesignKeywords(const py::kwargs& kwargs, audit::AuditInputs& in) {
   }
 }
 
-py::object Audit(const py::object& urdf, const std::string& tip, const py::object& trajectory,
-                 const std::optional<std::string>& base, const std::optional<std::string>& urdf_text,
-                 const SceneInputs& inputs, const py::kwargs& kwargs) {
+/// The audit assembled from its keywords (covopt::audit::AssembleAudit), as covopt.audit and
+/// covopt.retime both take them.
+audit::AssembledAudit AssembleFromKeywords(const py::object& urdf, const std::string& tip, const py::object& trajectory,
+                                           const std::optional<std::string>& base,
+                                           const std::optional<std::string>& urdf_text, const SceneInputs& inputs,
+                                           const py::kwargs& kwargs) {
   py::kwargs region_kwargs = kwargs;
   if (!Option(region_kwargs, "body_region")) region_kwargs["body_region"] = audit::kDefaultBodyRegions;
   const BodyRegionSelection regions = SelectBodyRegions(inputs, region_kwargs);
@@ -196,7 +206,13 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
   in.scene_warnings = InputAndCrushWarnings(inputs);
   audit::AssembledAudit assembled = audit::AssembleAudit(in);
   assembled.setup.keep_travel = Flag(kwargs, "keep_travel");
+  return assembled;
+}
 
+py::object Audit(const py::object& urdf, const std::string& tip, const py::object& trajectory,
+                 const std::optional<std::string>& base, const std::optional<std::string>& urdf_text,
+                 const SceneInputs& inputs, const py::kwargs& kwargs) {
+  const audit::AssembledAudit assembled = AssembleFromKeywords(urdf, tip, trajectory, base, urdf_text, inputs, kwargs);
   audit::AuditResult result;
   try {
     py::gil_scoped_release release;
@@ -214,10 +230,112 @@ py::object Audit(const py::object& urdf, const std::string& tip, const py::objec
   });
 }
 
+/// A joint limit keyword: one number for every joint, or a sequence of one per joint.
+std::optional<Eigen::VectorXd> JointLimits(const py::kwargs& kwargs, const char* keyword, std::size_t joints,
+                                           double max, bool allow_infinite) {
+  const auto v = Option(kwargs, keyword);
+  if (!v) return std::nullopt;
+  std::vector<double> values;
+  try {
+    if (py::isinstance<py::str>(*v)) throw py::type_error("a string");
+    if (py::hasattr(*v, "__iter__")) {
+      for (const py::handle item : *v) values.push_back(py::float_(item).cast<double>());
+    } else {
+      values.push_back(py::float_(*v).cast<double>());
+    }
+  } catch (const py::error_already_set&) {
+    throw std::invalid_argument(std::string(keyword) + ": expected a number (SI: rad/s, rad/s²) or one per joint (got " +
+                                py::repr(*v).cast<std::string>() + ")");
+  } catch (const py::type_error&) {
+    throw std::invalid_argument(std::string(keyword) + ": expected a number (SI: rad/s, rad/s²) or one per joint (got " +
+                                py::repr(*v).cast<std::string>() + ")");
+  }
+  return audit::JointLimitVector(values, joints, keyword, max, allow_infinite);
+}
+
+/// thickness=: a sweep spec ("0..40mm:9") or a sequence of lengths.
+std::vector<double> Thicknesses(const py::object& value) {
+  if (py::isinstance<py::str>(value)) return audit::ThicknessGrid(value.cast<std::string>(), "thickness");
+  std::string spec;
+  for (const py::handle item : value) {
+    spec += (spec.empty() ? "" : ",") + (py::isinstance<py::str>(item) ? item.cast<std::string>()
+                                                                       : py::str(py::float_(item)).cast<std::string>());
+  }
+  return audit::ThicknessGrid(spec, "thickness");
+}
+
+py::object Retime(const py::object& urdf, const std::string& tip, const py::object& trajectory,
+                  const std::optional<std::string>& base, const std::optional<std::string>& urdf_text,
+                  const SceneInputs& inputs, const py::kwargs& given) {
+  // materials= is the sweep's here; the per-link design's materials are design_materials=.
+  py::kwargs kwargs;
+  for (const auto& [key, value] : given) {
+    const std::string k = py::str(key).cast<std::string>();
+    if (k == "materials" || k == "joint_accel_limit" || k == "joint_speed_limit" || k == "max_speed_scale" ||
+        k == "thickness") {
+      continue;
+    }
+    kwargs[py::str(k == "design_materials" ? "materials" : k)] = value;
+  }
+  kwargs["keep_ratio_over_time"] = false;
+  const audit::AssembledAudit assembled = AssembleFromKeywords(urdf, tip, trajectory, base, urdf_text, inputs, kwargs);
+  const std::size_t joints = assembled.setup.chain.joint_count();
+  audit::RetimeOptions options;
+  options.joint_acceleration_limits =
+      JointLimits(given, "joint_accel_limit", joints, audit::kMaxJointAccelerationLimit, false);
+  if (!options.joint_acceleration_limits) {
+    throw std::invalid_argument("joint_accel_limit is required (the URDF gives no acceleration limit): one number in "
+                                "rad/s² for every joint, or one per joint");
+  }
+  options.joint_speed_limits = JointLimits(given, "joint_speed_limit", joints, audit::kMaxJointSpeedLimit, true);
+  if (const auto v = Option(given, "max_speed_scale")) {
+    if (!py::isinstance<py::int_>(*v) && !py::isinstance<py::float_>(*v)) {
+      throw std::invalid_argument("max_speed_scale: expected a number in (0, 100] (got " + py::repr(*v).cast<std::string>() + ")");
+    }
+    options.max_speed_scale = v->cast<double>();
+  }
+  std::optional<report::RetimeSweep> sweep;
+  if (const auto v = Option(given, "thickness")) {
+    sweep.emplace();
+    sweep->thicknesses_m = Thicknesses(*v);
+    sweep->designs = audit::CycleTimeDesigns(assembled, materials::Catalog::BuiltIn(), Names(given, "materials"),
+                                             Flag(given, "design"), "materials");
+  } else if (Option(given, "materials")) {
+    throw std::invalid_argument("materials: the sweep's materials need thickness= (the thicknesses to sweep)");
+  }
+  audit::RetimeResult result;
+  try {
+    py::gil_scoped_release release;
+    result = audit::Retime(assembled.setup, assembled.trajectory, options);
+    if (sweep) {
+      sweep->points = audit::CycleTimeAgainstThickness(assembled.setup, assembled.trajectory, options, sweep->designs,
+                                                       sweep->thicknesses_m);
+    }
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(inputs.Attributed(e.what()));
+  }
+  const bool answer = result.status == audit::RetimeStatus::kSafe || result.status == audit::RetimeStatus::kAtRest;
+  if (const auto file = Option(given, "output"); file && answer) {
+    std::ostringstream csv;
+    robot::WriteJointTrajectory(csv, result.trajectory, assembled.setup.chain.joint_names());
+    report::WriteFileAtomically(Path(*file), csv.str());
+  }
+  py::dict d = JsonToPython(
+      report::RetimeJson(assembled.setup, result, options, sweep ? &*sweep : nullptr, assembled.input_warnings, -1));
+  return WithReportCharts(std::move(d), [result, sweep, name = TrajectoryName(trajectory)] {
+    std::vector<chart::GnuplotChart> charts;
+    if (!result.path_speed.empty()) charts.push_back(chart::RetimeSpeedChart(result, name));
+    if (sweep && !sweep->points.empty()) charts.push_back(chart::CycleTimeChart(*sweep, result.original_cycle_time_s));
+    return charts;
+  });
+}
+
 }  // namespace
 
 void BindAudit(py::module_& m) {
   m.def("audit", &Audit, py::arg("urdf"), py::arg("tip"), py::arg("trajectory"), py::arg("base"),
+        py::arg("urdf_text"), py::arg("scene"));
+  m.def("retime", &Retime, py::arg("urdf"), py::arg("tip"), py::arg("trajectory"), py::arg("base"),
         py::arg("urdf_text"), py::arg("scene"));
 }
 

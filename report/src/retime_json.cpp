@@ -124,7 +124,7 @@ std::string RetimeJson(const audit::AuditSetup& setup, const audit::RetimeResult
   j["slowdowns"] = SlowdownsJson(result);
   j["samples"] = SamplesJson(result);
   j["before"] = BeforeJson(before);
-  j["after"] = answer ? ordered_json::parse(AuditJson(setup, result.after, {}, -1)) : ordered_json(nullptr);
+  j["after"] = result.status == audit::RetimeStatus::kSafe ? ordered_json::parse(AuditJson(setup, result.after, {}, -1)) : ordered_json(nullptr);
   j["thickness_sweep"] = sweep != nullptr ? SweepJson(*sweep) : ordered_json(nullptr);
   for (const char* key : {"criterion", "safety_factor", "contact_area_m2", "reaction_delay_s", "braking_m_per_s2",
                           "robot", "surface", "sample_count", "regions", "coverings"}) {

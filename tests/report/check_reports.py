@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The browser check of covopt's reports (issues 26 and 36), run by CTest (label "browser").
 
-For each report kind (simulate, optimize, speed-limit, robot --trajectory, audit) and state (SAFE,
+For each report kind (simulate, optimize, speed-limit, robot --trajectory, audit, retime) and state (SAFE,
 MARGINAL, UNSAFE, LIMITS), a body-region mode among them, covopt runs with --json, the sign-off
 fields (--project, --cell, --assessor, --note) and --report x.html, then with --report x.pdf.
 The result's "summary" object is the expectation; the report must show it as it is:
@@ -222,6 +222,14 @@ def verdict_audit(j):
     return safe, ratio
 
 
+def verdict_retime(j):
+    safe = j["status"] in ("safe", "at-rest")
+    audit = j["after"] if isinstance(j.get("after"), dict) else None
+    if audit is None:
+        raise CheckFailed("the retime result has no re-audit (after) to report")
+    return safe, max_of(numbers(*[c.get("governing_ratio") for c in audit["cells"]]), "the re-audit's cells")
+
+
 # kind: (the JSON's verdict and governing ratio, its top-level input keys (those it has are
 # checked), the charts expected: one each, from report/charts.hpp)
 KINDS = {
@@ -238,6 +246,10 @@ KINDS = {
     "audit": (verdict_audit,
               ["robot", "coverings", "contact_area_m2", "reaction_delay_s", "braking_m_per_s2",
                "safety_factor", "sample_count", "surface", "regions"], 1),
+    "retime": (verdict_retime,
+               ["robot", "coverings", "contact_area_m2", "reaction_delay_s", "braking_m_per_s2",
+                "safety_factor", "sample_count", "surface", "regions", "joint_names", "joint_speed_limits",
+                "joint_acceleration_limits", "max_speed_scale", "tolerance"], 1),
 }
 
 
@@ -1169,6 +1181,7 @@ def cases(root):
     # A compressible covering (ν 0.3): a solid elastomer (ν >= 0.45) would leave its law at 20 % strain.
     audit = robot + ["--covering-modulus", "0.5MPa", "--covering-poisson", "0.3",
                      "--contact-area", "1cm2", "--flat-face-radius", "20mm"]
+    retime = audit + ["--covering-thickness", "10mm", "--surface-spacing", "100mm", "--joint-accel-limit", "10"]
     speed_limit = ["speed-limit", "--material", "elastomer Shore A60", "--covering-thickness", "20mm"]
     # (name, kind, arguments, state, margin threshold, most pages of the PDF). optimize's default
     # answer has a margin of 0.2 %: MARGINAL at the default 10 %, SAFE at 0.1 %. speed-limit is
@@ -1190,6 +1203,8 @@ def cases(root):
          "unsafe", 0.1, PDF_MAX_PAGES),
         ("audit-safe", "audit", ["audit"] + audit + ["--covering-thickness", "40mm"], "safe", 0.1, 8),
         ("audit-unsafe", "audit", ["audit"] + audit + ["--covering-thickness", "10mm"], "unsafe", 0.1, 8),
+        # A time-optimal timing touches its limit: MARGINAL (margin about 0) at the default threshold.
+        ("retime-marginal", "retime", ["retime"] + retime + ["--thickness", "5mm,20mm"], "marginal", 0.1, 8),
     ]
     # Bad input, one per kind: exit 2 and no report.
     bad = [
@@ -1198,6 +1213,7 @@ def cases(root):
         ["speed-limit", "--robot-mass", "-1kg"],
         ["robot"] + robot + ["--covering-thickness", "-1mm"],
         ["audit"] + audit + ["--covering-thickness", "-1mm"],
+        ["retime"] + retime[:-2] + ["--joint-accel-limit", "-10"],
     ]
     return runs, bad
 
@@ -1207,7 +1223,7 @@ def cases(root):
 APPENDIX_CASES = ("optimize-marginal", "audit-safe")
 DOCS_CASES = {"simulate-safe": "simulate", "optimize-marginal": "optimize", "speed-limit": "speed-limit",
               "trajectory-safe": "trajectory", "audit-unsafe": "audit",
-              "simulate-body-regions": "body-regions"}
+              "simulate-body-regions": "body-regions", "retime-marginal": "retime"}
 
 
 def run_covopt(covopt, arguments, env=None):

@@ -28,7 +28,7 @@ ResultSummary SummarizeAudit(const AuditSetup& setup, const AuditResult& result)
 /// 1 - SF × 1/SF = 0 and its state MARGINAL unless the programmed speed caps it. Infeasible or
 /// not safe: UNSAFE, the original program's rows, the message as the governing case; the audit
 /// could not judge: NOT EVALUATED. The cycle times (re-timed, original, uniform slow-down) are
-/// in the robot's motion and the scope.
+/// in the governing case and the robot's motion; the scope is the result's.
 ResultSummary SummarizeRetime(const AuditSetup& setup, const RetimeResult& result, double tolerance);
 
 /// One stretch of the original program where the re-timed one runs slower than programmed
