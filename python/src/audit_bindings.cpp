@@ -236,17 +236,17 @@ std::optional<Eigen::VectorXd> JointLimits(const py::kwargs& kwargs, const char*
   const auto v = Option(kwargs, keyword);
   if (!v) return std::nullopt;
   std::vector<double> values;
+  const auto number = [&](const py::handle& item) {
+    if (py::isinstance<py::str>(item) || py::isinstance<py::bool_>(item)) throw py::cast_error("not a number");
+    return item.cast<double>();
+  };
   try {
-    if (py::isinstance<py::str>(*v)) throw py::type_error("a string");
-    if (py::hasattr(*v, "__iter__")) {
-      for (const py::handle item : *v) values.push_back(py::float_(item).cast<double>());
+    if (!py::isinstance<py::str>(*v) && py::hasattr(*v, "__iter__")) {
+      for (const py::handle item : *v) values.push_back(number(item));
     } else {
-      values.push_back(py::float_(*v).cast<double>());
+      values.push_back(number(*v));
     }
-  } catch (const py::error_already_set&) {
-    throw std::invalid_argument(std::string(keyword) + ": expected a number (SI: rad/s, rad/s²) or one per joint (got " +
-                                py::repr(*v).cast<std::string>() + ")");
-  } catch (const py::type_error&) {
+  } catch (const py::cast_error&) {
     throw std::invalid_argument(std::string(keyword) + ": expected a number (SI: rad/s, rad/s²) or one per joint (got " +
                                 py::repr(*v).cast<std::string>() + ")");
   }
@@ -256,10 +256,13 @@ std::optional<Eigen::VectorXd> JointLimits(const py::kwargs& kwargs, const char*
 /// thickness=: a sweep spec ("0..40mm:9") or a sequence of lengths.
 std::vector<double> Thicknesses(const py::object& value) {
   if (py::isinstance<py::str>(value)) return audit::ThicknessGrid(value.cast<std::string>(), "thickness");
+  if (!py::hasattr(value, "__iter__")) {
+    throw std::invalid_argument("thickness: expected a sweep (\"0..40mm:9\") or a list of lengths (got " +
+                                py::repr(value).cast<std::string>() + ")");
+  }
   std::string spec;
   for (const py::handle item : value) {
-    spec += (spec.empty() ? "" : ",") + (py::isinstance<py::str>(item) ? item.cast<std::string>()
-                                                                       : py::str(py::float_(item)).cast<std::string>());
+    spec += (spec.empty() ? "" : ",") + py::str(item).cast<std::string>();
   }
   return audit::ThicknessGrid(spec, "thickness");
 }

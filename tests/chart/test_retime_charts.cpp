@@ -6,6 +6,8 @@
 #include <limits>
 #include <string>
 
+#include <covopt/core/body_contact.hpp>
+
 #include "chart_test_support.hpp"
 #include "covopt/chart/retime_charts.hpp"
 
