@@ -272,10 +272,6 @@ void PlanRadii(const AuditSetup& setup, const robot::LinkSurface& link, bool cov
   }
 }
 
-}  // namespace detail
-
-namespace {
-
 /// The surface's links, each with its covering and its limits per distinct radius and region;
 /// their names and point counts into `result`.
 std::vector<LinkPlan> PlanLinks(const AuditSetup& setup, const RegionLimits& regions, AuditResult& result) {
@@ -315,6 +311,10 @@ std::vector<LinkPlan> PlanLinks(const AuditSetup& setup, const RegionLimits& reg
   }
   return plans;
 }
+
+}  // namespace detail
+
+namespace {
 
 /// A braking robot: the braked cells and their warnings. false: the time path failed, and
 /// `result` says so (no verdict).

@@ -229,6 +229,11 @@ std::string SampleWhere(const robot::JointTrajectory& t, std::size_t i);
 /// replaced by flat_face_radius_m when covered. Throws for a covered flat point without one.
 void PlanRadii(const AuditSetup& setup, const robot::LinkSurface& link, bool covered, LinkPlan& plan);
 
+/// The surface's links, each with its covering and its limits per distinct radius and region
+/// (throws for a link off the chain, a bare link without a contact area, a covered flat point
+/// without flat_face_radius_m); their names and point counts into `result` (audit.cpp).
+std::vector<LinkPlan> PlanLinks(const AuditSetup& setup, const RegionLimits& regions, AuditResult& result);
+
 /// The pass over the trajectory: cells, the per-sample rows, and (for the design) each link's
 /// energy demand per radius and region.
 struct Pass {
