@@ -1,6 +1,7 @@
 // The braking robot's per-sample safe path speed for Retime (docs/model.md, "Re-timing"): a
 // sample's braked scale is the minimum over its point-samples and regions of v_b(m)/v, found by
-// branch and bound as the audit's braked cells are (audit_braking.cpp).
+// branch and bound as the audit's braked cells are (audit_braking.cpp), over the regions each
+// point's exposure zone exposes.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -31,10 +32,14 @@ class SampleBrakedSearch {
   /// Raises `safe` (the unbraked per-sample limits) to the braked ones.
   void Run(const robot::JointTrajectory& trajectory, SafePathSpeed& safe) {
     const std::size_t n_regions = regions_.size();
+    const Exposure& exposure = regions_.exposure();
+    std::vector<std::uint8_t> exposed(n_regions, 1);
     const auto on_point = [&](std::size_t, std::size_t l, std::size_t p, const robot::PointMotion& m) {
+      if (!exposure.everywhere() && !exposure.At(m.position_m, exposed)) return;  // in no zone: not judged
       const LinkPlan& plan = plans_[l];
       const EnergyLimit* limits = &plan.limits[plan.point_radius[p] * n_regions];
       for (std::size_t r = 0; r < n_regions; ++r) {
+        if (!exposed[r]) continue;
         const double v_max = MaxSpeed(limits[r], 1.0 / m.reflected_mass_kg + regions_.inverse_body_mass(r));
         candidates_.push_back(
             Candidate{v_max / m.speed_m_per_s, m.speed_m_per_s, m.reflected_mass_kg, l, plan.point_radius[p], r});
