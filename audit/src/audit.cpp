@@ -150,11 +150,16 @@ Pass RunPass(const AuditSetup& setup, const robot::JointTrajectory& trajectory, 
   }
   double current_time = 0.0;
   std::size_t current_sample = trajectory.size();
+  const Exposure& exposure = regions.exposure();
+  std::vector<std::uint8_t> exposed(n_regions, 1);
+  pass.link_moves.assign(n_links, 0);
   const auto on_point = [&](std::size_t i, std::size_t l, std::size_t p, const robot::PointMotion& m) {
     if (i != current_sample) {  // the first moving point of sample i: its time
       current_sample = i;
       current_time = trajectory.time_s[i];
     }
+    pass.link_moves[l] = 1;
+    if (!exposure.everywhere() && !exposure.At(m.position_m, exposed)) return;  // in no zone: not judged
     const LinkPlan& plan = plans[l];
     const double v = m.speed_m_per_s;
     const double inverse_mass = 1.0 / m.reflected_mass_kg;  // 0 for a fixed direction
@@ -163,6 +168,7 @@ Pass RunPass(const AuditSetup& setup, const robot::JointTrajectory& trajectory, 
     AuditCell* row = &pass.cells[l * n_regions];
     double& worst = link_ratio[l];
     for (std::size_t r = 0; r < n_regions; ++r) {
+      if (!exposed[r]) continue;
       const double inverse_mass_sum = inverse_mass + inverse_body_mass[r];  // 1/μ
       const double v_max = MaxSpeed(limits[r], inverse_mass_sum);
       const double ratio = v / (sf * v_max);
@@ -230,6 +236,11 @@ std::vector<std::string> Scope(const AuditSetup& setup) {
                     FormatSignificant(setup.braking_m_per_s2) +
                     " m/s² (docs/model.md §10.2): the governing ratios are the braked robot's, on the time path");
   }
+  if (!setup.exposure_zones.empty()) {
+    scope.push_back("Exposure zones (" + std::to_string(setup.exposure_zones.size()) +
+                    ", boxes in the base frame, faces inside): a point-sample is judged against a region only where a "
+                    "zone exposes that region; cells no zone exposes are not judged");
+  }
   scope.push_back(
       "Each surface point at each sample: its velocity and the reflected mass along it (rigid links, no rotor "
       "inertia); every point of a link wears the link's covering on the point's radius of curvature.");
@@ -272,10 +283,6 @@ void PlanRadii(const AuditSetup& setup, const robot::LinkSurface& link, bool cov
   }
 }
 
-}  // namespace detail
-
-namespace {
-
 /// The surface's links, each with its covering and its limits per distinct radius and region;
 /// their names and point counts into `result`.
 std::vector<LinkPlan> PlanLinks(const AuditSetup& setup, const RegionLimits& regions, AuditResult& result) {
@@ -316,6 +323,10 @@ std::vector<LinkPlan> PlanLinks(const AuditSetup& setup, const RegionLimits& reg
   return plans;
 }
 
+}  // namespace detail
+
+namespace {
+
 /// A braking robot: the braked cells and their warnings. false: the time path failed, and
 /// `result` says so (no verdict).
 bool Brake(const AuditSetup& setup, const robot::JointTrajectory& trajectory, const RegionLimits& regions,
@@ -346,6 +357,31 @@ bool Brake(const AuditSetup& setup, const robot::JointTrajectory& trajectory, co
   return true;
 }
 
+/// The cells the exposure zones leave out: AuditCell::not_judged, the count and the warning.
+void MarkNotJudged(const AuditSetup& setup, const RegionLimits& regions, const Pass& pass, AuditResult& result) {
+  result.exposure_zones = setup.exposure_zones;
+  const Exposure& exposure = regions.exposure();
+  if (exposure.everywhere()) return;
+  for (AuditCell& c : result.cells) {
+    if (c.sample) continue;
+    if (!exposure.Anywhere(c.region)) {
+      c.not_judged = "no exposure zone exposes the region";
+    } else if (pass.link_moves[c.link]) {
+      c.not_judged = "the link's moving points never enter a zone exposing the region";
+    } else {
+      continue;  // the link never moves
+    }
+    ++result.not_judged_cells;
+  }
+  if (result.not_judged_cells > 0) {
+    result.warnings.push_back(std::to_string(result.not_judged_cells) + " of " + std::to_string(result.cells.size()) +
+                              " link × region cells are not judged: the exposure zones (" +
+                              std::to_string(setup.exposure_zones.size()) +
+                              ") expose their region nowhere the link moves; a risk assessment must confirm that a "
+                              "person cannot present those regions there");
+  }
+}
+
 /// The safe speed scale, the cell that sets it, the status and the message.
 void SetLimitingCell(AuditResult& result) {
   result.safe_speed_scale = kInf;
@@ -359,7 +395,9 @@ void SetLimitingCell(AuditResult& result) {
   }
   if (!result.limiting_cell) {
     result.status = TrajectoryCheckStatus::kAtRest;
-    result.message = "at rest: no surface point moves";
+    result.message = result.not_judged_cells > 0
+                         ? "not judged: no moving surface point lies in an exposure zone that exposes a judged region"
+                         : "at rest: no surface point moves";
   } else {
     const AuditCell& c = result.cells[*result.limiting_cell];
     const std::string scale = FormatSignificant(result.safe_speed_scale, 4);
@@ -427,6 +465,7 @@ AuditResult Audit(const AuditSetup& setup, const robot::JointTrajectory& traject
   result.ratio_over_time = std::move(pass.ratio_over_time);
   result.time_s = std::move(pass.time_s);
   result.sample_count = pass.sample_count;
+  MarkNotJudged(setup, regions, pass, result);
   if (setup.braking_m_per_s2 > 0.0 && !Brake(setup, trajectory, regions, plans, result)) return result;
 
   SetLimitingCell(result);

@@ -106,12 +106,16 @@ class BrakedSearch {
     const std::size_t n_regions = regions_.size();
     std::vector<double> inverse_body_mass(n_regions);
     for (std::size_t r = 0; r < n_regions; ++r) inverse_body_mass[r] = regions_.inverse_body_mass(r);
+    const Exposure& exposure = regions_.exposure();
+    std::vector<std::uint8_t> exposed(n_regions, 1);
     const auto on_point = [&](std::size_t i, std::size_t l, std::size_t p, const robot::PointMotion& m) {
+      if (!exposure.everywhere() && !exposure.At(m.position_m, exposed)) return;  // in no zone: not judged
       const LinkPlan& plan = plans_[l];
       const double v = m.speed_m_per_s;
       const EnergyLimit* limits = &plan.limits[plan.point_radius[p] * n_regions];
       for (std::size_t r = 0; r < n_regions; ++r) {
         const std::size_t k = l * n_regions + r;
+        if (!exposed[r]) continue;
         if (!cells_[k].sample || (i == *cells_[k].sample && p == cells_[k].point)) continue;  // judged in 1.
         const double v_max = MaxSpeed(limits[r], 1.0 / m.reflected_mass_kg + inverse_body_mass[r]);
         const double ratio = v / (sf_ * v_max);

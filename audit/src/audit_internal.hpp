@@ -67,10 +67,58 @@ inline double MaxSpeed(const EnergyLimit& limit, double inverse_mass_sum) noexce
   return std::min(kModelMaxSpeed_m_per_s, std::sqrt(2.0 * limit.energy_J * inverse_mass_sum));
 }
 
+/// The exposure zones of a setup (AuditSetup::exposure_zones), resolved against the regions an
+/// audit judges: the one predicate "is region r exposed at this point" of every pass over the
+/// trajectory (the audit's, the braking robot's search, the re-timing's per-sample limits).
+/// A point on a box's face or edge counts as inside (min_m <= p <= max_m per axis).
+class Exposure {
+ public:
+  /// @throws std::invalid_argument naming the zone (its origin) and the field: a non-finite
+  ///         corner, min_m above max_m, no regions, a name that is no region, a zone named twice.
+  Exposure(const AuditSetup& setup, const std::vector<std::string>& region_names);
+  /// No zones: every region is exposed everywhere.
+  bool everywhere() const noexcept { return zones_.empty(); }
+  /// Whether any zone exposes region r (everywhere(): true).
+  bool Anywhere(std::size_t r) const noexcept { return everywhere() || anywhere_[r] != 0; }
+  /// The regions exposed at `p_m` (base frame) into `mask` (one entry per region, 1: exposed);
+  /// false when none is.
+  bool At(const Eigen::Vector3d& p_m, std::vector<std::uint8_t>& mask) const {
+    mask.assign(n_regions_, everywhere() ? 1 : 0);
+    if (everywhere()) return true;
+    bool any = false;
+    for (const Zone& z : zones_) {
+      if (!((p_m.array() >= z.min_m.array()).all() && (p_m.array() <= z.max_m.array()).all())) continue;
+      for (std::size_t r = 0; r < n_regions_; ++r) mask[r] |= z.regions[r];
+      any = true;
+    }
+    return any;
+  }
+  /// Whether region r is exposed at `p_m` (base frame).
+  bool Exposes(const Eigen::Vector3d& p_m, std::size_t r) const {
+    if (everywhere()) return true;
+    for (const Zone& z : zones_) {
+      if (z.regions[r] && (p_m.array() >= z.min_m.array()).all() && (p_m.array() <= z.max_m.array()).all()) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+ private:
+  struct Zone {
+    Eigen::Vector3d min_m, max_m;
+    std::vector<std::uint8_t> regions;  ///< per judged region: 1 when the zone exposes it
+  };
+  std::size_t n_regions_ = 0;
+  std::vector<Zone> zones_;
+  std::vector<std::uint8_t> anywhere_;
+};
+
 /// The regions judged: the body regions, then the head.
 class RegionLimits {
  public:
-  explicit RegionLimits(const AuditSetup& setup) : setup_(setup), names_(AuditRegionNames(setup)) {
+  explicit RegionLimits(const AuditSetup& setup)
+      : setup_(setup), names_(AuditRegionNames(setup)), exposure_(setup, names_) {
     for (const materials::BodyLimits& limits : setup.regions) {
       inverse_body_mass_.push_back(1.0 / limits.effective_mass_kg());
     }
@@ -81,6 +129,8 @@ class RegionLimits {
   /// 1/m_H of region r [1/kg].
   double inverse_body_mass(std::size_t r) const noexcept { return inverse_body_mass_[r]; }
   bool is_head(std::size_t r) const noexcept { return setup_.head && r + 1 == names_.size(); }
+  /// Where each region is exposed (AuditSetup::exposure_zones).
+  const Exposure& exposure() const noexcept { return exposure_; }
 
   /// E* of region r for `covering` on a surface of radius `radius_m`: MaxSafeSpeed at a fixed
   /// robot (the largest μ, m_H: the lowest v_max, so the ceiling is met last).
@@ -208,6 +258,7 @@ class RegionLimits {
 
   const AuditSetup& setup_;
   std::vector<std::string> names_;
+  Exposure exposure_;
   std::vector<double> inverse_body_mass_;
 };
 
@@ -229,6 +280,11 @@ std::string SampleWhere(const robot::JointTrajectory& t, std::size_t i);
 /// replaced by flat_face_radius_m when covered. Throws for a covered flat point without one.
 void PlanRadii(const AuditSetup& setup, const robot::LinkSurface& link, bool covered, LinkPlan& plan);
 
+/// The surface's links, each with its covering and its limits per distinct radius and region
+/// (throws for a link off the chain, a bare link without a contact area, a covered flat point
+/// without flat_face_radius_m); their names and point counts into `result` (audit.cpp).
+std::vector<LinkPlan> PlanLinks(const AuditSetup& setup, const RegionLimits& regions, AuditResult& result);
+
 /// The pass over the trajectory: cells, the per-sample rows, and (for the design) each link's
 /// energy demand per radius and region.
 struct Pass {
@@ -237,6 +293,7 @@ struct Pass {
   std::vector<double> time_s;
   /// Per link: radii × regions, max over its moving point-samples of ½ μ v² [J].
   std::vector<std::vector<double>> demand_J;
+  std::vector<std::uint8_t> link_moves;  ///< per link: 1 when some point-sample of it moves
   std::size_t sample_count = 0;
 };
 

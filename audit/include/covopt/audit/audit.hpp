@@ -67,7 +67,9 @@ struct ExposureZone {
   Eigen::Vector3d max_m = Eigen::Vector3d::Zero();   ///< its upper corner [m], >= min_m
   /// The regions exposed there, as AuditRegionNames spells them ("chest (sternum)", "head (Park
   /// et al. 2011)"), or a region's name without its area ("lower-legs": all its areas), or
-  /// "head" (Park et al.'s head), or "all". A name the audit does not judge is refused.
+  /// "head" (Park et al.'s head), or "all". A name that is no body region of ISO/TS 15066's
+  /// table and not the head is refused; a region of the table the audit does not judge (not in
+  /// AuditSetup::regions) is left out (the same zone file serves an audit of fewer regions).
   std::vector<std::string> regions;
   /// Where it was read ("exposure.toml:12:1"), for messages.
   std::string origin;
@@ -177,6 +179,11 @@ struct AuditCell {
   double max_safe_speed_m_per_s = 0.0;
   /// min over the link's moving point-samples of v_max / v [-]; +inf when it never moves.
   double speed_scale = 0.0;
+  /// Why the cell is not judged (AuditSetup::exposure_zones): "no exposure zone exposes the
+  /// region", or "the link's moving points never enter a zone exposing the region". Empty when
+  /// it is judged (or when the link never moves: then `sample` alone is empty). A not-judged
+  /// cell has no sample, ratio 0 and scale +inf: it limits nothing, and it did not pass.
+  std::string not_judged;
 };
 
 /// Per link: the thinnest catalog covering that makes the whole motion safe at full speed
@@ -229,6 +236,10 @@ struct AuditResult {
   std::vector<double> ratio_over_time;
   std::vector<double> time_s;  ///< the sample times, when kept
   std::vector<AuditLinkDesign> link_designs;
+  /// The exposure zones judged with (AuditSetup::exposure_zones); empty: every region everywhere.
+  std::vector<ExposureZone> exposure_zones;
+  /// The number of cells not judged (AuditCell::not_judged).
+  std::size_t not_judged_cells = 0;
   /// One sentence: "unsafe: slow the program to 0.62× (fr3_link7, chest (sternum), force,
   /// t = 0.42 s)".
   std::string message;
