@@ -94,7 +94,7 @@ class Retime(Result):
     status ("safe", "at-rest", "infeasible", "not-safe", "evaluation-failed"), message,
     summary, cycle_time_s (None without a safe timing), original_cycle_time_s,
     uniform_cycle_time_s, uniform_speed_scale, max_speed_scale, tolerance, joint_names,
-    joint_speed_limits (None: none), joint_acceleration_limits, profile (status, message),
+    joint_speed_limits_rad_per_s (None: none), joint_acceleration_limits_rad_per_s2, profile (status, message),
     slowdowns (start_time_s, end_time_s, first_sample, last_sample, min_path_speed, bound,
     link, region), samples (original_time_s, time_s, safe_path_speed, path_speed, bound,
     limiting_link, limiting_region), before (the original program's audit: status, message,

@@ -28,7 +28,7 @@ std::vector<std::string_view> InputKeys(ReportKind kind) {
       return {"scene", "safety_factor", "limits", "search_limit", "regions", "joint_names", "sample_count"};
     case ReportKind::kRetime:
       return {"robot", "coverings", "contact_area_m2", "reaction_delay_s", "braking_m_per_s2", "safety_factor",
-              "sample_count", "surface", "regions", "joint_names", "joint_speed_limits", "joint_acceleration_limits",
+              "sample_count", "surface", "regions", "joint_names", "joint_speed_limits_rad_per_s", "joint_acceleration_limits_rad_per_s2",
               "max_speed_scale", "tolerance"};
     case ReportKind::kAudit:
       return {"robot", "coverings", "contact_area_m2", "reaction_delay_s", "braking_m_per_s2", "safety_factor",

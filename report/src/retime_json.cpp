@@ -118,8 +118,8 @@ std::string RetimeJson(const audit::AuditSetup& setup, const audit::RetimeResult
   j["max_speed_scale"] = internal::Number(options.max_speed_scale);
   j["tolerance"] = internal::Number(options.tolerance);
   j["joint_names"] = setup.chain.joint_names();
-  j["joint_speed_limits"] = Numbers(result.joint_speed_limits);
-  j["joint_acceleration_limits"] = Numbers(result.joint_acceleration_limits);
+  j["joint_speed_limits_rad_per_s"] = Numbers(result.joint_speed_limits);
+  j["joint_acceleration_limits_rad_per_s2"] = Numbers(result.joint_acceleration_limits);
   j["profile"] = ordered_json{{"status", optim::ToString(result.profile.status)}, {"message", result.profile.message}};
   j["slowdowns"] = SlowdownsJson(result);
   j["samples"] = SamplesJson(result);

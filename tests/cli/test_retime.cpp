@@ -74,8 +74,8 @@ TEST_CASE("retime of the FR3 pick move is safe when audited again and beats the 
   const std::string csv = (dir / "retimed.csv").string();
   const json j = JsonOf(Run(Fr3("retime", {"--joint-accel-limit", "10", "--output", csv, "--json"})));
   for (const char* key : {"status", "message", "summary", "cycle_time_s", "original_cycle_time_s",
-                          "uniform_cycle_time_s", "uniform_speed_scale", "joint_speed_limits",
-                          "joint_acceleration_limits", "slowdowns", "samples", "before", "after", "thickness_sweep",
+                          "uniform_cycle_time_s", "uniform_speed_scale", "joint_speed_limits_rad_per_s",
+                          "joint_acceleration_limits_rad_per_s2", "slowdowns", "samples", "before", "after", "thickness_sweep",
                           "scope", "warnings", "input_sources", "provenance"}) {
     CHECK(j.contains(key));
   }
@@ -111,7 +111,7 @@ TEST_CASE("retime of the FR3 pick move is safe when audited again and beats the 
   CHECK(rows.back().front() == Approx(cycle).epsilon(1e-9));
   const std::vector<double> speed_limits = [&] {
     std::vector<double> v;
-    for (const json& x : j["joint_speed_limits"]) v.push_back(x.is_null() ? INFINITY : x.get<double>());
+    for (const json& x : j["joint_speed_limits_rad_per_s"]) v.push_back(x.is_null() ? INFINITY : x.get<double>());
     return v;
   }();
   REQUIRE(speed_limits.size() == 7);

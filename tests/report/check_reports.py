@@ -248,8 +248,8 @@ KINDS = {
                "safety_factor", "sample_count", "surface", "regions"], 1),
     "retime": (verdict_retime,
                ["robot", "coverings", "contact_area_m2", "reaction_delay_s", "braking_m_per_s2",
-                "safety_factor", "sample_count", "surface", "regions", "joint_names", "joint_speed_limits",
-                "joint_acceleration_limits", "max_speed_scale", "tolerance"], 1),
+                "safety_factor", "sample_count", "surface", "regions", "joint_names", "joint_speed_limits_rad_per_s",
+                "joint_acceleration_limits_rad_per_s2", "max_speed_scale", "tolerance"], 1),
 }
 
 

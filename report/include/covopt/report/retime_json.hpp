@@ -23,8 +23,8 @@ struct RetimeSweep {
 /// The re-timed program as one JSON object:
 ///   status (audit::ToString(RetimeStatus)), message, summary (audit::SummarizeRetime),
 ///   cycle_time_s, original_cycle_time_s, uniform_cycle_time_s, uniform_speed_scale,
-///   max_speed_scale, tolerance, joint_names, joint_speed_limits (per joint [rad/s or m/s];
-///   null: none), joint_acceleration_limits (per joint [rad/s² or m/s²]), profile {status,
+///   max_speed_scale, tolerance, joint_names, joint_speed_limits_rad_per_s (per joint [rad/s or m/s];
+///   null: none), joint_acceleration_limits_rad_per_s2 (per joint [rad/s² or m/s²]), profile {status,
 ///   message}, slowdowns [{start_time_s, end_time_s, first_sample, last_sample, min_path_speed,
 ///   bound, link, region}] (where the program had to slow, audit::RetimeSlowdowns), samples
 ///   {original_time_s, time_s (the re-timed program's; null without one), safe_path_speed (null:
