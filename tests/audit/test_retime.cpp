@@ -22,6 +22,7 @@
 #include <covopt/robot/surface.hpp>
 #include <covopt/robot/trajectory.hpp>
 
+#include "../../bench/fr3_pick.hpp"
 #include "../robot/robot_test_support.hpp"
 
 namespace {
@@ -35,7 +36,6 @@ namespace rb = covopt::robot;
 using covopt::robot::testing::MessageOf;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-const std::string kModels = COVOPT_ROBOT_MODELS_DIR;
 
 std::vector<BodyLimits> SomeRegions() {
   const auto& t = BodyRegionTable::BuiltIn();
@@ -49,35 +49,27 @@ co::CandidateMaterial Foam() {
   return co::SelectCandidates(covopt::materials::Catalog::BuiltIn(), names).front();
 }
 
-struct Fr3 {
+struct Fr3Coarse {
   rb::KinematicChain chain;
   rb::RobotSurface surface;
   rb::JointTrajectory pick;
 };
 
-/// The FR3 on a coarse surface (0.1 m spacing: quick) and its pick move.
-const Fr3& TheFr3() {
-  static const Fr3 fr3 = [] {
-    const std::string urdf = kModels + "/franka_fr3.urdf";
-    rb::KinematicChain chain = rb::KinematicChain::FromUrdfFile(urdf, {"", "fr3_link8"});
+/// The FR3 (bench/fr3_pick.hpp) on a coarse surface (0.1 m spacing: quick) and its pick move.
+const Fr3Coarse& TheFr3() {
+  static const Fr3Coarse fr3 = [] {
     rb::SurfaceOptions options;
     options.spacing_m = 0.1;
-    rb::RobotSurface surface = rb::SurfaceFromUrdfFile(urdf, chain, options);
-    rb::JointTrajectory pick = rb::ReadJointTrajectory(kModels + "/franka_fr3_pick.csv", chain.joint_count());
-    return Fr3{std::move(chain), std::move(surface), std::move(pick)};
+    return Fr3Coarse{Fr3(), rb::SurfaceFromUrdfFile(kFr3Urdf, Fr3(), options), Pick()};
   }();
   return fr3;
 }
 
 /// The FR3 with `thickness_m` of PORON 4701-30 320 on every link, every transient region of
-/// ISO/TS 15066 and the head.
+/// ISO/TS 15066 and the head (Fr3AuditSetup's, at another thickness).
 ca::AuditSetup Fr3Setup(double thickness_m) {
-  const Fr3& fr3 = TheFr3();
-  ca::AuditSetup setup{fr3.chain, fr3.surface};
-  const co::CandidateMaterial foam = Foam();
-  setup.covering = {co::CoveringOf(foam, thickness_m, covopt::CoveringLaw::kAuto), foam};
-  setup.regions = BodyRegionTable::BuiltIn().AllLimits(ContactType::kTransient);
-  setup.head = covopt::Scene{};
+  ca::AuditSetup setup = Fr3AuditSetup(TheFr3().surface);
+  setup.covering.covering = co::CoveringOf(*setup.covering.material, thickness_m, covopt::CoveringLaw::kAuto);
   return setup;
 }
 
@@ -185,6 +177,20 @@ TEST_CASE("a safe program with max_speed_scale 1 comes back unchanged", "[retime
     CHECK(r.path_speed[i] == Approx(1.0).epsilon(1e-9));
     CHECK(r.trajectory.time_s[i] == Approx(TheFr3().pick.time_s[i]).epsilon(1e-9).margin(1e-12));
   }
+}
+
+TEST_CASE("a covering refused at any speed leaves no safe timing: infeasible, naming the instant, link and region",
+          "[retime][infeasible]") {
+  ca::AuditSetup setup = Fr3Setup(0.01);
+  setup.covering.material->name = "mystery foam";
+  setup.covering.material->crush_behaviour = covopt::materials::CrushBehaviour::kUnknown;  // refused by the rule
+  const ca::RetimeResult r = ca::Retime(setup, TheFr3().pick, Fr3Options());
+  CHECK(r.status == ca::RetimeStatus::kInfeasible);
+  CHECK_THAT(r.message, Catch::Contains("infeasible: at t = ") && Catch::Contains("has no safe speed against") &&
+                            Catch::Contains("no timing is safe"));
+  CHECK(r.trajectory.size() == 0);
+  CHECK(std::isinf(r.cycle_time_s));
+  CHECK(std::isinf(r.uniform_cycle_time_s));
 }
 
 namespace {
