@@ -319,8 +319,8 @@ bool Solver::Backward(TimeOptimalProfile& profile, std::string& why, std::size_t
       } else if (k.hi < 0.0) {
         why = Describe(k.hi_by, i) + " cannot be kept at any path speed >= 0";
       } else {
-        why = Describe(k.hi_by, i) + " allows ṡ <= " + Num(std::sqrt(k.hi)) + " but " + Describe(k.lo_by, i) +
-              " needs ṡ >= " + Num(std::sqrt(k.lo)) + " (the controllable set is empty)";
+        why = "the controllable set is empty: ṡ <= " + Num(std::sqrt(k.hi)) + " (" + Describe(k.hi_by, i) +
+              ") but ṡ >= " + Num(std::sqrt(k.lo)) + " (" + Describe(k.lo_by, i) + ")";
       }
       return false;
     }

@@ -4,6 +4,7 @@
 // scaling, the infeasible cases and every refused input.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -263,60 +264,41 @@ TEST_CASE("a path that cannot be kept is infeasible, and the message names where
 TEST_CASE("bad input is refused with the field and the value named", "[topp]") {
   const co::PathSamples good = Line(1.0, 3);
   const co::PathLimits limits = OneJoint(3, 1.0, 1.0);
-  auto refuses = [](co::PathSamples path, co::PathLimits lim, co::TimeOptimalOptions options, const std::string& field) {
+  // Each case changes one input of a good problem; the message must name the field (and value).
+  auto refuses = [&](const std::function<void(co::PathSamples&, co::PathLimits&, co::TimeOptimalOptions&)>& change,
+                     const std::string& field) {
+    co::PathSamples path = good;
+    co::PathLimits lim = limits;
+    co::TimeOptimalOptions options;
+    change(path, lim, options);
     INFO("field " << field);
     CHECK_THROWS_WITH(co::TimeOptimalParameterization(path, lim, options), Catch::Contains(field));
   };
+  using P = co::PathSamples;
+  using L = co::PathLimits;
+  using O = co::TimeOptimalOptions;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  refuses(Line(1.0, 1), OneJoint(1, 1.0, 1.0), {}, "at least 2");
-  co::PathSamples p = good;
-  p.dq_ds.pop_back();
-  refuses(p, limits, {}, "path.dq_ds has 2 entries");
-  p = good;
-  p.s[2] = 0.5;
-  refuses(p, limits, {}, "path.s[2] = 0.5");
-  p.s[2] = nan;
-  refuses(p, limits, {}, "path.s[2]");
-  p = good;
-  p.dq_ds[1] = Eigen::Vector2d(1.0, 1.0);
-  refuses(p, limits, {}, "path.dq_ds[1] has 2 entries");
-  p = good;
-  p.dq_ds[1][0] = kInf;
-  refuses(p, limits, {}, "path.dq_ds[1][0] = inf");
-  co::PathLimits l = limits;
-  l.max_path_speed.pop_back();
-  refuses(good, l, {}, "limits.max_path_speed has 2");
+  refuses([](P& p, L& l, O&) { p = Line(1.0, 1); l = OneJoint(1, 1.0, 1.0); }, "path.s has 1 samples; it must have at least 2");
+  refuses([](P& p, L&, O&) { p.dq_ds.pop_back(); }, "path.dq_ds has 2 entries");
+  refuses([](P& p, L&, O&) { p.s[2] = 0.5; }, "path.s[2] = 0.5 must be > path.s[1]");
+  refuses([&](P& p, L&, O&) { p.s[2] = nan; }, "path.s[2] = nan");
+  refuses([](P& p, L&, O&) { p.dq_ds[1] = Eigen::Vector2d(1.0, 1.0); }, "path.dq_ds[1] has 2 entries");
+  refuses([](P& p, L&, O&) { p.dq_ds[1][0] = kInf; }, "path.dq_ds[1][0] = inf");
+  refuses([](P&, L& l, O&) { l.max_path_speed.pop_back(); }, "limits.max_path_speed has 2");
+  refuses([](P&, L& l, O&) { l.max_joint_speed = Eigen::Vector2d(1.0, 1.0); }, "limits.max_joint_speed has 2");
+  refuses([](P&, L& l, O&) { l.max_joint_acceleration = Eigen::Vector2d(1.0, 1.0); }, "limits.max_joint_acceleration has 2");
   for (const double bad : {0.0, -1.0, nan}) {
-    l = limits;
-    l.max_path_speed[1] = bad;
-    refuses(good, l, {}, "limits.max_path_speed[1]");
-    l = limits;
-    l.max_joint_speed[0] = bad;
-    refuses(good, l, {}, "limits.max_joint_speed[0]");
-    l = limits;
-    l.max_joint_acceleration[0] = bad;
-    refuses(good, l, {}, "limits.max_joint_acceleration[0]");
+    const std::string value = " = " + std::string(std::isnan(bad) ? "nan" : bad == 0.0 ? "0" : "-1");
+    refuses([&](P&, L& l, O&) { l.max_path_speed[1] = bad; }, "limits.max_path_speed[1]" + value);
+    refuses([&](P&, L& l, O&) { l.max_joint_speed[0] = bad; }, "limits.max_joint_speed[0]" + value);
+    refuses([&](P&, L& l, O&) { l.max_joint_acceleration[0] = bad; }, "limits.max_joint_acceleration[0]" + value);
+    refuses([&](P&, L&, O& o) { o.tolerance = bad; }, "options.tolerance" + value);
   }
-  l = limits;
-  l.max_joint_acceleration[0] = kInf;
-  refuses(good, l, {}, "limits.max_joint_acceleration[0] = inf");
-  l = limits;
-  l.max_joint_speed = Eigen::Vector2d(1.0, 1.0);
-  refuses(good, l, {}, "limits.max_joint_speed has 2");
-  l = limits;
-  l.max_joint_acceleration = Eigen::Vector2d(1.0, 1.0);
-  refuses(good, l, {}, "limits.max_joint_acceleration has 2");
-  co::TimeOptimalOptions o;
-  o.start_path_speed = -0.1;
-  refuses(good, limits, o, "options.start_path_speed = -0.1");
-  o = {};
-  o.end_path_speed = 1.5;  // above the joint's speed limit 1 at q' = 1
-  refuses(good, limits, o, "options.end_path_speed = 1.5 must be in [0, 1]");
-  for (const double bad : {0.0, 1e-2, nan}) {
-    o = {};
-    o.tolerance = bad;
-    refuses(good, limits, o, "options.tolerance");
-  }
+  refuses([](P&, L& l, O&) { l.max_joint_acceleration[0] = kInf; }, "limits.max_joint_acceleration[0] = inf");
+  refuses([](P&, L&, O& o) { o.tolerance = 1e-2; }, "options.tolerance = 0.01 must be in (0, 1e-3]");
+  refuses([](P&, L&, O& o) { o.start_path_speed = -0.1; }, "options.start_path_speed = -0.1");
+  // above the joint's speed limit 1 at q' = 1
+  refuses([](P&, L&, O& o) { o.end_path_speed = 1.5; }, "options.end_path_speed = 1.5 must be in [0, 1]");
 }
 
 }  // namespace

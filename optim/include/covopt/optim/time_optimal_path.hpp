@@ -70,7 +70,9 @@ struct TimeOptimalOptions {
 enum class TimeOptimalStatus {
   kSuccess,     ///< a profile that keeps every constraint
   kInfeasible,  ///< no profile: some sample's controllable set is empty, or the path speed is 0
-                ///< at two neighbouring samples (the path would take forever); message says where
+                ///< at two neighbouring samples (the path would take forever), or nothing bounds
+                ///< it (no joint moves and max_path_speed is +inf); message says where (samples
+                ///< and joints numbered from 0)
 };
 /// "success" or "infeasible".
 const char* ToString(TimeOptimalStatus status) noexcept;
