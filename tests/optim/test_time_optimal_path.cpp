@@ -161,6 +161,34 @@ TEST_CASE("the joints' speed and acceleration limits hold at every sample and al
   CHECK(std::is_sorted(p.time_s.begin(), p.time_s.end()));
 }
 
+TEST_CASE("a joint's turning point is passed at the speed its curvature allows, sqrt(a / q'')", "[topp]") {
+  // q(s) = s² / 2 on [-1, 1]: q' = s, q'' = 1, the joint goes from 0.5 to 0 and back. At s = 0 it
+  // stands still (no speed bound) but q̈ = q' s̈ + q'' ṡ² = ṡ² <= a caps ṡ at sqrt(a). Before it,
+  // ṡ² > a would need s̈ >= (ṡ² - a) / |s| > 0 and could never come down: the joint's fastest
+  // reversal is ṡ = sqrt(a) throughout (q̈ = a), 2 / sqrt(a) in all, exact on these samples.
+  co::PathSamples path;
+  for (int i = 0; i <= 20; ++i) {
+    path.s.push_back(-1.0 + 0.1 * i);
+    path.dq_ds.push_back(Eigen::VectorXd::Constant(1, path.s.back()));
+  }
+  path.s[10] = 0.0;
+  path.dq_ds[10][0] = 0.0;
+  for (const double a : {0.5, 2.0}) {
+    const co::TimeOptimalProfile p = co::TimeOptimalParameterization(path, OneJoint(21, 3.0, a));
+    REQUIRE(p.ok());
+    CHECK(p.duration_s() == Approx(2.0 / std::sqrt(a)).epsilon(1e-12));
+    for (std::size_t i = 0; i < 21; ++i) {
+      CHECK(p.path_speed[i] == Approx(std::sqrt(a)).epsilon(1e-12));
+      CHECK(p.bound[i] == co::PathSpeedBound::kJointAcceleration);  // the joint speed 3 is far
+    }
+  }
+  CHECK(std::string(co::ToString(co::PathSpeedBound::kJointAcceleration)) == "joint-acceleration");
+  CHECK(std::string(co::ToString(co::PathSpeedBound::kPathSpeed)) == "path-speed");
+  CHECK(std::string(co::ToString(co::PathSpeedBound::kJointSpeed)) == "joint-speed");
+  CHECK(std::string(co::ToString(co::PathSpeedBound::kBoundary)) == "boundary");
+  CHECK(std::string(co::ToString(co::TimeOptimalStatus::kSuccess)) == "success");
+}
+
 /// Whether the profile x (ṡ² per sample) keeps every constraint; its duration if so.
 double BruteDuration(const co::PathSamples& path, const co::PathLimits& limits, const std::vector<double>& x) {
   double time = 0.0;
