@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -250,6 +251,45 @@ TEST_CASE("when only a constant path-speed bound binds, the program is scaled un
     REQUIRE(p.ok());
     CHECK(p.duration_s() == Approx(2.0 / c).epsilon(1e-12));
     for (const co::PathSpeedBound bound : p.bound) CHECK(bound == co::PathSpeedBound::kPathSpeed);
+  }
+}
+
+TEST_CASE("random paths: limits kept, never slower than the fastest constant path speed", "[topp]") {
+  // The fastest constant ṡ = c keeps every bound of the discretised problem (c <= the speed
+  // bounds, and c² |q''| <= a on every segment), so the optimum's duration is at most L / c.
+  std::mt19937 random(37);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::size_t samples = 30 + static_cast<std::size_t>(trial);
+    co::PathSamples path;
+    co::PathLimits limits{{}, Eigen::Vector3d(1.0, 2.0, 1.5), Eigen::Vector3d(3.0, 1.0, 5.0)};
+    Eigen::Vector3d slope(unit(random), unit(random), unit(random));
+    for (std::size_t i = 0; i < samples; ++i) {
+      path.s.push_back(i == 0 ? 0.0 : path.s.back() + 0.02 + 0.05 * (1.0 + unit(random)));
+      slope += 0.3 * Eigen::Vector3d(unit(random), unit(random), unit(random));
+      if (i % 7 == 3) slope[trial % 3] = 1e-12;  // a joint almost at rest: a huge speed bound
+      path.dq_ds.push_back(slope);
+      limits.max_path_speed.push_back(i % 5 == 0 ? kInf : 1.0 + unit(random) * 0.8);
+    }
+    const co::TimeOptimalProfile p = co::TimeOptimalParameterization(path, limits);
+    REQUIRE(p.ok());
+    double c = kInf;
+    for (std::size_t i = 0; i < samples; ++i) {
+      c = std::min(c, limits.max_path_speed[i]);
+      for (Eigen::Index j = 0; j < 3; ++j) {
+        c = std::min(c, limits.max_joint_speed[j] / std::abs(path.dq_ds[i][j]));
+        CHECK(std::abs(path.dq_ds[i][j]) * p.path_speed[i] <= limits.max_joint_speed[j] * (1.0 + 1e-9));
+        if (i + 1 == samples) continue;
+        CHECK(SegmentAcceleration(path, p, i, j) <= limits.max_joint_acceleration[j] * (1.0 + 1e-9));
+        const double curvature = std::abs(path.dq_ds[i + 1][j] - path.dq_ds[i][j]) / (path.s[i + 1] - path.s[i]);
+        c = std::min(c, std::sqrt(limits.max_joint_acceleration[j] / curvature));
+      }
+      CHECK(p.path_speed[i] <= limits.max_path_speed[i] * (1.0 + 1e-12));
+      CHECK(std::isfinite(p.time_s[i]));
+    }
+    INFO("trial " << trial << ": " << p.duration_s() << " s against " << path.s.back() / c << " s at constant ṡ = " << c);
+    CHECK(p.duration_s() <= path.s.back() / c * (1.0 + 1e-12));
+    CHECK(p.duration_s() < path.s.back() / c * 0.99);  // and faster: the bounds vary along the path
   }
 }
 
