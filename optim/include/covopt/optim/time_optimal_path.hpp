@@ -19,7 +19,8 @@
 ///     bounded at both ends of every segment: |q'_j(s_i) u_i + q''_j,i x_i| <= a_j and
 ///     |q'_j(s_{i+1}) u_i + q''_j,i x_{i+1}| <= a_j. The bound then holds along the whole segment.
 /// The backward pass computes each sample's controllable set K_i = [x_lo, x_hi] (two 2-variable
-/// LPs per segment); the forward pass takes at each sample the largest u that keeps x_{i+1} in
+/// LPs per segment, solved together and exactly by eliminating u: every lower bound on u against
+/// every upper bound); the forward pass takes at each sample the largest u that keeps x_{i+1} in
 /// K_{i+1}. The result is time-optimal among the discretised profiles.
 ///
 ///     covopt::optim::PathSamples path{s, dq_ds};
