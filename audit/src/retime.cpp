@@ -245,7 +245,9 @@ RetimeResult RetimeWith(const AuditSetup& setup, const robot::JointTrajectory& t
   }
   optim::PathLimits limits{std::vector<double>(trajectory.size()), in.speed_limits, in.acceleration_limits};
   for (std::size_t i = 0; i < trajectory.size(); ++i) {
-    limits.max_path_speed[i] = std::min(safe.speed[i], options.max_speed_scale);
+    // A hair below the limit (1e-7, relative): the re-timed program at its limit must audit as safe
+    // (scale >= 1) in `covopt audit` too, not at 1 - 4e-16 from rounding.
+    limits.max_path_speed[i] = std::min(safe.speed[i] * (1.0 - 1e-7), options.max_speed_scale);
   }
   r.profile = optim::TimeOptimalParameterization(in.path, limits);
   if (!r.profile.ok()) {
