@@ -12,6 +12,8 @@
 #include <covopt/core/number_format.hpp>
 #include <covopt/optim/design.hpp>
 
+#include "covopt/audit/tool_surface.hpp"
+
 namespace covopt::audit {
 namespace {
 
@@ -57,6 +59,17 @@ robot::RobotSurface ReadSurface(const AuditInputs& in) {
   } catch (const std::invalid_argument& e) {
     Refuse(in.surface.surface_file ? n.surface_file : in.urdf_text ? n.urdf_text : n.urdf, e.what());
   }
+  const std::string tip = in.chain.tip_link();
+  for (const auto& [name, specs, field] : {std::tuple{"tool", &in.tool_surface, &n.tool_surface},
+                                           std::tuple{"payload", &in.payload_surface, &n.payload_surface}}) {
+    std::vector<robot::SurfaceShape> shapes;
+    for (const std::string& spec : *specs) shapes.push_back(ParseTipShape(spec, *field));
+    try {
+      robot::AddTipSurface(surface, in.chain, name, shapes);
+    } catch (const std::invalid_argument& e) {
+      Refuse(*field, e.what());
+    }
+  }
   if (surface.links.empty()) {
     const std::string urdf = in.urdf_text ? n.urdf_text : n.urdf + " '" + in.urdf_file + "'";
     Refuse(urdf, "no link of the chain " + in.chain.base_link() + " -> " + in.chain.tip_link() +
@@ -73,6 +86,31 @@ robot::JointTrajectory ReadTrajectory(const AuditInputs& in) {
     return robot::ReadJointTrajectory(path, in.chain.joint_count());
   } catch (const std::invalid_argument& e) {
     Refuse(in.names.trajectory, e.what());
+  }
+}
+
+/// The exposure zones: read from the file (its title and source kept), or as given.
+void SetExposure(const AuditInputs& in, AssembledAudit& audit) {
+  if (const auto* zones = std::get_if<std::vector<ExposureZone>>(&*in.exposure)) {
+    audit.setup.exposure_zones = *zones;
+    return;
+  }
+  const std::string& path = std::get<std::string>(*in.exposure);
+  if (path.empty()) Refuse(in.names.exposure, "empty file name");
+  scene_file::ExposureFile file;
+  try {
+    file = scene_file::ReadExposureFile(path);
+  } catch (const std::invalid_argument& e) {
+    Refuse(in.names.exposure, e.what());
+  }
+  audit.exposure_title = file.title;
+  audit.exposure_source = file.source;
+  for (const scene_file::ExposureZoneEntry& z : file.zones) {
+    audit.setup.exposure_zones.push_back(ExposureZone{.name = z.name,
+                                                      .min_m = Eigen::Vector3d(z.min_m[0], z.min_m[1], z.min_m[2]),
+                                                      .max_m = Eigen::Vector3d(z.max_m[0], z.max_m[1], z.max_m[2]),
+                                                      .regions = z.regions,
+                                                      .origin = z.where});
   }
 }
 
@@ -169,6 +207,7 @@ AssembledAudit AssembleAudit(const AuditInputs& in) {
   const materials::Catalog& catalog = in.catalog ? *in.catalog : materials::Catalog::BuiltIn();
   if (in.link_coverings) AddLinkCoverings(in, catalog, setup, audit.input_warnings);
   if (in.design) SetDesign(in, catalog, audit);
+  if (in.exposure) SetExposure(in, audit);
   audit.input_warnings.insert(audit.input_warnings.end(), in.scene_warnings.begin(), in.scene_warnings.end());
   return audit;
 }

@@ -290,11 +290,11 @@ std::vector<LinkPlan> PlanLinks(const AuditSetup& setup, const RegionLimits& reg
   std::vector<LinkPlan> plans;
   plans.reserve(setup.surface.links.size());
   for (const robot::LinkSurface& link : setup.surface.links) {
-    const std::optional<std::size_t> index = names.LinkIndex(link.link);
+    const std::optional<std::size_t> index = names.LinkIndex(link.carrier());  // the tool: the tip link
     if (!index) {
       std::string links;
       for (const std::string& name : names.link_names()) links += (links.empty() ? "" : ", ") + name;
-      throw std::invalid_argument("surface: link '" + link.link + "' is not on the chain (links: " + links + ")");
+      throw std::invalid_argument("surface: link '" + link.carrier() + "' is not on the chain (links: " + links + ")");
     }
     LinkPlan plan;
     plan.chain_index = *index;

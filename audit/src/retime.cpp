@@ -193,11 +193,11 @@ void SetScope(const RetimeInputs& in, double max_speed_scale, RetimeResult& r) {
   for (Eigen::Index j = 0; j < in.speed_limits.size(); ++j) {
     line += (j ? ", " : "") + FormatSignificant(in.speed_limits[j], 4);
   }
-  line += " rad/s) and acceleration limits (";
+  line += " rad/s or m/s) and acceleration limits (";
   for (Eigen::Index j = 0; j < in.acceleration_limits.size(); ++j) {
     line += (j ? ", " : "") + FormatSignificant(in.acceleration_limits[j], 4);
   }
-  line += " rad/s²); the re-timed program audited again";
+  line += " rad/s² or m/s²); the re-timed program audited again";
   r.scope.push_back(std::move(line));
 }
 
@@ -261,7 +261,13 @@ RetimeResult RetimeWith(const AuditSetup& setup, const robot::JointTrajectory& t
   robot::JointTrajectory retimed = Retimed(trajectory, r.profile);
   AuditOptions again;
   again.keep_ratio_over_time = options.keep_ratio_over_time;
-  r.after = Audit(setup, retimed, again);
+  try {
+    r.after = Audit(setup, retimed, again);
+  } catch (const std::invalid_argument& e) {  // e.g. a joint speed beyond the plausible range
+    r.status = RetimeStatus::kNotSafe;
+    r.message = std::string("not safe: the re-timed program could not be audited: ") + e.what();
+    return r;
+  }
   const std::string times = "(original " + Seconds(r.original_cycle_time_s) + ", uniform slow-down " +
                             Seconds(r.uniform_cycle_time_s) + ")";
   if (r.after.status == optim::TrajectoryCheckStatus::kEvaluationFailed ||

@@ -7,10 +7,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <covopt/core/number_format.hpp>
 
@@ -161,11 +163,18 @@ class Solver {
  public:
   Solver(const PathSamples& path, const PathLimits& limits, const TimeOptimalOptions& options)
       : path_(path), limits_(limits), options_(options), n_(path.s.size()), static_x_(n_) {
+    std::vector<double> finite;
     for (std::size_t i = 0; i < n_; ++i) {
       static_x_[i] = StaticBound(path, limits, i);
-      if (std::isfinite(static_x_[i])) x_scale_ = std::max(x_scale_, static_x_[i]);
+      if (std::isfinite(static_x_[i])) finite.push_back(static_x_[i]);
     }
-    if (x_scale_ == 0.0) x_scale_ = 1.0;
+    // The scale of the tolerance: the median finite speed bound (x = ṡ²), not the largest, which a
+    // sample where the joints barely move (q' ~ 0) can make arbitrarily large; 1 when none is finite.
+    if (!finite.empty()) {
+      const auto middle = finite.begin() + static_cast<std::ptrdiff_t>(finite.size() / 2);
+      std::nth_element(finite.begin(), middle, finite.end());
+      x_scale_ = *middle;
+    }
   }
 
   TimeOptimalProfile Run();
@@ -185,7 +194,7 @@ class Solver {
   const TimeOptimalOptions& options_;
   std::size_t n_;
   std::vector<double> static_x_;
-  double x_scale_ = 0.0;
+  double x_scale_ = 1.0;  // see the constructor
   std::vector<Constraint> constraints_;  // of the segment being solved
   std::vector<int> upper_, lower_;       // indices of the constraints with b > 0, b < 0
 };
@@ -319,8 +328,8 @@ bool Solver::Backward(TimeOptimalProfile& profile, std::string& why, std::size_t
       } else if (k.hi < 0.0) {
         why = Describe(k.hi_by, i) + " cannot be kept at any path speed >= 0";
       } else {
-        why = Describe(k.hi_by, i) + " allows ṡ <= " + Num(std::sqrt(k.hi)) + " but " + Describe(k.lo_by, i) +
-              " needs ṡ >= " + Num(std::sqrt(k.lo)) + " (the controllable set is empty)";
+        why = "the controllable set is empty: ṡ <= " + Num(std::sqrt(k.hi)) + " (" + Describe(k.hi_by, i) +
+              ") but ṡ >= " + Num(std::sqrt(k.lo)) + " (" + Describe(k.lo_by, i) + ")";
       }
       return false;
     }

@@ -1,6 +1,7 @@
 #include "covopt/robot/surface.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <array>
 #include <cmath>
 #include <map>
@@ -609,6 +610,40 @@ void CheckSurfaceSize(const std::vector<LinkSurface>& links, double spacing) {
   throw std::invalid_argument(message.str());
 }
 
+/// The segments and points of a [[link]], [[tool]] or [[payload]] table into `surface`.
+void ReadShapes(const toml::table& table, const std::string& source_name, const std::string& what,
+                const std::string& empty_hint, LinkSurface& surface) {
+  if (const toml::array* segments = ArrayOfTables(table, "segments", source_name, what)) {
+    for (const toml::node& item : *segments) {
+      const toml::table& segment = *item.as_table();
+      RefuseUnknownKeys(segment, std::array<std::string_view, 3>{"from_m", "to_m", "radius_m"}, source_name,
+                        what + " segment");
+      SurfaceShape shape;
+      shape.type = SurfaceShapeType::kCapsule;
+      shape.a_m = ReadPoint(segment, "from_m", source_name, what + " segment");
+      shape.b_m = ReadPoint(segment, "to_m", source_name, what + " segment");
+      shape.radius_m = ReadRadius(segment, source_name, what + " segment", false);
+      shape.origin = covopt::internal::Where(source_name, segment.source());
+      surface.shapes.push_back(std::move(shape));
+    }
+  }
+  if (const toml::array* points = ArrayOfTables(table, "points", source_name, what)) {
+    for (const toml::node& item : *points) {
+      const toml::table& point = *item.as_table();
+      RefuseUnknownKeys(point, std::array<std::string_view, 2>{"at_m", "radius_m"}, source_name, what + " point");
+      SurfaceShape shape;
+      shape.type = SurfaceShapeType::kPoint;
+      shape.a_m = ReadPoint(point, "at_m", source_name, what + " point");
+      shape.radius_m = ReadRadius(point, source_name, what + " point", true);
+      shape.origin = covopt::internal::Where(source_name, point.source());
+      surface.shapes.push_back(std::move(shape));
+    }
+  }
+  if (surface.shapes.empty()) {
+    FileError(source_name, table.source(), what + ": give segments or points (" + empty_hint + ")");
+  }
+}
+
 }  // namespace
 
 SurfaceFileShapes ParseSurfaceFile(const std::string& toml_text, const std::string& source_name) {
@@ -620,13 +655,27 @@ SurfaceFileShapes ParseSurfaceFile(const std::string& toml_text, const std::stri
     std::replace(what.begin(), what.end(), '\n', ' ');
     throw std::invalid_argument(covopt::internal::Where(source_name, e.source()) + ": not a TOML surface file: " + what);
   }
-  RefuseUnknownKeys(root, std::array<std::string_view, 1>{"link"}, source_name, "surface file");
+  RefuseUnknownKeys(root, std::array<std::string_view, 3>{"link", "tool", "payload"}, source_name, "surface file");
   SurfaceFileShapes out;
   out.source = source_name;
-  const toml::array* links = ArrayOfTables(root, "link", source_name, "surface file");
-  if (links == nullptr || links->empty()) {
-    throw std::invalid_argument(source_name + ": a surface file needs at least one [[link]] table");
+  // [[tool]] and [[payload]]: shapes in the tip link's frame (the flange), each table adding its own.
+  for (const char* name : {"tool", "payload"}) {
+    const toml::array* tables = ArrayOfTables(root, name, source_name, "surface file");
+    if (tables == nullptr) continue;
+    LinkSurface& carried = std::string(name) == "tool" ? out.tool : out.payload;
+    carried.link = name;
+    for (const toml::node& node : *tables) {
+      const toml::table& table = *node.as_table();
+      RefuseUnknownKeys(table, std::array<std::string_view, 2>{"segments", "points"}, source_name,
+                        "[[" + std::string(name) + "]]");
+      ReadShapes(table, source_name, std::string("[[") + name + "]]", "or leave the table out", carried);
+    }
   }
+  const toml::array* links = ArrayOfTables(root, "link", source_name, "surface file");
+  if ((links == nullptr || links->empty()) && out.tool.shapes.empty() && out.payload.shapes.empty()) {
+    throw std::invalid_argument(source_name + ": a surface file needs at least one [[link]], [[tool]] or [[payload]] table");
+  }
+  if (links == nullptr) return out;
   std::set<std::string> seen;
   for (const toml::node& node : *links) {
     const toml::table& link = *node.as_table();
@@ -637,36 +686,7 @@ SurfaceFileShapes ParseSurfaceFile(const std::string& toml_text, const std::stri
     if (!seen.insert(*name).second) FileError(source_name, link.source(), "[[link]] '" + shown + "' is given twice");
     LinkSurface surface;
     surface.link = *name;
-    const std::string what = "link '" + shown + "'";
-    if (const toml::array* segments = ArrayOfTables(link, "segments", source_name, what)) {
-      for (const toml::node& item : *segments) {
-        const toml::table& segment = *item.as_table();
-        RefuseUnknownKeys(segment, std::array<std::string_view, 3>{"from_m", "to_m", "radius_m"}, source_name,
-                          what + " segment");
-        SurfaceShape shape;
-        shape.type = SurfaceShapeType::kCapsule;
-        shape.a_m = ReadPoint(segment, "from_m", source_name, what + " segment");
-        shape.b_m = ReadPoint(segment, "to_m", source_name, what + " segment");
-        shape.radius_m = ReadRadius(segment, source_name, what + " segment", false);
-        shape.origin = covopt::internal::Where(source_name, segment.source());
-        surface.shapes.push_back(std::move(shape));
-      }
-    }
-    if (const toml::array* points = ArrayOfTables(link, "points", source_name, what)) {
-      for (const toml::node& item : *points) {
-        const toml::table& point = *item.as_table();
-        RefuseUnknownKeys(point, std::array<std::string_view, 2>{"at_m", "radius_m"}, source_name, what + " point");
-        SurfaceShape shape;
-        shape.type = SurfaceShapeType::kPoint;
-        shape.a_m = ReadPoint(point, "at_m", source_name, what + " point");
-        shape.radius_m = ReadRadius(point, source_name, what + " point", true);
-        shape.origin = covopt::internal::Where(source_name, point.source());
-        surface.shapes.push_back(std::move(shape));
-      }
-    }
-    if (surface.shapes.empty()) {
-      FileError(source_name, link.source(), what + ": give segments or points (a link with no surface: leave it out)");
-    }
+    ReadShapes(link, source_name, "link '" + shown + "'", "a link with no surface: leave it out", surface);
     out.links.push_back(std::move(surface));
   }
   return out;
@@ -734,6 +754,15 @@ RobotSurface SurfaceFromUrdfString(const std::string& urdf_text, const Kinematic
     }
     surface.links.push_back(std::move(link));
   }
+  // The tool and the payload of the surface file: carried by the tip link.
+  if (file) {
+    for (const LinkSurface* carried : {&file->tool, &file->payload}) {
+      if (carried->shapes.empty()) continue;
+      LinkSurface link = *carried;
+      link.frame_link = chain.tip_link();
+      surface.links.push_back(std::move(link));
+    }
+  }
   // The size, from the shapes, before any point is made.
   CheckSurfaceSize(surface.links, options.spacing_m);
   for (LinkSurface& link : surface.links) {
@@ -743,6 +772,30 @@ RobotSurface SurfaceFromUrdfString(const std::string& urdf_text, const Kinematic
     }
   }
   return surface;
+}
+
+void AddTipSurface(RobotSurface& surface, const KinematicChain& chain, const std::string& name,
+                   const std::vector<SurfaceShape>& shapes) {
+  if (shapes.empty()) return;
+  auto it = std::find_if(surface.links.begin(), surface.links.end(),
+                         [&](const LinkSurface& l) { return l.link == name; });
+  if (it == surface.links.end()) {
+    LinkSurface link;
+    link.link = name;
+    link.frame_link = chain.tip_link();
+    surface.links.push_back(std::move(link));
+    it = std::prev(surface.links.end());
+  }
+  std::vector<LinkSurface> all = surface.links;  // the size with the new shapes, before any point is made
+  all[static_cast<std::size_t>(it - surface.links.begin())].shapes.insert(
+      all[static_cast<std::size_t>(it - surface.links.begin())].shapes.end(), shapes.begin(), shapes.end());
+  CheckSurfaceSize(all, surface.spacing_m);
+  for (const SurfaceShape& shape : shapes) {
+    const std::size_t index = it->shapes.size();
+    it->shapes.push_back(shape);
+    std::vector<SurfacePoint> points = SampleShape(shape, surface.spacing_m, index);
+    it->points.insert(it->points.end(), points.begin(), points.end());
+  }
 }
 
 RobotSurface SurfaceFromUrdfFile(const std::filesystem::path& path, const KinematicChain& chain,

@@ -22,6 +22,7 @@
 #include <covopt/robot/surface.hpp>
 #include <covopt/robot/trajectory.hpp>
 
+#include "../../bench/fr3_pick.hpp"
 #include "../robot/robot_test_support.hpp"
 
 namespace {
@@ -35,7 +36,6 @@ namespace rb = covopt::robot;
 using covopt::robot::testing::MessageOf;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-const std::string kModels = COVOPT_ROBOT_MODELS_DIR;
 
 std::vector<BodyLimits> SomeRegions() {
   const auto& t = BodyRegionTable::BuiltIn();
@@ -44,40 +44,27 @@ std::vector<BodyLimits> SomeRegions() {
           t.Limits("abdomen", "", ContactType::kTransient)};
 }
 
-co::CandidateMaterial Foam() {
-  const std::vector<std::string> names{"PU foam PORON 4701-30 320"};
-  return co::SelectCandidates(covopt::materials::Catalog::BuiltIn(), names).front();
+/// The foam of Fr3AuditSetup (PORON 4701-30 320).
+const co::CandidateMaterial& Foam() {
+  static const co::CandidateMaterial foam = *Fr3AuditSetup(rb::RobotSurface{}).covering.material;
+  return foam;
 }
 
-struct Fr3 {
-  rb::KinematicChain chain;
-  rb::RobotSurface surface;
-  rb::JointTrajectory pick;
-};
-
-/// The FR3 on a coarse surface (0.1 m spacing: quick) and its pick move.
-const Fr3& TheFr3() {
-  static const Fr3 fr3 = [] {
-    const std::string urdf = kModels + "/franka_fr3.urdf";
-    rb::KinematicChain chain = rb::KinematicChain::FromUrdfFile(urdf, {"", "fr3_link8"});
+/// The FR3's surface at a coarse spacing (0.1 m: quick).
+const rb::RobotSurface& CoarseSurface() {
+  static const rb::RobotSurface surface = [] {
     rb::SurfaceOptions options;
     options.spacing_m = 0.1;
-    rb::RobotSurface surface = rb::SurfaceFromUrdfFile(urdf, chain, options);
-    rb::JointTrajectory pick = rb::ReadJointTrajectory(kModels + "/franka_fr3_pick.csv", chain.joint_count());
-    return Fr3{std::move(chain), std::move(surface), std::move(pick)};
+    return rb::SurfaceFromUrdfFile(kFr3Urdf, Fr3(), options);
   }();
-  return fr3;
+  return surface;
 }
 
 /// The FR3 with `thickness_m` of PORON 4701-30 320 on every link, every transient region of
-/// ISO/TS 15066 and the head.
+/// ISO/TS 15066 and the head (Fr3AuditSetup's, at another thickness).
 ca::AuditSetup Fr3Setup(double thickness_m) {
-  const Fr3& fr3 = TheFr3();
-  ca::AuditSetup setup{fr3.chain, fr3.surface};
-  const co::CandidateMaterial foam = Foam();
-  setup.covering = {co::CoveringOf(foam, thickness_m, covopt::CoveringLaw::kAuto), foam};
-  setup.regions = BodyRegionTable::BuiltIn().AllLimits(ContactType::kTransient);
-  setup.head = covopt::Scene{};
+  ca::AuditSetup setup = Fr3AuditSetup(CoarseSurface());
+  setup.covering.covering = co::CoveringOf(*setup.covering.material, thickness_m, covopt::CoveringLaw::kAuto);
   return setup;
 }
 
@@ -120,7 +107,7 @@ void CheckJointLimits(const ca::RetimeResult& r) {
 TEST_CASE("the FR3 pick re-timed is safe at every sample, and the re-audit agrees with the safe path speed",
           "[retime][fr3]") {
   const ca::AuditSetup setup = Fr3Setup(0.006);
-  const ca::RetimeResult r = ca::Retime(setup, TheFr3().pick, Fr3Options());
+  const ca::RetimeResult r = ca::Retime(setup, Pick(), Fr3Options());
   INFO(r.message);
   REQUIRE(r.status == ca::RetimeStatus::kSafe);
   REQUIRE(r.before.safe_speed_scale < 1.0);  // the program as given is unsafe
@@ -137,12 +124,12 @@ TEST_CASE("the FR3 pick re-timed is safe at every sample, and the re-audit agree
   }
   // Same positions, times from the profile, velocities q'(s) ṡ.
   const rb::JointTrajectory& t = r.trajectory;
-  REQUIRE(t.size() == TheFr3().pick.size());
+  REQUIRE(t.size() == Pick().size());
   CHECK(t.source_name.find("(re-timed)") != std::string::npos);
   CHECK(t.time_s.back() - t.time_s.front() == Approx(r.cycle_time_s).epsilon(1e-12));
   for (std::size_t i = 0; i < t.size(); ++i) {
-    CHECK(t.positions[i] == TheFr3().pick.positions[i]);
-    CHECK((t.velocities[i] - TheFr3().pick.velocities[i] * r.path_speed[i]).norm() <= 1e-12);
+    CHECK(t.positions[i] == Pick().positions[i]);
+    CHECK((t.velocities[i] - Pick().velocities[i] * r.path_speed[i]).norm() <= 1e-12);
   }
   CheckJointLimits(r);
   CHECK(r.original_cycle_time_s == Approx(1.5).epsilon(1e-12));
@@ -155,7 +142,7 @@ TEST_CASE("a limit local to one instant: the re-timed FR3 pick is strictly faste
           "[retime][fr3]") {
   // 20 mm: unsafe (0.95×) only around the fastest stretch of the move.
   const ca::AuditSetup setup = Fr3Setup(0.02);
-  const ca::RetimeResult r = ca::Retime(setup, TheFr3().pick, Fr3Options());
+  const ca::RetimeResult r = ca::Retime(setup, Pick(), Fr3Options());
   INFO(r.message);
   REQUIRE(r.status == ca::RetimeStatus::kSafe);
   // Unsafe, but only at a few samples around one instant.
@@ -175,7 +162,7 @@ TEST_CASE("a safe program with max_speed_scale 1 comes back unchanged", "[retime
   const ca::AuditSetup setup = Fr3Setup(0.04);
   ca::RetimeOptions options = Fr3Options();
   options.joint_acceleration_limits = Eigen::VectorXd::Constant(7, 1e3);  // the program's own keep them
-  const ca::RetimeResult r = ca::Retime(setup, TheFr3().pick, options);
+  const ca::RetimeResult r = ca::Retime(setup, Pick(), options);
   INFO(r.message);
   REQUIRE(r.before.safe_speed_scale >= 1.0);
   REQUIRE(r.status == ca::RetimeStatus::kSafe);
@@ -183,8 +170,22 @@ TEST_CASE("a safe program with max_speed_scale 1 comes back unchanged", "[retime
   CHECK(r.uniform_cycle_time_s == Approx(r.original_cycle_time_s).epsilon(1e-12));
   for (std::size_t i = 0; i < r.path_speed.size(); ++i) {
     CHECK(r.path_speed[i] == Approx(1.0).epsilon(1e-9));
-    CHECK(r.trajectory.time_s[i] == Approx(TheFr3().pick.time_s[i]).epsilon(1e-9).margin(1e-12));
+    CHECK(r.trajectory.time_s[i] == Approx(Pick().time_s[i]).epsilon(1e-9).margin(1e-12));
   }
+}
+
+TEST_CASE("a covering refused at any speed leaves no safe timing: infeasible, naming the instant, link and region",
+          "[retime][infeasible]") {
+  ca::AuditSetup setup = Fr3Setup(0.01);
+  setup.covering.material->name = "mystery foam";
+  setup.covering.material->crush_behaviour = covopt::materials::CrushBehaviour::kUnknown;  // refused by the rule
+  const ca::RetimeResult r = ca::Retime(setup, Pick(), Fr3Options());
+  CHECK(r.status == ca::RetimeStatus::kInfeasible);
+  CHECK_THAT(r.message, Catch::Contains("infeasible: at t = ") && Catch::Contains("has no safe speed against") &&
+                            Catch::Contains("no timing is safe"));
+  CHECK(r.trajectory.size() == 0);
+  CHECK(std::isinf(r.cycle_time_s));
+  CHECK(std::isinf(r.uniform_cycle_time_s));
 }
 
 namespace {
@@ -279,10 +280,10 @@ TEST_CASE("a braking robot: each sample's braked safe path speed is at least the
     link.points = some;
   }
   rb::JointTrajectory some_samples;
-  for (std::size_t i = 0; i < TheFr3().pick.size(); i += 5) {
-    some_samples.time_s.push_back(TheFr3().pick.time_s[i]);
-    some_samples.positions.push_back(TheFr3().pick.positions[i]);
-    some_samples.velocities.push_back(TheFr3().pick.velocities[i]);
+  for (std::size_t i = 0; i < Pick().size(); i += 5) {
+    some_samples.time_s.push_back(Pick().time_s[i]);
+    some_samples.positions.push_back(Pick().positions[i]);
+    some_samples.velocities.push_back(Pick().velocities[i]);
   }
   const ca::RetimeResult unbraked = ca::Retime(setup, some_samples, Fr3Options());
   setup.reaction_delay_s = 0.002;
@@ -337,7 +338,7 @@ TEST_CASE("cycle time against thickness: a foam's cycle time does not rise with 
   const std::vector<ca::CycleTimeDesign> designs{{"PORON 4701-30 320", setup.covering, std::nullopt}};
   const std::vector<double> thicknesses{0.0, 0.004, 0.008, 0.012, 0.016};
   const std::vector<ca::CycleTimePoint> points =
-      ca::CycleTimeAgainstThickness(setup, TheFr3().pick, Fr3Options(), designs, thicknesses);
+      ca::CycleTimeAgainstThickness(setup, Pick(), Fr3Options(), designs, thicknesses);
   REQUIRE(points.size() == thicknesses.size());
   double previous = kInf;
   for (std::size_t k = 0; k < points.size(); ++k) {
@@ -355,7 +356,7 @@ TEST_CASE("cycle time against thickness: a foam's cycle time does not rise with 
       ca::AuditSetup at = setup;
       at.link_coverings.clear();
       at.covering.covering = co::CoveringOf(Foam(), thicknesses[k], covopt::CoveringLaw::kAuto);
-      CHECK(ca::Retime(at, TheFr3().pick, Fr3Options()).cycle_time_s == Approx(p.cycle_time_s).epsilon(1e-12));
+      CHECK(ca::Retime(at, Pick(), Fr3Options()).cycle_time_s == Approx(p.cycle_time_s).epsilon(1e-12));
     }
   }
   CHECK(std::isfinite(previous));
@@ -369,7 +370,7 @@ TEST_CASE("the per-link design's point of the cycle-time sweep runs at full spee
   ca::RetimeOptions options = Fr3Options();
   options.joint_acceleration_limits = Eigen::VectorXd::Constant(7, 1e3);
   const std::vector<ca::CycleTimeDesign> designs{{"per-link design", setup.covering, design}};
-  const std::vector<ca::CycleTimePoint> points = ca::CycleTimeAgainstThickness(setup, TheFr3().pick, options, designs, {});
+  const std::vector<ca::CycleTimePoint> points = ca::CycleTimeAgainstThickness(setup, Pick(), options, designs, {});
   REQUIRE(points.size() == 1);
   INFO(points[0].message);
   REQUIRE(points[0].status == ca::RetimeStatus::kSafe);
@@ -379,12 +380,12 @@ TEST_CASE("the per-link design's point of the cycle-time sweep runs at full spee
 }
 
 TEST_CASE("WriteJointTrajectory round-trips through ReadJointTrajectory exactly", "[retime][writer]") {
-  rb::JointTrajectory t = TheFr3().pick;
+  rb::JointTrajectory t = Pick();
   t.time_s[3] = std::nextafter(t.time_s[3], 1.0);  // a number whose shortest form needs 17 digits
   t.velocities[5][2] = -1.0 / 3.0;
   t.positions[7][6] = 2.5e-7;
   std::ostringstream out;
-  rb::WriteJointTrajectory(out, t, TheFr3().chain.joint_names());
+  rb::WriteJointTrajectory(out, t, Fr3().joint_names());
   CHECK(out.str().rfind("time_s,fr3_joint1,", 0) == 0);
   CHECK(out.str().find(",fr3_joint7_velocity\n") != std::string::npos);
   std::istringstream in(out.str());
@@ -400,13 +401,13 @@ TEST_CASE("WriteJointTrajectory round-trips through ReadJointTrajectory exactly"
   CHECK_THAT(MessageOf([&] { rb::WriteJointTrajectory(sink, t, {"a", "b"}); }),
              Catch::Contains("trajectory sample 1") && Catch::Contains("2 joints"));
   t.velocities[4][0] = std::nan("");
-  CHECK_THAT(MessageOf([&] { rb::WriteJointTrajectory(sink, t, TheFr3().chain.joint_names()); }),
+  CHECK_THAT(MessageOf([&] { rb::WriteJointTrajectory(sink, t, Fr3().joint_names()); }),
              Catch::Contains("trajectory sample 5") && Catch::Contains("not a finite number"));
 }
 
 TEST_CASE("Retime refuses bad input in one line naming the field and the value", "[retime][bad-input]") {
   const ca::AuditSetup setup = Fr3Setup(0.01);
-  const rb::JointTrajectory& pick = TheFr3().pick;
+  const rb::JointTrajectory& pick = Pick();
   const auto refuses = [&](const ca::RetimeOptions& o, const std::string& field, const std::string& value) {
     const std::string message = MessageOf([&] { ca::Retime(setup, pick, o); });
     CHECK_THAT(message, Catch::Contains(field) && Catch::Contains(value));

@@ -4,7 +4,9 @@
 // scaling, the infeasible cases and every refused input.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -160,6 +162,34 @@ TEST_CASE("the joints' speed and acceleration limits hold at every sample and al
   CHECK(std::is_sorted(p.time_s.begin(), p.time_s.end()));
 }
 
+TEST_CASE("a joint's turning point is passed at the speed its curvature allows, sqrt(a / q'')", "[topp]") {
+  // q(s) = s² / 2 on [-1, 1]: q' = s, q'' = 1, the joint goes from 0.5 to 0 and back. At s = 0 it
+  // stands still (no speed bound) but q̈ = q' s̈ + q'' ṡ² = ṡ² <= a caps ṡ at sqrt(a). Before it,
+  // ṡ² > a would need s̈ >= (ṡ² - a) / |s| > 0 and could never come down: the joint's fastest
+  // reversal is ṡ = sqrt(a) throughout (q̈ = a), 2 / sqrt(a) in all, exact on these samples.
+  co::PathSamples path;
+  for (int i = 0; i <= 20; ++i) {
+    path.s.push_back(-1.0 + 0.1 * i);
+    path.dq_ds.push_back(Eigen::VectorXd::Constant(1, path.s.back()));
+  }
+  path.s[10] = 0.0;
+  path.dq_ds[10][0] = 0.0;
+  for (const double a : {0.5, 2.0}) {
+    const co::TimeOptimalProfile p = co::TimeOptimalParameterization(path, OneJoint(21, 3.0, a));
+    REQUIRE(p.ok());
+    CHECK(p.duration_s() == Approx(2.0 / std::sqrt(a)).epsilon(1e-12));
+    for (std::size_t i = 0; i < 21; ++i) {
+      CHECK(p.path_speed[i] == Approx(std::sqrt(a)).epsilon(1e-12));
+      CHECK(p.bound[i] == co::PathSpeedBound::kJointAcceleration);  // the joint speed 3 is far
+    }
+  }
+  CHECK(std::string(co::ToString(co::PathSpeedBound::kJointAcceleration)) == "joint-acceleration");
+  CHECK(std::string(co::ToString(co::PathSpeedBound::kPathSpeed)) == "path-speed");
+  CHECK(std::string(co::ToString(co::PathSpeedBound::kJointSpeed)) == "joint-speed");
+  CHECK(std::string(co::ToString(co::PathSpeedBound::kBoundary)) == "boundary");
+  CHECK(std::string(co::ToString(co::TimeOptimalStatus::kSuccess)) == "success");
+}
+
 /// Whether the profile x (ṡ² per sample) keeps every constraint; its duration if so.
 double BruteDuration(const co::PathSamples& path, const co::PathLimits& limits, const std::vector<double>& x) {
   double time = 0.0;
@@ -224,6 +254,45 @@ TEST_CASE("when only a constant path-speed bound binds, the program is scaled un
   }
 }
 
+TEST_CASE("random paths: limits kept, never slower than the fastest constant path speed", "[topp]") {
+  // The fastest constant ṡ = c keeps every bound of the discretised problem (c <= the speed
+  // bounds, and c² |q''| <= a on every segment), so the optimum's duration is at most L / c.
+  std::mt19937 random(37);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::size_t samples = 30 + static_cast<std::size_t>(trial);
+    co::PathSamples path;
+    co::PathLimits limits{{}, Eigen::Vector3d(1.0, 2.0, 1.5), Eigen::Vector3d(3.0, 1.0, 5.0)};
+    Eigen::Vector3d slope(unit(random), unit(random), unit(random));
+    for (std::size_t i = 0; i < samples; ++i) {
+      path.s.push_back(i == 0 ? 0.0 : path.s.back() + 0.02 + 0.05 * (1.0 + unit(random)));
+      slope += 0.3 * Eigen::Vector3d(unit(random), unit(random), unit(random));
+      if (i % 7 == 3) slope[trial % 3] = 1e-12;  // a joint almost at rest: a huge speed bound
+      path.dq_ds.push_back(slope);
+      limits.max_path_speed.push_back(i % 5 == 0 ? kInf : 1.0 + unit(random) * 0.8);
+    }
+    const co::TimeOptimalProfile p = co::TimeOptimalParameterization(path, limits);
+    REQUIRE(p.ok());
+    double c = kInf;
+    for (std::size_t i = 0; i < samples; ++i) {
+      c = std::min(c, limits.max_path_speed[i]);
+      for (Eigen::Index j = 0; j < 3; ++j) {
+        c = std::min(c, limits.max_joint_speed[j] / std::abs(path.dq_ds[i][j]));
+        CHECK(std::abs(path.dq_ds[i][j]) * p.path_speed[i] <= limits.max_joint_speed[j] * (1.0 + 1e-9));
+        if (i + 1 == samples) continue;
+        CHECK(SegmentAcceleration(path, p, i, j) <= limits.max_joint_acceleration[j] * (1.0 + 1e-9));
+        const double curvature = std::abs(path.dq_ds[i + 1][j] - path.dq_ds[i][j]) / (path.s[i + 1] - path.s[i]);
+        c = std::min(c, std::sqrt(limits.max_joint_acceleration[j] / curvature));
+      }
+      CHECK(p.path_speed[i] <= limits.max_path_speed[i] * (1.0 + 1e-12));
+      CHECK(std::isfinite(p.time_s[i]));
+    }
+    INFO("trial " << trial << ": " << p.duration_s() << " s against " << path.s.back() / c << " s at constant ṡ = " << c);
+    CHECK(p.duration_s() <= path.s.back() / c * (1.0 + 1e-12));
+    CHECK(p.duration_s() < path.s.back() / c * 0.99);  // and faster: the bounds vary along the path
+  }
+}
+
 TEST_CASE("a path that cannot be kept is infeasible, and the message names where and why", "[topp]") {
   const co::PathSamples path = Line(1.0, 11);
   SECTION("too fast a start to stop by the end") {
@@ -263,60 +332,41 @@ TEST_CASE("a path that cannot be kept is infeasible, and the message names where
 TEST_CASE("bad input is refused with the field and the value named", "[topp]") {
   const co::PathSamples good = Line(1.0, 3);
   const co::PathLimits limits = OneJoint(3, 1.0, 1.0);
-  auto refuses = [](co::PathSamples path, co::PathLimits lim, co::TimeOptimalOptions options, const std::string& field) {
+  // Each case changes one input of a good problem; the message must name the field (and value).
+  auto refuses = [&](const std::function<void(co::PathSamples&, co::PathLimits&, co::TimeOptimalOptions&)>& change,
+                     const std::string& field) {
+    co::PathSamples path = good;
+    co::PathLimits lim = limits;
+    co::TimeOptimalOptions options;
+    change(path, lim, options);
     INFO("field " << field);
     CHECK_THROWS_WITH(co::TimeOptimalParameterization(path, lim, options), Catch::Contains(field));
   };
+  using P = co::PathSamples;
+  using L = co::PathLimits;
+  using O = co::TimeOptimalOptions;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  refuses(Line(1.0, 1), OneJoint(1, 1.0, 1.0), {}, "at least 2");
-  co::PathSamples p = good;
-  p.dq_ds.pop_back();
-  refuses(p, limits, {}, "path.dq_ds has 2 entries");
-  p = good;
-  p.s[2] = 0.5;
-  refuses(p, limits, {}, "path.s[2] = 0.5");
-  p.s[2] = nan;
-  refuses(p, limits, {}, "path.s[2]");
-  p = good;
-  p.dq_ds[1] = Eigen::Vector2d(1.0, 1.0);
-  refuses(p, limits, {}, "path.dq_ds[1] has 2 entries");
-  p = good;
-  p.dq_ds[1][0] = kInf;
-  refuses(p, limits, {}, "path.dq_ds[1][0] = inf");
-  co::PathLimits l = limits;
-  l.max_path_speed.pop_back();
-  refuses(good, l, {}, "limits.max_path_speed has 2");
+  refuses([](P& p, L& l, O&) { p = Line(1.0, 1); l = OneJoint(1, 1.0, 1.0); }, "path.s has 1 samples; it must have at least 2");
+  refuses([](P& p, L&, O&) { p.dq_ds.pop_back(); }, "path.dq_ds has 2 entries");
+  refuses([](P& p, L&, O&) { p.s[2] = 0.5; }, "path.s[2] = 0.5 must be > path.s[1]");
+  refuses([&](P& p, L&, O&) { p.s[2] = nan; }, "path.s[2] = nan");
+  refuses([](P& p, L&, O&) { p.dq_ds[1] = Eigen::Vector2d(1.0, 1.0); }, "path.dq_ds[1] has 2 entries");
+  refuses([](P& p, L&, O&) { p.dq_ds[1][0] = kInf; }, "path.dq_ds[1][0] = inf");
+  refuses([](P&, L& l, O&) { l.max_path_speed.pop_back(); }, "limits.max_path_speed has 2");
+  refuses([](P&, L& l, O&) { l.max_joint_speed = Eigen::Vector2d(1.0, 1.0); }, "limits.max_joint_speed has 2");
+  refuses([](P&, L& l, O&) { l.max_joint_acceleration = Eigen::Vector2d(1.0, 1.0); }, "limits.max_joint_acceleration has 2");
   for (const double bad : {0.0, -1.0, nan}) {
-    l = limits;
-    l.max_path_speed[1] = bad;
-    refuses(good, l, {}, "limits.max_path_speed[1]");
-    l = limits;
-    l.max_joint_speed[0] = bad;
-    refuses(good, l, {}, "limits.max_joint_speed[0]");
-    l = limits;
-    l.max_joint_acceleration[0] = bad;
-    refuses(good, l, {}, "limits.max_joint_acceleration[0]");
+    const std::string value = " = " + std::string(std::isnan(bad) ? "nan" : bad == 0.0 ? "0" : "-1");
+    refuses([&](P&, L& l, O&) { l.max_path_speed[1] = bad; }, "limits.max_path_speed[1]" + value);
+    refuses([&](P&, L& l, O&) { l.max_joint_speed[0] = bad; }, "limits.max_joint_speed[0]" + value);
+    refuses([&](P&, L& l, O&) { l.max_joint_acceleration[0] = bad; }, "limits.max_joint_acceleration[0]" + value);
+    refuses([&](P&, L&, O& o) { o.tolerance = bad; }, "options.tolerance" + value);
   }
-  l = limits;
-  l.max_joint_acceleration[0] = kInf;
-  refuses(good, l, {}, "limits.max_joint_acceleration[0] = inf");
-  l = limits;
-  l.max_joint_speed = Eigen::Vector2d(1.0, 1.0);
-  refuses(good, l, {}, "limits.max_joint_speed has 2");
-  l = limits;
-  l.max_joint_acceleration = Eigen::Vector2d(1.0, 1.0);
-  refuses(good, l, {}, "limits.max_joint_acceleration has 2");
-  co::TimeOptimalOptions o;
-  o.start_path_speed = -0.1;
-  refuses(good, limits, o, "options.start_path_speed = -0.1");
-  o = {};
-  o.end_path_speed = 1.5;  // above the joint's speed limit 1 at q' = 1
-  refuses(good, limits, o, "options.end_path_speed = 1.5 must be in [0, 1]");
-  for (const double bad : {0.0, 1e-2, nan}) {
-    o = {};
-    o.tolerance = bad;
-    refuses(good, limits, o, "options.tolerance");
-  }
+  refuses([](P&, L& l, O&) { l.max_joint_acceleration[0] = kInf; }, "limits.max_joint_acceleration[0] = inf");
+  refuses([](P&, L&, O& o) { o.tolerance = 1e-2; }, "options.tolerance = 0.01 must be in (0, 1e-3]");
+  refuses([](P&, L&, O& o) { o.start_path_speed = -0.1; }, "options.start_path_speed = -0.1");
+  // above the joint's speed limit 1 at q' = 1
+  refuses([](P&, L&, O& o) { o.end_path_speed = 1.5; }, "options.end_path_speed = 1.5 must be in [0, 1]");
 }
 
 }  // namespace

@@ -31,6 +31,7 @@
 #include <covopt/robot/kinematic_chain.hpp>
 #include <covopt/robot/surface.hpp>
 #include <covopt/robot/trajectory.hpp>
+#include <covopt/scene_file/exposure_file.hpp>
 #include <covopt/scene_file/link_coverings.hpp>
 
 #include "covopt/audit/audit.hpp"
@@ -59,6 +60,9 @@ struct AuditFieldNames {
   std::string robot_mass = "robot_mass";
   std::string speed = "speed";
   std::string robot_radius = "robot_radius";
+  std::string tool_surface = "tool_surface";
+  std::string payload_surface = "payload_surface";
+  std::string exposure = "exposure";
 };
 
 /// What an audit is assembled from: the inputs every command shares already resolved by the
@@ -74,6 +78,14 @@ struct AuditInputs {
   std::optional<std::string> urdf_text;
   /// The surface's spacing, box edge radius and surface file (robot/surface.hpp).
   robot::SurfaceOptions surface;
+  /// The tool's and the payload's shapes in the flange frame, as specs (tool_surface.hpp,
+  /// ParseTipShape): the surface rows "tool" and "payload", carried by the chain's tip link
+  /// (after a surface file's [[tool]] and [[payload]] shapes).
+  std::vector<std::string> tool_surface;
+  std::vector<std::string> payload_surface;
+  /// The exposure zones (AuditSetup::exposure_zones): an exposure file (TOML,
+  /// scene_file::ReadExposureFile), or the zones themselves; empty: every region everywhere.
+  std::optional<std::variant<std::string, std::vector<ExposureZone>>> exposure;
   /// The radius a covering is judged on at a flat point (AuditSetup::flat_face_radius_m).
   std::optional<double> flat_face_radius_m;
   robot::ReflectedMassOptions reflected_mass;
@@ -120,6 +132,9 @@ struct AssembledAudit {
   AuditSetup setup;
   robot::JointTrajectory trajectory;
   AuditOptions options;
+  /// The exposure file's title and source, when one was read (for the report).
+  std::string exposure_title;
+  std::string exposure_source;
   /// What the inputs assumed (an assumed Poisson ratio of a link's material), then the
   /// scene's warnings: the input warnings of the report (report::AuditJson).
   std::vector<std::string> input_warnings;
@@ -129,7 +144,8 @@ struct AssembledAudit {
 /// @throws std::invalid_argument naming the input by inputs.names: the scene's robot mass,
 ///         speed or radius (given_robot_inputs), a clamped contact, a
 ///         design input without the design, an unreadable surface, trajectory or link-covering
-///         file, a chain without collision geometry, a link covering for a link not on the
+///         file, a bad tool or payload shape spec, an unreadable exposure file, a chain without
+///         collision geometry (and no tool), a link covering for a link not on the
 ///         surface, a material or family not in the catalog.
 AssembledAudit AssembleAudit(const AuditInputs& inputs);
 

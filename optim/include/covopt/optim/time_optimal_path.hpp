@@ -19,7 +19,8 @@
 ///     bounded at both ends of every segment: |q'_j(s_i) u_i + q''_j,i x_i| <= a_j and
 ///     |q'_j(s_{i+1}) u_i + q''_j,i x_{i+1}| <= a_j. The bound then holds along the whole segment.
 /// The backward pass computes each sample's controllable set K_i = [x_lo, x_hi] (two 2-variable
-/// LPs per segment); the forward pass takes at each sample the largest u that keeps x_{i+1} in
+/// LPs per segment, solved together and exactly by eliminating u: every lower bound on u against
+/// every upper bound); the forward pass takes at each sample the largest u that keeps x_{i+1} in
 /// K_{i+1}. The result is time-optimal among the discretised profiles.
 ///
 ///     covopt::optim::PathSamples path{s, dq_ds};
@@ -70,7 +71,9 @@ struct TimeOptimalOptions {
 enum class TimeOptimalStatus {
   kSuccess,     ///< a profile that keeps every constraint
   kInfeasible,  ///< no profile: some sample's controllable set is empty, or the path speed is 0
-                ///< at two neighbouring samples (the path would take forever); message says where
+                ///< at two neighbouring samples (the path would take forever), or nothing bounds
+                ///< it (no joint moves and max_path_speed is +inf); message says where (samples
+                ///< and joints numbered from 0)
 };
 /// "success" or "infeasible".
 const char* ToString(TimeOptimalStatus status) noexcept;

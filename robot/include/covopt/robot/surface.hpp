@@ -87,9 +87,15 @@ struct SurfacePoint {
   std::size_t shape_index = 0;  ///< which of the link's shapes it lies on
 };
 
-/// The surface of one chain link.
+/// The surface of one chain link, or of what a link carries (the tool, the payload).
 struct LinkSurface {
-  std::string link;                   ///< the URDF link name
+  /// The URDF link name; "tool" or "payload" for the shapes the tip link carries (AddTipSurface).
+  std::string link;
+  /// The chain link whose frame the shapes are given in and that moves them; empty: `link`
+  /// itself. The tool and the payload: the chain's tip link (the flange).
+  std::string frame_link;
+  /// The chain link that moves the shapes: frame_link, or link when it is empty.
+  const std::string& carrier() const noexcept { return frame_link.empty() ? link : frame_link; }
   std::vector<SurfaceShape> shapes;   ///< in the order read
   std::vector<SurfacePoint> points;   ///< sampled on the shapes (SurfaceOptions::spacing_m)
 };
@@ -121,6 +127,10 @@ struct SurfaceOptions {
 struct SurfaceFileShapes {
   std::string source;                 ///< the file's path, for messages
   std::vector<LinkSurface> links;     ///< shapes only; no points yet
+  /// The [[tool]] and [[payload]] tables' shapes in the tip link's frame (link "tool",
+  /// "payload"); no shapes: none given.
+  LinkSurface tool;
+  LinkSurface payload;
 };
 
 /// Reads a surface file (format: robot/README.md, "Surface files"):
@@ -129,6 +139,10 @@ struct SurfaceFileShapes {
 ///     name = "upper_arm_link"
 ///     segments = [ { from_m = [0, 0, 0.138], to_m = [-0.425, 0, 0.138], radius_m = 0.054 } ]
 ///     points = [ { at_m = [0, 0, 0.2], radius_m = 0.04 } ]
+///
+///     [[tool]]                          # what the flange carries, in the tip link's frame
+///     segments = [ { from_m = [0, 0, 0.02], to_m = [0, 0, 0.12], radius_m = 0.04 } ]
+///     [[payload]]                       # the same keys
 ///
 /// @throws std::invalid_argument "file:line:column: ..." naming the key and the value: not
 ///         TOML, an unknown key, a link without name or with neither segments nor points, a
@@ -160,6 +174,15 @@ RobotSurface SurfaceFromUrdfString(const std::string& urdf_text, const Kinematic
 RobotSurface SurfaceFromUrdfString(const std::string& urdf_text, const KinematicChain& chain,
                                    const SurfaceOptions& options, const std::string& source_name,
                                    const SurfaceFileShapes* surface_file);
+/// Adds shapes the chain's tip link carries (the tool, the payload), given in its frame (the
+/// flange), to `surface` as the LinkSurface named `name` ("tool", "payload") with frame_link the
+/// tip link, sampled at surface.spacing_m; shapes added under a name already on the surface join
+/// its shapes. Nothing happens for no shapes.
+/// @throws std::invalid_argument as SampleShape, and for shapes that would take the surface
+///         over kMaxSurfacePoints.
+void AddTipSurface(RobotSurface& surface, const KinematicChain& chain, const std::string& name,
+                   const std::vector<SurfaceShape>& shapes);
+
 /// As SurfaceFromUrdfString, from the URDF file at `path`.
 RobotSurface SurfaceFromUrdfFile(const std::filesystem::path& path, const KinematicChain& chain,
                                  const SurfaceOptions& options = {});
