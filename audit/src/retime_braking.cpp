@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <functional>
 #include <map>
+#include <queue>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -19,11 +21,10 @@ namespace {
 /// Per sample, the braked robot's safe speed scale, exactly, judging as few point-samples braked
 /// as it can. Two lower bounds of a point-sample's braked scale v_b(m)/v: its unbraked scale
 /// v_max(m)/v (braking only takes energy out), and v_b(m')/v for a mass m' >= m judged braked at
-/// the same link, radius and region (a heavier robot is no safer; a grid of 8 masses per decade,
+/// the same link, radius and region (a heavier robot is no safer; a grid of 16 masses per decade,
 /// judged once for all samples; where judged masses contradict it, only the first bound is used
-/// there). Per sample the point-samples are taken by their unbraked scale, lowest first; one is
-/// judged braked exactly unless a bound already puts it above the best judged so far, and the
-/// search stops at the first unbraked scale above it.
+/// there). Per sample, best bound first: the point-sample on top has its bound tightened (the
+/// grid's, then its own braked judgement) until the one on top is judged: no other can be lower.
 class SampleBrakedSearch {
  public:
   SampleBrakedSearch(const AuditSetup& setup, const RegionLimits& regions, const std::vector<LinkPlan>& plans)
@@ -65,7 +66,7 @@ class SampleBrakedSearch {
     std::size_t region = 0;
   };
   using Key = std::tuple<std::size_t, std::uint32_t, std::size_t>;  // link, radius, region
-  static constexpr double kGridPerDecade = 8.0;
+  static constexpr double kGridPerDecade = 16.0;
 
   /// v_b at (key, mass), judged once; nullopt when the time path failed.
   std::optional<double> Braked(const Key& key, double mass_kg) {
@@ -99,30 +100,58 @@ class SampleBrakedSearch {
     return std::max(c.unbraked_scale, *v_b / c.speed_m_per_s);
   }
 
+  /// Sample i's braked scale, best bound first: a candidate's bound goes from its unbraked scale
+  /// to the grid's bound to its judged braked scale; the first judged one on top is the minimum.
   void Resolve(std::size_t i, SafePathSpeed& safe) {
-    std::sort(candidates_.begin(), candidates_.end(),
-              [](const Candidate& a, const Candidate& b) { return a.unbraked_scale < b.unbraked_scale; });
-    double best = kInf;
-    for (const Candidate& c : candidates_) {
-      if (!(c.unbraked_scale < best)) break;  // no later one can be lower
-      double scale = c.unbraked_scale;        // a fixed direction cannot brake
-      if (std::isfinite(c.mass_kg)) {
-        const std::optional<double> bound = LowerBound(c);
-        if (!bound) return;
-        if (!(*bound < best)) continue;
-        const std::optional<double> v_b = Braked(Key{c.link, c.radius, c.region}, c.mass_kg);
-        if (!v_b) return;
-        scale = *v_b / c.speed_m_per_s;
-      }
-      if (scale < best) {
-        best = scale;
+    enum Stage : int { kUnbraked = 0, kGrid = 1, kJudged = 2 };
+    std::vector<std::pair<double, int>> state(candidates_.size());  // bound, stage
+    using Entry = std::pair<double, std::size_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> heap;
+    const auto fill = [&] {
+      heap = {};
+      for (std::size_t k = 0; k < state.size(); ++k) heap.emplace(state[k].first, k);
+    };
+    for (std::size_t k = 0; k < candidates_.size(); ++k) {
+      const Candidate& c = candidates_[k];
+      state[k] = {c.unbraked_scale, std::isfinite(c.mass_kg) ? kUnbraked : kJudged};  // a fixed direction cannot brake
+    }
+    fill();
+    while (!heap.empty()) {
+      const auto [bound, k] = heap.top();
+      heap.pop();
+      if (bound != state[k].first) continue;  // superseded
+      const Candidate& c = candidates_[k];
+      const Key key{c.link, c.radius, c.region};
+      if (state[k].second == kJudged) {
+        // v_b/v is the scale (v_b carries the safety factor, as the cells' speed_scale); at least
+        // the unbraked bound.
+        safe.speed[i] = std::max(safe.speed[i], bound);
         safe.link[i] = c.link;
         safe.region[i] = c.region;
+        return;
+      }
+      const bool was_monotone = !non_monotone_[key];
+      std::optional<double> next;
+      if (state[k].second == kUnbraked) {
+        next = LowerBound(c);
+      } else if (const std::optional<double> v_b = Braked(key, c.mass_kg)) {
+        next = *v_b / c.speed_m_per_s;
+      }
+      if (!next) return;  // the time path failed
+      state[k] = {std::max(*next, c.unbraked_scale), state[k].second + 1};
+      if (was_monotone && non_monotone_[key]) {
+        // The grid's bounds of this key no longer hold: back to the unbraked ones.
+        for (std::size_t j = 0; j < state.size(); ++j) {
+          const Candidate& o = candidates_[j];
+          if (state[j].second == kGrid && Key{o.link, o.radius, o.region} == key) {
+            state[j] = {o.unbraked_scale, kUnbraked};
+          }
+        }
+        fill();
+      } else {
+        heap.emplace(state[k].first, k);
       }
     }
-    // v_b/v is the scale (v_b carries the safety factor, as the cells' speed_scale); at least the
-    // unbraked bound, +inf where nothing moves.
-    safe.speed[i] = std::max(safe.speed[i], best);
   }
 
   const AuditSetup& setup_;

@@ -111,7 +111,7 @@ TEST_CASE("the FR3 pick re-timed is safe at every sample, and the re-audit agree
   INFO(r.message);
   REQUIRE(r.status == ca::RetimeStatus::kSafe);
   REQUIRE(r.before.safe_speed_scale < 1.0);  // the program as given is unsafe
-  CHECK(r.after.safe_speed_scale >= 1.0 - 1e-6);
+  CHECK(r.after.safe_speed_scale >= 1.0);  // an audit of the re-timed program alone says "safe"
   const std::vector<double> before = SampleScales(r.before, setup.rule.safety_factor);
   const std::vector<double> after = SampleScales(r.after, setup.rule.safety_factor);
   REQUIRE(after.size() == r.path_speed.size());
