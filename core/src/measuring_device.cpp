@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,7 @@
 #include "body_contact_time_path.hpp"
 #include "covopt/core/number_format.hpp"
 #include "covopt/core/physical_floors.hpp"
+#include "covopt/core/quantity.hpp"
 #include "range_check.hpp"
 
 namespace covopt {
@@ -55,9 +57,9 @@ std::string Normalised(std::string_view text) {
 }
 
 void CheckDevice(const MeasuringDevice& d) {
-  internal::CheckPositive("device.spring", d.spring_N_per_m, kMaxSpring_N_per_m, "N/m");
-  internal::CheckInRange("device.pad_hardness", d.pad_shore_a, 0.0, 100.0, "Shore A");
-  internal::CheckInRange("device.pad_thickness", d.pad_thickness_m, kMinLayerThickness_m, kMaxPadThickness_m, "m");
+  internal::CheckPositive("device_spring", d.spring_N_per_m, kMaxSpring_N_per_m, "N/m");
+  internal::CheckInRange("device_pad", d.pad_shore_a, 0.0, 100.0, "Shore A");
+  internal::CheckInRange("device_pad_thickness", d.pad_thickness_m, kMinLayerThickness_m, kMaxPadThickness_m, "m");
 }
 
 /// The layer's limits under the Hertz law, with its own name in the note.
@@ -79,10 +81,65 @@ DeviceLayer Layer(std::string_view name, double modulus_Pa, double poisson, doub
   return l;
 }
 
+/// "70ShA", "70 Shore A", "70": the Shore A hardness of a pad.
+double ParseShoreA(std::string_view text) {
+  std::string t = Normalised(text);
+  for (const std::string_view unit : {"-shore-a", "shore-a", "shorea", "sha", "a"}) {
+    if (t.size() > unit.size() && t.ends_with(unit)) {
+      t.resize(t.size() - unit.size());
+      break;
+    }
+  }
+  while (!t.empty() && t.back() == '-') t.pop_back();  // a space before the unit
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+  if (t.empty() || ec != std::errc() || end != t.data() + t.size() || !(value >= 0.0 && value <= 100.0)) {
+    throw std::invalid_argument("device_pad: the hardness must be a Shore A number in [0, 100], e.g. 70ShA (got '" +
+                                std::string(text) + "')");
+  }
+  return value;
+}
+
+// A pad's thickness: a length, plausible as a bare number up to 0.1 m (else a slip for mm).
+constexpr QuantitySpec kPadThickness{QuantityKind::kLength, false, false, 0.0, 0.1, {"mm", "cm"}, "pad thickness"};
+
 }  // namespace
 
+MeasuringDevice ResolveDevice(const DeviceChoice& c, std::string_view region) {
+  if (c.preset && (c.spring_N_per_m || c.pad)) {
+    throw std::invalid_argument("device: give a preset, or device_spring and device_pad, not both");
+  }
+  if (c.pad_thickness_m && !c.preset && (c.spring_N_per_m || c.pad)) {
+    throw std::invalid_argument("device_pad_thickness goes with a preset; give the pad's thickness in device_pad "
+                                "(HARDNESS,THICKNESS, e.g. 70ShA,7mm)");
+  }
+  if (!c.spring_N_per_m && !c.pad) {
+    if (!c.preset && DevicePresetForRegion(region) == nullptr) {
+      throw std::invalid_argument("device: no spring and pad pair stands for " + std::string(region) +
+                                  "; give device (a pair, e.g. 25+70) or device_spring and device_pad");
+    }
+    return DeviceNamed(c.preset.value_or(std::string(region)), c.pad_thickness_m);
+  }
+  if (!c.spring_N_per_m || !c.pad) {
+    throw std::invalid_argument(std::string(c.pad ? "device_spring" : "device_pad") +
+                                ": device_spring and device_pad go together (e.g. 25N/mm and 70ShA,7mm)");
+  }
+  MeasuringDevice d;
+  d.spring_N_per_m = *c.spring_N_per_m;
+  const std::string_view pad = *c.pad;
+  const std::size_t comma = pad.find(',');
+  d.pad_shore_a = ParseShoreA(pad.substr(0, comma));
+  d.pad_thickness_assumed = comma == std::string_view::npos;
+  if (!d.pad_thickness_assumed) {
+    d.pad_thickness_m = ParseQuantity(pad.substr(comma + 1), kPadThickness, "device_pad");
+    internal::CheckInRange("device_pad's thickness", d.pad_thickness_m, kMinLayerThickness_m, kMaxPadThickness_m, "m");
+  }
+  CheckDevice(d);
+  return d;
+}
+
 double ShoreAModulus_Pa(double shore_a) {
-  internal::CheckInRange("device.pad_hardness", shore_a, 0.0, 100.0, "Shore A");
+  internal::CheckInRange("device_pad", shore_a, 0.0, 100.0, "Shore A");
   return 1e6 * std::pow(10.0, 0.0235 * shore_a - 0.6403);
 }
 
@@ -180,6 +237,7 @@ DeviceReading PredictDeviceReading(const BodyContactScene& robot, const Measurin
   scene.contact = ContactType::kClamped;  // the device does not move: mu = m_R
   scene.contact_area_m2 = 0.0;
   reading.contact = Solve(scene, options);
+  reading.stiff_pad_force_N = robot.speed_m_per_s * std::sqrt(robot.robot_mass_kg * device.spring_N_per_m);
 
   const double approach = reading.contact.covering_deflection_m;
   const double a = reading.contact.contact_radius_m;
@@ -211,6 +269,11 @@ DeviceReading PredictDeviceReading(const BodyContactScene& robot, const Measurin
   }
   for (const DeviceLayer* layer : {&reading.pad, reading.covering ? &*reading.covering : nullptr}) {
     if (layer != nullptr && !layer->validity.within) w.push_back("outside the Hertz law: " + layer->validity.note);
+  }
+  if (!reading.validity.within) {
+    w.push_back("the device's reading lies between the Hertz prediction " +
+                FormatSignificant(reading.contact.peak_force_N, 4) + " N and the stiff pad's " +
+                FormatSignificant(reading.stiff_pad_force_N, 4) + " N (the spring alone, v sqrt(m k_D))");
   }
   return reading;
 }

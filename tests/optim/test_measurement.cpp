@@ -171,22 +171,48 @@ TEST_CASE("device presets: the pairs and the regions they stand for", "[measure]
         covopt::PredictDeviceReading(Robot(), Device(35.0, 30.0)).validity.within);
 }
 
+TEST_CASE("the device a command names: a preset, a spring with a pad, or the region's pair", "[measure]") {
+  using covopt::DeviceChoice;
+  const MeasuringDevice own = covopt::ResolveDevice({}, "lower-legs");
+  CHECK((own.name == "60+30" && own.spring_N_per_m == 60e3 && own.pad_shore_a == 30.0));
+  const MeasuringDevice pad = covopt::ResolveDevice(
+      {.preset = std::nullopt, .spring_N_per_m = 25e3, .pad = "70 Shore A,5mm", .pad_thickness_m = std::nullopt}, "chest");
+  CHECK((pad.pad_shore_a == 70.0 && pad.pad_thickness_m == Approx(0.005) && !pad.pad_thickness_assumed));
+  CHECK(covopt::ResolveDevice({.preset = std::nullopt, .spring_N_per_m = 25e3, .pad = "30ShA", .pad_thickness_m = std::nullopt},
+                              "chest").pad_thickness_assumed);
+  const MeasuringDevice thin = covopt::ResolveDevice(
+      {.preset = "25+70", .spring_N_per_m = std::nullopt, .pad = std::nullopt, .pad_thickness_m = 0.004}, "face");
+  CHECK(thin.pad_thickness_m == 0.004);
+  auto refused = [](const DeviceChoice& c, const char* named) {
+    INFO(named);
+    CHECK_THROWS_WITH(covopt::ResolveDevice(c, "chest"), Catch::Contains(named));
+  };
+  refused({.preset = std::nullopt, .spring_N_per_m = 25e3, .pad = "170ShA", .pad_thickness_m = std::nullopt}, "device_pad: the hardness");
+  refused({.preset = std::nullopt, .spring_N_per_m = 25e3, .pad = "hard", .pad_thickness_m = std::nullopt}, "device_pad: the hardness");
+  refused({.preset = std::nullopt, .spring_N_per_m = 25e3, .pad = "70ShA,0mm", .pad_thickness_m = std::nullopt}, "device_pad's thickness");
+  refused({.preset = std::nullopt, .spring_N_per_m = 25e3, .pad = "70ShA,7kg", .pad_thickness_m = std::nullopt}, "device_pad");
+  refused({.preset = std::nullopt, .spring_N_per_m = 25e3, .pad = std::nullopt, .pad_thickness_m = std::nullopt}, "device_pad: device_spring and device_pad go together");
+  refused({.preset = "25+70", .spring_N_per_m = 25e3, .pad = std::nullopt, .pad_thickness_m = std::nullopt}, "not both");
+  refused({.preset = std::nullopt, .spring_N_per_m = -1.0, .pad = "70", .pad_thickness_m = std::nullopt}, "device_spring");
+  CHECK_THROWS_WITH(covopt::ResolveDevice({}, "pelvis"), Catch::Contains("device: no spring and pad pair stands for pelvis"));
+}
+
 TEST_CASE("the Shore A modulus is the catalog's Ruess correlation", "[measure]") {
   // The catalog stores elastomer Shore A30 at 1.161 MPa and A60 at 5.884 MPa.
   CHECK(covopt::ShoreAModulus_Pa(30.0) == Approx(1.161e6).epsilon(1e-3));
   CHECK(covopt::ShoreAModulus_Pa(60.0) == Approx(5.884e6).epsilon(1e-3));
-  CHECK_THROWS_WITH(covopt::ShoreAModulus_Pa(101.0), Catch::Contains("device.pad_hardness"));
+  CHECK_THROWS_WITH(covopt::ShoreAModulus_Pa(101.0), Catch::Contains("device_pad"));
 }
 
 TEST_CASE("bad devices and robots are refused naming the field", "[measure]") {
-  CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(), Device(0.0, 70.0)), Catch::Contains("device.spring"));
-  CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(), Device(-5.0, 70.0)), Catch::Contains("device.spring"));
-  CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(), Device(25.0, -1.0)), Catch::Contains("device.pad_hardness"));
-  CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(), Device(25.0, NAN)), Catch::Contains("device.pad_hardness"));
+  CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(), Device(0.0, 70.0)), Catch::Contains("device_spring"));
+  CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(), Device(-5.0, 70.0)), Catch::Contains("device_spring"));
+  CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(), Device(25.0, -1.0)), Catch::Contains("device_pad"));
+  CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(), Device(25.0, NAN)), Catch::Contains("device_pad"));
   CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(), Device(25.0, 70.0, 0.0)),
-                    Catch::Contains("device.pad_thickness"));
+                    Catch::Contains("device_pad_thickness"));
   CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(), Device(25.0, 70.0, 0.5)),
-                    Catch::Contains("device.pad_thickness"));
+                    Catch::Contains("device_pad_thickness"));
   CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(covopt::kFixed), Device(25.0, 70.0)),
                     Catch::Contains("robot.mass"));
   CHECK_THROWS_WITH(covopt::PredictDeviceReading(Robot(10.0, 0.25, covopt::kFlat), Device(25.0, 70.0)),

@@ -49,7 +49,7 @@ inline constexpr double kDevicePadPoissonRatio = 0.49;
 inline constexpr double kDefaultPadThickness_m = 0.007;
 
 /// Young's modulus [Pa] of a solid elastomer of Shore A hardness `shore_a` (Ruess).
-/// @throws std::invalid_argument "device.pad_hardness: ... in [0, 100] Shore A (got ...)".
+/// @throws std::invalid_argument "device_pad must be in [0, 100] Shore A (got ...)".
 double ShoreAModulus_Pa(double shore_a);
 
 /// One spring and pad pair of a biofidelic measuring device.
@@ -88,6 +88,25 @@ MeasuringDevice DeviceNamed(std::string_view name, std::optional<double> pad_thi
 /// The preset for the body region named `region` (its ISO name), if one stands for it.
 const DevicePreset* DevicePresetForRegion(std::string_view region) noexcept;
 
+/// The device as `covopt measure` and covopt.predict_measurement name it: a preset, or a spring
+/// with a pad, or nothing (the region's own pair).
+struct DeviceChoice {
+  std::optional<std::string> preset;         ///< device: a pair ("25+70") or a region ("chest")
+  std::optional<double> spring_N_per_m;      ///< device_spring [N/m]
+  /// device_pad: the pad's Shore A hardness and, after a comma, its thickness with a unit:
+  /// "70ShA,7mm", "70 Shore A", "70".
+  std::optional<std::string> pad;
+  std::optional<double> pad_thickness_m;     ///< device_pad_thickness [m], with a preset
+};
+
+/// The device `choice` names for the region `region` (its ISO name): the preset; or the spring
+/// and the pad (both needed); or, with neither, the region's own pair.
+/// @throws std::invalid_argument naming device, device_spring, device_pad or
+///         device_pad_thickness, e.g. "device_pad: the hardness must be a Shore A number in
+///         [0, 100], e.g. 70ShA (got '170ShA')", or "device: no spring and pad pair stands for
+///         pelvis; give device (a pair) or device_spring and device_pad".
+MeasuringDevice ResolveDevice(const DeviceChoice& choice, std::string_view region);
+
 /// One layer of the device's contact at the peak.
 struct DeviceLayer {
   double modulus_Pa = 0.0;       ///< E [Pa]
@@ -111,6 +130,11 @@ struct DeviceReading {
   DeviceLayer pad;
   /// The robot's covering; empty for a bare robot.
   std::optional<DeviceLayer> covering;
+  /// The reading with a rigid pad and no covering [N]: v sqrt(m_R k_D), the spring alone. Every
+  /// compliant layer lowers the reading, so it bounds it from above (without braking): where
+  /// a layer leaves the Hertz law (a thin bonded pad is stiffer than the half-space), the true
+  /// reading lies between contact.peak_force_N and this.
+  double stiff_pad_force_N = 0.0;
   /// Both layers within the Hertz law (the pad's and the covering's limits together).
   CoveringValidity validity;
   /// For people: the hardness outside the correlation's range, an assumed thickness, a layer
