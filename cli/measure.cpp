@@ -23,10 +23,6 @@
 namespace covopt::cli {
 namespace {
 
-// A bare number is N/m: 1 kN/m to 10 MN/m is believable; "25" is a slip for 25 N/mm.
-constexpr QuantitySpec kDeviceSpring{QuantityKind::kStiffness, false, false, 1e3, 1e7, {"N/mm", "kN/m"}, "device spring"};
-constexpr QuantitySpec kPadThickness{QuantityKind::kLength, false, false, 0.0, 0.1, {"mm", "cm"}, "pad thickness"};
-
 /// A library message about the device, its keywords (device_spring, ...) spelled as flags.
 std::string DeviceFlags(std::string message) {
   // Longest first; a name inside a longer one (device in device_pad) is left to that one.
@@ -47,9 +43,9 @@ std::string DeviceFlags(std::string message) {
 /// The device the flags name: the library's ResolveDevice, its messages naming the flags.
 MeasuringDevice ResolveDeviceFlags(const MeasureOptions& o, const materials::BodyLimits& limits) {
   DeviceChoice choice{.preset = o.device, .spring_N_per_m = std::nullopt, .pad = o.device_pad, .pad_thickness_m = std::nullopt};
-  if (o.device_spring) choice.spring_N_per_m = ParseQuantity(*o.device_spring, kDeviceSpring, "--device-spring");
+  if (o.device_spring) choice.spring_N_per_m = ParseQuantity(*o.device_spring, kDeviceSpringSpec, "--device-spring");
   if (o.device_pad_thickness) {
-    choice.pad_thickness_m = ParseQuantity(*o.device_pad_thickness, kPadThickness, "--device-pad-thickness");
+    choice.pad_thickness_m = ParseQuantity(*o.device_pad_thickness, kPadThicknessSpec, "--device-pad-thickness");
   }
   try {
     return ResolveDevice(choice, limits.region->name);

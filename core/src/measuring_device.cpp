@@ -14,7 +14,6 @@
 #include "body_contact_time_path.hpp"
 #include "covopt/core/number_format.hpp"
 #include "covopt/core/physical_floors.hpp"
-#include "covopt/core/quantity.hpp"
 #include "range_check.hpp"
 
 namespace covopt {
@@ -100,9 +99,6 @@ double ParseShoreA(std::string_view text) {
   return value;
 }
 
-// A pad's thickness: a length, plausible as a bare number up to 0.1 m (else a slip for mm).
-constexpr QuantitySpec kPadThickness{QuantityKind::kLength, false, false, 0.0, 0.1, {"mm", "cm"}, "pad thickness"};
-
 }  // namespace
 
 MeasuringDevice ResolveDevice(const DeviceChoice& c, std::string_view region) {
@@ -131,7 +127,7 @@ MeasuringDevice ResolveDevice(const DeviceChoice& c, std::string_view region) {
   d.pad_shore_a = ParseShoreA(pad.substr(0, comma));
   d.pad_thickness_assumed = comma == std::string_view::npos;
   if (!d.pad_thickness_assumed) {
-    d.pad_thickness_m = ParseQuantity(pad.substr(comma + 1), kPadThickness, "device_pad");
+    d.pad_thickness_m = ParseQuantity(pad.substr(comma + 1), kPadThicknessSpec, "device_pad");
     internal::CheckInRange("device_pad's thickness", d.pad_thickness_m, kMinLayerThickness_m, kMaxPadThickness_m, "m");
   }
   CheckDevice(d);

@@ -32,6 +32,7 @@
 
 #include "covopt/core/body_contact.hpp"
 #include "covopt/core/impact_result.hpp"
+#include "covopt/core/quantity.hpp"
 
 namespace covopt {
 
@@ -47,6 +48,14 @@ inline constexpr double kDevicePadPoissonRatio = 0.49;
 /// The pad's thickness [m] when none is given: an assumption (the maker's manual cited gives the
 /// hardness, not the thickness); every reading that takes it says so.
 inline constexpr double kDefaultPadThickness_m = 0.007;
+
+/// How the device's spring and pad thickness are read with units (ParseQuantity): a bare
+/// number is N/m, believable from 1 kN/m to 10 MN/m ("25" is a slip for 25 N/mm), and m,
+/// believable up to 0.1 m.
+inline constexpr QuantitySpec kDeviceSpringSpec{QuantityKind::kStiffness, false, false, 1e3, 1e7, {"N/mm", "kN/m"},
+                                                "device spring"};
+inline constexpr QuantitySpec kPadThicknessSpec{QuantityKind::kLength, false, false, 0.0, 0.1, {"mm", "cm"},
+                                                "pad thickness"};
 
 /// Young's modulus [Pa] of a solid elastomer of Shore A hardness `shore_a` (Ruess).
 /// @throws std::invalid_argument "device_pad must be in [0, 100] Shore A (got ...)".
