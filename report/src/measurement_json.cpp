@@ -135,8 +135,9 @@ std::string MeasurementText(const BodyContactScene& scene, const optim::Measurem
   out += fmt::format("  {:<22}{:>14}{:>14}{:>10}\n", "stiff pad force [N]", FormatFixed(r.stiff_pad_force_N, 1), "", "");
   out += "\n";
   out += fmt::format("Verdict      device: {}; body model: {}\n", VerdictWords(p.device_verdict), VerdictWords(p.body.verdict));
-  out += fmt::format("Difference   the device reads {} N ({}× the body model's force){}\n",
-                     FormatSignificant(p.force_difference_N, 4), FormatSignificant(p.force_ratio, 4),
+  out += fmt::format("Difference   the device reads {} N {} ({}× the body model's force){}\n",
+                     FormatSignificant(std::abs(p.force_difference_N), 4), p.force_difference_N >= 0.0 ? "more" : "less",
+                     FormatSignificant(p.force_ratio, 4),
                      p.pressure_ratio ? fmt::format("; pressure {}×", FormatSignificant(*p.pressure_ratio, 4))
                                       : std::string());
   out += fmt::format("Pad          deflection {} mm (strain {}); {}\n", FormatSignificant(r.pad.deflection_m * 1e3, 3),
