@@ -112,7 +112,7 @@ int RunMeasure(const MeasureOptions& options, std::ostream& out, std::ostream& e
       try {
         PrintAndReport(out, plan.json,
                        report::MeasurementJson(scene, body_text::MaterialName(plan), prediction, plan.safety_factor, warnings),
-                       options.run, options.scene.report, plan.inputs, report::ReportKind::kSimulate,
+                       options.run, options.scene.report, plan.inputs, report::ReportKind::kMeasure,
                        [] { return std::vector<chart::GnuplotChart>{}; });
       } catch (const OutputError& e) {
         return errors.Failed(e);

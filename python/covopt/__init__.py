@@ -548,7 +548,7 @@ class Measurement(Result):
     force_ratio, pressure_difference_Pa, pressure_ratio: device against body model), safe,
     scope, summary, warnings.
     """
-    _report_kind = "simulate"
+    _report_kind = "measure"
 
 
 @_takes_objects

@@ -6,6 +6,7 @@ region) and the refusals naming the keyword."""
 
 import json
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -78,3 +79,9 @@ def test_trends_and_the_default_device():
 def test_bad_devices_are_refused(keywords, named):
     with pytest.raises(ValueError, match=named.replace("+", r"\+")):
         covopt.predict_measurement(covopt.Scene(**BARE), body_region="chest", contact_area="1cm2", **keywords)
+
+
+def test_report(tmp_path):
+    r = covopt.predict_measurement(covopt.Scene(**BARE), body_region="chest", contact_area="1cm2")
+    html = pathlib.Path(r.to_html(tmp_path / "measure.html")).read_text(encoding="utf-8")
+    assert "chest (sternum), device 25+70" in html and "chest (sternum), body model" in html

@@ -25,6 +25,7 @@ std::string_view ToString(ReportKind kind) noexcept {
     case ReportKind::kSpeedLimit: return "speed-limit";
     case ReportKind::kTrajectory: return "robot --trajectory";
     case ReportKind::kAudit: return "audit";
+    case ReportKind::kMeasure: return "measure";
   }
   return "unknown";
 }

@@ -1,7 +1,11 @@
 // `covopt measure` run in-process: the JSON is the library's prediction (PredictMeasurement)
 // with "summary" and "input_sources", the region's pair is the default device, the text shows
 // the device beside the body model, and bad input is exit 2 with one line naming the flag.
+#include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -100,4 +104,17 @@ TEST_CASE("measure refuses bad devices naming the flag", "[measure]") {
   const CliRun pelvis = Run({"measure", "--body-region", "pelvis", "--covering-thickness", "0", "--contact-area", "1cm2"});
   CHECK(pelvis.exit_code == 2);
   CHECK(pelvis.err.find("no spring and pad pair stands for pelvis") != std::string::npos);
+}
+
+TEST_CASE("measure --report writes the report of its result", "[measure]") {
+  const covopt::cli::testing::TempDir dir;
+  const std::string file = (dir / "measure.html").string();
+  const CliRun run = Run(With(Base(), {"--report", file}));
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  std::ifstream in(file);
+  const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(html.find("<!DOCTYPE html") != std::string::npos);
+  CHECK(html.find("chest (sternum), device 25+70") != std::string::npos);
+  CHECK(html.find("chest (sternum), body model") != std::string::npos);
 }
