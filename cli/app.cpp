@@ -17,6 +17,7 @@
 #include "body_regions_command.hpp"
 #include "errors.hpp"
 #include "materials_command.hpp"
+#include "measure.hpp"
 #include "optimize.hpp"
 #include "parse_errors.hpp"
 #include "simulate.hpp"
@@ -88,6 +89,10 @@ constexpr std::array kCommands{
             Register<RobotOptions, SetupRobot, RunRobot>},
     Command{"body-regions", "ISO/TS 15066:2016's body regions: list or show their limits, k and m_H",
             Register<BodyRegionsOptions, SetupBodyRegions, RunBodyRegions>},
+    Command{"measure",
+            "What a force-measuring device (spring + Shore A pad) would read, beside the body model's prediction "
+            "for the same region",
+            Register<MeasureOptions, SetupMeasure, RunMeasure>},
     Command{"audit",
             "The whole robot along its motion: every link's surface against every body region; the safe "
             "speed scale, which link and region set it, and per link the covering that makes the "

@@ -535,3 +535,44 @@ def load_scene(path):
     """
     return Scene(**_covopt.load_scene(str(path)))
 
+
+
+class Measurement(Result):
+    """covopt.predict_measurement's result, the object of ``covopt measure --json``
+    (``to_dict()``): scene, safety_factor, device (name, spring_N_per_m, pad_shore_a,
+    pad_modulus_Pa and its source, pad_thickness_m, pad_thickness_assumed, reduced_mass_kg,
+    peak_force_N: what the device shows, stiff_pad_force_N: the spring alone, an upper bound,
+    peak_pressure_Pa: what a pressure film on the pad shows, pad and covering layers, validity,
+    force and pressure against the region's limits, admissible), body_model (the body model's
+    verdict, as covopt.simulate(body_region=...)'s), comparison (force_difference_N,
+    force_ratio, pressure_difference_Pa, pressure_ratio: device against body model), safe,
+    scope, summary, warnings.
+    """
+    _report_kind = "measure"
+
+
+@_takes_objects
+@_provenance.stamped
+def predict_measurement(scene=None, *, body_region, body_area=None, contact=None, contact_area=None,
+                        keep_travel=False, device=None, device_spring=None, device_pad=None,
+                        device_pad_thickness=None):
+    """What a biofidelic force-measuring device would read when the scene's robot strikes it,
+    beside the body model's prediction for the same region: ``covopt measure --json``
+    (docs/guide/measure.md, docs/model.md §13.11).
+
+    The device is a spring on a fixed base under a pad of Shore A hardness (its modulus from
+    the Ruess correlation): the robot's whole reflected mass strikes it, and its pad and the
+    robot's covering form one Hertz contact. body_region, body_area, contact, contact_area and
+    keep_travel: as covopt.simulate's (one ISO region). The device: device, a spring and pad
+    pair ("25+70", N/mm + Shore A, DGUV FB HM-080) or the region it stands for ("chest"), with
+    device_pad_thickness (m, or "7mm"; default 7 mm, assumed and said so); or device_spring (N/m,
+    or "25N/mm") with device_pad ("70ShA,7mm": hardness and thickness); or neither: the region's
+    own pair. Returns a Measurement. Raises ValueError on bad input, naming the keyword.
+    """
+    return Measurement(_covopt.predict_measurement(_scene(scene), **_given(
+        body_region=body_region, body_area=body_area, contact=contact, contact_area=contact_area,
+        keep_travel=keep_travel, device=device, device_spring=device_spring, device_pad=device_pad,
+        device_pad_thickness=device_pad_thickness)))
+
+
+__all__ += ["predict_measurement", "Measurement"]

@@ -491,6 +491,15 @@ BodyRegionSelection SelectBodyRegions(const SceneInputs& inputs, const py::kwarg
                              JudgeOptions(inputs, kwargs)};
 }
 
+OneRegionContact ReadOneRegionContact(const SceneInputs& inputs, const py::kwargs& kwargs, const char* function) {
+  const materials::ContactTargets targets = OneRegion(kwargs, function);
+  const BodyLimits& limits = *targets.targets.front().limits;
+  RefuseHeadKeywords(inputs, limits.region->name);
+  const BodyContactScene scene = scene_file::BodyContactSceneOf(inputs.scene, targets);
+  RequireBareContactArea(targets, scene);
+  return {limits, scene, JudgeOptions(inputs, kwargs), MaterialName(inputs), ContactWarnings(inputs, targets, scene)};
+}
+
 void RegisterBodyContact(py::module_& m) {
   m.def("simulate_body_region", &Simulate);
   m.def("body_region_speed_limit", &SpeedLimitTable);

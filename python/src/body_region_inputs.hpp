@@ -3,6 +3,7 @@
 /// The body-region keywords (body_region, body_area, contact, contact_area, the criterion
 /// flags) as body_contact.cpp reads them, for the other binding files (covopt.audit).
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,5 +36,18 @@ std::string AsKeywords(std::string_view message);
 /// contact_area= and the criterion flags of `kwargs`, as covopt.simulate(body_region=...).
 /// @throws std::invalid_argument naming the keyword and the value.
 BodyRegionSelection SelectBodyRegions(const SceneInputs& inputs, const pybind11::kwargs& kwargs);
+
+/// One ISO region's contact as covopt.simulate(body_region=...) reads it: one region (not the
+/// head), no keyword the body-region model does not read, the bare robot's contact area; the
+/// robot's contact scene, the judging options and the warnings simulate gives for it.
+struct OneRegionContact {
+  materials::BodyLimits limits;
+  BodyContactScene scene;
+  optim::BodyRegionOptions judge;
+  std::optional<std::string> material;  ///< the covering's catalog name, if any
+  std::vector<std::string> warnings;
+};
+/// @throws std::invalid_argument naming the keyword (`function` names the call).
+OneRegionContact ReadOneRegionContact(const SceneInputs& inputs, const pybind11::kwargs& kwargs, const char* function);
 
 }  // namespace covopt::python

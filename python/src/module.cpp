@@ -675,6 +675,7 @@ void BindAudit(py::module_& m);            // audit_bindings.cpp
 void BindReport(py::module_& m);           // report_bindings.cpp
 void BindSweep(py::module_& m);            // sweep_bindings.cpp
 void BindCatalog(py::module_& m);          // catalog_bindings.cpp
+void BindMeasure(py::module_& m);          // measure_bindings.cpp
 }  // namespace covopt::python
 
 PYBIND11_MODULE(_covopt, m) {
@@ -686,6 +687,7 @@ PYBIND11_MODULE(_covopt, m) {
   m.def("materials", &covopt::python::Materials);
   m.def("material", &covopt::python::Material, py::arg("name"));
   covopt::python::BindCatalog(m);
+  covopt::python::BindMeasure(m);
   covopt::python::BindSpeedLimit(m);
   covopt::python::BindRobot(m);
   covopt::python::BindTrajectory(m);

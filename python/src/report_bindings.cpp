@@ -92,7 +92,8 @@ report::ReportInfo ReportInfoOf(const py::object& report_info) {
 report::ReportKind KindOf(const std::string& kind) {
   constexpr std::array kKinds{report::ReportKind::kSimulate, report::ReportKind::kOptimize,
                               report::ReportKind::kSpeedLimit, report::ReportKind::kTrajectory,
-                              report::ReportKind::kAudit, report::ReportKind::kRetime};
+                              report::ReportKind::kAudit, report::ReportKind::kRetime,
+                              report::ReportKind::kMeasure};
   for (const report::ReportKind k : kKinds) {
     if (report::ToString(k) == kind) return k;
   }

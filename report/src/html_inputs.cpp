@@ -33,6 +33,7 @@ std::vector<std::string_view> InputKeys(ReportKind kind) {
     case ReportKind::kAudit:
       return {"robot", "coverings", "contact_area_m2", "reaction_delay_s", "braking_m_per_s2", "safety_factor",
               "sample_count", "surface", "regions"};
+    case ReportKind::kMeasure: return {"scene", "safety_factor", "device"};
   }
   return {};
 }

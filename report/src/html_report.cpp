@@ -26,6 +26,7 @@ std::string_view ToString(ReportKind kind) noexcept {
     case ReportKind::kTrajectory: return "robot --trajectory";
     case ReportKind::kAudit: return "audit";
     case ReportKind::kRetime: return "retime";
+    case ReportKind::kMeasure: return "measure";
   }
   return "unknown";
 }

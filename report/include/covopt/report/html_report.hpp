@@ -71,9 +71,9 @@
 namespace covopt::report {
 
 /// The command a report is for.
-enum class ReportKind { kSimulate, kOptimize, kSpeedLimit, kTrajectory, kAudit, kRetime };
+enum class ReportKind { kSimulate, kOptimize, kSpeedLimit, kTrajectory, kAudit, kRetime, kMeasure };
 
-/// "simulate", "optimize", "speed-limit", "robot --trajectory", "audit", "retime".
+/// "simulate", "optimize", "speed-limit", "robot --trajectory", "audit", "retime", "measure".
 std::string_view ToString(ReportKind kind) noexcept;
 
 /// A chart of a report: a standalone SVG document (gnuplot's, its XML prolog allowed) with a
