@@ -40,8 +40,8 @@ void CollectNamedFiles(const CLI::App& command, std::vector<NamedFile>& files) {
 }  // namespace
 
 bool IsOutputFileFlag(std::string_view long_flag) noexcept {
-  static constexpr std::array<std::string_view, 6> kOutputs{
-      "--report", "--csv", "--samples-csv", "--history", "--plot", "--tolerance-plot"};
+  static constexpr std::array<std::string_view, 8> kOutputs{
+      "--report", "--csv", "--samples-csv", "--history", "--plot", "--tolerance-plot", "--output", "--thickness-plot"};
   return std::find(kOutputs.begin(), kOutputs.end(), long_flag) != kOutputs.end();
 }
 
