@@ -116,6 +116,9 @@ audit::AuditFieldNames FlagNames() {
   n.robot_mass = "--robot-mass";
   n.speed = "--speed";
   n.robot_radius = "--robot-radius";
+  n.tool_surface = "--tool-surface";
+  n.payload_surface = "--payload-surface";
+  n.exposure = "--exposure";
   return n;
 }
 
@@ -209,6 +212,10 @@ AuditRun Resolve(const AuditCommandOptions& o) {
   in.head = head;
   in.judge = BodyRegionOptionsOf(plan, o.allow_full_compression, o.allow_crushing);
   if (o.link_coverings) in.link_coverings = *o.link_coverings;
+  // The tool, the payload and the exposure zones.
+  in.tool_surface = o.tool_surface;
+  in.payload_surface = o.payload_surface;
+  if (o.exposure) in.exposure = *o.exposure;
   SetDesignFlags(o, in);
   // The catalog, for --link-coverings and --design.
   std::optional<materials::Catalog> catalog;
@@ -257,6 +264,11 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
   fmt::print(out, "Surface    {} links, {} points (spacing {}){}\n", setup.surface.links.size(),
              setup.surface.point_count(), FormatQuantity(setup.surface.spacing_m, QuantityKind::kLength),
              o.surface_file ? fmt::format(", surface file {}", *o.surface_file) : std::string());
+  if (!r.exposure_zones.empty()) {
+    fmt::print(out, "Exposure   {} zone{} ({}); {} of {} link × region cells not judged (Scope lists the zones)\n",
+               r.exposure_zones.size(), r.exposure_zones.size() == 1 ? "" : "s", *o.exposure, r.not_judged_cells,
+               r.cells.size());
+  }
   fmt::print(out, "Covering   all links: {}\n", CoveringText(setup.covering));
   for (const auto& [link, covering] : setup.link_coverings) {
     fmt::print(out, "           {}: {} (--link-coverings)\n", link, CoveringText(covering));
@@ -290,11 +302,13 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
       return r.cell(l, a).governing_ratio > r.cell(l, b).governing_ratio;
     });
     if (order.empty() || !r.cell(l, order.front()).sample) {
-      fmt::print(out, "  {:<14} (never moves: limits nothing)\n", r.links[l]);
+      const std::string& why = order.empty() ? std::string() : r.cell(l, order.front()).not_judged;
+      fmt::print(out, "  {:<14} {}\n", r.links[l], why.empty() ? "(never moves: limits nothing)" : "(not judged: " + why + ")");
       continue;
     }
     for (std::size_t k = 0; k < std::min(kRegionsShownPerLink, order.size()); ++k) {
       const audit::AuditCell& c = r.cell(l, order[k]);
+      if (!c.sample) break;  // not judged (exposure zones): the scope and warnings say so
       fmt::print(out, "  {:<14} {:<34} {:>8}  {:<16} {:>8.4g}  {:<26} {:>9.4g} {:>9.4g} {:>9.4g} {:>8}\n",
                  k == 0 ? r.links[l] : "", r.regions[c.region], RatioText(c.governing_ratio),
                  c.binding_name(), c.time_s, Point(c.point_in_base_m), c.speed_m_per_s, c.reflected_mass_kg,
@@ -367,6 +381,21 @@ void SetupAudit(CLI::App* sub, AuditCommandOptions& options) {
   sub->add_option("--link-coverings", options.link_coverings,
                   "a covering per link (TOML: [[link]] name, material or modulus and poisson, thickness); the others "
                   "keep the covering flags'")
+      ->type_name("FILE.toml")
+      ->group(kAudit);
+  // The tool, the payload and the exposure zones.
+  sub->add_option("--tool-surface", options.tool_surface,
+                  "a shape of the tool in the flange frame (repeatable): capsule:from=X,Y,Z;to=X,Y,Z;radius=R, "
+                  "sphere:center=X,Y,Z;radius=R or box:center=X,Y,Z;size=X,Y,Z;edge=R[;rpy=R,P,Y]; m unless suffixed")
+      ->type_name("SPEC")
+      ->group(kAudit);
+  sub->add_option("--payload-surface", options.payload_surface,
+                  "a shape of the payload in the flange frame (repeatable; as --tool-surface), its own row 'payload'")
+      ->type_name("SPEC")
+      ->group(kAudit);
+  sub->add_option("--exposure", options.exposure,
+                  "the zones of the cell (base frame) and the body regions a person can present in each (TOML: "
+                  "[[zone]] name, min_m, max_m, regions); outside them nothing is judged")
       ->type_name("FILE.toml")
       ->group(kAudit);
   AddSceneOptions(*sub, options.scene);
