@@ -70,6 +70,10 @@ TEST_CASE("audit --exposure leaves out exactly the regions no zone exposes, the 
   }
   CHECK(left_out > 0);
   CHECK(some["not_judged_cells"] == left_out);
+  // The zone file is an input of the run's provenance, under its role.
+  bool listed = false;
+  for (const json& f : some["provenance"]["inputs"]) listed |= f["role"] == "exposure" && f["path"] == zones;
+  CHECK(listed);
 }
 
 TEST_CASE("audit --tool-surface: the gripper is the row 'tool' carried by the flange", "[audit][tool]") {
