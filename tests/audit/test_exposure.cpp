@@ -183,3 +183,24 @@ TEST_CASE("bad exposure zones are refused naming the zone and the field", "[audi
   CHECK_FALSE(none.limiting_cell);
   CHECK(none.message.rfind("not judged", 0) == 0);
 }
+
+TEST_CASE("a braking robot's search judges the same point-samples as the zones admit", "[audit][exposure][braking]") {
+  ca::AuditSetup zoned = Fr3Setup(false);
+  zoned.reaction_delay_s = 0.005;
+  zoned.braking_m_per_s2 = 50.0;
+  const double z0 = 0.5;
+  zoned.exposure_zones = {Zone("above", {-10, -10, z0}, {10, 10, 10}, {"hands-fingers", "abdomen"})};
+  ca::AuditSetup unbraked = zoned;
+  unbraked.reaction_delay_s = unbraked.braking_m_per_s2 = 0.0;
+  const ca::AuditResult braked = ca::Audit(zoned, TheFr3().pick);
+  const ca::AuditResult bound = ca::Audit(unbraked, TheFr3().pick);
+  REQUIRE(braked.cells.size() == bound.cells.size());
+  for (std::size_t k = 0; k < braked.cells.size(); ++k) {
+    const ca::AuditCell& c = braked.cells[k];
+    if (c.region == 0) CHECK(c.not_judged == "no exposure zone exposes the region");  // the chest
+    CHECK(c.sample.has_value() == bound.cells[k].sample.has_value());
+    if (!c.sample) continue;
+    CHECK(c.point_in_base_m.z() >= z0);
+    CHECK(c.governing_ratio <= bound.cells[k].governing_ratio * (1.0 + 1e-9));  // braking only takes energy out
+  }
+}
