@@ -97,6 +97,11 @@ std::string ScaleText(double scale) { return std::isfinite(scale) ? fmt::format(
 void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& run, const audit::AuditResult& r) {
   const audit::AuditSetup& setup = run.assembled.setup;
   PrintAuditInputs(out, o, run.assembled, r.sample_count);
+  if (!r.exposure_zones.empty()) {
+    fmt::print(out, "Exposure   {} zone{} ({}); {} of {} link × region cells not judged (Scope lists the zones)\n",
+               r.exposure_zones.size(), r.exposure_zones.size() == 1 ? "" : "s", *o.exposure, r.not_judged_cells,
+               r.cells.size());
+  }
   fmt::print(out, "Verdict    {}\n{}", r.message, report::SummaryText(audit::SummarizeAudit(setup, r), 11));
   if (r.limiting_cell) {
     const audit::AuditCell& c = r.cells[*r.limiting_cell];
@@ -116,11 +121,13 @@ void PrintText(std::ostream& out, const AuditCommandOptions& o, const AuditRun& 
       return r.cell(l, a).governing_ratio > r.cell(l, b).governing_ratio;
     });
     if (order.empty() || !r.cell(l, order.front()).sample) {
-      fmt::print(out, "  {:<14} (never moves: limits nothing)\n", r.links[l]);
+      const std::string& why = order.empty() ? std::string() : r.cell(l, order.front()).not_judged;
+      fmt::print(out, "  {:<14} {}\n", r.links[l], why.empty() ? "(never moves: limits nothing)" : "(not judged: " + why + ")");
       continue;
     }
     for (std::size_t k = 0; k < std::min(kRegionsShownPerLink, order.size()); ++k) {
       const audit::AuditCell& c = r.cell(l, order[k]);
+      if (!c.sample) break;  // not judged (exposure zones): the scope and warnings say so
       fmt::print(out, "  {:<14} {:<34} {:>8}  {:<16} {:>8.4g}  {:<26} {:>9.4g} {:>9.4g} {:>9.4g} {:>8}\n",
                  k == 0 ? r.links[l] : "", r.regions[c.region], RatioText(c.governing_ratio),
                  c.binding_name(), c.time_s, PointText(c.point_in_base_m), c.speed_m_per_s, c.reflected_mass_kg,

@@ -77,6 +77,9 @@ audit::AuditFieldNames FlagNames() {
   n.robot_mass = "--robot-mass";
   n.speed = "--speed";
   n.robot_radius = "--robot-radius";
+  n.tool_surface = "--tool-surface";
+  n.payload_surface = "--payload-surface";
+  n.exposure = "--exposure";
   return n;
 }
 
@@ -173,6 +176,10 @@ ResolvedAuditInputs ResolveAuditInputs(const AuditInputOptions& o) {
   in.head = head;
   in.judge = BodyRegionOptionsOf(plan, o.allow_full_compression, o.allow_crushing);
   if (o.link_coverings) in.link_coverings = *o.link_coverings;
+  // The tool, the payload and the exposure zones.
+  in.tool_surface = o.tool_surface;
+  in.payload_surface = o.payload_surface;
+  if (o.exposure) in.exposure = *o.exposure;
   SetDesignFlags(o, in);
   // The catalog, for --link-coverings and --design.
   std::optional<materials::Catalog> catalog;
@@ -262,6 +269,21 @@ void AddAuditInputOptions(CLI::App& command, AuditInputOptions& options, const c
   sub->add_option("--link-coverings", options.link_coverings,
                   "a covering per link (TOML: [[link]] name, material or modulus and poisson, thickness); the others "
                   "keep the covering flags'")
+      ->type_name("FILE.toml")
+      ->group(kAudit);
+  // The tool, the payload and the exposure zones.
+  sub->add_option("--tool-surface", options.tool_surface,
+                  "a shape of the tool in the flange frame (repeatable): capsule:from=X,Y,Z;to=X,Y,Z;radius=R, "
+                  "sphere:center=X,Y,Z;radius=R or box:center=X,Y,Z;size=X,Y,Z;edge=R[;rpy=R,P,Y]; m unless suffixed")
+      ->type_name("SPEC")
+      ->group(kAudit);
+  sub->add_option("--payload-surface", options.payload_surface,
+                  "a shape of the payload in the flange frame (repeatable; as --tool-surface), its own row 'payload'")
+      ->type_name("SPEC")
+      ->group(kAudit);
+  sub->add_option("--exposure", options.exposure,
+                  "the zones of the cell (base frame) and the body regions a person can present in each (TOML: "
+                  "[[zone]] name, min_m, max_m, regions); outside them nothing is judged")
       ->type_name("FILE.toml")
       ->group(kAudit);
   AddSceneOptions(*sub, options.scene);

@@ -40,6 +40,9 @@ struct AuditInputOptions {
   /// catalog, --body-region and its group, --safety-factor: as `simulate` reads them.
   SimulateOptions scene;
   std::optional<std::string> link_coverings;   ///< --link-coverings FILE.toml
+  std::vector<std::string> tool_surface;       ///< --tool-surface SPEC (repeatable)
+  std::vector<std::string> payload_surface;    ///< --payload-surface SPEC (repeatable)
+  std::optional<std::string> exposure;         ///< --exposure FILE.toml
   bool allow_full_compression = false;         ///< --allow-full-compression
   bool allow_crushing = false;                 ///< --allow-crushing
   bool design = false;                         ///< --design: per link the thinnest catalog covering

@@ -71,13 +71,14 @@ std::optional<std::string> OutputPathClash(const CLI::App& app) {
 }
 
 std::string_view InputFileRole(std::string_view long_flag) noexcept {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 6> kRoles{{
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kRoles{{
       {"--scene", "scene"},
       {"--catalog", "catalog"},
       {"--urdf", "urdf"},
       {"--trajectory", "trajectory"},
       {"--surface-file", "surface"},
       {"--link-coverings", "link-coverings"},
+      {"--exposure", "exposure"},
   }};
   for (const auto& [flag, role] : kRoles) {
     if (flag == long_flag) return role;

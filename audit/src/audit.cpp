@@ -240,6 +240,16 @@ std::vector<std::string> Scope(const AuditSetup& setup) {
     scope.push_back("Exposure zones (" + std::to_string(setup.exposure_zones.size()) +
                     ", boxes in the base frame, faces inside): a point-sample is judged against a region only where a "
                     "zone exposes that region; cells no zone exposes are not judged");
+    for (const ExposureZone& z : setup.exposure_zones) {
+      std::string regions;
+      for (const std::string& r : z.regions) regions += (regions.empty() ? "" : ", ") + r;
+      std::string box;
+      for (int k = 0; k < 3; ++k) {
+        box += std::string(k ? ", " : "") + "xyz"[k] + " " + FormatSignificant(z.min_m[k]) + " .. " +
+               FormatSignificant(z.max_m[k]) + " m";
+      }
+      scope.push_back("Exposure zone '" + z.name + "' (" + box + "): " + regions);
+    }
   }
   scope.push_back(
       "Each surface point at each sample: its velocity and the reflected mass along it (rigid links, no rotor "

@@ -62,6 +62,26 @@ SummaryRow CellRow(const AuditSetup& setup, const AuditResult& result, const Aud
                             Number(cell.max_safe_speed_m_per_s) + " m/s)"};
 }
 
+/// A link none of whose cells the exposure zones judge: reported, not counted, not passed.
+SummaryRow NotJudgedRow(const AuditResult& result, std::size_t link, const std::string& why) {
+  return SummaryRow{.target = result.links.at(link) + " × every region",
+                    .criterion = std::string(kNotJudgedCriterion),
+                    .part = CriterionPart::kInjury,
+                    .unit = "m/s",
+                    .value = kNaN,
+                    .limit = kNaN,
+                    .derated_limit = kNaN,
+                    .ratio = kNaN,
+                    .margin = kNaN,
+                    .counted = false,
+                    .passed = false,
+                    .binding = false,
+                    .law = "",
+                    .validity = "",
+                    .source = "exposure zones",
+                    .note = "not judged: " + why};
+}
+
 }  // namespace
 
 ResultSummary SummarizeAudit(const AuditSetup& setup, const AuditResult& result) {
@@ -75,8 +95,14 @@ ResultSummary SummarizeAudit(const AuditSetup& setup, const AuditResult& result)
       const AuditCell& cell = result.cell(link, r);
       if (cell.sample && (worst == nullptr || cell.governing_ratio > worst->governing_ratio)) worst = &cell;
     }
-    if (worst == nullptr) continue;  // the link never moves
-    s.rows.push_back(CellRow(setup, result, *worst));
+    if (worst != nullptr) {
+      s.rows.push_back(CellRow(setup, result, *worst));
+      continue;
+    }
+    // No judged cell: the link never moves, or the exposure zones judge none of its cells.
+    const AuditCell& first = result.cell(link, 0);
+    if (first.not_judged.empty()) continue;
+    s.rows.push_back(NotJudgedRow(result, link, first.not_judged));
   }
   for (const std::string& region : result.regions) s.targets.push_back(region);
   for (const SummaryRow& row : s.rows) {

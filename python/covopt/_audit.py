@@ -43,7 +43,7 @@ _KEYWORDS = ("surface_file", "surface_spacing", "box_edge_radius", "flat_face_ra
              "body_region", "body_area", "contact", "contact_area", "allow_full_compression", "allow_crushing",
              "design", "materials", "families", "allow_unknown_strength", "max_thickness", "thickness_step",
              "payload_mass", "payload_com", "payload_inertia", "ignore_joint_limits", "keep_ratio_over_time",
-             "keep_travel")
+             "keep_travel", "tool_surface", "payload_surface", "exposure")
 
 
 @takes_objects
@@ -53,7 +53,8 @@ def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surfa
           body_region=None, body_area=None, contact=None, contact_area=None, allow_full_compression=False,
           allow_crushing=False, design=False, materials=None, families=None, allow_unknown_strength=False,
           max_thickness=None, thickness_step=None, payload_mass=None, payload_com=None, payload_inertia=None,
-          ignore_joint_limits=False, keep_ratio_over_time=True, keep_travel=False):
+          ignore_joint_limits=False, keep_ratio_over_time=True, keep_travel=False, tool_surface=None,
+          payload_surface=None, exposure=None):
     """Every surface point of every link, at every sample of `trajectory`, against every exposed
     body region (audit::Audit), as ``covopt audit --json``; returns an Audit.
 
@@ -71,7 +72,11 @@ def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surfa
     contact_area as simulate takes them. design=True: per link the thinnest catalog covering
     (materials=, families=, allow_unknown_strength, max_thickness, thickness_step as optimize).
     keep_ratio_over_time=False: no samples x links matrix (memory independent of the
-    trajectory's length). ValueError on bad input.
+    trajectory's length). tool_surface, payload_surface: shapes in the flange frame as the
+    CLI's --tool-surface specs ("box:center=0,0,0.05;size=0.08,0.2,0.1;edge=10mm"; a string or a
+    list), audited as the rows "tool" and "payload". exposure: an exposure file (TOML [[zone]]
+    name, min_m, max_m, regions) or a list of dicts with those keys; cells no zone exposes are
+    not judged. ValueError on bad input.
     """
     from . import _given, _scene  # the package's helpers (covopt/__init__.py)
     options = dict(surface_file=surface_file, surface_spacing=surface_spacing, box_edge_radius=box_edge_radius,
@@ -83,7 +88,8 @@ def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surfa
                    thickness_step=thickness_step, payload_mass=payload_mass, payload_com=payload_com,
                    payload_inertia=payload_inertia, ignore_joint_limits=_given_flag(ignore_joint_limits),
                    keep_ratio_over_time=None if keep_ratio_over_time is True else keep_ratio_over_time,
-                   keep_travel=_given_flag(keep_travel))
+                   keep_travel=_given_flag(keep_travel), tool_surface=tool_surface,
+                   payload_surface=payload_surface, exposure=exposure)
     return Audit(_covopt.audit(urdf, tip, trajectory, base, urdf_text, _scene(scene), **_given(**options)))
 
 

@@ -166,6 +166,42 @@ void SetDesignKeywords(const py::kwargs& kwargs, audit::AuditInputs& in) {
   }
 }
 
+/// exposure=: an exposure file (a path), or a list of zones as dicts {name, min_m, max_m, regions}.
+std::variant<std::string, std::vector<audit::ExposureZone>> Exposure(const py::handle& value) {
+  if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__")) return Path(value);
+  std::vector<audit::ExposureZone> zones;
+  std::size_t index = 0;
+  for (const py::handle item : value) {
+    const std::string where = "exposure[" + std::to_string(index++) + "]";
+    if (!py::isinstance<py::dict>(item)) throw std::invalid_argument(where + ": expected a dict (name, min_m, max_m, regions)");
+    const py::dict zone = py::reinterpret_borrow<py::dict>(item);
+    for (const auto& [key, unused] : zone) {
+      const std::string k = py::str(key).cast<std::string>();
+      if (k != "name" && k != "min_m" && k != "max_m" && k != "regions") {
+        throw std::invalid_argument(where + ": unknown key '" + k + "' (a zone takes name, min_m, max_m, regions)");
+      }
+    }
+    const auto corner = [&](const char* key) {
+      if (!zone.contains(key)) throw std::invalid_argument(where + ": " + key + " is required ([x, y, z] in m)");
+      const std::vector<double> v = zone[key].cast<std::vector<double>>();
+      if (v.size() != 3) throw std::invalid_argument(where + ": " + key + ": expected [x, y, z] in m");
+      return Eigen::Vector3d(v[0], v[1], v[2]);
+    };
+    audit::ExposureZone z{.name = zone.contains("name") ? py::str(zone["name"]).cast<std::string>() : std::string(),
+                          .min_m = corner("min_m"),
+                          .max_m = corner("max_m"),
+                          .regions = {},
+                          .origin = where};
+    if (zone.contains("regions")) {
+      const py::object regions = zone["regions"];
+      if (py::isinstance<py::str>(regions)) z.regions.push_back(regions.cast<std::string>());
+      else for (const py::handle r : regions) z.regions.push_back(py::str(r).cast<std::string>());
+    }
+    zones.push_back(std::move(z));
+  }
+  return zones;
+}
+
 /// The audit assembled from its keywords (covopt::audit::AssembleAudit), as covopt.audit and
 /// covopt.retime both take them.
 audit::AssembledAudit AssembleFromKeywords(const py::object& urdf, const std::string& tip, const py::object& trajectory,
@@ -201,6 +237,10 @@ audit::AssembledAudit AssembleFromKeywords(const py::object& urdf, const std::st
   in.head = regions.head;
   in.judge = regions.judge;
   if (const auto value = Option(kwargs, "link_coverings")) in.link_coverings = ReadLinkCoverings(*value);
+  // The tool, the payload and the exposure zones.
+  in.tool_surface = Names(kwargs, "tool_surface");
+  in.payload_surface = Names(kwargs, "payload_surface");
+  if (const auto value = Option(kwargs, "exposure")) in.exposure = Exposure(*value);
   SetDesignKeywords(kwargs, in);
   if (const auto keep = Option(kwargs, "keep_ratio_over_time")) in.keep_ratio_over_time = Bool(*keep, "keep_ratio_over_time");
   in.scene_warnings = InputAndCrushWarnings(inputs);

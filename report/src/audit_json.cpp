@@ -18,12 +18,12 @@ namespace {
 
 using nlohmann::ordered_json;
 
-constexpr std::array<std::string_view, 18> kCellColumns = {
+constexpr std::array<std::string_view, 19> kCellColumns = {
     "link",              "region",            "governing_ratio",   "binding",
     "sample",            "time_s",            "point",             "point_in_link_x_m",
     "point_in_link_y_m", "point_in_link_z_m", "point_in_base_x_m", "point_in_base_y_m",
     "point_in_base_z_m", "speed_m_per_s",     "reflected_mass_kg", "max_safe_speed_m_per_s",
-    "speed_scale",       "head_criterion"};
+    "speed_scale",       "head_criterion",    "not_judged"};
 
 ordered_json Vector(const Eigen::Vector3d& v) {
   return ordered_json::array({internal::Number(v[0]), internal::Number(v[1]), internal::Number(v[2])});
@@ -55,7 +55,22 @@ ordered_json FlatCell(const audit::AuditResult& result, const audit::AuditCell& 
   j["head_criterion"] = moved && cell.head_criterion != optim::LimitingCriterion::kNone
                             ? ordered_json(optim::ToString(cell.head_criterion))
                             : ordered_json(nullptr);
+  j["not_judged"] = cell.not_judged.empty() ? ordered_json(nullptr) : ordered_json(cell.not_judged);
   return j;
+}
+
+/// The exposure zones judged with; null without zones.
+ordered_json ZonesJson(const audit::AuditResult& result) {
+  if (result.exposure_zones.empty()) return nullptr;
+  ordered_json zones = ordered_json::array();
+  for (const audit::ExposureZone& zone : result.exposure_zones) {
+    zones.push_back(ordered_json{{"name", zone.name},
+                                 {"min_m", Vector(zone.min_m)},
+                                 {"max_m", Vector(zone.max_m)},
+                                 {"regions", zone.regions},
+                                 {"origin", zone.origin}});
+  }
+  return zones;
 }
 
 std::string CsvText(const ordered_json& value) {
@@ -109,7 +124,9 @@ ordered_json SurfaceJson(const robot::RobotSurface& surface_in) {
   surface["spacing_m"] = internal::Number(surface_in.spacing_m);
   ordered_json links = ordered_json::array();
   for (const robot::LinkSurface& link : surface_in.links) {
-    links.push_back(ordered_json{{"name", link.link}, {"point_count", link.points.size()}});
+    links.push_back(ordered_json{{"name", link.link},
+                                 {"point_count", link.points.size()},
+                                 {"carried_by", link.frame_link.empty() ? ordered_json(nullptr) : ordered_json(link.frame_link)}});
   }
   surface["links"] = std::move(links);
   return surface;
@@ -177,6 +194,8 @@ std::string AuditJson(const audit::AuditSetup& setup, const audit::AuditResult& 
   j["sample_count"] = result.sample_count;
   j["regions"] = result.regions;
   j["scope"] = result.scope;
+  j["exposure_zones"] = ZonesJson(result);
+  j["not_judged_cells"] = result.not_judged_cells;
 
   ordered_json coverings = ordered_json::array();
   for (const std::string& link : result.links) {

@@ -258,7 +258,8 @@ void WriteRows(std::string& out, const ResultSummary& s, std::size_t max_rows) {
     Cell(out, unit.unit.empty() || unit.unit == "1" ? "-" : std::string(unit.unit), "unit");
     Cell(out, std::isfinite(row->ratio) ? Significant(row->ratio) : "—", "num");
     Cell(out, FormatPercent(row->margin), "num");
-    if (!row->counted) Cell(out, row->passed ? "reported (passes)" : "reported (fails)");
+    if (!row->counted && row->criterion == "not judged") Cell(out, "not judged");  // audit's exposure zones
+    else if (!row->counted) Cell(out, row->passed ? "reported (passes)" : "reported (fails)");
     else Cell(out, std::string(SafeWord(row->passed)) + (row->binding ? ", governs" : ""), row->passed ? "ok" : "bad");
     std::string law = row->law.empty() ? "bare" : row->law;
     if (!row->validity.empty()) law += ", " + row->validity;

@@ -755,13 +755,9 @@ RobotSurface SurfaceFromUrdfString(const std::string& urdf_text, const Kinematic
     surface.links.push_back(std::move(link));
   }
   // The tool and the payload of the surface file: carried by the tip link.
-  if (file) {
-    for (const LinkSurface* carried : {&file->tool, &file->payload}) {
-      if (carried->shapes.empty()) continue;
-      LinkSurface link = *carried;
-      link.frame_link = chain.tip_link();
-      surface.links.push_back(std::move(link));
-    }
+  for (const LinkSurface* carried : {file ? &file->tool : nullptr, file ? &file->payload : nullptr}) {
+    if (!carried || carried->shapes.empty()) continue;
+    surface.links.push_back(LinkSurface{carried->link, chain.tip_link(), carried->shapes, {}});
   }
   // The size, from the shapes, before any point is made.
   CheckSurfaceSize(surface.links, options.spacing_m);
@@ -777,25 +773,17 @@ RobotSurface SurfaceFromUrdfString(const std::string& urdf_text, const Kinematic
 void AddTipSurface(RobotSurface& surface, const KinematicChain& chain, const std::string& name,
                    const std::vector<SurfaceShape>& shapes) {
   if (shapes.empty()) return;
-  auto it = std::find_if(surface.links.begin(), surface.links.end(),
-                         [&](const LinkSurface& l) { return l.link == name; });
-  if (it == surface.links.end()) {
-    LinkSurface link;
-    link.link = name;
-    link.frame_link = chain.tip_link();
-    surface.links.push_back(std::move(link));
-    it = std::prev(surface.links.end());
-  }
-  std::vector<LinkSurface> all = surface.links;  // the size with the new shapes, before any point is made
-  all[static_cast<std::size_t>(it - surface.links.begin())].shapes.insert(
-      all[static_cast<std::size_t>(it - surface.links.begin())].shapes.end(), shapes.begin(), shapes.end());
-  CheckSurfaceSize(all, surface.spacing_m);
-  for (const SurfaceShape& shape : shapes) {
-    const std::size_t index = it->shapes.size();
-    it->shapes.push_back(shape);
-    std::vector<SurfacePoint> points = SampleShape(shape, surface.spacing_m, index);
+  std::vector<LinkSurface> links = surface.links;  // the size with the new shapes, before any point is made
+  auto it = std::find_if(links.begin(), links.end(), [&](const LinkSurface& l) { return l.link == name; });
+  if (it == links.end()) it = links.insert(links.end(), LinkSurface{name, chain.tip_link(), {}, {}});
+  const std::size_t first = it->shapes.size();
+  it->shapes.insert(it->shapes.end(), shapes.begin(), shapes.end());
+  CheckSurfaceSize(links, surface.spacing_m);
+  for (std::size_t i = first; i < it->shapes.size(); ++i) {
+    std::vector<SurfacePoint> points = SampleShape(it->shapes[i], surface.spacing_m, i);
     it->points.insert(it->points.end(), points.begin(), points.end());
   }
+  surface.links = std::move(links);
 }
 
 RobotSurface SurfaceFromUrdfFile(const std::filesystem::path& path, const KinematicChain& chain,

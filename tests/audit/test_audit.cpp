@@ -28,6 +28,7 @@
 #include <covopt/robot/trajectory.hpp>
 
 #include "../robot/robot_test_support.hpp"
+#include "fr3_pick.hpp"
 
 namespace {
 
@@ -58,24 +59,8 @@ co::CandidateMaterial Material(const std::string& name) {
   return co::SelectCandidates(covopt::materials::Catalog::BuiltIn(), names).front();
 }
 
-struct Fr3 {
-  rb::KinematicChain chain;
-  rb::RobotSurface surface;
-  rb::JointTrajectory pick;
-};
-
-const Fr3& TheFr3() {
-  static const Fr3 fr3 = [] {
-    const std::string urdf = kModels + "/franka_fr3.urdf";
-    rb::KinematicChain chain = rb::KinematicChain::FromUrdfFile(urdf, {"", "fr3_link8"});
-    rb::SurfaceOptions options;
-    options.spacing_m = 0.08;
-    rb::RobotSurface surface = rb::SurfaceFromUrdfFile(urdf, chain, options);
-    rb::JointTrajectory pick = rb::ReadJointTrajectory(kModels + "/franka_fr3_pick.csv", chain.joint_count());
-    return Fr3{std::move(chain), std::move(surface), std::move(pick)};
-  }();
-  return fr3;
-}
+using covopt::audit::testing::Fr3;
+using covopt::audit::testing::TheFr3;
 
 /// The FR3 with a catalog covering on every link, `regions` and the head.
 ca::AuditSetup Fr3Setup(std::vector<BodyLimits> regions, bool head = true) {

@@ -20,6 +20,7 @@
 #include <covopt/robot/trajectory.hpp>
 
 #include "../robot/robot_test_support.hpp"
+#include "fr3_pick.hpp"
 
 namespace {
 
@@ -30,26 +31,9 @@ using covopt::ContactType;
 using covopt::materials::BodyRegionTable;
 using covopt::robot::testing::MessageOf;
 
-const std::string kModels = COVOPT_ROBOT_MODELS_DIR;
 
-struct Fr3 {
-  rb::KinematicChain chain;
-  rb::RobotSurface surface;
-  rb::JointTrajectory pick;
-};
-
-const Fr3& TheFr3() {
-  static const Fr3 fr3 = [] {
-    const std::string urdf = kModels + "/franka_fr3.urdf";
-    rb::KinematicChain chain = rb::KinematicChain::FromUrdfFile(urdf, {"", "fr3_link8"});
-    rb::SurfaceOptions options;
-    options.spacing_m = 0.08;
-    rb::RobotSurface surface = rb::SurfaceFromUrdfFile(urdf, chain, options);
-    rb::JointTrajectory pick = rb::ReadJointTrajectory(kModels + "/franka_fr3_pick.csv", chain.joint_count());
-    return Fr3{std::move(chain), std::move(surface), std::move(pick)};
-  }();
-  return fr3;
-}
+using covopt::audit::testing::Fr3;
+using covopt::audit::testing::TheFr3;
 
 /// The FR3 with a 10 mm foam on every link against the chest, the dominant palm and the
 /// abdomen, and the head when asked.
@@ -198,4 +182,25 @@ TEST_CASE("bad exposure zones are refused naming the zone and the field", "[audi
   CHECK(none.not_judged_cells == none.cells.size());
   CHECK_FALSE(none.limiting_cell);
   CHECK(none.message.rfind("not judged", 0) == 0);
+}
+
+TEST_CASE("a braking robot's search judges the same point-samples as the zones admit", "[audit][exposure][braking]") {
+  ca::AuditSetup zoned = Fr3Setup(false);
+  zoned.reaction_delay_s = 0.005;
+  zoned.braking_m_per_s2 = 50.0;
+  const double z0 = 0.5;
+  zoned.exposure_zones = {Zone("above", {-10, -10, z0}, {10, 10, 10}, {"hands-fingers", "abdomen"})};
+  ca::AuditSetup unbraked = zoned;
+  unbraked.reaction_delay_s = unbraked.braking_m_per_s2 = 0.0;
+  const ca::AuditResult braked = ca::Audit(zoned, TheFr3().pick);
+  const ca::AuditResult bound = ca::Audit(unbraked, TheFr3().pick);
+  REQUIRE(braked.cells.size() == bound.cells.size());
+  for (std::size_t k = 0; k < braked.cells.size(); ++k) {
+    const ca::AuditCell& c = braked.cells[k];
+    if (c.region == 0) CHECK(c.not_judged == "no exposure zone exposes the region");  // the chest
+    CHECK(c.sample.has_value() == bound.cells[k].sample.has_value());
+    if (!c.sample) continue;
+    CHECK(c.point_in_base_m.z() >= z0);
+    CHECK(c.governing_ratio <= bound.cells[k].governing_ratio * (1.0 + 1e-9));  // braking only takes energy out
+  }
 }

@@ -21,6 +21,7 @@
 #include <covopt/robot/trajectory.hpp>
 
 #include "../robot/robot_test_support.hpp"
+#include "fr3_pick.hpp"
 
 namespace {
 
@@ -45,23 +46,16 @@ const std::vector<std::string> kGripper{"box:center=0,0,0.045;size=0.08,0.2,0.09
                                         "capsule:from=0.0141,0.0141,0.09;to=0.0141,0.0141,0.105;radius=10mm",
                                         "capsule:from=-0.0141,-0.0141,0.09;to=-0.0141,-0.0141,0.105;radius=10mm"};
 
-struct Fr3 {
-  rb::KinematicChain chain;
-  rb::RobotSurface surface;
-  rb::JointTrajectory pick;
-};
+using covopt::audit::testing::Fr3;
+using covopt::audit::testing::TheFr3;
 
 const Fr3& Gripped() {
   static const Fr3 fr3 = [] {
-    rb::KinematicChain chain = rb::KinematicChain::FromUrdfFile(kUrdf, {"", "fr3_link8"});
-    rb::SurfaceOptions options;
-    options.spacing_m = 0.08;
-    rb::RobotSurface surface = rb::SurfaceFromUrdfFile(kUrdf, chain, options);
+    Fr3 gripped = TheFr3();
     std::vector<rb::SurfaceShape> shapes;
     for (const std::string& spec : kGripper) shapes.push_back(ca::ParseTipShape(spec, "tool_surface"));
-    rb::AddTipSurface(surface, chain, "tool", shapes);
-    rb::JointTrajectory pick = rb::ReadJointTrajectory(kModels + "/franka_fr3_pick.csv", chain.joint_count());
-    return Fr3{std::move(chain), std::move(surface), std::move(pick)};
+    rb::AddTipSurface(gripped.surface, gripped.chain, "tool", shapes);
+    return gripped;
   }();
   return fr3;
 }
