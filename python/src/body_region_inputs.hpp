@@ -3,6 +3,7 @@
 /// The body-region keywords (body_region, body_area, contact, contact_area, the criterion
 /// flags) as body_contact.cpp reads them, for the other binding files (covopt.audit).
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +27,10 @@ struct BodyRegionSelection {
   /// material (material=) with its crush data.
   optim::BodyRegionOptions judge;
 };
+
+/// limits= of `kwargs`: the path of a body-region table file (a str or os.PathLike); none: the
+/// built-in table. @throws std::invalid_argument for another type.
+std::optional<std::string> LimitsPath(const pybind11::dict& kwargs);
 
 /// A library message naming the body-region fields (body.region, body.contact=clamped) with
 /// the keywords (body_region, contact='clamped'): Python's one table of their spellings.
