@@ -26,8 +26,8 @@ def test_body_regions_with_limits_is_the_cli_s_list(cli_json):
     for a, b in zip(iso, own):
         assert b.quasi_static_force_N == pytest.approx(0.8 * a.quasi_static_force_N, rel=1e-12)
         assert b.stiffness_N_per_m == a.stiffness_N_per_m
-        assert b.limit_table["sha256"] == _digest(COMPANY)
-        assert a.limit_table["edition"] == BOTH
+        assert b.to_dict()["limit_table"]["sha256"] == _digest(COMPANY)
+        assert a.to_dict()["limit_table"]["edition"] == BOTH
     assert covopt.body_region_limits("chest", limits=pathlib.Path(COMPANY)).force_N == pytest.approx(224.0)
 
 
@@ -37,15 +37,15 @@ def test_speed_limit_with_limits_is_the_cli_s_and_scales_bare_speeds_by_0_8(cli_
     assert own == cli_json("speed-limit", "--body-region", "all", "--robot-mass", "10kg", "--covering-thickness",
                            "0", "--contact-area", "1cm2", "--limits", COMPANY, "--json")
     iso = covopt.speed_limit(scene, body_region="all", contact_area="1cm2")
-    for a, b in zip(iso.rows, own.rows):
+    for a, b in zip(iso.to_dict()["rows"], own.to_dict()["rows"]):
         if a["region"] == "head":
             continue
         assert b["bare_max_speed_m_per_s"] == pytest.approx(0.8 * a["bare_max_speed_m_per_s"], rel=1e-12)
-    table = own.summary["limit_tables"][0]
+    table = own.to_dict()["summary"]["limit_tables"][0]
     assert table["source"] == COMPANY
     assert table["sha256"] == _digest(COMPANY)
-    assert iso.summary["limit_tables"][0]["source"] == "built-in"
-    assert iso.summary["standards"][0] == BOTH
+    assert iso.to_dict()["summary"]["limit_tables"][0]["source"] == "built-in"
+    assert iso.to_dict()["summary"]["standards"][0] == BOTH
 
 
 def test_a_bad_table_raises_value_error_with_file_line_column(tmp_path):
