@@ -112,9 +112,8 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
              named);
   fmt::print(out, "Robot      {}, {}\n", Mass(request.scene.robot_mass_kg),
              std::isinf(request.scene.robot_radius_m) ? std::string("flat") : "radius " + Mm(request.scene.robot_radius_m));
-  fmt::print(out, "Contact    {}\n", ContactText(regions));
-  if (regions.has_iso()) fmt::print(out, "Limits     {}\n", LimitTableText(regions));
-  fmt::print(out, "Criterion  {}\n", BodyCriterion(request.rule, regions));
+  fmt::print(out, "Contact    {}\n{}Criterion  {}\n", ContactText(regions),
+             regions.has_iso() ? "Limits     " + LimitTableText(regions) + "\n" : std::string(), BodyCriterion(request.rule, regions));
   fmt::print(out, "\n{}\n", result.message);
   // The head's verdict as every head verdict is built and printed (optim::HeadVerdict, report/verdict_text).
   const auto print_head = [&](const optim::DesignScore& score, double strength_Pa) {
