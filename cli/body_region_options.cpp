@@ -39,6 +39,15 @@ void AddBodyRegionOptions(CLI::App& sub, BodyRegionFlags& flags) {
                  "pressure is not evaluated)")
       ->type_name("AREA")
       ->group(std::string(kGroup));
+  AddLimitsOption(sub, flags.limits);
+}
+
+void AddLimitsOption(CLI::App& sub, std::optional<std::string>& path) {
+  sub.add_option("--limits", path,
+                 "a body-region limit table of your own (TOML, the built-in table's format: docs/guide/limits.md); "
+                 "default: the built-in ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M")
+      ->type_name("FILE")
+      ->group("Body region (ISO/TS 15066)");
 }
 
 std::string AsFlags(std::string_view message) {
@@ -47,6 +56,7 @@ std::string AsFlags(std::string_view message) {
       {"body.area", "--body-area"},
       {"body.contact", "--contact"},
       {"body.contact_area", "--contact-area"},
+      {"body.limits", "--limits"},
       {"head.mass", "--head-mass"},  // "give head.mass=fixed" for a head held still
   };
   return scene_file::Respell(message, kFlags, scene_file::ValueStyle::kFlag);
@@ -57,6 +67,7 @@ std::optional<BodyRegionPlan> ResolveBodyRegions(const BodyRegionFlags& flags) {
   request.names = flags.regions;
   request.area = flags.area;
   request.contact = flags.contact;
+  request.limits = flags.limits;
   if (flags.contact_area) {
     request.contact_area_m2 = ParseQuantity(*flags.contact_area, quantity_specs::kContactArea, "--contact-area");
     request.contact_area_shown = *flags.contact_area;
@@ -144,5 +155,14 @@ std::optional<std::string> ContactAreaNote(const BodyRegionPlan& regions, const 
 std::string HeadCriteriaName() { return std::string(optim::HeadCriteriaName()); }
 
 std::string BodyCriterion(const optim::DesignRule& rule, bool head) { return optim::BodyRegionCriterion(rule, head); }
+
+std::string LimitTableText(const BodyRegionPlan& regions) {
+  const materials::LimitTableInfo& t = regions.Table().info();
+  return fmt::format("{} ({}); {}, sha256 {}", t.title, t.edition, t.source, t.sha256);
+}
+
+std::string BodyCriterion(const optim::DesignRule& rule, const BodyRegionPlan& regions) {
+  return optim::BodyRegionCriterion(rule, regions.has_head(), regions.Citation());
+}
 
 }  // namespace covopt::cli

@@ -11,6 +11,8 @@
 ///                                 lowest pressure limit)
 ///     --contact transient|clamped (default transient; clamped = quasi-static)
 ///     --contact-area 1cm2         the bare robot's contact area (its pressure F/A)
+///     --limits FILE               a body-region table of one's own (default: the built-in
+///                                 ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M)
 ///
 /// A target is an area of an ISO region (its materials::BodyLimits), or the head judged by
 /// the head model and Park et al.'s criteria, unchanged. The body contact's scene is built from
@@ -46,12 +48,17 @@ struct BodyRegionFlags {
   std::optional<std::string> area;          ///< --body-area NAME
   std::optional<std::string> contact;       ///< --contact transient|clamped
   std::optional<std::string> contact_area;  ///< --contact-area AREA (e.g. 1cm2)
-  /// Any of the four was given.
-  bool any() const noexcept { return !regions.empty() || area || contact || contact_area; }
+  std::optional<std::string> limits;        ///< --limits FILE: a body-region table of one's own
+  /// Any of the five was given.
+  bool any() const noexcept { return !regions.empty() || area || contact || contact_area || limits; }
 };
 
 /// Adds the group "Body region (ISO/TS 15066)" to `sub`, filling `flags`.
 void AddBodyRegionOptions(CLI::App& sub, BodyRegionFlags& flags);
+
+/// Adds --limits FILE (a body-region table in the built-in one's format, docs/guide/limits.md)
+/// to `sub`, filling `path`.
+void AddLimitsOption(CLI::App& sub, std::optional<std::string>& path);
 
 /// One thing a command judges: an area of an ISO region, or the head (Park et al.): the
 /// library's target (covopt/materials/contact_target.hpp).
@@ -102,5 +109,11 @@ std::string HeadCriteriaName();
 /// The criteria a body-region verdict applies under `rule`, in words ("each region's force and
 /// pressure (ISO/TS 15066:2016 Table A.2), ..., safety factor 1 on each"); `head`: the head too.
 std::string BodyCriterion(const optim::DesignRule& rule, bool head);
+/// The limit table `regions` are judged on, for the text outputs: "TITLE (EDITION); SOURCE,
+/// sha256 DIGEST" (SOURCE "built-in" or the --limits path).
+std::string LimitTableText(const BodyRegionPlan& regions);
+
+/// The same for `regions`: their table's edition, the head when they name it.
+std::string BodyCriterion(const optim::DesignRule& rule, const BodyRegionPlan& regions);
 
 }  // namespace covopt::cli

@@ -1,10 +1,11 @@
 #pragma once
 /// @file body_regions_command.hpp
-/// `covopt body-regions list|show`: ISO/TS 15066:2016's body-region table (Tables A.2 and
-/// A.3, covopt::materials::BodyRegionTable::BuiltIn()) on the command line.
+/// `covopt body-regions list|show`: the body-region table of ISO/TS 15066:2016 Annex A = ISO
+/// 10218-2:2025 Annex M (Tables A.2 and A.3, covopt::materials::BodyRegionTable::BuiltIn()), or
+/// the user's own with --limits FILE, on the command line.
 ///
-///     covopt body-regions list [--json]
-///     covopt body-regions show NAME [--json]
+///     covopt body-regions list [--json] [--limits FILE]
+///     covopt body-regions show NAME [--json] [--limits FILE]
 ///
 /// list prints one row per area (29): region, area, its number, the quasi-static and
 /// transient force [N] and pressure [N/cm²], k [N/mm] and m_H [kg]; show prints one region
@@ -34,6 +35,7 @@ struct BodyRegionsOptions {
   BodyRegionsAction action = BodyRegionsAction::kNone;  ///< set by the parsed subcommand
   bool json = false;                                    ///< --json: JSON instead of text
   std::string name;                                     ///< show NAME
+  std::optional<std::string> limits;                    ///< --limits FILE: a table of one's own
   /// Not typed: the command line and input files for the JSON's provenance, set by RunCli.
   std::optional<RunContext> run;
 };

@@ -95,7 +95,7 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
   if (options.json || options.report.file) {
     try {
       PrintAndReport(out, options.json,
-                     report::BodyRegionDesignJson(request, result, BodyCriterion(request.rule, regions.has_head()),
+                     report::BodyRegionDesignJson(request, result, BodyCriterion(request.rule, regions),
                                                   input_warnings),
                      options.run, options.report, inputs, report::ReportKind::kOptimize, [&] { return chart::BodyRegionDesignCharts(request, result); });
     } catch (const OutputError& e) {
@@ -112,8 +112,8 @@ int RunBodyRegionOptimize(const OptimizeOptions& options, const optim::DesignReq
              named);
   fmt::print(out, "Robot      {}, {}\n", Mass(request.scene.robot_mass_kg),
              std::isinf(request.scene.robot_radius_m) ? std::string("flat") : "radius " + Mm(request.scene.robot_radius_m));
-  fmt::print(out, "Contact    {}\n", ContactText(regions));
-  fmt::print(out, "Criterion  {}\n", BodyCriterion(request.rule, regions.has_head()));
+  fmt::print(out, "Contact    {}\n{}Criterion  {}\n", ContactText(regions),
+             regions.has_iso() ? "Limits     " + LimitTableText(regions) + "\n" : std::string(), BodyCriterion(request.rule, regions));
   fmt::print(out, "\n{}\n", result.message);
   // The head's verdict as every head verdict is built and printed (optim::HeadVerdict, report/verdict_text).
   const auto print_head = [&](const optim::DesignScore& score, double strength_Pa) {

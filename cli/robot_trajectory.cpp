@@ -177,7 +177,7 @@ int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptio
     head = report::HeadTrajectorySummary{std::string(optim::ToString(run.check.status)), run.check.safe_speed_scale,
                                          run.check.message};
   }
-  const std::string criterion = BodyCriterion(optim::JudgedRule(body_options), regions.has_head());
+  const std::string criterion = BodyCriterion(optim::JudgedRule(body_options), regions);
   std::vector<std::string> warnings = run.input_warnings;
   warnings.insert(warnings.end(), run.motion.warnings.begin(), run.motion.warnings.end());
   warnings.insert(warnings.end(), regions.notes.begin(), regions.notes.end());
@@ -200,6 +200,7 @@ int RunBodyRegionTrajectory(const TrajectoryRun& run, const RobotTrajectoryOptio
     fmt::print(out, "Trajectory {}: {} samples\n", *options.file, run.motion.samples.size());
     fmt::print(out, "Contact    {} contact; bare robot's contact area {}\n", ToString(regions.contact),
                regions.contact_area_m2 > 0.0 ? FormatQuantity(regions.contact_area_m2, QuantityKind::kArea) : "not given");
+    fmt::print(out, "Limits     {}\n", LimitTableText(regions));
     fmt::print(out, "Criterion  {}\n", criterion);
     if (check) {
       fmt::print(out, "Verdict    {}\n", check->message);

@@ -71,7 +71,8 @@ std::optional<std::string> OutputPathClash(const CLI::App& app) {
 }
 
 std::string_view InputFileRole(std::string_view long_flag) noexcept {
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kRoles{{
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kRoles{{
+      {"--limits", "limits"},
       {"--scene", "scene"},
       {"--catalog", "catalog"},
       {"--urdf", "urdf"},

@@ -26,7 +26,7 @@ struct RunContext {
 };
 
 /// The role of an input-file flag ("--scene" -> "scene", "--catalog" -> "catalog", "--urdf",
-/// "--trajectory", "--surface-file" -> "surface", "--link-coverings"); empty for any other
+/// "--trajectory", "--surface-file" -> "surface", "--link-coverings", "--limits"); empty for any other
 /// flag (an output file such as --csv, --plot, --history, --report is no input).
 std::string_view InputFileRole(std::string_view long_flag) noexcept;
 

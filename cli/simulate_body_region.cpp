@@ -161,6 +161,7 @@ int RunBodyRegionSimulate(const SimulateOptions& options, const BodyRegionPlan& 
     fmt::print(out, "Robot        {} at {:g} m/s; {}\n", Mass(scene.robot_mass_kg), scene.speed_m_per_s,
                RobotSurface(scene, MaterialName(plan)));
     fmt::print(out, "Contact      {}\n", ContactText(regions));
+    if (regions.has_iso()) fmt::print(out, "Limits       {}\n", LimitTableText(regions));
     if (scene.robot_brakes()) fmt::print(out, "Braking      {}\n", BrakingText(scene));
     if (sf != 1.0) fmt::print(out, "Safety       factor {:g}: each limit derated by it (each criterion shows both)\n", sf);
     std::size_t iso = 0;

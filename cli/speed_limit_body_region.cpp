@@ -78,19 +78,20 @@ void PrintRegionSpeedLimitTable(std::ostream& out, const SpeedLimitPlan& plan, c
                                                           : "robot radius " + Mm(first_scene.robot_radius_m),
                                                       Mm(first_scene.covering.thickness_m), plan.coverings.size()));
   fmt::print(out, "Contact    {}\n", ContactText(regions));
+  if (regions.has_iso()) fmt::print(out, "Limits     {}\n", LimitTableText(regions));
   if (first_scene.robot_brakes()) {
     fmt::print(out, "Braking    {}: each ISO limit bracketed on it from the unbraked one\n", BrakingText(first_scene));
   }
-  fmt::print(out, "Criterion  {}\n", BodyCriterion(rule, regions.has_head()));
+  fmt::print(out, "Criterion  {}\n", BodyCriterion(rule, regions));
   fmt::print(out, "Speeds     the largest safe impact speed, bare and with the covering; 'binds' is the limit reached\n");
   report::PrintBodyRegionSpeedLimitRows(out, rows);
   fmt::print(out, "\nScope      (p_lim in N/cm²)\n");
   if (iso.size() <= 3) {
     for (const materials::BodyLimits& limits : iso) fmt::print(out, "  {}\n", limits.Describe());
   } else if (!iso.empty()) {
-    fmt::print(out, "  ISO/TS 15066:2016 Table A.2, {} contact{}: each row's F_lim and p_lim; Table A.3's k_H and m_H\n",
+    fmt::print(out, "  {}, {} contact{}: each row's F_lim and p_lim, k_H and m_H\n", regions.Citation(),
                ToString(regions.contact),
-               regions.contact == ContactType::kTransient ? " (2× quasi-static; not permitted: skull-forehead, face)"
+               regions.contact == ContactType::kTransient ? " (each region's transient factor × quasi-static)"
                                                           : " (quasi-static)");
   }
   if (regions.has_head()) {
@@ -156,7 +157,7 @@ int RunBodyRegionSpeedLimit(const SpeedLimitCommandOptions& options, const BodyR
       PrintAndReport(out, plan.json,
                      report::BodyRegionSpeedLimitJson(first_scene,
                                                       plan.coverings.size() == 1 ? MaterialName(first) : std::nullopt,
-                                                      BodyCriterion(rule, regions.has_head()), rule.safety_factor,
+                                                      BodyCriterion(rule, regions), rule.safety_factor,
                                                       rows, warnings),
                      options.run, options.report, first.inputs, report::ReportKind::kSpeedLimit,
                      [&] { return std::vector{chart::BodyRegionSpeedChart(rows)}; });

@@ -217,15 +217,16 @@ std::vector<std::string> Scope(const AuditSetup& setup) {
   std::vector<std::string> scope;
   const DesignRule& rule = setup.rule;
   if (!setup.regions.empty()) {
-    std::string line = "ISO/TS 15066:2016 Table A.2, transient: " + std::to_string(setup.regions.size()) +
+    std::string line = setup.regions.front().Citation() + ", transient: " + std::to_string(setup.regions.size()) +
                        " body-region area" + (setup.regions.size() == 1 ? "" : "s") + "; criteria: force, pressure";
     if (rule.compression_counts()) line += ", the covering not fully compressed";
     if (!rule.crushing_allowed) line += ", the covering not crushed where its strength is known";
     line += "; safety factor " + FormatSignificant(rule.safety_factor) + " on each";
     scope.push_back(line);
     scope.push_back(
-        "The covering: a Hertz layer on the robot's surface in series with the region's spring (ISO/TS 15066:2016 "
-        "Annex A's model; the covering is covopt's extension, the standard has none); its peak pressure is also its "
+        "The covering: a Hertz layer on the robot's surface in series with the region's spring (" +
+        materials::BuiltInEdition() +
+        "'s model; the covering is covopt's extension, the standard has none); its peak pressure is also its "
         "compressive stress for the crush check.");
   }
   if (setup.head) {

@@ -10,6 +10,7 @@
 
 #include <covopt/core/impact_result.hpp>
 #include <covopt/core/number_format.hpp>
+#include <covopt/optim/summaries.hpp>
 #include <covopt/optim/verdicts.hpp>
 
 namespace covopt::audit {
@@ -57,7 +58,7 @@ SummaryRow CellRow(const AuditSetup& setup, const AuditResult& result, const Aud
                     .binding = false,
                     .law = LawWord(covered, LawOf(covering)),
                     .validity = covered ? "see the warnings" : "",
-                    .source = std::string(head ? optim::kParkSource : optim::kIsoTableA2Source),
+                    .source = head ? std::string(optim::kParkSource) : setup.regions.at(cell.region).Citation(),
                     .note = "the speed against the largest safe speed there (" +
                             Number(cell.max_safe_speed_m_per_s) + " m/s)"};
 }
@@ -110,7 +111,7 @@ ResultSummary SummarizeAudit(const AuditSetup& setup, const AuditResult& result)
       s.criteria.push_back(row.criterion);
     }
   }
-  s.standards.emplace_back(optim::kIsoTableA2Source);
+  for (const materials::BodyLimits& limits : setup.regions) optim::AddLimitTable(s, limits);
   if (setup.head) s.standards.emplace_back(optim::kParkSource);
   s.scope = result.scope;
   s.Finish();

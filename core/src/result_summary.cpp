@@ -101,6 +101,14 @@ VerdictState VerdictStateOf(bool evaluated, bool safe, double margin, double thr
   return margin >= threshold ? VerdictState::kSafe : VerdictState::kMarginal;  // NaN margin: MARGINAL
 }
 
+void ResultSummary::AddLimitTable(const LimitTableSummary& table) {
+  if (std::find(standards.begin(), standards.end(), table.edition) == standards.end()) standards.push_back(table.edition);
+  const bool seen = std::any_of(limit_tables.begin(), limit_tables.end(), [&](const LimitTableSummary& t) {
+    return t.sha256 == table.sha256 && t.source == table.source;
+  });
+  if (!seen) limit_tables.push_back(table);
+}
+
 void ResultSummary::AddVerdict(std::string_view target, const Verdict& verdict, std::string_view law,
                                std::string_view validity) {
   safety_factor = verdict.safety_factor;

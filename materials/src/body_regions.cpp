@@ -6,7 +6,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
+#include <fstream>
 #include <map>
+#include <mutex>
+#include <sstream>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -19,6 +23,7 @@
 #include "covopt/core/number_format.hpp"
 #include "covopt/core/physical_floors.hpp"
 #include "covopt/core/scene.hpp"
+#include "covopt/core/sha256.hpp"
 #include "covopt/internal/toml_text.hpp"
 #include "text.hpp"
 
@@ -29,10 +34,9 @@ using covopt::internal::TypeName;
 using covopt::internal::Where;
 using internal::FormatNumber;
 
-constexpr std::string_view kStandard = "ISO/TS 15066:2016";
 constexpr std::string_view kNotPermitted = "not permitted";
 
-constexpr std::array<std::string_view, 2> kTopKeys{"sources", "region"};
+constexpr std::array<std::string_view, 4> kTopKeys{"title", "edition", "sources", "region"};
 constexpr std::array<std::string_view, 8> kRegionKeys{
     "name",    "title", "quasi_static_force_N", "transient_factor", "stiffness_N_per_mm",
     "effective_mass_kg", "sources", "area"};
@@ -116,6 +120,10 @@ class TableReader {
  public:
   explicit TableReader(std::string_view origin) : origin_(origin) {}
 
+  /// The table's title and edition (the top-level keys), after Read.
+  const std::string& title() const noexcept { return title_; }
+  const std::string& edition() const noexcept { return edition_; }
+
   std::vector<BodyRegion> Read(std::string_view text) {
     toml::table root;
     try {
@@ -125,6 +133,8 @@ class TableReader {
                                ": TOML syntax error: " + std::string(e.description()));
     }
     RejectUnknownKeys(root, kTopKeys, "", "the top level of a body-region table");
+    title_ = TopText(root, "title");
+    edition_ = TopText(root, "edition");
     ReadSources(root);
 
     const toml::node* regions = root.get("region");
@@ -171,6 +181,21 @@ class TableReader {
         (label.empty() ? std::string() : std::string(label) + ": ") + "unknown key '" +
         std::string(first->str()) + "' in " + std::string(what) + "; " +
         (near ? "did you mean '" + std::string(*near) + "'?" : "the keys are " + Join(keys)));
+  }
+
+  /// A required top-level string (title, edition).
+  std::string TopText(const toml::table& root, std::string_view key) const {
+    const toml::node* node = root.get(key);
+    if (node == nullptr) {
+      throw std::runtime_error(origin_ + ":1:1: the table has no top-level '" + std::string(key) +
+                               "' (required: title, edition, [sources], [[region]]; e.g. edition = "
+                               "\"ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M\")");
+    }
+    const auto* text = node->as_string();
+    if (text == nullptr || text->get().find_first_not_of(" \t") == std::string::npos) {
+      Fail(*node, "the table", key, "must be a non-blank string, got " + Shown(*node));
+    }
+    return text->get();
   }
 
   void ReadSources(const toml::table& root) {
@@ -341,6 +366,8 @@ class TableReader {
   }
 
   std::string origin_;
+  std::string title_;
+  std::string edition_;
   std::map<std::string, std::string, std::less<>> sources_;  // key -> citation
   std::map<std::string, std::string, std::less<>> region_origins_;  // name -> where
   std::map<std::string, std::string, std::less<>> area_origins_;    // name -> where
@@ -379,7 +406,7 @@ std::string BodyLimits::Describe() const {
   // Appended into one buffer: the all-regions table writes this for every row.
   std::string text;
   text.reserve(120);
-  text.append(kStandard).append(" Table A.2, ");
+  text.append(Citation()).append(", ");
   if (contact == ContactType::kTransient) {
     text.append("transient (").append(Short(region->transient_factor)).append("× quasi-static)");
   } else {
@@ -388,6 +415,14 @@ std::string BodyLimits::Describe() const {
   text.append(", ").append(region->name).append(" (").append(area->name).append("): ");
   text.append(Short(force_N)).append(" N, ").append(Short(pressure_Pa / kPaPerNPerCm2)).append(" N/cm²");
   return text;
+}
+
+std::string LimitTableInfo::NoTransientClause() const {
+  return built_in() ? "ISO/TS 15066:2016 A.3.2 (= ISO 10218-2:2025 Annex M)" : edition;
+}
+
+std::string BodyLimits::Citation() const {
+  return region != nullptr && region->table ? region->table->edition : BuiltInEdition();
 }
 
 double BodyLimits::effective_mass_kg() const noexcept {
@@ -402,9 +437,39 @@ const BodyRegionTable& BodyRegionTable::BuiltIn() {
 
 BodyRegionTable BodyRegionTable::FromTomlText(std::string_view text, std::string_view origin) {
   BodyRegionTable table;
-  table.regions_ = TableReader(origin).Read(text);
+  TableReader reader(origin);
+  table.regions_ = reader.Read(text);
+  const bool built_in = origin == internal::kBuiltInBodyRegionsName;
+  table.info_ = std::make_shared<const LimitTableInfo>(LimitTableInfo{.title = reader.title(),
+                                                                      .edition = reader.edition(),
+                                                                      .source = built_in ? "built-in" : std::string(origin),
+                                                                      .text = std::string(text),
+                                                                      .sha256 = Sha256Hex(text)});
+  for (BodyRegion& region : table.regions_) region.table = table.info_;
   return table;
 }
+
+const BodyRegionTable& BodyRegionTable::Load(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  if (!in || !(bytes << in.rdbuf())) {
+    throw std::runtime_error("cannot read the limit table '" + path.string() +
+                             "' (a body-region table in TOML: docs/guide/limits.md)");
+  }
+  const std::string text = bytes.str();
+  // Kept for the program's life (BodyLimits point into them); the same file read again with
+  // the same bytes is the same table.
+  static std::mutex mutex;
+  static std::deque<BodyRegionTable> loaded;
+  const std::lock_guard lock(mutex);
+  for (const BodyRegionTable& table : loaded) {
+    if (table.info().source == path.string() && table.info().text == text) return table;
+  }
+  loaded.push_back(FromTomlText(text, path.string()));
+  return loaded.back();
+}
+
+const std::string& BuiltInEdition() { return BodyRegionTable::BuiltIn().info().edition; }
 
 std::size_t BodyRegionTable::area_count() const noexcept {
   std::size_t count = 0;
@@ -427,13 +492,13 @@ const BodyRegion& BodyRegionTable::Region(std::string_view name) const {
     for (const BodyArea& a : r.areas) {
       if (a.name == wanted) {
         throw BodyRegionError("body region '" + std::string(name) + "' is not in " +
-                              std::string(kStandard) + " Table A.2: it is an area of '" + r.name +
+                              info_->edition + ": it is an area of '" + r.name +
                               "' (regions: " + Join(names) + ")");
       }
     }
   }
   throw BodyRegionError("body region '" + std::string(name) + "' is not in " +
-                        std::string(kStandard) + " Table A.2" + head +
+                        info_->edition + head +
                         DidYouMean(wanted, names) + " (regions: " + Join(names) + ")");
 }
 
@@ -458,13 +523,13 @@ BodyLimits BodyRegionTable::Limits(std::string_view region_name, std::string_vie
       }
     }
     throw BodyRegionError("body area '" + std::string(area_name) + "' is not an area of '" +
-                          region.name + "' in " + std::string(kStandard) + " Table A.2" +
+                          region.name + "' in " + info_->edition +
                           elsewhere + DidYouMean(wanted, names) + " (areas of " + region.name +
                           ": " + Join(names) + ")");
   }
   if (contact == ContactType::kTransient && !region.transient_permitted()) {
-    throw BodyRegionError(std::string(kStandard) +
-                          " A.3.2 does not permit transient contact with the " + region.name +
+    throw BodyRegionError(info_->NoTransientClause() +
+                          " does not permit transient contact with the " + region.name +
                           "; use body.contact=clamped, or judge the head with Park et al.'s skin "
                           "model (body.region=head)");
   }

@@ -15,6 +15,10 @@ bool ContactTarget::SameAs(const ContactTarget& other) const noexcept {
          limits->contact == other.limits->contact;
 }
 
+const BodyRegionTable& ContactTargets::Table() const {
+  return table != nullptr ? *table : BodyRegionTable::BuiltIn();
+}
+
 bool ContactTargets::has_head() const noexcept {
   return std::any_of(targets.begin(), targets.end(), [](const ContactTarget& t) { return t.is_head(); });
 }

@@ -719,8 +719,8 @@ BodyRegionDesignResult DesignForBodyRegions(const BodyRegionDesignRequest& reque
   for (const BodyRegionJudgement& j : judged) out.scope.push_back(j.scope);
   if (!request.regions.empty()) {
     out.scope.push_back(
-        "The covering: a Hertz layer on the robot's surface in series with the region's spring (ISO/TS 15066:2016 "
-        "Annex A's model; the covering is covopt's extension, the standard has none); its peak pressure is also its "
+        "The covering: a Hertz layer on the robot's surface in series with the region's spring (" + materials::BuiltInEdition() +
+        "'s model; the covering is covopt's extension, the standard has none); its peak pressure is also its "
         "compressive stress for the crush check.");
   }
   if (request.head) {
@@ -773,10 +773,11 @@ BodyRegionDesignResult DesignForBodyRegions(const BodyRegionDesignRequest& reque
 
 std::string_view HeadCriteriaName() noexcept { return "skin injury, Park et al. 2011"; }
 
-std::string BodyRegionCriterion(const DesignRule& rule, bool head) {
+std::string BodyRegionCriterion(const DesignRule& rule, bool head, std::string_view citation) {
   char sf[32];
   std::snprintf(sf, sizeof sf, "%g", rule.safety_factor);  // as fmt's {:g}
-  std::string text = "each region's force and pressure (ISO/TS 15066:2016 Table A.2)";
+  std::string text = "each region's force and pressure (" +
+                     (citation.empty() ? materials::BuiltInEdition() : std::string(citation)) + ")";
   if (head) text += ", the head's laceration and contusion (Park et al. 2011) and bone fracture (docs/model.md §7.1)";
   text += ", the covering within its law's validity";
   if (rule.compression_counts()) text += ", the covering not fully compressed";

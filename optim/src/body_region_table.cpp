@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "covopt/optim/summaries.hpp"
+
 namespace covopt::optim {
 namespace {
 
@@ -38,6 +40,7 @@ BodyRegionTableRow TableRow(double robot_mass_kg, const BodyRegionSpeedLimitRow&
   }
   r.gain = row.gain();
   r.criteria = row.bare.at_limit.scope.empty() ? row.limits.Describe() : row.bare.at_limit.scope;
+  r.limit_table = LimitTableOf(row.limits);
   return r;
 }
 

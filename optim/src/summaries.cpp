@@ -92,7 +92,18 @@ std::string RegionTarget(const materials::BodyLimits& limits) {
   return limits.region->name + " (" + limits.area->name + ")";
 }
 
+std::optional<LimitTableSummary> LimitTableOf(const materials::BodyLimits& limits) {
+  if (limits.region == nullptr || !limits.region->table) return std::nullopt;
+  const materials::LimitTableInfo& table = *limits.region->table;
+  return LimitTableSummary{.title = table.title, .edition = table.edition, .source = table.source, .sha256 = table.sha256};
+}
+
+void AddLimitTable(ResultSummary& summary, const materials::BodyLimits& limits) {
+  if (const auto table = LimitTableOf(limits)) summary.AddLimitTable(*table);
+}
+
 void AppendSummary(ResultSummary& summary, const ResultSummary& more) {
+  for (const LimitTableSummary& t : more.limit_tables) summary.AddLimitTable(t);
   summary.rows.insert(summary.rows.end(), more.rows.begin(), more.rows.end());
   AddOnce(summary.targets, more.targets);
   AddOnce(summary.criteria, more.criteria);
@@ -108,6 +119,7 @@ ResultSummary SummarizeBodyContact(const BodyContactScene& scene, std::string_vi
   const BodyContactResult* governing = nullptr;
   for (const BodyRegionJudgement& j : regions) {
     s.AddVerdict(RegionTarget(j.limits), j.verdict, ContactLaw(j.contact), ContactValidity(j.contact));
+    AddLimitTable(s, j.limits);
     if (!j.scope.empty()) AddScope(s.scope, {j.scope});
   }
   if (head != nullptr) AppendSummary(s, *head);
@@ -136,6 +148,7 @@ ResultSummary SummarizeBodyRegionDesign(const BodyRegionDesignRequest& request, 
   s.command = "optimize --body-region";
   for (const BodyRegionJudgement& j : regions) {
     s.AddVerdict(RegionTarget(j.limits), j.verdict, ContactLaw(j.contact), ContactValidity(j.contact));
+    AddLimitTable(s, j.limits);
   }
   if (head) {
     const bool crushes = rec != nullptr && rec->material.crush_behaviour == materials::CrushBehaviour::kCrushes;
@@ -173,8 +186,10 @@ ResultSummary SummarizeBodyRegionTrajectory(const BodyRegionTrajectoryCheck& che
   ResultSummary s;
   s.command = "robot --trajectory --body-region";
   s.safety_factor = safety_factor;
-  for (const materials::BodyLimits& limits : regions) s.targets.push_back(RegionTarget(limits));
-  s.standards.emplace_back(kIsoTableA2Source);
+  for (const materials::BodyLimits& limits : regions) {
+    s.targets.push_back(RegionTarget(limits));
+    AddLimitTable(s, limits);
+  }
   const BodyRegionSampleVerdict* worst = check.worst_sample ? &check.samples[*check.worst_sample] : nullptr;
   const bool covered = scene.covering.thickness_m > 0.0;
   if (worst != nullptr && worst->worst_region < regions.size()) {
@@ -194,7 +209,7 @@ ResultSummary SummarizeBodyRegionTrajectory(const BodyRegionTrajectoryCheck& che
                                 .binding = false,
                                 .law = LawWord(covered, scene.covering.law),
                                 .validity = "",
-                                .source = std::string(kIsoTableA2Source),
+                                .source = regions[worst->worst_region].Citation(),
                                 .note = "the largest ratio over the regions at the worst sample"});
     s.criteria.push_back(criterion);
     s.governing_case = "sample " + std::to_string(*check.worst_sample) + " at t = " + Number(worst->time_s) + " s: " +

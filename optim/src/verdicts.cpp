@@ -122,9 +122,13 @@ Verdict BodyRegionVerdict(const BodyContactResult& contact, const materials::Bod
     v.evaluated = false;
     return v;
   }
-  v.Add("force", CriterionPart::kInjury, "N", contact.peak_force_N, limits.force_N, kIsoTableA2Source);
+  // The criteria keep a view of their source: the table's edition, which lives as long as the table.
+  const std::string_view source = limits.region != nullptr && limits.region->table
+                                      ? std::string_view(limits.region->table->edition)
+                                      : std::string_view(materials::BuiltInEdition());
+  v.Add("force", CriterionPart::kInjury, "N", contact.peak_force_N, limits.force_N, source);
   if (contact.peak_pressure_Pa) {
-    v.Add("pressure", CriterionPart::kInjury, "Pa", *contact.peak_pressure_Pa, limits.pressure_Pa, kIsoTableA2Source);
+    v.Add("pressure", CriterionPart::kInjury, "Pa", *contact.peak_pressure_Pa, limits.pressure_Pa, source);
   }
   if (covered) {
     AddCoveringRules(v, contact.compression_ratio, contact.fully_compressed, contact.covering_stress_Pa, rule, crush);

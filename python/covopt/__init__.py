@@ -61,7 +61,7 @@ def _given(**options):
 @_takes_objects
 @_provenance.stamped
 def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, history=False,
-             body_region=None, body_area=None, contact=None, contact_area=None, keep_travel=False):
+             body_region=None, body_area=None, contact=None, contact_area=None, keep_travel=False, limits=None):
     """One impact: its peaks and the injury verdicts, as ``covopt simulate --json``.
 
     scene: a covopt.Scene (default the paper's scene). A damped scene reports
@@ -103,7 +103,8 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
     holds each criterion (value, limit, derated_limit, ratio, counted, passed), the governing one
     and the margin. Raises ValueError on bad input, ComputationError when the computation fails.
     """
-    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
+    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area,
+                               limits=limits):
         return _body_regions.simulate(_scene(scene), **_given(**{k: v for k, v in locals().items() if k != "scene"}))
     return Simulation(_covopt.simulate(_scene(scene), **_given(
         method=method, rtol=rtol, atol=atol, max_steps=max_steps, history=history, keep_travel=keep_travel)))
@@ -112,7 +113,7 @@ def simulate(scene=None, *, method=None, rtol=None, atol=None, max_steps=None, h
 @_takes_objects
 @_provenance.stamped
 def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=None, contact=None,
-          contact_area=None, keep_travel=False):
+          contact_area=None, keep_travel=False, limits=None):
     """A grid of impacts, as ``covopt sweep``: one or two scene quantities over lists of
     values, everything else from the scene. Each point takes the exact path where its scene
     has an energy integral, the time path (ARKODE ERK 5(4), rtol 1e-8) with braking or a neck.
@@ -145,10 +146,11 @@ def sweep(x, y=None, *, scene=None, threads=None, body_region=None, body_area=No
     Raises ValueError on bad input (an unknown quantity, no values, ...), ComputationError
     when no point is a valid scene.
     """
-    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
+    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area,
+                               limits=limits):
         return _body_regions.sweep(x, y, _scene(scene), **_given(
             threads=threads, body_region=body_region, body_area=body_area, contact=contact,
-            contact_area=contact_area, keep_travel=keep_travel or None))
+            contact_area=contact_area, keep_travel=keep_travel or None, limits=limits))
     if keep_travel:
         raise ValueError("keep_travel applies with body_region: the head's sweep reports the covering's travel in its "
                          "own columns (fully_compressed, admissible); drop it")
@@ -162,7 +164,7 @@ def optimize(scene=None, *, materials=None, families=None, catalog=None, no_buil
              covering_poisson=None, thickness_step=None, allow_full_compression=False,
              allow_crushing=False, allow_unknown_strength=False, global_algorithm=None, seed=None,
              threads=None, oracle=None, method=None, rtol=None, max_steps=None, body_region=None,
-             body_area=None, contact=None, contact_area=None):
+             body_area=None, contact=None, contact_area=None, limits=None):
     """Which covering, how thick, with what margin, as ``covopt optimize --json``.
 
     scene: a covopt.Scene without a covering (it is what is designed); damping, braking and a
@@ -197,7 +199,8 @@ def optimize(scene=None, *, materials=None, families=None, catalog=None, no_buil
     Returns a Design: ``covopt optimize --json`` (without the CLI's warnings about its own
     input). Raises ValueError on bad input, ComputationError when the search fails.
     """
-    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
+    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area,
+                               limits=limits):
         return _body_regions.design(_scene(scene), **_given(**{k: v for k, v in locals().items() if k != "scene"}))
     return Design(_covopt.optimize(_scene(scene), **_given(
         materials=materials, families=families, catalog=catalog, no_builtin=no_builtin,
@@ -229,18 +232,22 @@ from ._results import BodyLimits, BodyRegion  # beside the functions that use th
 __all__ += ["body_regions", "body_region_limits"]
 
 
-def body_regions():
-    """ISO/TS 15066:2016's body regions (Tables A.2 and A.3), as ``covopt body-regions list
-    --json``: a list of 12 BodyRegions, in SI units named in the keys (name, title,
+def body_regions(limits=None):
+    """The body regions of ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M (Tables A.2 and
+    A.3), or of the table file `limits` (docs/guide/limits.md), as ``covopt body-regions list
+    [--limits FILE] --json``: a list of BodyRegions (12 for the standard), in SI units named in the keys (name, title,
     quasi_static_force_N, transient_permitted, transient_factor and transient_force_N (None
     where A.3.2 forbids transient contact: the skull/forehead and the face), transient_rule,
     stiffness_N_per_m, effective_mass_kg, default_area, areas (name, title, number,
-    quasi_static_pressure_Pa, transient_pressure_Pa), sources)."""
-    return [BodyRegion(row) for row in _covopt.body_regions()]
+    quasi_static_pressure_Pa, transient_pressure_Pa), sources, limit_table (title, edition,
+    source: "built-in" or the path, sha256 of the file's bytes)). A bad table raises ValueError
+    naming file:line:column and the key."""
+    return [BodyRegion(row) for row in _covopt.body_regions(**({"limits": limits} if limits is not None else {}))]
 
 
-def body_region_limits(region, area=None, contact="transient"):
-    """The limits ISO/TS 15066:2016 sets for one area of one body region.
+def body_region_limits(region, area=None, contact="transient", limits=None):
+    """The limits ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M (or the table file
+    `limits`) sets for one area of one body region.
 
     region: a region's name ("chest", "hands-fingers"; ignoring case, "_", "/" and " " read
     as "-"). area: one of its areas ("sternum"); None: the area with the lowest pressure.
@@ -250,11 +257,12 @@ def body_region_limits(region, area=None, contact="transient"):
 
     Returns a BodyLimits: region, area, area_number, contact, force_N [N], pressure_Pa [Pa],
     stiffness_N_per_m [N/m], effective_mass_kg [kg] and describe, who sets the limits
-    ("ISO/TS 15066:2016 Table A.2, transient (2× quasi-static), chest (sternum): 280 N,
-    240 N/cm²"). Raises ValueError for an unknown region or area (naming the choices) and for
+    ("ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M, transient (2× quasi-static), chest
+    (sternum): 280 N, 240 N/cm²") and edition, the table's. Raises ValueError for an unknown region or area (naming the choices) and for
     transient contact with the skull/forehead or the face (naming A.3.2).
     """
-    return BodyLimits(_covopt.body_region_limits(region, area, contact))
+    return BodyLimits(_covopt.body_region_limits(region, area, contact,
+                                                 **({"limits": limits} if limits is not None else {})))
 
 
 @_takes_objects
@@ -310,7 +318,7 @@ def max_safe_mass(scene=None, *, allow_full_compression=False, allow_crushing=Fa
 def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
                 allow_full_compression=False, allow_crushing=False, oracle=None, method=None,
                 rtol=None, max_steps=None, body_region=None, body_area=None, contact=None,
-                contact_area=None, keep_travel=False):
+                contact_area=None, keep_travel=False, limits=None):
     """A table of limits, as ``covopt speed-limit --json``: solve_for="speed" gives the max
     safe speed for each robot mass in values [kg] (math.inf or "fixed" for a fixed robot;
     default the scene's), solve_for="mass" the max safe reflected mass for each speed in
@@ -333,7 +341,8 @@ def speed_limit(scene=None, *, solve_for="speed", values=None, materials=None,
     ValueError on bad input, ComputationError (status "evaluation-failed") when the time path
     fails on an impact of a row's search.
     """
-    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
+    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area,
+                               limits=limits):
         return _body_regions.speed_limit(_scene(scene), **_given(**{k: v for k, v in locals().items() if k != "scene"}))
     return SpeedLimitTable(_covopt.speed_limit(_scene(scene), **_given(
         solve_for=solve_for, values=values, materials=materials,
@@ -421,7 +430,7 @@ def contact_motion(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, u
 def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *, scene=None,
                      urdf_text=None, allow_full_compression=False, allow_crushing=False, keep_travel=False,
                      ignore_joint_limits=False, body_region=None, body_area=None, contact=None,
-                     contact_area=None, payload_mass=None, payload_com=None, payload_inertia=None):
+                     contact_area=None, payload_mass=None, payload_com=None, payload_inertia=None, limits=None):
     """Is a robot motion safe with this covering, and by how much may it be sped up or must
     it be slowed down? As ``covopt robot --trajectory --json``.
 
@@ -449,12 +458,14 @@ def check_trajectory(urdf, tip, trajectory, base=None, point=(0.0, 0.0, 0.0), *,
     --trajectory --body-region --json``.
     """
     payload = (payload_mass, payload_com, payload_inertia)
-    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area):
+    if _body_regions.is_region(body_region, body_area=body_area, contact=contact, contact_area=contact_area,
+                               limits=limits):
         return _body_regions.check_trajectory(
             urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, payload, _scene(scene), **_given(
                 allow_full_compression=allow_full_compression or None, allow_crushing=allow_crushing or None,
                 keep_travel=keep_travel or None,
-                body_region=body_region, body_area=body_area, contact=contact, contact_area=contact_area))
+                body_region=body_region, body_area=body_area, contact=contact, contact_area=contact_area,
+                limits=limits))
     return TrajectoryCheck(_covopt.check_trajectory(
         urdf, tip, trajectory, base, point, urdf_text, ignore_joint_limits, payload, _scene(scene),
         allow_full_compression=allow_full_compression, allow_crushing=allow_crushing, keep_travel=keep_travel))

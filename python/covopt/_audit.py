@@ -40,7 +40,7 @@ class Audit(Result):
 
 
 _KEYWORDS = ("surface_file", "surface_spacing", "box_edge_radius", "flat_face_radius", "link_coverings",
-             "body_region", "body_area", "contact", "contact_area", "allow_full_compression", "allow_crushing",
+             "body_region", "body_area", "contact", "contact_area", "limits", "allow_full_compression", "allow_crushing",
              "design", "materials", "families", "allow_unknown_strength", "max_thickness", "thickness_step",
              "payload_mass", "payload_com", "payload_inertia", "ignore_joint_limits", "keep_ratio_over_time",
              "keep_travel", "tool_surface", "payload_surface", "exposure")
@@ -50,7 +50,7 @@ _KEYWORDS = ("surface_file", "surface_spacing", "box_edge_radius", "flat_face_ra
 @_provenance.stamped
 def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surface_file=None,
           surface_spacing=None, box_edge_radius=None, flat_face_radius=None, link_coverings=None,
-          body_region=None, body_area=None, contact=None, contact_area=None, allow_full_compression=False,
+          body_region=None, body_area=None, contact=None, contact_area=None, limits=None, allow_full_compression=False,
           allow_crushing=False, design=False, materials=None, families=None, allow_unknown_strength=False,
           max_thickness=None, thickness_step=None, payload_mass=None, payload_com=None, payload_inertia=None,
           ignore_joint_limits=False, keep_ratio_over_time=True, keep_travel=False, tool_surface=None,
@@ -69,7 +69,7 @@ def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surfa
     link-covering file (TOML [[link]] name, material or modulus and poisson, thickness) or a
     dict {link: {"material": name or "modulus": E, "poisson": nu, "thickness": t}}.
     body_region (default "all": every transient region and the head), body_area,
-    contact_area as simulate takes them. design=True: per link the thinnest catalog covering
+    contact_area and limits as simulate takes them. design=True: per link the thinnest catalog covering
     (materials=, families=, allow_unknown_strength, max_thickness, thickness_step as optimize).
     keep_ratio_over_time=False: no samples x links matrix (memory independent of the
     trajectory's length). tool_surface, payload_surface: shapes in the flange frame as the
@@ -81,7 +81,7 @@ def audit(urdf, tip, trajectory, base=None, *, scene=None, urdf_text=None, surfa
     from . import _given, _scene  # the package's helpers (covopt/__init__.py)
     options = dict(surface_file=surface_file, surface_spacing=surface_spacing, box_edge_radius=box_edge_radius,
                    flat_face_radius=flat_face_radius, link_coverings=link_coverings, body_region=body_region,
-                   body_area=body_area, contact=contact, contact_area=contact_area,
+                   body_area=body_area, contact=contact, contact_area=contact_area, limits=limits,
                    allow_full_compression=_given_flag(allow_full_compression), allow_crushing=_given_flag(allow_crushing),
                    design=_given_flag(design), materials=materials, families=families,
                    allow_unknown_strength=_given_flag(allow_unknown_strength), max_thickness=max_thickness,

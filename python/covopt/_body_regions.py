@@ -6,7 +6,8 @@ The keywords are the CLI's flags: ``body_region`` (``--body-region``: a region o
 the region's lowest pressure limit), ``contact`` (``--contact``: "transient" or "clamped")
 and ``contact_area`` [m²] (``--contact-area``: the bare robot's contact area, for its
 pressure; a number in m², or a string with its unit, "1cm2"; the bare robot's own verdict
-needs it). The robot (robot_mass, speed, robot_radius), its covering and the safety factor
+needs it) and ``limits`` (``--limits``: a body-region table file of one's own, the built-in
+table's format; default the built-in ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M). The robot (robot_mass, speed, robot_radius), its covering and the safety factor
 come from the covopt.Scene; the region's spring k_H and mass m_H from Table A.3. The results
 are the CLI's ``--json`` objects for the same input (``to_dict()``), their warnings naming the
 keywords where the CLI names its flags.
@@ -20,7 +21,7 @@ from ._results import Result
 __all__ = ["BodyContact", "BodyRegionSpeedLimitTable", "BodyRegionDesign", "BodyRegionTrajectoryCheck",
            "BodyRegionSweep"]
 
-_CONTACT_KEYWORDS = ("body_area", "contact", "contact_area")
+_CONTACT_KEYWORDS = ("body_area", "contact", "contact_area", "limits")
 
 
 class BodyContact(Result):
@@ -156,7 +157,7 @@ def _refuse(call, options, allowed):
     return {name: value for name, value in options.items() if name in allowed}
 
 
-_REGION = ("body_region", "body_area", "contact", "contact_area")
+_REGION = ("body_region", "body_area", "contact", "contact_area", "limits")
 _RULE = ("allow_full_compression", "allow_crushing")
 _TRAVEL = ("keep_travel",)  # the judging calls' --keep-travel (not optimize's: its rule keeps the travel)
 

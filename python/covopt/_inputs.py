@@ -73,27 +73,28 @@ class Rule(_Frozen):
 
 class Regions(_Frozen):
     """What a verdict is about: ISO/TS 15066 body regions and/or the head, as the CLI's
-    --body-region, --body-area, --contact and --contact-area.
+    --body-region, --body-area, --contact, --contact-area and --limits.
 
     names: a region name, a comma-separated list, a list of names, "all" or "head".
     area: the area of the one region named (default: its lowest pressure limit).
     contact: "transient" (default) or "clamped".
     contact_area: the bare robot's contact area (m², or a string with its unit, "1cm2"); the
     bare robot's own verdict on an ISO region needs it.
+    limits: a body-region table file of one's own (--limits; default the built-in table).
     """
-    __slots__ = ("names", "area", "contact", "contact_area")
+    __slots__ = ("names", "area", "contact", "contact_area", "limits")
 
-    def __init__(self, names, *, area=None, contact=None, contact_area=None):
+    def __init__(self, names, *, area=None, contact=None, contact_area=None, limits=None):
         if isinstance(names, (list, tuple)):
             names = tuple(names)
         elif not isinstance(names, str):
             raise ValueError(f"names: expected a region name or a list of names (got {names!r})")
-        self._set(names=names, area=area, contact=contact, contact_area=contact_area)
+        self._set(names=names, area=area, contact=contact, contact_area=contact_area, limits=limits)
 
     def _keywords(self):
         names = list(self.names) if isinstance(self.names, tuple) else self.names
         return {"body_region": names, "body_area": self.area, "contact": self.contact,
-                "contact_area": self.contact_area}
+                "contact_area": self.contact_area, "limits": self.limits}
 
 
 def _merge(call, parameters, kwargs, keywords, source):

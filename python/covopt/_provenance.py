@@ -19,7 +19,8 @@ from . import _covopt
 
 # The arguments that name input files, and their roles (the CLI's: --urdf, --trajectory, ...).
 _FILE_ROLES = {"urdf": "urdf", "trajectory": "trajectory", "catalog": "catalog",
-               "surface_file": "surface", "link_coverings": "link-coverings", "exposure": "exposure"}
+               "surface_file": "surface", "link_coverings": "link-coverings", "exposure": "exposure",
+               "limits": "limits"}
 _LONGEST_REPR = 200
 
 

@@ -75,6 +75,7 @@ std::string AsKeywords(std::string_view message) {
       {"body.area", "body_area"},
       {"body.contact", "contact"},
       {"body.contact_area", "contact_area"},
+      {"body.limits", "limits"},
       {"head.mass", "head_mass"},  // "give head.mass=fixed" for a head held still
   };
   return scene_file::Respell(message, kKeywords, scene_file::ValueStyle::kKeyword);
@@ -154,6 +155,7 @@ materials::ContactTargets ReadTargets(const py::kwargs& kwargs) {
     request.contact_area_m2 = ReadSceneQuantity(*v, quantity_specs::kContactArea, "contact_area");
     request.contact_area_shown = py::str(*v).cast<std::string>();
   }
+  request.limits = LimitsPath(kwargs);
   materials::ContactTargets targets = Keyworded([&] { return *scene_file::ResolveTargets(request); });
   for (std::string& note : targets.notes) note = AsKeywords(note);
   return targets;
@@ -342,7 +344,7 @@ py::dict SpeedLimitTable(const SceneInputs& inputs, const py::kwargs& kwargs) {
   if (const auto note = scene_file::BarePressureNote(targets)) warnings.push_back(AsKeywords(*note));
   return WithReportCharts(
       JsonToPython(report::BodyRegionSpeedLimitJson(scene, MaterialName(inputs),
-                                                    optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head()),
+                                                    optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head(), targets.Citation()),
                                                     options.rule.safety_factor, rows, warnings)),
       [rows] { return std::vector{chart::BodyRegionSpeedChart(rows)}; });
 }
@@ -384,7 +386,7 @@ py::dict Design(const SceneInputs& inputs, const py::kwargs& kwargs) {
     throw std::invalid_argument(inputs.Attributed(AsKeywords(e.what())));
   }
   py::dict d = JsonToPython(report::BodyRegionDesignJson(request, result,
-                                                        optim::BodyRegionCriterion(request.rule, targets.has_head()),
+                                                        optim::BodyRegionCriterion(request.rule, targets.has_head(), targets.Citation()),
                                                         DesignWarnings(inputs, targets)));
   return WithReportCharts(std::move(d), [request, result] { return chart::BodyRegionDesignCharts(request, result); });
 }
@@ -431,7 +433,7 @@ py::dict CheckTrajectory(const py::object& urdf, const std::string& tip, const p
   const optim::BodyRegionTrajectoryCheck checked = check ? *check : optim::BodyRegionTrajectoryCheck{};
   return WithReportCharts(
       JsonToPython(report::BodyRegionTrajectoryJson(checked, iso, scene, head_summary,
-                                                    optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head()),
+                                                    optim::BodyRegionCriterion(optim::JudgedRule(options), targets.has_head(), targets.Citation()),
                                                     optim::JudgedRule(options).safety_factor, warnings)),
       [checked, iso, sf = options.rule.safety_factor] { return chart::BodyRegionTrajectoryCharts(checked, iso, sf); });
 }
@@ -484,6 +486,16 @@ py::dict Sweep(const py::object& x, const py::object& y, const SceneInputs& inpu
 }
 
 }  // namespace
+
+std::optional<std::string> LimitsPath(const py::dict& kwargs) {
+  const auto v = Option(kwargs, "limits");
+  if (!v) return std::nullopt;
+  if (!py::isinstance<py::str>(*v) && !py::hasattr(*v, "__fspath__")) {
+    throw std::invalid_argument("limits: expected the path of a body-region table file (a str or os.PathLike), got " +
+                                Repr(*v));
+  }
+  return py::module_::import("os").attr("fspath")(*v).cast<std::string>();
+}
 
 BodyRegionSelection SelectBodyRegions(const SceneInputs& inputs, const py::kwargs& kwargs) {
   const materials::ContactTargets targets = ReadTargets(kwargs);

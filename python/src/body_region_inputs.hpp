@@ -28,6 +28,10 @@ struct BodyRegionSelection {
   optim::BodyRegionOptions judge;
 };
 
+/// limits= of `kwargs`: the path of a body-region table file (a str or os.PathLike); none: the
+/// built-in table. @throws std::invalid_argument for another type.
+std::optional<std::string> LimitsPath(const pybind11::dict& kwargs);
+
 /// A library message naming the body-region fields (body.region, body.contact=clamped) with
 /// the keywords (body_region, contact='clamped'): Python's one table of their spellings.
 std::string AsKeywords(std::string_view message);

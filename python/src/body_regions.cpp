@@ -1,6 +1,7 @@
 /// @file body_regions.cpp
-/// covopt.body_regions and covopt.body_region_limits: ISO/TS 15066:2016's body-region table
-/// (materials::BodyRegionTable::BuiltIn()). The regions are report::BodyRegionsJson's
+/// covopt.body_regions and covopt.body_region_limits: the body-region table of ISO/TS
+/// 15066:2016 Annex A = ISO 10218-2:2025 Annex M (materials::BodyRegionTable::BuiltIn()), or the
+/// user's own (limits=). The regions are report::BodyRegionsJson's
 /// objects, those `covopt body-regions list --json` prints. See python/covopt/__init__.py for
 /// the documentation.
 
@@ -26,14 +27,25 @@ namespace {
 
 using materials::BodyRegionTable;
 
-py::object BodyRegions() {
-  return JsonToPython(report::BodyRegionsJson(BodyRegionTable::BuiltIn().regions(), -1));
+/// The table limits= names (the built-in one without it); a bad table raises ValueError.
+const BodyRegionTable& Table(const py::dict& kwargs) {
+  const std::optional<std::string> path = LimitsPath(kwargs);
+  try {
+    return scene_file::LimitTable(path);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(AsKeywords(e.what()));
+  }
+}
+
+py::object BodyRegions(const py::kwargs& kwargs) {
+  return JsonToPython(report::BodyRegionsJson(Table(kwargs).regions(), -1));
 }
 
 /// The limits of one area under one contact; bad names raise ValueError with the library's
 /// message.
 py::dict BodyRegionLimits(const std::string& region, const std::optional<std::string>& area,
-                          const std::string& contact) {
+                          const std::string& contact, const py::kwargs& kwargs) {
+  const BodyRegionTable& table = Table(kwargs);
   const std::optional<ContactType> type = ParseContactType(contact);
   if (!type) {
     throw std::invalid_argument("contact: expected 'transient' or 'clamped' (got '" + contact +
@@ -41,7 +53,7 @@ py::dict BodyRegionLimits(const std::string& region, const std::optional<std::st
   }
   const materials::BodyLimits limits = [&] {
     try {
-      return BodyRegionTable::BuiltIn().Limits(region, area.value_or(""), *type);
+      return table.Limits(region, area.value_or(""), *type);
     } catch (const materials::BodyRegionError& e) {
       throw std::invalid_argument(AsKeywords(e.what()));  // "use contact='clamped'"
     }
@@ -56,6 +68,7 @@ py::dict BodyRegionLimits(const std::string& region, const std::optional<std::st
   result["stiffness_N_per_m"] = limits.stiffness_N_per_m();
   result["effective_mass_kg"] = limits.effective_mass_kg();
   result["describe"] = limits.Describe();
+  result["edition"] = limits.Citation();
   return result;
 }
 

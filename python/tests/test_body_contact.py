@@ -231,9 +231,9 @@ def test_with_a_covering_the_bare_column_is_the_force_s_alone_with_a_warning():
 
 @pytest.mark.parametrize("call, message", [
     (lambda: covopt.simulate(Scene(**BARE), body_region="chset", contact_area=1e-4),
-     "body region 'chset' is not in ISO/TS 15066:2016 Table A.2; did you mean 'chest'?"),
+     "body region 'chset' is not in ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M; did you mean 'chest'?"),
     (lambda: covopt.simulate(Scene(**BARE), body_region="face", contact_area=1e-4),
-     "ISO/TS 15066:2016 A.3.2 does not permit transient contact with the face; use contact='clamped', or "
+     "ISO/TS 15066:2016 A.3.2 (= ISO 10218-2:2025 Annex M) does not permit transient contact with the face; use contact='clamped', or "
      "judge the head with Park et al.'s skin model (body_region='head')"),
     (lambda: covopt.speed_limit(Scene(**BARE), body_region="chest", body_area="palm"),
      "body area 'palm' is not an area of 'chest'"),

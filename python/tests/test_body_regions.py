@@ -72,20 +72,20 @@ def test_limits_transient_is_twice_clamped():
     assert transient.pressure_Pa == 240e4
     assert transient.effective_mass_kg == 40
     assert transient.stiffness_N_per_m == 25e3
-    assert transient.describe == ("ISO/TS 15066:2016 Table A.2, transient (2× quasi-static), "
-                                  "chest (sternum): 280 N, 240 N/cm²")
+    assert transient.describe == ("ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M, transient "
+                                  "(2× quasi-static), chest (sternum): 280 N, 240 N/cm²")
     clamped = covopt.body_region_limits("Chest", "pectoral_muscle", contact="clamped")
     assert clamped.area == "pectoral-muscle"
     assert clamped.force_N == 140
     assert clamped.pressure_Pa == 170e4
     assert math.isinf(clamped.effective_mass_kg)
-    assert clamped.describe.startswith("ISO/TS 15066:2016 Table A.2, quasi-static, chest")
+    assert clamped.describe.startswith("ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M, quasi-static, chest")
     assert covopt.body_region_limits("chest", contact="quasi-static").contact == "clamped"
 
 
 def test_transient_contact_with_the_face_is_refused_naming_a32():
     for region in ("face", "skull/forehead"):
-        with pytest.raises(ValueError, match=r"ISO/TS 15066:2016 A\.3\.2 does not permit transient"):
+        with pytest.raises(ValueError, match=r"ISO/TS 15066:2016 A\.3\.2 \(= ISO 10218-2:2025 Annex M\) does not permit transient"):
             covopt.body_region_limits(region)
         assert covopt.body_region_limits(region, contact="clamped").force_N > 0
 

@@ -183,7 +183,7 @@ std::string AuditJson(const audit::AuditSetup& setup, const audit::AuditResult& 
   } else {
     j["limiting"] = nullptr;
   }
-  j["criterion"] = optim::BodyRegionCriterion(setup.rule, head);
+  j["criterion"] = optim::BodyRegionCriterion(setup.rule, head, setup.regions.empty() ? std::string() : setup.regions.front().Citation());
   j["safety_factor"] = internal::Number(setup.rule.safety_factor);
   j["contact_area_m2"] = setup.contact_area_m2 > 0.0 ? internal::Number(setup.contact_area_m2) : ordered_json(nullptr);
   j["reaction_delay_s"] = internal::Number(setup.reaction_delay_s);

@@ -174,6 +174,7 @@ ResultSummary TableSummary(std::span<const BodyRegionTableRow> rows, double safe
     s.evaluated = s.evaluated && !std::isnan(s.limits.back().value);
     if (std::find(s.targets.begin(), s.targets.end(), RegionName(row)) == s.targets.end()) s.targets.push_back(RegionName(row));
     if (std::find(s.scope.begin(), s.scope.end(), row.criteria) == s.scope.end()) s.scope.push_back(row.criteria);
+    if (row.limit_table) s.AddLimitTable(*row.limit_table);
   }
   s.Finish();
   s.robot.speed_m_per_s = std::numeric_limits<double>::quiet_NaN();

@@ -36,13 +36,21 @@ Json RegionObject(const materials::BodyRegion& r) {
   }
   j["areas"] = std::move(areas);
   j["sources"] = r.sources;
+  if (r.table) {
+    j["limit_table"] = {{"title", r.table->title}, {"edition", r.table->edition}, {"source", r.table->source},
+                        {"sha256", r.table->sha256}};
+  }
   return j;
 }
 
 }  // namespace
 
 std::string TransientRule(const materials::BodyRegion& region) {
-  if (!region.transient_permitted()) return "not permitted (ISO/TS 15066:2016 A.3.2)";
+  if (!region.transient_permitted()) {
+    const materials::LimitTableInfo& table =
+        region.table ? *region.table : materials::BodyRegionTable::BuiltIn().info();
+    return "not permitted (" + table.NoTransientClause() + ")";
+  }
   return FormatSignificant(region.transient_factor, 6) + "× the quasi-static limits";
 }
 

@@ -51,15 +51,17 @@ void PrintBodyRegionTable(std::ostream& out, const BodyRegionTable& table) {
           Value(r.stiffness_N_per_m / kNPerMm), Value(r.effective_mass_kg));
     }
   }
+  const materials::LimitTableInfo& info = table.info();
   fmt::print(out,
-             "\n{} regions, {} areas: ISO/TS 15066:2016 Table A.2 (F: force per region, p: "
-             "pressure per area; qs quasi-static, tr transient) and Table A.3 (k: effective "
-             "spring constant, m_H: effective mass).\n",
-             table.regions().size(), table.area_count());
+             "\n{} regions, {} areas: {} ({}). F: force per region, p: pressure per area; qs "
+             "quasi-static, tr transient; k: effective spring constant, m_H: effective mass.\n",
+             table.regions().size(), table.area_count(), info.title, info.edition);
+  fmt::print(out, "limit table: {}, sha256 {}\n", info.source, info.sha256);
   fmt::print(out,
-             "not permitted: A.3.2 permits no transient contact with the skull, forehead and "
-             "face (their quasi-static limits apply when clamped; the head as a whole is "
-             "judged by Park et al.'s skin model).\n");
+             "not permitted: {} permits no transient contact with these regions (their "
+             "quasi-static limits apply when clamped; the head as a whole is judged by Park et "
+             "al.'s skin model).\n",
+             info.NoTransientClause());
   fmt::print(out, "Titles, the default area and the sources: covopt body-regions show NAME\n");
 }
 
@@ -72,7 +74,8 @@ void Row(std::ostream& out, std::string_view label, std::string_view value) {
 }  // namespace
 
 void PrintBodyRegion(std::ostream& out, const BodyRegion& r) {
-  fmt::print(out, "{}: {} (ISO/TS 15066:2016 Tables A.2 and A.3)\n", r.name, r.title);
+  fmt::print(out, "{}: {} ({})\n", r.name, r.title,
+             r.table ? r.table->edition : materials::BuiltInEdition());
   Row(out, "quasi-static force", fmt::format("F_qs = {} N", Value(r.quasi_static_force_N)));
   Row(out, "transient contact",
       r.transient_permitted()
@@ -111,6 +114,7 @@ void PrintBodyRegion(std::ostream& out, const BodyRegion& r) {
       fmt::print(out, "    {} {}\n", i == 0 ? "-" : " ", lines[i]);
     }
   }
+  if (r.table) fmt::print(out, "  limit table: {} ({}, sha256 {})\n", r.table->title, r.table->source, r.table->sha256);
 }
 
 }  // namespace covopt::report

@@ -110,6 +110,9 @@ void WriteFacts(std::string& out, const PageOne& p) {
   Term(out, "targets", ShortList(s.targets, 6));
   Term(out, "criteria", JoinList(s.criteria));
   Term(out, "standards", JoinList(s.standards));
+  for (const LimitTableSummary& t : s.limit_tables) {
+    Term(out, "limit table", t.title + " (" + t.source + ", SHA-256 " + t.sha256 + ")");
+  }
   Term(out, "safety factor", Significant(s.safety_factor) + " (each limit derated to limit / SF)");
   out += "</dl></section>\n<section id=\"covering\"><h3>Covering</h3><dl>\n";
   const CoveringSummary& c = s.covering;

@@ -11,84 +11,17 @@
 #include <stdexcept>
 #include <string>
 
-#include <dlfcn.h>
-
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
-#include <openssl/evp.h>
-#include <openssl/opensslv.h>
 
 #include "append_key.hpp"
+#include "covopt/core/sha256.hpp"
 #include "covopt_build_info.hpp"  // COVOPT_VERSION_TEXT, COVOPT_GIT_COMMIT: written at build time
 
 namespace covopt::report {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-/// OpenSSL's digest functions, from libcrypto opened the first time a file is hashed: a run that
-/// hashes no file (`covopt --version`, every output without provenance) never loads it, and its
-/// load and 3377 symbol bindings cost 0.44 of a hello-world process (docs/performance.md,
-/// start-up). The library is OpenSSL's (libcrypto.so.<OPENSSL_SHLIB_VERSION>) whose headers built this.
-struct Crypto {
-  decltype(&EVP_MD_CTX_new) md_ctx_new;
-  decltype(&EVP_MD_CTX_free) md_ctx_free;
-  decltype(&EVP_sha256) sha256;
-  decltype(&EVP_DigestInit_ex) digest_init;
-  decltype(&EVP_DigestUpdate) digest_update;
-  decltype(&EVP_DigestFinal_ex) digest_final;
-};
-
-const Crypto& OpenCrypto() {
-  static const Crypto crypto = [] {
-    const std::string library = fmt::format("libcrypto.so.{}", OPENSSL_SHLIB_VERSION);
-    void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (handle == nullptr) {
-      const char* why = dlerror();
-      throw std::runtime_error(fmt::format("SHA-256: cannot load OpenSSL's {}: {}", library, why ? why : "?"));
-    }
-    const auto symbol = [handle, &library]<class F>(F& function, const char* name) {
-      function = reinterpret_cast<F>(dlsym(handle, name));
-      if (function == nullptr) throw std::runtime_error(fmt::format("SHA-256: {} has no {}", library, name));
-    };
-    Crypto c{};
-    symbol(c.md_ctx_new, "EVP_MD_CTX_new");
-    symbol(c.md_ctx_free, "EVP_MD_CTX_free");
-    symbol(c.sha256, "EVP_sha256");
-    symbol(c.digest_init, "EVP_DigestInit_ex");
-    symbol(c.digest_update, "EVP_DigestUpdate");
-    symbol(c.digest_final, "EVP_DigestFinal_ex");
-    return c;  // the handle stays open for the process
-  }();
-  return crypto;
-}
-
-/// One SHA-256 computation through OpenSSL's EVP interface.
-class Sha256 {
- public:
-  Sha256() : crypto_(OpenCrypto()), context_(crypto_.md_ctx_new(), crypto_.md_ctx_free) {
-    if (!context_ || crypto_.digest_init(context_.get(), crypto_.sha256(), nullptr) != 1) {
-      throw std::runtime_error("SHA-256: OpenSSL could not start a digest");
-    }
-  }
-  void Add(const void* data, std::size_t size) {
-    if (crypto_.digest_update(context_.get(), data, size) != 1) throw std::runtime_error("SHA-256: OpenSSL digest failed");
-  }
-  std::string HexDigest() {
-    std::array<unsigned char, EVP_MAX_MD_SIZE> digest{};
-    unsigned int length = 0;
-    if (crypto_.digest_final(context_.get(), digest.data(), &length) != 1) {
-      throw std::runtime_error("SHA-256: OpenSSL digest failed");
-    }
-    std::string hex;
-    for (unsigned int i = 0; i < length; ++i) hex += fmt::format("{:02x}", digest[i]);
-    return hex;
-  }
-
- private:
-  const Crypto& crypto_;
-  std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> context_;
-};
 
 std::string IsoDateUtc() {
   std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
@@ -137,16 +70,12 @@ std::string CovoptVersion() { return COVOPT_VERSION_TEXT; }
 
 std::string CovoptCommit() { return COVOPT_GIT_COMMIT; }
 
-std::string Sha256OfBytes(std::string_view bytes) {
-  Sha256 digest;
-  digest.Add(bytes.data(), bytes.size());
-  return digest.HexDigest();
-}
+std::string Sha256OfBytes(std::string_view bytes) { return covopt::Sha256Hex(bytes); }
 
 std::string Sha256OfFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(fmt::format("cannot read '{}' to take its SHA-256", path.string()));
-  Sha256 digest;
+  covopt::Sha256 digest;
   std::array<char, 1 << 16> buffer{};
   while (in) {
     in.read(buffer.data(), buffer.size());

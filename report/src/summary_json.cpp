@@ -48,6 +48,14 @@ Json CoveringObject(const CoveringSummary& c) {
           {"validity", c.validity}, {"validity_ratio", Number(c.validity_ratio)}};
 }
 
+Json LimitTableObjects(const std::vector<LimitTableSummary>& tables) {
+  Json list = Json::array();
+  for (const LimitTableSummary& t : tables) {
+    list.push_back({{"title", t.title}, {"edition", t.edition}, {"source", t.source}, {"sha256", t.sha256}});
+  }
+  return list;
+}
+
 Json RobotObject(const RobotSummary& r) {
   return {{"model_file", r.model_file}, {"motion", r.motion}, {"joints", r.joints},
           {"reflected_mass_kg", Number(r.reflected_mass_kg)}, {"payload_kg", Number(r.payload_kg)},
@@ -162,6 +170,18 @@ CoveringSummary CoveringFrom(const Json& o) {
                          .law = Text(o, "law", w),
                          .validity = Text(o, "validity", w),
                          .validity_ratio = Real(o, "validity_ratio", w)};
+}
+
+/// "limit_tables" (absent in a summary written before it existed: none).
+std::vector<LimitTableSummary> LimitTablesFrom(const Json& o) {
+  std::vector<LimitTableSummary> tables;
+  if (!o.contains("limit_tables")) return tables;
+  constexpr std::string_view w = "a limit table";
+  for (const Json& t : List(o, "limit_tables", "the summary")) {
+    tables.push_back({.title = Text(t, "title", w), .edition = Text(t, "edition", w), .source = Text(t, "source", w),
+                      .sha256 = Text(t, "sha256", w)});
+  }
+  return tables;
 }
 
 RobotSummary RobotFrom(const Json& o) {
@@ -285,6 +305,7 @@ Json SummaryObject(const ResultSummary& s) {
       {"targets", s.targets},
       {"criteria", s.criteria},
       {"standards", s.standards},
+      {"limit_tables", LimitTableObjects(s.limit_tables)},
       {"scope", s.scope},
       {"covering", CoveringObject(s.covering)},
       {"robot", RobotObject(s.robot)},
@@ -322,6 +343,7 @@ ResultSummary SummaryFromJson(const std::string& result_json) {
   s.targets = Texts(o, "targets", w);
   s.criteria = Texts(o, "criteria", w);
   s.standards = Texts(o, "standards", w);
+  s.limit_tables = LimitTablesFrom(o);
   s.scope = Texts(o, "scope", w);
   s.covering = CoveringFrom(Key(o, "covering", w));
   s.robot = RobotFrom(Key(o, "robot", w));
@@ -358,6 +380,9 @@ std::string SummaryLines(const ResultSummary& s, bool rows) {
     std::string joined;
     for (const std::string& standard : s.standards) joined += (joined.empty() ? "" : "; ") + standard;
     text += "judged against: " + joined + "\n";
+  }
+  for (const LimitTableSummary& t : s.limit_tables) {
+    text += "limit table: " + t.title + " (" + t.source + ", sha256 " + t.sha256 + ")\n";
   }
   if (s.kind == ResultSummary::Kind::kVerdict && s.safety_factor != 1.0) {
     text += fmt::format("safety factor {:g}\n", s.safety_factor);

@@ -87,9 +87,10 @@ void Add(ContactTargets& targets, ContactTarget target, bool quiet) {
 }
 
 /// One ISO region named: its limits, the table's message naming the field otherwise.
-ContactTarget IsoTarget(const std::string& name, const std::optional<std::string>& area, ContactType contact) {
+ContactTarget IsoTarget(const materials::BodyRegionTable& table, const std::string& name,
+                        const std::optional<std::string>& area, ContactType contact) {
   try {
-    return ContactTarget{materials::BodyRegionTable::BuiltIn().Limits(name, area.value_or(""), contact)};
+    return ContactTarget{table.Limits(name, area.value_or(""), contact)};
   } catch (const materials::BodyRegionError& e) {
     const std::string message = e.what();
     const bool unknown_region = message.rfind("body region '", 0) == 0 && message.find("(regions:") != std::string::npos;
@@ -101,14 +102,30 @@ ContactTarget IsoTarget(const std::string& name, const std::optional<std::string
 
 }  // namespace
 
+const materials::BodyRegionTable& LimitTable(const std::optional<std::string>& path) {
+  if (!path) return materials::BodyRegionTable::BuiltIn();
+  if (path->find_first_not_of(" \t") == std::string::npos) {
+    throw std::invalid_argument("body.limits: expected the path of a body-region table file (TOML), got ''");
+  }
+  try {
+    return materials::BodyRegionTable::Load(*path);
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(fmt::format("{} (body.limits)", e.what()));
+  }
+}
+
 std::optional<ContactTargets> ResolveTargets(const TargetRequest& request) {
   if (request.names.empty()) {
     if (!request.any()) return std::nullopt;
     throw std::invalid_argument(fmt::format(
         "{} applies to an ISO/TS 15066 body region; give body.region (e.g. body.region=chest)",
-        request.area ? "body.area" : request.contact ? "body.contact" : "body.contact_area"));
+        request.area      ? "body.area"
+        : request.contact ? "body.contact"
+        : request.limits  ? "body.limits"
+                          : "body.contact_area"));
   }
   ContactTargets targets;
+  targets.table = &LimitTable(request.limits);
   targets.contact = ReadContact(request.contact);
   targets.contact_area_m2 = ReadContactArea(request);
   const std::vector<std::string> names = SplitNames(request.names);
@@ -126,7 +143,7 @@ std::optional<ContactTargets> ResolveTargets(const TargetRequest& request) {
     const std::string lowered = Lowered(name);
     if (lowered == "all") {
       // A region named besides "all" is in it: merged without a note.
-      for (const materials::BodyLimits& limits : materials::BodyRegionTable::BuiltIn().AllLimits(targets.contact)) {
+      for (const materials::BodyLimits& limits : targets.table->AllLimits(targets.contact)) {
         Add(targets, ContactTarget{limits}, true);
       }
       if (targets.contact == ContactType::kTransient) Add(targets, ContactTarget{}, true);
@@ -139,7 +156,7 @@ std::optional<ContactTargets> ResolveTargets(const TargetRequest& request) {
       }
       Add(targets, ContactTarget{}, all);
     } else {
-      Add(targets, IsoTarget(name, request.area, targets.contact), all);
+      Add(targets, IsoTarget(*targets.table, name, request.area, targets.contact), all);
     }
   }
   // "all" named after a region: the region stays where it was named, "all" adds the rest.

@@ -92,7 +92,9 @@ TEST_CASE("cli body-regions list: one row per area with the library's values in 
   }
   CHECK(row == 30);
   CHECK(lines.at(row).empty());
-  CHECK_THAT(run.out, Contains("12 regions, 29 areas: ISO/TS 15066:2016 Table A.2"));
+  CHECK_THAT(run.out, Contains("12 regions, 29 areas: Biomechanical limits of the body model (ISO/TS 15066:2016 "
+                               "Annex A, Tables A.2 and A.3) (ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M)"));
+  CHECK_THAT(run.out, Contains("limit table: built-in, sha256 "));
   CHECK_THAT(run.out, Contains("A.3.2"));
 }
 
@@ -145,7 +147,7 @@ TEST_CASE("cli body-regions show: one region's values, areas and sources") {
   const CliRun run = Run({"body-regions", "show", "chest"});
   REQUIRE(run.exit_code == 0);
   CHECK(run.err.empty());
-  CHECK_THAT(run.out, StartsWith("chest: Chest (ISO/TS 15066:2016 Tables A.2 and A.3)"));
+  CHECK_THAT(run.out, StartsWith("chest: Chest (ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M)"));
   CHECK_THAT(run.out, Contains("F_qs = 140 N"));
   CHECK_THAT(run.out, Contains("2× the quasi-static limits: F_tr = 280 N"));
   CHECK_THAT(run.out, Contains("k = 25 N/mm (25000 N/m)"));
@@ -177,7 +179,7 @@ TEST_CASE("cli body-regions show: the skull and face say transient contact is no
   for (const char* name : {"skull-forehead", "face"}) {
     const CliRun run = Run({"body-regions", "show", name});
     REQUIRE(run.exit_code == 0);
-    CHECK_THAT(run.out, Contains("not permitted (ISO/TS 15066:2016 A.3.2)"));
+    CHECK_THAT(run.out, Contains("not permitted (ISO/TS 15066:2016 A.3.2 (= ISO 10218-2:2025 Annex M))"));
     CHECK_THAT(run.out, !Contains("F_tr ="));
   }
 }
@@ -203,7 +205,7 @@ TEST_CASE("cli body-regions show --json: the library's region, and names as the 
 TEST_CASE("cli body-regions: bad input is exit 2 with one line") {
   CheckBadInput({"body-regions", "show", "chset"},
                 "covopt body-regions show: error: body region 'chset' is not in ISO/TS "
-                "15066:2016 Table A.2; did you mean 'chest'? (regions: skull-forehead, face, "
+                "15066:2016 Annex A = ISO 10218-2:2025 Annex M; did you mean 'chest'? (regions: skull-forehead, face, "
                 "neck, back-shoulders, chest, abdomen, pelvis, upper-arms-elbows, "
                 "lower-arms-wrists, hands-fingers, thighs-knees, lower-legs)");
   CheckBadInput({"body-regions", "show", "head"}, "Park et al.");

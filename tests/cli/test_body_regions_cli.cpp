@@ -95,7 +95,7 @@ TEST_CASE("speed-limit --body-region chest: the chest's bare limit at 10 kg is 0
   INFO(run.err);
   REQUIRE(run.exit_code == 0);
   CHECK(run.out.find("0.6261") != std::string::npos);
-  CHECK(run.out.find("ISO/TS 15066:2016 Table A.2, transient") != std::string::npos);
+  CHECK(run.out.find("ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M, transient") != std::string::npos);
   CHECK(run.out.find("chest (sternum): 280 N, 240 N/cm²") != std::string::npos);
   // 280 N / sqrt(8 kg × 25 kN/m), independently of the table's reader.
   CHECK(280.0 / std::sqrt(8.0 * 25e3) == Approx(0.6261).margin(5e-5));
@@ -157,7 +157,7 @@ TEST_CASE("simulate --body-region: the bare robot's peaks are Annex A's and the 
   CHECK(chest["peak_pressure_Pa"].get<double>() == Approx(force / 10e-4).epsilon(1e-12));
   CHECK(chest["pressure"]["evaluated"] == true);
   CHECK(chest["force"]["ratio"].get<double>() == Approx(force / 280.0).epsilon(1e-12));
-  CHECK(chest["scope"] == "ISO/TS 15066:2016 Table A.2, transient (2× quasi-static), chest (sternum): 280 N, 240 N/cm²");
+  CHECK(chest["scope"] == "ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M, transient (2× quasi-static), chest (sternum): 280 N, 240 N/cm²");
   CHECK(chest["admissible"] == true);
   CHECK(j["safe"] == true);
 
@@ -174,7 +174,7 @@ TEST_CASE("simulate --body-region: the bare robot's peaks are Annex A's and the 
   const CliRun text = Run({"simulate", "--body-region", "chest", "--covering-thickness", "0", "--speed", "0.5m/s",
                            "--contact-area", "10cm2"});
   REQUIRE(text.exit_code == 0);
-  CHECK(text.out.find("Scope      ISO/TS 15066:2016 Table A.2, transient (2× quasi-static), chest (sternum)") !=
+  CHECK(text.out.find("Scope      ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M, transient (2× quasi-static), chest (sternum)") !=
         std::string::npos);
   // The bare robot's own verdict needs its pressure, hence its contact area.
   ExpectRefused({"simulate", "--body-region", "chest", "--covering-thickness", "0", "--speed", "0.5m/s"},

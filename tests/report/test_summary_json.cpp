@@ -2,6 +2,7 @@
 // field reads back exactly, a number that is not finite is null and reads back as the one
 // non-finite value its key can hold, a missing key is named, and the text says the state.
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -73,6 +74,13 @@ void CheckSame(const ResultSummary& a, const ResultSummary& b) {
   CHECK(a.targets == b.targets);
   CHECK(a.criteria == b.criteria);
   CHECK(a.standards == b.standards);
+  REQUIRE(a.limit_tables.size() == b.limit_tables.size());
+  for (std::size_t i = 0; i < a.limit_tables.size(); ++i) {
+    CHECK(a.limit_tables[i].title == b.limit_tables[i].title);
+    CHECK(a.limit_tables[i].edition == b.limit_tables[i].edition);
+    CHECK(a.limit_tables[i].source == b.limit_tables[i].source);
+    CHECK(a.limit_tables[i].sha256 == b.limit_tables[i].sha256);
+  }
   CHECK(a.scope == b.scope);
   CHECK(a.covering.present == b.covering.present);
   CHECK(a.covering.material == b.covering.material);
@@ -110,6 +118,8 @@ ResultSummary Verdicts() {
   s.margin_threshold = 0.15;
   s.AddVerdict("head (frontal)", head, "foam", "within");
   s.AddVerdict("chest (sternum)", chest, "hertz", "beyond the curve's last point");
+  s.AddLimitTable({.title = "Company limits", .edition = "Company 2026", .source = "limits.toml", .sha256 = "ab12"});
+  s.AddLimitTable({.title = "Company limits", .edition = "Company 2026", .source = "limits.toml", .sha256 = "ab12"});
   s.Finish();
   s.governing_case = "sample 41 at t = 1.23 s, link fr3_link7 against the chest";
   s.covering = {.present = true, .material = "XPS Dow blue", .thickness_m = 0.02591, .law = "foam",
@@ -125,6 +135,9 @@ ResultSummary Verdicts() {
 TEST_CASE("SummaryJson: a verdict summary reads back field by field", "[summary]") {
   const ResultSummary s = Verdicts();
   REQUIRE(s.rows.size() == 5);
+  // A table added twice is named once, its edition once among the standards.
+  REQUIRE(s.limit_tables.size() == 1);
+  CHECK(std::count(s.standards.begin(), s.standards.end(), "Company 2026") == 1);
   const std::string text = covopt::report::SummaryJson(s);
   CheckSame(covopt::report::SummaryFromJson(text), s);
   // ... also from the whole result object holding it under "summary".
@@ -147,7 +160,7 @@ TEST_CASE("SummaryJson: the keys in their documented order, non-finite numbers n
   std::vector<std::string> keys;
   for (const auto& item : ordered.items()) keys.push_back(item.key());
   CHECK(keys == std::vector<std::string>{"kind", "command", "evaluated", "safe", "state", "safety_factor", "margin",
-                                         "margin_threshold", "governing", "targets", "criteria", "standards", "scope",
+                                         "margin_threshold", "governing", "targets", "criteria", "standards", "limit_tables", "scope",
                                          "covering", "robot", "rows", "limits"});
 }
 

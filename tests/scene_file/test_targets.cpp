@@ -111,7 +111,7 @@ TEST_CASE("targets: the area of the one region named") {
 
 TEST_CASE("targets: bad names, contacts and areas name the field and the value") {
   CHECK_THAT(MessageOf(Names({"chset"})),
-             Contains("body.region: body region 'chset' is not in ISO/TS 15066:2016 Table A.2; did you mean "
+             Contains("body.region: body region 'chset' is not in ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M; did you mean "
                                "'chest'?"));
   CHECK_THAT(MessageOf(Names({"chset"})), Contains("; or head (Park et al.'s skin model) or all"));
   CHECK_THAT(MessageOf(Names({"chest,,face"})), Contains("body.region: an empty name in 'chest,,face'"));

@@ -95,6 +95,14 @@ struct RobotSummary {
   double speed_m_per_s = 0.0;       ///< the (governing case's) speed [m/s]; NaN when not one value
 };
 
+/// A body-region limit table a verdict was judged on (covopt::materials::LimitTableInfo).
+struct LimitTableSummary {
+  std::string title;
+  std::string edition;  ///< "ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M"
+  std::string source;   ///< "built-in" or the file's path as given
+  std::string sha256;   ///< of the table's bytes, lower-case hex
+};
+
 /// The summary of one result.
 struct ResultSummary {
   enum class Kind { kVerdict, kLimits };
@@ -116,7 +124,8 @@ struct ResultSummary {
 
   std::vector<std::string> targets;    ///< every target judged, once each
   std::vector<std::string> criteria;   ///< every criterion applied (counted), once each
-  std::vector<std::string> standards;  ///< with their editions: "ISO/TS 15066:2016 Table A.2", "Park et al. 2011"
+  std::vector<std::string> standards;  ///< with their editions: "ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M", "Park et al. 2011"
+  std::vector<LimitTableSummary> limit_tables;  ///< the body-region tables judged on (none for the head alone)
   std::vector<std::string> scope;      ///< what the verdict covers and does not, one sentence each
 
   CoveringSummary covering;
@@ -124,6 +133,9 @@ struct ResultSummary {
   std::vector<SummaryRow> rows;   ///< kVerdict: every row of every target (the binding one marked)
   std::vector<LimitRow> limits;   ///< kLimits: one row per case
 
+  /// Adds `table` to limit_tables (once: same source and digest) and its edition to standards
+  /// (once).
+  void AddLimitTable(const LimitTableSummary& table);
   /// Appends one row per criterion of `verdict` for `target`, with the covering's law and
   /// validity, and adds the target, its counted criteria and their sources to the lists.
   void AddVerdict(std::string_view target, const Verdict& verdict, std::string_view law,

@@ -1,10 +1,12 @@
 #pragma once
 /// @file body_regions.hpp
-/// The body regions of ISO/TS 15066:2016 Annex A as data: Table A.2 (quasi-static force per
-/// region, quasi-static pressure per area, the transient multiplier or "not permitted") and
-/// Table A.3 (effective spring constant k_H and effective mass m_H per region), 12 regions
-/// and their 29 areas, each with its sources. The table is materials/data/iso_ts_15066.toml,
-/// compiled into the library like the materials catalog, so no file is needed at run time.
+/// The body regions of ISO/TS 15066:2016 Annex A (= ISO 10218-2:2025 Annex M, which took it
+/// over unchanged) as data: Table A.2 (quasi-static force per region, quasi-static pressure per
+/// area, the transient multiplier or "not permitted") and Table A.3 (effective spring constant
+/// k_H and effective mass m_H per region), 12 regions and their 29 areas, each with its sources.
+/// The table is materials/data/iso_ts_15066.toml, compiled into the library like the materials
+/// catalog, so no file is needed at run time. A user's own table in the same format (its own
+/// title, edition, regions, areas, limits and transient factors) is read by Load(path).
 ///
 ///     const auto& table = covopt::materials::BodyRegionTable::BuiltIn();
 ///     const covopt::materials::BodyRegion& chest = table.Region("chest");
@@ -15,6 +17,8 @@
 /// data file is read (1 N/cm² = 1e4 Pa, 1 N/mm = 1e3 N/m).
 
 #include <cstddef>
+#include <filesystem>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -24,6 +28,28 @@
 #include <covopt/core/body_contact.hpp>
 
 namespace covopt::materials {
+
+/// What a body-region table is: its title and edition (the top-level keys `title` and
+/// `edition` of its file), where it came from, and its bytes (for their digest). Every limit
+/// of the table cites it: BodyLimits::Citation() is its edition.
+struct LimitTableInfo {
+  /// e.g. "Biomechanical limits of the body model (ISO/TS 15066:2016 Annex A)".
+  std::string title;
+  /// The standard and edition the values are from, e.g. "ISO/TS 15066:2016 Annex A =
+  /// ISO 10218-2:2025 Annex M": the citation of every verdict judged on the table.
+  std::string edition;
+  /// "built-in", or the path of the file as the user gave it.
+  std::string source;
+  /// The file's bytes as read.
+  std::string text;
+  /// The SHA-256 of `text`, lower-case hex (covopt/core/sha256.hpp): the digest every verdict
+  /// judged on the table names.
+  std::string sha256;
+  bool built_in() const noexcept { return source == "built-in"; }
+  /// Who forbids a transient contact where the transient factor is "not permitted": "ISO/TS
+  /// 15066:2016 A.3.2 (= ISO 10218-2:2025 Annex M)" for the built-in table, else the edition.
+  std::string NoTransientClause() const;
+};
 
 /// One area of a region (Table A.2's rows of pressure).
 struct BodyArea {
@@ -57,6 +83,8 @@ struct BodyRegion {
   std::vector<BodyArea> areas;
   /// The sources each value was found in (one citation or URL each).
   std::vector<std::string> sources;
+  /// The table the region belongs to (its title, edition and source).
+  std::shared_ptr<const LimitTableInfo> table;
   bool transient_permitted() const noexcept { return transient_factor > 0.0; }
   /// The area with the lowest quasi-static pressure (the default area).
   const BodyArea& LowestPressureArea() const;
@@ -70,9 +98,12 @@ struct BodyLimits {
   ContactType contact = ContactType::kTransient;
   double force_N = 0.0;       ///< F_lim [N]: quasi-static, ×transient_factor when transient
   double pressure_Pa = 0.0;   ///< p_lim [Pa]: likewise
-  /// Who sets them, e.g. "ISO/TS 15066:2016 Table A.2, transient (2× quasi-static), chest
-  /// (sternum): 280 N, 240 N/cm²".
+  /// Who sets them, e.g. "ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M, transient
+  /// (2× quasi-static), chest (sternum): 280 N, 240 N/cm²".
   std::string Describe() const;
+  /// The edition of the table the limits come from (LimitTableInfo::edition): the source a
+  /// verdict names for its force and pressure criteria.
+  std::string Citation() const;
   /// The scene parts the region contributes: k_H, and m_H (kFixed when clamped).
   double stiffness_N_per_m() const noexcept { return region->stiffness_N_per_m; }
   double effective_mass_kg() const noexcept;
@@ -91,9 +122,18 @@ class BodyRegionTable {
  public:
   /// The table compiled into the library (materials/data/iso_ts_15066.toml).
   static const BodyRegionTable& BuiltIn();
-  /// Reads a table from TOML text; `origin` names it in messages.
+  /// Reads a table from TOML text; `origin` names it in messages and is its info().source.
   /// @throws std::runtime_error "origin:line:column: ..." naming the key for invalid data.
   static BodyRegionTable FromTomlText(std::string_view text, std::string_view origin);
+  /// A user's table file (the format of materials/data/iso_ts_15066.toml), read once and kept
+  /// for the program's life like BuiltIn() (the BodyLimits of its regions point into it; a file
+  /// read again with the same bytes is the same table).
+  /// @throws std::runtime_error "path:line:column: ..." for invalid data, or naming the file
+  ///         when it cannot be read.
+  static const BodyRegionTable& Load(const std::filesystem::path& path);
+
+  /// The table's title, edition, source and bytes.
+  const LimitTableInfo& info() const noexcept { return *info_; }
 
   const std::vector<BodyRegion>& regions() const noexcept { return regions_; }
   /// The number of areas over all regions (29 for the standard).
@@ -118,6 +158,11 @@ class BodyRegionTable {
 
  private:
   std::vector<BodyRegion> regions_;
+  std::shared_ptr<const LimitTableInfo> info_;
 };
+
+/// The edition of the built-in table ("ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M"):
+/// what a citation of the standard names when no table is at hand.
+const std::string& BuiltInEdition();
 
 }  // namespace covopt::materials

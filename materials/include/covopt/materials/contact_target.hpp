@@ -35,6 +35,14 @@ struct ContactTargets {
   double contact_area_m2 = 0.0;
   /// What the reader must know about the resolution (a target named twice and judged once).
   std::vector<std::string> notes;
+  /// The limit table the ISO targets come from (BodyRegionTable::BuiltIn() or ::Load(path),
+  /// both living for the program); nullptr: the built-in one.
+  const BodyRegionTable* table = nullptr;
+
+  /// The table judged on: *table, or the built-in one.
+  const BodyRegionTable& Table() const;
+  /// Its edition, the citation of every verdict on the ISO targets.
+  const std::string& Citation() const { return Table().info().edition; }
 
   bool has_head() const noexcept;
   bool has_iso() const noexcept;

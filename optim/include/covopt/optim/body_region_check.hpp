@@ -204,10 +204,12 @@ std::string_view HeadCriteriaName() noexcept;
 
 /// The criteria a body-region verdict applies under `rule`, in words (the "criterion" of
 /// `covopt speed-limit/optimize/robot --body-region --json` and covopt's Python results):
-/// "each region's force and pressure (ISO/TS 15066:2016 Table A.2)[, the head's laceration and
-/// contusion (Park et al. 2011)][, the covering not fully compressed][, the covering not crushed
-/// where its strength is known]; safety factor SF on each".
-std::string BodyRegionCriterion(const DesignRule& rule, bool head);
+/// "each region's force and pressure (ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M)[, the
+/// head's laceration and contusion (Park et al. 2011)][, the covering not fully compressed][, the
+/// covering not crushed where its strength is known]; safety factor SF on each". `citation`: the
+/// edition of the limit table judged on (materials::ContactTargets::Citation()); empty: the
+/// built-in table's.
+std::string BodyRegionCriterion(const DesignRule& rule, bool head, std::string_view citation = {});
 
 /// `covopt optimize --body-region ... --speed V`: the covering (catalog material and
 /// thickness) that lets the robot reach the speed for every region named.

@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#include <covopt/core/result_summary.hpp>
+
 #include "covopt/optim/body_region_check.hpp"
 #include "covopt/optim/speed_limit.hpp"
 #include "covopt/optim/target_speed_limits.hpp"
@@ -39,9 +41,12 @@ struct BodyRegionTableRow {
   bool within_law = true;
   std::string validity_note;
   std::optional<double> covering_used_up_m_per_s;
-  /// Whose criteria: "ISO/TS 15066:2016 transient, chest (sternum): 280 N, 240 N/cm²" or the
-  /// head's ("skin injury, Park et al. 2011 ...").
+  /// Whose criteria: "ISO/TS 15066:2016 Annex A = ISO 10218-2:2025 Annex M, transient (2×
+  /// quasi-static), chest (sternum): 280 N, 240 N/cm²" or the head's ("skin injury, Park et al.
+  /// 2011 ...").
   std::string criteria;
+  /// The limit table of an ISO region's row (its title, edition, source, digest); none for the head.
+  std::optional<LimitTableSummary> limit_table;
 };
 
 /// An ISO region's row at `robot_mass_kg`.

@@ -3,6 +3,7 @@
 /// The result summary (covopt/core/result_summary.hpp) of optim's results, built here beside
 /// them: every front end prints what these return, and none judges again.
 
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -37,6 +38,13 @@ ResultSummary SummarizeTrajectory(const TrajectoryCheck& check, const Scene& sce
 
 /// A body region as a target: "chest (sternum)".
 std::string RegionTarget(const materials::BodyLimits& limits);
+
+/// The table `limits` come from (title, edition, source, SHA-256); none without a region.
+std::optional<LimitTableSummary> LimitTableOf(const materials::BodyLimits& limits);
+
+/// Adds the table `limits` come from (title, edition, source, SHA-256) to the summary's
+/// limit_tables, once, and its edition to the standards, once.
+void AddLimitTable(ResultSummary& summary, const materials::BodyLimits& limits);
 
 /// `simulate --body-region`: each region's verdict row by row ("chest (sternum)"), then the
 /// head's rows when it is judged too (`head`, the head's own summary: SummarizeImpact).

@@ -72,8 +72,8 @@ CrushInput CrushInputOf(const CoveringCrushCheck& check) noexcept;
 Verdict HeadVerdict(const Scene& scene, const ImpactPeaks& peaks, const SpeedLimitOptions& options,
                     const CoveringValidity* validity = nullptr);
 
-/// Whose limits the body regions' injury criteria are.
-inline constexpr std::string_view kIsoTableA2Source = "ISO/TS 15066:2016 Table A.2";
+// Whose limits the body regions' injury criteria are: each BodyLimits::Citation() (the
+// edition of its table, materials/body_regions.hpp).
 
 /// The covering's design rules of one contact, appended to `verdict` (the head's and the body
 /// regions' alike): "full-compression", the share of the covering's travel used [-] against 1

@@ -8,7 +8,7 @@
 ///   {"kind": "verdict"|"limits", "command", "evaluated", "safe", "state": "safe"|"marginal"|
 ///    "unsafe"|"limits"|"not-evaluated", "safety_factor", "margin", "margin_threshold",
 ///    "governing": {"target", "criterion", "ratio", "case"}, "targets": [...], "criteria": [...],
-///    "standards": [...], "scope": [...],
+///    "standards": [...], "limit_tables": [{title, edition, source, sha256}], "scope": [...],
 ///    "covering": null | {"material", "thickness_m", "law", "validity", "validity_ratio"},
 ///    "robot": {"model_file", "motion", "joints": [...], "reflected_mass_kg", "payload_kg",
 ///              "speed_m_per_s"},

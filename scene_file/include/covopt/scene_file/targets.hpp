@@ -12,7 +12,9 @@
 ///   judged once, and a note says so;
 /// - an area applies to the one ISO region named (not with "all"; the head may be named too);
 /// - the contact is "transient" (default), "clamped" or "quasi-static", case-insensitive;
-/// - the contact area is in [1 mm², 1 m²].
+/// - the contact area is in [1 mm², 1 m²];
+/// - body.limits names a table file in the built-in table's format (docs/guide/limits.md); its
+///   errors are "file:line:column: ..." naming the key.
 /// Messages name the fields body.region, body.area, body.contact and body.contact_area
 /// (covopt/scene_file/spelling.hpp spells them for each front end).
 
@@ -37,9 +39,18 @@ struct TargetRequest {
   std::optional<double> contact_area_m2;
   /// body.contact_area as given, for messages ("1cm2", "5.0").
   std::string contact_area_shown;
+  /// body.limits: the path of a body-region table file (materials::BodyRegionTable::Load)
+  /// whose limits replace the built-in ones; none: the built-in table.
+  std::optional<std::string> limits;
   /// Any input was given.
-  bool any() const noexcept { return !names.empty() || area || contact || contact_area_m2; }
+  bool any() const noexcept { return !names.empty() || area || contact || contact_area_m2 || limits; }
 };
+
+/// The table body.limits names: the built-in one without a path, else the file's
+/// (materials::BodyRegionTable::Load, kept for the program's life).
+/// @throws std::invalid_argument "file:line:column: ... (body.limits)" for a bad table, or naming
+///         the file when it cannot be read.
+const materials::BodyRegionTable& LimitTable(const std::optional<std::string>& path);
 
 /// The targets `request` names; nullopt when no name is given and nothing else is (with an
 /// area, contact or contact area but no name: refused).
