@@ -225,11 +225,17 @@ void PrintAuditInputs(std::ostream& out, const AuditInputOptions& o, const audit
   for (const auto& [link, covering] : setup.link_coverings) {
     fmt::print(out, "           {}: {} (--link-coverings)\n", link, AuditCoveringText(covering));
   }
-  fmt::print(out, "Regions    {} ISO/TS 15066 region{} (transient){}\n", setup.regions.size(),
+  const materials::LimitTableInfo* table =
+      setup.regions.empty() || !setup.regions.front().region ? nullptr : setup.regions.front().region->table.get();
+  fmt::print(out, "Regions    {} body region{} (transient){}\n", setup.regions.size(),
              setup.regions.size() == 1 ? "" : "s", setup.head ? fmt::format(" and the head ({})", HeadCriteriaName()) : "");
+  if (table) {
+    fmt::print(out, "Limits     {} ({}); {}, sha256 {}\n", table->title, table->edition, table->source, table->sha256);
+  }
   optim::DesignRule judged = setup.rule;  // the travel rule counts only with --keep-travel
   if (!setup.keep_travel) judged.criterion = optim::DesignCriterion::kPaper;
-  fmt::print(out, "Criterion  {}\n", BodyCriterion(judged, setup.head.has_value()));
+  fmt::print(out, "Criterion  {}\n",
+             optim::BodyRegionCriterion(judged, setup.head.has_value(), table ? table->edition : std::string_view()));
   if (setup.braking_m_per_s2 > 0.0) {
     fmt::print(out, "Braking    reaction delay {}, braking {}\n",
                FormatQuantity(setup.reaction_delay_s, QuantityKind::kTime),

@@ -2,7 +2,7 @@
 /// @file measure.hpp
 /// `covopt measure`: what a biofidelic force-measuring device (a spring and a Shore A pad,
 /// fixed) would read when the robot strikes it, beside the body model's prediction for the same
-/// robot, speed, covering and ISO/TS 15066 region (optim/measurement.hpp, docs/guide/measure.md).
+/// robot, speed, covering and ISO/TS 15066 region (optim/measurement.hpp, docs/guide/limits.md).
 ///
 ///     covopt measure --body-region chest --robot-mass 10kg --speed 0.25m/s --robot-radius 50mm
 ///                    [--device 25+70 | --device chest | --device-spring 25N/mm --device-pad 70ShA,7mm]

@@ -569,7 +569,7 @@ def predict_measurement(scene=None, *, body_region, body_area=None, contact=None
                         device_pad_thickness=None):
     """What a biofidelic force-measuring device would read when the scene's robot strikes it,
     beside the body model's prediction for the same region: ``covopt measure --json``
-    (docs/guide/measure.md, docs/model.md §13.11).
+    (docs/guide/limits.md, docs/model.md §13.11).
 
     The device is a spring on a fixed base under a pad of Shore A hardness (its modulus from
     the Ruess correlation): the robot's whole reflected mass strikes it, and its pad and the

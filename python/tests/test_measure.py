@@ -1,5 +1,5 @@
 """covopt.predict_measurement: what a biofidelic measuring device reads beside the body model
-(docs/guide/measure.md). The result is ``covopt measure --json``'s object; the reading is
+(docs/guide/limits.md). The result is ``covopt measure --json``'s object; the reading is
 checked against an independent numpy closed form of a Hertz sphere on the pad in series with
 the device's spring; the trends (softer pad reads less, the fixed device more than a recoiling
 region) and the refusals naming the keyword."""

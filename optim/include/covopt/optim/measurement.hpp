@@ -3,7 +3,7 @@
 /// `covopt measure` and covopt.predict_measurement: what a biofidelic force-measuring device
 /// would read (covopt/core/measuring_device.hpp) beside what the body-region model predicts for
 /// the same robot, speed, covering and region (body_region_check.hpp), each against the
-/// region's limits (docs/model.md §13.11, docs/guide/measure.md).
+/// region's limits (docs/model.md §13.11, docs/guide/limits.md).
 ///
 /// The assessor compares the device's reading with the limit; covopt's body model predicts the
 /// real contact. They differ because the device is fixed (mu = m_R, where the body model's
