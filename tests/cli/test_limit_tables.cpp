@@ -58,7 +58,7 @@ struct TempFile {
 
 }  // namespace
 
-TEST_CASE("--limits 0.8 x ISO: every bare limit speed is exactly 0.8x, force- or pressure-bound", "[limits]") {
+TEST_CASE("The --limits option with 0.8 x ISO: every bare limit speed is exactly 0.8x, force- or pressure-bound", "[limits]") {
   for (const std::string contact : {"transient", "clamped"}) {
     for (const std::string area : {"", "1cm2"}) {  // force-bound without an area; pressure-bound rows with one
       CAPTURE(contact, area);
@@ -94,7 +94,7 @@ TEST_CASE("--limits 0.8 x ISO: every bare limit speed is exactly 0.8x, force- or
   }
 }
 
-TEST_CASE("--limits 0.8 x ISO with a Hertz covering: the model's speeds, not 0.8x", "[limits]") {
+TEST_CASE("The --limits option with 0.8 x ISO with a Hertz covering: the model's speeds, not 0.8x", "[limits]") {
   const std::vector<std::string> args{"speed-limit",          "--body-region",      "all",  "--robot-mass",
                                       "10kg",                 "--robot-radius",     "40mm", "--covering-modulus",
                                       "1MPa",                 "--covering-poisson", "0.4",  "--covering-thickness",
@@ -133,7 +133,7 @@ TEST_CASE("--limits 0.8 x ISO with a Hertz covering: the model's speeds, not 0.8
   CHECK(not_scaled > 0);
 }
 
-TEST_CASE("--limits: the JSON, the text and body-regions name the table and its SHA-256", "[limits]") {
+TEST_CASE("The --limits option: the JSON, the text and body-regions name the table and its SHA-256", "[limits]") {
   const std::string digest = covopt::Sha256Hex(Bytes(kCompany));
   REQUIRE(digest.size() == 64);
   const json own = JsonOf({"simulate", "--body-region", "chest", "--limits", kCompany, "--robot-mass", "10kg",
@@ -177,7 +177,7 @@ TEST_CASE("--limits: the JSON, the text and body-regions name the table and its 
   CHECK(show.out.find(digest) != std::string::npos);
 }
 
-TEST_CASE("--limits: a bad table or file is exit 2 with one line naming file:line:column", "[limits]") {
+TEST_CASE("The --limits option: a bad table or file is exit 2 with one line naming file:line:column", "[limits]") {
   std::string text = Bytes(kCompany);
   const std::string from = "quasi_static_force_N = 112";  // the chest
   REQUIRE(text.find(from) != std::string::npos);
