@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "audit_test_support.hpp"
 #include "cli_test_support.hpp"
 
 namespace {
@@ -20,27 +21,13 @@ using nlohmann::json;
 const std::string kModels = COVOPT_ROBOT_MODELS_DIR;
 
 std::vector<std::string> Fr3(std::vector<std::string> more) {
-  std::vector<std::string> args = {"audit", "--urdf", kModels + "/franka_fr3.urdf", "--tip", "fr3_link8",
-                                   "--trajectory", kModels + "/franka_fr3_pick.csv", "--covering-thickness", "10mm",
-                                   "--covering-modulus", "0.5MPa", "--covering-poisson", "0.45", "--contact-area",
-                                   "1cm2", "--flat-face-radius", "20mm", "--surface-spacing", "80mm",
-                                   "--body-region", "chest,lower-legs,hands-fingers", "--json"};
-  args.insert(args.end(), more.begin(), more.end());
-  return args;
+  more.insert(more.begin(), {"--surface-spacing", "80mm", "--body-region", "chest,lower-legs,hands-fingers", "--json"});
+  return covopt::cli::testing::Fr3Command("audit", kModels + "/franka_fr3_pick.csv", more);
 }
 
-json JsonOf(const CliRun& run) {
-  INFO(run.err);
-  REQUIRE(run.exit_code == 0);
-  return json::parse(run.out);
-}
+json JsonOf(const CliRun& run) { return covopt::cli::testing::JsonOfRun(run); }
 
-void RequireBadInput(const CliRun& run, const std::string& names) {
-  INFO(run.err);
-  CHECK(run.exit_code == 2);
-  CHECK(run.out.empty());
-  CHECK(run.err.find(names) != std::string::npos);
-}
+void RequireBadInput(const CliRun& run, const std::string& names) { covopt::cli::testing::RequireRefused(run, names); }
 
 }  // namespace
 

@@ -13,6 +13,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "audit_test_support.hpp"
 #include "cli_test_support.hpp"
 
 namespace {
@@ -22,33 +23,19 @@ using covopt::cli::testing::Run;
 using covopt::cli::testing::TempDir;
 using nlohmann::json;
 
-const std::string kFr3 = std::string(COVOPT_ROBOT_MODELS_DIR) + "/franka_fr3.urdf";
-const std::string kPick = std::string(COVOPT_ROBOT_MODELS_DIR) + "/franka_fr3_pick.csv";
+const std::string& kFr3 = covopt::cli::testing::kFr3Urdf;
+const std::string& kPick = covopt::cli::testing::kFr3Pick;
 
 /// The FR3 pick move with a 10 mm covering of 0.5 MPa on every link, a coarse surface (quick).
 std::vector<std::string> Fr3(const std::string& command, std::vector<std::string> more = {}) {
-  std::vector<std::string> args = {command,       "--urdf",         kFr3,        "--tip",
-                                   "fr3_link8",   "--trajectory",   kPick,       "--covering-thickness",
-                                   "10mm",        "--covering-modulus", "0.5MPa", "--covering-poisson",
-                                   "0.45",        "--contact-area", "1cm2",      "--flat-face-radius",
-                                   "20mm",        "--surface-spacing", "100mm"};
-  args.insert(args.end(), more.begin(), more.end());
-  return args;
+  more.insert(more.begin(), {"--surface-spacing", "100mm"});
+  return covopt::cli::testing::Fr3Command(command, kPick, more);
 }
 
-json JsonOf(const CliRun& run) {
-  INFO(run.err);
-  REQUIRE(run.exit_code == 0);
-  return json::parse(run.out);
-}
+json JsonOf(const CliRun& run) { return covopt::cli::testing::JsonOfRun(run); }
 
 void RequireBadInput(const CliRun& run, const std::string& names) {
-  INFO(run.err);
-  CHECK(run.exit_code == 2);
-  CHECK(run.out.empty());
-  CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
-  CHECK(run.err.rfind("covopt retime: error: ", 0) == 0);
-  CHECK(run.err.find(names) != std::string::npos);
+  covopt::cli::testing::RequireRefused(run, names, "retime");
 }
 
 /// The numbers of a trajectory CSV's data lines.
