@@ -230,7 +230,7 @@ void PrintAuditInputs(std::ostream& out, const AuditInputOptions& o, const audit
   fmt::print(out, "Regions    {} body region{} (transient){}\n", setup.regions.size(),
              setup.regions.size() == 1 ? "" : "s", setup.head ? fmt::format(" and the head ({})", HeadCriteriaName()) : "");
   if (table) {
-    fmt::print(out, "Limits     {} ({}); {}, sha256 {}\n", table->title, table->edition, table->source, table->sha256);
+    fmt::print(out, "Limits     {}\n", LimitTableText(*table));
   }
   optim::DesignRule judged = setup.rule;  // the travel rule counts only with --keep-travel
   if (!setup.keep_travel) judged.criterion = optim::DesignCriterion::kPaper;

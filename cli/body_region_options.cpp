@@ -154,12 +154,11 @@ std::optional<std::string> ContactAreaNote(const BodyRegionPlan& regions, const 
 
 std::string HeadCriteriaName() { return std::string(optim::HeadCriteriaName()); }
 
-std::string BodyCriterion(const optim::DesignRule& rule, bool head) { return optim::BodyRegionCriterion(rule, head); }
-
-std::string LimitTableText(const BodyRegionPlan& regions) {
-  const materials::LimitTableInfo& t = regions.Table().info();
+std::string LimitTableText(const materials::LimitTableInfo& t) {
   return fmt::format("{} ({}); {}, sha256 {}", t.title, t.edition, t.source, t.sha256);
 }
+
+std::string LimitTableText(const BodyRegionPlan& regions) { return LimitTableText(regions.Table().info()); }
 
 std::string BodyCriterion(const optim::DesignRule& rule, const BodyRegionPlan& regions) {
   return optim::BodyRegionCriterion(rule, regions.has_head(), regions.Citation());

@@ -106,14 +106,15 @@ std::optional<std::string> ContactAreaNote(const BodyRegionPlan& regions, const 
 /// Whose criteria judge the head: "skin injury, Park et al. 2011".
 std::string HeadCriteriaName();
 
-/// The criteria a body-region verdict applies under `rule`, in words ("each region's force and
-/// pressure (ISO/TS 15066:2016 Table A.2), ..., safety factor 1 on each"); `head`: the head too.
-std::string BodyCriterion(const optim::DesignRule& rule, bool head);
-/// The limit table `regions` are judged on, for the text outputs: "TITLE (EDITION); SOURCE,
-/// sha256 DIGEST" (SOURCE "built-in" or the --limits path).
+/// A limit table for the text outputs: "TITLE (EDITION); SOURCE, sha256 DIGEST" (SOURCE
+/// "built-in" or the --limits path).
+std::string LimitTableText(const materials::LimitTableInfo& table);
+/// The limit table `regions` are judged on, as above.
 std::string LimitTableText(const BodyRegionPlan& regions);
 
-/// The same for `regions`: their table's edition, the head when they name it.
+/// The criteria a body-region verdict on `regions` applies under `rule`, in words ("each
+/// region's force and pressure (EDITION), ..., safety factor 1 on each"), citing their table's
+/// edition; the head too when they name it.
 std::string BodyCriterion(const optim::DesignRule& rule, const BodyRegionPlan& regions);
 
 }  // namespace covopt::cli
